@@ -1,0 +1,617 @@
+"""From parse trees to the IR: statements with spans, expressions, the symbol table.
+
+Also where `RUN file` and user macro calls are expanded: their text is read, parsed
+and built in place, with every span pointing into the file it came from and back to
+the statement that brought it in.
+"""
+from __future__ import annotations
+
+import contextlib
+import gc
+import itertools
+import os
+from pathlib import Path
+
+from antlr4 import Token
+from antlr4.tree.Tree import TerminalNode
+
+from . import ir
+from ._antlr.AutolevParser import AutolevParser as P
+from .errors import Diagnostic, Location, Span
+from .source import (MAX_INCLUDE_DEPTH, MappedText, RunRefused, SourceFile, expand_macro,
+                     find_macro, mapped_source, placeholders, resolve_run)
+from .syntax import KNOWN_SETTINGS, Parser
+
+MAX_DECLARED_NAMES = 10000
+
+_DECLARATION_WORDS = {
+    P.NEWTONIAN: "newtonian", P.FRAMES: "frames", P.BODIES: "bodies",
+    P.PARTICLES: "particles", P.POINTS: "points", P.CONSTANTS: "constants",
+    P.VARIABLES: "variables", P.MOTIONVARIABLES: "motionvariables",
+    P.SPECIFIED: "specifieds", P.IMAGINARY: "imaginary",
+}
+_ON_OFF = ("ON", "OFF")
+SETTING_VALUES: dict[str, tuple[str, ...] | str] = {
+    "AUTOZ": _ON_OFF, "AUTOEXPRESS": _ON_OFF, "DEGREES": _ON_OFF, "FACTORING": _ON_OFF,
+    "BEEPSOUND": _ON_OFF, "AUTORHS": ("ON", "OFF", "ALL"), "COMPLEX": ("ON", "OFF", "AUTO"),
+    "OVERWRITE": ("ON", "OFF", "ALL"), "PAUSE": "number", "DIGITS": "integer",
+    "AUTOEPSILON": "number",
+}
+assert set(SETTING_VALUES) == set(KNOWN_SETTINGS)
+STATEMENT_KEYWORDS = {"NEWTONIAN", "FRAME", "FRAMES", "BODY", "BODIES", "PARTICLE",
+                      "PARTICLES", "POINT", "POINTS", "CONSTANT", "CONSTANTS", "VARIABLE",
+                      "VARIABLES", "MOTIONVARIABLE", "MOTIONVARIABLES", "SPECIFIED",
+                      "SPECIFIEDS", "IMAGINARY", "MASS", "INERTIA", "INPUT", "INPUTS",
+                      "OUTPUT", "OUTPUTS", "UNITS", "UNITSYSTEM", "CODE", "SAVE", "ENCODE",
+                      "RUN"}
+OPTIONAL_VALUE = ("PAUSE",)   # a bare PAUSE stops the session until a key is pressed
+CODE_KINDS = ("dynamics", "algebraic", "nonlinear", "ode")
+CODE_OPTIONS = ("subs", "nosubs")
+
+
+@contextlib.contextmanager
+def _gc_paused():
+    """Parse trees are large webs of parent links; the cyclic collector would walk
+    them again and again while they are built.  They are freed with the builder."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was_enabled:
+            gc.enable()
+
+
+class _Context:
+    """Where the statements being built come from."""
+
+    def __init__(self, mapped: MappedText, path: Path | None, display: str):
+        self.mapped = mapped
+        self.path = path
+        self.display = display
+
+
+class Builder:
+    def __init__(self, filename: str, path: Path | None):
+        self.filename = filename
+        self.root_path = path.resolve() if path is not None else None
+        self.model_root = self.root_path.parent if self.root_path is not None else None
+        self.parser = Parser()
+        self.symbols = ir.SymbolTable()
+        self.statements: list[ir.Statement] = []
+        self.diagnostics: list[Diagnostic] = []
+        self.files: list[str] = [filename]
+        self._stack: list[Path] = [self.root_path] if self.root_path else []
+        self._ctx: _Context | None = None
+
+    # -- driving ---------------------------------------------------------------
+    def build_source(self, src: SourceFile) -> None:
+        with _gc_paused():
+            self._build(mapped_source(src), self.root_path, src.name)
+
+    def build_macro_source(self, src: SourceFile) -> None:
+        """Check a macro file on its own: each #k# stands for a name ARGk."""
+        used = placeholders(src)
+        args = [f"ARG{k}" for k in range(1, max(used, default=0) + 1)]
+        with _gc_paused():
+            self._build(expand_macro(src, args, None, ""), self.root_path, src.name)
+
+    def _build(self, mapped: MappedText, path: Path | None, display: str) -> None:
+        outer = self._ctx
+        self._ctx = _Context(mapped, path, display)
+        parsed = self.parser.parse(mapped)
+        self.diagnostics.extend(parsed.diagnostics)
+        for line in parsed.lines:
+            body = line.tree.statementLine()
+            if body is None:
+                continue
+            for st in body.statement():
+                self._statement(st)
+        self._ctx = outer
+
+    def program(self) -> ir.Program:
+        prog = ir.Program(self.statements, self.symbols, self.filename,
+                          [d for d in self.diagnostics if d.severity != "error"], self.files)
+        return prog
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == "error"]
+
+    # -- helpers ---------------------------------------------------------------
+    def _span(self, ctx) -> Span:
+        stop = ctx.stop if ctx.stop is not None and ctx.stop.type != Token.EOF else ctx.start
+        return Span.of(self._ctx.mapped, ctx.start.start, max(stop.stop, ctx.start.start))
+
+    def _text(self, ctx) -> str:
+        return self._ctx.mapped.slice(ctx.start.start, ctx.stop.stop + 1)
+
+    def _error(self, ctx_or_token, code: str, message: str, notes=(), severity="error") -> None:
+        tok = ctx_or_token if isinstance(ctx_or_token, Token) else ctx_or_token.start
+        m = self._ctx.mapped
+        self.diagnostics.append(Diagnostic(m.locate(tok.start), code, message, severity,
+                                           m.source_line(tok.start), tuple(notes)))
+
+    def _warn(self, ctx_or_token, code: str, message: str, notes=()) -> None:
+        self._error(ctx_or_token, code, message, notes, severity="warning")
+
+    # -- statements ------------------------------------------------------------
+    def _statement(self, ctx: P.StatementContext) -> None:
+        node = ctx.getChild(0)
+        handler = self._HANDLERS[type(node)]
+        result = handler(self, node)
+        if result is not None:
+            self.statements.append(result)
+
+    def _common(self, ctx) -> dict:
+        return {"span": self._span(ctx), "text": self._text(ctx)}
+
+    def _declaration(self, ctx: P.DeclarationContext) -> ir.Declaration:
+        what = _DECLARATION_WORDS[ctx.declKeyword().start.type]
+        kprimes = len(ctx.PRIME())
+        items = []
+        for d in ctx.declarator():
+            item = self._declarator(d)
+            if item is None:
+                continue
+            items.append(item)
+            kind = ir.DECLARATION_KINDS[what]
+            for name in item.names:
+                self._declare(d, ir.Symbol(name, kind, max(item.primes, kprimes), item.sign,
+                                           self._span(d)), item.value is not None)
+                if kind in ("newtonian", "body"):
+                    self._declare(d, ir.Symbol(name + "O", "point", span=self._span(d),
+                                               implicit=True, owner=name))
+        return ir.Declaration(what=what, items=tuple(items), keyword_primes=kprimes,
+                              **self._common(ctx))
+
+    def _declare(self, ctx, symbol: ir.Symbol, has_value: bool = False) -> None:
+        previous = self.symbols.add(symbol)
+        if previous is None or (previous.implicit and symbol.implicit):
+            return
+        if previous.implicit and previous.kind == symbol.kind:
+            return   # POINTS NO after NEWTONIAN N only repeats what was implied
+        where = f" on line {previous.span.line}" if previous.span else ""
+        if previous.kind == symbol.kind:
+            # 3.2-era files give specifieds their expressions by declaring them again
+            if not has_value:
+                self._warn(ctx, "W001", f"'{symbol.name}' is declared again (first{where})")
+        else:
+            what = "created by the declaration" if previous.implicit else "declared"
+            self._warn(ctx, "W002", f"'{symbol.name}' was {what} as a {previous.kind}{where}; "
+                       f"it is now a {symbol.kind}")
+
+    def _declarator(self, ctx: P.DeclaratorContext) -> ir.Declarator | None:
+        primes = len(ctx.PRIME())
+        sign = ctx.declSign().getText() if ctx.declSign() else None
+        value = self._expr(ctx.expr()) if ctx.expr() else None
+        span = self._span(ctx)
+        if ctx.name() is not None:
+            name = ctx.name().getText()
+            return ir.Declarator(name, (name,), primes, sign, value, (), span)
+        parts: list = []
+        last = ctx.start
+        for child in ctx.getChildren():
+            if isinstance(child, TerminalNode) and child.symbol.type == P.ID:
+                parts.append(child.getText())
+                last = child.symbol
+            elif isinstance(child, P.DeclRangeContext):
+                dims = self._ranges(child)
+                if dims is None:
+                    return None
+                parts.append(dims)
+                last = child.stop
+        names, shape = self._expand(ctx, parts)
+        if names is None:
+            return None
+        written = self._ctx.mapped.slice(ctx.start.start, last.stop + 1)
+        return ir.Declarator(written, tuple(names), primes, sign, value, shape, span)
+
+    def _ranges(self, ctx: P.DeclRangeContext) -> list[range] | None:
+        """`{3}` -> [1..3]; `{2:4}` -> [2..4]; `{2,3}` -> [1..2, 1..3]; `{1:2,1:2}`."""
+        dims = []
+        for b in ctx.rangeBound():
+            ints = [int(t.getText()) for t in b.INT()]
+            lo, hi = (1, ints[0]) if len(ints) == 1 else (ints[0], ints[1])
+            if hi < lo:
+                self._error(b, "E040", f"empty range {{{b.getText()}}}: {lo} is above {hi}")
+                return None
+            dims.append(range(lo, hi + 1))
+        return dims
+
+    def _expand(self, ctx, parts: list) -> tuple[list[str] | None, tuple[int, ...]]:
+        dims = [d for p in parts if not isinstance(p, str) for d in p]
+        count = 1
+        for d in dims:
+            count *= len(d)
+        if count > MAX_DECLARED_NAMES:
+            self._error(ctx, "E041", f"this range declares {count} names; "
+                        f"at most {MAX_DECLARED_NAMES} are allowed")
+            return None, ()
+        pieces = [[p] if isinstance(p, str) else
+                  ["".join(map(str, combo)) for combo in itertools.product(*p)] for p in parts]
+        names = ["".join(combo) for combo in itertools.product(*pieces)]
+        return names, tuple(len(d) for d in dims)
+
+    def _mass(self, ctx: P.MassStatementContext) -> ir.MassStatement:
+        items = []
+        for it in ctx.massItem():
+            exprs = it.expr()
+            value = self._expr(exprs[0])
+            chained = self._expr(exprs[1]) if len(exprs) > 1 else None
+            if chained is not None and not isinstance(value, ir.Name):
+                self._error(exprs[0], "E042", "in MASS B=m=value, the middle part must be a name")
+            items.append(ir.MassItem(it.name().getText(), value, chained, self._span(it)))
+        return ir.MassStatement(items=tuple(items), **self._common(ctx))
+
+    def _inertia(self, ctx: P.InertiaStatementContext) -> ir.InertiaStatement:
+        names = ctx.name()
+        body = names[0].getText()
+        frame = names[1].getText() if len(names) > 1 else None
+        values, definitions = [], []
+        for v in ctx.inertiaValue():
+            exprs = v.expr()
+            if len(exprs) == 2:
+                lhs = self._expr(exprs[0])
+                rhs = self._expr(exprs[1])
+                if not isinstance(lhs, ir.Name) or lhs.primes:
+                    self._error(exprs[0], "E043", "only a name can be defined inside INERTIA")
+                    continue
+                definitions.append((lhs.name, rhs))
+                values.append(lhs)
+            else:
+                values.append(self._expr(exprs[0]))
+        if len(values) not in (1, 3, 6):
+            self._error(ctx, "E044", f"INERTIA takes 3 or 6 values (I11, I22, I33[, I12, I23, "
+                        f"I31]); this one has {len(values)}")
+        return ir.InertiaStatement(body=body, frame=frame, values=tuple(values),
+                                   definitions=tuple(definitions), **self._common(ctx))
+
+    def _assignment(self, ctx: P.AssignmentContext) -> ir.Assignment:
+        t = ctx.target()
+        if isinstance(t, P.VectorTargetContext):
+            target = self._vector(t.VECNAME().symbol, t)
+        else:
+            name = t.name().getText()
+            primes = self._primes(t.name(), t.PRIME())
+            if t.indexList() is not None:
+                target = ir.Index(name, self._indices(t.indexList()), primes, span=self._span(t))
+            else:
+                target = ir.Name(name, primes, span=self._span(t))
+        return ir.Assignment(target=target, op=ctx.assignOp().getText(),
+                             value=self._expr(ctx.expr()), **self._common(ctx))
+
+    def _expression_statement(self, ctx: P.ExpressionStatementContext) -> ir.Statement | None:
+        expr = self._expr(ctx.expr())
+        if isinstance(expr, ir.Call):
+            call_ctx = ctx.expr().primary()
+            if self._macro(call_ctx, expr):
+                return None
+            return ir.Command(call=expr, **self._common(ctx))
+        if isinstance(expr, ir.Name) and expr.name.upper() in STATEMENT_KEYWORDS:
+            self._error(ctx, "E005", f"{expr.name.upper()} needs at least one item after it")
+            return None
+        return ir.Display(expr=expr, **self._common(ctx))
+
+    def _input(self, ctx: P.InputStatementContext) -> ir.Input:
+        items = []
+        for it in ctx.inputItem():
+            name = it.name().getText()
+            primes = len(it.PRIME())
+            if it.indexList() is not None:
+                target = ir.Index(name, self._indices(it.indexList()), primes,
+                                  span=self._span(it.name()))
+            else:
+                target = ir.Name(name, primes, span=self._span(it.name()))
+            items.append(ir.InputItem(target, self._expr(it.expr()), self._unit(it.unit()),
+                                      self._span(it)))
+        return ir.Input(items=tuple(items), **self._common(ctx))
+
+    def _output(self, ctx: P.OutputStatementContext) -> ir.Output:
+        items = tuple(ir.OutputItem(self._expr(it.expr()), self._unit(it.unit()), self._span(it))
+                      for it in ctx.outputItem())
+        return ir.Output(items=items, **self._common(ctx))
+
+    def _units(self, ctx: P.UnitsStatementContext) -> ir.UnitsStatement:
+        items = []
+        for it in ctx.unitsItem():
+            t = it.unitsTarget()
+            targets = []
+            for child in t.getChildren():
+                if isinstance(child, P.NameContext):
+                    targets.append(ir.Name(child.getText(), 0, span=self._span(child)))
+                elif isinstance(child, TerminalNode) and child.symbol.type == P.PRIME:
+                    last = targets[-1]
+                    targets[-1] = ir.Name(last.name, last.primes + 1, span=last.span)
+            items.append(ir.UnitsItem(tuple(targets), self._unit(it.unit()), self._span(it)))
+        return ir.UnitsStatement(items=tuple(items), **self._common(ctx))
+
+    def _unit_system(self, ctx: P.UnitSystemStatementContext) -> ir.UnitSystem:
+        return ir.UnitSystem(units=tuple(n.getText() for n in ctx.name()), **self._common(ctx))
+
+    def _code(self, ctx: P.CodeStatementContext) -> ir.Code | None:
+        names = ctx.name()
+        what = names[0].getText().lower()
+        if what not in CODE_KINDS:
+            self._error(names[0], "E011", f"unknown CODE kind '{names[0].getText()}'; expected "
+                        "DYNAMICS, ALGEBRAIC, NONLINEAR or ODE")
+        options = []
+        for opt in names[1:]:
+            if opt.getText().lower() not in CODE_OPTIONS:
+                self._error(opt, "E012", f"unknown CODE option '{opt.getText()}'; expected "
+                            "SUBS or NOSUBS")
+            options.append(opt.getText().upper())
+        args = tuple(self._arg(a) for a in ctx.argList().arg()) if ctx.argList() else ()
+        sweep = None
+        if ctx.sweep() is not None:
+            s = ctx.sweep()
+            e = [self._expr(x) for x in s.expr()]
+            sweep = ir.Sweep(ir.Name(s.name().getText(), len(s.PRIME()), span=self._span(s.name())),
+                             self._unit(s.unit()), e[0], e[1], e[2])
+        filename = self._filename(ctx.fileName())
+        return ir.Code(what=what, args=args, filename=filename, sweep=sweep,
+                       options=tuple(options), **self._common(ctx))
+
+    def _filename(self, ctx: P.FileNameContext) -> str:
+        parts = ctx.fileNamePart()
+        for a, b in zip(parts, parts[1:]):
+            if b.start.start != a.stop.stop + 1:
+                self._error(b, "E013", "a file name cannot contain blanks")
+                break
+        return self._text(ctx)
+
+    def _save(self, ctx: P.SaveStatementContext) -> ir.Save:
+        return ir.Save(filename=self._filename(ctx.fileName()), **self._common(ctx))
+
+    def _encode(self, ctx: P.EncodeStatementContext) -> ir.Encode:
+        return ir.Encode(exprs=tuple(self._expr(e) for e in ctx.expr()), **self._common(ctx))
+
+    def _exit(self, ctx: P.ExitStatementContext) -> ir.Exit:
+        return ir.Exit(**self._common(ctx))
+
+    def _setting(self, ctx: P.SettingContext) -> ir.Setting:
+        name = ctx.settingName().getText().upper()
+        v = ctx.settingValue()
+        value = v.getText().upper() if v is not None else None
+        allowed = SETTING_VALUES[name]
+        if value is None and name in OPTIONAL_VALUE:
+            pass
+        elif value is None:
+            want = " or ".join(allowed) if isinstance(allowed, tuple) else f"a {allowed}"
+            self._error(ctx, "E014", f"{name} needs a value: {want}")
+        elif isinstance(allowed, tuple):
+            if value not in allowed:
+                self._error(v, "E014", f"{name} cannot be {v.getText()}; expected "
+                            + " or ".join(allowed))
+        elif v.number() is None:
+            self._error(v, "E014", f"{name} needs a {allowed}, not {v.getText()}")
+        elif allowed == "integer" and v.number().INT() is None:
+            self._error(v, "E014", f"{name} needs a whole number, not {v.getText()}")
+        return ir.Setting(name=name, value=value, **self._common(ctx))
+
+    # -- RUN and macros ----------------------------------------------------------
+    def _run(self, ctx: P.RunStatementContext) -> None:
+        name = self._filename(ctx.fileName())
+        including = self._ctx.path
+        if including is None or self.model_root is None:
+            self._error(ctx.fileName(), "E020", f"RUN {name}: a model given as text has no "
+                        "folder to look in; parse the file itself, or pass filename=")
+            return
+        try:
+            found = resolve_run(name, including, self.model_root)
+        except RunRefused:
+            self._error(ctx.fileName(), "E021", f"RUN {name}: refused, the path leaves the "
+                        f"model's folder ({self.model_root})")
+            return
+        if found is None:
+            self._error(ctx.fileName(), "E022", f"RUN {name}: no such file next to the model "
+                        f"(looked in {including.parent} and the folders above it)")
+            return
+        found = found.resolve()
+        if found in self._stack:
+            self._error(ctx.fileName(), "E023", f"RUN {name}: the file includes itself")
+            return
+        if len(self._stack) >= MAX_INCLUDE_DEPTH:
+            self._error(ctx.fileName(), "E024", f"RUN {name}: files nested deeper than "
+                        f"{MAX_INCLUDE_DEPTH} levels")
+            return
+        display = self._display_name(found)
+        self.statements.append(ir.Run(filename=name, path=str(found), **self._common(ctx)))
+        where = self._ctx.mapped.locate(ctx.start.start)
+        src = SourceFile.read(found, display)
+        self.files.append(display)
+        self._stack.append(found)
+        self._build(mapped_source(src, where, f"the file included by RUN {name}"), found, display)
+        self._stack.pop()
+
+    def _display_name(self, found: Path) -> str:
+        rel = os.path.relpath(found, self.model_root)
+        return os.path.join(os.path.dirname(self.filename), rel)
+
+    def _macro(self, ctx: P.CallAtomContext, call: ir.Call) -> bool:
+        """Expand `call` if it names a user macro NAME.A; False when it does not."""
+        if self.model_root is None:
+            return False
+        dirs = []
+        if self._ctx.path is not None:
+            dirs.append(self._ctx.path.parent)
+        dirs.append(self.model_root)
+        found = find_macro(call.name, dirs)
+        if found is None:
+            return False
+        found = found.resolve()
+        args_ctx = ctx.argList().arg() if ctx.argList() else []
+        args = [self._text(a).strip() for a in args_ctx]
+        display = self._display_name(found)
+        src = SourceFile.read(found, display)
+        used = placeholders(src)
+        if used and max(used) > len(args):
+            self._error(ctx, "E030", f"macro {call.name} ({display}) uses #{max(used)}# but "
+                        f"this call gives {len(args)} argument{'s' if len(args) != 1 else ''}")
+            return True
+        if found in self._stack or len(self._stack) >= MAX_INCLUDE_DEPTH:
+            self._error(ctx, "E031", f"macro {call.name} calls itself (directly or through "
+                        "other macros)")
+            return True
+        self.statements.append(ir.MacroCall(name=call.name, args=tuple(args), path=str(found),
+                                            span=self._span(ctx), text=self._text(ctx)))
+        if display not in self.files:
+            self.files.append(display)
+        where = self._ctx.mapped.locate(ctx.start.start)
+        what = f"macro {call.name}({', '.join(args)})"
+        self._stack.append(found)
+        self._build(expand_macro(src, args, where, what), found, display)
+        self._stack.pop()
+        return True
+
+    # -- expressions -------------------------------------------------------------
+    # The hot path: children are read directly, since ANTLR's typed accessors
+    # (ctx.expr(0), ctx.name(), ...) scan the children list on every call.
+    def _expr(self, ctx: P.ExprContext) -> ir.Expr:
+        kids = ctx.children
+        if len(kids) == 1:                      # primaryExpr
+            return self._primary(kids[0])
+        if len(kids) == 2:                      # unaryExpr
+            operand = self._expr(kids[1])
+            if kids[0].symbol.type == P.PLUS:
+                return operand
+            return ir.Neg(operand, span=self._span(ctx))
+        return ir.BinOp(kids[1].symbol.text, self._expr(kids[0]), self._expr(kids[2]),
+                        span=self._span(ctx))
+
+    def _primes(self, name_ctx, primes: list) -> int:
+        """Count primes, which must follow the name directly (q'' not q ' ')."""
+        previous = name_ctx.stop
+        for p in primes:
+            if p.symbol.start != previous.stop + 1:
+                self._error(p.symbol, "E006", "a prime must follow the name directly")
+                break
+            previous = p.symbol
+        return len(primes)
+
+    def _vector(self, token, ctx) -> ir.VectorName:
+        text = token.text
+        dyadic = text.endswith(">>")
+        return ir.VectorName(text.rstrip(">"), dyadic, span=self._span(ctx))
+
+    def _primary(self, ctx: P.PrimaryContext) -> ir.Expr:
+        span = self._span(ctx)
+        kids = ctx.children
+        kind = type(ctx)
+        if kind is P.NameAtomContext:
+            return ir.Name(kids[0].start.text, self._primes(kids[0], kids[1:]) if len(kids) > 1
+                           else 0, span=span)
+        if kind is P.NumberAtomContext:
+            return ir.Number(ctx.start.text, span=span)
+        if kind is P.CallAtomContext:
+            args = tuple(self._arg(a) for a in kids[2].children[::2]) \
+                if len(kids) == 4 else ()
+            return ir.Call(kids[0].start.text, args, span=span)
+        if kind is P.VectorAtomContext:
+            return self._vector(ctx.start, ctx)
+        if kind is P.ParenAtomContext:
+            return self._expr(kids[1])
+        if kind is P.IndexAtomContext:
+            return ir.Index(kids[0].start.text, self._indices(kids[-2]),
+                            len(kids) - 4, span=span)
+        if kind is P.MatrixAtomContext:
+            rows = tuple(tuple(self._expr(e) for e in r.children[::2]) for r in kids[1:-1:2])
+            return ir.Matrix(rows, span=span)
+        if kind is P.EmptyMatrixAtomContext:
+            return ir.Matrix((), span=span)
+        if kind is P.RangeAtomContext:
+            return self._name_range(ctx, span)
+        raise AssertionError(f"unhandled primary {kind.__name__}")
+
+    def _name_range(self, ctx: P.RangeAtomContext, span: Span) -> ir.Expr:
+        primes = len(ctx.PRIME())
+        parts: list = [ctx.name().getText()]
+        for child in list(ctx.getChildren())[1:]:
+            if isinstance(child, TerminalNode) and child.symbol.type == P.ID:
+                parts.append(child.getText())
+            elif isinstance(child, P.DeclRangeContext):
+                dims = self._ranges(child)
+                if dims is None:
+                    return ir.NameRange(self._text(ctx), (), span=span)
+                parts.append(dims)
+        names, _ = self._expand(ctx, parts)
+        return ir.NameRange(self._text(ctx), tuple(ir.Name(n, primes, span=span)
+                                                   for n in names or ()), span=span)
+
+    def _indices(self, ctx: P.IndexListContext) -> tuple[ir.Expr, ...]:
+        out = []
+        for item in ctx.children[::2]:
+            kids = item.children
+            if len(kids) == 3:
+                out.append(ir.Range(self._expr(kids[0]), self._expr(kids[2]),
+                                    span=self._span(item)))
+            else:
+                out.append(self._expr(kids[0]))
+        return tuple(out)
+
+    def _arg(self, ctx: P.ArgContext) -> ir.Expr:
+        """`e`, `lo:hi`, `x=v`, `x=a:dx`."""
+        kids = ctx.children
+        if len(kids) == 1:
+            return self._expr(kids[0])
+        groups: list[list] = [[]]
+        for child in kids:
+            if isinstance(child, TerminalNode):
+                if child.symbol.type == P.EQUALS:
+                    groups.append([])
+            else:
+                groups[-1].append(child)
+
+        def side(exprs) -> ir.Expr:
+            if len(exprs) == 2:
+                return ir.Range(self._expr(exprs[0]), self._expr(exprs[1]),
+                                span=Span.of(self._ctx.mapped, exprs[0].start.start,
+                                             exprs[1].stop.stop))
+            return self._expr(exprs[0])
+
+        if len(groups) == 2:
+            return ir.Equation(side(groups[0]), side(groups[1]), span=self._span(ctx))
+        return side(groups[0])
+
+    def _unit(self, ctx: P.UnitContext | None) -> ir.Unit | None:
+        if ctx is None:
+            return None
+        factors = []
+        sign = 1
+        for child in ctx.getChildren():
+            if isinstance(child, TerminalNode):
+                sign = -1 if child.symbol.type == P.SLASH else 1
+                continue
+            power = 1
+            if child.INT() is not None:
+                power = int(child.INT().getText()) * (-1 if child.MINUS() else 1)
+            factors.append((child.name().getText(), sign * power))
+        return ir.Unit(self._text(ctx), tuple(factors), self._span(ctx))
+
+    _HANDLERS = {
+        P.DeclarationContext: _declaration,
+        P.MassStatementContext: _mass,
+        P.InertiaStatementContext: _inertia,
+        P.AssignmentContext: _assignment,
+        P.ExpressionStatementContext: _expression_statement,
+        P.InputStatementContext: _input,
+        P.OutputStatementContext: _output,
+        P.UnitsStatementContext: _units,
+        P.UnitSystemStatementContext: _unit_system,
+        P.CodeStatementContext: _code,
+        P.SaveStatementContext: _save,
+        P.EncodeStatementContext: _encode,
+        P.RunStatementContext: _run,
+        P.ExitStatementContext: _exit,
+        P.SettingContext: _setting,
+    }
+
+
+def sort_key(d: Diagnostic) -> tuple:
+    """Order diagnostics by where they are in the main file (through expansions)."""
+    chain = []
+    loc: Location | None = d.location
+    while loc is not None:
+        chain.append((loc.line, loc.col))
+        loc = loc.via
+    return tuple(reversed(chain))
