@@ -24,21 +24,39 @@ import autolev  # noqa: E402
 
 
 def corpus_models(corpus: Path) -> list[tuple[str, Path]]:
-    """(id, path) of every model row (kind `al`, not a .a macro) found in the corpus."""
+    """(id, path) of every model row (kind `al`, not a .a macro) found in the corpus.
+
+    A row pinned to an older commit whose files differ from the newest ones lives in
+    `OWNER+NAME@commit/` (materialize.py); it is read from an overlay folder that puts
+    those files over the newest ones, so its RUN files and macros are of its commit."""
     listing = ROOT.parent / "shared" / "corpus" / "visible.tsv"
     out, seen = [], set()
     for row in csv.DictReader(open(listing), delimiter="\t"):
         if row["kind"] != "al" or row["path"].lower().endswith(".a"):
             continue
         base = corpus / row["repo"].replace("/", "+")
+        pinned_root = corpus / (row["repo"].replace("/", "+") + "@" + row["commit"][:8])
         p = base / row["path"]
-        pinned = corpus / (row["repo"].replace("/", "+") + "@" + row["commit"][:8]) / row["path"]
-        if pinned.exists():
-            p = pinned
+        if pinned_root.is_dir() and row["id"].endswith(row["commit"][:8]):
+            p = _overlay(base, pinned_root) / row["path"]
         if p.exists() and p not in seen:
             seen.add(p)
             out.append((row["id"], p))
     return out
+
+
+def _overlay(base: Path, pinned: Path) -> Path:
+    """A copy of `base` with the files of `pinned` over it (made once, in the cache)."""
+    import shutil
+    target = base.parent / ".overlay" / pinned.name
+    if not target.exists():
+        shutil.copytree(base, target)
+        for f in pinned.rglob("*"):
+            if f.is_file():
+                dest = target / f.relative_to(pinned)
+                dest.parent.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(f, dest)
+    return target
 
 
 def parse_stage(path: Path) -> tuple[str, str]:

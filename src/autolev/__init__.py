@@ -11,12 +11,13 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from .errors import (AutolevError, AutolevFileError, AutolevSyntaxError, Diagnostic,
-                     Location, Span)
+from .errors import (AutolevError, AutolevFileError, AutolevRuntimeError, AutolevSyntaxError,
+                     AutolevTranslationError, Diagnostic, Location, Span)
 from .ir import Program
 
 __version__ = "0.1.0"
-__all__ = ["parse", "Program", "AutolevError", "AutolevSyntaxError", "AutolevFileError",
+__all__ = ["parse", "transpile", "load", "Program", "AutolevError", "AutolevSyntaxError",
+           "AutolevTranslationError", "AutolevRuntimeError", "AutolevFileError",
            "Diagnostic", "Location", "Span", "__version__"]
 
 
@@ -44,3 +45,28 @@ def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
     program = builder.program()
     program.diagnostics.sort(key=sort_key)
     return program
+
+
+def translation(source: str | os.PathLike, filename: str | None = None):
+    """Parse and translate; returns the `Translation` (code, line map, diagnostics).
+    Raises AutolevSyntaxError or AutolevTranslationError."""
+    from .translate import translate
+
+    program = source if isinstance(source, Program) else parse(source, filename)
+    result = translate(program)
+    errors = [d for d in result.diagnostics if d.severity == "error"]
+    if errors:
+        raise AutolevTranslationError(result.diagnostics)
+    return result
+
+
+def transpile(source: str | os.PathLike, filename: str | None = None) -> str:
+    """The Python module text of an Autolev model (text, or a path)."""
+    return translation(source, filename).code
+
+
+def load(path: str | os.PathLike):
+    """Translate the model at `path`, execute it, and return its `Model`."""
+    from .loader import load_translation
+    p = Path(path)
+    return load_translation(translation(p), str(p))

@@ -153,3 +153,23 @@ class AutolevSyntaxError(AutolevError):
 
 class AutolevFileError(AutolevError):
     """A model file could not be found or read."""
+
+
+class AutolevTranslationError(AutolevError):
+    """The model reads, but a construct cannot be translated.  Carries all diagnostics."""
+
+    def __init__(self, diagnostics: list[Diagnostic]):
+        self.diagnostics = list(diagnostics)
+        errors = [d for d in self.diagnostics if d.severity == "error"]
+        head = f"{len(errors)} error{'s' if len(errors) != 1 else ''}"
+        super().__init__(head + "\n" + "\n".join(d.format() for d in errors))
+
+
+class AutolevRuntimeError(AutolevError):
+    """The translated model failed while building (a missing mass, velocity, ...);
+    the diagnostic points at the Autolev statement."""
+
+    def __init__(self, diagnostic: Diagnostic):
+        self.diagnostic = diagnostic
+        self.diagnostics = [diagnostic]
+        super().__init__(diagnostic.format())

@@ -448,6 +448,7 @@ class Program:
     filename: str
     diagnostics: list[Diagnostic] = field(default_factory=list)   # warnings only
     files: list[str] = field(default_factory=list)                # every file read
+    sources: dict[str, list[str]] = field(default_factory=dict, repr=False)  # their lines
 
     def of_kind(self, kind: str) -> list[Statement]:
         return [s for s in self.statements if s.kind == kind]

@@ -81,11 +81,13 @@ class Builder:
         self.statements: list[ir.Statement] = []
         self.diagnostics: list[Diagnostic] = []
         self.files: list[str] = [filename]
+        self.sources: dict[str, list[str]] = {}
         self._stack: list[Path] = [self.root_path] if self.root_path else []
         self._ctx: _Context | None = None
 
     # -- driving ---------------------------------------------------------------
     def build_source(self, src: SourceFile) -> None:
+        self.sources[src.name] = src.lines
         with _gc_paused():
             self._build(mapped_source(src), self.root_path, src.name)
 
@@ -111,7 +113,8 @@ class Builder:
 
     def program(self) -> ir.Program:
         prog = ir.Program(self.statements, self.symbols, self.filename,
-                          [d for d in self.diagnostics if d.severity != "error"], self.files)
+                          [d for d in self.diagnostics if d.severity != "error"], self.files,
+                          self.sources)
         return prog
 
     @property
@@ -420,6 +423,7 @@ class Builder:
         where = self._ctx.mapped.locate(ctx.start.start)
         src = SourceFile.read(found, display)
         self.files.append(display)
+        self.sources[display] = src.lines
         self._stack.append(found)
         self._build(mapped_source(src, where, f"the file included by RUN {name}"), found, display)
         self._stack.pop()
@@ -457,6 +461,7 @@ class Builder:
                                             span=self._span(ctx), text=self._text(ctx)))
         if display not in self.files:
             self.files.append(display)
+            self.sources[display] = src.lines
         where = self._ctx.mapped.locate(ctx.start.start)
         what = f"macro {call.name}({', '.join(args)})"
         self._stack.append(found)

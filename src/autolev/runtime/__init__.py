@@ -1,0 +1,16 @@
+"""What generated code imports: Autolev semantics on sympy.
+
+    import autolev.runtime as al
+    model = al.Model("pendulum")
+"""
+from .model import KaneEquations, Model
+from .point import Body, Particle, Point
+from .symbols import TIME, Z, derivative, derivatives
+from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
+
+__all__ = ["Model", "KaneEquations", "Frame", "Vector", "Dyadic", "Point", "Particle",
+           "Body", "AutolevModelError", "TIME", "Z", "derivative", "derivatives", "outer"]
+from .functions import *  # noqa: E402,F401,F403  (Autolev's functions: al.dot, al.express, ...)
+from .functions import __all__ as _functions_all  # noqa: E402
+
+__all__ += _functions_all

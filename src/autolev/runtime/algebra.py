@@ -1,0 +1,148 @@
+"""Autolev's algebra functions that work through the definitions table (a mixin of
+Model): EVALUATE, COEF, EXCLUDE, INCLUDE, TAYLOR, SOLVE, ZEE, INV, DET, NICHECK."""
+from __future__ import annotations
+
+import sympy as sm
+
+from . import symbols as S
+from .linalg import coefficients, solve_linear
+from .vector import AutolevModelError, Vector, body_fixed, rodrigues, space_fixed
+
+
+class AlgebraMixin:
+    def evaluate(self, value, mapping: dict):
+        """EVALUATE(E, x=v, ...): E with the values substituted, also inside the
+        definitions E uses (names are kept where nothing changes)."""
+        mapping = {sm.sympify(k): sm.sympify(v) for k, v in mapping.items()}
+        return self.map_scalars(value, lambda e: self.defs.substitute(e, mapping))
+
+    def coef(self, value, var):
+        """COEF(E, x): the coefficient of x in E; COEF([E1;E2], [x, y]): the matrix."""
+        if isinstance(var, (sm.MatrixBase, list, tuple)):
+            vs = list(var)
+            col = value if isinstance(value, sm.MatrixBase) else sm.Matrix([value])
+            zero = {v: 0 for v in vs}
+            return sm.Matrix(len(col), len(vs), lambda i, j: self.defs.substitute(
+                self.defs.diff(col[i], vs[j]), zero))
+        return self.map_scalars(value, lambda e: self.defs.substitute(
+            self.defs.diff(e, var), {var: 0}))
+
+    def exclude(self, value, var):
+        """EXCLUDE(E, x): the terms of E free of x."""
+        vs = list(var) if isinstance(var, (sm.MatrixBase, list, tuple)) else [var]
+        return self.map_scalars(value, lambda e: self.defs.substitute(e, {v: 0 for v in vs}))
+
+    def include(self, value, var):
+        """INCLUDE(E, x): the terms of E that contain x."""
+        return self.map_scalars(value, lambda e: e - self.exclude(e, var))
+
+    def taylor(self, value, order, points):
+        """TAYLOR(E, n, x=a, ...) up to total degree n (or degrees lo..hi, given as
+        (lo, hi)); with x=a:dx the expansion is in the increment dx (perturbation
+        about a), otherwise in x-a.  Works through definitions, so expressions in Z
+        form stay in Z form: term k is (D^k E)(a)/k! with D = sum_i d_i d/dx_i."""
+        lo, hi = (0, int(order)) if not isinstance(order, tuple) else (int(order[0]),
+                                                                         int(order[1]))
+        at, steps, increments = {}, [], {}
+        for var, a, inc in points:
+            a = sm.sympify(a)
+            at[var] = a
+            d = sm.Dummy("d")                      # stands for the increment meanwhile
+            steps.append((var, d))
+            increments[d] = inc if inc is not None else var - a
+
+        def one(e):
+            total = []
+            term = sm.sympify(e)
+            factorial = 1
+            for k in range(hi + 1):
+                if k > 0:
+                    term = sm.Add(*[d * self.defs.diff(term, var) for var, d in steps])
+                    factorial *= k
+                if k >= lo:
+                    total.append(self.defs.substitute(term, at) / factorial)
+            return sm.Add(*total).xreplace(increments)
+        return self.map_scalars(value, one)
+
+    def solve(self, equations, unknowns) -> None:
+        """SOLVE(E, x, y, ...): solve equations linear in the unknowns; the solutions
+        become the definitions (RHS) of the unknowns."""
+        unknowns = list(unknowns)
+        if len(unknowns) == 1 and isinstance(unknowns[0], sm.MatrixBase):
+            unknowns = list(unknowns[0])
+        eqs = list(equations) if isinstance(equations, (sm.MatrixBase, list, tuple)) \
+            else [equations]
+        if len(eqs) != len(unknowns):
+            raise AutolevModelError(f"SOLVE has {len(eqs)} equations for {len(unknowns)} "
+                                    "unknowns")
+        for u in unknowns:
+            if not isinstance(u, sm.Symbol):
+                raise AutolevModelError(f"SOLVE's unknowns are names, not {u}")
+        a, r = coefficients(eqs, unknowns, self.defs)
+        solution = solve_linear(a, -r, self.defs, "SOLVE")
+        for u, v in zip(unknowns, solution):
+            self.define(u, v)
+        self.solved = (eqs, unknowns)
+
+    def zee(self, value):
+        """ZEE(E): E in the compact Z form."""
+        return self.map_scalars(value, self.defs.zify)
+
+    def zee_not(self, names) -> None:
+        """ZEE_NOT = [x, y]: names kept visible (never hidden in a Z)."""
+        self.settings["ZEE_NOT"] = list(names) if not isinstance(names, sm.Basic) else [names]
+
+    def inv(self, m):
+        """INV(M) (entries named by Z's when symbolic)."""
+        m = sm.Matrix(m)
+        if m.rows != m.cols:
+            raise AutolevModelError("INV needs a square matrix")
+        if all(e.is_number for e in m):
+            return m.inv()
+        cols = [solve_linear(m, sm.eye(m.rows)[:, j], self.defs, "INV") for j in range(m.cols)]
+        return sm.Matrix(m.rows, m.cols, lambda i, j: cols[j][i])
+
+    def det(self, m):
+        m = sm.Matrix(m)
+        if m.rows != m.cols:
+            raise AutolevModelError("DET needs a square matrix")
+        if m.rows <= 3 or all(e.is_number for e in m):
+            return self.defs.zify(m.det(method="berkowitz"))
+        return self.defs.zify(m.det(method="bareiss"))
+
+    def nicheck(self):
+        """NICHECK(): kinetic energy minus the work done on the system since TINITIAL,
+        sum over r of the integral of F_r u_r; it stays constant along an exact
+        solution, so its drift measures the integration error."""
+        eqs = self._form(inertia=False)
+        power = sm.Add(*[f * u for f, u in zip(eqs.fr, eqs.speeds)])
+        work = self._nicheck_work
+        if work is None:
+            work = self.variables("NICHECK_WORK")
+            self._nicheck_work = work
+        self.define(S.derivative(work), self.defs.zify(power))
+        self.inputs.setdefault(work, (sm.S.Zero, None))
+        return self.ke() - work
+
+    def setting(self, name: str, value) -> None:
+        self.settings[name] = value
+        if name == "DEGREES":
+            self.degrees = value != "OFF"
+        elif name == "COMPLEX":
+            self.complex = value == "ON"
+
+    def angvel(self, parent, child, kind: str, *angles) -> None:
+        """ANGVEL(A, B, BODYijk, a, b, c): W_B_A> from a rotation sequence's rates."""
+        kind = kind.lower()
+        if kind == "rodrigues":
+            _, w = rodrigues(angles, self.defs.dt_raw)
+            child.set_ang_vel(parent, Vector({child: w}))
+        elif kind.startswith("body"):
+            _, w = body_fixed(angles, kind[4:], self.defs.dt_raw)
+            child.set_ang_vel(parent, Vector({child: w}))
+        elif kind.startswith("space"):
+            _, w = space_fixed(angles, kind[5:], self.defs.dt_raw)
+            child.set_ang_vel(parent, Vector({parent: w}))
+        else:
+            raise AutolevModelError(f"ANGVEL does not know the rotation type {kind.upper()}")
+

@@ -1,0 +1,345 @@
+"""The definitions table and calculus through it.
+
+Autolev keeps names: after `Q1' = U1`, `X = expr` (X declared) or an intermediate
+Z's definition, later expressions still hold the *symbol*, and the definition is
+used by D(), DT(), RHS(), EXPLICIT() and the generated numerics.  This module is
+that table and the calculus over it:
+
+* `diff(e, x)`  partial derivative of e with respect to x, through every definition
+* `dt(e)`       total time derivative, through every definition
+* `substitute(e, {x: v})`  e with x replaced, also inside the definitions e uses
+* `explicit(e)` e with every definition expanded (EXPLICIT)
+* `zify(e)`     a Z name for e when e is not trivial (hash-consed: one Z per value)
+
+Derived quantities of a defined symbol (its derivatives, its restrictions) become
+new Z's, cached, so expressions stay small however deep the model.  Everything is
+computed iteratively in dependency order (no recursion on the depth of the chain).
+"""
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+
+import sympy as sm
+
+from .symbols import TIME, Z, derivative, new_z
+from .errors import AutolevModelError
+from .fastdiff import diff as fast_diff
+
+
+class NumericPoint:
+    """Values for a numeric evaluation: given ones, else a fixed pseudo-random value
+    per symbol (the same for a symbol every time), or 0 for the time-varying ones when
+    `zero_varying` (the configuration where models are usually linearised)."""
+
+    def __init__(self, defs: "Definitions", values: Mapping | None = None,
+                 zero_varying: bool = False, seed: int = 0):
+        self.defs = defs
+        self.values = dict(values or {})
+        self.zero_varying = zero_varying
+        self.seed = seed
+        self.cache: dict = {}
+
+    def value(self, sym, cache):
+        if sym in cache:
+            return cache[sym]
+        if sym in self.values:
+            return self.values[sym]
+        if self.zero_varying and sym in self.defs.varying:
+            return sm.S.Zero
+        import zlib
+        h = zlib.crc32(f"{sym.name}/{self.seed}".encode()) / 2 ** 32
+        return sm.Float(0.5 + h)
+
+
+def _number(e):
+    try:
+        return complex(e)
+    except (TypeError, ValueError):
+        return complex("nan")
+
+
+class _CachedFor:
+    """`s in _CachedFor(cache, k)` is `(s, k) in cache`: the done-set of one key."""
+
+    __slots__ = ("cache", "k")
+
+    def __init__(self, cache: dict, k) -> None:
+        self.cache, self.k = cache, k
+
+    def __contains__(self, s) -> bool:
+        return (s, self.k) in self.cache
+
+
+def is_small(e: sm.Basic) -> bool:
+    """Expressions kept inline rather than named: atoms, -x, 2*x, x+y, x**2, cos(q)."""
+    if e.is_Atom:
+        return True
+    args = e.args
+    if e.is_Mul or e.is_Add or e.is_Pow:
+        return len(args) == 2 and args[0].is_Atom and args[1].is_Atom
+    if isinstance(e, sm.Function):
+        return len(args) == 1 and args[0].is_Atom
+    return False
+
+
+class Definitions:
+    """Definitions of symbols (user definitions and Z's) and calculus through them."""
+
+    def __init__(self) -> None:
+        self.rhs: dict[sm.Symbol, sm.Expr] = {}
+        self.varying: set[sm.Symbol] = {TIME}       # symbols with a time derivative
+        self._z_of: dict[sm.Expr, Z] = {}           # hash-consing of Z definitions
+        self._pdeps: dict[sm.Symbol, frozenset] = {}
+        self._dt: dict[sm.Symbol, sm.Expr] = {}
+        self._dt_raw: dict[sm.Symbol, sm.Expr] = {}
+        self._diff: dict[tuple[sm.Symbol, sm.Symbol], sm.Expr] = {}
+        self._subs: dict[tuple[sm.Symbol, frozenset], sm.Expr] = {}
+        self._explicit: dict[sm.Symbol, sm.Expr] = {}
+        self._fs: dict[sm.Symbol, frozenset] = {}   # free symbols of each definition
+        self.z_count = 0
+
+    # -- the table -------------------------------------------------------------
+    def define(self, sym: sm.Symbol, expr) -> None:
+        """Record `sym := expr`.  A user definition drops derived caches (a new
+        definition of X' changes what DT(X) is)."""
+        expr = sm.sympify(expr)
+        if sym in expr.free_symbols or any(
+                sym in self.primitive_deps(f) for f in expr.free_symbols if f in self.rhs):
+            raise AutolevModelError(f"{sym} cannot be defined in terms of itself: {sym} = "
+                                    f"{expr}")
+        if not isinstance(sym, Z):
+            self._invalidate()
+        self.rhs[sym] = expr
+        self._fs.pop(sym, None)
+
+    def undefine(self, sym: sm.Symbol) -> None:
+        if self.rhs.pop(sym, None) is not None:
+            self._invalidate()
+
+    def _invalidate(self) -> None:
+        self._pdeps.clear()
+        self._dt.clear()
+        self._dt_raw.clear()
+        self._diff.clear()
+        self._subs.clear()
+        self._explicit.clear()
+
+    def is_defined(self, sym) -> bool:
+        return sym in self.rhs
+
+    def mark_varying(self, *syms: sm.Symbol) -> None:
+        self.varying.update(syms)
+
+
+    def zify(self, expr) -> sm.Expr:
+        """A Z standing for `expr`, unless `expr` is small enough to keep inline."""
+        expr = sm.sympify(expr)
+        if is_small(expr):
+            return expr
+        z = self._z_of.get(expr)
+        if z is None:
+            z = new_z()
+            self.rhs[z] = expr
+            self._z_of[expr] = z
+            self.z_count += 1
+        return z
+
+    # -- dependency order ------------------------------------------------------
+    def _defined_in(self, expr) -> list[sm.Symbol]:
+        return [s for s in expr.free_symbols if s in self.rhs]
+
+    def free(self, sym: sm.Symbol) -> frozenset:
+        """Free symbols of the definition of sym (cached: definitions do not change)."""
+        fs = self._fs.get(sym)
+        if fs is None:
+            fs = self._fs[sym] = frozenset(self.rhs[sym].free_symbols)
+        return fs
+
+    def _post_order(self, roots: Iterable[sm.Symbol], done, prune=None) -> list[sm.Symbol]:
+        """Defined symbols reachable from roots, dependencies first.
+
+        Symbols `in done` are skipped; so are those for which `prune(s)` is true,
+        and what lies only beyond them."""
+        order: list[sm.Symbol] = []
+        seen: set[sm.Symbol] = set()
+        stack = [(r, False) for r in roots if r in self.rhs]
+        while stack:
+            s, expanded = stack.pop()
+            if expanded:
+                order.append(s)
+                continue
+            if s in seen or s in done or (prune is not None and prune(s)):
+                continue
+            seen.add(s)
+            stack.append((s, True))
+            for f in self.free(s):
+                if f in self.rhs and f not in seen and f not in done:
+                    stack.append((f, False))
+        return order
+
+    def primitive_deps(self, sym: sm.Symbol) -> frozenset:
+        """The undefined symbols a defined symbol depends on (through definitions)."""
+        for s in self._post_order([sym], self._pdeps):
+            deps: set = set()
+            for f in self.free(s):
+                if f in self.rhs:
+                    deps |= self._pdeps[f]
+                else:
+                    deps.add(f)
+            self._pdeps[s] = frozenset(deps)
+        return self._pdeps[sym]
+
+    def depends_on(self, expr, x: sm.Symbol) -> bool:
+        """Whether expr depends on x, directly or through definitions."""
+        expr = sm.sympify(expr)
+        fs = expr.free_symbols
+        if x in fs:
+            return True
+        if x in self.rhs:   # x itself defined: walk the chain
+            return any(x in self.free(s)
+                       for s in self._post_order(self._defined_in(expr), {}))
+        return any(x in self.primitive_deps(s) for s in fs if s in self.rhs)
+
+    # -- differentiation ---------------------------------------------------------
+    def diff(self, expr, x: sm.Symbol) -> sm.Expr:
+        """d expr / d x, through every definition (x itself is not expanded)."""
+        expr = sm.sympify(expr)
+        if not isinstance(x, sm.Symbol):
+            raise TypeError(f"can only differentiate with respect to a symbol, not {x}")
+        relevant = [s for s in self._defined_in(expr) if s != x]
+        if x in self.rhs:
+            def depends(s):
+                return self.depends_on(s, x)
+        else:
+            def depends(s):
+                return x in self.primitive_deps(s)
+        for s in self._post_order(relevant, _CachedFor(self._diff, x),
+                                  prune=lambda s: s == x or not depends(s)):
+            self._diff[(s, x)] = self.zify(self._diff_shallow(self.rhs[s], x, self.free(s)))
+        return self._diff_shallow(expr, x)
+
+    def _diff_shallow(self, expr, x, fs=None) -> sm.Expr:
+        """Chain rule one level deep, using the cached derivatives of defined symbols."""
+        fs = expr.free_symbols if fs is None else fs
+        terms = [fast_diff(expr, x)] if x in fs else []
+        for s in fs:
+            if s not in self.rhs:
+                continue
+            if s == x:
+                continue
+            ds = self._diff.get((s, x))
+            if ds is None:
+                if not self.depends_on(s, x):
+                    continue
+                ds = self._diff[(s, x)] = self.zify(self._diff_shallow(self.rhs[s], x,
+                                                                        self.free(s)))
+            if ds != 0:
+                terms.append(fast_diff(expr, s) * ds)
+        return sm.Add(*terms)
+
+    def dt(self, expr, through_definitions: bool = True) -> sm.Expr:
+        """Total time derivative of a scalar expression.
+
+        A variable X differentiates to its derivative symbol X' when X' has a
+        definition of its own or X has none (Autolev: with SPECIFIED EA'' and EA,
+        EA', EA'' each defined, DT(EA') is EA''); otherwise through X's definition
+        (`Q6' = DT(Q6)` after Q6 was solved for).  A Z always goes through.  With
+        through_definitions=False every variable gives its derivative symbol (the
+        angular velocity an orientation implies is in the angles' own rates)."""
+        expr = sm.sympify(expr)
+        cache = self._dt if through_definitions else self._dt_raw
+        through = self._dt_through if through_definitions else \
+            (lambda s: isinstance(s, Z))
+        for s in self._post_order(self._defined_in(expr), cache,
+                                  prune=lambda s: not through(s)):
+            cache[s] = self.zify(self._dt_shallow(self.rhs[s], cache, through, self.free(s)))
+        return self._dt_shallow(expr, cache, through)
+
+    def dt_raw(self, expr) -> sm.Expr:
+        return self.dt(expr, through_definitions=False)
+
+    def _dt_through(self, s) -> bool:
+        return s in self.rhs and (isinstance(s, Z) or s not in self.varying
+                                  or derivative(s) not in self.rhs)
+
+    def _dt_shallow(self, expr, cache, through, fs=None) -> sm.Expr:
+        terms = []
+        for s in (expr.free_symbols if fs is None else fs):
+            if through(s):
+                ds = cache[s]
+            elif s is TIME:
+                ds = sm.S.One
+            elif s in self.varying:
+                ds = derivative(s)
+            else:
+                continue
+            if ds != 0:
+                terms.append(fast_diff(expr, s) * ds)
+        return sm.Add(*terms)
+
+    # -- substitution and expansion ----------------------------------------------
+    def substitute(self, expr, mapping: Mapping) -> sm.Expr:
+        """expr with the symbols of `mapping` replaced, inside definitions too."""
+        expr = sm.sympify(expr)
+        if not mapping:
+            return expr
+        mapping = {sm.sympify(k): sm.sympify(v) for k, v in mapping.items()}
+        key = frozenset(mapping.items())
+        keys = set(mapping)
+        touched = [s for s in self._defined_in(expr) if s not in keys]
+        for s in self._post_order(touched, _CachedFor(self._subs, key),
+                                  prune=lambda s: s in keys
+                                  or not (self.primitive_deps(s) & keys)):
+            self._subs[(s, key)] = self.zify(self._subs_shallow(self.rhs[s], mapping, key,
+                                                                 self.free(s)))
+        return self._subs_shallow(expr, mapping, key)
+
+    def _subs_shallow(self, expr, mapping, key, fs=None) -> sm.Expr:
+        repl = dict(mapping)
+        for s in (expr.free_symbols if fs is None else fs):
+            if s not in self.rhs:
+                continue
+            if s in mapping:
+                continue
+            r = self._subs.get((s, key))
+            if r is not None:
+                repl[s] = r
+        return expr.xreplace(repl) if repl else expr
+
+    def explicit(self, expr, keep: Iterable[sm.Symbol] = ()) -> sm.Expr:
+        """expr with every definition (and Z) expanded, except the symbols in `keep`."""
+        expr = sm.sympify(expr)
+        keep = set(keep)
+        if keep:
+            cache: dict = {}
+        else:
+            cache = self._explicit
+        roots = [s for s in self._defined_in(expr) if s not in keep]
+        for s in self._post_order(roots, cache):
+            if s in keep:
+                continue
+            rhs = self.rhs[s]
+            repl = {f: cache[f] for f in rhs.free_symbols if f in cache}
+            cache[s] = rhs.xreplace(repl) if repl else rhs
+        repl = {s: cache[s] for s in roots if s in cache}
+        return expr.xreplace(repl) if repl else expr
+
+    def expand_z(self, expr) -> sm.Expr:
+        """expr with only the Z's expanded (user definitions keep their names)."""
+        keep = [s for s in self.rhs if not isinstance(s, Z)]
+        return self.explicit(expr, keep)
+
+    # -- numbers -----------------------------------------------------------------
+    def numeric(self, expr, point: "NumericPoint") -> complex:
+        """The value of expr at a point (values of the undefined symbols), evaluating
+        the definitions it uses once per point."""
+        expr = sm.sympify(expr)
+        cache = point.cache
+        for s in self._post_order(self._defined_in(expr), cache):
+            rhs = self.rhs[s]
+            cache[s] = _number(rhs.xreplace({f: point.value(f, cache) for f in self.free(s)}))
+        return _number(expr.xreplace({f: point.value(f, cache) for f in expr.free_symbols}))
+
+    def evaluation_order(self, roots: Iterable[sm.Symbol]) -> list[sm.Symbol]:
+        """Defined symbols needed to evaluate `roots`, dependencies first."""
+        return self._post_order([r for r in roots if r in self.rhs], {})

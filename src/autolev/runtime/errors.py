@@ -1,0 +1,5 @@
+"""The error the runtime raises when a model asks for something it cannot do."""
+
+
+class AutolevModelError(Exception):
+    """A model cannot do what a statement asks (missing mass, velocity, ...)."""

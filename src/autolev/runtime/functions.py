@@ -1,0 +1,363 @@
+"""Autolev's functions that need no model: vector algebra, matrices, algebra, units."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import sympy as sm
+
+from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
+
+ZERO = Vector()
+
+
+# -- vectors -----------------------------------------------------------------------
+class VectorColumn(list):
+    """[V1>; V2>]: a column of vectors (DOT with it gives a column of scalars)."""
+
+
+def dot(a, b):
+    """DOT(a, b) of vectors and dyadics; with a column of vectors, a column."""
+    if isinstance(a, VectorColumn):
+        return sm.Matrix([dot(x, b) for x in a])
+    if isinstance(b, VectorColumn):
+        return sm.Matrix([dot(a, x) for x in b])
+    if isinstance(a, (Vector, Dyadic)):
+        return a.dot(b)
+    raise AutolevModelError(f"DOT needs vectors or dyadics, not {type(a).__name__}")
+
+
+def cross(a, b):
+    if isinstance(a, (Vector, Dyadic)):
+        return a.cross(b)
+    raise AutolevModelError(f"CROSS needs vectors, not {type(a).__name__}")
+
+
+def mag(v: Vector):
+    return sm.sqrt(v.dot(v))
+
+
+def unitvec(v: Vector) -> Vector:
+    return v / mag(v)
+
+
+def express(x, frame: Frame, other: Frame | None = None):
+    """EXPRESS(V>, A) or EXPRESS(D>>, A): the same quantity with measure numbers in A."""
+    if isinstance(x, Vector):
+        return x.express(frame)
+    if isinstance(x, Dyadic):
+        return x.express(frame, other or frame)
+    if isinstance(x, sm.MatrixBase):
+        return x
+    raise AutolevModelError(f"EXPRESS takes a vector or dyadic, not {type(x).__name__}")
+
+
+def vector(frame: Frame, *comps) -> Vector:
+    """VECTOR(A, x, y, z) or VECTOR(A, M): measure numbers in A."""
+    if len(comps) == 1:
+        m = sm.Matrix(comps[0])
+        if len(m) != 3:
+            raise AutolevModelError(f"VECTOR needs 3 measure numbers, not {len(m)}")
+        comps = tuple(m)
+    if len(comps) != 3:
+        raise AutolevModelError(f"VECTOR needs 3 measure numbers, not {len(comps)}")
+    return Vector({frame: tuple(sm.sympify(c) for c in comps)})
+
+
+def matrix(frame: Frame, x, other: Frame | None = None) -> sm.Matrix:
+    """MATRIX(A, V>): the measure numbers in A as a column; MATRIX(A, D>>): 3x3."""
+    if isinstance(x, Vector):
+        return x.to_matrix(frame)
+    if isinstance(x, Dyadic):
+        return x.to_matrix(frame, other or frame)
+    raise AutolevModelError(f"MATRIX takes a vector or dyadic, not {type(x).__name__}")
+
+
+def dyadic(frame: Frame, m, other: Frame | None = None) -> Dyadic:
+    """DYADIC(A, M): sum of M[i,j] Ai> Aj> (or Ai> Bj> with a second frame)."""
+    m = sm.Matrix(m)
+    if m.shape != (3, 3):
+        raise AutolevModelError(f"DYADIC needs a 3x3 matrix, not {m.rows}x{m.cols}")
+    return Dyadic({(frame, other or frame): m})
+
+
+# -- matrices --------------------------------------------------------------------------
+def set_element(m, index: tuple, value) -> sm.Matrix:
+    """X[i] = value or X[i, j] = value (1-based); X grows to hold the element."""
+    idx = [_index(i) for i in index]
+    if m is None:
+        m = sm.zeros(0, 1) if len(idx) == 1 else sm.zeros(0, 0)
+    m = sm.Matrix(m) if not isinstance(m, sm.MutableDenseMatrix) else m.copy()
+    if len(idx) == 1:
+        (i,) = idx
+        if m.cols > 1 and m.rows == 1:           # a row: grow along it
+            if i > m.cols:
+                m = m.row_join(sm.zeros(1, i - m.cols))
+            m[0, i - 1] = value
+            return m
+        if m.cols == 0:
+            m = sm.zeros(m.rows, 1)
+        if i > m.rows:
+            m = m.col_join(sm.zeros(i - m.rows, m.cols))
+        m[i - 1, 0] = value
+        return m
+    i, j = idx
+    if i > m.rows:
+        m = m.col_join(sm.zeros(i - m.rows, m.cols))
+    if j > m.cols:
+        m = m.row_join(sm.zeros(m.rows, j - m.cols))
+    m[i - 1, j - 1] = value
+    return m
+
+
+def _index(i) -> int:
+    try:
+        k = int(i)
+    except TypeError:
+        raise AutolevModelError(f"an index must be a whole number, not {i}") from None
+    if k != i or k < 1:
+        raise AutolevModelError(f"an index counts from 1, not {i}")
+    return k
+
+
+def block_matrix(rows) -> sm.Matrix:
+    """[A, B; C, D] where entries may be matrices (joined into one matrix)."""
+    built = []
+    for row in rows:
+        parts = [x if isinstance(x, sm.MatrixBase) else sm.Matrix([[x]]) for x in row]
+        built.append(sm.Matrix.hstack(*parts))
+    return sm.Matrix.vstack(*built)
+
+
+def transpose(m) -> sm.Matrix:
+    return sm.Matrix(m).T
+
+
+def trace(m):
+    return sm.Matrix(m).trace()
+
+
+def diagmat(n, *args) -> sm.Matrix:
+    """DIAGMAT(n, x): x on the diagonal of n x n; DIAGMAT(n, m, x): of n x m."""
+    if len(args) == 1:
+        rows, cols, x = int(n), int(n), args[0]
+    else:
+        rows, cols, x = int(n), int(args[0]), args[1]
+    return sm.Matrix(rows, cols, lambda i, j: x if i == j else 0)
+
+
+def _selection(items, count: int) -> list[int]:
+    out = []
+    for it in items:
+        if isinstance(it, tuple):
+            lo, hi = int(it[0]), int(it[1])
+            out.extend(range(lo, hi + 1))
+        else:
+            out.append(int(it))
+    for k in out:
+        if not 1 <= k <= count:
+            raise AutolevModelError(f"index {k} is outside 1..{count}")
+    return [k - 1 for k in out]
+
+
+def rows(m, *selection):
+    """ROWS(M): how many rows; ROWS(M, i, j:k, ...): those rows."""
+    m = sm.Matrix(m)
+    if not selection:
+        return m.rows
+    return m.extract(_selection(selection, m.rows), list(range(m.cols)))
+
+
+def cols(m, *selection):
+    m = sm.Matrix(m)
+    if not selection:
+        return m.cols
+    return m.extract(list(range(m.rows)), _selection(selection, m.cols))
+
+
+def eig(m, vectors: bool = False):
+    """EIG(M): eigenvalues (numbers), ordered by real part then imaginary part;
+    with vectors=True also the unit eigenvectors as the columns of a matrix."""
+    a = np.array(sm.Matrix(m).evalf(), dtype=complex)
+    if a.ndim != 2 or a.shape[0] != a.shape[1]:
+        raise AutolevModelError("EIG needs a square matrix of numbers")
+    if not np.all(np.isfinite(a)):
+        raise AutolevModelError("EIG needs a matrix of numbers (substitute values first)")
+    values, vecs = np.linalg.eig(a)
+    order = sorted(range(len(values)), key=lambda i: (round(values[i].real, 12),
+                                                      round(values[i].imag, 12)))
+    vals = sm.Matrix([_number(values[i]) for i in order])
+    if not vectors:
+        return vals
+    vm = sm.Matrix(len(values), len(values), lambda r, c: _number(vecs[r, order[c]]))
+    return vals, vm
+
+
+def _number(z: complex):
+    if abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)):
+        return sm.Float(z.real)
+    return sm.Float(z.real) + sm.I * sm.Float(z.imag)
+
+
+# -- algebra ----------------------------------------------------------------------------
+def _map(x, fn):
+    if isinstance(x, (Vector, Dyadic)):
+        return x.applyfunc(fn)
+    if isinstance(x, sm.MatrixBase):
+        return x.applyfunc(fn)
+    return fn(sm.sympify(x))
+
+
+def replace(x, mapping: dict):
+    """REPLACE(E, a=b, ...): substitute sub-expressions."""
+    return _map(x, lambda e: e.subs(mapping))
+
+
+def expand(x, lo=None, hi=None):
+    """EXPAND(E) or EXPAND(E, n:m)."""
+    return _map(x, sm.expand)
+
+
+def factor(x, *vars_):
+    if vars_:
+        return _map(x, lambda e: sm.collect(sm.expand(e), list(vars_)))
+    return _map(x, sm.factor)
+
+
+def simplify(x):
+    return _map(x, sm.simplify)
+
+
+def arrange(x, n, var):
+    """ARRANGE(E, n, x): E collected in powers of x."""
+    return _map(x, lambda e: sm.collect(sm.expand(e), var))
+
+
+def polynomial(coeffs, var, degree=None):
+    """POLYNOMIAL([a, b, c], x) = a*x^2 + b*x + c; POLYNOMIAL(E, x, n) is the row of
+    the coefficients of E in x, from x^n down to x^0 (the inverse)."""
+    if degree is not None:
+        e = sm.expand(sm.sympify(coeffs))
+        n = int(degree)
+        return sm.Matrix([[e.coeff(var, k) if k else e.subs(var, 0)
+                           for k in range(n, -1, -1)]])
+    if not isinstance(coeffs, (list, tuple, sm.MatrixBase)):
+        raise AutolevModelError("POLYNOMIAL takes a list of coefficients and a variable")
+    c = list(sm.Matrix(coeffs))
+    n = len(c) - 1
+    return sm.Add(*[ci * var ** (n - i) for i, ci in enumerate(c)])
+
+
+def roots(p, var=None, degree=None):
+    """ROOTS([c...]) of the polynomial with those coefficients (highest first), or
+    ROOTS(P, x, n) of a polynomial expression in x.  Numbers when the coefficients are
+    numbers (ordered by real, then imaginary part); the closed forms otherwise, up to
+    degree 2."""
+    if var is None:
+        coeffs = list(sm.Matrix(p))
+    else:
+        coeffs = sm.Poly(sm.expand(p), var).all_coeffs()
+    if all(sm.sympify(c).is_number for c in coeffs):
+        r = np.roots([complex(sm.N(c)) for c in coeffs])
+        order = sorted(range(len(r)), key=lambda i: (round(r[i].real, 12),
+                                                     round(r[i].imag, 12)))
+        return sm.Matrix([_number(r[i]) for i in order])
+    if len(coeffs) == 2:
+        return sm.Matrix([-coeffs[1] / coeffs[0]])
+    if len(coeffs) == 3:
+        a, b, c = coeffs
+        d = sm.sqrt(b ** 2 - 4 * a * c)
+        return sm.Matrix([(-b - d) / (2 * a), (-b + d) / (2 * a)])
+    raise AutolevModelError("ROOTS of a polynomial with symbolic coefficients is only "
+                            "available up to degree 2; substitute numbers first")
+
+
+def epsilon(x, tol):
+    """EPSILON(E, tol): numbers smaller than tol in magnitude become 0."""
+    tol = float(tol)
+
+    def clean(e):
+        return e.xreplace({f: 0 for f in e.atoms(sm.Float) if abs(float(f)) < tol})
+    return _map(x, clean)
+
+
+def integer_part(x):
+    """INT(x): x truncated toward zero."""
+    x = sm.sympify(x)
+    if x.is_number and x.is_real:
+        return sm.Integer(int(x))
+    return sm.sign(x) * sm.floor(sm.Abs(x))
+
+
+def round_half_away(x):
+    """ROUND(x): nearest integer, halves away from zero."""
+    x = sm.sympify(x)
+    if x.is_number and x.is_real:
+        v = float(x)
+        return sm.Integer(int(math.floor(abs(v) + 0.5)) * (1 if v >= 0 else -1))
+    return sm.sign(x) * sm.floor(sm.Abs(x) + sm.Rational(1, 2))
+
+
+def degrees_to_radians(x):
+    return sm.sympify(x) * sm.pi / 180
+
+
+# -- units ----------------------------------------------------------------------------------
+# value of one unit in SI base units (exact where the definition is exact)
+_UNIT_SI = {
+    "rad": sm.S.One, "radian": sm.S.One, "radians": sm.S.One,
+    "deg": sm.pi / 180, "degree": sm.pi / 180, "degrees": sm.pi / 180, "degs": sm.pi / 180,
+    "rev": 2 * sm.pi, "revs": 2 * sm.pi, "revolution": 2 * sm.pi, "rpm": 2 * sm.pi / 60,
+    "m": sm.S.One, "meter": sm.S.One, "meters": sm.S.One, "metre": sm.S.One,
+    "cm": sm.Rational(1, 100), "mm": sm.Rational(1, 1000), "km": sm.Integer(1000),
+    "in": sm.Rational(254, 10000), "inch": sm.Rational(254, 10000),
+    "ft": sm.Rational(3048, 10000), "foot": sm.Rational(3048, 10000),
+    "feet": sm.Rational(3048, 10000), "mile": sm.Rational(1609344, 1000),
+    "s": sm.S.One, "sec": sm.S.One, "second": sm.S.One, "seconds": sm.S.One,
+    "min": sm.Integer(60), "minute": sm.Integer(60), "hr": sm.Integer(3600),
+    "hour": sm.Integer(3600), "ms": sm.Rational(1, 1000),
+    "kg": sm.S.One, "g": sm.Rational(1, 1000), "gram": sm.Rational(1, 1000),
+    "lbm": sm.Rational(45359237, 100000000), "slug": sm.Rational(145939029372064, 10**13),
+    "n": sm.S.One, "newton": sm.S.One, "newtons": sm.S.One,
+    "lbf": sm.Rational(44482216152605, 10**13), "kip": sm.Rational(44482216152605, 10**10),
+    "j": sm.S.One, "joule": sm.S.One, "joules": sm.S.One, "w": sm.S.One, "watt": sm.S.One,
+}
+
+
+def unit_value(text: str):
+    """Value of a unit expression (`n*m`, `lbf*ft`, `rad/sec`) in SI base units."""
+    import re
+    tokens = re.findall(r"[A-Za-z_]+|\d+(?:\.\d*)?|[*/^.]", text)
+    value = sm.S.One
+    op = "*"
+    i = 0
+    while i < len(tokens):
+        tok = tokens[i]
+        if tok in "*/.":
+            op = "/" if tok == "/" else "*"
+            i += 1
+            continue
+        if tok[0].isdigit():
+            factor = sm.nsimplify(tok)
+        else:
+            factor = _UNIT_SI.get(tok.lower())
+            if factor is None:
+                raise AutolevModelError(f"unknown unit '{tok}' in {text}")
+        if i + 2 < len(tokens) and tokens[i + 1] == "^":
+            factor = factor ** int(tokens[i + 2])
+            i += 2
+        value = value * factor if op == "*" else value / factor
+        i += 1
+    return value
+
+
+def units_factor(a: str, b: str):
+    """UNITS(a, b): the number of b in one a (UNITS(deg, rad) = pi/180)."""
+    return unit_value(a) / unit_value(b)
+
+
+__all__ = ["ZERO", "VectorColumn", "dot", "cross", "mag", "unitvec", "express", "vector", "matrix", "dyadic",
+           "outer", "set_element", "block_matrix", "transpose", "trace", "diagmat", "rows",
+           "cols", "eig", "replace", "expand", "factor", "simplify", "arrange", "polynomial",
+           "roots", "epsilon", "integer_part", "round_half_away", "degrees_to_radians",
+           "unit_value", "units_factor"]

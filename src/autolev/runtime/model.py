@@ -1,0 +1,724 @@
+"""The model: everything a translated .al file declares and computes.
+
+Generated code creates one `Model` and calls it statement by statement.  The model
+keeps the symbol kinds, the definitions table, frames, points and bodies, the loads,
+the constraints, and forms Kane's equations with Autolev's conventions.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sm
+
+from . import symbols as S
+from .algebra import AlgebraMixin
+from .io import IOMixin
+from .calculus import Definitions
+from .linalg import coefficients, solve_linear
+from .point import Body, Particle, Point
+from .vector import (AutolevModelError, Dyadic, Frame, Vector, _vector, body_fixed,
+                     euler_parameter_rates, space_fixed)
+
+SCALAR_KINDS = ("constant", "variable", "motionvariable", "specified", "imaginary")
+
+
+@dataclass
+class SymbolInfo:
+    kind: str            # constant variable motionvariable specified imaginary
+    order: int           # derivatives declared
+    index: int           # declaration order
+
+
+@dataclass
+class KaneEquations:
+    """Kane's dynamical equations, one row per independent (then auxiliary) speed."""
+
+    speeds: list          # independent speeds (rows), in order
+    auxiliary: list       # auxiliary speeds (extra rows)
+    dependent: list       # dependent speeds (defined by the constraints)
+    fr: sm.Matrix
+    frstar: sm.Matrix
+    unknowns: list = field(default_factory=list)   # KANE(F1, ...): solved from the aux rows
+
+    @property
+    def rows(self) -> sm.Matrix:
+        return self.fr + self.frstar
+
+
+class Model(AlgebraMixin, IOMixin):
+    def __init__(self, name: str = "model", degrees: bool = True, complex: bool = False):
+        self.name = name
+        self.defs = Definitions()
+        self.t = S.TIME
+        self.degrees = degrees
+        self.complex = complex
+        self.newtonian_frame: Frame | None = None
+        self.frames_by_name: dict[str, Frame] = {}
+        self.points_by_name: dict[str, Point] = {}
+        self.bodies_list: list[Body] = []
+        self.particles_list: list[Particle] = []
+        self.info: dict[sm.Symbol, SymbolInfo] = {}
+        self.forces: dict[Point, Vector] = {}
+        self.torques: dict[Frame, Vector] = {}
+        self.dependent_speeds: list[sm.Symbol] = []
+        self.auxiliary_speeds: list[sm.Symbol] = []
+        self.kane_equations: KaneEquations | None = None
+        self._version = 0
+        self._formed: tuple[int, KaneEquations] | None = None
+        self.settings: dict[str, object] = {}
+        self.solved = None
+        self._nicheck_work = None
+        self.inputs: dict = {}          # symbol or integration name -> (value, unit)
+        self.outputs: list = []         # one list of (expr, label, unit) per OUTPUT
+        self.unit_of: dict = {}         # UNITS x = unit
+        self.unit_system_names: tuple = ()
+        self.encoded: list = []         # (name, value) of ENCODE
+        self.code_commands: list = []   # (kind, filename, args, sweep, options)
+
+    def __repr__(self) -> str:
+        return f"<autolev Model {self.name}>"
+
+    def _changed(self) -> None:
+        self._version += 1
+
+    def _orientation_changed(self) -> None:
+        for f in self.frames_by_name.values():
+            f._dcm_cache.clear()
+        for p in self.points_by_name.values():
+            p._acc_derived.clear()
+        self._changed()
+
+    # -- declarations ------------------------------------------------------------------
+    def newtonian(self, name: str) -> Frame:
+        """NEWTONIAN N: the inertial frame and its origin NO (at rest in N)."""
+        frame = self.frame(name)
+        self.newtonian_frame = frame
+        origin = self.point(name + "O")
+        origin.set_vel(frame, Vector())
+        origin.set_acc(frame, Vector())
+        frame.origin = origin
+        return frame
+
+    def frame(self, name: str) -> Frame:
+        f = Frame(name, self)
+        self.frames_by_name[name] = f
+        return f
+
+    def frames(self, *names: str):
+        out = tuple(self.frame(n) for n in _split(names))
+        return out[0] if len(out) == 1 else out
+
+    def body(self, name: str) -> Body:
+        center = self.point(name + "O")
+        b = Body(name, self, center)
+        self.frames_by_name[name] = b
+        self.bodies_list.append(b)
+        return b
+
+    def bodies(self, *names: str):
+        out = tuple(self.body(n) for n in _split(names))
+        return out[0] if len(out) == 1 else out
+
+    def point(self, name: str) -> Point:
+        p = Point(name, self)
+        self.points_by_name[name] = p
+        return p
+
+    def points(self, *names: str):
+        out = tuple(self.point(n) for n in _split(names))
+        return out[0] if len(out) == 1 else out
+
+    def particle(self, name: str) -> Particle:
+        p = Particle(name, self)
+        self.points_by_name[name] = p
+        self.particles_list.append(p)
+        return p
+
+    def particles(self, *names: str):
+        out = tuple(self.particle(n) for n in _split(names))
+        return out[0] if len(out) == 1 else out
+
+    def _declare(self, names, kind: str, order: int = 0, sign: str | None = None):
+        out = []
+        for n in _split(names):
+            sym = S.scalar(n, real=not self.complex and kind != "imaginary", sign=sign)
+            if kind == "imaginary":
+                sym = sm.I
+            else:
+                self.info[sym] = SymbolInfo(kind, order, len(self.info))
+                if kind != "constant":
+                    self.defs.mark_varying(sym, *(S.derivative(sym, k) for k in range(1, order + 1)))
+                    for k in range(1, order + 1):
+                        d = S.derivative(sym, k)
+                        self.info.setdefault(d, SymbolInfo(kind, order - k, len(self.info)))
+            out.append(sym)
+        return out[0] if len(out) == 1 else tuple(out)
+
+    def constants(self, *names: str, sign: str | None = None):
+        return self._declare(names, "constant", 0, sign)
+
+    def variables(self, *names: str, order: int = 0):
+        return self._declare(names, "variable", order)
+
+    def motion_variables(self, *names: str, order: int = 0):
+        return self._declare(names, "motionvariable", order)
+
+    def specifieds(self, *names: str, order: int = 0):
+        return self._declare(names, "specified", order)
+
+    def imaginary(self, *names: str):
+        return self._declare(names, "imaginary")
+
+    def kind_of(self, sym) -> str | None:
+        info = self.info.get(sym)
+        return info.kind if info else None
+
+    # -- definitions -----------------------------------------------------------------
+    def define(self, sym, value) -> None:
+        """X = value for a declared X (or X', X''): a definition, not a substitution."""
+        if isinstance(sym, sm.Matrix):
+            for s, v in zip(sym, sm.Matrix(value)):
+                self.define(s, v)
+            return
+        if not isinstance(sym, sm.Symbol):
+            raise AutolevModelError(f"only a declared name can be defined, not {sym}")
+        self.defs.define(sym, value)
+        self._changed()
+
+    def rhs(self, value):
+        """RHS(x): the stored right-hand side of a declared x.  Names assigned without a
+        declaration are translated to Python values, which are their own RHS."""
+        if isinstance(value, sm.MatrixBase):
+            return value.applyfunc(self.rhs)
+        if isinstance(value, (Vector, Dyadic)):
+            return value
+        value = sm.sympify(value)
+        if isinstance(value, sm.Symbol) and not isinstance(value, S.Z):
+            if value not in self.defs.rhs:
+                raise AutolevModelError(f"{value} has no stored right-hand side")
+            return self.defs.rhs[value]
+        return value
+
+    def explicit(self, value, keep=None):
+        """EXPLICIT(x): every definition and Z expanded; EXPLICIT(x, [u, v]) keeps the
+        listed names (expressed in terms of them)."""
+        if keep is None:
+            return self.map_scalars(value, self.defs.explicit)
+        names = list(keep) if isinstance(keep, (sm.MatrixBase, list, tuple)) else [keep]
+        return self.map_scalars(value, lambda e: self.defs.explicit(e, names))
+
+    def map_scalars(self, value, fn):
+        if isinstance(value, (Vector, Dyadic)):
+            return value.applyfunc(fn)
+        if isinstance(value, sm.MatrixBase):
+            return value.applyfunc(fn)
+        return fn(sm.sympify(value))
+
+    # -- calculus --------------------------------------------------------------------
+    def dt(self, value, frame: Frame | None = None):
+        """DT(x) of a scalar or matrix; DT(V>, N) of a vector or dyadic in frame N."""
+        if isinstance(value, (Vector, Dyadic)):
+            if frame is None:
+                raise AutolevModelError("DT of a vector needs the frame: DT(V>, N)")
+            return value.dt(frame)
+        if isinstance(value, sm.MatrixBase):
+            return value.applyfunc(self.defs.dt)
+        return self.defs.dt(value)
+
+    def d(self, value, var, frame: Frame | None = None):
+        """D(x, v): partial derivative through definitions; D(V>, v, N) in frame N;
+        D(column, row) is the Jacobian."""
+        if isinstance(var, sm.MatrixBase):
+            col = value if isinstance(value, sm.MatrixBase) else sm.Matrix([value])
+            return sm.Matrix(len(col), len(var),
+                             lambda i, j: self.defs.diff(col[i], var[j]))
+        if isinstance(value, Vector):
+            if frame is None:
+                raise AutolevModelError("D of a vector needs the frame: D(V>, x, N)")
+            return value.diff(var, frame)
+        if isinstance(value, sm.MatrixBase):
+            return value.applyfunc(lambda e: self.defs.diff(e, var))
+        return self.defs.diff(value, var)
+
+    # -- kinematics commands -------------------------------------------------------------
+    def kindiffs(self, parent: Frame, child: Frame, kind: str, *coords) -> None:
+        """KINDIFFS(A, B, BODYijk|SPACEijk|EULER, q...): define the q' so that the
+        rotation sequence's angular velocity equals the assigned W_B_A>."""
+        if parent not in child._w_user:
+            raise AutolevModelError(f"KINDIFFS needs W_{child.name}_{parent.name}> "
+                                    "assigned first (in terms of the speeds)")
+        kind = kind.lower()
+        target = child.ang_vel_in(parent).components_in(child)
+        coords = [sm.sympify(q) for q in coords]
+        rates = [S.derivative(q) for q in coords]
+        if kind == "euler":
+            if len(coords) != 4:
+                raise AutolevModelError("KINDIFFS(..., EULER, e1, e2, e3, e4) takes 4 "
+                                        "parameters")
+            solution = euler_parameter_rates(coords, target)
+        else:
+            if len(coords) != 3:
+                raise AutolevModelError(f"KINDIFFS(..., {kind.upper()}, ...) takes 3 angles")
+            if kind.startswith("body"):
+                _, implied = body_fixed(coords, kind[4:], self.defs.dt_raw)
+            elif kind.startswith("space"):
+                dcm, w_parent = space_fixed(coords, kind[5:], self.defs.dt_raw)
+                implied = tuple(dcm.T * sm.Matrix(w_parent))
+            else:
+                raise AutolevModelError(f"KINDIFFS does not know the rotation type "
+                                        f"{kind.upper()}")
+            eqs = [implied[i] - target[i] for i in range(3)]
+            a, r = coefficients(eqs, rates, self.defs)
+            solution = _solve_small(a, -r)
+        for rate, value in zip(rates, solution):
+            self.define(rate, value)
+
+    # -- loads -----------------------------------------------------------------------
+    def force(self, point: Point, value) -> None:
+        """FORCE(P, F>): add F> to the resultant force on P."""
+        self.add_force(point, value)
+
+    def force_pair(self, a: Point, b: Point, value) -> None:
+        """FORCE(A/B, F>): +F> on B, -F> on A."""
+        self.add_force(b, value)
+        self.add_force(a, -_vector(value))
+
+    def add_force(self, point: Point, value) -> None:
+        self.forces[point] = self.forces.get(point, Vector()) + _vector(value)
+        self._changed()
+
+    def set_force(self, point: Point, value) -> None:
+        """FORCE_P> = F>"""
+        self.forces[point] = _vector(value)
+        self._changed()
+
+    def force_on(self, point: Point) -> Vector:
+        """FORCE_P>: the resultant force applied to P so far."""
+        return self.forces.get(point, Vector())
+
+    def torque(self, frame: Frame, value) -> None:
+        """TORQUE(A, T>): add T> to the resultant torque on A."""
+        self.add_torque(frame, value)
+
+    def torque_pair(self, a: Frame, b: Frame, value) -> None:
+        """TORQUE(A/B, T>): +T> on B, -T> on A."""
+        self.add_torque(b, value)
+        self.add_torque(a, -_vector(value))
+
+    def add_torque(self, frame: Frame, value) -> None:
+        self.torques[frame] = self.torques.get(frame, Vector()) + _vector(value)
+        self._changed()
+
+    def set_torque(self, frame: Frame, value) -> None:
+        self.torques[frame] = _vector(value)
+        self._changed()
+
+    def torque_on(self, frame: Frame) -> Vector:
+        return self.torques.get(frame, Vector())
+
+    def gravity(self, g, *bodies) -> None:
+        """GRAVITY(g>[, B, P, ...]): m*g> on the mass center of every body and particle
+        (or of those listed)."""
+        g = _vector(g)
+        targets = list(bodies) if bodies else self.bodies_list + self.particles_list
+        for b in targets:
+            if isinstance(b, Body):
+                self.add_force(b.masscenter, b.mass_checked() * g)
+            elif isinstance(b, Particle):
+                if b.mass is None:
+                    raise AutolevModelError(f"the mass of particle {b.name} is not given")
+                self.add_force(b, b.mass * g)
+            else:
+                raise AutolevModelError(f"GRAVITY acts on bodies and particles, not {b!r}")
+
+    # -- constraints -----------------------------------------------------------------
+    def constrain(self, equations, dependent) -> None:
+        """CONSTRAIN(DEPENDENT[u...]): solve the motion constraints (= 0) for the listed
+        speeds, which are then defined in terms of the others."""
+        self._solve_speeds(equations, dependent, "DEPENDENT")
+        self.dependent_speeds.extend(s for s in dependent if s not in self.dependent_speeds)
+
+    def constrain_auxiliary(self, equations, auxiliary) -> None:
+        """CONSTRAIN(AUXILIARY[u...]): the listed speeds bring noncontributing forces into
+        evidence; they are solved from their constraints (zero in simulation)."""
+        self._solve_speeds(equations, auxiliary, "AUXILIARY")
+        self.auxiliary_speeds.extend(s for s in auxiliary if s not in self.auxiliary_speeds)
+
+    def _solve_speeds(self, equations, speeds, what: str) -> None:
+        eqs = list(sm.Matrix(equations)) if not isinstance(equations, (list, tuple)) \
+            else list(equations)
+        speeds = list(speeds)
+        if len(eqs) != len(speeds):
+            raise AutolevModelError(f"{what} has {len(eqs)} equations for {len(speeds)} speeds")
+        a, r = coefficients(eqs, speeds, self.defs)
+        solution = solve_linear(a, -r, self.defs, f"the {what} constraints")
+        for s, v in zip(speeds, solution):
+            self.define(s, v)
+        for s, v in zip(speeds, solution):
+            # the derivative too, which accelerations use (u' of a dependent speed)
+            d = S.derivative(s)
+            if d not in self.defs.rhs:
+                self.define(d, self.defs.zify(self.defs.dt(v)))
+
+    # -- Kane's method ------------------------------------------------------------------
+    def _newtonian(self) -> Frame:
+        if self.newtonian_frame is None:
+            raise AutolevModelError("no NEWTONIAN frame was declared")
+        return self.newtonian_frame
+
+    def _velocity_sources(self, inertia: bool = True, strict: bool = True):
+        """(velocities, angular velocities) of the loaded points and frames and, with
+        `inertia`, of every particle and body.  Missing ones are errors when `strict`,
+        else skipped."""
+        n = self._newtonian()
+        vels, angs = [], []
+
+        def vel(p):
+            if strict or n in p._vel:
+                vels.append(p.vel(n))
+
+        def ang(f):
+            try:
+                angs.append(f.ang_vel_in(n))
+            except AutolevModelError:
+                if strict:
+                    raise
+        for p, f in self.forces.items():
+            if f.terms:
+                vel(p)
+        for a, t in self.torques.items():
+            if t.terms:
+                ang(a)
+        if inertia:
+            for p in self.particles_list:
+                vel(p)
+            for b in self.bodies_list:
+                vel(b.masscenter)
+                ang(b)
+        return vels, angs
+
+    def generalized_speeds(self) -> tuple[list, list, list]:
+        """(independent, dependent, auxiliary) generalized speeds.
+
+        A variable or motion variable whose first derivative is defined is a
+        coordinate.  A symbol on the right of a kinematical equation is a speed.  Any
+        other motion variable X declared with X' is a coordinate whose X' acts as the
+        speed (MOTIONVARIABLES' Q{9}''); declared without, X is a speed.  Of these
+        candidates, those the velocities depend on (through definitions) count, in
+        declaration order."""
+        kin_rhs: set = set()
+        for sym, info in self.info.items():
+            d = S.derivative(sym)
+            if info.kind in ("variable", "motionvariable") and d in self.defs.rhs \
+                    and S.base_and_order(sym)[1] == 0:
+                kin_rhs |= self.defs.rhs[d].free_symbols
+        candidates: list = []
+        for sym, info in sorted(self.info.items(), key=lambda kv: kv[1].index):
+            if info.kind not in ("variable", "motionvariable") or S.base_and_order(sym)[1]:
+                continue
+            d = S.derivative(sym)
+            if d in self.defs.rhs:
+                continue                                 # a coordinate
+            if sym in kin_rhs or sym in self.dependent_speeds or sym in self.auxiliary_speeds:
+                candidates.append(sym)
+            elif info.order >= 1:
+                candidates.append(d)                     # q' acts as the speed
+            elif info.kind == "motionvariable":
+                candidates.append(sym)
+        vels, angs = self._velocity_sources(strict=False)
+        comps = [c for v in vels + angs for cs in v.terms.values() for c in cs]
+
+        def appears(u) -> bool:
+            return any(self.defs.depends_on(c, u) for c in comps)
+
+        taken = set(self.dependent_speeds) | set(self.auxiliary_speeds)
+        independent = [u for u in candidates
+                       if u not in taken and u not in self.defs.rhs and appears(u)]
+        aux = [u for u in self.auxiliary_speeds if appears(u)]
+        return independent, list(self.dependent_speeds), aux
+
+    def _form(self, inertia: bool = True) -> KaneEquations:
+        key = (self._version, len(self.defs.rhs), inertia)
+        if self._formed is not None and self._formed[0][:2] == key[:2] and \
+                (self._formed[0][2] or not inertia):
+            return self._formed[1]
+        n = self._newtonian()
+        indep, dep, aux = self.generalized_speeds()
+        rows = indep + aux
+        if not rows:
+            raise AutolevModelError("no generalized speeds: the velocities depend on no "
+                                    "motion variable (declare MOTIONVARIABLES, or give "
+                                    "kinematical equations q' = ...)")
+        cache: dict = {}
+
+        def partials(v: Vector) -> list[Vector]:
+            key = id(v)
+            if key not in cache:
+                cache[key] = (v, [_partial(v, u, self.defs) for u in rows])
+            return cache[key][1]
+
+        fr = [sm.S.Zero] * len(rows)
+        frstar = [sm.S.Zero] * len(rows)
+        for p, f in self.forces.items():
+            if not f.terms:
+                continue
+            for r, vr in enumerate(partials(p.vel(n))):
+                fr[r] += vr.dot(f)
+        for a, t in self.torques.items():
+            if not t.terms:
+                continue
+            for r, wr in enumerate(partials(a.ang_vel_in(n))):
+                fr[r] += wr.dot(t)
+        if inertia:
+            self._inertia_forces(n, partials, frstar)
+        z = self.defs.zify
+        eqs = KaneEquations(indep, aux, dep, sm.Matrix([z(e) for e in fr]),
+                            sm.Matrix([z(e) for e in frstar]))
+        self._formed = (key, eqs)
+        return eqs
+
+    def _inertia_forces(self, n: Frame, partials, frstar: list) -> None:
+        for p in self.particles_list:
+            if p.mass is None:
+                raise AutolevModelError(f"the mass of particle {p.name} is not given "
+                                        f"(MASS {p.name}=...)")
+            inertial = -p.mass * p.acc(n)
+            for r, vr in enumerate(partials(p.vel(n))):
+                frstar[r] += vr.dot(inertial)
+        for b in self.bodies_list:
+            m = b.mass_checked()
+            force = -m * b.masscenter.acc(n)
+            for r, vr in enumerate(partials(b.masscenter.vel(n))):
+                frstar[r] += vr.dot(force)
+            w = b.ang_vel_in(n)
+            alf = b.ang_acc_in(n)
+            if not w.terms and not alf.terms:
+                continue        # a body that does not turn needs no inertia
+            inertia = b.central_inertia
+            torque = -(inertia.dot(alf) + w.cross(inertia.dot(w)))
+            for r, wr in enumerate(partials(w)):
+                frstar[r] += wr.dot(torque)
+
+    def speed_column(self, which: str, order: int = 0) -> sm.Matrix:
+        """U_INDEPENDENT, U_DEPENDENT, U_AUXILIARY (primed: their derivatives)."""
+        indep, dep, aux = self.generalized_speeds()
+        speeds = {"independent": indep, "dependent": dep, "auxiliary": aux}[which]
+        return sm.Matrix([S.derivative(u, order) for u in speeds])
+
+    def partials(self, value, *speeds):
+        """PARTIALS(V>, u1, ...): the partial velocities of V> with respect to the speeds."""
+        from .functions import VectorColumn
+        if len(speeds) == 1 and isinstance(speeds[0], (sm.MatrixBase, list, tuple)):
+            speeds = tuple(speeds[0])
+        if not speeds:
+            speeds = tuple(self.generalized_speeds()[0])
+        return VectorColumn([_partial(value, u, self.defs) for u in speeds])
+
+    def fr(self) -> sm.Matrix:
+        """FR(): generalized active forces, one row per independent (then auxiliary) speed."""
+        return self._form(inertia=False).fr
+
+    def frstar(self) -> sm.Matrix:
+        """FRSTAR(): generalized inertia forces."""
+        return self._form().frstar
+
+    def kane(self, *unknowns) -> KaneEquations:
+        """KANE(): take Fr + Fr* = 0 as the dynamical equations; KANE(F1, ...) also solves
+        the auxiliary rows for the listed unknowns (noncontributing forces)."""
+        eqs = self._form()
+        eqs.unknowns = list(unknowns)
+        if len(unknowns) > len(eqs.auxiliary):
+            raise AutolevModelError(f"KANE needs an auxiliary speed per unknown: "
+                                    f"{len(unknowns)} unknowns, {len(eqs.auxiliary)} "
+                                    "auxiliary speeds")
+        self.kane_equations = eqs
+        return eqs
+
+    # the equations, in the forms sympy users know ---------------------------------------
+    def _equations(self) -> KaneEquations:
+        if self.kane_equations is None:
+            return self.kane()
+        return self.kane_equations
+
+    @property
+    def speeds(self) -> list:
+        return self._equations().speeds
+
+    @property
+    def speed_derivatives(self) -> list:
+        return [self._speed_derivative(u) for u in self.speeds]
+
+    def _speed_derivative(self, u):
+        return S.derivative(u)
+
+    @property
+    def coordinates(self) -> list:
+        """Every variable whose first derivative is defined (what is integrated), in
+        declaration order."""
+        out = []
+        for sym, info in sorted(self.info.items(), key=lambda kv: kv[1].index):
+            if info.kind in ("variable", "motionvariable", "specified") \
+                    and S.base_and_order(sym)[1] == 0 and S.derivative(sym) in self.defs.rhs \
+                    and info.kind != "specified":
+                out.append(sym)
+        return out
+
+    @property
+    def kinematical_equations(self) -> dict:
+        """{q': f(q, u)} for every coordinate."""
+        return {S.derivative(q): self.defs.rhs[S.derivative(q)] for q in self.coordinates}
+
+    @property
+    def mass_matrix(self) -> sm.Matrix:
+        """M in M*u' = forcing (independent speeds; Z-named entries)."""
+        eqs = self._equations()
+        rows = eqs.rows[:len(eqs.speeds), 0]
+        ud = self.speed_derivatives
+        return sm.Matrix(len(ud), len(ud), lambda i, j: -self.defs.diff(rows[i], ud[j]))
+
+    @property
+    def forcing(self) -> sm.Matrix:
+        eqs = self._equations()
+        rows = eqs.rows[:len(eqs.speeds), 0]
+        zero = {u: 0 for u in self.speed_derivatives}
+        return sm.Matrix([self.defs.substitute(e, zero) for e in rows])
+
+    @property
+    def mass_matrix_full(self) -> sm.Matrix:
+        """[[K, 0], [0, M]] for the state [q; u], K from the kinematical equations."""
+        qs = self.coordinates
+        m = self.mass_matrix
+        k = len(qs)
+        full = sm.zeros(k + m.rows, k + m.cols)
+        full[:k, :k] = sm.eye(k)
+        full[k:, k:] = m
+        return full
+
+    @property
+    def forcing_full(self) -> sm.Matrix:
+        kin = self.kinematical_equations
+        return sm.Matrix([kin[S.derivative(q)] for q in self.coordinates] + list(self.forcing))
+
+    # -- energy, momentum, mass properties ---------------------------------------------------
+    def _items(self, items):
+        return list(items) or (self.bodies_list + self.particles_list)
+
+    def ke(self, *items):
+        """KE(): kinetic energy in the Newtonian frame (of everything, or of the listed
+        bodies and particles)."""
+        n = self._newtonian()
+        total = sm.S.Zero
+        for it in self._items(items):
+            if isinstance(it, Body):
+                v = it.masscenter.vel(n)
+                w = it.ang_vel_in(n)
+                total += it.mass_checked() * v.dot(v) / 2 + w.dot(it.central_inertia.dot(w)) / 2
+            else:
+                v = it.vel(n)
+                total += self._particle_mass(it) * v.dot(v) / 2
+        return self.defs.zify(total)
+
+    def _particle_mass(self, p: Particle):
+        if p.mass is None:
+            raise AutolevModelError(f"the mass of particle {p.name} is not given")
+        return p.mass
+
+    def momentum(self, kind: str, *args):
+        """MOMENTUM(LINEAR[, B...]) or MOMENTUM(ANGULAR, O[, B...]) in the Newtonian frame."""
+        n = self._newtonian()
+        if kind.lower() == "linear":
+            total = Vector()
+            for it in self._items(args):
+                if isinstance(it, Body):
+                    total = total + it.mass_checked() * it.masscenter.vel(n)
+                else:
+                    total = total + self._particle_mass(it) * it.vel(n)
+            return total.zified()
+        point, items = args[0], args[1:]
+        total = Vector()
+        for it in self._items(items):
+            if isinstance(it, Body):
+                r = it.masscenter.pos_from(point)
+                w = it.ang_vel_in(n)
+                total = total + r.cross(it.mass_checked() * it.masscenter.vel(n)) \
+                    + it.central_inertia.dot(w)
+            else:
+                total = total + it.pos_from(point).cross(self._particle_mass(it) * it.vel(n))
+        return total.zified()
+
+    def cm(self, point: Point, *items) -> Vector:
+        """CM(O[, B...]): position of the mass center (of the listed bodies) from O."""
+        total_m = sm.S.Zero
+        total = Vector()
+        for it in self._items(items):
+            if isinstance(it, Body):
+                m, p = it.mass_checked(), it.masscenter
+            else:
+                m, p = self._particle_mass(it), it
+            total = total + m * p.pos_from(point)
+            total_m += m
+        if total_m == 0:
+            raise AutolevModelError("CM of a system with no mass")
+        return (total / total_m).zified()
+
+    def inertia_of(self, point: Point, *items) -> Dyadic:
+        """INERTIA(O[, B...]): inertia dyadic about O of the system (or listed items)."""
+        from .point import point_mass_inertia
+        n = self._some_frame()
+        total = Dyadic()
+        for it in self._items(items):
+            if isinstance(it, Body):
+                total = total + it.inertia_about(point)
+            else:
+                total = total + point_mass_inertia(self._particle_mass(it), it.pos_from(point),
+                                                   n)
+        return total
+
+    def particle_inertia(self, particle: Particle, point: Point) -> Dyadic:
+        """I_P_O>>: inertia dyadic of particle P about point O."""
+        from .point import point_mass_inertia
+        return point_mass_inertia(self._particle_mass(particle), particle.pos_from(point),
+                                  self._some_frame())
+
+    def _some_frame(self) -> Frame:
+        frame = self.newtonian_frame or next(iter(self.frames_by_name.values()), None)
+        if frame is None:
+            raise AutolevModelError("no frame is declared")
+        return frame
+
+    def unit_dyadic(self) -> Dyadic:
+        """1>>: the unit dyadic (the same in every frame's basis)."""
+        from .vector import UnitDyadic
+        return UnitDyadic(self._some_frame())
+
+    def mass_of(self, *items):
+        """MASS(): total mass (of everything, or of the bodies and particles listed)."""
+        items = items or tuple(self.bodies_list) + tuple(self.particles_list)
+        total = sm.S.Zero
+        for it in items:
+            m = it.mass_checked() if isinstance(it, Body) else it.mass
+            if m is None:
+                raise AutolevModelError(f"the mass of {it.name} is not given")
+            total += m
+        return total
+
+
+def _split(names) -> list[str]:
+    out: list[str] = []
+    for n in names:
+        out.extend(n.replace(",", " ").split())
+    return out
+
+
+def _partial(v: Vector, u, defs: Definitions) -> Vector:
+    """Partial velocity dv/du, measure numbers differentiated in their own frames
+    (orientations never depend on speeds)."""
+    return Vector({f: tuple(defs.zify(defs.diff(c, u)) for c in comps)
+                   for f, comps in v.terms.items()})
+
+
+def _solve_small(a: sm.Matrix, b: sm.Matrix) -> list:
+    """Exact solve of a small system (kinematical equations), simplified."""
+    sol = a.LUsolve(b)
+    return [sm.trigsimp(sm.cancel(sm.together(e))) for e in sol]
+

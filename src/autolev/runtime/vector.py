@@ -1,0 +1,740 @@
+"""Reference frames, vectors and dyadics with Autolev's semantics.
+
+The API follows sympy.physics.vector (`A.orient_axis(N, N.z, q)`, `A.dcm(N)`,
+`A.ang_vel_in(N)`, `v.dot(w)`, `v.express(A)`, `v.dt(N)`), but measure numbers are
+kept small: whatever a product of direction cosines or a derivative would expand
+into is named by a Z in the model's definitions table.  `to_sympy()` gives the
+plain sympy.physics.vector objects when they are wanted.
+
+Frames are linked by orientation edges (SIMPROT, DIRCOS, A_B = M) into an undirected
+graph, as Autolev allowed (`SIMPROT(N,G,..)` and `SIMPROT(D,G,..)` in one model);
+angular velocities are edges too, implied by each orientation or set by the user,
+who overrides the implied one (Autolev: an explicit W_B_A> wins).
+"""
+from __future__ import annotations
+
+from collections import deque
+from typing import TYPE_CHECKING
+
+import sympy as sm
+
+from .errors import AutolevModelError
+from .symbols import TIME
+
+if TYPE_CHECKING:
+    from .model import Model
+
+_ZERO3 = (sm.S.Zero, sm.S.Zero, sm.S.Zero)
+
+
+def _s(x) -> sm.Expr:
+    return x if isinstance(x, sm.Basic) else sm.sympify(x)
+
+
+# ---------------------------------------------------------------------------
+class Vector:
+    """A vector as measure numbers in one or more frames: {frame: (x1, x2, x3)}."""
+
+    __slots__ = ("terms",)
+    is_vector = True
+
+    def __init__(self, terms: dict | None = None):
+        clean = {}
+        for frame, comps in (terms or {}).items():
+            comps = tuple(_s(c) for c in comps)
+            if any(c != 0 for c in comps):
+                clean[frame] = comps
+        self.terms: dict[Frame, tuple] = clean
+
+    # -- arithmetic ---------------------------------------------------------------
+    def __add__(self, other):
+        if isinstance(other, (int, float)) and other == 0 or (
+                isinstance(other, sm.Basic) and other == 0):
+            return self
+        if not isinstance(other, Vector):
+            return NotImplemented
+        terms = dict(self.terms)
+        for f, c in other.terms.items():
+            if f in terms:
+                a = terms[f]
+                terms[f] = (a[0] + c[0], a[1] + c[1], a[2] + c[2])
+            else:
+                terms[f] = c
+        return Vector(terms)
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return Vector({f: (-c[0], -c[1], -c[2]) for f, c in self.terms.items()})
+
+    def __sub__(self, other):
+        if isinstance(other, Vector):
+            return self + (-other)
+        if other == 0:
+            return self
+        return NotImplemented
+
+    def __rsub__(self, other):
+        if other == 0:
+            return -self
+        return NotImplemented
+
+    def __mul__(self, other):
+        if isinstance(other, Vector):           # Autolev: V>*W> is the dyadic V>W>
+            return outer(self, other)
+        if isinstance(other, Dyadic):
+            return NotImplemented
+        try:
+            k = sm.sympify(other)
+        except (sm.SympifyError, TypeError):
+            return NotImplemented
+        if not isinstance(k, sm.Expr):
+            return NotImplemented
+        return Vector({f: (k * c[0], k * c[1], k * c[2]) for f, c in self.terms.items()})
+
+    def __rmul__(self, other):
+        return self.__mul__(other)
+
+    def __truediv__(self, other):
+        k = sm.sympify(other)
+        return self * (1 / k)
+
+    def __eq__(self, other):
+        if isinstance(other, Vector):
+            return (self - other).is_zero_structurally()
+        if other == 0:
+            return self.is_zero_structurally()
+        return NotImplemented
+
+    def is_zero_structurally(self) -> bool:
+        return not self.terms
+
+    # -- products -----------------------------------------------------------------
+    def dot(self, other):
+        if isinstance(other, Dyadic):
+            return other.rdot(self)
+        if not isinstance(other, Vector):
+            raise TypeError(f"DOT needs vectors, got {type(other).__name__}")
+        total = []
+        for fa, a in self.terms.items():
+            for fb, b in other.terms.items():
+                if fa is fb:
+                    total.append(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
+                else:
+                    c = fa.dcm(fb)
+                    for i in range(3):
+                        if a[i] == 0:
+                            continue
+                        total.append(a[i] * (c[i, 0] * b[0] + c[i, 1] * b[1] + c[i, 2] * b[2]))
+        return sm.Add(*total)
+
+    def cross(self, other):
+        if isinstance(other, Dyadic):
+            return other.rcross(self)
+        if not isinstance(other, Vector):
+            raise TypeError(f"CROSS needs vectors, got {type(other).__name__}")
+        out: dict = {}
+        for fa, a in self.terms.items():
+            for fb, b in other.terms.items():
+                bb = b if fa is fb else fa.express_components(fb, b)
+                c = (a[1] * bb[2] - a[2] * bb[1], a[2] * bb[0] - a[0] * bb[2],
+                     a[0] * bb[1] - a[1] * bb[0])
+                prev = out.get(fa, _ZERO3)
+                out[fa] = (prev[0] + c[0], prev[1] + c[1], prev[2] + c[2])
+        return Vector(out).zified()
+
+    def outer(self, other):
+        return outer(self, other)
+
+    # -- frames -----------------------------------------------------------------
+    def frames(self) -> list["Frame"]:
+        return list(self.terms)
+
+    def express(self, frame: "Frame") -> "Vector":
+        """The same vector with measure numbers in `frame` only."""
+        total = _ZERO3
+        for f, c in self.terms.items():
+            cc = c if f is frame else frame.express_components(f, c)
+            total = (total[0] + cc[0], total[1] + cc[1], total[2] + cc[2])
+        return Vector({frame: total}).zified()
+
+    def components_in(self, frame: "Frame") -> tuple:
+        """Measure numbers in `frame`, not named by Z's (used inside products)."""
+        total = _ZERO3
+        for f, c in self.terms.items():
+            cc = c if f is frame else frame.express_components(f, c)
+            total = (total[0] + cc[0], total[1] + cc[1], total[2] + cc[2])
+        return total
+
+    def to_matrix(self, frame: "Frame") -> sm.Matrix:
+        comps = self.express(frame).terms.get(frame, _ZERO3)
+        return sm.Matrix(comps)
+
+    def components(self, frame: "Frame") -> tuple:
+        return self.express(frame).terms.get(frame, _ZERO3)
+
+    def zified(self) -> "Vector":
+        defs = self._defs()
+        if defs is None:
+            return self
+        return Vector({f: tuple(defs.zify(x) for x in c) for f, c in self.terms.items()})
+
+    def _defs(self):
+        for f in self.terms:
+            return f.model.defs
+        return None
+
+    def applyfunc(self, fn) -> "Vector":
+        return Vector({f: tuple(fn(x) for x in c) for f, c in self.terms.items()})
+
+    # -- calculus ---------------------------------------------------------------
+    def dt(self, frame: "Frame") -> "Vector":
+        """Time derivative in `frame`: measure numbers differentiated in their own
+        frames, plus W_F_frame x (the part in F) for every other frame F."""
+        out = Vector()
+        for f, c in self.terms.items():
+            defs = f.model.defs
+            part = Vector({f: tuple(defs.dt(x) for x in c)})
+            if f is not frame:
+                w = f.ang_vel_in(frame)
+                if w.terms:
+                    part = part + w.cross(Vector({f: c}))
+            out = out + part
+        return out.zified()
+
+    def diff(self, var, frame: "Frame") -> "Vector":
+        """Partial derivative with respect to `var` in `frame` (through definitions)."""
+        out = Vector()
+        for f, c in self.terms.items():
+            defs = f.model.defs
+            if f is not frame and any(defs.depends_on(e, var)
+                                      for e in frame.dcm(f) if e != 0):
+                c = frame.express_components(f, c)
+                f = frame
+            out = out + Vector({f: tuple(defs.diff(x, var) for x in c)})
+        return out.zified()
+
+    def magnitude(self):
+        return sm.sqrt(self.dot(self))
+
+    def normalize(self):
+        return self / self.magnitude()
+
+    def subs(self, *args, **kw) -> "Vector":
+        return self.applyfunc(lambda e: e.subs(*args, **kw))
+
+    def xreplace(self, mapping) -> "Vector":
+        return self.applyfunc(lambda e: e.xreplace(mapping))
+
+    # -- display ----------------------------------------------------------------
+    def __repr__(self) -> str:
+        if not self.terms:
+            return "0>"
+        parts = []
+        for f, c in self.terms.items():
+            for i, x in enumerate(c):
+                if x == 0:
+                    continue
+                parts.append(f"{sm.sstr(x) if x != 1 else ''}{'*' if x != 1 else ''}"
+                             f"{f.name}{i + 1}>")
+        return " + ".join(parts)
+
+    __str__ = __repr__
+
+    def to_sympy(self, frames: dict | None = None):
+        """sympy.physics.vector.Vector (frames mapped by `frames`, else made)."""
+        from .interop import to_sympy_vector
+        return to_sympy_vector(self, frames)
+
+
+ZERO = Vector()
+
+
+def outer(a: Vector, b: Vector) -> "Dyadic":
+    terms: dict = {}
+    for fa, ca in a.terms.items():
+        for fb, cb in b.terms.items():
+            m = sm.Matrix(3, 3, lambda i, j: ca[i] * cb[j])
+            key = (fa, fb)
+            terms[key] = terms[key] + m if key in terms else m
+    return Dyadic(terms)
+
+
+# ---------------------------------------------------------------------------
+class Dyadic:
+    """A dyadic as 3x3 blocks between frame pairs: {(A, B): M} means sum M_ij ai bj."""
+
+    __slots__ = ("terms",)
+    is_vector = False
+
+    def __init__(self, terms: dict | None = None):
+        self.terms: dict[tuple[Frame, Frame], sm.Matrix] = {
+            k: sm.Matrix(v) for k, v in (terms or {}).items() if any(x != 0 for x in v)}
+
+    def __add__(self, other):
+        if isinstance(other, (int, float)) and other == 0:
+            return self
+        if not isinstance(other, Dyadic):
+            return NotImplemented
+        terms = dict(self.terms)
+        for k, m in other.terms.items():
+            terms[k] = terms[k] + m if k in terms else m
+        return Dyadic(terms)
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return Dyadic({k: -m for k, m in self.terms.items()})
+
+    def __sub__(self, other):
+        return self + (-other)
+
+    def __mul__(self, other):
+        k = sm.sympify(other)
+        return Dyadic({key: k * m for key, m in self.terms.items()})
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        return self * (1 / sm.sympify(other))
+
+    def dot(self, other):
+        """D . v  (a vector) or D . E (a dyadic)."""
+        if isinstance(other, Vector):
+            out = Vector()
+            for (fa, fb), m in self.terms.items():
+                v = sm.Matrix(other.components_in(fb))
+                out = out + Vector({fa: tuple(m * v)})
+            return out.zified()
+        if isinstance(other, Dyadic):
+            out = Dyadic()
+            for (fa, fb), m in self.terms.items():
+                for (fc, fd), n in other.terms.items():
+                    c = fb.dcm(fc)
+                    out = out + Dyadic({(fa, fd): m * c * n})
+            return out
+        raise TypeError(f"cannot dot a dyadic with {type(other).__name__}")
+
+    def rdot(self, v: Vector) -> Vector:
+        """v . D"""
+        out = Vector()
+        for (fa, fb), m in self.terms.items():
+            row = sm.Matrix(v.components_in(fa)).T * m
+            out = out + Vector({fb: tuple(row)})
+        return out.zified()
+
+    def cross(self, v: Vector) -> "Dyadic":
+        """D x v: each ai (bj x v)."""
+        out = Dyadic()
+        for (fa, fb), m in self.terms.items():
+            for j in range(3):
+                bj = Vector({fb: tuple(sm.S.One if k == j else sm.S.Zero for k in range(3))})
+                bxv = bj.cross(v)
+                for i in range(3):
+                    if m[i, j] != 0:
+                        ai = Vector({fa: tuple(sm.S.One if k == i else sm.S.Zero
+                                               for k in range(3))})
+                        out = out + m[i, j] * outer(ai, bxv)
+        return out
+
+    def rcross(self, v: Vector) -> "Dyadic":
+        """v x D: each (v x ai) bj."""
+        out = Dyadic()
+        for (fa, fb), m in self.terms.items():
+            for i in range(3):
+                ai = Vector({fa: tuple(sm.S.One if k == i else sm.S.Zero for k in range(3))})
+                vxa = v.cross(ai)
+                for j in range(3):
+                    if m[i, j] != 0:
+                        bj = Vector({fb: tuple(sm.S.One if k == j else sm.S.Zero
+                                               for k in range(3))})
+                        out = out + m[i, j] * outer(vxa, bj)
+        return out
+
+    def express(self, a: "Frame", b: "Frame | None" = None) -> "Dyadic":
+        b = b or a
+        total = sm.zeros(3, 3)
+        for (fa, fb), m in self.terms.items():
+            total += a.dcm(fa) * m * fb.dcm(b)
+        defs = a.model.defs
+        return Dyadic({(a, b): total.applyfunc(defs.zify)})
+
+    def to_matrix(self, a: "Frame", b: "Frame | None" = None) -> sm.Matrix:
+        d = self.express(a, b)
+        return next(iter(d.terms.values()), sm.zeros(3, 3))
+
+    def dt(self, frame: "Frame") -> "Dyadic":
+        out = Dyadic()
+        for (fa, fb), m in self.terms.items():
+            defs = fa.model.defs
+            out = out + Dyadic({(fa, fb): m.applyfunc(defs.dt)})
+            if fa is not frame:
+                w = fa.ang_vel_in(frame)
+                out = out + self._block(fa, fb, m).rcross(w)
+            if fb is not frame:
+                w = fb.ang_vel_in(frame)
+                out = out + self._block(fa, fb, m).cross(w)
+        return out
+
+    @staticmethod
+    def _block(fa, fb, m) -> "Dyadic":
+        return Dyadic({(fa, fb): m})
+
+    def applyfunc(self, fn) -> "Dyadic":
+        return Dyadic({k: m.applyfunc(fn) for k, m in self.terms.items()})
+
+    def __repr__(self) -> str:
+        if not self.terms:
+            return "0>>"
+        parts = []
+        for (fa, fb), m in self.terms.items():
+            for i in range(3):
+                for j in range(3):
+                    x = m[i, j]
+                    if x != 0:
+                        parts.append(f"{sm.sstr(x)}*{fa.name}{i + 1}>*{fb.name}{j + 1}>")
+        return " + ".join(parts)
+
+    __str__ = __repr__
+
+
+# ---------------------------------------------------------------------------
+def rotation(axis: int, angle) -> sm.Matrix:
+    """DCM parent_i . child_j of a rotation by `angle` about parent axis 1, 2 or 3."""
+    c, s = sm.cos(angle), sm.sin(angle)
+    if axis == 1:
+        return sm.Matrix([[1, 0, 0], [0, c, -s], [0, s, c]])
+    if axis == 2:
+        return sm.Matrix([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+    return sm.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+def axis_rotation(axis_components, angle) -> sm.Matrix:
+    """DCM (parent_i . child_j) for a rotation by `angle` about a unit axis given by its
+    measure numbers in the parent frame (Rodrigues)."""
+    k = sm.Matrix(axis_components)
+    c, s = sm.cos(angle), sm.sin(angle)
+    kx = sm.Matrix([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return sm.eye(3) * c + kx * s + (1 - c) * (k * k.T)
+
+
+class UnitDyadic(Dyadic):
+    """1>>: dotting leaves a vector unchanged, and in any frame it is the identity."""
+
+    def __init__(self, frame: "Frame"):
+        super().__init__({(frame, frame): sm.eye(3)})
+        self.frame = frame
+
+    def dot(self, other):
+        if isinstance(other, (Vector, Dyadic)):
+            return other
+        return super().dot(other)
+
+    def rdot(self, v: Vector) -> Vector:
+        return v
+
+    def express(self, a: "Frame", b: "Frame | None" = None) -> Dyadic:
+        if b is None or b is a:
+            return Dyadic({(a, a): sm.eye(3)})
+        return super().express(a, b)
+
+    def dt(self, frame: "Frame") -> Dyadic:
+        return Dyadic()
+
+
+def rodrigues(g, dt) -> tuple[sm.Matrix, tuple]:
+    """(parent.dcm(child), angular velocity measure numbers in child) for Rodrigues
+    parameters g = k tan(angle/2) (the Gibbs vector)."""
+    g = sm.Matrix([_s(x) for x in g])
+    gg = (g.T * g)[0]
+    gx = sm.Matrix([[0, -g[2], g[1]], [g[2], 0, -g[0]], [-g[1], g[0], 0]])
+    dcm = ((1 - gg) * sm.eye(3) + 2 * g * g.T + 2 * gx) / (1 + gg)
+    gd = sm.Matrix([dt(x) for x in g])
+    w = 2 * (gd - gx * gd) / (1 + gg)
+    return dcm, tuple(w)
+
+
+def _sequence(sequence) -> list[int]:
+    seq = [int(ch) for ch in str(sequence)]
+    if len(seq) != 3 or any(k not in (1, 2, 3) for k in seq) or seq[0] == seq[1] \
+            or seq[1] == seq[2]:
+        raise AutolevModelError(f"not a rotation sequence: {sequence}")
+    return seq
+
+
+def body_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
+    """(parent.dcm(child), angular velocity measure numbers in child) of the
+    body-fixed sequence: a about parent_i, b about the new j, c about the new k."""
+    a = [_s(x) for x in angles]
+    seq = _sequence(sequence)
+    mats = [rotation(seq[i], a[i]) for i in range(3)]
+    w = sm.zeros(3, 1)
+    for i in range(3):
+        e = sm.zeros(3, 1)
+        e[seq[i] - 1] = dt(a[i])
+        rot = sm.eye(3)
+        for m in mats[i + 1:]:
+            rot = rot * m
+        w += rot.T * e
+    return mats[0] * mats[1] * mats[2], tuple(w)
+
+
+def space_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
+    """(parent.dcm(child), angular velocity measure numbers in parent) of the
+    space-fixed sequence: a about parent_i, then b about parent_j, then c about parent_k."""
+    a = [_s(x) for x in angles]
+    seq = _sequence(sequence)
+    mats = [rotation(seq[i], a[i]) for i in range(3)]
+    w = sm.zeros(3, 1)
+    for i in range(3):
+        e = sm.zeros(3, 1)
+        e[seq[i] - 1] = dt(a[i])
+        rot = sm.eye(3)
+        for m in reversed(mats[i + 1:]):
+            rot = rot * m
+        w += rot * e
+    return mats[2] * mats[1] * mats[0], tuple(w)
+
+
+def euler_parameters(e, dt) -> tuple[sm.Matrix, tuple]:
+    """(parent.dcm(child), angular velocity measure numbers in child) for Euler
+    parameters e1, e2, e3 (vector part) and e4 (scalar part)."""
+    e1, e2, e3, e4 = (_s(x) for x in e)
+    dcm = sm.Matrix([
+        [1 - 2 * (e2 ** 2 + e3 ** 2), 2 * (e1 * e2 - e3 * e4), 2 * (e3 * e1 + e2 * e4)],
+        [2 * (e1 * e2 + e3 * e4), 1 - 2 * (e3 ** 2 + e1 ** 2), 2 * (e2 * e3 - e1 * e4)],
+        [2 * (e3 * e1 - e2 * e4), 2 * (e2 * e3 + e1 * e4), 1 - 2 * (e1 ** 2 + e2 ** 2)]])
+    d1, d2, d3, d4 = (dt(x) for x in (e1, e2, e3, e4))
+    # omega in child = 2 (e4 e' - e4' e - e x e')  (e the vector part)
+    w = (2 * (e4 * d1 - d4 * e1 - (e2 * d3 - e3 * d2)),
+         2 * (e4 * d2 - d4 * e2 - (e3 * d1 - e1 * d3)),
+         2 * (e4 * d3 - d4 * e3 - (e1 * d2 - e2 * d1)))
+    return dcm, w
+
+
+def euler_parameter_rates(e, w) -> tuple:
+    """e1'..e4' giving the angular velocity with measure numbers w in the child frame
+    (inverse of the relation above, using e1^2+e2^2+e3^2+e4^2 = 1)."""
+    e1, e2, e3, e4 = e
+    w1, w2, w3 = w
+    half = sm.Rational(1, 2)
+    return (half * (e4 * w1 - e3 * w2 + e2 * w3),
+            half * (e3 * w1 + e4 * w2 - e1 * w3),
+            half * (-e2 * w1 + e1 * w2 + e4 * w3),
+            -half * (e1 * w1 + e2 * w2 + e3 * w3))
+
+
+class Frame:
+    """A reference frame (Autolev FRAMES, NEWTONIAN, and the frame of a body)."""
+
+    def __init__(self, name: str, model: "Model"):
+        self.name = name
+        self.model = model
+        self._dcm_edges: dict[Frame, sm.Matrix] = {}   # other -> self.dcm(other)
+        self._w_edges: dict[Frame, Vector] = {}        # other -> W_self_other
+        self._w_user: set[Frame] = set()
+        self._alf_user: dict[Frame, Vector] = {}
+        self._dcm_cache: dict[Frame, sm.Matrix] = {}
+        self.x = Vector({self: (1, 0, 0)})
+        self.y = Vector({self: (0, 1, 0)})
+        self.z = Vector({self: (0, 0, 1)})
+
+    def __repr__(self) -> str:
+        return self.name
+
+    def __getitem__(self, i: int) -> Vector:
+        """N[1], N[2], N[3]: Autolev's N1>, N2>, N3>."""
+        return (self.x, self.y, self.z)[i - 1]
+
+    def unit(self, i: int) -> Vector:
+        return self[i]
+
+    # -- orientation ------------------------------------------------------------------
+    def orient_dcm(self, parent: "Frame", dcm, ang_vel: Vector | None = None) -> None:
+        """Orient self relative to parent with parent.dcm(self) == dcm (Autolev's
+        PARENT_SELF = [...]).  The implied angular velocity is ang_vel if given,
+        else derived from the DCM when first needed."""
+        if parent is self:
+            raise AutolevModelError(f"cannot orient frame {self.name} relative to itself")
+        dcm = sm.Matrix(dcm)
+        if dcm.shape != (3, 3):
+            raise AutolevModelError(f"a direction cosine matrix is 3x3, not {dcm.shape}")
+        self._dcm_edges[parent] = dcm.T
+        parent._dcm_edges[self] = dcm
+        self.model._orientation_changed()
+        if parent not in self._w_user:
+            w = ang_vel if ang_vel is not None else _DerivedAngVel(parent, self)
+            self._w_edges[parent] = w
+            parent._w_edges[self] = -w if isinstance(w, Vector) else _Negated(w)
+
+    def orient_axis(self, parent: "Frame", axis, angle) -> None:
+        """SIMPROT(parent, self, axis, angle): self is parent turned by angle about axis
+        (1, 2, 3, negative for the opposite direction, or a vector)."""
+        angle = _s(angle)
+        rate = self.model.defs.dt_raw(angle)
+        if isinstance(axis, Vector):
+            comps = axis.components_in(parent)
+            norm = sm.sqrt(sum(c ** 2 for c in comps))
+            unit = tuple(c / norm for c in comps) if norm != 1 else comps
+            dcm = axis_rotation(unit, angle)
+            w = Vector({parent: tuple(rate * u for u in unit)})
+        else:
+            k = int(axis)
+            if k not in (1, 2, 3, -1, -2, -3):
+                raise AutolevModelError(f"SIMPROT axis must be 1, 2, 3 (or negative), not {k}")
+            if k < 0:
+                angle = -angle
+            dcm = rotation(abs(k), angle)
+            comps = [0, 0, 0]
+            comps[abs(k) - 1] = rate
+            w = Vector({parent: tuple(comps)})
+        self.orient_dcm(parent, dcm, w)
+
+    def orient_body_fixed(self, parent: "Frame", angles, sequence: str) -> None:
+        """DIRCOS(parent, self, BODYijk, a, b, c)."""
+        dcm, w = body_fixed(angles, sequence, self.model.defs.dt_raw)
+        self.orient_dcm(parent, dcm, Vector({self: w}))
+
+    def orient_space_fixed(self, parent: "Frame", angles, sequence: str) -> None:
+        """DIRCOS(parent, self, SPACEijk, a, b, c): rotations about parent-fixed axes."""
+        dcm, w = space_fixed(angles, sequence, self.model.defs.dt_raw)
+        self.orient_dcm(parent, dcm, Vector({parent: w}))
+
+    def orient_rodrigues(self, parent: "Frame", g1, g2, g3) -> None:
+        """DIRCOS(parent, self, RODRIGUES, g1, g2, g3): Rodrigues parameters."""
+        dcm, w = rodrigues((g1, g2, g3), self.model.defs.dt_raw)
+        self.orient_dcm(parent, dcm, Vector({self: w}))
+
+    def orient_euler_parameters(self, parent: "Frame", e1, e2, e3, e4) -> None:
+        """DIRCOS(parent, self, EULER, e1, e2, e3, e4) with e4 the scalar part."""
+        dcm, w = euler_parameters((e1, e2, e3, e4), self.model.defs.dt_raw)
+        self.orient_dcm(parent, dcm, Vector({self: w}))
+
+    def _path(self, other: "Frame", edges_of) -> list["Frame"] | None:
+        """Shortest path self -> other through the given edge dictionaries."""
+        if other is self:
+            return [self]
+        prev = {self: None}
+        queue = deque([self])
+        while queue:
+            f = queue.popleft()
+            for g in edges_of(f):
+                if g not in prev:
+                    prev[g] = f
+                    if g is other:
+                        path = [g]
+                        while prev[path[-1]] is not None:
+                            path.append(prev[path[-1]])
+                        return path[::-1]
+                    queue.append(g)
+        return None
+
+    def dcm(self, other: "Frame") -> sm.Matrix:
+        """self.dcm(other)[i, j] = self_i . other_j (Autolev's SELF_OTHER)."""
+        if other is self:
+            return sm.eye(3)
+        cached = self._dcm_cache.get(other)
+        if cached is not None:
+            return cached
+        path = self._path(other, lambda f: f._dcm_edges)
+        if path is None:
+            raise AutolevModelError(
+                f"the orientation of {other.name} relative to {self.name} is not defined "
+                "(SIMPROT, DIRCOS or an assigned direction cosine matrix links frames)")
+        m = self._dcm_edges[path[1]]
+        if len(path) > 2:
+            rest = path[1].dcm(other)
+            defs = self.model.defs
+            m = (m * rest).applyfunc(defs.zify)
+        self._dcm_cache[other] = m
+        other._dcm_cache[self] = m.T
+        return m
+
+    def express_components(self, frame: "Frame", comps) -> tuple:
+        """Measure numbers in self of the vector with measure numbers comps in frame."""
+        c = self.dcm(frame)
+        return tuple(c[i, 0] * comps[0] + c[i, 1] * comps[1] + c[i, 2] * comps[2]
+                     for i in range(3))
+
+    def orientation_known(self, other: "Frame") -> bool:
+        return other is self or self._path(other, lambda f: f._dcm_edges) is not None
+
+    # -- angular velocity and acceleration --------------------------------------------
+    def set_ang_vel(self, other: "Frame", value) -> None:
+        """W_self_other> = value (overrides what the orientation implies)."""
+        value = _vector(value)
+        self._w_edges[other] = value
+        other._w_edges[self] = -value
+        self._w_user.add(other)
+        other._w_user.add(self)
+
+    def _w_edge(self, other: "Frame") -> Vector:
+        w = self._w_edges[other]
+        if not isinstance(w, Vector):
+            w = w.value()
+            self._w_edges[other] = w
+            other._w_edges[self] = -w
+        return w
+
+    def ang_vel_in(self, other: "Frame") -> Vector:
+        """W_self_other>: the sum of angular velocities along the frames linking them."""
+        if other is self:
+            return Vector()
+        path = self._path(other, lambda f: f._w_edges)
+        if path is None:
+            raise AutolevModelError(
+                f"the angular velocity of {self.name} in {other.name} is not defined")
+        total = Vector()
+        for a, b in zip(path, path[1:]):
+            total = total + a._w_edge(b)
+        return total
+
+    def set_ang_acc(self, other: "Frame", value) -> None:
+        self._alf_user[other] = _vector(value)
+        other._alf_user[self] = -_vector(value)
+
+    def ang_acc_in(self, other: "Frame") -> Vector:
+        """ALF_self_other>: as assigned, else DT(W_self_other>, other)."""
+        if other is self:
+            return Vector()
+        if other in self._alf_user:
+            return self._alf_user[other]
+        return self.ang_vel_in(other).dt(other)
+
+    def to_sympy(self):
+        from .interop import to_sympy_frame
+        return to_sympy_frame(self)
+
+
+class _DerivedAngVel:
+    """W_child_parent derived from an assigned DCM when first needed (Poisson)."""
+
+    def __init__(self, parent: Frame, child: Frame):
+        self.parent, self.child = parent, child
+
+    def value(self) -> Vector:
+        c = self.parent._dcm_edges[self.child]          # parent_i . child_j
+        defs = self.child.model.defs
+        cd = c.applyfunc(defs.dt_raw)
+        w = c.T * cd                                     # skew, in child
+        return Vector({self.child: (w[2, 1], w[0, 2], w[1, 0])}).zified()
+
+
+class _Negated:
+    def __init__(self, inner: _DerivedAngVel):
+        self.inner = inner
+
+    def value(self) -> Vector:
+        return -self.inner.value()
+
+
+def _vector(value) -> Vector:
+    if isinstance(value, Vector):
+        return value
+    if value == 0:
+        return Vector()
+    raise AutolevModelError(f"a vector is needed here, not {value!r}")
+
+
+def time_symbol() -> sm.Symbol:
+    return TIME

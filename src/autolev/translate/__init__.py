@@ -1,0 +1,18 @@
+"""Translation of the IR into a Python module on autolev.runtime."""
+from __future__ import annotations
+
+from .. import ir
+from .core import Translation, Translator
+
+__all__ = ["translate", "Translation"]
+
+
+def translate(program: ir.Program, module_name: str | None = None) -> Translation:
+    """The Python text of a program, its line map and its diagnostics."""
+    name = module_name or _stem(program.filename)
+    return Translator(program, name).translate()
+
+
+def _stem(filename: str) -> str:
+    base = filename.replace("\\", "/").rsplit("/", 1)[-1]
+    return base.rsplit(".", 1)[0] if "." in base else base

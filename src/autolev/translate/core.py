@@ -1,0 +1,528 @@
+"""IR -> Python: the translator.
+
+One `Translator` walks the program's statements in order, keeping what every name is
+(a declared scalar, a frame or point, a value assigned earlier, a user vector) and
+writing a line or two of Python per statement, preceded by the Autolev line as a
+comment.  Expressions are written with their type (scalar, vector, dyadic, matrix,
+frame, point) so each construct can be checked and written the way its types need.
+Statement families and functions live in `statements.py` and `functions.py`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+from .. import ir
+from ..errors import Diagnostic, Span
+from .names import NameTable, UnsafeName
+
+# precedence of the Python written for an expression
+ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
+
+SCALAR_TYPES = ("scalar",)
+ENTITY_KINDS = ("newtonian", "frame", "body", "point", "particle")
+
+
+class TranslationError(Exception):
+    """Raised inside the translator to stop one statement with a diagnostic."""
+
+    def __init__(self, message: str, node=None, code: str = "T001"):
+        super().__init__(message)
+        self.node = node
+        self.code = code
+
+
+@dataclass
+class Typed:
+    code: str
+    type: str            # scalar vector dyadic matrix frame point list string unknown
+    prec: int = ATOM
+    exact: Fraction | None = None      # value of a pure integer/rational expression
+    node: object = None
+
+    def wrapped(self, below: int) -> str:
+        return f"({self.code})" if self.prec < below else self.code
+
+
+@dataclass
+class Entry:
+    py: str
+    kind: str            # constant variable motionvariable specified imaginary value
+    #                      newtonian frame body point particle vector
+    type: str            # scalar matrix vector dyadic frame point unknown
+    order: int = 0       # derivatives declared (scalars)
+
+
+@dataclass
+class Line:
+    code: str
+    span: Span | None = None
+
+
+@dataclass
+class Translation:
+    code: str
+    line_map: dict[int, Span]
+    diagnostics: list[Diagnostic]
+    names: dict[str, str] = field(default_factory=dict)   # Autolev name -> Python name
+
+
+class Translator:
+    def __init__(self, program: ir.Program, module_name: str = "model"):
+        self.program = program
+        self.module_name = module_name
+        self.names = NameTable()
+        self.scalars: dict[str, Entry] = {}
+        self.values: dict[str, Entry] = {}
+        self.entities: dict[str, Entry] = {}
+        self.vectors: dict[str, Entry] = {}
+        self.derivs: dict[tuple[str, int], str] = {}
+        self.lines: list[Line] = []
+        self.diagnostics: list[Diagnostic] = []
+        self.degrees = True
+        self.complex = False
+        # AUTORHS ON: a declared name with a stored RHS is replaced by it when read
+        self.autorhs = False
+        self.defined: set[tuple[str, int]] = set()
+        self.has_code = False
+        self._span: Span | None = None
+        self._used_primes = _primes_used(program)
+        self.autolev_names: dict[str, str] = {}
+
+    # -- output ----------------------------------------------------------------------
+    def emit(self, code: str) -> None:
+        for part in code.split("\n"):
+            self.lines.append(Line(part, self._span))
+
+    def error(self, message: str, node=None, code: str = "T001") -> TranslationError:
+        return TranslationError(message, node, code)
+
+    def warn(self, message: str, node=None, code: str = "W101") -> None:
+        self.diagnostics.append(self._diagnostic(message, node, code, "warning"))
+
+    def _diagnostic(self, message, node, code, severity) -> Diagnostic:
+        span = getattr(node, "span", None) or self._span
+        loc = span.start if span is not None else None
+        source = None
+        if loc is not None:
+            lines = self.program.sources.get(loc.file)
+            if lines and 1 <= loc.line <= len(lines):
+                source = lines[loc.line - 1]
+        from ..errors import Location
+        return Diagnostic(loc or Location(self.program.filename, 1, 1), code, message,
+                          severity, source)
+
+    # -- names -------------------------------------------------------------------------
+    def py_name(self, space: str, name: str, kind: str | None = None) -> str:
+        try:
+            py = self.names.assign(space, name, kind)
+        except UnsafeName:
+            raise self.error(f"'{name}' cannot be used as a name") from None
+        self.autolev_names.setdefault(name, py)
+        return py
+
+    def declare_scalar(self, name: str, kind: str, order: int) -> Entry:
+        py = self.py_name("scalar", name)
+        e = Entry(py, kind, "scalar", order)
+        self.scalars[name.lower()] = e
+        return e
+
+    def derivative_name(self, name: str, order: int) -> str:
+        """Python name of the order-th derivative of the scalar `name` (Q1p, Q1pp)."""
+        k = (name.lower(), order)
+        if k in self.derivs:
+            return self.derivs[k]
+        base = self.scalars[name.lower()]
+        py = self.py_name("derivative", base.py + "p" * order, "derivative")
+        self.derivs[k] = py
+        return py
+
+    def ensure_derivative(self, name: str, order: int) -> str:
+        """The derivative's Python name, writing its definition line if it is new."""
+        k = (name.lower(), order)
+        if k in self.derivs:
+            return self.derivs[k]
+        py = self.derivative_name(name, order)
+        base = self.scalars[name.lower()].py
+        suffix = f", {order}" if order > 1 else ""
+        self.emit(f"{py} = al.derivative({base}{suffix})")
+        return py
+
+    # -- driving -----------------------------------------------------------------------
+    def translate(self) -> Translation:
+        from .statements import HANDLERS
+        self._header()
+        previous_end: dict[str, int] = {}
+        statements = self.program.statements
+        for n, st in enumerate(statements):
+            if getattr(self, "exited", False):
+                self.warn(f"{len(statements) - n} statement(s) after EXIT are ignored, as "
+                          "Autolev ignored them", st, "W103")
+                break
+            self._span = st.span
+            self._comments_before(st, previous_end)
+            handler = HANDLERS.get(type(st))
+            try:
+                if handler is None:
+                    raise self.error(f"{st.kind} statements are not supported yet", st)
+                handler(self, st)
+            except TranslationError as exc:
+                self.diagnostics.append(self._diagnostic(str(exc), exc.node or st, exc.code,
+                                                         "error"))
+        self._span = None
+        self._footer()
+        code, line_map = self._render()
+        return Translation(code, line_map, self.diagnostics, dict(self.autolev_names))
+
+    def _comments_before(self, st: ir.Statement, previous_end: dict[str, int]) -> None:
+        """The user's comment lines and the statement's own lines, as comments."""
+        span = st.span
+        if span is None:
+            return
+        lines = self.program.sources.get(span.file)
+        if not lines:
+            return
+        start, end = span.start.line, span.end.line
+        via = span.start.via is not None
+        if not via:
+            prev = previous_end.get(span.file, 0)
+            blank = False
+            for i in range(prev + 1, start):
+                text = lines[i - 1].strip()
+                if not text:
+                    blank = True
+                    continue
+                if text.startswith("%"):
+                    if blank and self.lines and self.lines[-1].code:
+                        self.emit("")
+                    blank = False
+                    body = text.lstrip("%").rstrip()
+                    self.emit("#" + (" " + body.strip() if body.strip() else ""))
+            if blank and self.lines and self.lines[-1].code:
+                self.emit("")
+            previous_end[span.file] = max(end, prev)
+        for i in range(start, end + 1):
+            self.emit("# " + lines[i - 1].rstrip())
+
+    def _header(self) -> None:
+        src = self.program.filename
+        self.emit(f'"""Translated from {_basename(src)} by autolev.\n\n'
+                  "Importing this module builds the model; running it performs the model's\n"
+                  'CODE commands with its INPUT values."""')
+        self.emit("import sympy as sm")
+        self.emit("")
+        self.emit("import autolev.runtime as al")
+        self.emit("")
+        self.emit(f"model = al.Model({self.module_name!r})")
+        self.emit("t = model.t")
+        self.emit("")
+
+    def _footer(self) -> None:
+        self.emit("")
+        self.emit("")
+        self.emit('if __name__ == "__main__":')
+        self.emit("    model.run()")
+
+    def _render(self) -> tuple[str, dict[int, Span]]:
+        out, line_map = [], {}
+        for n, line in enumerate(self.lines, 1):
+            out.append(line.code)
+            if line.span is not None:
+                line_map[n] = line.span
+        return "\n".join(out) + "\n", line_map
+
+    # -- expressions ---------------------------------------------------------------------
+    def expr(self, e: ir.Expr, want: str = "value") -> Typed:
+        method = getattr(self, "_x_" + type(e).__name__)
+        result = method(e, want)
+        result.node = e
+        return result
+
+    def scalar(self, e: ir.Expr) -> Typed:
+        x = self.expr(e)
+        if x.type not in ("scalar", "unknown"):
+            raise self.error(f"a scalar is needed here, not a {x.type}", e)
+        return x
+
+    def _x_Number(self, e: ir.Number, want) -> Typed:
+        if e.is_integer:
+            return Typed(e.text, "scalar", ATOM, Fraction(int(e.text)))
+        return Typed(e.text, "scalar", ATOM)
+
+    def _x_Neg(self, e: ir.Neg, want) -> Typed:
+        x = self.expr(e.operand)
+        exact = -x.exact if x.exact is not None else None
+        if exact is not None:
+            return _exact_typed(exact)
+        return Typed("-" + x.wrapped(MUL), x.type, UNARY)
+
+    def _x_BinOp(self, e: ir.BinOp, want) -> Typed:
+        a, b = self.expr(e.left), self.expr(e.right)
+        op = e.op
+        if a.exact is not None and b.exact is not None:
+            v = _fold(op, a.exact, b.exact)
+            if v is not None:
+                return _exact_typed(v)
+        ta, tb = a.type, b.type
+        if op in "+-":
+            if "unknown" not in (ta, tb) and ta != tb:
+                if not ({ta, tb} <= {"scalar", "matrix"}):
+                    raise self.error(f"cannot {'add' if op == '+' else 'subtract'} a {tb} "
+                                     f"{'to' if op == '+' else 'from'} a {ta}", e)
+            left = a.wrapped(ADD)
+            right = b.wrapped(ADD + 1) if op == "-" else b.wrapped(ADD)
+            return Typed(f"{left} {op} {right}", ta if ta != "unknown" else tb, ADD)
+        if op == "*":
+            if ta in ("vector",) and tb in ("vector",):
+                return Typed(f"al.outer({a.code}, {b.code})", "dyadic", ATOM)
+            rtype = _product_type(ta, tb)
+            if rtype is None:
+                raise self.error(f"cannot multiply a {ta} by a {tb}", e)
+            return Typed(f"{a.wrapped(MUL)}*{b.wrapped(MUL)}", rtype, MUL)
+        if op == "/":
+            if tb not in ("scalar", "unknown"):
+                raise self.error(f"cannot divide by a {tb}", e)
+            return Typed(f"{a.wrapped(MUL)}/{b.wrapped(MUL + 1)}", ta, MUL)
+        # power
+        if ta not in ("scalar", "matrix", "unknown") or tb not in ("scalar", "unknown"):
+            raise self.error(f"cannot raise a {ta} to a power", e)
+        return Typed(f"{a.wrapped(POW + 1)}**{b.wrapped(UNARY)}", ta, POW)
+
+    def _x_Name(self, e: ir.Name, want) -> Typed:
+        return self.name(e.name, e.primes, e, want)
+
+    def name(self, name: str, primes: int, node, want: str = "value") -> Typed:
+        key = name.lower()
+        if want in ("frame", "point", "entity") and key in self.entities:
+            ent = self.entities[key]
+            return Typed(ent.py, ent.type)
+        if key in self.scalars:
+            entry = self.scalars[key]
+            code = self.ensure_derivative(name, primes) if primes else entry.py
+            if self.autorhs and (key, primes) in self.defined:
+                return Typed(f"model.rhs({code})", "scalar")
+            return Typed(code, "scalar")
+        if key in self.values:
+            entry = self.values[key]
+            if primes:
+                raise self.error(f"{name} is not a declared variable, so {name}"
+                                 f"{chr(39) * primes} has no meaning", node)
+            return Typed(entry.py, entry.type)
+        if key in ("u_independent", "u_dependent", "u_auxiliary"):
+            order = f", {primes}" if primes else ""
+            return Typed(f"model.speed_column({key[2:]!r}{order})", "matrix")
+        if key == "t" and not primes:
+            return Typed("t", "scalar")
+        if key == "pi" and not primes:
+            return Typed("sm.pi", "scalar")
+        if key in self.entities:
+            ent = self.entities[key]
+            return Typed(ent.py, ent.type)
+        dcm = self.dcm_name(name)
+        if dcm is not None:
+            return dcm
+        raise self.error(f"'{name}' is not declared or defined", node, "T002")
+
+    def dcm_name(self, name: str) -> Typed | None:
+        """A_B: the direction cosine matrix of two frames (A_i . B_j)."""
+        parts = self.split_entities(name, ("frame", "newtonian", "body"), 2)
+        if parts is None:
+            return None
+        a, b = parts
+        return Typed(f"{a.py}.dcm({b.py})", "matrix", ATOM)
+
+    def split_entities(self, text: str, kinds, count: int) -> list[Entry] | None:
+        """Split `text` at underscores into `count` entity names of the given kinds."""
+        pieces = text.split("_")
+        return _split_into(pieces, count, lambda s: self._entity_of(s, kinds))
+
+    def _entity_of(self, name: str, kinds) -> Entry | None:
+        ent = self.entities.get(name.lower())
+        if ent is not None and ent.kind in kinds:
+            return ent
+        return None
+
+    def _x_VectorName(self, e: ir.VectorName, want) -> Typed:
+        from .special import vector_name
+        return vector_name(self, e)
+
+    def _x_Call(self, e: ir.Call, want) -> Typed:
+        from .functions import call
+        return call(self, e)
+
+    def _x_Index(self, e: ir.Index, want) -> Typed:
+        key = e.name.lower()
+        if e.primes:
+            raise self.error("a prime on an indexed name is not supported", e)
+        if key in self.values or key in self.scalars:
+            base = self.name(e.name, 0, e)
+        else:
+            base = self.dcm_name(e.name)
+            if base is None:
+                raise self.error(f"'{e.name}' is not defined", e, "T002")
+        idx = [self.index_code(i) for i in e.indices]
+        if len(idx) == 1:
+            return Typed(f"{base.code}[{idx[0]}]", "scalar", ATOM)
+        if len(idx) == 2:
+            return Typed(f"{base.code}[{idx[0]}, {idx[1]}]", "scalar", ATOM)
+        raise self.error("an index has one or two parts", e)
+
+    def index_code(self, e: ir.Expr) -> str:
+        """A 1-based Autolev index as a 0-based Python index."""
+        if isinstance(e, ir.Range):
+            lo, hi = self.index_code(e.lo), self.index_code(e.hi)
+            return f"{lo}:{_plus_one(hi)}"
+        x = self.scalar(e)
+        if x.exact is not None and x.exact.denominator == 1:
+            return str(int(x.exact) - 1)
+        return f"int({x.code}) - 1"
+
+    def _x_Matrix(self, e: ir.Matrix, want) -> Typed:
+        if not e.rows:
+            return Typed("sm.Matrix()", "matrix")
+        rows = []
+        block = False
+        typed = [[self.expr(el) for el in row] for row in e.rows]
+        kinds = {x.type for row in typed for x in row}
+        if kinds & {"vector", "dyadic"}:
+            flat = [x for row in typed for x in row]
+            if kinds - {"vector", "dyadic", "unknown"} or \
+                    not (len(typed) == 1 or all(len(r) == 1 for r in typed)):
+                raise self.error("a matrix of vectors must be one row or one column of "
+                                 "vectors", e)
+            return Typed("al.VectorColumn([" + ", ".join(x.code for x in flat) + "])",
+                         "vectors")
+        for row, trow in zip(e.rows, typed):
+            items = []
+            for el, x in zip(row, trow):
+                if x.type == "matrix":
+                    block = True
+                elif x.type not in ("scalar", "unknown"):
+                    raise self.error(f"a matrix holds scalars, not a {x.type}", el)
+                items.append(x.code)
+            rows.append(items)
+        if block:
+            inner = ", ".join("[" + ", ".join(r) + "]" for r in rows)
+            return Typed(f"al.block_matrix([{inner}])", "matrix")
+        if all(len(r) == 1 for r in rows):
+            return Typed("sm.Matrix([" + ", ".join(r[0] for r in rows) + "])", "matrix")
+        inner = ", ".join("[" + ", ".join(r) + "]" for r in rows)
+        return Typed(f"sm.Matrix([{inner}])", "matrix")
+
+    def _x_NameRange(self, e: ir.NameRange, want) -> Typed:
+        items = [self.expr(n) for n in e.names]
+        return Typed("[" + ", ".join(i.code for i in items) + "]", "list")
+
+    def _x_Range(self, e: ir.Range, want) -> Typed:
+        raise self.error("a range n:m is only allowed in some function arguments", e)
+
+    def _x_Equation(self, e: ir.Equation, want) -> Typed:
+        raise self.error("'=' is only allowed in some function arguments", e)
+
+    def frame(self, e: ir.Expr) -> Typed:
+        """An expression that must name a frame (or a body)."""
+        if isinstance(e, ir.Name) and not e.primes:
+            ent = self.entities.get(e.name.lower())
+            if ent is not None and ent.kind in ("frame", "newtonian", "body"):
+                return Typed(ent.py, "frame")
+        raise self.error(f"a frame or body is needed here", e)
+
+    def point(self, e: ir.Expr) -> Typed:
+        """An expression that must name a point (or particle)."""
+        if isinstance(e, ir.Name) and not e.primes:
+            ent = self.entities.get(e.name.lower())
+            if ent is not None and ent.kind in ("point", "particle"):
+                return Typed(ent.py, "point")
+        raise self.error(f"a point or particle is needed here", e)
+
+    def entity(self, e: ir.Expr, kinds=ENTITY_KINDS) -> Entry:
+        if isinstance(e, ir.Name) and not e.primes:
+            ent = self.entities.get(e.name.lower())
+            if ent is not None and ent.kind in kinds:
+                return ent
+        raise self.error("a " + " or ".join(sorted(set(kinds) - {"newtonian"})) +
+                         " is needed here", e)
+
+
+def _primes_used(program: ir.Program) -> set[tuple[str, int]]:
+    used = set()
+    for st in program.statements:
+        for e in _statement_exprs(st):
+            for node in ir.walk(e):
+                if isinstance(node, (ir.Name, ir.Index)) and node.primes:
+                    used.add((node.name.lower(), node.primes))
+    return used
+
+
+def _statement_exprs(st: ir.Statement):
+    for value in vars(st).values():
+        yield from _exprs_in(value)
+
+
+def _exprs_in(value):
+    if isinstance(value, ir.Expr):
+        yield value
+    elif isinstance(value, (list, tuple)):
+        for v in value:
+            yield from _exprs_in(v)
+    elif hasattr(value, "__dataclass_fields__") and not isinstance(value, (ir.Unit,)):
+        for v in vars(value).values():
+            yield from _exprs_in(v)
+
+
+def _split_into(pieces: list[str], count: int, accept) -> list | None:
+    """Join consecutive pieces into `count` groups that `accept` recognises."""
+    if count == 1:
+        return [accept("_".join(pieces))] if pieces and accept("_".join(pieces)) else None
+    for i in range(1, len(pieces) - count + 2):
+        head = accept("_".join(pieces[:i]))
+        if head is None:
+            continue
+        rest = _split_into(pieces[i:], count - 1, accept)
+        if rest is not None:
+            return [head] + rest
+    return None
+
+
+def _fold(op: str, a: Fraction, b: Fraction) -> Fraction | None:
+    if op == "+":
+        return a + b
+    if op == "-":
+        return a - b
+    if op == "*":
+        return a * b
+    if op == "/":
+        return a / b if b != 0 else None
+    if op == "^" and b.denominator == 1 and abs(b) <= 64 and not (a == 0 and b < 0):
+        return a ** int(b)
+    return None
+
+
+def _exact_typed(v: Fraction) -> Typed:
+    if v.denominator == 1:
+        text = str(v.numerator)
+        return Typed(text, "scalar", ATOM if v >= 0 else UNARY, v)
+    return Typed(f"sm.Rational({v.numerator}, {v.denominator})", "scalar", ATOM, v)
+
+
+def _product_type(a: str, b: str) -> str | None:
+    if a == "unknown" or b == "unknown":
+        return a if b == "unknown" and a != "unknown" else b if a == "unknown" else "unknown"
+    if a == "scalar":
+        return b
+    if b == "scalar":
+        return a
+    if a == b == "matrix":
+        return "matrix"
+    return None
+
+
+def _plus_one(code: str) -> str:
+    try:
+        return str(int(code) + 1)
+    except ValueError:
+        return f"{code} + 1"
+
+
+def _basename(path: str) -> str:
+    return path.replace("\\", "/").rsplit("/", 1)[-1]

@@ -1,0 +1,543 @@
+"""Autolev functions in expressions: one small writer per function.
+
+Each writer gets the translator and the call, checks its arguments, and returns the
+Python (with its type).  Elementary functions map onto sympy; everything with
+Autolev's own meaning (DT through definitions, EVALUATE, KE, ...) onto the runtime.
+"""
+from __future__ import annotations
+
+from .. import ir
+from .core import ATOM, Translator, Typed
+
+FUNCTIONS: dict = {}
+
+
+def function(*names):
+    def register(fn):
+        for n in names:
+            FUNCTIONS[n] = fn
+        return fn
+    return register
+
+
+def call(tr: Translator, c: ir.Call) -> Typed:
+    fn = FUNCTIONS.get(c.name.upper())
+    if fn is None:
+        raise tr.error(f"unknown function {c.name.upper()}()", c, "T003")
+    return fn(tr, c)
+
+
+def nargs(tr: Translator, c: ir.Call, *counts: int) -> list:
+    if len(c.args) not in counts:
+        want = " or ".join(str(n) for n in counts)
+        raise tr.error(f"{c.name.upper()} takes {want} argument"
+                       f"{'s' if counts != (1,) else ''}, not {len(c.args)}", c)
+    return list(c.args)
+
+
+def _plain(tr: Translator, c: ir.Call):
+    for a in c.args:
+        if isinstance(a, (ir.Range, ir.Equation)):
+            raise tr.error(f"{c.name.upper()} does not take '{'=' if isinstance(a, ir.Equation) else ':'}' "
+                           "arguments", a)
+
+
+# -- elementary scalar functions ---------------------------------------------------
+_SYMPY = {"SIN": "sm.sin", "COS": "sm.cos", "TAN": "sm.tan", "ASIN": "sm.asin",
+          "ACOS": "sm.acos", "ATAN": "sm.atan", "SINH": "sm.sinh", "COSH": "sm.cosh",
+          "TANH": "sm.tanh", "EXP": "sm.exp", "LOG": "sm.log", "SQRT": "sm.sqrt",
+          "ABS": "sm.Abs", "SIGN": "sm.sign", "FACTORIAL": "sm.factorial",
+          "CEIL": "sm.ceiling", "FLOOR": "sm.floor", "SEC": "sm.sec", "CSC": "sm.csc",
+          "COT": "sm.cot", "ASINH": "sm.asinh", "ACOSH": "sm.acosh", "ATANH": "sm.atanh"}
+
+
+def _elementary(tr: Translator, c: ir.Call) -> Typed:
+    (a,) = nargs(tr, c, 1)
+    x = tr.expr(a)
+    fn = _SYMPY[c.name.upper()]
+    if x.type == "matrix":
+        return Typed(f"{x.code}.applyfunc({fn})", "matrix")
+    x = tr.scalar(a)
+    return Typed(f"{fn}({x.code})", "scalar")
+
+
+for _n in _SYMPY:
+    FUNCTIONS[_n] = _elementary
+
+
+@function("ATAN2")
+def _atan2(tr, c):
+    y, x = nargs(tr, c, 2)
+    return Typed(f"sm.atan2({tr.scalar(y).code}, {tr.scalar(x).code})", "scalar")
+
+
+@function("LOG10")
+def _log10(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"sm.log({tr.scalar(a).code}, 10)", "scalar")
+
+
+@function("SQR")
+def _sqr(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"{tr.scalar(a).wrapped(8)}**2", "scalar", 7)
+
+
+@function("INT")
+def _int(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"al.integer_part({tr.scalar(a).code})", "scalar")
+
+
+@function("ROUND")
+def _round(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"al.round_half_away({tr.scalar(a).code})", "scalar")
+
+
+@function("MAX", "MIN")
+def _maxmin(tr, c):
+    _plain(tr, c)
+    if not c.args:
+        raise tr.error(f"{c.name.upper()} needs arguments", c)
+    items = ", ".join(tr.scalar(a).code for a in c.args)
+    return Typed(f"sm.{c.name.capitalize()}({items})", "scalar")
+
+
+# -- vectors -----------------------------------------------------------------------
+@function("DOT")
+def _dot(tr, c):
+    a, b = nargs(tr, c, 2)
+    x, y = tr.expr(a), tr.expr(b)
+    for v, node in ((x, a), (y, b)):
+        if v.type not in ("vector", "dyadic", "vectors", "unknown"):
+            raise tr.error(f"DOT takes vectors or dyadics, not a {v.type}", node)
+    rtype = "scalar" if x.type == y.type == "vector" else \
+        "vector" if "vector" in (x.type, y.type) else "dyadic"
+    if "vectors" in (x.type, y.type):
+        rtype = "matrix"
+    return Typed(f"al.dot({x.code}, {y.code})", rtype)
+
+
+@function("CROSS")
+def _cross(tr, c):
+    a, b = nargs(tr, c, 2)
+    x, y = tr.expr(a), tr.expr(b)
+    for v, node in ((x, a), (y, b)):
+        if v.type not in ("vector", "dyadic", "unknown"):
+            raise tr.error(f"CROSS takes vectors, not a {v.type}", node)
+    rtype = "dyadic" if "dyadic" in (x.type, y.type) else "vector"
+    return Typed(f"al.cross({x.code}, {y.code})", rtype)
+
+
+@function("MAG")
+def _mag(tr, c):
+    (a,) = nargs(tr, c, 1)
+    x = _vector_arg(tr, a, "MAG")
+    return Typed(f"al.mag({x.code})", "scalar")
+
+
+@function("UNITVEC")
+def _unitvec(tr, c):
+    (a,) = nargs(tr, c, 1)
+    x = _vector_arg(tr, a, "UNITVEC")
+    return Typed(f"al.unitvec({x.code})", "vector")
+
+
+def _vector_arg(tr, a, what):
+    x = tr.expr(a)
+    if x.type not in ("vector", "unknown"):
+        raise tr.error(f"{what} takes a vector, not a {x.type}", a)
+    return x
+
+
+@function("EXPRESS")
+def _express(tr, c):
+    args = nargs(tr, c, 2, 3)
+    x = tr.expr(args[0])
+    frames = [tr.frame(f).code for f in args[1:]]
+    if x.type not in ("vector", "dyadic", "matrix", "unknown"):
+        raise tr.error(f"EXPRESS takes a vector or dyadic, not a {x.type}", args[0])
+    return Typed(f"al.express({x.code}, {', '.join(frames)})", x.type)
+
+
+@function("VECTOR")
+def _vector(tr, c):
+    args = nargs(tr, c, 2, 4)
+    f = tr.frame(args[0]).code
+    rest = [tr.expr(a) for a in args[1:]]
+    return Typed(f"al.vector({f}, {', '.join(r.code for r in rest)})", "vector")
+
+
+@function("MATRIX")
+def _matrix(tr, c):
+    """MATRIX(A, V>) is a column of measure numbers; MATRIX(A, D>>[, B]) is 3x3."""
+    args = nargs(tr, c, 2, 3)
+    frames = [tr.frame(args[0]).code] + [tr.frame(a).code for a in args[2:]]
+    x = tr.expr(args[1])
+    if x.type not in ("vector", "dyadic", "unknown"):
+        raise tr.error(f"MATRIX takes a vector or dyadic, not a {x.type}", args[1])
+    return Typed(f"al.matrix({frames[0]}, {x.code}" + "".join(f", {f}" for f in frames[1:])
+                 + ")", "matrix")
+
+
+@function("DYADIC")
+def _dyadic(tr, c):
+    args = nargs(tr, c, 2, 3)
+    frames = [tr.frame(a).code for a in [args[0]] + args[2:]]
+    m = tr.expr(args[1])
+    return Typed(f"al.dyadic({frames[0]}, {m.code}" +
+                 (f", {frames[1]})" if len(frames) > 1 else ")"), "dyadic")
+
+
+# -- calculus -----------------------------------------------------------------------
+@function("DT")
+def _dt(tr, c):
+    args = nargs(tr, c, 1, 2)
+    x = tr.expr(args[0])
+    if x.type in ("vector", "dyadic"):
+        if len(args) != 2:
+            raise tr.error("DT of a vector needs the frame: DT(V>, N)", c)
+        return Typed(f"model.dt({x.code}, {tr.frame(args[1]).code})", x.type)
+    if len(args) == 2:
+        tr.frame(args[1])       # a scalar's derivative is the same in every frame
+    return Typed(f"model.dt({x.code})", x.type)
+
+
+@function("D")
+def _d(tr, c):
+    args = nargs(tr, c, 2, 3)
+    x = tr.expr(args[0])
+    var = tr.expr(args[1])
+    if x.type in ("vector", "dyadic"):
+        if len(args) != 3:
+            raise tr.error("D of a vector needs the frame: D(V>, x, N)", c)
+        return Typed(f"model.d({x.code}, {var.code}, {tr.frame(args[2]).code})", x.type)
+    if len(args) == 3:
+        raise tr.error("D of a scalar takes no frame", args[2])
+    rtype = "matrix" if "matrix" in (x.type, var.type) else x.type
+    return Typed(f"model.d({x.code}, {var.code})", rtype)
+
+
+@function("RHS")
+def _rhs(tr, c):
+    (a,) = nargs(tr, c, 1)
+    x = tr.expr(a)
+    return Typed(f"model.rhs({x.code})", x.type)
+
+
+@function("EXPLICIT")
+def _explicit(tr, c):
+    args = nargs(tr, c, 1, 2)
+    x = tr.expr(args[0])
+    extra = "".join(f", {tr.expr(a).code}" for a in args[1:])
+    return Typed(f"model.explicit({x.code}{extra})", x.type)
+
+
+@function("ZEE", "AUTOZ")
+def _zee(tr, c):
+    args = nargs(tr, c, 1, 2)
+    x = tr.expr(args[0])
+    return Typed(f"model.zee({x.code})", x.type)
+
+
+# -- dynamics -------------------------------------------------------------------------
+@function("FR")
+def _fr(tr, c):
+    nargs(tr, c, 0)
+    return Typed("model.fr()", "matrix")
+
+
+@function("FRSTAR")
+def _frstar(tr, c):
+    nargs(tr, c, 0)
+    return Typed("model.frstar()", "matrix")
+
+
+def _things(tr, args, kinds=("body", "particle")) -> list[str]:
+    return [tr.entity(a, kinds).py for a in args]
+
+
+@function("KE")
+def _ke(tr, c):
+    return Typed(f"model.ke({', '.join(_things(tr, c.args))})", "scalar")
+
+
+@function("MASS")
+def _mass(tr, c):
+    return Typed(f"model.mass_of({', '.join(_things(tr, c.args))})", "scalar")
+
+
+@function("CM")
+def _cm(tr, c):
+    if not c.args:
+        raise tr.error("CM needs a point: CM(O) or CM(O, B, ...)", c)
+    o = tr.point(c.args[0]).code
+    rest = _things(tr, c.args[1:])
+    return Typed(f"model.cm({', '.join([o] + rest)})", "vector")
+
+
+@function("INERTIA")
+def _inertia(tr, c):
+    if not c.args:
+        raise tr.error("INERTIA() needs a point: INERTIA(O) or INERTIA(O, B, ...)", c)
+    o = tr.point(c.args[0]).code
+    rest = _things(tr, c.args[1:])
+    return Typed(f"model.inertia_of({', '.join([o] + rest)})", "dyadic")
+
+
+@function("MOMENTUM")
+def _momentum(tr, c):
+    if not c.args or not isinstance(c.args[0], ir.Name):
+        raise tr.error("MOMENTUM(LINEAR) or MOMENTUM(ANGULAR, O)", c)
+    kind = c.args[0].name.upper()
+    if kind == "LINEAR":
+        rest = _things(tr, c.args[1:])
+        return Typed(f"model.momentum('linear'{''.join(', ' + r for r in rest)})", "vector")
+    if kind == "ANGULAR":
+        if len(c.args) < 2:
+            raise tr.error("MOMENTUM(ANGULAR, O) needs the point O", c)
+        o = tr.point(c.args[1]).code
+        rest = _things(tr, c.args[2:])
+        return Typed(f"model.momentum('angular', {', '.join([o] + rest)})", "vector")
+    raise tr.error(f"MOMENTUM takes LINEAR or ANGULAR, not {c.args[0].name}", c.args[0])
+
+
+@function("PARTIALS")
+def _partials(tr, c):
+    if not c.args:
+        raise tr.error("PARTIALS(V>, u1, ...)", c)
+    v = tr.expr(c.args[0])
+    if v.type not in ("vector", "unknown"):
+        raise tr.error(f"PARTIALS takes a velocity vector, not a {v.type}", c.args[0])
+    speeds = [tr.scalar(a).code for a in c.args[1:]]
+    if len(speeds) == 1:
+        return Typed(f"model.partials({v.code}, {speeds[0]})[0]", "vector")
+    return Typed(f"model.partials({', '.join([v.code] + speeds)})", "vectors")
+
+
+@function("NICHECK")
+def _nicheck(tr, c):
+    nargs(tr, c, 0)
+    return Typed("model.nicheck()", "scalar")
+
+
+# -- algebra ----------------------------------------------------------------------------
+def _substitutions(tr, args) -> str:
+    items = []
+    for a in args:
+        if not isinstance(a, ir.Equation):
+            raise tr.error("expected name=value", a)
+        lhs = tr.expr(a.lhs)
+        if isinstance(a.rhs, ir.Range):
+            raise tr.error("a:b is only allowed in TAYLOR", a.rhs)
+        items.append(f"{lhs.code}: {tr.expr(a.rhs).code}")
+    return "{" + ", ".join(items) + "}"
+
+
+@function("EVALUATE")
+def _evaluate(tr, c):
+    if not c.args:
+        raise tr.error("EVALUATE needs an expression", c)
+    x = tr.expr(c.args[0])
+    return Typed(f"model.evaluate({x.code}, {_substitutions(tr, c.args[1:])})", x.type)
+
+
+@function("REPLACE")
+def _replace(tr, c):
+    if not c.args:
+        raise tr.error("REPLACE needs an expression", c)
+    x = tr.expr(c.args[0])
+    return Typed(f"al.replace({x.code}, {_substitutions(tr, c.args[1:])})", x.type)
+
+
+def _degree_range(tr, a) -> str:
+    if isinstance(a, ir.Range):
+        return f"{tr.scalar(a.lo).code}, {tr.scalar(a.hi).code}"
+    return tr.scalar(a).code
+
+
+@function("EXPAND")
+def _expand(tr, c):
+    args = nargs(tr, c, 1, 2)
+    x = tr.expr(args[0])
+    extra = f", {_degree_range(tr, args[1])}" if len(args) == 2 else ""
+    return Typed(f"al.expand({x.code}{extra})", x.type)
+
+
+@function("FACTOR")
+def _factor(tr, c):
+    args = nargs(tr, c, 1, 2)
+    x = tr.expr(args[0])
+    extra = "".join(f", {tr.expr(a).code}" for a in args[1:])
+    return Typed(f"al.factor({x.code}{extra})", x.type)
+
+
+@function("SIMPLIFY")
+def _simplify(tr, c):
+    (a,) = nargs(tr, c, 1)
+    x = tr.expr(a)
+    return Typed(f"al.simplify({x.code})", x.type)
+
+
+@function("COEF")
+def _coef(tr, c):
+    a, b = nargs(tr, c, 2)
+    x, v = tr.expr(a), tr.expr(b)
+    rtype = "matrix" if "matrix" in (x.type, v.type) else x.type
+    return Typed(f"model.coef({x.code}, {v.code})", rtype)
+
+
+@function("EXCLUDE", "INCLUDE")
+def _exclude(tr, c):
+    a, b = nargs(tr, c, 2)
+    x, v = tr.expr(a), tr.expr(b)
+    fn = c.name.lower()
+    return Typed(f"model.{fn}({x.code}, {v.code})", x.type)
+
+
+@function("ARRANGE")
+def _arrange(tr, c):
+    a, n, v = nargs(tr, c, 3)
+    x = tr.expr(a)
+    return Typed(f"al.arrange({x.code}, {tr.scalar(n).code}, {tr.expr(v).code})", x.type)
+
+
+@function("TAYLOR")
+def _taylor(tr, c):
+    if len(c.args) < 3:
+        raise tr.error("TAYLOR(E, n, x=a, ...) or TAYLOR(E, n:m, x=a, ...)", c)
+    x = tr.expr(c.args[0])
+    order = _degree_range(tr, c.args[1])
+    points = []
+    for a in c.args[2:]:
+        if isinstance(a, ir.Name):      # a bare name: expand about 0
+            points.append(f"({tr.expr(a).code}, 0, None)")
+            continue
+        if not isinstance(a, ir.Equation):
+            raise tr.error("expected x=a or x=a:dx", a)
+        var = tr.expr(a.lhs).code
+        if isinstance(a.rhs, ir.Range):
+            points.append(f"({var}, {tr.expr(a.rhs.lo).code}, {tr.expr(a.rhs.hi).code})")
+        else:
+            points.append(f"({var}, {tr.expr(a.rhs).code}, None)")
+    order_code = f"({order})" if "," in order else order
+    return Typed(f"model.taylor({x.code}, {order_code}, [{', '.join(points)}])", x.type)
+
+
+@function("POLYNOMIAL")
+def _polynomial(tr, c):
+    args = nargs(tr, c, 2, 3)
+    items = [tr.expr(a).code for a in args]
+    return Typed(f"al.polynomial({', '.join(items)})", "scalar")
+
+
+@function("ROOTS")
+def _roots(tr, c):
+    args = nargs(tr, c, 1, 3)
+    items = [tr.expr(a).code for a in args]
+    return Typed(f"al.roots({', '.join(items)})", "matrix")
+
+
+@function("EPSILON")
+def _epsilon(tr, c):
+    a, b = nargs(tr, c, 2)
+    x = tr.expr(a)
+    return Typed(f"al.epsilon({x.code}, {tr.scalar(b).code})", x.type)
+
+
+# -- matrices ------------------------------------------------------------------------
+def _matrix_arg(tr, a, what):
+    x = tr.expr(a)
+    if x.type not in ("matrix", "unknown"):
+        raise tr.error(f"{what} takes a matrix, not a {x.type}", a)
+    return x
+
+
+@function("TRANSPOSE")
+def _transpose(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"al.transpose({_matrix_arg(tr, a, 'TRANSPOSE').code})", "matrix")
+
+
+@function("INV", "INVERSE")
+def _inv(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"model.inv({_matrix_arg(tr, a, 'INV').code})", "matrix")
+
+
+@function("DET")
+def _det(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"model.det({_matrix_arg(tr, a, 'DET').code})", "scalar")
+
+
+@function("TRACE")
+def _trace(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"al.trace({_matrix_arg(tr, a, 'TRACE').code})", "scalar")
+
+
+@function("DIAGMAT")
+def _diagmat(tr, c):
+    args = nargs(tr, c, 2, 3)
+    return Typed(f"al.diagmat({', '.join(tr.scalar(a).code for a in args)})", "matrix")
+
+
+def _selection(tr, args) -> list[str]:
+    out = []
+    for a in args:
+        if isinstance(a, ir.Range):
+            out.append(f"({tr.scalar(a.lo).code}, {tr.scalar(a.hi).code})")
+        else:
+            out.append(tr.scalar(a).code)
+    return out
+
+
+@function("ROWS", "COLS")
+def _rows(tr, c):
+    if not c.args:
+        raise tr.error(f"{c.name.upper()} needs a matrix", c)
+    m = _matrix_arg(tr, c.args[0], c.name.upper())
+    fn = "rows" if c.name.upper() == "ROWS" else "cols"
+    if len(c.args) == 1:
+        return Typed(f"al.{fn}({m.code})", "scalar")
+    sel = _selection(tr, c.args[1:])
+    return Typed(f"al.{fn}({m.code}, {', '.join(sel)})", "matrix")
+
+
+@function("ELEMENT")
+def _element(tr, c):
+    args = nargs(tr, c, 2, 3)
+    m = _matrix_arg(tr, args[0], "ELEMENT")
+    idx = [tr.index_code(a) for a in args[1:]]
+    return Typed(f"{m.code}[{', '.join(idx)}]", "scalar")
+
+
+@function("EIG")
+def _eig(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"al.eig({_matrix_arg(tr, a, 'EIG').code})", "matrix")
+
+
+# -- units and inputs ------------------------------------------------------------------
+@function("UNITS")
+def _units(tr, c):
+    a, b = nargs(tr, c, 2)
+    return Typed(f"al.units_factor({_unit_text(tr, a)!r}, {_unit_text(tr, b)!r})", "scalar")
+
+
+def _unit_text(tr, e) -> str:
+    if isinstance(e, ir.Name):
+        return e.name
+    if isinstance(e, ir.BinOp) and e.op in "*/^":
+        return f"{_unit_text(tr, e.left)}{e.op}{_unit_text(tr, e.right)}"
+    if isinstance(e, ir.Number):
+        return e.text
+    raise tr.error("UNITS takes unit names such as deg, rad, n*m, lbf*ft", e)
+
+
+@function("INPUT")
+def _input(tr, c):
+    (a,) = nargs(tr, c, 1)
+    return Typed(f"model.input_value({tr.expr(a).code})", "scalar")
