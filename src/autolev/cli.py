@@ -84,6 +84,34 @@ def cmd_check(ns: argparse.Namespace) -> int:
     return 1 if n_errors else 0
 
 
+def cmd_convert(ns: argparse.Namespace) -> int:
+    """Translate one model; write the module only when translation succeeded."""
+    import autolev
+    from autolev.irbuild import sort_key
+
+    path = Path(ns.file)
+    try:
+        result = autolev.translation(path)
+    except (AutolevSyntaxError, autolev.AutolevTranslationError) as exc:
+        for d in sorted(exc.diagnostics, key=sort_key):
+            print(d.format(), file=sys.stderr)
+        n = sum(d.severity == "error" for d in exc.diagnostics)
+        print(f"{path}: not converted ({n} error{'s' if n != 1 else ''})", file=sys.stderr)
+        return 1
+    for d in result.diagnostics:
+        print(d.format(), file=sys.stderr)
+    out = Path(ns.output) if ns.output else path.with_suffix(".py")
+    if out.resolve() == path.resolve():
+        print(f"autolev convert: refusing to overwrite the model {path}", file=sys.stderr)
+        return 2
+    tmp = out.with_name(out.name + ".tmp")
+    tmp.write_text(result.code)
+    tmp.replace(out)              # never a half-written module
+    if not ns.quiet:
+        print(f"wrote {out}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="autolev",
@@ -103,6 +131,17 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--no-context", action="store_true",
                        help="omit the source line and caret under each diagnostic")
     check.set_defaults(func=cmd_check)
+
+    convert = sub.add_parser("convert", help="translate a model into a Python module",
+                             description="Translate FILE into a Python module on "
+                             "autolev.runtime; importing it builds the model, running it "
+                             "performs the model's CODE commands.  Nothing is written when "
+                             "the model has errors.")
+    convert.add_argument("file", metavar="FILE", help=".al model")
+    convert.add_argument("-o", "--output", metavar="OUT.py",
+                         help="where to write the module (default: FILE with .py)")
+    convert.add_argument("-q", "--quiet", action="store_true")
+    convert.set_defaults(func=cmd_convert)
     return ap
 
 

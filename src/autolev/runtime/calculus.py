@@ -70,16 +70,21 @@ class _CachedFor:
         return (s, self.k) in self.cache
 
 
-def is_small(e: sm.Basic) -> bool:
-    """Expressions kept inline rather than named: atoms, -x, 2*x, x+y, x**2, cos(q)."""
-    if e.is_Atom:
-        return True
-    args = e.args
-    if e.is_Mul or e.is_Add or e.is_Pow:
-        return len(args) == 2 and args[0].is_Atom and args[1].is_Atom
-    if isinstance(e, sm.Function):
-        return len(args) == 1 and args[0].is_Atom
-    return False
+SMALL = 7   # expressions of at most this many nodes stay inline (a*x**2 is 5)
+
+
+def is_small(e: sm.Basic, limit: int = SMALL) -> bool:
+    """Expressions kept inline rather than named: a handful of nodes (-x, 2*a*x,
+    cos(q), x + y*z); anything bigger gets a Z."""
+    count = 0
+    stack = [e]
+    while stack:
+        node = stack.pop()
+        count += 1
+        if count > limit:
+            return False
+        stack.extend(node.args)
+    return True
 
 
 class Definitions:

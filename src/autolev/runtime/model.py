@@ -412,6 +412,12 @@ class Model(AlgebraMixin, IOMixin):
             if info.kind in ("variable", "motionvariable") and d in self.defs.rhs \
                     and S.base_and_order(sym)[1] == 0:
                 kin_rhs |= self.defs.rhs[d].free_symbols
+        vels, angs = self._velocity_sources(strict=False)
+        comps = [c for v in vels + angs for cs in v.terms.values() for c in cs]
+
+        def appears(u) -> bool:
+            return any(self.defs.depends_on(c, u) for c in comps)
+
         candidates: list = []
         for sym, info in sorted(self.info.items(), key=lambda kv: kv[1].index):
             if info.kind not in ("variable", "motionvariable") or S.base_and_order(sym)[1]:
@@ -421,16 +427,10 @@ class Model(AlgebraMixin, IOMixin):
                 continue                                 # a coordinate
             if sym in kin_rhs or sym in self.dependent_speeds or sym in self.auxiliary_speeds:
                 candidates.append(sym)
-            elif info.order >= 1:
+            elif info.order >= 1 and appears(d):
                 candidates.append(d)                     # q' acts as the speed
-            elif info.kind == "motionvariable":
+            elif info.kind == "motionvariable" or info.order >= 1:
                 candidates.append(sym)
-        vels, angs = self._velocity_sources(strict=False)
-        comps = [c for v in vels + angs for cs in v.terms.values() for c in cs]
-
-        def appears(u) -> bool:
-            return any(self.defs.depends_on(c, u) for c in comps)
-
         taken = set(self.dependent_speeds) | set(self.auxiliary_speeds)
         independent = [u for u in candidates
                        if u not in taken and u not in self.defs.rhs and appears(u)]
@@ -479,16 +479,18 @@ class Model(AlgebraMixin, IOMixin):
 
     def _inertia_forces(self, n: Frame, partials, frstar: list) -> None:
         for p in self.particles_list:
+            v = p.vel(n)
             if p.mass is None:
                 raise AutolevModelError(f"the mass of particle {p.name} is not given "
                                         f"(MASS {p.name}=...)")
             inertial = -p.mass * p.acc(n)
-            for r, vr in enumerate(partials(p.vel(n))):
+            for r, vr in enumerate(partials(v)):
                 frstar[r] += vr.dot(inertial)
         for b in self.bodies_list:
+            v = b.masscenter.vel(n)
             m = b.mass_checked()
             force = -m * b.masscenter.acc(n)
-            for r, vr in enumerate(partials(b.masscenter.vel(n))):
+            for r, vr in enumerate(partials(v)):
                 frstar[r] += vr.dot(force)
             w = b.ang_vel_in(n)
             alf = b.ang_acc_in(n)
@@ -527,10 +529,18 @@ class Model(AlgebraMixin, IOMixin):
         the auxiliary rows for the listed unknowns (noncontributing forces)."""
         eqs = self._form()
         eqs.unknowns = list(unknowns)
-        if len(unknowns) > len(eqs.auxiliary):
-            raise AutolevModelError(f"KANE needs an auxiliary speed per unknown: "
+        if len(unknowns) != len(eqs.auxiliary):
+            raise AutolevModelError(f"KANE solves one unknown per auxiliary speed: "
                                     f"{len(unknowns)} unknowns, {len(eqs.auxiliary)} "
                                     "auxiliary speeds")
+        if unknowns:
+            # the auxiliary rows, linear in the unknowns, define them (in terms of the
+            # state and the speeds' derivatives, which the dynamics give)
+            aux_rows = list(eqs.rows[len(eqs.speeds):, 0])
+            a, r = coefficients(aux_rows, eqs.unknowns, self.defs)
+            solution = solve_linear(a, -r, self.defs, "the auxiliary equations (KANE)")
+            for sym, val in zip(eqs.unknowns, solution):
+                self.define(sym, val)
         self.kane_equations = eqs
         return eqs
 
@@ -553,20 +563,26 @@ class Model(AlgebraMixin, IOMixin):
 
     @property
     def coordinates(self) -> list:
-        """Every variable whose first derivative is defined (what is integrated), in
-        declaration order."""
+        """Every variable the integration carries besides the speeds: those whose first
+        derivative is defined (q' = ...) or is itself a speed (q''-only models), in
+        declaration order.  Dependent and auxiliary speeds are not among them."""
+        speeds = set(self.speeds)
+        not_coordinates = set(self.dependent_speeds) | set(self.auxiliary_speeds) | speeds
         out = []
         for sym, info in sorted(self.info.items(), key=lambda kv: kv[1].index):
-            if info.kind in ("variable", "motionvariable", "specified") \
-                    and S.base_and_order(sym)[1] == 0 and S.derivative(sym) in self.defs.rhs \
-                    and info.kind != "specified":
+            if info.kind not in ("variable", "motionvariable") or \
+                    S.base_and_order(sym)[1] != 0 or sym in not_coordinates:
+                continue
+            d = S.derivative(sym)
+            if d in self.defs.rhs or d in speeds:
                 out.append(sym)
         return out
 
     @property
     def kinematical_equations(self) -> dict:
-        """{q': f(q, u)} for every coordinate."""
-        return {S.derivative(q): self.defs.rhs[S.derivative(q)] for q in self.coordinates}
+        """{q': f(q, u)} for every coordinate (q' itself when q' is a speed)."""
+        return {S.derivative(q): self.defs.rhs.get(S.derivative(q), S.derivative(q))
+                for q in self.coordinates}
 
     @property
     def mass_matrix(self) -> sm.Matrix:
@@ -598,6 +614,26 @@ class Model(AlgebraMixin, IOMixin):
     def forcing_full(self) -> sm.Matrix:
         kin = self.kinematical_equations
         return sm.Matrix([kin[S.derivative(q)] for q in self.coordinates] + list(self.forcing))
+
+    def explicit_form(self) -> sm.Matrix:
+        """[q'; u'] as functions of the state: the kinematical equations over the
+        accelerations solved from M u' = forcing (Z-named Gaussian elimination)."""
+        kin = self.kinematical_equations
+        udot = solve_linear(self.mass_matrix, self.forcing, self.defs, "the dynamics")
+        return sm.Matrix([kin[S.derivative(q)] for q in self.coordinates] + udot)
+
+    def symbolic_system(self, form: str = "combined"):
+        """A sympy SymbolicSystem ('explicit', 'combined' or 'separate'), in
+        dynamicsymbols with every definition expanded."""
+        from .interop import symbolic_system
+        return symbolic_system(self, form)
+
+    def to_sympy(self, value):
+        """An expression, matrix or vector as plain sympy (dynamicsymbols, expanded)."""
+        from .interop import to_sympy_expr, to_sympy_vector
+        if isinstance(value, Vector):
+            return to_sympy_vector(value)
+        return to_sympy_expr(self, value)
 
     # -- energy, momentum, mass properties ---------------------------------------------------
     def _items(self, items):

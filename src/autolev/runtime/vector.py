@@ -571,12 +571,12 @@ class Frame:
         """SIMPROT(parent, self, axis, angle): self is parent turned by angle about axis
         (1, 2, 3, negative for the opposite direction, or a vector)."""
         angle = _s(angle)
-        rate = self.model.defs.dt_raw(angle)
         if isinstance(axis, Vector):
             comps = axis.components_in(parent)
             norm = sm.sqrt(sum(c ** 2 for c in comps))
             unit = tuple(c / norm for c in comps) if norm != 1 else comps
             dcm = axis_rotation(unit, angle)
+            rate = self.model.defs.dt_raw(angle)
             w = Vector({parent: tuple(rate * u for u in unit)})
         else:
             k = int(axis)
@@ -586,7 +586,7 @@ class Frame:
                 angle = -angle
             dcm = rotation(abs(k), angle)
             comps = [0, 0, 0]
-            comps[abs(k) - 1] = rate
+            comps[abs(k) - 1] = self.model.defs.dt_raw(angle)
             w = Vector({parent: tuple(comps)})
         self.orient_dcm(parent, dcm, w)
 

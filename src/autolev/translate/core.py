@@ -88,6 +88,21 @@ class Translator:
         self._span: Span | None = None
         self._used_primes = _primes_used(program)
         self.autolev_names: dict[str, str] = {}
+        # declared scalars keep their names: they are allocated before anything that
+        # could clash with them (frames, vectors, derivative names)
+        for sym in program.symbols:
+            if sym.namespace == "scalar":
+                self._reserve("scalar", sym.name)
+        for st in program.statements:
+            if isinstance(st, ir.Assignment) and isinstance(st.target, (ir.Name, ir.Index)) \
+                    and program.symbols.scalar(st.target.name) is None:
+                self._reserve("value", st.target.name)
+
+    def _reserve(self, space: str, name: str) -> None:
+        try:
+            self.names.assign(space, name)
+        except UnsafeName:
+            pass        # reported where the name is used
 
     # -- output ----------------------------------------------------------------------
     def emit(self, code: str) -> None:

@@ -633,7 +633,19 @@ def output_statement(tr: Translator, st: ir.Output) -> None:
             raise tr.error(f"OUTPUT writes scalars, not a {x.type}", item.expr)
         label = _label(item.expr)
         items.append(f"({x.code}, {label!r}{_unit_arg(item.unit)})")
-    tr.emit("model.output(" + ", ".join(items) + ")")
+    _call_lines(tr, "model.output(", items)
+
+
+def _call_lines(tr: Translator, head: str, items: list[str]) -> None:
+    """head + items + ')' on one line, or one item per line when that is long."""
+    line = head + ", ".join(items) + ")"
+    if len(line) <= 92:
+        tr.emit(line)
+        return
+    tr.emit(head)
+    for it in items:
+        tr.emit(f"    {it},")
+    tr.emit(")")
 
 
 def _label(e: ir.Expr) -> str:
@@ -706,7 +718,7 @@ def encode(tr: Translator, st: ir.Encode) -> None:
     for e in st.exprs:
         x = tr.expr(e)
         items.append(f"({_text_of(e)!r}, {x.code})")
-    tr.emit(f"model.encode({', '.join(items)})")
+    _call_lines(tr, "model.encode(", items)
 
 
 @handles(ir.Save)

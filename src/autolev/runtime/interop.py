@@ -1,0 +1,140 @@
+"""Plain sympy objects from a model: expressions in dynamicsymbols, sympy.physics.vector
+frames and vectors, and sympy.physics.mechanics.SymbolicSystem forms.
+
+The engine keeps time-varying quantities as Symbols (Q1, Q1') and intermediate Z's;
+here every Z and definition is expanded and each variable becomes the function of
+time sympy.physics.mechanics expects (q1(t), with q1(t).diff(t) for Q1').
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import sympy as sm
+import sympy.physics.mechanics as me
+
+from . import symbols as S
+from .errors import AutolevModelError
+
+if TYPE_CHECKING:
+    from .model import Model
+    from .vector import Frame, Vector
+
+
+def dynamic_map(model: "Model") -> dict:
+    """{our symbol: its sympy counterpart} for every variable and derivative."""
+    mapping: dict = {S.TIME: me.dynamicsymbols._t}
+    for sym, info in model.info.items():
+        base, order = S.base_and_order(sym)
+        if info.kind == "constant" or order:
+            continue
+        f = me.dynamicsymbols(sym.name)
+        mapping[sym] = f
+        for k in range(1, info.order + 3):
+            mapping[S.derivative(sym, k)] = f.diff(me.dynamicsymbols._t, k)
+    return mapping
+
+
+def to_sympy_expr(model: "Model", expr, mapping: dict | None = None):
+    """The expression with every definition expanded, in dynamicsymbols."""
+    mapping = mapping if mapping is not None else dynamic_map(model)
+    explicit = model.explicit(expr)
+    if isinstance(explicit, sm.MatrixBase):
+        return explicit.applyfunc(lambda e: e.xreplace(mapping))
+    return sm.sympify(explicit).xreplace(mapping)
+
+
+def to_sympy_frame(frame: "Frame"):
+    """A sympy ReferenceFrame oriented as `frame` is (through the model's frames)."""
+    model = frame.model
+    cache = model.__dict__.setdefault("_sympy_frames", {})
+    if frame in cache:
+        return cache[frame]
+    mapping = dynamic_map(model)
+    # orient every frame reachable from this one along a spanning tree of the edges
+    root = frame
+    todo = [root]
+    cache[root] = me.ReferenceFrame(root.name)
+    while todo:
+        f = todo.pop()
+        for g in f._dcm_edges:
+            if g in cache or g.name == "_probe":
+                continue
+            sg = me.ReferenceFrame(g.name)
+            dcm = to_sympy_expr(model, f.dcm(g), mapping)     # f_i . g_j
+            sg.orient_explicit(cache[f], dcm.T)               # sympy: g.dcm(f) = dcm^T
+            try:
+                w = to_sympy_vector(g.ang_vel_in(f), mapping=mapping)
+                sg.set_ang_vel(cache[f], w)
+            except AutolevModelError:
+                pass
+            cache[g] = sg
+            todo.append(g)
+    return cache[frame]
+
+
+def to_sympy_vector(v: "Vector", frames: dict | None = None, mapping: dict | None = None):
+    """A sympy.physics.vector.Vector equal to v."""
+    total = me.Vector(0)
+    for f, comps in v.terms.items():
+        sf = (frames or {}).get(f) or to_sympy_frame(f)
+        model = f.model
+        m = mapping if mapping is not None else dynamic_map(model)
+        c = [to_sympy_expr(model, x, m) for x in comps]
+        total += c[0] * sf.x + c[1] * sf.y + c[2] * sf.z
+    return total
+
+
+def to_sympy_point(point):
+    return me.Point(point.name)
+
+
+def symbolic_system(model: "Model", form: str = "combined"):
+    """Kane's equations as a sympy.physics.mechanics.SymbolicSystem.
+
+    form "explicit": x' = F(x); "combined": M(x) x' = F(x) for the whole state;
+    "separate": q' = G(q, u) and M u' = f kept apart.  With dependent speeds the state
+    ends with them and their constraint rows are marked algebraic (alg_con)."""
+    mapping = dynamic_map(model)
+    eqs = model._equations()
+    qs = [mapping[q] for q in model.coordinates]
+    us = [mapping.get(u, u) for u in eqs.speeds]
+    dep = [mapping[u] for u in model.dependent_speeds]
+    kin = model.kinematical_equations
+    kin_rhs = sm.Matrix([to_sympy_expr(model, kin[S.derivative(q)], mapping)
+                         for q in model.coordinates])
+    mm = to_sympy_expr(model, model.mass_matrix, mapping)
+    f = to_sympy_expr(model, model.forcing, mapping)
+    nq, nu, nd = len(qs), len(us), len(dep)
+    states = qs + us + dep
+    dep_values = [to_sympy_expr(model, model.defs.rhs[u], mapping)
+                  for u in model.dependent_speeds]
+    alg = sm.Matrix([d - v for d, v in zip(dep, dep_values)])
+    n = nq + nu + nd
+    full_m = sm.zeros(n, n)
+    full_m[:nq, :nq] = sm.eye(nq)
+    full_m[nq:nq + nu, nq:nq + nu] = mm
+    full_f = sm.Matrix.vstack(kin_rhs, f, -alg) if nd else sm.Matrix.vstack(kin_rhs, f)
+    alg_con = list(range(nq + nu, n)) if nd else None
+    bodies = None
+    if form == "combined":
+        return me.SymbolicSystem(states, full_f, mass_matrix=full_m, alg_con=alg_con,
+                                 coord_idxs=list(range(nq)),
+                                 speed_idxs=list(range(nq, nq + nu)), bodies=bodies)
+    if form == "separate":
+        dyn_m = sm.zeros(nu + nd, nu + nd)
+        dyn_m[:nu, :nu] = mm
+        dyn_f = sm.Matrix.vstack(f, -alg) if nd else f
+        return me.SymbolicSystem(states, dyn_f, coordinate_derivatives=kin_rhs,
+                                 mass_matrix=dyn_m,
+                                 alg_con=[nu + k for k in range(nd)] if nd else None,
+                                 coord_idxs=list(range(nq)),
+                                 speed_idxs=list(range(nq, nq + nu)))
+    if form == "explicit":
+        if nd:
+            raise AutolevModelError("the explicit form needs no algebraic rows; with "
+                                    "dependent speeds use form='combined' or 'separate'")
+        udot = mm.LUsolve(f)
+        return me.SymbolicSystem(states, sm.Matrix.vstack(kin_rhs, udot),
+                                 coord_idxs=list(range(nq)),
+                                 speed_idxs=list(range(nq, nq + nu)))
+    raise ValueError(f"form must be 'explicit', 'combined' or 'separate', not {form!r}")

@@ -1,0 +1,52 @@
+#!/usr/bin/env python3
+"""Regenerate tests/golden/NAME.py from autolev_examples/NAME.al, showing the diff.
+
+    python tools/update_goldens.py            # write the changes, print the diff
+    python tools/update_goldens.py --check    # only report which goldens differ
+
+Goldens change only through this command, and the printed diff is to be read.
+"""
+from __future__ import annotations
+
+import argparse
+import difflib
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "src"))
+
+import autolev  # noqa: E402
+
+EXAMPLES = ROOT / "autolev_examples"
+GOLDEN = ROOT / "tests" / "golden"
+
+
+def golden_text(model: Path) -> str:
+    return autolev.transpile(model)
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--check", action="store_true", help="write nothing")
+    ns = ap.parse_args()
+    GOLDEN.mkdir(parents=True, exist_ok=True)
+    changed = 0
+    for model in sorted(EXAMPLES.glob("*.al")):
+        target = GOLDEN / (model.stem + ".py")
+        new = golden_text(model)
+        old = target.read_text() if target.exists() else ""
+        if new == old:
+            continue
+        changed += 1
+        sys.stdout.writelines(difflib.unified_diff(
+            old.splitlines(keepends=True), new.splitlines(keepends=True),
+            f"a/{target.relative_to(ROOT)}", f"b/{target.relative_to(ROOT)}"))
+        if not ns.check:
+            target.write_text(new)
+    print(f"{changed} golden file(s) {'differ' if ns.check else 'updated'}")
+    return 1 if ns.check and changed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
