@@ -5,8 +5,9 @@
 
 Reads shared/corpus/visible.tsv, finds the files that shared/corpus/materialize.py
 copied (default ~/.cache/autolev-corpus, or $AUTOLEV_CORPUS), and reports per model
-the outcome of each stage: parse (syntax and includes).  With --list, every model
-that fails is listed with its first diagnostic.
+the outcome of each stage: parse (syntax, macros and RUN files), translate (to
+Python), build (the generated module runs and forms its equations).  Every model
+that stops is listed with its first diagnostic; --list lists them all.
 """
 from __future__ import annotations
 
@@ -59,38 +60,77 @@ def _overlay(base: Path, pinned: Path) -> Path:
     return target
 
 
-def parse_stage(path: Path) -> tuple[str, str]:
+class _Timeout(Exception):
+    pass
+
+
+def _alarm(signum, frame):
+    raise _Timeout()
+
+
+def run_model(args) -> dict:
+    """Every stage for one model, in a worker process (with a time limit)."""
+    import signal
+    import time
+    ident, path, limit = args
+    out = {"id": ident, "path": str(path), "stage": "ok", "detail": "", "seconds": 0.0}
+    signal.signal(signal.SIGALRM, _alarm)
+    signal.alarm(limit)
+    t0 = time.perf_counter()
     try:
-        autolev.parse(path)
+        result = autolev.translation(path)
+        model = autolev.load(path)
+        out["speeds"] = len(model.kane_equations.speeds) if model.kane_equations else 0
+        out["warnings"] = sum(d.severity == "warning" for d in result.diagnostics)
     except autolev.AutolevSyntaxError as exc:
-        first = next(d for d in exc.diagnostics if d.severity == "error")
-        return "syntax error", first.format(context=False).splitlines()[0]
-    return "ok", ""
+        out.update(stage="parse", detail=_first(exc.diagnostics))
+    except autolev.AutolevTranslationError as exc:
+        out.update(stage="translate", detail=_first(exc.diagnostics))
+    except autolev.AutolevRuntimeError as exc:
+        out.update(stage="build", detail=_first(exc.diagnostics))
+    except _Timeout:
+        out.update(stage="build", detail=f"did not finish in {limit} s")
+    finally:
+        signal.alarm(0)
+    out["seconds"] = time.perf_counter() - t0
+    return out
+
+
+def _first(diagnostics) -> str:
+    d = next(d for d in diagnostics if d.severity == "error")
+    return d.format(context=False).splitlines()[0]
 
 
 def main() -> int:
+    from concurrent.futures import ProcessPoolExecutor
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--corpus", type=Path, default=Path(os.environ.get(
         "AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus")))
-    ap.add_argument("--list", action="store_true", help="list every failing model")
+    ap.add_argument("--list", action="store_true", help="list every model and its outcome")
+    ap.add_argument("--limit", type=int, default=120, help="seconds per model")
+    ap.add_argument("--jobs", type=int, default=2)
     ns = ap.parse_args()
     models = corpus_models(ns.corpus)
     if not models:
         print(f"no corpus under {ns.corpus}: see shared/corpus/materialize.py")
         return 1
-    outcomes: Counter = Counter()
-    failures = []
-    for ident, path in models:
-        outcome, detail = parse_stage(path)
-        outcomes[outcome] += 1
-        if outcome != "ok":
-            failures.append((ident, detail))
-    total = len(models)
-    print(f"parse: {outcomes['ok']}/{total} models read without error "
-          f"({100 * outcomes['ok'] / total:.1f} %)")
-    if ns.list or failures:
-        for ident, detail in failures:
-            print(f"  {ident}: {detail}")
+    with ProcessPoolExecutor(ns.jobs) as pool:
+        results = list(pool.map(run_model, [(i, p, ns.limit) for i, p in models]))
+    total = len(results)
+    order = ["parse", "translate", "build"]
+    passed = total
+    for stage in order:
+        failed = sum(r["stage"] == stage for r in results)
+        passed -= failed
+        print(f"{stage:9s}: {total - sum(r['stage'] in order[:order.index(stage) + 1] for r in results)}"
+              f"/{total} models get past it ({failed} stop here)")
+    ok = sum(r["stage"] == "ok" for r in results)
+    print(f"translate and build without a diagnostic: {ok}/{total} ({100 * ok / total:.1f} %)")
+    slow = sorted(results, key=lambda r: -r["seconds"])[:5]
+    print("slowest: " + ", ".join(f"{r['id']} {r['seconds']:.1f} s" for r in slow))
+    for r in results:
+        if ns.list or r["stage"] != "ok":
+            print(f"  {r['id']}: {r['stage']}: {r['detail'] or 'ok'} ({r['seconds']:.1f} s)")
     return 0
 
 

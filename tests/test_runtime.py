@@ -309,3 +309,14 @@ def test_linear_solve_avoids_pivots_that_vanish_at_the_zero_configuration(m):
     m.solve(eqs, [x, y])
     sub = m.defs.substitute(m.rhs(x), {q: 0})
     assert abs(num(m, sub, {}) + 1) < 1e-12
+
+
+def test_kinematical_equations_written_for_the_speeds_are_inverted(m):
+    q1, q2, u1, u2 = m.motion_variables("q1 q2 u1 u2", order=1)
+    m.define(u1, al.derivative(q1) + al.derivative(q2))     # U1 = Q1' + Q2'
+    assert al.derivative(q1) not in m.defs.rhs              # not determined yet
+    m.define(u2, al.derivative(q1) - al.derivative(q2))     # U2 = Q1' - Q2'
+    vals = {u1: 3.0, u2: 1.0}
+    assert abs(num(m, al.derivative(q1), vals) - 2.0) < 1e-12
+    assert abs(num(m, al.derivative(q2), vals) - 1.0) < 1e-12
+    assert u1 not in m.defs.rhs                             # the speeds stay free

@@ -74,9 +74,27 @@ class Model(AlgebraMixin, IOMixin):
         self.unit_system_names: tuple = ()
         self.encoded: list = []         # (name, value) of ENCODE
         self.code_commands: list = []   # (kind, filename, args, sweep, options)
+        self._kinematics_pending: dict = {}   # U -> f(q') awaiting inversion
 
     def __repr__(self) -> str:
         return f"<autolev Model {self.name}>"
+
+    def __getitem__(self, name: str):
+        """model["Q1"], model["ZERO"], model["N"]: what the model calls `name` (any case;
+        the translated module's names after autolev.load)."""
+        names = getattr(self, "names", {})
+        namespace = getattr(self, "namespace", {})
+        for autolev_name, py in names.items():
+            if autolev_name.lower() == name.lower() and py in namespace:
+                return namespace[py]
+        for table in (self.frames_by_name, self.points_by_name):
+            for k, v in table.items():
+                if k.lower() == name.lower():
+                    return v
+        for sym in self.info:
+            if sym.name.lower() == name.lower():
+                return sym
+        raise KeyError(name)
 
     def _changed(self) -> None:
         self._version += 1
@@ -182,8 +200,54 @@ class Model(AlgebraMixin, IOMixin):
             return
         if not isinstance(sym, sm.Symbol):
             raise AutolevModelError(f"only a declared name can be defined, not {sym}")
+        value = sm.sympify(value)
+        if self._is_speed_definition(sym, value):
+            # U = Q' (or a combination of rates): a kinematical equation written for
+            # the speed; it is solved for the rates once they can all be determined
+            self._kinematics_pending[sym] = value
+            self._resolve_kinematics()
+            self._changed()
+            return
         self.defs.define(sym, value)
         self._changed()
+
+    def _rates_in(self, value) -> set:
+        """Undefined first derivatives of variables that appear in value."""
+        out = set()
+        for f in value.free_symbols:
+            base, order = S.base_and_order(f)
+            info = self.info.get(base)
+            if order == 1 and info is not None and info.kind in ("variable", "motionvariable") \
+                    and f not in self.defs.rhs:
+                out.add(f)
+        return out
+
+    def _is_speed_definition(self, sym, value) -> bool:
+        """U = f(Q') for a motion variable U, linear in rates of motion variables."""
+        info = self.info.get(sym)
+        if info is None or info.kind != "motionvariable" or S.base_and_order(sym)[1]:
+            return False
+        rates = {r for r in self._rates_in(value)
+                 if self.info[S.base_and_order(r)[0]].kind == "motionvariable"}
+        if not rates:
+            return False
+        return all(sm.diff(value, r, 2) == 0 for r in rates)
+
+    def _resolve_kinematics(self) -> None:
+        """Solve the pending U = f(q') equations for the q' when they determine them."""
+        pending = self._kinematics_pending
+        rates = set()
+        for v in pending.values():
+            rates |= self._rates_in(v)
+        if not pending or len(rates) != len(pending):
+            return
+        rates = sorted(rates, key=lambda r: self.info[S.base_and_order(r)[0]].index)
+        eqs = [u - v for u, v in pending.items()]
+        a, r = coefficients(eqs, rates, self.defs)
+        solution = solve_linear(a, -r, self.defs, "the kinematical equations")
+        for rate, val in zip(rates, solution):
+            self.defs.define(rate, val)
+        pending.clear()
 
     def rhs(self, value):
         """RHS(x): the stored right-hand side of a declared x.  Names assigned without a
@@ -398,6 +462,13 @@ class Model(AlgebraMixin, IOMixin):
         return vels, angs
 
     def generalized_speeds(self) -> tuple[list, list, list]:
+        if self._kinematics_pending:
+            raise AutolevModelError(
+                "the kinematical equations written as U = f(Q') do not determine every Q'"
+                f" ({', '.join(f'{u} = {v}' for u, v in self._kinematics_pending.items())})")
+        return self._generalized_speeds()
+
+    def _generalized_speeds(self) -> tuple[list, list, list]:
         """(independent, dependent, auxiliary) generalized speeds.
 
         A variable or motion variable whose first derivative is defined is a
