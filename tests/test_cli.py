@@ -103,3 +103,65 @@ def test_no_traceback_for_a_bad_model(tmp_path):
                        capture_output=True, text=True)
     assert r.returncode == 1
     assert "Traceback" not in r.stdout + r.stderr
+
+
+# -- autolev run -----------------------------------------------------------------------------
+def test_run_writes_autolevs_files(tmp_path, capsys):
+    code, out, err = run(capsys, "run", str(EXAMPLES / "double_pendulum.al"), "--out",
+                         str(tmp_path), "--tfinal", "0.5", "-q")
+    assert code == 0, err
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == ["double_pendulum.1", "double_pendulum.2", "double_pendulum.dir",
+                     "double_pendulum.in"]
+    rows = [line for line in (tmp_path / "double_pendulum.1").read_text().splitlines()
+            if line and not line.startswith("%")]
+    assert len(rows) == 51 and rows[0].split()[:3] == ["0.000000E+00", "3.000000E+01",
+                                                       "6.000000E+01"]
+
+
+def test_run_set_changes_an_input_in_its_unit(tmp_path, capsys):
+    code, _, err = run(capsys, "run", str(EXAMPLES / "double_pendulum.al"), "--out",
+                       str(tmp_path), "--tfinal", "0", "--set", "Q1=10", "-q")
+    assert code == 0, err
+    row = (tmp_path / "double_pendulum.1").read_text().splitlines()[5].split()
+    assert row[1] == "1.000000E+01"
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--set", "Q1"], "--set expects NAME=VALUE"),
+    (["--method", "euler"], "unknown --method euler"),
+])
+def test_run_refuses_bad_options(tmp_path, capsys, argv, message):
+    code, _, err = run(capsys, "run", str(EXAMPLES / "double_pendulum.al"), "--out",
+                       str(tmp_path), *argv)
+    assert code == 2 and message in err
+    assert not any(tmp_path.iterdir())
+
+
+def test_run_of_a_model_with_errors_writes_nothing(tmp_path, capsys):
+    f = tmp_path / "bad.al"
+    f.write_text("VARIABLES X'\nX' = -Y\nCODE DYNAMICS() bad.c\n")
+    out_dir = tmp_path / "out"
+    code, _, err = run(capsys, "run", str(f), "--out", str(out_dir))
+    assert code == 1
+    assert f"{f}:2:7: error" in err and "not run" in err
+    assert not out_dir.exists()
+
+
+def test_run_reports_an_integration_failure_at_the_code_line_and_keeps_rows(tmp_path,
+                                                                           capsys):
+    f = tmp_path / "stiff.al"
+    f.write_text("VARIABLES X'\nCONSTANTS LAMBDA\nX' = -LAMBDA*X\n"
+                 "INPUT LAMBDA = 1.0E+09, X = 1\nOUTPUT T, X\nCODE DYNAMICS() stiff.c\n")
+    code, _, err = run(capsys, "run", str(f), "--out", str(tmp_path), "-q")
+    assert code == 1
+    assert f"{f}:6: Numerical integration failed to converge" in err
+    assert "1.000000E+00" in (tmp_path / "stiff.1").read_text()
+
+
+def test_run_reports_a_bad_code_command_at_its_line(tmp_path, capsys):
+    f = tmp_path / "m.al"
+    f.write_text("VARIABLES X, Y\nEQ[1] = X + Y\nCODE ALGEBRAIC(EQ, X, Y) m.c\n")
+    code, _, err = run(capsys, "run", str(f), "--out", str(tmp_path), "-q")
+    assert code == 1
+    assert f"{f}:3: error: CODE ALGEBRAIC: 1 equations for 2 unknowns" in err

@@ -112,6 +112,138 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     return 0
 
 
+def _print_warning(message, category, filename, lineno, file=None, line=None):
+    print(f"autolev: warning: {message}", file=sys.stderr)
+
+
+def _load_for_run(path: Path):
+    """The model, or None after printing its diagnostics."""
+    import autolev
+    from autolev.irbuild import sort_key
+
+    from .loader import load_for_run
+    try:
+        model, notes = load_for_run(path)
+    except (AutolevSyntaxError, autolev.AutolevTranslationError,
+            autolev.AutolevRuntimeError) as exc:
+        for d in sorted(exc.diagnostics, key=sort_key):
+            print(d.format(), file=sys.stderr)
+        return None
+    for note in notes:
+        print(f"{path}: warning: {note}", file=sys.stderr)
+    return model
+
+
+def cmd_run(ns: argparse.Namespace) -> int:
+    """Translate, build and run the model's CODE commands; write Autolev's files."""
+    import time
+    import warnings
+
+    from .runtime.errors import AutolevModelError
+    from .runtime.io import CodeCommand
+    from .runtime.numerics.integrate import METHODS
+    from .runtime.numerics.run import run_command
+
+    warnings.showwarning = _print_warning
+    path = Path(ns.file)
+    if ns.method not in METHODS:
+        print(f"autolev run: unknown --method {ns.method} (one of {', '.join(METHODS)})",
+              file=sys.stderr)
+        return 2
+    overrides = {}
+    for item in ns.set or []:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip():
+            print(f"autolev run: --set expects NAME=VALUE, not {item!r}", file=sys.stderr)
+            return 2
+        overrides[name.strip()] = value.strip()
+    if ns.tfinal is not None:
+        overrides["TFINAL"] = ns.tfinal
+    if ns.plot:
+        try:
+            import matplotlib  # noqa: F401
+        except ImportError:
+            print("autolev run: --plot needs matplotlib (pip install 'autolev[plot]')",
+                  file=sys.stderr)
+            return 2
+    start = time.monotonic()
+    model = _load_for_run(path)
+    if model is None:
+        print(f"{path}: not run", file=sys.stderr)
+        return 1
+    if not ns.quiet:
+        print(f"{path}: built in {time.monotonic() - start:.1f} s")
+    commands = list(model.code_commands)
+    locations = list(getattr(model, "code_locations", []))
+    if not commands:
+        print(f"{path}: no CODE command; simulating as CODE DYNAMICS", file=sys.stderr)
+        commands = [CodeCommand("dynamics", f"{path.stem}.c", [], None, (),
+                                n_outputs=len(model.outputs), n_encoded=len(model.encoded),
+                                inputs=dict(model.inputs), units=dict(model.unit_of))]
+    out_dir = Path(ns.out)
+    status = 0
+    for k, command in enumerate(commands):
+        where = locations[k] if k < len(locations) and locations[k] is not None else None
+        label = (f"{where.start.file}:{where.start.line}" if where is not None else str(path))
+        t0 = time.monotonic()
+        try:
+            result = run_command(model, command, out_dir=out_dir, method=ns.method,
+                                 backend=ns.backend, infile=ns.infile,
+                                 progress=None if ns.quiet else sys.stderr,
+                                 overrides=overrides)
+        except AutolevModelError as exc:
+            text = str(exc)
+            if not text.startswith("CODE"):
+                text = f"CODE {command.kind.upper()}: {text}"
+            print(f"{label}: error: {text}", file=sys.stderr)
+            status = 1
+            continue
+        elapsed = time.monotonic() - t0
+        if result.failure:
+            print(f"{label}: {result.failure}", file=sys.stderr)
+            status = 1
+        if not ns.quiet:
+            what = (f"{len(result.t)} rows" if result.kind in ("dynamics", "ode")
+                    else "solved" if result.kind != "algebraic" or result.solution
+                    else "evaluated")
+            print(f"CODE {command.kind.upper()} {command.filename}: {what} in {elapsed:.2f} s"
+                  + (f" ({result.stats.get('method')}, {result.stats.get('steps')} steps)"
+                     if result.stats else ""))
+            for f in result.files:
+                print(f"  wrote {f}")
+        if ns.plot and result.outputs:
+            for f in _plot(result, out_dir):
+                if not ns.quiet:
+                    print(f"  wrote {f}")
+    return status
+
+
+def _plot(result, out_dir: Path) -> list[Path]:
+    """A PNG per output file: every column against the first."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    written = []
+    for table in result.outputs:
+        if table.data.shape[0] < 2 or table.data.shape[1] < 2:
+            continue
+        fig, ax = plt.subplots(figsize=(8, 5))
+        x = table.data[:, 0]
+        for j in range(1, table.data.shape[1]):
+            unit = f" ({table.units[j]})" if table.units[j] else ""
+            ax.plot(x, table.data[:, j], label=f"{table.labels[j]}{unit}")
+        ax.set_xlabel(table.labels[0] + (f" ({table.units[0]})" if table.units[0] else ""))
+        ax.set_title(table.filename)
+        ax.legend(fontsize="small")
+        ax.grid(True, alpha=0.3)
+        path = out_dir / f"{table.filename}.png"
+        fig.savefig(path, dpi=100)
+        plt.close(fig)
+        written.append(path)
+    return written
+
+
 def build_parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="autolev",
@@ -142,6 +274,30 @@ def build_parser() -> argparse.ArgumentParser:
                          help="where to write the module (default: FILE with .py)")
     convert.add_argument("-q", "--quiet", action="store_true")
     convert.set_defaults(func=cmd_convert)
+
+    run = sub.add_parser("run", help="run a model's CODE commands (simulate)",
+                         description="Translate and build FILE, then perform its CODE "
+                         "commands with its INPUT values: DYNAMICS and ODE are integrated, "
+                         "ALGEBRAIC and NONLINEAR solved.  Writes Autolev's files NAME.in, "
+                         "NAME.1 ... NAME.k (one per OUTPUT) and NAME.dir into --out.")
+    run.add_argument("file", metavar="FILE", help=".al model")
+    run.add_argument("--out", default=".", metavar="DIR",
+                     help="folder for the output files (default: the current folder)")
+    run.add_argument("--method", default="kutta-merson", metavar="M",
+                     help="integrator: kutta-merson (Autolev's, default), rk45, dop853, "
+                     "radau, bdf, lsoda, rk23")
+    run.add_argument("--set", action="append", metavar="NAME=VALUE",
+                     help="an input value, in the unit the model gives it (degrees for a "
+                     "DEG input); repeatable")
+    run.add_argument("--tfinal", type=float, metavar="T", help="final time (TFINAL)")
+    run.add_argument("--in", dest="infile", metavar="FILE.in",
+                     help="read input values from an Autolev .in file")
+    run.add_argument("--backend", default="auto", choices=("auto", "c", "python"),
+                     help="compiled C when a compiler is found (auto), or pure Python")
+    run.add_argument("--plot", action="store_true",
+                     help="also write a PNG per output file (needs matplotlib)")
+    run.add_argument("-q", "--quiet", action="store_true")
+    run.set_defaults(func=cmd_run)
     return ap
 
 

@@ -32,6 +32,10 @@ def load_translation(translation, filename: str):
     model = module.__dict__["model"]
     model.namespace = module.__dict__
     model.names = translation.names
+    # where each CODE statement is in the .al file (diagnostics of its run point there)
+    model.code_locations = [translation.line_map.get(n)
+                            for n, text in enumerate(translation.code.splitlines(), 1)
+                            if text.startswith("model.code(")]
     return model
 
 
@@ -48,3 +52,38 @@ def _diagnostic(exc: BaseException, translation, pyfile: str) -> Diagnostic:
 
 
 __all__ = ["load_translation"]
+
+
+def load_for_run(path) -> tuple[object, list]:
+    """The model for `autolev run`: as `autolev.load`, except that when the only
+    statements that fail come after the last CODE command, the model is built up to
+    that command (Autolev's session rejected a bad statement and went on; the program
+    CODE wrote did not depend on what followed).  Returns (model, notes)."""
+    import dataclasses
+    from pathlib import Path
+
+    import autolev
+    from .translate import translate
+
+    p = Path(path)
+    try:
+        result = autolev.translation(p)
+        return load_translation(result, str(p)), []
+    except (autolev.AutolevTranslationError, AutolevRuntimeError) as exc:
+        failure = exc
+    program = autolev.parse(p)
+    codes = [i for i, st in enumerate(program.statements) if st.kind == "code"]
+    if not codes or codes[-1] == len(program.statements) - 1:
+        raise failure
+    cut = dataclasses.replace(program, statements=program.statements[:codes[-1] + 1])
+    result = translate(cut)
+    if any(d.severity == "error" for d in result.diagnostics):
+        raise failure
+    try:
+        model = load_translation(result, str(p))
+    except AutolevRuntimeError:
+        raise failure from None
+    first = next(d for d in failure.diagnostics if d.severity == "error")
+    notes = [f"statements after the last CODE command fail and are left out of the run "
+             f"(first: {first.format(context=False).splitlines()[0]})"]
+    return model, notes

@@ -118,7 +118,10 @@ class AlgebraMixin:
         power = sm.Add(*[f * u for f, u in zip(eqs.fr, eqs.speeds)])
         work = self._nicheck_work
         if work is None:
-            work = self.variables("NICHECK_WORK")
+            # Autolev's programs call this integral WCHECK1
+            taken = {s.name.upper() for s in self.info}
+            name = next(f"WCHECK{k}" for k in range(1, 1000) if f"WCHECK{k}" not in taken)
+            work = self.variables(name)
             self._nicheck_work = work
         self.define(S.derivative(work), self.defs.zify(power))
         self.inputs.setdefault(work, (sm.S.Zero, None))

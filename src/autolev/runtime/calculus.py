@@ -17,6 +17,8 @@ computed iteratively in dependency order (no recursion on the depth of the chain
 """
 from __future__ import annotations
 
+import math
+
 from collections.abc import Iterable, Mapping
 
 import sympy as sm
@@ -26,16 +28,29 @@ from .errors import AutolevModelError
 from .fastdiff import diff as fast_diff
 
 
+def _order_key(s) -> tuple:
+    if isinstance(s, Z):
+        return (1, int(s.name[1:]) if s.name[1:].isdigit() else 0, s.name)
+    return (0, 0, str(s))
+
+
+def ordered(symbols) -> list:
+    """Symbols in a fixed order: by name, Z's after the others in creation order."""
+    return sorted(symbols, key=_order_key)
+
+
 class NumericPoint:
     """Values for a numeric evaluation: given ones, else a fixed pseudo-random value
     per symbol (the same for a symbol every time), or 0 for the time-varying ones when
     `zero_varying` (the configuration where models are usually linearised)."""
 
     def __init__(self, defs: "Definitions", values: Mapping | None = None,
-                 zero_varying: bool = False, seed: int = 0):
+                 zero_varying: bool = False, seed: int = 0, varying=None):
+        """`varying`: None (pseudo-random in [0.5, 1.5] like the constants), a number
+        for every time-varying symbol, or "wide" (pseudo-random in [-pi, pi])."""
         self.defs = defs
         self.values = dict(values or {})
-        self.zero_varying = zero_varying
+        self.varying_value = 0 if zero_varying else varying
         self.seed = seed
         self.cache: dict = {}
 
@@ -44,10 +59,12 @@ class NumericPoint:
             return cache[sym]
         if sym in self.values:
             return self.values[sym]
-        if self.zero_varying and sym in self.defs.varying:
-            return sm.S.Zero
         import zlib
         h = zlib.crc32(f"{sym.name}/{self.seed}".encode()) / 2 ** 32
+        if self.varying_value is not None and sym in self.defs.varying:
+            if self.varying_value == "wide":
+                return sm.Float(math.pi * (2 * h - 1))
+            return sm.sympify(self.varying_value)
         return sm.Float(0.5 + h)
 
 
@@ -101,6 +118,7 @@ class Definitions:
         self._subs: dict[tuple[sm.Symbol, frozenset], sm.Expr] = {}
         self._explicit: dict[sm.Symbol, sm.Expr] = {}
         self._fs: dict[sm.Symbol, frozenset] = {}   # free symbols of each definition
+        self._fo: dict[sm.Symbol, tuple] = {}       # the same, in a fixed order
         self.z_count = 0
 
     # -- the table -------------------------------------------------------------
@@ -116,6 +134,7 @@ class Definitions:
             self._invalidate()
         self.rhs[sym] = expr
         self._fs.pop(sym, None)
+        self._fo.pop(sym, None)
 
     def undefine(self, sym: sm.Symbol) -> None:
         if self.rhs.pop(sym, None) is not None:
@@ -151,7 +170,7 @@ class Definitions:
 
     # -- dependency order ------------------------------------------------------
     def _defined_in(self, expr) -> list[sm.Symbol]:
-        return [s for s in expr.free_symbols if s in self.rhs]
+        return ordered(s for s in expr.free_symbols if s in self.rhs)
 
     def free(self, sym: sm.Symbol) -> frozenset:
         """Free symbols of the definition of sym (cached: definitions do not change)."""
@@ -160,6 +179,15 @@ class Definitions:
             fs = self._fs[sym] = frozenset(self.rhs[sym].free_symbols)
         return fs
 
+    def free_ordered(self, sym: sm.Symbol) -> tuple:
+        """free(sym) in a fixed order (names, then Z's in creation order), so that what
+        is built by walking definitions -- Z's, generated code -- is the same in every
+        run, whatever Python's hash seed."""
+        fo = self._fo.get(sym)
+        if fo is None:
+            fo = self._fo[sym] = tuple(ordered(self.free(sym)))
+        return fo
+
     def _post_order(self, roots: Iterable[sm.Symbol], done, prune=None) -> list[sm.Symbol]:
         """Defined symbols reachable from roots, dependencies first.
 
@@ -167,7 +195,7 @@ class Definitions:
         and what lies only beyond them."""
         order: list[sm.Symbol] = []
         seen: set[sm.Symbol] = set()
-        stack = [(r, False) for r in roots if r in self.rhs]
+        stack = [(r, False) for r in reversed(ordered(roots)) if r in self.rhs]
         while stack:
             s, expanded = stack.pop()
             if expanded:
@@ -177,7 +205,7 @@ class Definitions:
                 continue
             seen.add(s)
             stack.append((s, True))
-            for f in self.free(s):
+            for f in reversed(self.free_ordered(s)):
                 if f in self.rhs and f not in seen and f not in done:
                     stack.append((f, False))
         return order
@@ -253,8 +281,7 @@ class Definitions:
         angular velocity an orientation implies is in the angles' own rates)."""
         expr = sm.sympify(expr)
         cache = self._dt if through_definitions else self._dt_raw
-        through = self._dt_through if through_definitions else \
-            (lambda s: isinstance(s, Z))
+        through = self._dt_through if through_definitions else self._dt_raw_through
         for s in self._post_order(self._defined_in(expr), cache,
                                   prune=lambda s: not through(s)):
             cache[s] = self.zify(self._dt_shallow(self.rhs[s], cache, through, self.free(s)))
@@ -262,6 +289,13 @@ class Definitions:
 
     def dt_raw(self, expr) -> sm.Expr:
         return self.dt(expr, through_definitions=False)
+
+    def _dt_raw_through(self, s) -> bool:
+        # Z's, and a defined variable whose derivative is not (an angle given as a
+        # function of other coordinates, bicycle pitch = f(roll, steer)): its rate is
+        # the derivative of its definition
+        return s in self.rhs and (isinstance(s, Z) or (s in self.varying
+                                                       and derivative(s) not in self.rhs))
 
     def _dt_through(self, s) -> bool:
         return s in self.rhs and (isinstance(s, Z) or s not in self.varying
@@ -345,6 +379,9 @@ class Definitions:
             cache[s] = _number(rhs.xreplace({f: point.value(f, cache) for f in self.free(s)}))
         return _number(expr.xreplace({f: point.value(f, cache) for f in expr.free_symbols}))
 
-    def evaluation_order(self, roots: Iterable[sm.Symbol]) -> list[sm.Symbol]:
-        """Defined symbols needed to evaluate `roots`, dependencies first."""
-        return self._post_order([r for r in roots if r in self.rhs], {})
+    def evaluation_order(self, roots: Iterable[sm.Symbol], given=()) -> list[sm.Symbol]:
+        """Defined symbols needed to evaluate `roots`, dependencies first; symbols in
+        `given` (values known otherwise) are not expanded."""
+        given = set(given)
+        return self._post_order([r for r in roots if r in self.rhs], {},
+                                prune=given.__contains__ if given else None)

@@ -2,6 +2,8 @@
 (a mixin of Model).  The simulation itself lives in autolev.runtime.numerics."""
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+
 import sympy as sm
 
 from .vector import AutolevModelError
@@ -51,6 +53,58 @@ class IOMixin:
         self.encoded.extend(items)
 
     def code(self, kind: str, filename: str, args=None, sweep=None, options=()) -> None:
-        """CODE DYNAMICS|ALGEBRAIC|NONLINEAR|ODE(args) file: a program to run."""
-        self.code_commands.append((kind.lower(), filename, list(args or []), sweep,
-                                   tuple(options)))
+        """CODE DYNAMICS|ALGEBRAIC|NONLINEAR|ODE(args) file: a program to run, with the
+        INPUT, OUTPUT and ENCODE statements given so far (as Autolev generated it then)."""
+        kind = kind.lower()
+        if kind not in ("dynamics", "algebraic", "nonlinear", "ode"):
+            raise AutolevModelError(f"CODE {kind.upper()}: not a kind of program "
+                                    "(DYNAMICS, ALGEBRAIC, NONLINEAR or ODE)")
+        self.code_commands.append(CodeCommand(
+            kind, filename, list(args or []), sweep, tuple(options),
+            n_outputs=len(self.outputs), n_encoded=len(self.encoded),
+            inputs=dict(self.inputs), units=dict(self.unit_of)))
+
+    def run(self, out_dir=".", **options):
+        """Perform every CODE command with the INPUT values (as `python model.py`
+        does): writes Autolev's files into out_dir; returns the results."""
+        from .numerics.run import run_command
+        return [run_command(self, c, out_dir=out_dir, **options)
+                for c in self.code_commands]
+
+    def simulate(self, *, method: str = "kutta-merson", backend: str = "auto",
+                 infile=None, out_dir=None, specified=None, progress=None, **overrides):
+        """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
+        CODE command, else a plain simulation) with INPUT values, `overrides`
+        (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
+        ({name: f(t) or f(t, x)}).  Files are written only when out_dir is given.
+        Returns a Result (times, states and outputs as numpy arrays)."""
+        from .numerics.run import run_command
+        command = None
+        for c in self.code_commands:
+            if c.kind in ("dynamics", "ode"):
+                command = c
+                break
+        if command is None and self.code_commands:
+            command = self.code_commands[0]
+        if command is None:
+            command = CodeCommand("dynamics", f"{self.name}.c", [], None, (),
+                                  n_outputs=len(self.outputs), n_encoded=len(self.encoded),
+                                  inputs=dict(self.inputs), units=dict(self.unit_of))
+        return run_command(self, command, out_dir=out_dir, method=method, backend=backend,
+                           infile=infile, specified=specified, progress=progress,
+                           overrides=overrides)
+
+
+@dataclass
+class CodeCommand:
+    """One CODE statement and what was given before it."""
+
+    kind: str
+    filename: str
+    args: list
+    sweep: tuple | None
+    options: tuple
+    n_outputs: int = 0
+    n_encoded: int = 0
+    inputs: dict = field(default_factory=dict)
+    units: dict = field(default_factory=dict)

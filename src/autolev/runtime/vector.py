@@ -694,12 +694,32 @@ class Frame:
         other._alf_user[self] = -_vector(value)
 
     def ang_acc_in(self, other: "Frame") -> Vector:
-        """ALF_self_other>: as assigned, else DT(W_self_other>, other)."""
+        """ALF_self_other>, as Autolev forms it: assigned, or composed when ALF of self
+        relative to the next frame towards `other` was assigned (ALF_C_A> = ALF_B_A> +
+        ALF_C_B> + W_B_A> x W_C_B>, with ALF_B_A> formed the same way), so that an
+        assigned relative ALF counts exactly as given, even when it was written as a
+        derivative in the wrong frame; otherwise DT(W_self_other>, other).  (Checked
+        against Autolev's own bicycle programs, which match only with this rule.)"""
         if other is self:
             return Vector()
         if other in self._alf_user:
             return self._alf_user[other]
-        return self.ang_vel_in(other).dt(other)
+        path = self._path(other, lambda f: f._w_edges)
+        if path is None or path[1] not in self._alf_user:
+            return self.ang_vel_in(other).dt(other)
+        chain = list(reversed(path))             # other = F0, F1, ..., self
+        alf, w = Vector(), Vector()              # ALF and W of F_j in F0 (None: true ALF)
+        for parent, child in zip(chain, chain[1:]):
+            w_rel = child._w_edge(parent)
+            a_rel = child._alf_user.get(parent)
+            if a_rel is None:
+                alf = None                       # not assigned: DT(W, F0) when needed
+            else:
+                if alf is None:
+                    alf = w.dt(other)
+                alf = alf + a_rel + w.cross(w_rel)
+            w = w + w_rel
+        return alf
 
     def to_sympy(self):
         from .interop import to_sympy_frame

@@ -680,8 +680,11 @@ def units_statement(tr: Translator, st: ir.UnitsStatement) -> None:
             key = _integration_name(target.name) or target.name.upper()
             if key in _INTEGRATION or key == "T":
                 name = repr(key)
-            elif target.name.lower() in tr.scalars or target.name.lower() in tr.values:
+            elif target.name.lower() in tr.scalars:
                 name = tr.name(target.name, target.primes, target).code
+            elif target.name.lower() in tr.values:
+                # an assigned, undeclared name: its unit goes with the name
+                name = repr(target.name + "'" * target.primes)
             else:
                 name = repr(target.name)
             tr.emit(f"model.units({name}, {item.unit.text!r})")

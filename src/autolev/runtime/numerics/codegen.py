@@ -1,0 +1,248 @@
+"""Straight-line numeric code from a model's definitions.
+
+A `Program` is what one numeric function computes: given input vectors (time, state,
+parameters, ...), every definition the outputs need, once, in dependency order (the
+Z variables are already the common subexpressions), then the outputs.  It is printed
+as Python (always available) or as C (compiled with the system's compiler when there
+is one, cached on disk by a hash of the source, called through ctypes).  Both give
+the same numbers: the same operations in the same order, in double precision.
+"""
+from __future__ import annotations
+
+import ctypes
+import hashlib
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import sympy as sm
+
+from ..calculus import Definitions
+from ..errors import AutolevModelError
+from .printer import CodePrinter
+
+
+@dataclass
+class Program:
+    """inputs: {name: [symbols]} (each a vector argument); outputs: [expressions].
+
+    Every symbol an output needs must be an input, a `fixed` symbol (a number that
+    replaces a definition, e.g. an auxiliary speed set to zero), or defined in `defs`
+    (its definition is then evaluated here, after what it needs)."""
+
+    inputs: dict[str, list]
+    outputs: list
+    defs: Definitions
+    fixed: dict = field(default_factory=dict)
+    assignments: list = field(default_factory=list)   # (identifier, expression)
+    names: dict = field(default_factory=dict)         # symbol -> identifier
+
+    def build(self) -> "Program":
+        """Order the definitions the outputs need and name everything."""
+        for arg, syms in self.inputs.items():
+            for i, s in enumerate(syms):
+                self.names[s] = f"{arg}_{i}"
+        given = set(self.names)
+        self.outputs = [sm.sympify(o) for o in self.outputs]
+        roots = {s for e in self.outputs for s in e.free_symbols}
+        for n, (s, v) in enumerate(self.fixed.items()):
+            if s not in given:
+                self.names[s] = f"f{n}"
+                self.assignments.append((self.names[s], sm.Float(v)))
+        given |= set(self.fixed)
+        needed = self.defs.evaluation_order(roots, given)
+        for n, s in enumerate(needed):
+            self.names[s] = f"w{n}"
+            self.assignments.append((self.names[s], self.defs.rhs[s]))
+        missing = set()
+        for e in [a[1] for a in self.assignments] + self.outputs:
+            missing |= {f for f in e.free_symbols if f not in self.names}
+        if missing:
+            raise AutolevModelError("no value for " + ", ".join(sorted(map(str, missing))))
+        return self
+
+# -- Python ---------------------------------------------------------------------------
+def python_source(prog: Program, name: str = "compute") -> str:
+    args = ", ".join(prog.inputs)
+    lines = [f"def {name}({args}{', ' if args else ''}out):"]
+    for arg, syms in prog.inputs.items():
+        for i in range(len(syms)):
+            lines.append(f"    {arg}_{i} = {arg}[{i}]")
+    p = CodePrinter("python", prog.names)
+    for ident, expr in prog.assignments:
+        lines.append(f"    {ident} = {p(expr)}")
+    for k, e in enumerate(prog.outputs):
+        lines.append(f"    out[{k}] = {p(e)}")
+    lines.append("    return out")
+    return "\n".join(lines) + "\n"
+
+
+def _sign(x):
+    return (x > 0) - (x < 0)
+
+
+def _heaviside(x):
+    return 1.0 if x > 0 else (0.5 if x == 0 else 0.0)
+
+
+class _NumpyMath:
+    """`math` for the fallback evaluation: numpy's functions, which give inf and nan
+    where math raises (as the C code does)."""
+
+    def __getattr__(self, name):
+        if name in ("gamma", "erf"):
+            import scipy.special
+            return getattr(scipy.special, name)
+        return getattr(np, {"fabs": "abs", "atan2": "arctan2", "asin": "arcsin",
+                            "acos": "arccos", "atan": "arctan", "asinh": "arcsinh",
+                            "acosh": "arccosh", "atanh": "arctanh"}.get(name, name))
+
+
+_MATH_ERRORS = (ZeroDivisionError, ValueError, OverflowError, TypeError)
+
+
+def compile_python(prog: Program, name: str = "compute"):
+    """A Python function for the program: math-module speed, and where Python raises
+    (division by zero, a domain error, a complex power) the same code evaluated with
+    numpy scalars, which gives inf or nan like compiled C."""
+    source = python_source(prog, name)
+    code = compile(source, f"<autolev generated {name}>", "exec")
+    fast_ns = {"math": math, "_sign": _sign, "_heaviside": _heaviside}
+    exec(code, fast_ns)
+    safe_ns = {"math": _NumpyMath(), "_sign": np.sign, "_heaviside": _np_heaviside}
+    exec(code, safe_ns)
+    fast, safe = fast_ns[name], safe_ns[name]
+    n_in = len(prog.inputs)
+
+    def call(*arrays):
+        try:
+            return fast(*arrays)
+        except _MATH_ERRORS:
+            with np.errstate(all="ignore"):
+                args = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
+                return safe(*args, arrays[n_in])
+    return call, source
+
+
+def _np_heaviside(x):
+    return np.heaviside(x, 0.5)
+
+
+# -- C ---------------------------------------------------------------------------------
+CHUNK = 400     # statements per C function: gcc's time grows fast with function size
+
+
+def c_source(prog: Program, name: str = "compute") -> str:
+    """C for the program: inputs read from their arrays, intermediates kept in a work
+    array `w` (so that no function is huge: gcc -O2 takes minutes and gigabytes on
+    one function of ten thousand locals), the statements split into functions of
+    CHUNK statements called in order."""
+    where = {}
+    for arg, syms in prog.inputs.items():
+        for i, s in enumerate(syms):
+            where[s] = f"{arg}[{i}]"
+    index = {ident: k for k, (ident, _) in enumerate(prog.assignments)}
+    for s, ident in prog.names.items():
+        if ident in index:
+            where[s] = f"w[{index[ident]}]"
+    c = CodePrinter("c", where)
+
+    statements = [f"w[{k}] = {c(expr)};" for k, (_, expr) in enumerate(prog.assignments)]
+    statements += [f"out[{k}] = {c(e)};" for k, e in enumerate(prog.outputs)]
+    params = ", ".join(f"const double *{a}" for a in prog.inputs)
+    params = (params + ", " if params else "") + "double *w, double *out"
+    call_args = ", ".join(list(prog.inputs) + ["w", "out"])
+    lines = ["#include <math.h>", "#ifndef M_PI", "#define M_PI 3.14159265358979323846",
+             "#endif", "#ifndef M_E", "#define M_E 2.71828182845904523536", "#endif", ""]
+    parts = [statements[i:i + CHUNK] for i in range(0, len(statements), CHUNK)] or [[]]
+    for n, part in enumerate(parts):
+        lines.append(f"static void {name}_part{n}({params})")
+        lines.append("{")
+        for arg in prog.inputs:
+            lines.append(f"    (void){arg};")
+        lines.append("    (void)w; (void)out;")
+        lines += ["    " + st for st in part]
+        lines.append("}")
+        lines.append("")
+    lines.append(f"void {name}({params})")
+    lines.append("{")
+    lines += [f"    {name}_part{n}({call_args});" for n in range(len(parts))]
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
+def compiler() -> str | None:
+    """The C compiler to use ($CC, else cc or gcc), or None."""
+    if os.environ.get("AUTOLEV_NO_C"):
+        return None
+    for cand in (os.environ.get("CC"), "cc", "gcc"):
+        if cand and shutil.which(cand):
+            return shutil.which(cand)
+    return None
+
+
+def cache_dir() -> Path:
+    base = os.environ.get("AUTOLEV_CACHE") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME", os.path.expanduser("~/.cache")), "autolev", "build")
+    path = Path(base)
+    path.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+class CompileError(Exception):
+    pass
+
+
+def build_shared_library(source: str, flags: tuple = ("-O2",)) -> Path:
+    """Compile C source to a shared library (cached by the hash of source and flags)."""
+    cc = compiler()
+    if cc is None:
+        raise CompileError("no C compiler")
+    digest = hashlib.sha256((source + "\0" + " ".join(flags) + "\0" + cc).encode()).hexdigest()
+    lib = cache_dir() / f"al_{digest[:24]}{'.dll' if sys.platform == 'win32' else '.so'}"
+    if lib.exists():
+        return lib
+    with tempfile.TemporaryDirectory() as tmp:
+        src = Path(tmp) / "model.c"
+        src.write_text(source)
+        out = Path(tmp) / lib.name
+        cmd = [cc, *flags, "-shared", "-fPIC", "-o", str(out), str(src), "-lm"]
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        if r.returncode != 0:
+            raise CompileError(r.stderr.strip()[-2000:])
+        tmp_target = lib.with_suffix(lib.suffix + f".{os.getpid()}.tmp")
+        shutil.copy(out, tmp_target)
+        os.replace(tmp_target, lib)          # atomic: concurrent builds never see half
+    return lib
+
+
+def compile_c(prog: Program, name: str = "compute"):
+    """A Python callable f(*input_arrays, out) running the compiled C, and the source."""
+    source = c_source(prog, name)
+    lib = ctypes.CDLL(str(build_shared_library(source)))
+    fn = getattr(lib, name)
+    ptr = ctypes.POINTER(ctypes.c_double)
+    n_in = len(prog.inputs)
+    fn.argtypes = [ptr] * (n_in + 2)
+    fn.restype = None
+    work = np.zeros(max(1, len(prog.assignments)))
+    work_ptr = work.ctypes.data_as(ptr)
+    empty = np.zeros(1)
+
+    def call(*arrays):
+        keep = [np.ascontiguousarray(a, dtype=float) if len(a) else empty for a in arrays]
+        args = [a.ctypes.data_as(ptr) for a in keep[:n_in]]
+        fn(*args, work_ptr, keep[n_in].ctypes.data_as(ptr))
+        out = arrays[-1]
+        if out is not keep[n_in] and len(out):
+            out[:] = keep[n_in]
+        return out
+    call.lib = lib
+    call.work = work
+    return call, source

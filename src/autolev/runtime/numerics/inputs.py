@@ -1,0 +1,289 @@
+"""Input values of a run: INPUT statements, Autolev's defaults, `.in` files, overrides.
+
+Every value is kept twice: as the user gives it (in the quantity's unit, degrees for
+a `DEG` input) and internally (radians).  INPUT values may be expressions of other
+inputs and of definitions (`INPUT IA3 = (1/12)*MA*L^2`, `INPUT E4 = COS(Q1/2)`); they
+are evaluated with the other inputs' internal values.
+
+The `.in` file is Autolev's: six header lines, then one line per value with the
+description, the name and the unit in fixed columns and the value after the `|` in
+column 59 (read from column 60).  Constants come first, then the initial values of the
+states, then the integration parameters, each group alphabetical.  Legacy files are
+read by name (`Q1'` and `Q1p` both name Q1'), so a file from another revision of the
+model still works for the names it shares (the others are reported).
+"""
+from __future__ import annotations
+
+import math
+import os
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+
+import sympy as sm
+
+from .. import symbols as S
+from ..errors import AutolevModelError
+from . import units
+
+INTEGRATION = ("TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR")
+DEFAULTS = {"TINITIAL": 0.0, "TFINAL": 1.0, "INTEGSTP": 0.1, "PRINTINT": 1,
+            "ABSERR": 1.0e-8, "RELERR": 1.0e-7}
+DESCRIPTIONS = {"TINITIAL": "Initial Time", "TFINAL": "Final Time",
+                "INTEGSTP": "Integration Step", "PRINTINT": "Print-Integer",
+                "ABSERR": "Absolute Error", "RELERR": "Relative Error"}
+
+
+class InputFileError(AutolevModelError):
+    """A malformed `.in` file (carries file and line)."""
+
+
+@dataclass
+class Value:
+    """One input: its value as given (in `unit`) and where it came from."""
+
+    given: float
+    unit: str | None
+    source: str             # INPUT, default, file:line, override
+
+    @property
+    def internal(self) -> float:
+        return units.to_internal(self.given, self.unit)
+
+
+def key_of(sym_or_name):
+    return sym_or_name.upper() if isinstance(sym_or_name, str) else sym_or_name
+
+
+def display_name(key) -> str:
+    return key if isinstance(key, str) else key.name
+
+
+class Inputs:
+    """The values of one run, keyed by symbol (or integration parameter name)."""
+
+    def __init__(self, model, names: list, integration=INTEGRATION, given=None,
+                 unit_table=None):
+        self.model = model
+        self.given = model.inputs if given is None else given     # INPUT statements
+        self.unit_table = model.unit_of if unit_table is None else unit_table
+        self.integration = tuple(integration)
+        self.names = list(names) + list(self.integration)   # file order
+        self.values: dict = {}
+        self._evaluate_model_inputs()
+
+    # -- from the model ---------------------------------------------------------------
+    def unit_of(self, key) -> str | None:
+        given = self.given.get(key)
+        if given is not None and given[1]:
+            return given[1]
+        return self.unit_table.get(key if not isinstance(key, str) else key.upper())
+
+    def _evaluate_model_inputs(self) -> None:
+        cache: dict = {}
+        for key in list(self.given):
+            self._evaluate(key, cache, ())
+        for key, v in cache.items():
+            self.values[key] = Value(v, self.unit_of(key), "INPUT")
+        for name in self.integration:
+            if name not in self.values:
+                self.values[name] = Value(DEFAULTS[name], None, "default")
+
+    def _evaluate(self, key, cache: dict, stack: tuple) -> float:
+        """The value of an INPUT as given (its unit), evaluating expressions."""
+        if key in cache:
+            return cache[key]
+        if key in stack:
+            raise AutolevModelError("INPUT values refer to each other: "
+                                    + " -> ".join(display_name(k) for k in stack + (key,)))
+        expr, unit = self.given[key]
+        value = self._number(sm.sympify(expr), cache, stack + (key,))
+        cache[key] = value
+        return value
+
+    def _number(self, expr, cache, stack) -> float:
+        defs = self.model.defs
+        subs = {}
+        for f in expr.free_symbols:
+            subs[f] = self._symbol_value(f, cache, stack, defs)
+        v = complex(sm.N(expr.xreplace(subs)) if subs else sm.N(expr))
+        if abs(v.imag) > 1e-12 * max(1.0, abs(v.real)):
+            raise AutolevModelError(f"INPUT {display_name(stack[-1])} is not a real number "
+                                    f"({v})")
+        return v.real
+
+    def _symbol_value(self, f, cache, stack, defs) -> float:
+        if f in self.given:
+            given = self._evaluate(f, cache, stack)
+            return units.to_internal(given, self.unit_of(f))
+        if f in defs.rhs:
+            return self._number(defs.rhs[f], cache, stack)
+        raise AutolevModelError(f"INPUT {display_name(stack[-1])}: {f} has no value "
+                                "(give it an INPUT value first)")
+
+    # -- access ----------------------------------------------------------------------
+    def internal(self, key) -> float:
+        return self.values[key].internal
+
+    def vector(self, keys) -> list[float]:
+        return [self.internal(k) for k in keys]
+
+    def missing(self, keys) -> list:
+        return [k for k in keys if k not in self.values]
+
+    def fill_missing(self, keys, source: str = "default (no INPUT)") -> list:
+        """Give 0 to keys without a value; returns them."""
+        missing = self.missing(keys)
+        for k in missing:
+            self.values[k] = Value(0.0, self.unit_of(k), source)
+        return missing
+
+    def set(self, name: str, value, source: str = "override") -> None:
+        """NAME=VALUE from the command line or the API: value in the quantity's unit."""
+        key = self.lookup(name)
+        if key is None:
+            known = ", ".join(display_name(k) for k in self.names)
+            raise AutolevModelError(f"no input named {name!r} (inputs: {known})")
+        if isinstance(value, str):
+            value = _parse_number(value)
+            if value is None:
+                raise AutolevModelError(f"{name}: not a number: {value!r}")
+        value = float(value)
+        if key == "PRINTINT":
+            if value != int(value) or value < 1:
+                raise AutolevModelError("PRINTINT must be a positive integer")
+        self.values[key] = Value(value, self.unit_of(key), source)
+
+    def lookup(self, name: str):
+        """The key called `name` (any case; Q1p and Q1' are the same)."""
+        wanted = name.strip()
+        up = wanted.upper()
+        if up == "INTEGSTEP":
+            up = "INTEGSTP"
+        if up in self.integration:
+            return up
+        cands = {display_name(k).upper(): k for k in self.names}
+        if up in cands:
+            return cands[up]
+        for k in range(1, len(up) - len(up.rstrip("P")) + 1):
+            primed = up[:-k] + "'" * k          # Q1P -> Q1', Q1PP -> Q1''
+            if primed in cands:
+                return cands[primed]
+        return None
+
+    # -- .in files ---------------------------------------------------------------------
+    def read_file(self, path) -> list[str]:
+        """Values from an Autolev `.in` file; returns warnings (unknown names)."""
+        path = Path(path)
+        try:
+            text = path.read_bytes().decode("utf-8")
+        except UnicodeDecodeError:
+            text = path.read_bytes().decode("latin-1")
+        except OSError as exc:
+            raise InputFileError(f"{path}: cannot read ({exc.strerror})") from None
+        notes = []
+        entries = []                       # (lineno, name, value, file unit)
+        for lineno, line in enumerate(text.splitlines(), 1):
+            line = line.rstrip("\r\n")
+            if len(line) < 60 or line[58] != "|":
+                continue
+            name = line[21:42].strip()
+            raw = line[59:].strip()
+            if not name or name.lower() == "quantity" or set(line[:58]) <= {"-", " "}:
+                continue
+            value = _parse_number(raw)
+            if value is None:
+                raise InputFileError(f"{path}:{lineno}:60: expected a number for {name}, "
+                                     f"found {raw!r}")
+            entries.append((lineno, name, value, line[42:58].strip()))
+        if not entries:
+            raise InputFileError(f"{path}: no values found (expected Autolev's layout: "
+                                 "a '|' in column 59 and the value from column 60)")
+        keys = [self.lookup(name) for _, name, _, _ in entries]
+        if None in keys and len(entries) == len(self.names):
+            # Autolev's programs read the values in order, whatever the labels say
+            keys = list(self.names)
+            notes.append(f"{path}: its names do not all match this model's; its "
+                         f"{len(entries)} values are taken in Autolev's order (constants, "
+                         "initial values, integration parameters), as Autolev's programs "
+                         "read them")
+        for key, (lineno, name, value, file_unit) in zip(keys, entries):
+            if key is None:
+                notes.append(f"{path}:{lineno}: {name} is not an input of this model; "
+                             "ignored")
+                continue
+            if key == "PRINTINT" and (value != int(value) or value < 1):
+                raise InputFileError(f"{path}:{lineno}:60: PRINTINT must be a positive "
+                                     "integer")
+            unit = self.unit_of(key)
+            if units.is_degrees(file_unit) != units.is_degrees(unit) and file_unit.upper() \
+                    not in ("", "UNITS"):
+                notes.append(f"{path}:{lineno}: {name} is given in {file_unit} but the model "
+                             f"uses {unit or 'no unit'}; read as {unit or 'a plain number'}")
+            self.values[key] = Value(value, unit, f"{path.name}:{lineno}")
+        return notes
+
+    def write_file(self, path, title: str, kinds: dict) -> None:
+        """Autolev's `.in` layout; kinds: key -> description ("Constant", ...)."""
+        lines = [f"File: {title}",
+                 "-" * 77,
+                 "Note: Use spaces not tabs while editing this file.",
+                 "-" * 58 + "+" + "-" * 18,
+                 f"{'Description':<21}{'Quantity':<21}{'Units':<16}| Value",
+                 "-" * 58 + "|" + "-" * 18]
+        previous = None
+        for key in self.names:
+            kind = DESCRIPTIONS[key] if key in INTEGRATION else kinds[key]
+            group = "integration" if key in INTEGRATION else kind
+            if previous is not None and group != previous:
+                lines.append("")
+            previous = group
+            v = self.values[key]
+            if key in INTEGRATION:
+                unit = {"PRINTINT": "Positive Integer", "ABSERR": "",
+                        "RELERR": ""}.get(key, (self.unit_of("T") or "UNITS").upper())
+                text = f" {int(v.given)}" if key == "PRINTINT" else _format(v.given)
+            else:
+                unit = (v.unit or "UNITS").upper()
+                text = _format(v.given)
+            name = display_name(key)
+            lines.append(f"{kind:<21}{name:<21}{unit[:16]:<16}|{text}")
+        lines.append("-" * 58 + "+" + "-" * 18)
+        if "INTEGSTP" in self.integration:
+            lines += ["", "  INTEGSTP*PRINTINT is the time-interval for writing of output.",
+                      "  ABSERR and RELERR are the absolute and relative error tolerances of "
+                      "the integrator."]
+        _atomic_write(path, "\n".join(lines) + "\n")
+
+
+def _parse_number(text: str):
+    t = text.strip().replace("D", "E").replace("d", "e")
+    try:
+        v = float(t)
+    except ValueError:
+        return None
+    return v if math.isfinite(v) else None
+
+
+def _format(v: float) -> str:
+    if v == int(v) and abs(v) < 1e15:
+        s = f"{v:.1f}"
+    else:
+        s = f"{v:.15G}"
+        if "E" in s:
+            mant, exp = s.split("E")
+            s = f"{mant}E{int(exp):+03d}"
+    return s if s.startswith("-") else " " + s
+
+
+def _atomic_write(path, text: str) -> None:
+    path = Path(path)
+    tmp = path.with_name(path.name + f".{os.getpid()}.tmp")
+    tmp.write_text(text)
+    os.replace(tmp, path)
+
+
+def warn_zero(keys, what: str) -> None:
+    if keys:
+        names = ", ".join(display_name(k) for k in keys)
+        warnings.warn(f"no INPUT value for {what} {names}: using 0", stacklevel=3)

@@ -1,0 +1,253 @@
+"""Integration on Autolev's print schedule.
+
+The schedule is that of Autolev's programs: time advances by INTEGSTP per step (T is
+accumulated by repeated addition, as there); a row is printed at TINITIAL, after every
+PRINTINT steps, and at the first step where T + 0.01*INTEGSTP reaches TFINAL, so the
+last row may lie past TFINAL when TFINAL is not on the grid.
+
+Integrators:
+
+* ``kutta-merson`` -- the adaptive Kutta-Merson of Autolev's C and Fortran programs,
+  step for step: each call advances exactly INTEGSTP; the error estimate of a step is
+  |y1 - y2|/5 (third- against fourth-order); a step fails when, for some state, it is
+  at least both RELERR*|y1| and ABSERR, and is then halved; a step is doubled (within
+  INTEGSTP) when every error is 64 times smaller; the net number of halvings is capped
+  at 20 over the run, after which the integration fails, as Autolev's did.
+* scipy's ``RK45``, ``DOP853``, ``Radau``, ``BDF``, ``LSODA``, ``RK23`` with
+  ``max_step=INTEGSTP``, ``rtol=RELERR``, ``atol=ABSERR``; rows come from each
+  method's dense output.
+"""
+from __future__ import annotations
+
+import time as _time
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.integrate
+
+SCIPY_METHODS = {"rk45": "RK45", "dop853": "DOP853", "radau": "Radau", "bdf": "BDF",
+                 "lsoda": "LSODA", "rk23": "RK23"}
+METHODS = ("kutta-merson",) + tuple(SCIPY_METHODS)
+
+
+class IntegrationFailure(Exception):
+    """The integration stopped at time t with state y."""
+
+    def __init__(self, message: str, t: float, y: np.ndarray):
+        super().__init__(message)
+        self.t = t
+        self.y = np.array(y, dtype=float)
+
+
+@dataclass
+class Schedule:
+    tinitial: float
+    tfinal: float
+    integstp: float
+    printint: int
+
+    def check(self) -> None:
+        h, span = self.integstp, self.tfinal - self.tinitial
+        if not np.isfinite(h) or h == 0:
+            raise ValueError("INTEGSTP must be a nonzero number")
+        if span != 0 and (span > 0) != (h > 0):
+            raise ValueError(f"INTEGSTP ({h:g}) must have the sign of TFINAL - TINITIAL "
+                             f"({span:g})")
+        if self.printint < 1 or self.printint != int(self.printint):
+            raise ValueError("PRINTINT must be a positive integer")
+
+    def steps(self):
+        """(T after the step, print?) for every INTEGSTP step, as Autolev's loop."""
+        t, h = self.tinitial, self.integstp
+        counter = self.printint
+        while not self._done(t):
+            t = t + h
+            counter -= 1
+            last = self._done(t)
+            if counter <= 0 or last:
+                counter = self.printint
+                yield t, True
+            else:
+                yield t, False
+
+    def _done(self, t: float) -> bool:
+        h = self.integstp
+        if self.tfinal >= self.tinitial and t + 0.01 * h >= self.tfinal:
+            return True
+        if self.tfinal <= self.tinitial and t + 0.01 * h <= self.tfinal:
+            return True
+        return False
+
+    def print_times(self) -> list[float]:
+        return [self.tinitial] + [t for t, p in self.steps() if p]
+
+
+class KuttaMerson:
+    """Autolev's Kutta-Merson integrator (the state carries over between calls)."""
+
+    def __init__(self, f, n: int, abserr: float, relerr: float):
+        self.f = f
+        self.abserr = abserr
+        self.relerr = relerr
+        self.hc = 0.0
+        self.numcuts = 20
+        self.evaluations = 0
+        self.steps = 0
+
+    def advance(self, y: np.ndarray, t: float, integstp: float) -> tuple[np.ndarray, float]:
+        """Advance y from t by exactly integstp (several adaptive steps)."""
+        f = self.f
+        if integstp == 0:
+            raise IntegrationFailure("INTEGSTP is zero", t, y)
+        if self.hc * integstp < 0:
+            self.hc = -self.hc
+        if self.hc == 0:
+            self.hc = integstp
+        h = self.hc
+        tt = t + h
+        tfinal = t + integstp
+        abserr, relerr = self.abserr, self.relerr
+        f0 = f(tt - h, y)
+        self.evaluations += 1
+        while True:
+            if tt + h == tt:
+                raise IntegrationFailure(
+                    f"the step size {h:.14E} is too small relative to the time {tt:.14E}; "
+                    "integration halted because of numerical round-off", tt, y)
+            h2, h3, h6, h8 = h * 0.5, h / 3.0, h / 6.0, h * 0.125
+            y1 = y + h3 * f0
+            f1 = f(tt - 2.0 * h3, y1)
+            y1 = y + h6 * (f0 + f1)
+            f1 = f(tt - 2.0 * h3, y1)
+            y1 = y + h8 * (f0 + 3.0 * f1)
+            f2 = f(tt - h2, y1)
+            y1 = y + h2 * (f0 - 3.0 * f1 + 4.0 * f2)
+            f1 = f(tt, y1)
+            y2 = y + h6 * (f0 + 4.0 * f2 + f1)
+            self.evaluations += 4
+            error = np.abs(y1 - y2) * 0.2
+            test = np.abs(y1) * relerr
+            bad = (error >= test) & (error >= abserr)
+            if bad.any():
+                self.hc = h = h2
+                tt = tt - h2
+                self.numcuts -= 1
+                if self.numcuts >= 0:
+                    continue
+                raise IntegrationFailure(
+                    f"the step size has been halved too many times at T = {tt - h:.4E}",
+                    tt - h, y)
+            if not np.all(np.isfinite(y2)):
+                raise IntegrationFailure(f"the state is not finite at T = {tt:.6g}", tt - h, y)
+            self.steps += 1
+            double = not np.any((64.0 * error > test) & (64.0 * error > abserr))
+            y = y2
+            if double and abs(h + h) <= abs(integstp) and abs(tt + h + h) <= abs(tfinal):
+                self.hc = h = h + h
+                self.numcuts += 1
+            if tt == tfinal:
+                return y, tfinal
+            tt = tt + h
+            if (h > 0 and tt > tfinal - 0.1 * h) or (h < 0 and tt < tfinal - 0.1 * h):
+                h = tfinal - (tt - h)
+                tt = tfinal
+            f0 = f1
+
+
+class Progress:
+    """A progress line on stderr for runs longer than a second."""
+
+    def __init__(self, stream, t0: float, t1: float, enabled: bool):
+        self.stream = stream
+        self.t0, self.t1 = t0, t1
+        self.enabled = enabled and stream is not None
+        self.start = _time.monotonic()
+        self.last = self.start
+        self.shown = False
+        self.tty = bool(getattr(stream, "isatty", lambda: False)())
+
+    def update(self, t: float) -> None:
+        if not self.enabled:
+            return
+        now = _time.monotonic()
+        if now - self.start < 1.0 or now - self.last < (0.2 if self.tty else 5.0):
+            return
+        self.last = now
+        span = self.t1 - self.t0
+        frac = (t - self.t0) / span if span else 1.0
+        text = f"  T = {t:.6g} of {self.t1:.6g} ({100 * frac:.0f}%), {now - self.start:.1f} s"
+        if self.tty:
+            self.stream.write("\r" + text + "   ")
+        else:
+            self.stream.write(text + "\n")
+        self.stream.flush()
+        self.shown = True
+
+    def done(self) -> None:
+        if self.shown and self.tty:
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
+              relerr: float, on_row, progress: Progress | None = None) -> dict:
+    """Integrate y' = f(t, y) on the schedule, calling on_row(t, y) at print times.
+    Raises IntegrationFailure (after the rows up to then were given)."""
+    schedule.check()
+    y = np.array(y0, dtype=float)
+    t = schedule.tinitial
+    stats = {"method": method, "evaluations": 0, "steps": 0}
+    if not np.all(np.isfinite(f(t, y))):
+        raise IntegrationFailure(f"the derivatives are not finite at T = {t:.6g}", t, y)
+    on_row(t, y)
+    if method == "kutta-merson":
+        km = KuttaMerson(f, len(y), abserr, relerr)
+        for t_next, printed in schedule.steps():
+            try:
+                y, _ = km.advance(y, t, schedule.integstp)
+            finally:
+                stats["evaluations"] = km.evaluations
+                stats["steps"] = km.steps
+            t = t_next                     # Autolev's accumulated T
+            if printed:
+                on_row(t, y)
+            if progress is not None:
+                progress.update(t)
+        return stats
+    name = SCIPY_METHODS.get(method.lower())
+    if name is None:
+        raise ValueError(f"unknown integrator {method!r} (one of {', '.join(METHODS)})")
+    times = [tp for tp, printed in schedule.steps() if printed]
+    if not times:
+        return stats
+    t_end = times[-1]
+    solver = scipy.integrate._ivp.ivp.METHODS[name](
+        f, t, y, t_end, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
+    k = 0
+    while k < len(times):
+        message = solver.step()
+        stats["steps"] += 1
+        stats["evaluations"] = solver.nfev
+        if solver.status == "failed":
+            raise IntegrationFailure(f"{name} failed at T = {solver.t:.6g}: {message}",
+                                     solver.t, solver.y)
+        if not np.all(np.isfinite(solver.y)):
+            raise IntegrationFailure(f"the state is not finite at T = {solver.t:.6g}",
+                                     solver.t_old, solver.dense_output()(solver.t_old))
+        interp = None
+        direction = 1 if t_end >= schedule.tinitial else -1
+        while k < len(times) and (times[k] - solver.t) * direction <= 0:
+            if times[k] == solver.t:
+                yk = solver.y.copy()
+            else:
+                interp = interp or solver.dense_output()
+                yk = interp(times[k])
+            on_row(times[k], yk)
+            k += 1
+        if progress is not None:
+            progress.update(solver.t)
+        if solver.status == "finished" and k < len(times):
+            for tk in times[k:]:             # t_end reached exactly: the rest coincide
+                on_row(tk, solver.y.copy())
+            break
+    return stats

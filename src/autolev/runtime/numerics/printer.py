@@ -1,0 +1,211 @@
+"""One printer for the generated C and Python: fast, and the same operations in the same
+order in both languages (so both back ends give the same numbers, bit for bit).
+
+sympy's code printers sort the terms of every sum and dispatch per node through
+several layers; on a gait model's thousands of long expressions that is minutes.  This
+printer walks each expression once, in sympy's argument order, and prints numbers as
+the shortest decimal that round-trips (exactly the double the other language reads).
+"""
+from __future__ import annotations
+
+import sympy as sm
+from sympy.core.numbers import NumberSymbol
+
+from ..errors import AutolevModelError
+
+_C_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
+            "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
+            "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "exp": "exp",
+            "log": "log", "floor": "floor", "ceiling": "ceil", "Abs": "fabs",
+            "atan2": "atan2", "erf": "erf", "gamma": "tgamma"}
+_PY_FUNCS = {"sin": "math.sin", "cos": "math.cos", "tan": "math.tan", "asin": "math.asin",
+             "acos": "math.acos", "atan": "math.atan", "sinh": "math.sinh",
+             "cosh": "math.cosh", "tanh": "math.tanh", "asinh": "math.asinh",
+             "acosh": "math.acosh", "atanh": "math.atanh", "exp": "math.exp",
+             "log": "math.log", "floor": "math.floor", "ceiling": "math.ceil",
+             "Abs": "math.fabs", "atan2": "math.atan2", "erf": "math.erf",
+             "gamma": "math.gamma"}
+
+# precedence: higher binds tighter
+_ADD, _MUL, _UNARY, _POW, _ATOM = 1, 2, 3, 4, 5
+
+
+class CodePrinter:
+    """Expressions as C or Python source; `names` maps symbols to their code."""
+
+    def __init__(self, language: str, names: dict):
+        if language not in ("c", "python"):
+            raise ValueError(language)
+        self.c = language == "c"
+        self.names = names
+        self.funcs = _C_FUNCS if self.c else _PY_FUNCS
+        self._memo: dict = {}
+
+    def __call__(self, expr) -> str:
+        return self._p(sm.sympify(expr))[0]
+
+    # each method returns (text, precedence); compound subexpressions are printed once
+    def _p(self, e):
+        if e.is_Atom:
+            return self._atom(e)
+        hit = self._memo.get(e)
+        if hit is None:
+            hit = self._memo[e] = self._compound(e)
+        return hit
+
+    def _atom(self, e):
+        if e.is_Symbol:
+            try:
+                return self.names[e], _ATOM
+            except KeyError:
+                raise AutolevModelError(f"no value for {e}") from None
+        if e.is_Number:
+            return self._number(e)
+        if isinstance(e, NumberSymbol):
+            return self._constant(e)
+        if e is sm.true or e is sm.false:
+            return ("1" if e is sm.true else "0") if self.c else str(bool(e)), _ATOM
+        raise AutolevModelError(f"cannot generate numeric code for {type(e).__name__}: {e}")
+
+    def _compound(self, e):
+        if e.is_Add:
+            return self._add(e)
+        if e.is_Mul:
+            return self._mul(e)
+        if e.is_Pow:
+            return self._pow(e)
+        if e.is_Function:
+            return self._function(e)
+        if isinstance(e, sm.Piecewise):
+            return self._piecewise(e)
+        if e.is_Relational:
+            return self._relational(e)
+        if isinstance(e, (sm.And, sm.Or)):
+            op = (" && " if self.c else " and ") if isinstance(e, sm.And) else \
+                (" || " if self.c else " or ")
+            return "(" + op.join(self._p(a)[0] for a in e.args) + ")", _ATOM
+        if isinstance(e, sm.Not):
+            return ("!" if self.c else "not ") + self._wrap(e.args[0], _ATOM), _UNARY
+        raise AutolevModelError(f"cannot generate numeric code for {type(e).__name__}: {e}")
+
+    def _wrap(self, e, prec: int) -> str:
+        text, p = self._p(e)
+        return f"({text})" if p < prec else text
+
+    def _number(self, e):
+        if e is sm.nan or e is sm.zoo or e in (sm.oo, -sm.oo):
+            return ("NAN" if self.c else "math.nan") if e in (sm.nan, sm.zoo) else \
+                (("INFINITY" if self.c else "math.inf") if e is sm.oo
+                 else ("(-INFINITY)" if self.c else "(-math.inf)")), _ATOM
+        v = float(e)
+        text = repr(v)
+        if "e" not in text and "." not in text and "inf" not in text and "nan" not in text:
+            text += ".0"
+        return text, (_UNARY if v < 0 else _ATOM)
+
+    def _constant(self, e):
+        if e is sm.pi:
+            return ("M_PI" if self.c else "math.pi"), _ATOM
+        if e is sm.E:
+            return ("M_E" if self.c else "math.e"), _ATOM
+        return self._number(sm.Float(e))
+
+    def _add(self, e):
+        parts = []
+        for k, term in enumerate(e.args):
+            coeff, rest = term.as_coeff_Mul()
+            if coeff.is_Number and coeff < 0 and k > 0:
+                neg = -term
+                parts.append(" - " + self._wrap(neg, _MUL))
+            else:
+                text = self._wrap(term, _ADD)
+                parts.append((" + " if k else "") + text)
+        return "".join(parts), _ADD
+
+    def _mul(self, e):
+        coeff, rest = e.as_coeff_Mul()
+        if coeff == -1:
+            return "-" + self._wrap(rest, _MUL + 1 if rest.is_Mul else _UNARY), _UNARY
+        num, den = [], []
+        for f in e.args:
+            if f.is_Pow and f.exp.is_Number and f.exp.is_negative:
+                if f.exp == -1:
+                    den.append(f.base)
+                else:
+                    den.append(sm.Pow(f.base, -f.exp, evaluate=False))
+            elif f.is_Rational and not f.is_Integer and f.p == 1:
+                den.append(sm.Integer(f.q))
+            else:
+                num.append(f)
+        if not den:
+            return "*".join(self._wrap(f, _MUL) for f in num), _MUL
+        top = "*".join(self._wrap(f, _MUL) for f in num) if num else "1.0"
+        if len(den) == 1:
+            bottom = self._wrap(den[0], _POW)
+        else:
+            bottom = "(" + "*".join(self._wrap(f, _MUL) for f in den) + ")"
+        return f"{top}/{bottom}", _MUL
+
+    def _pow(self, e):
+        base, exp = e.base, e.exp
+        if exp == sm.Rational(1, 2):
+            return f"{'sqrt' if self.c else 'math.sqrt'}({self._p(base)[0]})", _ATOM
+        if exp == -1:
+            return f"1.0/{self._wrap(base, _POW)}", _MUL
+        if exp == sm.Rational(-1, 2):
+            return f"1.0/{'sqrt' if self.c else 'math.sqrt'}({self._p(base)[0]})", _MUL
+        if self.c:
+            return f"pow({self._p(base)[0]}, {self._p(exp)[0]})", _ATOM
+        if exp.is_Integer:
+            # Python's ** with an integer exponent: like C's pow for these values
+            return f"{self._wrap(base, _ATOM)}**{int(exp)}", _POW
+        return f"{self._wrap(base, _ATOM)}**{self._wrap(exp, _ATOM)}", _POW
+
+    def _function(self, e):
+        name = type(e).__name__
+        args = [self._p(a)[0] for a in e.args]
+        if name in self.funcs:
+            if name == "log" and len(args) == 2:
+                log = self.funcs["log"]
+                return f"({log}({args[0]})/{log}({args[1]}))", _ATOM
+            return f"{self.funcs[name]}({', '.join(args)})", _ATOM
+        if name == "sign":
+            a = args[0]
+            return (f"((double)((({a}) > 0) - (({a}) < 0)))" if self.c
+                    else f"_sign({a})"), _ATOM
+        if name == "Heaviside":
+            a = args[0]
+            return (f"(({a}) > 0 ? 1.0 : (({a}) < 0 ? 0.0 : 0.5))" if self.c
+                    else f"_heaviside({a})"), _ATOM
+        if name in ("Max", "Min"):
+            if self.c:
+                fn = "fmax" if name == "Max" else "fmin"
+                text = args[0]
+                for a in args[1:]:
+                    text = f"{fn}({text}, {a})"
+                return text, _ATOM
+            return f"{name.lower()}({', '.join(args)})", _ATOM
+        if name == "factorial":
+            return (f"tgamma({args[0]} + 1.0)" if self.c
+                    else f"math.gamma({args[0]} + 1.0)"), _ATOM
+        if name in ("sec", "csc", "cot"):
+            inner = {"sec": "cos", "csc": "sin", "cot": "tan"}[name]
+            return f"(1.0/{self.funcs[inner]}({args[0]}))", _ATOM
+        raise AutolevModelError(f"cannot generate numeric code for the function {name}")
+
+    def _piecewise(self, e):
+        pieces = list(e.args)
+        text = "NAN" if self.c else "math.nan"
+        for value, cond in reversed(pieces):
+            v = self._p(value)[0]
+            if cond is sm.true:
+                text = v
+                continue
+            c = self._p(cond)[0]
+            text = f"(({c}) ? ({v}) : ({text}))" if self.c else \
+                f"(({v}) if ({c}) else ({text}))"
+        return text, _ATOM
+
+    def _relational(self, e):
+        op = {"<": "<", "<=": "<=", ">": ">", ">=": ">=", "==": "==", "!=": "!="}[e.rel_op]
+        return f"({self._p(e.lhs)[0]} {op} {self._p(e.rhs)[0]})", _ATOM

@@ -1,0 +1,470 @@
+"""Running a CODE command: DYNAMICS, ODE, ALGEBRAIC (with its input sweep), NONLINEAR.
+
+`run_command` is what `autolev run`, `python model.py` and `Model.simulate` do: build
+the numeric system, take the inputs (INPUT values, then an `.in` file, then
+overrides), run, and write Autolev's files (`NAME.in`, `NAME.1..k`, `NAME.dir`, and
+`NAME.encode` when there are ENCODE quantities) into the output folder.
+"""
+from __future__ import annotations
+
+import sys
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import scipy.linalg
+import sympy as sm
+
+from .. import symbols as S
+from ..errors import AutolevModelError
+from ..vector import Vector
+from . import units
+from .files import OutputFiles, safe_stem, write_dir, write_encoded
+from .inputs import INTEGRATION, Inputs, display_name
+from .integrate import IntegrationFailure, Progress, Schedule, integrate
+from .system import Column, NumericSystem, SingularMassMatrix
+
+
+@dataclass
+class OutputTable:
+    """The rows of one output file (values in the file's units)."""
+
+    filename: str
+    labels: list
+    units: list
+    data: np.ndarray
+
+    def __getitem__(self, label: str) -> np.ndarray:
+        for j, name in enumerate(self.labels):
+            if name.upper() == label.upper():
+                return self.data[:, j]
+        raise KeyError(label)
+
+
+@dataclass
+class Result:
+    """What a run produced.
+
+    t: the print times (DYNAMICS, ODE), or the swept input's values (ALGEBRAIC with a
+    sweep, in its unit); states: one row per print time, internal units (radians);
+    outputs: one OutputTable per OUTPUT statement, in the units the OUTPUT asked for;
+    encoded: the ENCODE quantities at the last row; failure: Autolev's message when
+    the run stopped early (the rows before it are kept)."""
+
+    kind: str
+    name: str
+    t: np.ndarray
+    states: np.ndarray
+    state_names: list
+    outputs: list
+    encoded: dict
+    inputs: dict
+    solution: dict = field(default_factory=dict)
+    files: list = field(default_factory=list)
+    failure: str | None = None
+    failure_time: float | None = None
+    stats: dict = field(default_factory=dict)
+    system: object = field(default=None, repr=False)   # the NumericSystem (rhs, outputs)
+
+    @property
+    def ok(self) -> bool:
+        return self.failure is None
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        """A state's column (by name, any case), else the first output column so
+        labelled, else an ALGEBRAIC/NONLINEAR unknown."""
+        for j, s in enumerate(self.state_names):
+            if s.upper() == name.upper():
+                return self.states[:, j]
+        for table in self.outputs:
+            try:
+                return table[name]
+            except KeyError:
+                pass
+        for k, v in self.solution.items():
+            if k.upper() == name.upper():
+                return v
+        raise KeyError(name)
+
+    def __repr__(self) -> str:
+        status = "ok" if self.ok else f"failed: {self.failure}"
+        return (f"<autolev Result {self.kind} {self.name}: {len(self.t)} rows, "
+                f"{len(self.outputs)} output files, {status}>")
+
+
+# -- building -------------------------------------------------------------------------------
+def _columns(model, command) -> list[list[Column]]:
+    files = []
+    for cols in model.outputs[:command.n_outputs]:
+        out = []
+        for value, label, unit in cols:
+            if not unit:          # UNITS x = unit given before the CODE statement
+                unit = command.units.get(value) if isinstance(value, sm.Symbol) else None
+                unit = unit or command.units.get(label.upper())
+            if isinstance(value, Vector):
+                raise AutolevModelError(f"OUTPUT {label}: a vector cannot be written to a "
+                                        "file; output its measure numbers (DOT(...))")
+            if isinstance(value, (sm.MatrixBase, list, tuple)):
+                mat = sm.Matrix(value)
+                for i in range(mat.rows):
+                    for j in range(mat.cols):
+                        idx = (f"[{i + 1}]" if mat.cols == 1 else f"[{j + 1}]"
+                               if mat.rows == 1 else f"[{i + 1},{j + 1}]")
+                        out.append(Column(mat[i, j], f"{label}{idx}", unit))
+                continue
+            out.append(Column(sm.sympify(value), label, unit))
+        files.append(out)
+    return files
+
+
+def _encoded(model, command) -> list:
+    out = []
+    for name, value in model.encoded[:command.n_encoded]:
+        if isinstance(value, Vector):
+            raise AutolevModelError(f"ENCODE {name}: a vector; ENCODE its measure numbers")
+        if isinstance(value, (list, tuple)):
+            value = sm.Matrix(value)
+        out.append((name, value if isinstance(value, sm.MatrixBase) else sm.sympify(value)))
+    return out
+
+
+def _unknowns(args, what: str) -> tuple[list, list]:
+    """(equations, unknowns) of CODE ALGEBRAIC/NONLINEAR/ODE(EQ, x, y, ...)."""
+    if not args:
+        return [], []
+    eq, rest = args[0], args[1:]
+    if isinstance(eq, sm.MatrixBase):
+        equations = list(eq)
+    elif isinstance(eq, (list, tuple)):
+        equations = [e for item in eq for e in (item if isinstance(item, (list, tuple,
+                                                                           sm.MatrixBase))
+                                                   else [item])]
+    else:
+        equations = [eq]
+    unknowns = []
+    for a in rest:
+        items = list(a) if isinstance(a, (list, tuple, sm.MatrixBase)) else [a]
+        for u in items:
+            if not isinstance(u, sm.Symbol):
+                raise AutolevModelError(f"CODE {what}: the unknowns must be names, not {u}")
+            unknowns.append(u)
+    if len(equations) != len(unknowns):
+        raise AutolevModelError(f"CODE {what}: {len(equations)} equations for "
+                                f"{len(unknowns)} unknowns")
+    return [sm.sympify(e) for e in equations], unknowns
+
+
+# -- running --------------------------------------------------------------------------------
+def run_command(model, command, out_dir=None, method: str = "kutta-merson",
+                backend: str = "auto", infile=None, specified=None, progress=None,
+                overrides=None) -> Result:
+    """Run one CODE command; files go to out_dir (None: no files)."""
+    kind = command.kind
+    stem = safe_stem(command.filename)
+    files = _columns(model, command)
+    encoded = _encoded(model, command)
+    equations, unknowns = _unknowns(command.args, kind.upper())
+    extra = None
+    implicit = None
+    integrate_states = kind in ("dynamics", "ode")
+    if kind == "ode" and equations:
+        implicit = (equations, unknowns)
+    elif kind == "algebraic" and equations:
+        defs = model.defs
+        zero = {u: 0 for u in unknowns}
+        extra = {"linear": [defs.diff(e, u) for e in equations for u in unknowns]
+                 + [defs.substitute(e, zero) for e in equations]}
+    elif kind == "nonlinear":
+        if not equations:
+            raise AutolevModelError("CODE NONLINEAR needs equations and unknowns: "
+                                    "CODE NONLINEAR(EQ, x, y) file")
+        defs = model.defs
+        extra = {"residual": list(equations),
+                 "jacobian": [defs.diff(e, u) for e in equations for u in unknowns]}
+    system = NumericSystem(model, files, encoded, backend=backend,
+                           integrate=integrate_states, implicit=implicit,
+                           solved=unknowns if kind in ("algebraic", "nonlinear") else (),
+                           extra=extra)
+    if specified:
+        system.set_specified({_find_symbol(model, k): v for k, v in specified.items()})
+    given_fns = {i for i, _ in system._spec_fns}
+    unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
+    if unassigned:
+        warnings.warn("specified quantities without a definition or a function, set to 0: "
+                      + ", ".join(map(str, unassigned)), stacklevel=2)
+
+    # inputs: constants, initial values (or guesses), integration parameters
+    kinds = {p: "Constant" for p in system.params}
+    names = list(system.params)
+    if integrate_states:
+        names += system.states
+        kinds.update({x: "Initial Value" for x in system.states})
+        integration = INTEGRATION
+    elif kind == "nonlinear":
+        names += unknowns
+        kinds.update({u: "Initial Guess" for u in unknowns})
+        integration = ("ABSERR", "RELERR")
+    else:
+        integration = ()
+    inputs = Inputs(model, names, integration, given=command.inputs,
+                    unit_table=command.units)
+    notes = []
+    own_in = Path(out_dir) / f"{stem}.in" if out_dir is not None else None
+    if infile is not None:
+        notes += inputs.read_file(infile)
+    for name, value in (overrides or {}).items():
+        inputs.set(name, value)
+    for note in notes:
+        warnings.warn(note, stacklevel=2)
+    sweep = _sweep(model, command, inputs)
+    missing = inputs.fill_missing(system.params)
+    if missing:
+        warnings.warn("no INPUT value for " + ", ".join(display_name(k) for k in missing)
+                      + ": using 0", stacklevel=2)
+    inputs.fill_missing(names)
+    _degree_rates_note(inputs, names)
+
+    folder = None
+    in_written = None
+    if out_dir is not None:
+        folder = Path(out_dir)
+        folder.mkdir(parents=True, exist_ok=True)
+        if infile is None or Path(infile).resolve() != own_in.resolve():
+            inputs.write_file(own_in, own_in.name, kinds)
+            in_written = own_in
+    system.set_parameters(inputs.vector(system.params))
+    zero_params = [display_name(p) for p in system.params if inputs.internal(p) == 0.0]
+    result = Result(kind, stem, np.zeros(0), np.zeros((0, system.nstate)),
+                    [display_name(x) for x in system.states], [], {},
+                    {display_name(k): inputs.values[k].given for k in inputs.names},
+                    system=system)
+    writer = None
+    if folder is not None:
+        writer = OutputFiles(folder, stem, [([c.label for c in cols],
+                                             [c.unit for c in cols]) for cols in files])
+    try:
+        if integrate_states:
+            _run_dynamics(system, inputs, result, writer, method, progress, zero_params)
+        else:
+            _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
+                           zero_params)
+    except BaseException:
+        if writer is not None:
+            if result.failure is not None or len(result.t):
+                writer.close()
+            else:
+                writer.discard()
+        raise
+    if writer is not None:
+        result.files = ([in_written] if in_written else []) + writer.close()
+        program = f"autolev run ({command.filename})"
+        extra_files = []
+        if encoded:
+            values = list(result.encoded.items())
+            result.files.append(write_encoded(folder, stem, values))
+            extra_files.append((f"{stem}.encode", ",".join(n for n, _ in encoded)))
+        result.files.append(write_dir(folder, stem, program,
+                                      [[c.label for c in cols] for cols in files],
+                                      extra_files))
+    return result
+
+
+def _find_symbol(model, name):
+    if isinstance(name, sm.Symbol):
+        return name
+    for sym in model.info:
+        if sym.name.upper() == str(name).upper():
+            return sym
+    raise AutolevModelError(f"specified: no quantity named {name!r}")
+
+
+def _sweep(model, command, inputs):
+    """[q deg = start, stop, step] of CODE ALGEBRAIC: (key, internal values, given)."""
+    if command.sweep is None:
+        return None
+    target, start, stop, step = command.sweep[:4]
+    unit = command.sweep[4] if len(command.sweep) > 4 else inputs.unit_of(target)
+    start, stop, step = float(start), float(stop), float(step)
+    if step == 0 or (stop - start) * step < 0:
+        raise AutolevModelError(f"the sweep of {target}: step {step:g} does not lead from "
+                                f"{start:g} to {stop:g}")
+    count = int(np.floor((stop - start) / step + 1e-9)) + 1
+    given = start + step * np.arange(count)
+    internal = np.array([units.to_internal(v, unit) for v in given])
+    return target, internal, given
+
+
+def _degree_rates_note(inputs, names) -> None:
+    """Autolev's programs converted DEG inputs but not DEG/S: say so when it matters."""
+    odd = [display_name(k) for k in names
+           if units.has_degrees(inputs.unit_of(k)) and inputs.values[k].given != 0]
+    if odd:
+        warnings.warn(
+            "inputs in " + ", ".join(sorted({inputs.unit_of(k) for k in names
+                                             if units.has_degrees(inputs.unit_of(k))}))
+            + f" ({', '.join(odd)}) are used as radian rates, unconverted, as Autolev's "
+            "programs did; give them in RAD/S if that was not meant", stacklevel=3)
+
+
+def _zero_hint(zero_params) -> str:
+    if not zero_params:
+        return ""
+    shown = ", ".join(zero_params[:12]) + (", ..." if len(zero_params) > 12 else "")
+    return f" (constants that are 0: {shown})"
+
+
+def _split_outputs(system, values, result_rows, writer, encoded_out: dict) -> None:
+    pos = 0
+    for k, cols in enumerate(system.files):
+        row = [units.to_output(values[pos + j], c.unit) for j, c in enumerate(cols)]
+        pos += len(cols)
+        result_rows[k].append(row)
+        if writer is not None:
+            writer.write(k, row)
+    for name, shape in system.encode_shapes:
+        size = int(np.prod(shape)) if shape else 1
+        chunk = values[pos:pos + size]
+        pos += size
+        encoded_out[name] = chunk.reshape(shape) if shape else float(chunk[0])
+
+
+def _tables(system, rows, stem: str) -> list[OutputTable]:
+    out = []
+    for k, cols in enumerate(system.files):
+        data = np.array(rows[k], dtype=float).reshape(len(rows[k]), len(cols))
+        out.append(OutputTable(f"{stem}.{k + 1}", [c.label for c in cols],
+                               [c.unit for c in cols], data))
+    return out
+
+
+def _run_dynamics(system, inputs, result, writer, method, progress, zero_params) -> None:
+    if not system.nstate:
+        raise AutolevModelError("nothing to integrate: no variable has a defined "
+                                "derivative and there are no generalized speeds")
+    y0 = np.array(inputs.vector(system.states))
+    sched = Schedule(inputs.internal("TINITIAL"), inputs.internal("TFINAL"),
+                     inputs.internal("INTEGSTP"), int(inputs.values["PRINTINT"].given))
+    try:
+        sched.check()
+    except ValueError as exc:
+        raise AutolevModelError(str(exc)) from None
+    times, states = [], []
+    rows = [[] for _ in system.files]
+    encoded: dict = {}
+
+    def f(t, y):
+        try:
+            return system.derivatives(t, y)
+        except SingularMassMatrix as exc:
+            raise IntegrationFailure(str(exc), t, y) from None
+
+    def on_row(t, y):
+        values = system.outputs(t, y)       # solves for the accelerations once
+        times.append(t)
+        states.append(np.array(y))
+        _split_outputs(system, values, rows, writer, encoded)
+
+    bar = Progress(sys.stderr if progress is None else progress, sched.tinitial,
+                   sched.tfinal, enabled=progress is not False and progress is not None)
+    try:
+        result.stats = integrate(f, y0, sched, method, inputs.internal("ABSERR"),
+                                 inputs.internal("RELERR"), on_row, bar)
+    except IntegrationFailure as exc:
+        on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
+        state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, exc.y))
+        result.failure = (f"Numerical integration failed to converge: {exc}; the state "
+                          f"there: {state}"
+                          + (_zero_hint(zero_params) if len(times) <= 1 else ""))
+        result.failure_time = exc.t
+        if writer is not None:
+            writer.note("Error: " + result.failure)
+    except ValueError as exc:
+        raise AutolevModelError(str(exc)) from None
+    finally:
+        bar.done()
+    result.t = np.array(times)
+    result.states = np.array(states).reshape(len(states), system.nstate)
+    result.outputs = _tables(system, rows, result.name)
+    result.encoded = encoded
+
+
+def _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_params):
+    rows = [[] for _ in system.files]
+    encoded: dict = {}
+    solutions = []
+    points = [None] if sweep is None else list(zip(sweep[1], sweep[2]))
+    n = len(unknowns)
+    guess = (np.array(inputs.vector(unknowns)) if kind == "nonlinear" else np.zeros(n))
+    base = inputs.vector(system.params)
+    target_pos = None
+    if sweep is not None:
+        if sweep[0] in system.params:
+            target_pos = system.params.index(sweep[0])
+        else:
+            warnings.warn(f"the swept input {display_name(sweep[0])} does not enter the "
+                          "outputs", stacklevel=3)
+    for point in points:
+        if point is not None and target_pos is not None:
+            p = list(base)
+            p[target_pos] = point[0]
+            system.set_parameters(p)
+        if kind == "algebraic" and n:
+            ab = system.extra("linear", 0.0)
+            a = ab[:n * n].reshape(n, n)
+            b = ab[n * n:]
+            x = _linear_solve(a, -b, zero_params)
+        elif kind == "nonlinear":
+            x = _newton(system, guess, inputs.internal("ABSERR"), inputs.internal("RELERR"),
+                        unknowns, zero_params)
+            guess = x
+        else:
+            x = np.zeros(0)
+        solutions.append(x)
+        values = system.outputs(0.0, np.zeros(0), None, x)
+        _split_outputs(system, values, rows, writer, encoded)
+    result.t = np.array([pt[1] for pt in points]) if sweep is not None else np.zeros(0)
+    result.solution = {display_name(u): np.array([s[i] for s in solutions])
+                       for i, u in enumerate(unknowns)}
+    result.outputs = _tables(system, rows, result.name)
+    result.encoded = encoded
+
+
+def _linear_solve(a, b, zero_params):
+    try:
+        lu, piv = scipy.linalg.lu_factor(a, check_finite=True)
+    except (ValueError, np.linalg.LinAlgError):
+        raise AutolevModelError("CODE ALGEBRAIC: the equations' coefficients are not "
+                                "finite" + _zero_hint(zero_params)) from None
+    if np.any(np.diag(lu) == 0):
+        raise AutolevModelError("CODE ALGEBRAIC: the equations are singular for these "
+                                "inputs" + _zero_hint(zero_params))
+    return scipy.linalg.lu_solve((lu, piv), b)
+
+
+def _newton(system, x0, abserr, relerr, unknowns, zero_params, max_iter: int = 50):
+    """Newton's method from the guesses; converged when every step is within
+    max(ABSERR, RELERR*|x|) and the residual is small."""
+    x = np.array(x0, dtype=float)
+    n = len(x)
+    for _ in range(max_iter):
+        r = system.extra("residual", 0.0, (), x)
+        j = system.extra("jacobian", 0.0, (), x).reshape(n, n)
+        if not (np.all(np.isfinite(r)) and np.all(np.isfinite(j))):
+            raise AutolevModelError("CODE NONLINEAR: the equations are not finite at "
+                                    + _at(unknowns, x) + _zero_hint(zero_params))
+        try:
+            dx = np.linalg.solve(j, -r)
+        except np.linalg.LinAlgError:
+            raise AutolevModelError("CODE NONLINEAR: the Jacobian is singular at "
+                                    + _at(unknowns, x)) from None
+        x = x + dx
+        if np.all(np.abs(dx) <= np.maximum(abserr, relerr * np.abs(x))):
+            return x
+    raise AutolevModelError(f"CODE NONLINEAR: Newton's method did not converge in "
+                            f"{max_iter} iterations (last {_at(unknowns, x)}); try other "
+                            "guesses")
+
+
+def _at(unknowns, x) -> str:
+    return ", ".join(f"{display_name(u)} = {v:.6g}" for u, v in zip(unknowns, x))

@@ -1,0 +1,387 @@
+"""The numeric form of a model: its state, parameters, right-hand side and outputs.
+
+What Autolev integrated: every variable X (or X') that is not itself defined but whose
+derivative is (q' = ..., u' = ... from SOLVE, KINDIFFS, a NICHECK work integral), plus
+the independent generalized speeds whose derivatives come from Kane's equations.  The
+state is sorted alphabetically, as in Autolev's files.  Dependent speeds are computed
+from their constraint definitions whenever needed; auxiliary speeds are zero.  Kane's
+equations are solved at each evaluation with an LU factorisation of the mass matrix
+(never a symbolic inverse).  Specified quantities come from their definitions, from
+callables given by the user, or are zero (with a warning).
+
+Three generated functions: the constants (definitions that depend on constants only,
+evaluated once per parameter set, as Autolev's "Evaluate constants"), the right-hand
+side (only what the state derivatives need), and the outputs (OUTPUT columns and
+ENCODE values, evaluated at print times only, with the accelerations found there).
+"""
+from __future__ import annotations
+
+import inspect
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg
+import sympy as sm
+
+from .. import symbols as S
+from ..errors import AutolevModelError
+from . import codegen
+
+
+def alphabetical(syms) -> list:
+    """Autolev's order for constants and states: case-insensitive, lexicographic."""
+    return sorted(syms, key=lambda s: (s.name.lower(), s.name))
+
+
+def _derivative_order_then_name(syms) -> list:
+    """Constants, then variables, then their first derivatives, ... (the order of the
+    inputs of Autolev's ALGEBRAIC programs), each group alphabetical."""
+    return sorted(syms, key=lambda s: (S.base_and_order(s)[1], s.name.lower(), s.name))
+
+
+@dataclass
+class Function:
+    """A compiled numeric function with its backend and source."""
+
+    call: object
+    backend: str            # "c" or "python"
+    source: str
+
+
+def compile_program(prog: codegen.Program, backend: str, name: str) -> Function:
+    if backend in ("auto", "c") and codegen.compiler() is not None:
+        try:
+            fn, src = codegen.compile_c(prog, name)
+            return Function(fn, "c", src)
+        except codegen.CompileError as exc:
+            if backend == "c":
+                raise AutolevModelError(f"the C compiler failed: {exc}") from None
+            warnings.warn(f"compiling {name} failed; using Python ({exc})")
+    elif backend == "c":
+        raise AutolevModelError("no C compiler found (set CC, or use backend='python')")
+    fn, src = codegen.compile_python(prog, name)
+    return Function(fn, "python", src)
+
+
+class SingularMassMatrix(ArithmeticError):
+    def __init__(self, t):
+        super().__init__(f"the mass matrix is singular at T = {t:.6g}")
+        self.t = t
+
+
+@dataclass
+class Column:
+    """One output column: the expression, its label and unit."""
+
+    expr: object
+    label: str
+    unit: str | None
+
+
+class NumericSystem:
+    """State, parameters and compiled functions of a model.
+
+    `outputs`: a list of files, each a list of Column; `encoded`: (name, value) pairs.
+    `integrate=False` (ALGEBRAIC/NONLINEAR programs) builds no right-hand side; every
+    variable is an input then.  `implicit=(equations, unknowns)` (CODE ODE(EQ, x'', ...))
+    integrates by solving the equations for the unknown derivatives at each step, in
+    place of Kane's equations.  `solved`: symbols whose values the caller supplies at
+    output time (the unknowns of ALGEBRAIC/NONLINEAR); `extra`: {name: [expressions]}
+    compiled with the outputs' inputs."""
+
+    def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
+                 integrate: bool = True, implicit=None, solved=(), extra=None):
+        self.model = m = model
+        self.backend = backend
+        defs = m.defs
+        self.aux_fixed = {}
+        for u in m.auxiliary_speeds:
+            self.aux_fixed[u] = 0.0
+            self.aux_fixed[S.derivative(u)] = 0.0
+        rates, unknowns, dyn = (self._integrated(implicit) if integrate else ({}, [], []))
+        self.states = alphabetical(rates)
+        self.implicit_unknowns = unknowns          # derivatives solved from M a = f
+        self.solved = [s for s in solved if s not in unknowns]
+        n = len(unknowns)
+        self._n = n
+        solved_here = set(unknowns)     # their places are filled by the M a = f solve
+        rate_exprs = [sm.S.Zero if rates[x] in solved_here else rates[x]
+                      for x in self.states]
+        rhs_exprs = rate_exprs + dyn
+
+        # outputs: columns and ENCODE values (derivatives resolved through definitions)
+        self.files = [list(cols) for cols in outputs]
+        self.encoded = list(encoded)
+        out_exprs = [self._resolve(c.expr) for cols in self.files for c in cols]
+        self.encode_shapes = []
+        for name, value in self.encoded:
+            if isinstance(value, sm.MatrixBase):
+                self.encode_shapes.append((name, value.shape))
+                out_exprs += [self._resolve(v) for v in value]
+            else:
+                self.encode_shapes.append((name, ()))
+                out_exprs.append(self._resolve(value))
+        self.output_exprs = out_exprs
+        extra = {k: [self._resolve(e) for e in v] for k, v in (extra or {}).items()}
+
+        # what is given: time, state, solved derivatives and unknowns, fixed speeds
+        accel_inputs = list(unknowns) + self.solved
+        given = set(self.states) | {S.TIME} | set(self.aux_fixed) | set(accel_inputs)
+        exprs = [sm.sympify(e) for e in rhs_exprs + out_exprs]
+        for v in extra.values():
+            exprs += v
+        order, undefined = self._needed(exprs, given)
+        self.specified = alphabetical(s for s in undefined if self._is_specified(s))
+        params = [s for s in undefined if not self._is_specified(s)]
+        self.params = (alphabetical(params) if integrate
+                       else _derivative_order_then_name(params))
+        pset = set(self.params)
+        const_defs = [s for s in order if defs.primitive_deps(s) <= pset]
+        cset = set(const_defs)
+        used = set()
+        for e in exprs:
+            used |= e.free_symbols
+        for s in order:
+            if s not in cset:
+                used |= defs.free(s)
+        self.constant_defs = [s for s in const_defs if s in used]
+        c_syms = self.params + self.constant_defs
+
+        self.nstate = len(self.states)
+        inputs = {"t": [S.TIME], "x": self.states, "c": c_syms, "s": self.specified}
+        fixed = dict(self.aux_fixed)
+        # evaluated once per parameter set: Python (compiling C would cost more)
+        self.constants_function = compile_program(
+            codegen.Program({"p": self.params}, self.constant_defs, defs).build(),
+            "python", "autolev_constants")
+        # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
+        out_backend = backend if integrate else "python"
+        self.rhs_function = None
+        if self.nstate:
+            self.rhs_function = compile_program(
+                codegen.Program(inputs, rhs_exprs, defs, fixed).build(), backend,
+                "autolev_rhs")
+        inputs_out = dict(inputs, a=accel_inputs)
+        self.output_function = compile_program(
+            codegen.Program(inputs_out, out_exprs, defs, fixed).build(), out_backend,
+            "autolev_outputs")
+        self.extra_functions = {
+            k: (compile_program(codegen.Program(inputs_out, v, defs, fixed).build(), backend,
+                                f"autolev_{k}"), len(v))
+            for k, v in extra.items()}
+        self._rhs_out = np.empty(len(rhs_exprs))
+        self._unknown_pos = [self.states.index(_lower(d)) for d in unknowns]
+        self._c = None
+        self._s = np.zeros(len(self.specified))
+        self._spec_fns: list = []
+
+    # -- structure ------------------------------------------------------------------------
+    def _integrated(self, implicit) -> tuple[dict, list, list]:
+        """({X: rate} for every integrated X, [derivatives solved from M a = f],
+        [M entries row by row, then f]).  A rate is X's definition, or the symbol X'
+        when X' is itself integrated or solved for."""
+        m = self.model
+        defs = m.defs
+        if implicit is not None:
+            equations, unknowns = implicit
+            unknowns = list(unknowns)
+            eqs = [sm.sympify(e) for e in equations]
+            if len(eqs) != len(unknowns):
+                raise AutolevModelError(f"CODE ODE: {len(eqs)} equations for "
+                                        f"{len(unknowns)} unknowns")
+            mm = [-defs.diff(e, d) for e in eqs for d in unknowns]
+            zero = {d: 0 for d in unknowns}
+            f = [defs.substitute(e, zero) for e in eqs]
+            dyn = mm + f
+        else:
+            unknowns, dyn = [], []
+            speeds = []
+            if (m.bodies_list or m.particles_list) and m.newtonian_frame is not None:
+                speeds = m.generalized_speeds()[0]
+            pending = [u for u in speeds if S.derivative(u) not in defs.rhs]
+            if pending:
+                eqs = m._equations()
+                if set(eqs.speeds) != set(pending):
+                    raise AutolevModelError(
+                        "the derivatives of some speeds are defined (SOLVE) and others "
+                        "are not: KANE() or SOLVE must give all of "
+                        + ", ".join(map(str, eqs.speeds)))
+                unknowns = [S.derivative(u) for u in eqs.speeds]
+                mm, f = m.mass_matrix, m.forcing
+                dyn = list(mm) + list(f)
+        rates: dict = {}
+        for d in unknowns:
+            rates[_lower(d)] = d
+        changed = True
+        while changed:
+            changed = False
+            for sym, info in sorted(m.info.items(), key=lambda kv: kv[1].index):
+                if info.kind not in ("variable", "motionvariable") or sym in defs.rhs \
+                        or sym in self.aux_fixed or sym in rates:
+                    continue
+                d = S.derivative(sym)
+                if d in defs.rhs:
+                    rates[sym] = defs.rhs[d]
+                elif d in rates:
+                    rates[sym] = d               # Q' integrated too: Q's rate is Q'
+                else:
+                    continue
+                changed = True
+        return rates, unknowns, dyn
+
+    def _is_specified(self, s) -> bool:
+        return self.model.kind_of(S.base_and_order(s)[0]) == "specified"
+
+    def _needed(self, exprs, given) -> tuple[list, set]:
+        defs = self.model.defs
+        roots = set()
+        for e in exprs:
+            roots |= e.free_symbols
+        order = defs.evaluation_order(roots, given)
+        syms = set(roots)
+        for s in order:
+            syms |= defs.free(s)
+        undefined = {s for s in syms if s not in defs.rhs and s not in given}
+        return order, undefined
+
+    def _resolve(self, expr):
+        """An output expression with derivatives of integrated quantities that have no
+        definition (Q'' when Q' = U) replaced by their time derivative."""
+        defs = self.model.defs
+        expr = sm.sympify(expr)
+        for _ in range(4):
+            subs = {}
+            for s in expr.free_symbols:
+                base, k = S.base_and_order(s)
+                if k == 0 or s in defs.rhs or s in self.implicit_unknowns \
+                        or s in self.aux_fixed or s in self.states or s in self.solved \
+                        or self._is_specified(s):
+                    continue
+                lower = S.derivative(base, k - 1)
+                if lower in self.states or lower in defs.rhs:
+                    subs[s] = defs.dt(lower)
+            if not subs:
+                break
+            expr = expr.xreplace(subs)
+        return expr
+
+    # -- values ---------------------------------------------------------------------------
+    def set_parameters(self, values: np.ndarray) -> None:
+        """Parameter values (in self.params order); evaluates the constants once."""
+        p = np.asarray(values, dtype=float)
+        cd = np.empty(len(self.constant_defs))
+        if len(cd):
+            self.constants_function.call(p, cd)
+        self._c = np.concatenate([p, cd])
+
+    def set_specified(self, functions: dict) -> None:
+        """{symbol: callable f(t) or f(t, x)} for undefined specified quantities."""
+        self._spec_fns = []
+        for i, s in enumerate(self.specified):
+            fn = functions.get(s)
+            if fn is not None:
+                self._spec_fns.append((i, _as_time_state_function(fn)))
+            else:
+                base, k = S.base_and_order(s)
+                lower = [(S.derivative(base, j), j) for j in range(k - 1, -1, -1)]
+                for low, j in lower:
+                    if low in functions:
+                        self._spec_fns.append(
+                            (i, _finite_difference(_as_time_state_function(functions[low]),
+                                                   k - j)))
+                        break
+
+    def _fill_specified(self, t, x) -> np.ndarray:
+        s = self._s
+        for i, fn in self._spec_fns:
+            s[i] = fn(t, x)
+        return s
+
+    def derivatives(self, t: float, x: np.ndarray) -> np.ndarray:
+        """State derivatives at (t, x): a fresh array."""
+        out = self._rhs_out
+        s = self._fill_specified(t, x) if self._spec_fns else self._s
+        self.rhs_function.call(np.array([t]), x, self._c, s, out)
+        ns = self.nstate
+        xdot = out[:ns].copy()
+        n = self._n
+        if n:
+            mm = out[ns:ns + n * n].reshape(n, n)
+            f = out[ns + n * n:ns + n * n + n]
+            xdot[self._unknown_pos] = solve_mass_matrix(mm, f, t)
+        return xdot
+
+    def _accel_inputs(self, t, x, xdot, solved) -> np.ndarray:
+        parts = []
+        if self._n:
+            if xdot is None:
+                try:
+                    xdot = self.derivatives(t, x)
+                except SingularMassMatrix:          # outputs that need them are NaN
+                    xdot = np.full(self.nstate, np.nan)
+            parts.append(xdot[self._unknown_pos])
+        if self.solved:
+            parts.append(np.asarray(solved, dtype=float))
+        return np.concatenate(parts) if parts else np.zeros(0)
+
+    def _call(self, fn, size, t, x, xdot=None, solved=()) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        a = self._accel_inputs(t, x, xdot, solved)
+        s = self._fill_specified(t, x) if self._spec_fns else self._s
+        out = np.empty(size)
+        fn.call(np.array([t]), x, self._c, s, a, out)
+        return out
+
+    def outputs(self, t: float, x=(), xdot=None, solved=()) -> np.ndarray:
+        """Every output column and ENCODE value at (t, x), in internal units."""
+        return self._call(self.output_function, len(self.output_exprs), t, x, xdot, solved)
+
+    def extra(self, name: str, t: float, x=(), solved=()) -> np.ndarray:
+        fn, size = self.extra_functions[name]
+        return self._call(fn, size, t, x, None, solved)
+
+
+def _lower(d):
+    """Q' for Q'' (the symbol one derivative lower)."""
+    base, k = S.base_and_order(d)
+    if k == 0:
+        raise AutolevModelError(f"{d} is not a derivative")
+    return S.derivative(base, k - 1)
+
+
+def solve_mass_matrix(mm: np.ndarray, f: np.ndarray, t: float) -> np.ndarray:
+    if mm.shape == (1, 1):
+        if mm[0, 0] == 0:
+            raise SingularMassMatrix(t)
+        return f / mm[0, 0]
+    try:
+        lu, piv = scipy.linalg.lu_factor(mm, check_finite=False)
+    except (ValueError, np.linalg.LinAlgError):
+        raise SingularMassMatrix(t) from None
+    if np.any(np.diag(lu) == 0):
+        raise SingularMassMatrix(t)
+    return scipy.linalg.lu_solve((lu, piv), f, check_finite=False)
+
+
+def _as_time_state_function(fn):
+    """f(t) or f(t, x) as f(t, x)."""
+    try:
+        n = len([p for p in inspect.signature(fn).parameters.values()
+                 if p.default is p.empty and p.kind in (p.POSITIONAL_ONLY,
+                                                        p.POSITIONAL_OR_KEYWORD)])
+    except (TypeError, ValueError):
+        n = 1
+    if n >= 2:
+        return lambda t, x: float(fn(t, x))
+    return lambda t, x: float(fn(t))
+
+
+def _finite_difference(fn, order: int, h: float = 1e-4):
+    """The order-th time derivative of fn(t, x) by central differences (x held)."""
+    if order == 1:
+        return lambda t, x: (fn(t + h, x) - fn(t - h, x)) / (2 * h)
+    if order == 2:
+        return lambda t, x: (fn(t + h, x) - 2 * fn(t, x) + fn(t - h, x)) / (h * h)
+    inner = _finite_difference(fn, order - 1, h)
+    return lambda t, x: (inner(t + h, x) - inner(t - h, x)) / (2 * h)
