@@ -72,8 +72,12 @@ def run_model(args) -> dict:
     """Every stage for one model, in a worker process (with a time limit)."""
     import signal
     import time
-    ident, path, limit = args
+    ident, path, limit, run_code = args
     out = {"id": ident, "path": str(path), "stage": "ok", "detail": "", "seconds": 0.0}
+    try:
+        out["code"] = len(autolev.parse(path).of_kind("code"))
+    except autolev.AutolevError:
+        out["code"] = 0
     signal.signal(signal.SIGALRM, _alarm)
     signal.alarm(limit)
     t0 = time.perf_counter()
@@ -82,18 +86,61 @@ def run_model(args) -> dict:
         model = autolev.load(path)
         out["speeds"] = len(model.kane_equations.speeds) if model.kane_equations else 0
         out["warnings"] = sum(d.severity == "warning" for d in result.diagnostics)
+        if run_code:
+            _run_code(model, out)
     except autolev.AutolevSyntaxError as exc:
         out.update(stage="parse", detail=_first(exc.diagnostics))
     except autolev.AutolevTranslationError as exc:
         out.update(stage="translate", detail=_first(exc.diagnostics))
+        if run_code:
+            _run_after_errors(path, out)
     except autolev.AutolevRuntimeError as exc:
         out.update(stage="build", detail=_first(exc.diagnostics))
+        if run_code:
+            _run_after_errors(path, out)
     except _Timeout:
         out.update(stage="build", detail=f"did not finish in {limit} s")
     finally:
         signal.alarm(0)
     out["seconds"] = time.perf_counter() - t0
     return out
+
+
+def _run_code(model, out: dict) -> None:
+    """Perform the model's CODE commands with its INPUT values (files into a temporary
+    folder): 'ok', 'integration failed' (Autolev's failure: rows kept) or an error."""
+    import tempfile
+    import warnings
+
+    from autolev.runtime.errors import AutolevModelError
+    from autolev.runtime.numerics.run import run_command
+    if not model.code_commands:
+        return
+    outcomes = []
+    with tempfile.TemporaryDirectory() as tmp, warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for command in model.code_commands:
+            try:
+                r = run_command(model, command, out_dir=tmp)
+            except AutolevModelError as exc:
+                outcomes.append(f"error: {str(exc).splitlines()[0][:160]}")
+                continue
+            except _Timeout:
+                outcomes.append("did not finish in the time limit")
+                break
+            outcomes.append("ok" if r.ok else f"integration failed: {r.failure[:120]}")
+    out["run"] = outcomes
+
+
+def _run_after_errors(path, out: dict) -> None:
+    """Statements after the last CODE command may fail and still leave it runnable (as
+    `autolev run` does)."""
+    from autolev.loader import load_for_run
+    try:
+        model, _ = load_for_run(path)
+    except autolev.AutolevError:
+        return
+    _run_code(model, out)
 
 
 def _first(diagnostics) -> str:
@@ -109,13 +156,16 @@ def main() -> int:
     ap.add_argument("--list", action="store_true", help="list every model and its outcome")
     ap.add_argument("--limit", type=int, default=120, help="seconds per model")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--no-run", action="store_true",
+                    help="stop after building: do not perform the CODE commands")
     ns = ap.parse_args()
     models = corpus_models(ns.corpus)
     if not models:
         print(f"no corpus under {ns.corpus}: see shared/corpus/materialize.py")
         return 1
     with ProcessPoolExecutor(ns.jobs) as pool:
-        results = list(pool.map(run_model, [(i, p, ns.limit) for i, p in models]))
+        results = list(pool.map(run_model, [(i, p, ns.limit, not ns.no_run)
+                                            for i, p in models]))
     total = len(results)
     order = ["parse", "translate", "build"]
     passed = total
@@ -126,6 +176,16 @@ def main() -> int:
               f"/{total} models get past it ({failed} stop here)")
     ok = sum(r["stage"] == "ok" for r in results)
     print(f"translate and build without a diagnostic: {ok}/{total} ({100 * ok / total:.1f} %)")
+    coded = [r for r in results if r.get("code")]
+    if not ns.no_run:
+        done = [r for r in coded if r.get("run") and all(o == "ok" for o in r["run"])]
+        failed = [r for r in coded if r.get("run") and any(o.startswith("integration")
+                                                           for o in r["run"])]
+        print(f"run      : {len(done)}/{len(coded)} models with a CODE command run every "
+              f"one to completion; {len(failed)} stop with Autolev's integration failure")
+        for r in coded:
+            if r not in done:
+                print(f"  {r['id']}: run: " + "; ".join(r.get("run") or ["not built"]))
     slow = sorted(results, key=lambda r: -r["seconds"])[:5]
     print("slowest: " + ", ".join(f"{r['id']} {r['seconds']:.1f} s" for r in slow))
     for r in results:

@@ -51,13 +51,31 @@ def read_table(path: Path) -> np.ndarray:
         except ValueError:
             continue
     width = max((len(r) for r in rows), default=0)
+    if not width:
+        return np.zeros((0, 0))
     return np.array([r for r in rows if len(r) == width]).reshape(-1, width)
+
+
+def read_labels(path: Path) -> list[str]:
+    """The column names of an output file: the line above the units line."""
+    lines = path.read_text(errors="replace").splitlines()[:12]
+    for k, line in enumerate(lines):
+        toks = line.lstrip("%").split()
+        if toks and all(t.startswith("(") for t in toks) and k > 0:
+            return [t.upper() for t in lines[k - 1].lstrip("%").split()]
+    return []
 
 
 def _has_labels(path: Path) -> bool:
     """Whether the file's heading names its columns."""
     for line in path.read_text(errors="replace").splitlines()[:8]:
         text = line.lstrip("% ").strip()
+        try:
+            [float(p) for p in text.split()]
+            if text:
+                return False               # the rows began: no names above them
+        except ValueError:
+            pass
         if text and not text.startswith("FILE:") and not text.startswith("***"):
             return True
     return False
@@ -114,16 +132,18 @@ def column_errors(ours: np.ndarray, ref: np.ndarray, t_max: float | None = None)
     """Per column: max |ours - ref| / scale, scale = the column's largest magnitude, but
     at least 1e-6 of the file's largest (a column that is zero up to round-off, such
     as a torque of 1e-14, is compared on the file's scale)."""
+    finite = np.isfinite(ref)
+    file_scale = float(np.max(np.abs(ref[finite]))) if finite.any() else 0.0
+    cols = [float(np.nanmax(np.abs(ref[:, j]))) if np.any(np.isfinite(ref[:, j])) else 0.0
+            for j in range(ref.shape[1])]          # scales over the whole file
     if t_max is not None:
         keep = ref[:, 0] <= t_max
         ours, ref = ours[keep], ref[keep]
-    finite = np.isfinite(ref)
-    file_scale = float(np.max(np.abs(ref[finite]))) if finite.any() else 0.0
     errs = []
     for j in range(ref.shape[1]):
         a, b = ours[:, j], ref[:, j]
         both_nan = np.isnan(a) & np.isnan(b)
-        col = float(np.nanmax(np.abs(b))) if np.any(np.isfinite(b)) else 0.0
+        col = cols[j]
         scale = max(col, 1e-6 * file_scale)
         d = np.abs(a - b)
         d[both_nan] = 0.0
@@ -271,6 +291,23 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
                                  f"zero columns without names for OUTPUT matrices; we write "
                                  f"their {mine.shape[1]} elements", None))
             continue
+        if theirs.size == 0 and row["status"].startswith("failed") and result.failure \
+                and len(result.t) == 1:
+            out["files"].append((ref.name, "failure reproduced: Autolev's program stopped "
+                                 "before its first row; ours writes the row where it "
+                                 "stopped", None))
+            continue
+        if mine.shape[0] == theirs.shape[0] and mine.shape[1] != theirs.shape[1]:
+            # the program's revision of the .al wrote other columns: compare by name
+            ours_l, theirs_l = read_labels(ours), read_labels(ref)
+            common = [c for c in theirs_l if c in ours_l]
+            if len(common) == len(theirs_l) == theirs.shape[1] and \
+                    len(ours_l) == mine.shape[1]:
+                mine = mine[:, [ours_l.index(c) for c in common]]
+                extra = [c for c in ours_l if c not in theirs_l]
+                out["files"].append((ref.name, f"revision differs: the program's file has "
+                                     f"no {', '.join(extra)}; the {len(common)} common "
+                                     "columns compared", None))
         if mine.shape != theirs.shape:
             out["files"].append((ref.name, f"shape {mine.shape} vs {theirs.shape}", None))
             matched = False

@@ -321,3 +321,39 @@ def test_encode_values_are_written_with_one_based_names(tmp_path):
     lines = (tmp_path / "encoded.encode").read_text().splitlines()
     assert lines[1].startswith("R[1,1]\t0.8660254037844")
     assert "encoded.encode" in (tmp_path / "encoded.dir").read_text()
+
+
+def test_progress_line_appears_only_after_a_second(monkeypatch):
+    import io
+    clock = iter([0.0, 0.5, 1.5, 1.6, 7.0])
+    monkeypatch.setattr(integrate._time, "monotonic", lambda: next(clock))
+    stream = io.StringIO()
+    bar = integrate.Progress(stream, 0.0, 10.0, enabled=True)   # start: t = 0.0 s
+    bar.update(1.0)              # 0.5 s: too early
+    bar.update(2.0)              # 1.5 s: shown
+    bar.update(2.5)              # 1.6 s: not a tty, next line only after 5 s
+    bar.update(9.0)              # 7.0 s
+    lines = stream.getvalue().splitlines()
+    assert lines == ["  T = 2 of 10 (20%), 1.5 s", "  T = 9 of 10 (90%), 7.0 s"]
+
+
+def test_plot_writes_a_png_per_output_file(tmp_path, capsys):
+    pytest.importorskip("matplotlib", reason="--plot needs the optional matplotlib")
+    from autolev.cli import main
+    code = main(["run", str(EXAMPLES / "double_pendulum.al"), "--out", str(tmp_path),
+                 "--tfinal", "0.2", "--plot", "-q"])
+    assert code == 0
+    pngs = sorted(p.name for p in tmp_path.glob("*.png"))
+    assert pngs == ["double_pendulum.1.png", "double_pendulum.2.png"]
+    assert (tmp_path / "double_pendulum.1.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_nonlinear_without_output_writes_its_unknowns_in_their_units(tmp_path):
+    f = tmp_path / "angle.al"
+    f.write_text("VARIABLES QA\nEQ = COS(QA) - 0.5\nINPUT QA = 50 DEG\n"
+                 "CODE NONLINEAR(EQ, QA) angle.c\n")
+    r = quiet_simulate(autolev.load(f), out_dir=tmp_path)
+    assert r.outputs[0].labels == ["QA"] and r.outputs[0].units == ["DEG"]
+    assert r.outputs[0].data[0, 0] == pytest.approx(60.0, abs=1e-9)
+    assert r.solution["QA"][0] == pytest.approx(math.pi / 3, abs=1e-12)
+    assert "(DEG)" in (tmp_path / "angle.1").read_text()

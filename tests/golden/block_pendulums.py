@@ -118,4 +118,5 @@ model.code('dynamics', 'block_pendulums.c')
 
 
 if __name__ == "__main__":
-    model.run()
+    # perform the CODE commands: Autolev's files go to the current folder
+    model.run(verbose=True)

@@ -86,4 +86,5 @@ model.code('dynamics', 'euler_parameters_body.c')
 
 
 if __name__ == "__main__":
-    model.run()
+    # perform the CODE commands: Autolev's files go to the current folder
+    model.run(verbose=True)

@@ -67,4 +67,5 @@ model.code('dynamics', 'mass_spring_damper.c')
 
 
 if __name__ == "__main__":
-    model.run()
+    # perform the CODE commands: Autolev's files go to the current folder
+    model.run(verbose=True)

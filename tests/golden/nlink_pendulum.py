@@ -137,4 +137,5 @@ model.code('dynamics', 'nlink_pendulum.c')
 
 
 if __name__ == "__main__":
-    model.run()
+    # perform the CODE commands: Autolev's files go to the current folder
+    model.run(verbose=True)

@@ -105,4 +105,5 @@ model.code('dynamics', 'rolling_disc.c')
 
 
 if __name__ == "__main__":
-    model.run()
+    # perform the CODE commands: Autolev's files go to the current folder
+    model.run(verbose=True)

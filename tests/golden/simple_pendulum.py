@@ -60,4 +60,5 @@ model.code('dynamics', 'simple_pendulum.c')
 
 
 if __name__ == "__main__":
-    model.run()
+    # perform the CODE commands: Autolev's files go to the current folder
+    model.run(verbose=True)

@@ -64,12 +64,23 @@ class IOMixin:
             n_outputs=len(self.outputs), n_encoded=len(self.encoded),
             inputs=dict(self.inputs), units=dict(self.unit_of)))
 
-    def run(self, out_dir=".", **options):
+    def run(self, out_dir=".", verbose: bool = False, **options):
         """Perform every CODE command with the INPUT values (as `python model.py`
-        does): writes Autolev's files into out_dir; returns the results."""
+        does): writes Autolev's files into out_dir; returns the results.  `verbose`
+        reports each run (and any failure) on standard output."""
+        import sys
+
         from .numerics.run import run_command
-        return [run_command(self, c, out_dir=out_dir, **options)
-                for c in self.code_commands]
+        results = []
+        for c in self.code_commands:
+            r = run_command(self, c, out_dir=out_dir,
+                            progress=sys.stderr if verbose else None, **options)
+            results.append(r)
+            if verbose:
+                print(f"CODE {c.kind.upper()} {c.filename}: "
+                      + ("ok" if r.ok else r.failure)
+                      + "".join(f"\n  wrote {f}" for f in r.files))
+        return results
 
     def simulate(self, *, method: str = "kutta-merson", backend: str = "auto",
                  infile=None, out_dir=None, specified=None, progress=None, **overrides):

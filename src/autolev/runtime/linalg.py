@@ -16,11 +16,12 @@ def solve_linear(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str = "") 
     results by Z's.
 
     The symbolic solution divides by its pivots, so a pivot must be nonzero wherever
-    the model goes.  Numbers are taken first; otherwise the entry that stays farthest
-    from zero, relative to its size, over several configurations (the time-varying
-    quantities all 0, all pi/2, and spread over [-pi, pi]) -- (L2+Q2) rather than
-    cos(Q1), which a cell model or a bicycle meets at 90 degrees.  An entry that is
-    zero for generic values is never a pivot."""
+    the model goes.  Numbers are taken first; then entries nonzero where the
+    time-varying quantities are zero (where models start and are linearised); then
+    those nonzero at more probe configurations (all pi/2, and spread over [-pi, pi]),
+    and farthest from zero relative to their size -- (L2+Q2) rather than cos(Q1),
+    which a cell model meets at 90 degrees.  An entry that is zero for generic values
+    is never a pivot."""
     n = a.rows
     generic = NumericPoint(defs, seed=1)
     probes = [NumericPoint(defs, zero_varying=True, seed=2),
@@ -28,40 +29,60 @@ def solve_linear(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str = "") 
         [NumericPoint(defs, varying="wide", seed=s) for s in (4, 5, 6, 7)]
     scores: dict = {}
 
-    def score(e) -> float:
-        """2 for a number; else min|e| / max|e| over the probes (0 when it vanishes)."""
+    def score(e) -> tuple:
+        """Numbers first; then nonzero where the varying quantities are zero (where
+        models start and are linearised), then nonzero at more probes, then farthest
+        from zero relative to its size.  None: zero for generic values (unusable)."""
         if e.is_number:
-            return 2.0
-        hit = scores.get(e)
-        if hit is None:
+            return (3,)
+        hit = scores.get(e, False)
+        if hit is False:
             if _small(defs.numeric(e, generic)):
-                hit = -1.0                        # zero for generic values: unusable
+                hit = None
             else:
                 vals = [abs(defs.numeric(e, p)) for p in probes]
-                top = max(vals)
-                hit = 0.0 if any(_small(v) for v in vals) or not top > 0 else \
-                    min(vals) / top
+                nonzero = [not _small(v) for v in vals]
+                top = max((v for v, ok in zip(vals, nonzero) if ok), default=0.0)
+                ratio = min(vals) / top if all(nonzero) and top > 0 else 0.0
+                hit = (1, int(nonzero[0]), sum(nonzero), ratio)
             scores[e] = hit
         return hit
 
     if a.cols != n or b.rows != n:
         raise AutolevModelError(f"cannot solve {what}: {a.rows} equations for {a.cols} "
                                 "unknowns")
+    if n <= 3:
+        return _cramer(a, b, defs, what, generic)
+    blocks = _block_triangular(a)
+    if blocks is not None and len(blocks) > 1:
+        # solved block by block, each given the unknowns of the blocks before it (a
+        # linkage's loops, a joint's pair of constraints); small blocks by Cramer's rule,
+        # so no pivot can vanish where a block is regular
+        x = [None] * n
+        for rows, cols in blocks:
+            rhs = []
+            for r in rows:
+                known = [a[r, c] * x[c] for c in range(n) if x[c] is not None and a[r, c] != 0]
+                rhs.append(defs.zify(b[r, 0] - sm.Add(*known)) if known else b[r, 0])
+            sub = solve_linear(a.extract(rows, cols), sm.Matrix(rhs), defs, what)
+            for c, v in zip(cols, sub):
+                x[c] = v
+        return x
     m = [[a[i, j] for j in range(n)] + [b[i, 0]] for i in range(n)]
     cols = list(range(n))                 # cols[k]: the unknown in position k
     for k in range(n):
-        best, where = -1.0, None
+        best, where = None, None
         for c in range(k, n):
             for r in range(k, n):
                 e = m[r][c]
                 if e == 0:
                     continue
                 s_ = score(e)
-                if s_ > best:
+                if s_ is not None and (best is None or s_ > best):
                     best, where = s_, (r, c)
-            if best >= 2.0:
+            if best == (3,):
                 break
-        if where is None or best < 0:
+        if where is None:
             raise AutolevModelError(f"cannot solve {what}: the equations are singular (they "
                                     f"do not determine unknown {cols[k] + 1})")
         r, c = where
@@ -88,6 +109,105 @@ def solve_linear(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str = "") 
     for k in range(n):
         x[cols[k]] = y[k]
     return x
+
+
+def _block_triangular(a: sm.Matrix) -> list[tuple[list, list]] | None:
+    """The blocks of a's block-triangular form, in the order to solve them (rows and
+    the columns they determine), or None when a is structurally singular.
+
+    Each row is matched to a column it contains (augmenting paths); row i depends on
+    row j when it contains j's column; the strongly connected components of that graph
+    (Tarjan: a component is finished after everything it depends on) are the blocks."""
+    n = a.rows
+    nz = [[j for j in range(n) if a[i, j] != 0] for i in range(n)]
+    owner = [-1] * n                       # column -> row
+
+    def augment(i, seen):
+        for j in nz[i]:
+            if j in seen:
+                continue
+            seen.add(j)
+            if owner[j] < 0 or augment(owner[j], seen):
+                owner[j] = i
+                return True
+        return False
+    for i in range(n):
+        if not augment(i, set()):
+            return None
+    col_of = {owner[j]: j for j in range(n)}
+    deps = [[owner[j] for j in nz[i] if owner[j] != i] for i in range(n)]
+    index, low, on_stack, stack, blocks = {}, {}, set(), [], []
+    counter = [0]
+
+    def visit(v):                          # Tarjan, iterative over the edges
+        work = [(v, iter(deps[v]))]
+        index[v] = low[v] = counter[0]
+        counter[0] += 1
+        stack.append(v)
+        on_stack.add(v)
+        while work:
+            node, edges = work[-1]
+            for w in edges:
+                if w not in index:
+                    index[w] = low[w] = counter[0]
+                    counter[0] += 1
+                    stack.append(w)
+                    on_stack.add(w)
+                    work.append((w, iter(deps[w])))
+                    break
+                if w in on_stack:
+                    low[node] = min(low[node], index[w])
+            else:
+                work.pop()
+                if work:
+                    low[work[-1][0]] = min(low[work[-1][0]], low[node])
+                if low[node] == index[node]:
+                    comp = []
+                    while True:
+                        w = stack.pop()
+                        on_stack.discard(w)
+                        comp.append(w)
+                        if w == node:
+                            break
+                    rows = sorted(comp)
+                    blocks.append((rows, [col_of[r] for r in rows]))
+    for v in range(n):
+        if v not in index:
+            visit(v)
+    return blocks
+
+
+def _det(rows, defs: Definitions):
+    """Determinant of a 1x1 to 3x3 matrix (lists), by cofactors."""
+    n = len(rows)
+    if n == 1:
+        return rows[0][0]
+    if n == 2:
+        return defs.zify(rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0])
+    total = []
+    for j in range(3):
+        if rows[0][j] == 0:
+            continue
+        minor = [[rows[i][k] for k in range(3) if k != j] for i in (1, 2)]
+        total.append((-1) ** j * rows[0][j] * _det(minor, defs))
+    return defs.zify(sm.Add(*total))
+
+
+def _cramer(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str, generic) -> list:
+    """A system of up to three equations by Cramer's rule, as Autolev's solutions read
+    (x_i = det(A_i)/det(A)): the only division is by the determinant, zero exactly
+    where the system is singular, not where an elimination pivot happens to vanish."""
+    n = a.rows
+    rows = [[a[i, j] for j in range(n)] for i in range(n)]
+    det = _det(rows, defs)
+    if det == 0 or (not det.is_number and _small(defs.numeric(det, generic))):
+        raise AutolevModelError(f"cannot solve {what}: the equations are singular (their "
+                                "determinant is zero)")
+    out = []
+    for i in range(n):
+        ai = [[b[r, 0] if j == i else rows[r][j] for j in range(n)] for r in range(n)]
+        out.append(defs.zify(_det(ai, defs) / det))
+    return out
 
 
 def coefficients(rows, unknowns, defs: Definitions) -> tuple[sm.Matrix, sm.Matrix]:

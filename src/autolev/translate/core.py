@@ -236,7 +236,8 @@ class Translator:
         self.emit("")
         self.emit("")
         self.emit('if __name__ == "__main__":')
-        self.emit("    model.run()")
+        self.emit("    # perform the CODE commands: Autolev's files go to the current folder")
+        self.emit("    model.run(verbose=True)")
 
     def _render(self) -> tuple[str, dict[int, Span]]:
         out, line_map = [], {}

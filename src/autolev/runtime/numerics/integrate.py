@@ -162,7 +162,7 @@ class Progress:
         self.t0, self.t1 = t0, t1
         self.enabled = enabled and stream is not None
         self.start = _time.monotonic()
-        self.last = self.start
+        self.last = float("-inf")
         self.shown = False
         self.tty = bool(getattr(stream, "isatty", lambda: False)())
 

@@ -165,6 +165,10 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
     files = _columns(model, command)
     encoded = _encoded(model, command)
     equations, unknowns = _unknowns(command.args, kind.upper())
+    if unknowns and not files and kind in ("algebraic", "nonlinear"):
+        # no OUTPUT: the solution is what the program is for -- write the unknowns
+        files = [[Column(u, u.name, (command.inputs.get(u) or (None, None))[1]
+                         or command.units.get(u)) for u in unknowns]]
     extra = None
     implicit = None
     integrate_states = kind in ("dynamics", "ode")

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg
+import scipy.linalg.lapack
 import sympy as sm
 
 from .. import symbols as S
@@ -351,17 +352,20 @@ def _lower(d):
 
 
 def solve_mass_matrix(mm: np.ndarray, f: np.ndarray, t: float) -> np.ndarray:
+    """u' from M u' = f by LU with partial pivoting (LAPACK dgetrf/dgetrs)."""
     if mm.shape == (1, 1):
-        if mm[0, 0] == 0:
+        if mm[0, 0] == 0 or not np.isfinite(mm[0, 0]):
             raise SingularMassMatrix(t)
         return f / mm[0, 0]
-    try:
-        lu, piv = scipy.linalg.lu_factor(mm, check_finite=False)
-    except (ValueError, np.linalg.LinAlgError):
-        raise SingularMassMatrix(t) from None
-    if np.any(np.diag(lu) == 0):
+    lu, piv, info = _getrf(mm)
+    if info != 0:
         raise SingularMassMatrix(t)
-    return scipy.linalg.lu_solve((lu, piv), f, check_finite=False)
+    x, info = _getrs(lu, piv, f)
+    return x
+
+
+_getrf, _getrs = scipy.linalg.lapack.get_lapack_funcs(("getrf", "getrs"),
+                                                        (np.zeros((2, 2)),))
 
 
 def _as_time_state_function(fn):
