@@ -138,6 +138,13 @@ def test_run_refuses_bad_options(tmp_path, capsys, argv, message):
     assert not any(tmp_path.iterdir())
 
 
+def test_run_with_a_value_that_is_not_a_number_writes_nothing(tmp_path, capsys):
+    code, _, err = run(capsys, "run", str(EXAMPLES / "double_pendulum.al"), "--out",
+                       str(tmp_path), "--set", "Q1=abc", "-q")
+    assert code == 1 and "Q1=abc: not a number" in err
+    assert not any(tmp_path.iterdir())
+
+
 def test_run_of_a_model_with_errors_writes_nothing(tmp_path, capsys):
     f = tmp_path / "bad.al"
     f.write_text("VARIABLES X'\nX' = -Y\nCODE DYNAMICS() bad.c\n")

@@ -61,7 +61,7 @@ def test_corpus_models_translate_and_build(corpus):
     from concurrent.futures import ProcessPoolExecutor
     models = corpus_bench.corpus_models(corpus)
     with ProcessPoolExecutor(2) as pool:
-        results = list(pool.map(corpus_bench.run_model, [(i, p, 120) for i, p in models]))
+        results = list(pool.map(corpus_bench.run_model, [(i, p, 120, False) for i, p in models]))
     failing = {r["id"]: r for r in results if r["stage"] != "ok"}
     unexplained = {k: (v["stage"], v["detail"]) for k, v in failing.items()
                    if k not in NOT_BUILDING or NOT_BUILDING[k][0] != v["stage"]

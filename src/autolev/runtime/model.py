@@ -323,10 +323,14 @@ class Model(AlgebraMixin, IOMixin):
         else:
             if len(coords) != 3:
                 raise AutolevModelError(f"KINDIFFS(..., {kind.upper()}, ...) takes 3 angles")
+            # the rates are the unknowns here, even of an angle that is defined (the
+            # 3-D pendulum's q4 = 0 with its speed made dependent)
+            def rate(q):
+                return S.derivative(q) if isinstance(q, sm.Symbol) else self.defs.dt_raw(q)
             if kind.startswith("body"):
-                _, implied = body_fixed(coords, kind[4:], self.defs.dt_raw)
+                _, implied = body_fixed(coords, kind[4:], rate)
             elif kind.startswith("space"):
-                dcm, w_parent = space_fixed(coords, kind[5:], self.defs.dt_raw)
+                dcm, w_parent = space_fixed(coords, kind[5:], rate)
                 implied = tuple(dcm.T * sm.Matrix(w_parent))
             else:
                 raise AutolevModelError(f"KINDIFFS does not know the rotation type "

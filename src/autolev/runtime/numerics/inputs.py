@@ -145,9 +145,10 @@ class Inputs:
             known = ", ".join(display_name(k) for k in self.names)
             raise AutolevModelError(f"no input named {name!r} (inputs: {known})")
         if isinstance(value, str):
-            value = _parse_number(value)
-            if value is None:
-                raise AutolevModelError(f"{name}: not a number: {value!r}")
+            number = _parse_number(value)
+            if number is None:
+                raise AutolevModelError(f"{name}={value}: not a number")
+            value = number
         value = float(value)
         if key == "PRINTINT":
             if value != int(value) or value < 1:
