@@ -114,7 +114,7 @@ model.input('INTEGSTP', 0.01)
 # OUTPUT T, Q1, Q2 deg, Q3 deg
 model.output((t, 'T'), (Q1, 'Q1'), (Q2, 'Q2', 'deg'), (Q3, 'Q3', 'deg'))
 # CODE DYNAMICS() block_pendulums.c
-model.code('dynamics', 'block_pendulums.c')
+model.code('dynamics', 'block_pendulums.c', zero=ZERO)
 
 
 if __name__ == "__main__":

@@ -68,7 +68,7 @@ model.input('INTEGSTP', 0.01)
 # OUTPUT T, X, TH deg
 model.output((t, 'T'), (X, 'X'), (TH, 'TH', 'deg'))
 # CODE DYNAMICS() cart_pendulum.c
-model.code('dynamics', 'cart_pendulum.c')
+model.code('dynamics', 'cart_pendulum.c', zero=ZERO)
 
 
 if __name__ == "__main__":

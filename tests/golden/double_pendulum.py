@@ -107,7 +107,7 @@ model.output(
 model.output((t, 'T', 'sec'), (ENERGY, 'ENERGY', 'joules'))
 
 # CODE DYNAMICS() double_pendulum.c
-model.code('dynamics', 'double_pendulum.c')
+model.code('dynamics', 'double_pendulum.c', zero=ZERO)
 
 
 if __name__ == "__main__":

@@ -82,7 +82,7 @@ model.output(
     (U3, 'U3'),
 )
 # CODE DYNAMICS() euler_parameters_body.c
-model.code('dynamics', 'euler_parameters_body.c')
+model.code('dynamics', 'euler_parameters_body.c', zero=ZERO)
 
 
 if __name__ == "__main__":

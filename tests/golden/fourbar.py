@@ -143,7 +143,7 @@ model.output(
     (F2, 'F2', 'N'),
 )
 # CODE DYNAMICS() fourbar.c
-model.code('dynamics', 'fourbar.c')
+model.code('dynamics', 'fourbar.c', zero=ZERO)
 
 
 if __name__ == "__main__":

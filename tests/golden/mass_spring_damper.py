@@ -63,7 +63,7 @@ model.input('INTEGSTP', 0.02)
 # OUTPUT T sec, X m, V m/sec
 model.output((t, 'T', 'sec'), (X, 'X', 'm'), (V, 'V', 'm/sec'))
 # CODE DYNAMICS() mass_spring_damper.c
-model.code('dynamics', 'mass_spring_damper.c')
+model.code('dynamics', 'mass_spring_damper.c', zero=ZERO)
 
 
 if __name__ == "__main__":

@@ -133,7 +133,7 @@ model.output(
     (Q4, 'Q4', 'deg'),
 )
 # CODE DYNAMICS() nlink_pendulum.c
-model.code('dynamics', 'nlink_pendulum.c')
+model.code('dynamics', 'nlink_pendulum.c', zero=ZERO)
 
 
 if __name__ == "__main__":

@@ -101,7 +101,7 @@ model.output(
     (Q5, 'Q5', 'm'),
 )
 # CODE DYNAMICS() rolling_disc.c
-model.code('dynamics', 'rolling_disc.c')
+model.code('dynamics', 'rolling_disc.c', zero=ZERO)
 
 
 if __name__ == "__main__":

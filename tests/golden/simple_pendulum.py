@@ -56,7 +56,7 @@ model.input('INTEGSTP', 0.01)
 # OUTPUT T sec, THETA deg, THETA' rad/sec
 model.output((t, 'T', 'sec'), (THETA, 'THETA', 'deg'), (THETAp, "THETA'", 'rad/sec'))
 # CODE DYNAMICS() simple_pendulum.c
-model.code('dynamics', 'simple_pendulum.c')
+model.code('dynamics', 'simple_pendulum.c', zero=ZERO)
 
 
 if __name__ == "__main__":

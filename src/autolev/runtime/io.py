@@ -52,7 +52,8 @@ class IOMixin:
         """ENCODE A, B: quantities the generated program evaluates."""
         self.encoded.extend(items)
 
-    def code(self, kind: str, filename: str, args=None, sweep=None, options=()) -> None:
+    def code(self, kind: str, filename: str, args=None, sweep=None, options=(),
+             zero=None) -> None:
         """CODE DYNAMICS|ALGEBRAIC|NONLINEAR|ODE(args) file: a program to run, with the
         INPUT, OUTPUT and ENCODE statements given so far (as Autolev generated it then)."""
         kind = kind.lower()
@@ -62,7 +63,9 @@ class IOMixin:
         self.code_commands.append(CodeCommand(
             kind, filename, list(args or []), sweep, tuple(options),
             n_outputs=len(self.outputs), n_encoded=len(self.encoded),
-            inputs=dict(self.inputs), units=dict(self.unit_of)))
+            inputs=dict(self.inputs), units=dict(self.unit_of),
+            zero=None if zero is None else sm.Matrix(zero),
+            defined=frozenset(self.defs.rhs)))
 
     def run(self, out_dir=".", verbose: bool = False, **options):
         """Perform every CODE command with the INPUT values (as `python model.py`
@@ -119,3 +122,7 @@ class CodeCommand:
     n_encoded: int = 0
     inputs: dict = field(default_factory=dict)
     units: dict = field(default_factory=dict)
+    # ZERO as it stood at CODE time, when KANE() had marked it as the dynamics
+    zero: object = None
+    # the names with a definition at CODE time (later ones are not the program's)
+    defined: frozenset | None = None

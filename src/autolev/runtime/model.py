@@ -562,11 +562,17 @@ class Model(AlgebraMixin, IOMixin):
             for r, vr in enumerate(partials(v)):
                 frstar[r] += vr.dot(inertial)
         for b in self.bodies_list:
-            v = b.masscenter.vel(n)
-            m = b.mass_checked()
-            force = -m * b.masscenter.acc(n)
-            for r, vr in enumerate(partials(v)):
-                frstar[r] += vr.dot(force)
+            mc = b.masscenter
+            if n not in mc._vel and n in mc._acc and not mc._acc[n].terms \
+                    and not (mc in self.forces and self.forces[mc].terms):
+                # A_BO_N> = 0> given and no velocity (tutorial 9's fixed mass centre):
+                # its inertia force is zero whatever its partial velocities are
+                b.mass_checked()
+            else:
+                v = mc.vel(n)
+                force = -b.mass_checked() * mc.acc(n)
+                for r, vr in enumerate(partials(v)):
+                    frstar[r] += vr.dot(force)
             w = b.ang_vel_in(n)
             alf = b.ang_acc_in(n)
             if not w.terms and not alf.terms:
@@ -751,11 +757,31 @@ class Model(AlgebraMixin, IOMixin):
             if isinstance(it, Body):
                 r = it.masscenter.pos_from(point)
                 w = it.ang_vel_in(n)
-                total = total + r.cross(it.mass_checked() * it.masscenter.vel(n)) \
-                    + it.central_inertia.dot(w)
+                if r.terms:      # about its own mass centre the velocity is not needed
+                    total = total + r.cross(it.mass_checked() * it.masscenter.vel(n))
+                total = total + it.central_inertia.dot(w)
             else:
                 total = total + it.pos_from(point).cross(self._particle_mass(it) * it.vel(n))
         return total.zified()
+
+    def gyrostat_angmom(self, carrier: Frame, rotor: Frame, j) -> Vector:
+        """GYROSTAT(ANGMOM, CYLINDER, A, B, J): the angular momentum that a rotor B,
+        a cylinder with axial moment of inertia J spinning in carrier A, adds to the
+        carrier's (whose inertia already holds the rotor's mass and transverse
+        inertia): J times the rotor's spin.  The spin is W_B_A> when the model assigned
+        it, otherwise the W_B_N> it assigned (tutorial 9 writes W_B_N> = Omega*A3> for
+        a rotor spinning at Omega relative to A).  No Autolev source defines GYROSTAT;
+        this is the textbook gyrostat term H = I.w + J*Omega*a3 it is used for."""
+        n = self._newtonian()
+        if carrier in rotor._w_user:
+            spin = rotor.ang_vel_in(carrier)
+        elif n in rotor._w_user:
+            spin = rotor.ang_vel_in(n)
+        else:
+            raise AutolevModelError(
+                f"GYROSTAT: the spin of rotor {rotor.name} is not given "
+                f"(W_{rotor.name}_{carrier.name}> = ...)")
+        return (j * spin).zified()
 
     def cm(self, point: Point, *items) -> Vector:
         """CM(O[, B...]): position of the mass center (of the listed bodies) from O."""

@@ -85,6 +85,7 @@ class Translator:
         self.autorhs = False
         self.defined: set[tuple[str, int]] = set()
         self.has_code = False
+        self.kane_called = False
         self._span: Span | None = None
         self._used_primes = _primes_used(program)
         self.autolev_names: dict[str, str] = {}

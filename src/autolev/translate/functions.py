@@ -303,6 +303,22 @@ def _momentum(tr, c):
     raise tr.error(f"MOMENTUM takes LINEAR or ANGULAR, not {c.args[0].name}", c.args[0])
 
 
+@function("GYROSTAT")
+def _gyrostat(tr, c):
+    if len(c.args) != 5 or not all(isinstance(a, ir.Name) for a in c.args[:2]):
+        raise tr.error("GYROSTAT(ANGMOM, CYLINDER, A, B, J)", c)
+    what, shape = c.args[0].name.upper(), c.args[1].name.upper()
+    if what != "ANGMOM":
+        raise tr.error(f"GYROSTAT({what}, ...) is not supported: only ANGMOM (angular "
+                       "momentum) has a known meaning", c.args[0], "T003")
+    if shape != "CYLINDER":
+        raise tr.error(f"GYROSTAT(ANGMOM, {shape}, ...) is not supported: only a "
+                       "CYLINDER rotor", c.args[1], "T003")
+    a, b = tr.frame(c.args[2]).code, tr.frame(c.args[3]).code
+    j = tr.scalar(c.args[4]).code
+    return Typed(f"model.gyrostat_angmom({a}, {b}, {j})", "vector")
+
+
 @function("PARTIALS")
 def _partials(tr, c):
     if not c.args:

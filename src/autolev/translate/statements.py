@@ -531,6 +531,7 @@ def _constrain(tr, c):
 @command("KANE")
 def _kane(tr, c):
     unknowns = [tr.scalar(a).code for a in c.args]
+    tr.kane_called = True
     tr.emit(f"model.kane({', '.join(unknowns)})")
 
 
@@ -711,6 +712,9 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
                  f"{tr.scalar(sw.step).code}{_unit_arg(sw.unit)})")
     if st.options:
         opts += f", options={tuple(st.options)!r}"
+    zero = tr.values.get("zero")
+    if tr.kane_called and zero is not None and zero.type == "matrix":
+        opts += f", zero={zero.py}"
     tr.has_code = True
     tr.emit(f"model.code({st.what!r}, {st.filename!r}{opts})")
 

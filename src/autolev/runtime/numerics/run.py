@@ -189,7 +189,8 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
     system = NumericSystem(model, files, encoded, backend=backend,
                            integrate=integrate_states, implicit=implicit,
                            solved=unknowns if kind in ("algebraic", "nonlinear") else (),
-                           extra=extra)
+                           extra=extra, zero=command.zero if kind == "dynamics" else None,
+                           defined=command.defined)
     if specified:
         system.set_specified({_find_symbol(model, k): v for k, v in specified.items()})
     given_fns = {i for i, _ in system._spec_fns}

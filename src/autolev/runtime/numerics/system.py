@@ -92,8 +92,11 @@ class NumericSystem:
     compiled with the outputs' inputs."""
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
-                 integrate: bool = True, implicit=None, solved=(), extra=None):
+                 integrate: bool = True, implicit=None, solved=(), extra=None,
+                 zero=None, defined=None):
         self.model = m = model
+        self._zero = zero
+        self._defined = defined
         self.backend = backend
         defs = m.defs
         self.aux_fixed = {}
@@ -200,7 +203,8 @@ class NumericSystem:
             speeds = []
             if (m.bodies_list or m.particles_list) and m.newtonian_frame is not None:
                 speeds = m.generalized_speeds()[0]
-            pending = [u for u in speeds if S.derivative(u) not in defs.rhs]
+            known = defs.rhs if self._defined is None else self._defined
+            pending = [u for u in speeds if S.derivative(u) not in known]
             if pending:
                 eqs = m._equations()
                 if set(eqs.speeds) != set(pending):
@@ -209,7 +213,15 @@ class NumericSystem:
                         "are not: KANE() or SOLVE must give all of "
                         + ", ".join(map(str, eqs.speeds)))
                 unknowns = [S.derivative(u) for u in eqs.speeds]
-                mm, f = m.mass_matrix, m.forcing
+                rows = self._dynamics_rows(eqs)
+                if rows is None:
+                    mm, f = m.mass_matrix, m.forcing
+                else:
+                    # ZERO as changed after KANE() (Autolev codes the ZERO it has
+                    # then: tutorial 8 evaluates constants in ZERO after KANE())
+                    mm = [-defs.diff(r, d) for r in rows for d in unknowns]
+                    at0 = {d: 0 for d in unknowns}
+                    f = [defs.substitute(r, at0) for r in rows]
                 dyn = list(mm) + list(f)
         rates: dict = {}
         for d in unknowns:
@@ -222,7 +234,7 @@ class NumericSystem:
                         or sym in self.aux_fixed or sym in rates:
                     continue
                 d = S.derivative(sym)
-                if d in defs.rhs:
+                if d in defs.rhs and (self._defined is None or d in self._defined):
                     rates[sym] = defs.rhs[d]
                 elif d in rates:
                     rates[sym] = d               # Q' integrated too: Q's rate is Q'
@@ -230,6 +242,23 @@ class NumericSystem:
                     continue
                 changed = True
         return rates, unknowns, dyn
+
+    def _dynamics_rows(self, eqs) -> list | None:
+        """The rows of ZERO to solve for the speeds' derivatives, when ZERO (as it
+        stood at CODE time) is not Kane's equations as formed: one row per independent
+        speed, or per independent and auxiliary speed (the first ones are used)."""
+        z = self._zero
+        if z is None:
+            return None
+        z = list(z)
+        n = len(eqs.speeds)
+        if len(z) not in (n, n + len(eqs.auxiliary)):
+            return None
+        z = z[:n]
+        formed = list(eqs.rows[:n, 0])
+        if all(sm.sympify(a - b) == 0 for a, b in zip(z, formed)):
+            return None
+        return z
 
     def _is_specified(self, s) -> bool:
         return self.model.kind_of(S.base_and_order(s)[0]) == "specified"
