@@ -17,24 +17,85 @@ class AlgebraMixin:
         return self.map_scalars(value, lambda e: self.defs.substitute(e, mapping))
 
     def coef(self, value, var):
-        """COEF(E, x): the coefficient of x in E; COEF([E1;E2], [x, y]): the matrix."""
+        """COEF(E, x): the coefficient of x in E (of x^1, through definitions: E may be
+        in Z form); COEF(E, x^2) or COEF(E, x*y): the coefficient of that monomial in
+        the expanded E; COEF([E1;E2], [x, y]): the coefficient matrix."""
         if isinstance(var, (sm.MatrixBase, list, tuple)):
-            vs = list(var)
+            vs = [sm.sympify(v) for v in var]
             col = value if isinstance(value, sm.MatrixBase) else sm.Matrix([value])
-            zero = {v: 0 for v in vs}
-            return sm.Matrix(len(col), len(vs), lambda i, j: self.defs.substitute(
-                self.defs.diff(col[i], vs[j]), zero))
-        return self.map_scalars(value, lambda e: self.defs.substitute(
-            self.defs.diff(e, var), {var: 0}))
+            return sm.Matrix(len(col), len(vs), lambda i, j: self._coef1(col[i], vs[j]))
+        var = sm.sympify(var)
+        return self.map_scalars(value, lambda e: self._coef1(e, var))
+
+    def _coef1(self, e, var):
+        if isinstance(var, sm.Symbol):
+            return self.defs.substitute(self.defs.diff(e, var), {var: 0})
+        if not var.free_symbols:
+            raise AutolevModelError(f"COEF: {var} is a number, not a term to take the "
+                                    "coefficient of")
+        # a monomial: expand (names and Z's kept) and collect the terms holding it,
+        # factors that are free of var's symbols only
+        out = []
+        for term in sm.Add.make_args(sm.expand(sm.sympify(e))):
+            rest = sm.cancel(term / var)
+            if not any(self.defs.depends_on(rest, x) for x in var.free_symbols):
+                out.append(rest)
+        return sm.Add(*out)
+
+    def _terms_free_of(self, e, vs) -> sm.Expr:
+        """The terms of the expanded e free of vs.  A term holding one of vs only
+        inside intermediate variables contributes what is left of it at vs = 0 (the
+        engine's Z's are linear in the speeds' derivatives, which is what EXCLUDE is
+        used to split off)."""
+        out = []
+        for t in sm.Add.make_args(sm.expand(sm.sympify(e))):
+            if not any(self.defs.depends_on(t, v) for v in vs):
+                out.append(t)
+            elif not any(v in t.free_symbols for v in vs):
+                out.append(self.defs.substitute(t, {v: 0 for v in vs}))
+        return sm.Add(*out)
 
     def exclude(self, value, var):
-        """EXCLUDE(E, x): the terms of E free of x."""
+        """EXCLUDE(E, x) (or [x, y]): the terms of the expanded E that do not contain x
+        (through definitions)."""
         vs = list(var) if isinstance(var, (sm.MatrixBase, list, tuple)) else [var]
-        return self.map_scalars(value, lambda e: self.defs.substitute(e, {v: 0 for v in vs}))
+        vs = [sm.sympify(v) for v in vs]
+        return self.map_scalars(value, lambda e: self._terms_free_of(e, vs))
 
     def include(self, value, var):
-        """INCLUDE(E, x): the terms of E that contain x."""
-        return self.map_scalars(value, lambda e: e - self.exclude(e, var))
+        """INCLUDE(E, x): the terms of the expanded E that contain x."""
+        vs = list(var) if isinstance(var, (sm.MatrixBase, list, tuple)) else [var]
+        vs = [sm.sympify(v) for v in vs]
+        return self.map_scalars(
+            value, lambda e: sm.expand(sm.sympify(e)) - self._terms_free_of(e, vs))
+
+    def expand(self, value, lo=None, hi=None):
+        """EXPAND(E): E multiplied out.  EXPAND(E, n:m): only the terms whose degree
+        lies in n..m (EXPAND(E, n): 0..n), the degree counted in the time-varying
+        quantities (variables, specifieds and their derivatives) when E has any,
+        otherwise in all its symbols: a truncation, as of a Taylor series.  (No
+        Autolev source defines the range; this is the reading tutorial 1 fits.)"""
+        if lo is None:
+            return self.map_scalars(value, sm.expand)
+        if hi is None:
+            lo, hi = 0, lo
+        lo, hi = int(lo), int(hi)
+
+        def varying(sym) -> bool:
+            base = S.base_and_order(sym)[0]
+            return self.kind_of(base) in ("variable", "motionvariable", "specified")
+
+        def one(e):
+            e = sm.expand(sm.sympify(e))
+            syms = {s for s in e.free_symbols if varying(s)} or e.free_symbols
+            keep = []
+            for term in sm.Add.make_args(e):
+                powers = term.as_powers_dict()
+                degree = sum(p for b, p in powers.items() if b in syms)
+                if lo <= degree <= hi:
+                    keep.append(term)
+            return sm.Add(*keep)
+        return self.map_scalars(value, one)
 
     def taylor(self, value, order, points):
         """TAYLOR(E, n, x=a, ...) up to total degree n (or degrees lo..hi, given as
@@ -84,9 +145,24 @@ class AlgebraMixin:
             self.define(u, v)
         self.solved = (eqs, unknowns)
 
-    def zee(self, value):
-        """ZEE(E): E in the compact Z form."""
-        return self.map_scalars(value, self.defs.zify)
+    def zee(self, value, *keep):
+        """ZEE(E) / ZEE(E, x): E in the compact Z form, with the names of ZEE_NOT (and
+        x) kept visible: E is written as a sum over the monomials in those names, each
+        with a Z for its coefficient (a name inside a non-polynomial function stays
+        hidden in its Z)."""
+        names = []
+        for k in list(self.settings.get("ZEE_NOT", [])) + list(keep):
+            names += list(k) if isinstance(k, (sm.MatrixBase, list, tuple)) else [k]
+        names = [sm.sympify(n) for n in names]
+
+        def one(e):
+            e = sm.sympify(e)
+            present = [n for n in names if n in e.free_symbols]
+            if not present:
+                return self.defs.zify(e)
+            parts = sm.collect(sm.expand(e), present, evaluate=False)
+            return sm.Add(*[self.defs.zify(c) * m for m, c in parts.items()])
+        return self.map_scalars(value, one)
 
     def zee_not(self, names) -> None:
         """ZEE_NOT = [x, y]: names kept visible (never hidden in a Z)."""

@@ -303,32 +303,43 @@ def degrees_to_radians(x):
 
 
 # -- units ----------------------------------------------------------------------------------
-# value of one unit in SI base units (exact where the definition is exact)
-_UNIT_SI = {
-    "rad": sm.S.One, "radian": sm.S.One, "radians": sm.S.One,
-    "deg": sm.pi / 180, "degree": sm.pi / 180, "degrees": sm.pi / 180, "degs": sm.pi / 180,
-    "rev": 2 * sm.pi, "revs": 2 * sm.pi, "revolution": 2 * sm.pi, "rpm": 2 * sm.pi / 60,
-    "m": sm.S.One, "meter": sm.S.One, "meters": sm.S.One, "metre": sm.S.One,
-    "cm": sm.Rational(1, 100), "mm": sm.Rational(1, 1000), "km": sm.Integer(1000),
-    "in": sm.Rational(254, 10000), "inch": sm.Rational(254, 10000),
-    "ft": sm.Rational(3048, 10000), "foot": sm.Rational(3048, 10000),
-    "feet": sm.Rational(3048, 10000), "mile": sm.Rational(1609344, 1000),
-    "s": sm.S.One, "sec": sm.S.One, "second": sm.S.One, "seconds": sm.S.One,
-    "min": sm.Integer(60), "minute": sm.Integer(60), "hr": sm.Integer(3600),
-    "hour": sm.Integer(3600), "ms": sm.Rational(1, 1000),
-    "kg": sm.S.One, "g": sm.Rational(1, 1000), "gram": sm.Rational(1, 1000),
-    "lbm": sm.Rational(45359237, 100000000), "slug": sm.Rational(145939029372064, 10**13),
-    "n": sm.S.One, "newton": sm.S.One, "newtons": sm.S.One,
-    "lbf": sm.Rational(44482216152605, 10**13), "kip": sm.Rational(44482216152605, 10**10),
-    "j": sm.S.One, "joule": sm.S.One, "joules": sm.S.One, "w": sm.S.One, "watt": sm.S.One,
+# one unit: its value in SI base units (exact where the definition is exact) and its
+# dimension as exponents of (length, mass, time, angle)
+_LBF = sm.Rational(44482216152605, 10**13)        # 0.45359237 kg * 9.80665 m/s^2
+_FT = sm.Rational(3048, 10000)
+_L, _M, _T, _A = (1, 0, 0, 0), (0, 1, 0, 0), (0, 0, 1, 0), (0, 0, 0, 1)
+_FORCE, _ENERGY, _POWER = (1, 1, -2, 0), (2, 1, -2, 0), (2, 1, -3, 0)
+
+
+def _units(names: str, value, dim) -> dict:
+    return {n: (sm.sympify(value), dim) for n in names.split()}
+
+
+_UNITS = {
+    **_units("rad radian radians", 1, _A),
+    **_units("deg degree degrees degs", sm.pi / 180, _A),
+    **_units("rev revs revolution revolutions", 2 * sm.pi, _A),
+    **_units("rpm", 2 * sm.pi / 60, (0, 0, -1, 1)),
+    **_units("m meter meters metre metres", 1, _L),
+    **_units("cm", sm.Rational(1, 100), _L), **_units("mm", sm.Rational(1, 1000), _L),
+    **_units("km", 1000, _L), **_units("in inch inches", sm.Rational(254, 10000), _L),
+    **_units("ft foot feet", _FT, _L), **_units("mile miles", sm.Rational(1609344, 1000), _L),
+    **_units("s sec secs second seconds", 1, _T), **_units("ms", sm.Rational(1, 1000), _T),
+    **_units("min minute minutes", 60, _T), **_units("hr hour hours", 3600, _T),
+    **_units("kg kilogram kilograms", 1, _M), **_units("g gram grams", sm.Rational(1, 1000), _M),
+    **_units("lbm", sm.Rational(45359237, 100000000), _M),
+    **_units("slug slugs", _LBF / _FT, _M),             # lbf*s^2/ft, exactly
+    **_units("n newton newtons", 1, _FORCE), **_units("lbf", _LBF, _FORCE),
+    **_units("kip", _LBF * 1000, _FORCE),
+    **_units("j joule joules", 1, _ENERGY), **_units("w watt watts", 1, _POWER),
 }
 
 
-def unit_value(text: str):
-    """Value of a unit expression (`n*m`, `lbf*ft`, `rad/sec`) in SI base units."""
+def _unit(text: str):
+    """(value in SI, dimension) of a unit expression (`n*m`, `lbf*ft`, `rad/sec^2`)."""
     import re
     tokens = re.findall(r"[A-Za-z_]+|\d+(?:\.\d*)?|[*/^.]", text)
-    value = sm.S.One
+    value, dim = sm.S.One, [0, 0, 0, 0]
     op = "*"
     i = 0
     while i < len(tokens):
@@ -338,22 +349,37 @@ def unit_value(text: str):
             i += 1
             continue
         if tok[0].isdigit():
-            factor = sm.nsimplify(tok)
+            factor, fdim = sm.nsimplify(tok), (0, 0, 0, 0)
         else:
-            factor = _UNIT_SI.get(tok.lower())
-            if factor is None:
+            entry = _UNITS.get(tok.lower())
+            if entry is None:
                 raise AutolevModelError(f"unknown unit '{tok}' in {text}")
+            factor, fdim = entry
+        power = 1
         if i + 2 < len(tokens) and tokens[i + 1] == "^":
-            factor = factor ** int(tokens[i + 2])
+            power = int(tokens[i + 2])
             i += 2
-        value = value * factor if op == "*" else value / factor
+        sign = 1 if op == "*" else -1
+        value = value * factor ** (sign * power)
+        dim = [d + sign * power * e for d, e in zip(dim, fdim)]
         i += 1
-    return value
+    return value, tuple(dim)
+
+
+def unit_value(text: str):
+    """Value of a unit expression in SI base units."""
+    return _unit(text)[0]
 
 
 def units_factor(a: str, b: str):
-    """UNITS(a, b): the number of b in one a (UNITS(deg, rad) = pi/180)."""
-    return unit_value(a) / unit_value(b)
+    """UNITS(a, b): the number of b in one a (UNITS(deg, rad) = pi/180); a and b must
+    measure the same kind of quantity."""
+    va, da = _unit(a)
+    vb, db = _unit(b)
+    if da != db:
+        raise AutolevModelError(f"UNITS({a}, {b}): {a} and {b} do not measure the same "
+                                "kind of quantity")
+    return va / vb
 
 
 __all__ = ["ZERO", "VectorColumn", "dot", "cross", "mag", "unitvec", "express", "vector", "matrix", "dyadic",

@@ -30,7 +30,13 @@ class IOMixin:
         key = target.upper() if isinstance(target, str) else target
         if key not in self.inputs:
             raise AutolevModelError(f"INPUT({target}): no value was input for it")
-        return self.inputs[key][0]
+        value, unit = self.inputs[key]
+        from .numerics.units import is_degrees
+        if is_degrees(unit):
+            # the value the program stores, as Autolev's did: 30 DEG is pi/6; every
+            # other unit (DEG/S too) is a label
+            value = value * sm.pi / 180
+        return value
 
     def output(self, *items) -> None:
         """OUTPUT e1 [unit], e2, ...: one more output file, these columns."""

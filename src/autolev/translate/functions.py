@@ -238,7 +238,8 @@ def _explicit(tr, c):
 def _zee(tr, c):
     args = nargs(tr, c, 1, 2)
     x = tr.expr(args[0])
-    return Typed(f"model.zee({x.code})", x.type)
+    keep = f", {tr.expr(args[1]).code}" if len(args) == 2 else ""
+    return Typed(f"model.zee({x.code}{keep})", x.type)
 
 
 # -- dynamics -------------------------------------------------------------------------
@@ -378,7 +379,7 @@ def _expand(tr, c):
     args = nargs(tr, c, 1, 2)
     x = tr.expr(args[0])
     extra = f", {_degree_range(tr, args[1])}" if len(args) == 2 else ""
-    return Typed(f"al.expand({x.code}{extra})", x.type)
+    return Typed(f"model.expand({x.code}{extra})", x.type)
 
 
 @function("FACTOR")
@@ -540,7 +541,14 @@ def _eig(tr, c):
 @function("UNITS")
 def _units(tr, c):
     a, b = nargs(tr, c, 2)
-    return Typed(f"al.units_factor({_unit_text(tr, a)!r}, {_unit_text(tr, b)!r})", "scalar")
+    ua, ub = _unit_text(tr, a), _unit_text(tr, b)
+    from ..runtime.functions import units_factor
+    from ..runtime.vector import AutolevModelError
+    try:
+        units_factor(ua, ub)              # unknown units and unlike kinds: diagnosed here
+    except AutolevModelError as exc:
+        raise tr.error(str(exc), c) from None
+    return Typed(f"al.units_factor({ua!r}, {ub!r})", "scalar")
 
 
 def _unit_text(tr, e) -> str:
@@ -556,4 +564,4 @@ def _unit_text(tr, e) -> str:
 @function("INPUT")
 def _input(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"model.input_value({tr.expr(a).code})", "scalar")
+    return Typed(f"model.input_value({tr.expr(a).code})", "scalar")  # SI (radians)
