@@ -178,7 +178,12 @@ def cols(m, *selection):
 def eig(m, vectors: bool = False):
     """EIG(M): eigenvalues (numbers), ordered by real part then imaginary part;
     with vectors=True also the unit eigenvectors as the columns of a matrix."""
-    a = np.array(sm.Matrix(m).evalf(), dtype=complex)
+    m = sm.Matrix(m)
+    names = sorted(str(s) for s in m.free_symbols)
+    if names:
+        raise AutolevModelError("EIG needs a matrix of numbers; give values to "
+                                + ", ".join(names) + " first (EVALUATE)")
+    a = np.array(m.evalf(), dtype=complex)
     if a.ndim != 2 or a.shape[0] != a.shape[1]:
         raise AutolevModelError("EIG needs a square matrix of numbers")
     if not np.all(np.isfinite(a)):

@@ -534,7 +534,7 @@ def _element(tr, c):
 @function("EIG")
 def _eig(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"al.eig({_matrix_arg(tr, a, 'EIG').code})", "matrix")
+    return Typed(f"al.eig(model.explicit({_matrix_arg(tr, a, 'EIG').code}))", "matrix")
 
 
 # -- units and inputs ------------------------------------------------------------------

@@ -575,7 +575,7 @@ def _eig_command(tr, c):
             entry = Entry(tr.py_name("value", a.name), "value", "matrix")
             tr.values[key] = entry
         names.append(entry.py)
-    tr.emit(f"{names[0]}, {names[1]} = al.eig({m.code}, vectors=True)")
+    tr.emit(f"{names[0]}, {names[1]} = al.eig(model.explicit({m.code}), vectors=True)")
 
 
 @command("ANIMATE")
