@@ -16,7 +16,7 @@ from .errors import (AutolevError, AutolevFileError, AutolevRuntimeError, Autole
 from .ir import Program
 
 __version__ = "0.1.0"
-__all__ = ["parse", "transpile", "load", "Program", "AutolevError", "AutolevSyntaxError",
+__all__ = ["parse", "transpile", "load", "verify", "Program", "AutolevError", "AutolevSyntaxError",
            "AutolevTranslationError", "AutolevRuntimeError", "AutolevFileError",
            "Diagnostic", "Location", "Span", "__version__"]
 
@@ -63,6 +63,13 @@ def translation(source: str | os.PathLike, filename: str | None = None):
 def transpile(source: str | os.PathLike, filename: str | None = None) -> str:
     """The Python module text of an Autolev model (text, or a path)."""
     return translation(source, filename).code
+
+
+def verify(path: str | os.PathLike, points: int = 3):
+    """Replay the responses recorded in an .all session (or in % -> comments of a .al
+    file) against our translation: a Report (match / mismatch / not comparable each)."""
+    from .verification import verify as _verify
+    return _verify(path, points=points)
 
 
 def load(path: str | os.PathLike):

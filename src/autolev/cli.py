@@ -244,6 +244,41 @@ def _plot(result, out_dir: Path) -> list[Path]:
     return written
 
 
+def cmd_verify(ns: argparse.Namespace) -> int:
+    """Replay Autolev's recorded responses; exit 0 only when every comparable one matches."""
+    import json
+
+    from autolev.verification import verify
+
+    path = Path(ns.file)
+    if not path.is_file():
+        print(f"autolev: error: {path}: no such file", file=sys.stderr)
+        return 2
+    report = verify(path, points=ns.points)
+    if ns.json:
+        print(json.dumps(report.as_dict(), indent=1))
+    else:
+        if report.error:
+            print(f"{path}: {report.error}", file=sys.stderr)
+        for o in report.outcomes:
+            if o.status == "match" and not ns.all:
+                continue
+            r = o.response
+            line = f"{path}:{r.line}: ({r.number}) {r.lhs}: {o.status}: {o.detail}"
+            if o.status == "mismatch":
+                line += f"\n    ours {_short(o.ours)}\n    Autolev's {_short(o.theirs)}"
+            print(line)
+        print(report.summary())
+    return 0 if report.ok else 1
+
+
+def _short(v) -> str:
+    import numpy as np
+    a = np.asarray(v, dtype=complex)
+    a = a.real if np.all(np.abs(a.imag) < 1e-12) else a
+    return np.array2string(a, precision=8, max_line_width=100)
+
+
 def build_parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="autolev",
@@ -298,6 +333,20 @@ def build_parser() -> argparse.ArgumentParser:
                      help="also write a PNG per output file (needs matplotlib)")
     run.add_argument("-q", "--quiet", action="store_true")
     run.set_defaults(func=cmd_run)
+
+    ver = sub.add_parser("verify", help="check a translation against Autolev's responses",
+                         description="Replay the responses Autolev printed (an .all session "
+                         "saved by SAVE, or a .al file with '% ->' response comments): each "
+                         "is compared with our translation's value at the same point of the "
+                         "model, numerically at several values of every name, to the digits "
+                         "Autolev displayed.  Exit status 0 only when every comparable "
+                         "response matches.")
+    ver.add_argument("file", metavar="FILE", help=".all session or .al file")
+    ver.add_argument("--json", action="store_true", help="machine-readable report")
+    ver.add_argument("--all", action="store_true", help="list the matches too")
+    ver.add_argument("--points", type=int, default=3, metavar="N",
+                     help="sample points per response (default 3)")
+    ver.set_defaults(func=cmd_verify)
     return ap
 
 

@@ -187,9 +187,10 @@ class AlgebraMixin:
         return self.defs.zify(m.det(method="bareiss"))
 
     def nicheck(self):
-        """NICHECK(): kinetic energy minus the work done on the system since TINITIAL,
-        sum over r of the integral of F_r u_r; it stays constant along an exact
-        solution, so its drift measures the integration error."""
+        """NICHECK(): kinetic energy minus the work done on the system since TINITIAL
+        (the sum over r of the integral of F_r u_r), written as Autolev's programs and
+        sessions did: KE + WCHECK1 with WCHECK1' = -sum F_r u_r.  It stays constant
+        along an exact solution, so its drift measures the integration error."""
         eqs = self._form(inertia=False)
         power = sm.Add(*[f * u for f, u in zip(eqs.fr, eqs.speeds)])
         work = self._nicheck_work
@@ -199,9 +200,9 @@ class AlgebraMixin:
             name = next(f"WCHECK{k}" for k in range(1, 1000) if f"WCHECK{k}" not in taken)
             work = self.variables(name)
             self._nicheck_work = work
-        self.define(S.derivative(work), self.defs.zify(power))
+        self.define(S.derivative(work), self.defs.zify(-power))
         self.inputs.setdefault(work, (sm.S.Zero, None))
-        return self.ke() - work
+        return self.ke() + work
 
     def setting(self, name: str, value) -> None:
         self.settings[name] = value

@@ -1,0 +1,94 @@
+"""autolev verify: replaying Autolev's recorded responses against our translation."""
+import json
+from pathlib import Path
+
+import pytest
+
+import autolev
+from autolev.cli import main
+from autolev.verification import read_session
+
+DATA = Path(__file__).parent / "data" / "verify"
+
+
+def test_reader_takes_inputs_responses_and_continuation_lines():
+    s = read_session((DATA / "pendulum.all").read_text())
+    assert s.source.splitlines()[1] == "MOTIONVARIABLES' Q{2}', U{2}'"
+    zero1 = next(r for r in s.responses if r.lhs == "ZERO[1]")
+    assert zero1.number == 37 and zero1.expr.endswith("U2')")     # two lines joined
+    assert zero1.after == s.source.splitlines().index("ZERO = FR() + FRSTAR()") + 1
+    forces = [r for r in s.responses if r.lhs.startswith("FORCE_")]
+    assert [r.after for r in forces] == [forces[0].after] * 2     # both after GRAVITY
+
+
+def test_a_correct_session_matches_every_response():
+    report = autolev.verify(DATA / "pendulum.all")
+    assert report.error is None and report.ok
+    assert report.count("match") == 18 and report.count("mismatch") == 0
+    kinds = {o.response.lhs for o in report.outcomes}
+    assert {"N_A", "V_R_N>", "ZERO[2]", "KE", "H>"} <= kinds
+
+
+def test_a_wrong_response_is_a_mismatch_with_both_values(tmp_path):
+    text = (DATA / "pendulum.all").read_text().replace(
+        "-> (23) V_P_N> = L*U1*A2>", "-> (23) V_P_N> = L*U1*A1>")
+    f = tmp_path / "wrong.all"
+    f.write_text(text)
+    report = autolev.verify(f)
+    bad = [o for o in report.outcomes if o.status == "mismatch"]
+    assert [o.response.lhs for o in bad] == ["V_P_N>"] and not report.ok
+    assert bad[0].ours is not None and bad[0].theirs is not None
+
+
+def test_a_deliberately_wrong_translation_is_caught(monkeypatch):
+    import autolev.runtime.model as model_mod
+    real_ke = model_mod.Model.ke
+
+    def doubled(self, *items):          # a translation bug: twice the kinetic energy
+        return 2 * real_ke(self, *items)
+    monkeypatch.setattr(model_mod.Model, "ke", doubled)
+    report = autolev.verify(DATA / "pendulum.all")
+    assert [o.response.lhs for o in report.outcomes if o.status == "mismatch"] == ["KE"]
+
+
+def test_response_comments_in_an_al_file():
+    report = autolev.verify(DATA / "comments.al")
+    assert report.count("match") == 5 and report.ok
+
+
+def test_names_our_model_lacks_are_not_comparable_and_do_not_fail(tmp_path):
+    text = (DATA / "comments.al").read_text() + "% -> W = 2*NOSUCH\n"
+    f = tmp_path / "extra.al"
+    f.write_text(text)
+    report = autolev.verify(f)
+    nc = [o for o in report.outcomes if o.status == "not comparable"]
+    assert len(nc) == 1 and "W" in nc[0].response.lhs and report.ok
+
+
+def test_cli_exit_status_and_json(tmp_path, capsys):
+    assert main(["verify", str(DATA / "pendulum.all")]) == 0
+    assert "18 match, 0 mismatch" in capsys.readouterr().out
+    text = (DATA / "pendulum.all").read_text().replace("0.5*M*L^2", "0.6*M*L^2")
+    f = tmp_path / "bad.all"
+    f.write_text(text)
+    assert main(["verify", str(f), "--json"]) == 1
+    data = json.loads(capsys.readouterr().out)
+    assert data["mismatch"] == 1 and data["match"] == 17
+    ke = next(r for r in data["responses"] if r["name"] == "KE")
+    assert ke["status"] == "mismatch" and abs(ke["ours"] / ke["autolev"] - 5 / 6) < 1e-9
+
+
+def test_a_file_without_responses_is_an_error(tmp_path):
+    f = tmp_path / "plain.al"
+    f.write_text("CONSTANTS A\n")
+    report = autolev.verify(f)
+    assert report.error and not report.ok
+
+
+@pytest.mark.corpus
+def test_every_corpus_session_verifies(corpus):
+    files = sorted(corpus.rglob("*.all"))
+    assert files
+    for f in files:
+        report = autolev.verify(f)
+        assert report.ok and report.count("match") > 100, report.summary()
