@@ -242,14 +242,13 @@ def main() -> int:
     h0 = math.hypot(4.25 * 0.02, 5 * 1 + 0.07634 * -20.0)
     check("T9 H at t=0 by hand (|I.w + J*Omega*A3|)", abs(float(c["H"][0]) - h0) < 1e-6,
           f"{float(c['H'][0]):.6f} vs {h0:.6f} kg*m^2/s")
-    det = ns_det = m.namespace["Det"]
+    det = m.namespace["Det"]
     lam = sm.Symbol("Lambda", real=True)
     roots = sorted((complex(r) for r in sm.Poly(sm.sympify(m.explicit(det)), lam).nroots()),
                    key=lambda z: (z.real, z.imag))
     check("T9 characteristic polynomial (Det/Lambda) of the linearised spin",
           len(roots) == 2 and all(abs(r.real) < 1e-9 for r in roots),
           ", ".join(f"{r:.6f}" for r in roots) + " (pure imaginary: stable spin about A3)")
-    del ns_det
 
     failed = [r for r in results if not r[1]]
     print(f"\n{len(results) - len(failed)}/{len(results)} comparisons agree")

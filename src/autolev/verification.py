@@ -410,6 +410,7 @@ def _build(session: Session, p: Path):
 
 def _compare(model, r: Response, ours, known, session, points, tol) -> Outcome:
     from .runtime.calculus import NumericPoint
+    from .runtime.symbols import TIME
     from .runtime.vector import Dyadic, Vector
 
     defs = model.defs
@@ -455,7 +456,7 @@ def _compare(model, r: Response, ours, known, session, points, tol) -> Outcome:
                     znum[key] = _Parser(z_text[key], scalar, unit_vector).parse()
                 return znum[key]
             if key == "T":
-                return num(__import__("autolev.runtime.symbols", fromlist=["TIME"]).TIME)
+                return num(TIME)
             sym = by_name.get(key)
             if sym is None:
                 raise NotComparable(f"{text} is not a name of our model")
