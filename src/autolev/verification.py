@@ -315,6 +315,7 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
     if model is None:
         report.error = skipped
         return report
+    names = _names_of(model)
     for k, r in enumerate(session.responses):
         if k in skipped:
             # a name the engine made (NICHECK's WCHECK1'): compare with its definition
@@ -323,12 +324,13 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
             if sym is None:
                 report.outcomes.append(Outcome(r, "not comparable", skipped[k]))
                 continue
-            o = _compare(model, r, sym, None, session, points, tolerance)
+            o = _compare(model, names, r, sym, None, session, points, tolerance)
             o.detail += " (a name the engine defines, compared with its definition)"
             report.outcomes.append(o)
             continue
         value, known = captured[k]
-        report.outcomes.append(_compare(model, r, value, known, session, points, tolerance))
+        report.outcomes.append(_compare(model, names, r, value, known, session, points,
+                                        tolerance))
     return report
 
 
@@ -408,18 +410,25 @@ def _build(session: Session, p: Path):
     return None, None, "too many responses our translation cannot capture"
 
 
-def _compare(model, r: Response, ours, known, session, points, tol) -> Outcome:
-    from .runtime.calculus import NumericPoint
-    from .runtime.symbols import TIME
-    from .runtime.vector import Dyadic, Vector
-
+def _names_of(model) -> dict:
+    """Autolev's (upper-case) spelling -> the model's symbol: declared names, defined
+    names and every name their definitions use (built once per verification)."""
     defs = model.defs
-    by_name = {}
+    by_name: dict = {}
     for sym in list(model.info) + list(defs.rhs):
         by_name.setdefault(sym.name.upper(), sym)
     for sym in list(defs.rhs):
         for s in defs.free(sym):
             by_name.setdefault(s.name.upper(), s)
+    return by_name
+
+
+def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> Outcome:
+    from .runtime.calculus import NumericPoint
+    from .runtime.symbols import TIME
+    from .runtime.vector import Dyadic, Vector
+
+    defs = model.defs
     frames = {n.upper(): f for n, f in model.frames_by_name.items()}
     newton = model.newtonian_frame or next(iter(model.frames_by_name.values()), None)
     z_text = {}

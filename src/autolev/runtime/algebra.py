@@ -58,14 +58,12 @@ class AlgebraMixin:
     def exclude(self, value, var):
         """EXCLUDE(E, x) (or [x, y]): the terms of the expanded E that do not contain x
         (through definitions)."""
-        vs = list(var) if isinstance(var, (sm.MatrixBase, list, tuple)) else [var]
-        vs = [sm.sympify(v) for v in vs]
+        vs = _name_list(var)
         return self.map_scalars(value, lambda e: self._terms_free_of(e, vs))
 
     def include(self, value, var):
         """INCLUDE(E, x): the terms of the expanded E that contain x."""
-        vs = list(var) if isinstance(var, (sm.MatrixBase, list, tuple)) else [var]
-        vs = [sm.sympify(v) for v in vs]
+        vs = _name_list(var)
         return self.map_scalars(
             value, lambda e: sm.expand(sm.sympify(e)) - self._terms_free_of(e, vs))
 
@@ -150,10 +148,8 @@ class AlgebraMixin:
         x) kept visible: E is written as a sum over the monomials in those names, each
         with a Z for its coefficient (a name inside a non-polynomial function stays
         hidden in its Z)."""
-        names = []
-        for k in list(self.settings.get("ZEE_NOT", [])) + list(keep):
-            names += list(k) if isinstance(k, (sm.MatrixBase, list, tuple)) else [k]
-        names = [sm.sympify(n) for n in names]
+        names = [n for k in list(self.settings.get("ZEE_NOT", [])) + list(keep)
+                 for n in _name_list(k)]
 
         def one(e):
             e = sm.sympify(e)
@@ -226,3 +222,8 @@ class AlgebraMixin:
         else:
             raise AutolevModelError(f"ANGVEL does not know the rotation type {kind.upper()}")
 
+
+def _name_list(x) -> list:
+    """x, or the entries of a matrix or list x, as sympy expressions."""
+    items = list(x) if isinstance(x, (sm.MatrixBase, list, tuple)) else [x]
+    return [sm.sympify(v) for v in items]

@@ -31,11 +31,12 @@ class IOMixin:
         if key not in self.inputs:
             raise AutolevModelError(f"INPUT({target}): no value was input for it")
         value, unit = self.inputs[key]
+        from .functions import degrees_to_radians
         from .numerics.units import is_degrees
         if is_degrees(unit):
             # the value the program stores, as Autolev's did: 30 DEG is pi/6; every
             # other unit (DEG/S too) is a label
-            value = value * sm.pi / 180
+            value = degrees_to_radians(value)
         return value
 
     def output(self, *items) -> None:
