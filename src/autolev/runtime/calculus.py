@@ -251,6 +251,59 @@ class Definitions:
             self._diff[(s, x)] = self.zify(self._diff_shallow(self.rhs[s], x, self.free(s)))
         return self._diff_shallow(expr, x)
 
+    def jacobian(self, exprs, xs) -> list[list]:
+        """[[d e / d x for x in xs] for e in exprs] through every definition, in one
+        forward pass over the definitions: each definition is differentiated once per
+        symbol it uses that depends on some x (not once per x, as n calls of `diff`
+        would), and its derivatives are combined by the chain rule for all the x's
+        together.  The results also fill `diff`'s cache."""
+        exprs = [sm.sympify(e) for e in exprs]
+        xs = list(xs)
+        xset = set(xs)
+        if any(x in self.rhs for x in xs):      # defined x's: the general route
+            return [[self.diff(e, x) for x in xs] for e in exprs]
+        roots = set()
+        for e in exprs:
+            roots |= {s for s in e.free_symbols if s in self.rhs}
+        order = self._post_order(roots, {}, prune=lambda s: not (self.primitive_deps(s)
+                                                                  & xset))
+        grads: dict = {}          # defined symbol -> {x: derivative (zified)}
+
+        def gradient(expr, fs):
+            acc: dict = {}
+            for f in fs:
+                if f in xset:
+                    parts = {f: sm.S.One}
+                else:
+                    parts = grads.get(f)
+                    if not parts:
+                        continue
+                df = fast_diff(expr, f)
+                if df == 0:
+                    continue
+                for x, g in parts.items():
+                    acc.setdefault(x, []).append(df * g)
+            return {x: sm.Add(*ts) for x, ts in acc.items()}
+
+        for s in order:
+            known = {x: self._diff[(s, x)] for x in xs if (s, x) in self._diff}
+            if len(known) == len(xs):
+                grads[s] = {x: d for x, d in known.items() if d != 0}
+                continue
+            g = gradient(self.rhs[s], self.free_ordered(s))
+            out = {}
+            for x in xs:
+                d = known[x] if x in known else self.zify(g.get(x, sm.S.Zero))
+                self._diff[(s, x)] = d
+                if d != 0:
+                    out[x] = d
+            grads[s] = out
+        rows = []
+        for e in exprs:
+            g = gradient(e, ordered(e.free_symbols))
+            rows.append([g.get(x, sm.S.Zero) for x in xs])
+        return rows
+
     def _diff_shallow(self, expr, x, fs=None) -> sm.Expr:
         """Chain rule one level deep, using the cached derivatives of defined symbols."""
         fs = expr.free_symbols if fs is None else fs

@@ -93,11 +93,14 @@ class IOMixin:
         return results
 
     def simulate(self, *, method: str = "kutta-merson", backend: str = "auto",
-                 infile=None, out_dir=None, specified=None, progress=None, **overrides):
+                 infile=None, out_dir=None, specified=None, progress=None,
+                 compiled: bool = True, **overrides):
         """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
         CODE command, else a plain simulation) with INPUT values, `overrides`
         (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
         ({name: f(t) or f(t, x)}).  Files are written only when out_dir is given.
+        `compiled=False` keeps the integration loop in Python even when the right-hand
+        side is compiled C (Kutta-Merson and DOP853 otherwise run wholly in C).
         Returns a Result (times, states and outputs as numpy arrays)."""
         from .numerics.run import run_command
         command = None
@@ -113,7 +116,7 @@ class IOMixin:
                                   inputs=dict(self.inputs), units=dict(self.unit_of))
         return run_command(self, command, out_dir=out_dir, method=method, backend=backend,
                            infile=infile, specified=specified, progress=progress,
-                           overrides=overrides)
+                           overrides=overrides, compiled=compiled)
 
 
 @dataclass

@@ -214,8 +214,8 @@ def coefficients(rows, unknowns, defs: Definitions) -> tuple[sm.Matrix, sm.Matri
     """(A, r) with rows = A*unknowns + r, for rows linear in the unknowns; both in terms
     of the definitions (A by differentiation, r by setting the unknowns to zero)."""
     rows = list(rows)
-    a = sm.Matrix(len(rows), len(unknowns),
-                  lambda i, j: defs.diff(rows[i], unknowns[j]))
+    jac = defs.jacobian(rows, unknowns)
+    a = sm.Matrix(len(rows), len(unknowns), lambda i, j: jac[i][j])
     zero = {u: 0 for u in unknowns}
     r = sm.Matrix([defs.substitute(e, zero) for e in rows])
     return a, r

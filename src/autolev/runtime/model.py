@@ -671,7 +671,8 @@ class Model(AlgebraMixin, IOMixin):
         eqs = self._equations()
         rows = eqs.rows[:len(eqs.speeds), 0]
         ud = self.speed_derivatives
-        return sm.Matrix(len(ud), len(ud), lambda i, j: -self.defs.diff(rows[i], ud[j]))
+        jac = self.defs.jacobian(rows, ud)
+        return sm.Matrix(len(ud), len(ud), lambda i, j: -jac[i][j])
 
     @property
     def forcing(self) -> sm.Matrix:

@@ -222,9 +222,11 @@ def build_shared_library(source: str, flags: tuple = ("-O2",)) -> Path:
     return lib
 
 
-def compile_c(prog: Program, name: str = "compute"):
-    """A Python callable f(*input_arrays, out) running the compiled C, and the source."""
-    source = c_source(prog, name)
+def compile_c(prog: Program, name: str = "compute", extra_source: str = ""):
+    """A Python callable f(*input_arrays, out) running the compiled C, and the source
+    (with `extra_source` appended: code compiled into the same library, reachable as
+    `call.lib`)."""
+    source = c_source(prog, name) + extra_source
     lib = ctypes.CDLL(str(build_shared_library(source)))
     fn = getattr(lib, name)
     ptr = ctypes.POINTER(ctypes.c_double)

@@ -19,6 +19,7 @@ Integrators:
 """
 from __future__ import annotations
 
+import math
 import time as _time
 from dataclasses import dataclass
 
@@ -93,6 +94,8 @@ class KuttaMerson:
         self.numcuts = 20
         self.evaluations = 0
         self.steps = 0
+        self.stiff_t = None                 # time at which the stiffness test fired
+        self._iasti = self._nonsti = 0
 
     def advance(self, y: np.ndarray, t: float, integstp: float) -> tuple[np.ndarray, float]:
         """Advance y from t by exactly integstp (several adaptive steps)."""
@@ -115,10 +118,12 @@ class KuttaMerson:
                     f"the step size {h:.14E} is too small relative to the time {tt:.14E}; "
                     "integration halted because of numerical round-off", tt, y)
             h2, h3, h6, h8 = h * 0.5, h / 3.0, h / 6.0, h * 0.125
-            y1 = y + h3 * f0
+            ya = y + h3 * f0
+            fa = f(tt - 2.0 * h3, ya)
+            y1 = y + h6 * (f0 + fa)
             f1 = f(tt - 2.0 * h3, y1)
-            y1 = y + h6 * (f0 + f1)
-            f1 = f(tt - 2.0 * h3, y1)
+            lden = float(np.dot(y1 - ya, y1 - ya))
+            f1s = f1
             y1 = y + h8 * (f0 + 3.0 * f1)
             f2 = f(tt - h2, y1)
             y1 = y + h2 * (f0 - 3.0 * f1 + 4.0 * f2)
@@ -140,6 +145,9 @@ class KuttaMerson:
             if not np.all(np.isfinite(y2)):
                 raise IntegrationFailure(f"the state is not finite at T = {tt:.6g}", tt - h, y)
             self.steps += 1
+            if lden > 0:
+                self._stiffness(abs(h) * math.sqrt(float(np.dot(f1s - fa, f1s - fa)) / lden),
+                                tt)
             double = not np.any((64.0 * error > test) & (64.0 * error > abserr))
             y = y2
             if double and abs(h + h) <= abs(integstp) and abs(tt + h + h) <= abs(tfinal):
@@ -152,6 +160,19 @@ class KuttaMerson:
                 h = tfinal - (tt - h)
                 tt = tfinal
             f0 = f1
+
+
+    def _stiffness(self, hlamb: float, t: float) -> None:
+        """loop.c's al_stiff_count with Kutta-Merson's limit."""
+        if hlamb > 1.75:
+            self._nonsti = 0
+            self._iasti += 1
+            if self._iasti >= 15 and self.stiff_t is None:
+                self.stiff_t = t
+        else:
+            self._nonsti += 1
+            if self._nonsti >= 6:
+                self._iasti = 0
 
 
 class Progress:
@@ -190,9 +211,15 @@ class Progress:
 
 
 def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
-              relerr: float, on_row, progress: Progress | None = None) -> dict:
+              relerr: float, on_row, progress: Progress | None = None, loop=None,
+              on_stiff=None) -> dict:
     """Integrate y' = f(t, y) on the schedule, calling on_row(t, y) at print times.
-    Raises IntegrationFailure (after the rows up to then were given)."""
+    Raises IntegrationFailure (after the rows up to then were given).
+
+    `loop`: a CompiledLoop of the same right-hand side; Kutta-Merson and DOP853 then
+    run in C (the same steps).  `on_stiff(t, hlamb)`: called when the compiled DOP853
+    finds the equations stiff at time t; if it returns a scipy method name the run
+    goes on from there with that method, else DOP853 goes on."""
     schedule.check()
     y = np.array(y0, dtype=float)
     t = schedule.tinitial
@@ -200,6 +227,15 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
     if not np.all(np.isfinite(f(t, y))):
         raise IntegrationFailure(f"the derivatives are not finite at T = {t:.6g}", t, y)
     on_row(t, y)
+    if loop is not None and method in ("kutta-merson", "dop853"):
+        return _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row,
+                                   progress, on_stiff)
+    return _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
+                             stats)
+
+
+def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
+                      stats) -> dict:
     if method == "kutta-merson":
         km = KuttaMerson(f, len(y), abserr, relerr)
         for t_next, printed in schedule.steps():
@@ -208,6 +244,8 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
             finally:
                 stats["evaluations"] = km.evaluations
                 stats["steps"] = km.steps
+                if km.stiff_t is not None:
+                    stats["stiff_t"] = km.stiff_t
             t = t_next                     # Autolev's accumulated T
             if printed:
                 on_row(t, y)
@@ -218,6 +256,13 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
     if name is None:
         raise ValueError(f"unknown integrator {method!r} (one of {', '.join(METHODS)})")
     times = [tp for tp, printed in schedule.steps() if printed]
+    return _scipy_rows(f, y, t, times, name, schedule, abserr, relerr, on_row, progress,
+                       stats)
+
+
+def _scipy_rows(f, y, t, times, name, schedule, abserr, relerr, on_row, progress,
+                stats) -> dict:
+    """Rows at `times` (after t) from a scipy solver started at (t, y)."""
     if not times:
         return stats
     t_end = times[-1]
@@ -251,3 +296,65 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
                 on_row(tk, solver.y.copy())
             break
     return stats
+
+
+def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, progress,
+                        on_stiff) -> dict:
+    from . import cloop
+    t0 = schedule.tinitial
+    opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
+            "max_step": abs(schedule.integstp)}
+    if method == "kutta-merson":
+        steps = list(schedule.steps())
+        times = [tp for tp, _ in steps]
+        printed = [1 if p else 0 for _, p in steps]
+    else:
+        times = [tp for tp, p in schedule.steps() if p]
+        printed = None
+    if not times:
+        return {"method": method, "evaluations": 0, "steps": 0, "compiled": True}
+
+    def on_rows(ts, rows):
+        for tk, yk in zip(ts, rows):
+            on_row(float(tk), yk)
+
+    out = loop.run(method, y, times, printed, opts, on_rows, progress,
+                   stiff_stop=on_stiff is not None)
+    stats = dict(out["stats"], method=method, compiled=True)
+    r, tf, hf = out["status"], out["fail_t"], out["fail_h"]
+    if out["stiff_t"] == out["stiff_t"]:
+        stats["stiff_t"] = out["stiff_t"]
+    if r == cloop.DONE:
+        return stats
+    if r == cloop.STIFF:
+        switch = on_stiff(out["stiff_t"], out["hlamb"])
+        done = [tk for tk in times if (tk - out["t"]) * (times[-1] - t0) <= 0]
+        rest = times[len(done):]
+        if switch is None:       # go on with DOP853 (scipy's, from the same state)
+            switch = "dop853"
+        stats["switched_to"] = switch
+        more = {"method": switch, "evaluations": 0, "steps": 0}
+        _scipy_rows(f, out["y"], out["t"], rest, SCIPY_METHODS[switch], schedule, abserr,
+                    relerr, on_row, progress, more)
+        stats["evaluations"] += more["evaluations"]
+        stats["steps"] += more["steps"]
+        return stats
+    y_last = out["y"]
+    if r == cloop.SINGULAR:
+        raise IntegrationFailure(f"the mass matrix is singular at T = {tf:.6g}", tf,
+                                 loop.yfail)
+    if r == cloop.CUTS:
+        raise IntegrationFailure(
+            f"the step size has been halved too many times at T = {tf:.4E}", tf, y_last)
+    if r == cloop.SMALL_STEP:
+        if method == "kutta-merson":
+            raise IntegrationFailure(
+                f"the step size {hf:.14E} is too small relative to the time {tf:.14E}; "
+                "integration halted because of numerical round-off", tf, y_last)
+        raise IntegrationFailure(f"DOP853 failed at T = {tf:.6g}: Required step size is "
+                                 "less than spacing between numbers.", tf, y_last)
+    if r == cloop.NONFINITE:
+        shown = tf + hf if method == "kutta-merson" else tf
+        raise IntegrationFailure(f"the state is not finite at T = {shown:.6g}", tf, y_last)
+    raise IntegrationFailure(f"the compiled integrator stopped with code {r}", out["t"],
+                             y_last)

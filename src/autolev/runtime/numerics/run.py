@@ -158,7 +158,7 @@ def _unknowns(args, what: str) -> tuple[list, list]:
 # -- running --------------------------------------------------------------------------------
 def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                 backend: str = "auto", infile=None, specified=None, progress=None,
-                overrides=None) -> Result:
+                overrides=None, compiled: bool = True) -> Result:
     """Run one CODE command; files go to out_dir (None: no files)."""
     kind = command.kind
     stem = safe_stem(command.filename)
@@ -177,7 +177,7 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
     elif kind == "algebraic" and equations:
         defs = model.defs
         zero = {u: 0 for u in unknowns}
-        extra = {"linear": [defs.diff(e, u) for e in equations for u in unknowns]
+        extra = {"linear": [d for row in defs.jacobian(equations, unknowns) for d in row]
                  + [defs.substitute(e, zero) for e in equations]}
     elif kind == "nonlinear":
         if not equations:
@@ -185,7 +185,8 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                                     "CODE NONLINEAR(EQ, x, y) file")
         defs = model.defs
         extra = {"residual": list(equations),
-                 "jacobian": [defs.diff(e, u) for e in equations for u in unknowns]}
+                 "jacobian": [d for row in defs.jacobian(equations, unknowns)
+                              for d in row]}
     system = NumericSystem(model, files, encoded, backend=backend,
                            integrate=integrate_states, implicit=implicit,
                            solved=unknowns if kind in ("algebraic", "nonlinear") else (),
@@ -250,7 +251,8 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                                              [c.unit for c in cols]) for cols in files])
     try:
         if integrate_states:
-            _run_dynamics(system, inputs, result, writer, method, progress, zero_params)
+            _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
+                          compiled)
         else:
             _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
                            zero_params)
@@ -343,7 +345,26 @@ def _tables(system, rows, stem: str) -> list[OutputTable]:
     return out
 
 
-def _run_dynamics(system, inputs, result, writer, method, progress, zero_params) -> None:
+def _on_stiff(t: float, hlamb: float) -> str:
+    warnings.warn(f"the equations are stiff from T = {t:.6g} (step size times the largest "
+                  f"eigenvalue ~ {hlamb:.3g}, beyond DOP853's stability): going on with "
+                  "LSODA (an implicit method when stiff); ask for --method radau or lsoda "
+                  "from the start to avoid the switch", stacklevel=2)
+    return "lsoda"
+
+
+def _stiff_note(stats: dict, method: str) -> None:
+    t = stats.get("stiff_t")
+    if t is None or stats.get("switched_to"):
+        return
+    warnings.warn(f"the equations are stiff from T = {t:.6g}: {method}'s steps are limited "
+                  "by its stability, not by the error asked for (a slow run); an implicit "
+                  "method (--method lsoda or radau; method='lsoda') takes far fewer steps",
+                  stacklevel=3)
+
+
+def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
+                  compiled: bool = True) -> None:
     if not system.nstate:
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
@@ -373,8 +394,11 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params)
     bar = Progress(sys.stderr if progress is None else progress, sched.tinitial,
                    sched.tfinal, enabled=progress is not False and progress is not None)
     try:
+        loop = system.loop if compiled and not system._spec_fns else None
         result.stats = integrate(f, y0, sched, method, inputs.internal("ABSERR"),
-                                 inputs.internal("RELERR"), on_row, bar)
+                                 inputs.internal("RELERR"), on_row, bar, loop=loop,
+                                 on_stiff=_on_stiff if method == "dop853" else None)
+        _stiff_note(result.stats, method)
     except IntegrationFailure as exc:
         on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
         state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, exc.y))

@@ -21,13 +21,12 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
-import scipy.linalg.lapack
 import sympy as sm
 
 from .. import symbols as S
 from ..errors import AutolevModelError
 from . import codegen
+from .cloop import LOOP_SOURCE, CompiledLoop
 
 
 def alphabetical(syms) -> list:
@@ -50,10 +49,11 @@ class Function:
     source: str
 
 
-def compile_program(prog: codegen.Program, backend: str, name: str) -> Function:
+def compile_program(prog: codegen.Program, backend: str, name: str,
+                    extra_source: str = "") -> Function:
     if backend in ("auto", "c") and codegen.compiler() is not None:
         try:
-            fn, src = codegen.compile_c(prog, name)
+            fn, src = codegen.compile_c(prog, name, extra_source)
             return Function(fn, "c", src)
         except codegen.CompileError as exc:
             if backend == "c":
@@ -162,10 +162,17 @@ class NumericSystem:
         # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
         out_backend = backend if integrate else "python"
         self.rhs_function = None
+        self.loop = None
+        self._unknown_pos = [self.states.index(_lower(d)) for d in unknowns]
         if self.nstate:
+            # the C right-hand side carries the integration loop (loop.c) with it
             self.rhs_function = compile_program(
                 codegen.Program(inputs, rhs_exprs, defs, fixed).build(), backend,
-                "autolev_rhs")
+                "autolev_rhs", extra_source="\n" + LOOP_SOURCE)
+            if self.rhs_function.backend == "c":
+                call = self.rhs_function.call
+                self.loop = CompiledLoop(call.lib, self.nstate, self._unknown_pos,
+                                         call.work, len(rhs_exprs))
         inputs_out = dict(inputs, a=accel_inputs)
         self.output_function = compile_program(
             codegen.Program(inputs_out, out_exprs, defs, fixed).build(), out_backend,
@@ -175,7 +182,6 @@ class NumericSystem:
                                 f"autolev_{k}"), len(v))
             for k, v in extra.items()}
         self._rhs_out = np.empty(len(rhs_exprs))
-        self._unknown_pos = [self.states.index(_lower(d)) for d in unknowns]
         self._c = None
         self._s = np.zeros(len(self.specified))
         self._spec_fns: list = []
@@ -194,7 +200,7 @@ class NumericSystem:
             if len(eqs) != len(unknowns):
                 raise AutolevModelError(f"CODE ODE: {len(eqs)} equations for "
                                         f"{len(unknowns)} unknowns")
-            mm = [-defs.diff(e, d) for e in eqs for d in unknowns]
+            mm = [-d for row in defs.jacobian(eqs, unknowns) for d in row]
             zero = {d: 0 for d in unknowns}
             f = [defs.substitute(e, zero) for e in eqs]
             dyn = mm + f
@@ -219,7 +225,7 @@ class NumericSystem:
                 else:
                     # ZERO as changed after KANE() (Autolev codes the ZERO it has
                     # then: tutorial 8 evaluates constants in ZERO after KANE())
-                    mm = [-defs.diff(r, d) for r in rows for d in unknowns]
+                    mm = [-d for row in defs.jacobian(rows, unknowns) for d in row]
                     at0 = {d: 0 for d in unknowns}
                     f = [defs.substitute(r, at0) for r in rows]
                 dyn = list(mm) + list(f)
@@ -304,6 +310,8 @@ class NumericSystem:
         if len(cd):
             self.constants_function.call(p, cd)
         self._c = np.concatenate([p, cd])
+        if self.loop is not None:
+            self.loop.set_values(self._c, self._s)
 
     def set_specified(self, functions: dict) -> None:
         """{symbol: callable f(t) or f(t, x)} for undefined specified quantities."""
@@ -330,8 +338,13 @@ class NumericSystem:
 
     def derivatives(self, t: float, x: np.ndarray) -> np.ndarray:
         """State derivatives at (t, x): a fresh array."""
-        out = self._rhs_out
         s = self._fill_specified(t, x) if self._spec_fns else self._s
+        if self.loop is not None:
+            xdot, status = self.loop.derivatives(t, x)
+            if status:
+                raise SingularMassMatrix(t)
+            return xdot
+        out = self._rhs_out
         self.rhs_function.call(np.array([t]), x, self._c, s, out)
         ns = self.nstate
         xdot = out[:ns].copy()
@@ -381,20 +394,42 @@ def _lower(d):
 
 
 def solve_mass_matrix(mm: np.ndarray, f: np.ndarray, t: float) -> np.ndarray:
-    """u' from M u' = f by LU with partial pivoting (LAPACK dgetrf/dgetrs)."""
-    if mm.shape == (1, 1):
+    """u' from M u' = f by Gaussian elimination with partial pivoting: the operations
+    of loop.c's solve in the same order, so that the Python and C back ends give the
+    same numbers.  SingularMassMatrix when a pivot is exactly zero."""
+    m = len(f)
+    if m == 1:
         if mm[0, 0] == 0 or not np.isfinite(mm[0, 0]):
             raise SingularMassMatrix(t)
         return f / mm[0, 0]
-    lu, piv, info = _getrf(mm)
-    if info != 0:
-        raise SingularMassMatrix(t)
-    x, info = _getrs(lu, piv, f)
-    return x
-
-
-_getrf, _getrs = scipy.linalg.lapack.get_lapack_funcs(("getrf", "getrs"),
-                                                        (np.zeros((2, 2)),))
+    a = np.array(mm, dtype=float)
+    b = [float(v) for v in f]
+    for k in range(m):
+        col = np.abs(a[k:, k]).tolist()
+        p, amax = k, col[0]
+        for i in range(1, m - k):
+            if col[i] > amax:
+                p, amax = k + i, col[i]
+        if amax == 0.0:
+            raise SingularMassMatrix(t)
+        if p != k:
+            a[[k, p]] = a[[p, k]]
+            b[k], b[p] = b[p], b[k]
+        piv = a[k, k]
+        for i in range(k + 1, m):
+            li = a[i, k] / piv
+            if li != 0.0:
+                a[i, k + 1:] -= li * a[k, k + 1:]
+                b[i] -= li * b[k]
+    x = [0.0] * m
+    rows = a.tolist()
+    for i in range(m - 1, -1, -1):
+        acc = b[i]
+        ri = rows[i]
+        for j in range(i + 1, m):
+            acc -= ri[j] * x[j]
+        x[i] = acc / ri[i]
+    return np.array(x)
 
 
 def _as_time_state_function(fn):

@@ -1,0 +1,164 @@
+"""The compiled integration loop (loop.c) driven from Python.
+
+A model's right-hand side is compiled together with loop.c into one library; this
+module holds the evaluation context (the arrays the C code reads and writes, kept
+alive here) and runs Autolev's Kutta-Merson or DOP853 over the whole print grid in
+C, a slice of right-hand-side calls at a time so that progress can be shown.  The
+rows, the failures and their messages are those of the Python loops in
+integrate.py; the same steps are taken (tests compare the two).
+"""
+from __future__ import annotations
+
+import ctypes
+import math
+import time as _time
+from pathlib import Path
+
+import numpy as np
+
+LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
+
+# return codes and the layout of st[] / opts[] (loop.c's enums)
+DONE, MORE, SINGULAR, SMALL_STEP, CUTS, NONFINITE, STIFF = range(7)
+(ST_T, ST_H, ST_NUMCUTS, ST_NFEV, ST_NSTEP, ST_NREJ, ST_ROW, ST_STARTED, ST_HAVE_STEP,
+ ST_TOLD, ST_HPREV, ST_FAIL_T, ST_FAIL_H, ST_IASTI, ST_NONSTI, ST_STIFF_T, ST_HLAMB,
+ ST_KMROWS) = range(18)
+ST_SIZE = 24
+OP_RTOL, OP_ATOL, OP_MAXSTEP, OP_TBOUND, OP_STIFF_STOP, OP_BUDGET, OP_INTEGSTP = range(7)
+
+METHOD_CODES = {"kutta-merson": 0, "dop853": 1}
+
+_P = ctypes.c_void_p
+
+
+class _Context(ctypes.Structure):
+    _fields_ = [("n", ctypes.c_int), ("m", ctypes.c_int), ("upos", _P), ("c", _P),
+                ("s", _P), ("w", _P), ("out", _P), ("lu", _P), ("b", _P),
+                ("yfail", _P), ("nfev", ctypes.c_double)]
+
+
+def _dop853_table() -> np.ndarray:
+    """The Dormand-Prince 8(5,3) tables (A 16x16, B, C, E3, E5, D 4x16) as one array,
+    from scipy's published coefficients."""
+    from scipy.integrate._ivp import dop853_coefficients as k
+    n, ne = k.N_STAGES, k.N_STAGES_EXTENDED
+    a = np.zeros((ne, ne))
+    a[:, :] = k.A[:ne, :ne]
+    parts = [a.ravel(), np.asarray(k.A[n, :n], float), np.asarray(k.C[:ne], float),
+             np.asarray(k.E3, float), np.asarray(k.E5, float), np.asarray(k.D, float).ravel()]
+    assert parts[3].size == n + 1 and parts[5].size == 4 * ne
+    return np.ascontiguousarray(np.concatenate(parts))
+
+
+_TABLE = None
+
+
+def _table() -> np.ndarray:
+    global _TABLE
+    if _TABLE is None:
+        _TABLE = _dop853_table()
+    return _TABLE
+
+
+class CompiledLoop:
+    """Evaluation and integration in C for one NumericSystem (its rhs library)."""
+
+    def __init__(self, lib, nstate: int, unknown_pos, work: np.ndarray, nout: int):
+        self.lib = lib
+        self.n = nstate
+        self.m = len(unknown_pos)
+        self._upos = np.ascontiguousarray(unknown_pos, dtype=np.intc)
+        self._w = work
+        self._out = np.zeros(max(1, nout))
+        self._lu = np.zeros(max(1, self.m * self.m))
+        self._b = np.zeros(max(1, self.m))
+        self.yfail = np.zeros(max(1, nstate))
+        self._c = np.zeros(1)
+        self._s = np.zeros(1)
+        ctx = self.ctx = _Context()
+        ctx.n, ctx.m = nstate, self.m
+        ctx.upos = self._upos.ctypes.data
+        ctx.w = work.ctypes.data
+        ctx.out = self._out.ctypes.data
+        ctx.lu = self._lu.ctypes.data
+        ctx.b = self._b.ctypes.data
+        ctx.yfail = self.yfail.ctypes.data
+        self._ctx_ref = ctypes.byref(ctx)
+        fn = lib.autolev_derivatives
+        fn.argtypes = [_P, ctypes.c_double, _P, _P]
+        fn.restype = ctypes.c_int
+        self._deriv = fn
+        fn = lib.autolev_integrate
+        fn.argtypes = [_P, ctypes.c_int, _P, _P, _P, ctypes.c_int, _P, _P, _P, _P, _P, _P]
+        fn.restype = ctypes.c_int
+        self._integrate = fn
+
+    def set_values(self, c: np.ndarray, s: np.ndarray) -> None:
+        """The constants and specifieds the evaluations read (kept referenced here)."""
+        self._c = np.ascontiguousarray(c, dtype=float) if len(c) else np.zeros(1)
+        self._s = s if len(s) else np.zeros(1)
+        self.ctx.c = self._c.ctypes.data
+        self.ctx.s = self._s.ctypes.data
+
+    def derivatives(self, t: float, x: np.ndarray) -> tuple[np.ndarray, int]:
+        """(x', status): status 0, or SINGULAR (then self.yfail is x)."""
+        x = np.ascontiguousarray(x, dtype=float)
+        xdot = np.empty(self.n)
+        r = self._deriv(self._ctx_ref, t, x.ctypes.data, xdot.ctypes.data)
+        return xdot, r
+
+    def run(self, method: str, y0, times, printed, opts: dict, on_rows, progress=None,
+            stiff_stop: bool = False, budget: float = 2000.0, adapt: bool = True) -> dict:
+        """Integrate from y0 at opts['t0'].  Kutta-Merson: `times` are the T after
+        every INTEGSTP step and `printed` flags the printed ones; DOP853: `times` are
+        the print times.  on_rows(t_array, rows) gets the rows of each slice.
+        `budget`: right-hand-side calls in the first slice (later slices are sized to
+        about 0.1 s each unless `adapt` is false).
+        Returns a dict: status, t (of the last accepted state), y, stats, fail_t,
+        fail_h, stiff_t, hlamb."""
+        code = METHOD_CODES[method]
+        n = self.n
+        y = np.array(y0, dtype=float)
+        times = np.ascontiguousarray(times, dtype=float)
+        flags = np.ascontiguousarray(printed if printed is not None else
+                                     np.ones(len(times)), dtype=np.intc)
+        nrows = int(flags.sum()) if code == 0 else len(times)
+        rows = np.zeros((max(1, nrows), n))
+        rtimes = np.zeros(max(1, nrows))
+        st = np.zeros(ST_SIZE)
+        st[ST_T] = opts["t0"]
+        st[ST_NUMCUTS] = 20
+        st[ST_STIFF_T] = math.nan
+        op = np.zeros(8)
+        op[OP_RTOL], op[OP_ATOL] = opts["rtol"], opts["atol"]
+        op[OP_MAXSTEP] = opts.get("max_step", math.inf)
+        op[OP_TBOUND] = times[-1] if len(times) else opts["t0"]
+        op[OP_STIFF_STOP] = 1.0 if stiff_stop else 0.0
+        op[OP_INTEGSTP] = opts.get("integstp", 0.0)
+        work = np.zeros((16 + 8 + 7) * max(1, n))      # DOP853: 29 n, Kutta-Merson: 7 n
+        table = _table()
+        done_rows = 0
+        args = (self._ctx_ref, code, y.ctypes.data, st.ctypes.data, op.ctypes.data,
+                len(times), times.ctypes.data, flags.ctypes.data, rows.ctypes.data,
+                rtimes.ctypes.data, work.ctypes.data, table.ctypes.data)
+        while True:
+            op[OP_BUDGET] = budget
+            start = _time.perf_counter()
+            r = self._integrate(*args)
+            elapsed = _time.perf_counter() - start
+            written = int(st[ST_KMROWS] if code == 0 else st[ST_ROW])
+            if written > done_rows:
+                t_rows = rtimes[done_rows:written] if code == 0 else times[done_rows:written]
+                on_rows(np.array(t_rows), rows[done_rows:written].copy())
+                done_rows = written
+            if progress is not None:
+                progress.update(st[ST_T])
+            if r != MORE:
+                break
+            if adapt:       # slices of about a tenth of a second
+                budget = min(max(200.0, budget * (0.1 / max(elapsed, 1e-6))), 1e7)
+        stats = {"evaluations": int(st[ST_NFEV]), "steps": int(st[ST_NSTEP]),
+                 "rejected": int(st[ST_NREJ])}
+        return {"status": r, "t": float(st[ST_T]), "y": y, "stats": stats,
+                "fail_t": float(st[ST_FAIL_T]), "fail_h": float(st[ST_FAIL_H]),
+                "stiff_t": float(st[ST_STIFF_T]), "hlamb": float(st[ST_HLAMB])}

@@ -1,0 +1,158 @@
+"""The compiled integration loop (loop.c): the same steps, rows and failures as the
+Python loops, stiffness detection, and the C solve of Kane's equations."""
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import autolev
+from autolev.runtime.numerics import codegen
+
+HERE = Path(__file__).parent
+DATA = HERE / "data" / "numerics"
+EXAMPLES = HERE.parent / "autolev_examples"
+
+pytestmark = pytest.mark.skipif(codegen.compiler() is None, reason="needs a C compiler")
+
+
+def load(name):
+    path = DATA / f"{name}.al" if (DATA / f"{name}.al").exists() else EXAMPLES / f"{name}.al"
+    return autolev.load(path)
+
+
+def run(model, **kw):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return model.simulate(**kw)
+
+
+@pytest.mark.parametrize("name", ["double_pendulum", "fourbar", "rolling_disc",
+                                  "euler_parameters_body"])
+def test_kutta_merson_in_c_takes_exactly_the_python_steps(name):
+    m = load(name)
+    a = run(m, TFINAL=2, compiled=True)
+    b = run(m, TFINAL=2, compiled=False)
+    assert a.stats.get("compiled") and not b.stats.get("compiled")
+    assert a.stats["evaluations"] == b.stats["evaluations"]
+    assert a.stats["steps"] == b.stats["steps"]
+    assert np.array_equal(a.t, b.t)
+    assert np.array_equal(a.states, b.states)
+    for ta, tb in zip(a.outputs, b.outputs):
+        assert np.array_equal(ta.data, tb.data)
+
+
+@pytest.mark.parametrize("name", ["double_pendulum", "nlink_pendulum", "rolling_disc"])
+def test_dop853_in_c_takes_scipys_steps(name):
+    m = load(name)
+    kw = dict(TFINAL=3, ABSERR=1e-9, RELERR=1e-9, method="dop853")
+    a = run(m, compiled=True, **kw)
+    b = run(m, compiled=False, **kw)
+    assert a.stats["evaluations"] == b.stats["evaluations"]
+    assert a.stats["steps"] == b.stats["steps"]
+    assert np.array_equal(a.t, b.t)
+    # the same formulas summed in another order: differences at rounding level
+    scale = np.abs(b.states).max()
+    assert np.abs(a.states - b.states).max() < 1e-10 * scale
+
+
+def test_c_solve_of_kanes_equations_matches_the_python_solve():
+    m = load("nlink_pendulum")
+    system = run(m, TFINAL=0.1).system
+    ns, n = system.nstate, system._n
+    rng = np.random.default_rng(1)
+    for _ in range(5):
+        x = rng.uniform(-2, 2, ns)
+        c_dot = system.derivatives(0.3, x)
+        loop = system.loop
+        system.loop = None
+        try:
+            py_dot = system.derivatives(0.3, x)
+        finally:
+            system.loop = loop
+        assert np.array_equal(c_dot, py_dot)
+        # and both solve M u' = f (M and f as the generated function gives them)
+        out = np.empty(ns + n * n + n)
+        system.rhs_function.call(np.array([0.3]), x, system._c, system._s, out)
+        mm, f = out[ns:ns + n * n].reshape(n, n), out[ns + n * n:]
+        assert np.allclose(mm @ c_dot[system._unknown_pos], f, rtol=1e-12, atol=1e-12)
+
+
+def test_halving_failure_is_the_same_in_c_and_python():
+    m = load("stiff")
+    a = run(m, compiled=True)
+    b = run(m, compiled=False)
+    assert not a.ok and not b.ok
+    assert a.failure == b.failure
+    assert a.failure_time == b.failure_time
+    assert np.array_equal(a.states, b.states)
+
+
+def test_singular_mass_matrix_stops_both_loops_at_the_same_place():
+    m = load("zero_inputs")               # L = 0: M = m L^2 = 0
+    a = run(m, compiled=True)
+    b = run(m, compiled=False)
+    assert not a.ok and "singular" in a.failure
+    assert a.failure == b.failure
+    assert np.array_equal(a.states, b.states)
+
+
+@pytest.mark.parametrize("method", ["kutta-merson", "dop853"])
+def test_slices_of_a_long_run_continue_exactly_where_they_stopped(method):
+    m = load("double_pendulum")
+    system = run(m, TFINAL=0.1).system
+    y0 = np.array([0.5, 1.0, 0.0, 0.0])
+    sched = autolev.runtime.numerics.integrate.Schedule(0.0, 20.0, 0.1, 1)
+    if method == "kutta-merson":
+        steps = list(sched.steps())
+        times, printed = [t for t, _ in steps], [1] * len(steps)
+    else:
+        times, printed = [t for t, p in sched.steps() if p], None
+    opts = dict(t0=0.0, rtol=1e-10, atol=1e-10, integstp=0.1, max_step=0.1)
+
+    def collect(budget):
+        got = []
+        out = system.loop.run(method, y0, times, printed, opts,
+                              lambda ts, rows: got.append((ts, rows)), budget=budget,
+                              adapt=False)
+        assert out["status"] == 0
+        return got, out
+    sliced, a = collect(50.0)
+    whole, b = collect(1e9)
+    assert len(sliced) > 20 and len(whole) == 1
+    assert np.array_equal(np.concatenate([ts for ts, _ in sliced]), whole[0][0])
+    assert np.array_equal(np.concatenate([r for _, r in sliced]), whole[0][1])
+    assert a["stats"] == b["stats"]
+
+
+def test_stiff_equations_are_detected_and_handed_to_an_implicit_method():
+    m = load("stiff_forced")
+    with pytest.warns(UserWarning, match=r"stiff from T = .*LSODA"):
+        r = m.simulate(method="dop853")
+    assert r.ok
+    assert r.stats["switched_to"] == "lsoda"
+    assert r.stats["stiff_t"] < 0.01            # found within the first steps
+    assert np.abs(r.states[:, 0] - np.cos(r.t)).max() < 1e-6
+    # DOP853 alone would need about LAMBDA/6 steps per second; the switch keeps the
+    # whole run far below that
+    assert r.stats["evaluations"] < 20000
+
+
+def test_kutta_merson_names_the_stiffness_it_crawls_through_in_both_loops():
+    m = load("stiff_forced")
+    kw = dict(TFINAL=0.002, INTEGSTP=0.0005)
+    with pytest.warns(UserWarning, match=r"stiff from T = .*lsoda or radau"):
+        a = m.simulate(compiled=True, **kw)
+    with pytest.warns(UserWarning, match=r"stiff from T = "):
+        b = m.simulate(compiled=False, **kw)
+    assert a.stats["stiff_t"] == b.stats["stiff_t"] < 1e-3
+    assert np.array_equal(a.states, b.states)
+
+
+@pytest.mark.parametrize("name", ["double_pendulum", "nlink_pendulum", "rolling_disc"])
+@pytest.mark.parametrize("method", ["kutta-merson", "dop853"])
+def test_no_stiffness_is_reported_for_ordinary_models(name, method):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")           # any warning fails the test
+        r = load(name).simulate(method=method)
+    assert r.ok and "stiff_t" not in r.stats
