@@ -8,6 +8,7 @@ overrides), run, and write Autolev's files (`NAME.in`, `NAME.1..k`, `NAME.dir`, 
 from __future__ import annotations
 
 import sys
+import time
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -187,13 +188,23 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
         extra = {"residual": list(equations),
                  "jacobian": [d for row in defs.jacobian(equations, unknowns)
                               for d in row]}
-    system = NumericSystem(model, files, encoded, backend=backend,
-                           integrate=integrate_states, implicit=implicit,
-                           solved=unknowns if kind in ("algebraic", "nonlinear") else (),
-                           extra=extra, zero=command.zero if kind == "dynamics" else None,
-                           defined=command.defined)
-    if specified:
-        system.set_specified({_find_symbol(model, k): v for k, v in specified.items()})
+    build_start = time.perf_counter()
+    # the numeric system of a command is built once per state of the model (repeated
+    # simulate() calls with other inputs reuse its compiled functions)
+    cache = model.__dict__.setdefault("_numeric_systems", {})
+    key = (id(command), backend, model._version, len(model.defs.rhs),
+           id(model.kane_equations), len(model.outputs), len(model.encoded))
+    system = cache.get(key)
+    if system is None:
+        system = NumericSystem(model, files, encoded, backend=backend,
+                               integrate=integrate_states, implicit=implicit,
+                               solved=unknowns if kind in ("algebraic", "nonlinear") else (),
+                               extra=extra, zero=command.zero if kind == "dynamics" else None,
+                               defined=command.defined)
+        cache.clear()
+        cache[key] = system
+    build_seconds = time.perf_counter() - build_start
+    system.set_specified({_find_symbol(model, k): v for k, v in (specified or {}).items()})
     given_fns = {i for i, _ in system._spec_fns}
     unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
     if unassigned:
@@ -245,6 +256,7 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                     [display_name(x) for x in system.states], [], {},
                     {display_name(k): inputs.values[k].given for k in inputs.names},
                     system=system)
+    result.stats["build_seconds"] = build_seconds
     writer = None
     if folder is not None:
         writer = OutputFiles(folder, stem, [([c.label for c in cols],
@@ -395,9 +407,11 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                    sched.tfinal, enabled=progress is not False and progress is not None)
     try:
         loop = system.loop if compiled and not system._spec_fns else None
-        result.stats = integrate(f, y0, sched, method, inputs.internal("ABSERR"),
-                                 inputs.internal("RELERR"), on_row, bar, loop=loop,
-                                 on_stiff=_on_stiff if method == "dop853" else None)
+        start = time.perf_counter()
+        result.stats.update(integrate(
+            f, y0, sched, method, inputs.internal("ABSERR"), inputs.internal("RELERR"),
+            on_row, bar, loop=loop, on_stiff=_on_stiff if method == "dop853" else None))
+        result.stats["seconds"] = time.perf_counter() - start
         _stiff_note(result.stats, method)
     except IntegrationFailure as exc:
         on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
