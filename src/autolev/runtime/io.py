@@ -94,13 +94,18 @@ class IOMixin:
 
     def simulate(self, *, method: str = "kutta-merson", backend: str = "auto",
                  infile=None, out_dir=None, specified=None, progress=None,
-                 compiled: bool = True, **overrides):
+                 compiled: bool = True, constraints=None, **overrides):
         """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
         CODE command, else a plain simulation) with INPUT values, `overrides`
         (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
         ({name: f(t) or f(t, x)}).  Files are written only when out_dir is given.
         `compiled=False` keeps the integration loop in Python even when the right-hand
         side is compiled C (Kutta-Merson and DOP853 otherwise run wholly in C).
+        `constraints`: configuration constraints g(q) (sympy expressions in the model's
+        symbols, e.g. `al.dot(P5.pos_from(NO), N.x)` for a closed loop) kept at their
+        initial values by projecting the coordinates onto them at every print time
+        (closed loops drift off their constraints otherwise: only the velocity
+        constraints are part of the equations).
         Returns a Result (times, states and outputs as numpy arrays)."""
         from .numerics.run import run_command
         command = None
@@ -116,7 +121,8 @@ class IOMixin:
                                   inputs=dict(self.inputs), units=dict(self.unit_of))
         return run_command(self, command, out_dir=out_dir, method=method, backend=backend,
                            infile=infile, specified=specified, progress=progress,
-                           overrides=overrides, compiled=compiled)
+                           overrides=overrides, compiled=compiled,
+                           constraints=constraints)
 
 
 @dataclass

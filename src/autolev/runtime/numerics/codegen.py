@@ -229,21 +229,34 @@ def compile_c(prog: Program, name: str = "compute", extra_source: str = ""):
     source = c_source(prog, name) + extra_source
     lib = ctypes.CDLL(str(build_shared_library(source)))
     fn = getattr(lib, name)
-    ptr = ctypes.POINTER(ctypes.c_double)
     n_in = len(prog.inputs)
-    fn.argtypes = [ptr] * (n_in + 2)
+    fn.argtypes = [ctypes.c_void_p] * (n_in + 2)
     fn.restype = None
     work = np.zeros(max(1, len(prog.assignments)))
-    work_ptr = work.ctypes.data_as(ptr)
+    work_addr = work.ctypes.data
     empty = np.zeros(1)
 
+    def address(a, keep):
+        if len(a) == 0:
+            return empty.ctypes.data
+        if not (isinstance(a, np.ndarray) and a.dtype == np.float64
+                and a.flags.c_contiguous):
+            a = np.ascontiguousarray(a, dtype=float)
+            keep.append(a)
+        return a.ctypes.data
+
     def call(*arrays):
-        keep = [np.ascontiguousarray(a, dtype=float) if len(a) else empty for a in arrays]
-        args = [a.ctypes.data_as(ptr) for a in keep[:n_in]]
-        fn(*args, work_ptr, keep[n_in].ctypes.data_as(ptr))
+        keep: list = []                      # converted copies live until the call ends
+        args = [address(a, keep) for a in arrays[:n_in]]
         out = arrays[-1]
-        if out is not keep[n_in] and len(out):
-            out[:] = keep[n_in]
+        if len(out) and isinstance(out, np.ndarray) and out.dtype == np.float64 \
+                and out.flags.c_contiguous:
+            fn(*args, work_addr, out.ctypes.data)
+            return out
+        tmp = np.zeros(max(1, len(out)))
+        fn(*args, work_addr, tmp.ctypes.data)
+        if len(out):
+            out[:] = tmp[:len(out)]
         return out
     call.lib = lib
     call.work = work

@@ -128,6 +128,16 @@ class Inputs:
     def vector(self, keys) -> list[float]:
         return [self.internal(k) for k in keys]
 
+    def check_finite(self) -> None:
+        """Every value a number: NaN or an infinity (from an .in file, an override or
+        an INPUT expression) is refused, naming the quantity and where it came from."""
+        bad = [(k, v) for k, v in self.values.items()
+               if not math.isfinite(v.given) or not math.isfinite(v.internal)]
+        if bad:
+            raise AutolevModelError(
+                "inputs must be finite numbers: " + "; ".join(
+                    f"{display_name(k)} = {v.given} (from {v.source})" for k, v in bad))
+
     def missing(self, keys) -> list:
         return [k for k in keys if k not in self.values]
 

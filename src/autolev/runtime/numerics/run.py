@@ -7,6 +7,7 @@ overrides), run, and write Autolev's files (`NAME.in`, `NAME.1..k`, `NAME.dir`, 
 """
 from __future__ import annotations
 
+import math
 import sys
 import time
 import warnings
@@ -24,7 +25,12 @@ from . import units
 from .files import OutputFiles, safe_stem, write_dir, write_encoded
 from .inputs import INTEGRATION, Inputs, display_name
 from .integrate import IntegrationFailure, Progress, Schedule, integrate
-from .system import Column, NumericSystem, SingularMassMatrix
+from .projection import Projector, constants_needed, integrate_projected
+from .system import Column, NumericSystem, SingularMassMatrix, scaled_condition
+
+# the scaled condition number of the mass matrix beyond which a run warns (the
+# accelerations then keep fewer than 6 of their 16 significant digits)
+COND_WARN = 1e10
 
 
 @dataclass
@@ -159,8 +165,10 @@ def _unknowns(args, what: str) -> tuple[list, list]:
 # -- running --------------------------------------------------------------------------------
 def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                 backend: str = "auto", infile=None, specified=None, progress=None,
-                overrides=None, compiled: bool = True) -> Result:
-    """Run one CODE command; files go to out_dir (None: no files)."""
+                overrides=None, compiled: bool = True, constraints=None) -> Result:
+    """Run one CODE command; files go to out_dir (None: no files).  `constraints`:
+    configuration constraints g(q) (sympy expressions in the model's symbols) kept at
+    their initial values by projecting the state onto them at every print time."""
     kind = command.kind
     stem = safe_stem(command.filename)
     files = _columns(model, command)
@@ -212,8 +220,10 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                       + ", ".join(map(str, unassigned)), stacklevel=2)
 
     # inputs: constants, initial values (or guesses), integration parameters
-    kinds = {p: "Constant" for p in system.params}
-    names = list(system.params)
+    extra_constants = (constants_needed(system, constraints)
+                       if constraints and integrate_states else [])
+    kinds = {p: "Constant" for p in system.params + extra_constants}
+    names = list(system.params) + extra_constants
     if integrate_states:
         names += system.states
         kinds.update({x: "Initial Value" for x in system.states})
@@ -235,11 +245,12 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
     for note in notes:
         warnings.warn(note, stacklevel=2)
     sweep = _sweep(model, command, inputs)
-    missing = inputs.fill_missing(system.params)
+    missing = inputs.fill_missing(system.params + extra_constants)
     if missing:
         warnings.warn("no INPUT value for " + ", ".join(display_name(k) for k in missing)
                       + ": using 0", stacklevel=2)
     inputs.fill_missing(names)
+    inputs.check_finite()
     _degree_rates_note(inputs, names)
 
     folder = None
@@ -251,6 +262,11 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
             inputs.write_file(own_in, own_in.name, kinds)
             in_written = own_in
     system.set_parameters(inputs.vector(system.params))
+    if integrate_states:
+        bad = _inertia_problems(system, inputs, zero=False)
+        if bad:
+            raise AutolevModelError("masses and inertias must not be negative: "
+                                    + "; ".join(bad))
     zero_params = [display_name(p) for p in system.params if inputs.internal(p) == 0.0]
     result = Result(kind, stem, np.zeros(0), np.zeros((0, system.nstate)),
                     [display_name(x) for x in system.states], [], {},
@@ -264,7 +280,7 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
     try:
         if integrate_states:
             _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
-                          compiled)
+                          compiled, constraints, inputs.vector(extra_constants))
         else:
             _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
                            zero_params)
@@ -326,6 +342,45 @@ def _degree_rates_note(inputs, names) -> None:
             "programs did; give them in RAD/S if that was not meant", stacklevel=3)
 
 
+def _inertia_problems(system, inputs, zero: bool = True) -> list[str]:
+    """Bodies and particles whose mass (or a principal inertia) is negative or not a
+    number (and, with `zero`, zero) with these inputs: what makes a mass matrix
+    singular or meaningless."""
+    from ..calculus import NumericPoint
+    m = system.model
+    values = {p: inputs.internal(p) for p in system.params}
+    point = NumericPoint(m.defs, values)
+
+    def num(e):
+        z = m.defs.numeric(sm.sympify(e), point)
+        return z.real if abs(z.imag) < 1e-12 else math.nan
+
+    out = []
+    for p in m.particles_list:
+        if p.mass is not None:
+            v = num(p.mass)
+            if not v > 0 and (zero or v != 0):
+                out.append(f"particle {p.name} has mass {v:g}")
+    for b in m.bodies_list:
+        if b.mass is None:
+            continue
+        mass = num(b.mass)
+        try:
+            inertia = b.central_inertia.to_matrix(b)
+        except AutolevModelError:
+            inertia = None
+        diag = [num(inertia[i, i]) for i in range(3)] if inertia is not None else []
+        if not mass > 0 and (zero or mass != 0):
+            what = f"body {b.name} has mass {mass:g}"
+            if diag and not any(d > 0 for d in diag):
+                what += " and no inertia"
+            out.append(what)
+        elif diag and any(not d >= 0 for d in diag):
+            out.append(f"body {b.name} has principal inertias "
+                       + ", ".join(f"{d:g}" for d in diag))
+    return out
+
+
 def _zero_hint(zero_params) -> str:
     if not zero_params:
         return ""
@@ -334,9 +389,15 @@ def _zero_hint(zero_params) -> str:
 
 
 def _split_outputs(system, values, result_rows, writer, encoded_out: dict) -> None:
+    flags = system.__dict__.get("_degree_columns")
+    if flags is None:
+        flags = system._degree_columns = [[units.is_degrees(c.unit) for c in cols]
+                                          for cols in system.files]
     pos = 0
     for k, cols in enumerate(system.files):
-        row = [units.to_output(values[pos + j], c.unit) for j, c in enumerate(cols)]
+        vals = values[pos:pos + len(cols)].tolist()
+        # units.to_output, with the unit test made once per column
+        row = [v * 180 / math.pi if deg else v for v, deg in zip(vals, flags[k])]
         pos += len(cols)
         result_rows[k].append(row)
         if writer is not None:
@@ -365,6 +426,24 @@ def _on_stiff(t: float, hlamb: float) -> str:
     return "lsoda"
 
 
+# RELERR at and above which a method is known to give qualitatively wrong motion
+# over long runs: the relative energy error of the conservative double pendulum over
+# 100 s (Q1 = 30 deg, Q2 = 60 deg; bench/work_precision.py) exceeds 1 % there --
+# RK23 1.5 % at 1e-4; RK45 8.8 %, LSODA 4.3 %, BDF 11 % at 1e-3 (steps not bounded
+# by INTEGSTP); Radau, DOP853 and Kutta-Merson stay below 0.1 % at 1e-3.
+LOOSE_RELERR = {"rk23": 1e-4, "rk45": 1e-3, "lsoda": 1e-3, "bdf": 1e-3, "radau": 1e-2,
+                "dop853": 1e-2, "kutta-merson": 1e-2}
+
+
+def _loose_tolerance_note(method: str, relerr: float) -> None:
+    limit = LOOSE_RELERR.get(method)
+    if limit is not None and relerr >= limit:
+        warnings.warn(f"RELERR = {relerr:g} is loose for {method}: at RELERR >= {limit:g} it "
+                      "is known to give qualitatively wrong motion over long runs (a "
+                      "conservative double pendulum gains or loses over 1 % of its energy in "
+                      f"100 s); use RELERR <= {limit / 100:g}", stacklevel=4)
+
+
 def _stiff_note(stats: dict, method: str) -> None:
     t = stats.get("stiff_t")
     if t is None or stats.get("switched_to"):
@@ -375,8 +454,28 @@ def _stiff_note(stats: dict, method: str) -> None:
                   stacklevel=3)
 
 
+def _conditioning(matrices: np.ndarray, times, states, result) -> None:
+    """The scaled condition number of the mass matrix at every row: its largest value
+    in the stats, and a warning with the time and state of the first row past
+    COND_WARN (an exactly singular matrix stops the run with its own message)."""
+    conds = scaled_condition(matrices)
+    k = int(np.argmax(conds))
+    result.stats["cond_max"] = float(conds[k])
+    result.stats["cond_max_t"] = times[k]
+    bad = np.nonzero((conds > COND_WARN) & np.isfinite(conds))[0]
+    if len(bad):
+        i = int(bad[0])
+        cond = float(conds[i])
+        state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, states[i]))
+        warnings.warn(
+            f"the mass matrix is nearly singular at T = {times[i]:.6g} (condition number "
+            f"{cond:.2g} after scaling by its diagonal: the accelerations may have lost "
+            f"{min(16, int(math.log10(min(cond, 1e16))))} of their 16 digits); the state "
+            f"there: {state}", stacklevel=5)
+
+
 def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
-                  compiled: bool = True) -> None:
+                  compiled: bool = True, constraints=None, extra_values=()) -> None:
     if not system.nstate:
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
@@ -397,20 +496,33 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         except SingularMassMatrix as exc:
             raise IntegrationFailure(str(exc), t, y) from None
 
+    matrices: list = []        # the mass matrix at every row (conditioning, at the end)
+
     def on_row(t, y):
         values = system.outputs(t, y)       # solves for the accelerations once
         times.append(t)
         states.append(np.array(y))
         _split_outputs(system, values, rows, writer, encoded)
+        mm = system.last_mass_matrix()
+        if mm is not None:
+            matrices.append(mm)
 
     bar = Progress(sys.stderr if progress is None else progress, sched.tinitial,
                    sched.tfinal, enabled=progress is not False and progress is not None)
     try:
         loop = system.loop if compiled and not system._spec_fns else None
         start = time.perf_counter()
-        result.stats.update(integrate(
-            f, y0, sched, method, inputs.internal("ABSERR"), inputs.internal("RELERR"),
-            on_row, bar, loop=loop, on_stiff=_on_stiff if method == "dop853" else None))
+        on_stiff = _on_stiff if method == "dop853" else None
+        abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
+        _loose_tolerance_note(method.lower(), relerr)
+        if constraints:
+            projector = Projector(system, constraints, sched.tinitial, y0, extra_values)
+            result.stats.update(integrate_projected(
+                f, y0, sched, method, abserr, relerr, on_row, bar, loop, on_stiff,
+                projector))
+        else:
+            result.stats.update(integrate(f, y0, sched, method, abserr, relerr, on_row,
+                                          bar, loop=loop, on_stiff=on_stiff))
         result.stats["seconds"] = time.perf_counter() - start
         _stiff_note(result.stats, method)
     except IntegrationFailure as exc:
@@ -419,6 +531,10 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         result.failure = (f"Numerical integration failed to converge: {exc}; the state "
                           f"there: {state}"
                           + (_zero_hint(zero_params) if len(times) <= 1 else ""))
+        if "singular" in str(exc):
+            problems = _inertia_problems(system, inputs)
+            if problems:
+                result.failure += "; " + "; ".join(problems)
         result.failure_time = exc.t
         if writer is not None:
             writer.note("Error: " + result.failure)
@@ -426,6 +542,8 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         raise AutolevModelError(str(exc)) from None
     finally:
         bar.done()
+        if matrices:
+            _conditioning(np.array(matrices), times, states, result)
     result.t = np.array(times)
     result.states = np.array(states).reshape(len(states), system.nstate)
     result.outputs = _tables(system, rows, result.name)

@@ -17,6 +17,7 @@ ENCODE values, evaluated at print times only, with the accelerations found there
 from __future__ import annotations
 
 import inspect
+import math
 import warnings
 from dataclasses import dataclass
 
@@ -355,6 +356,15 @@ class NumericSystem:
             xdot[self._unknown_pos] = solve_mass_matrix(mm, f, t)
         return xdot
 
+    def last_mass_matrix(self) -> np.ndarray | None:
+        """The mass matrix of the last evaluation of the derivatives (None when the
+        model solves no accelerations)."""
+        n, ns = self._n, self.nstate
+        if not n:
+            return None
+        out = self.loop._out if self.loop is not None else self._rhs_out
+        return np.array(out[ns:ns + n * n]).reshape(n, n)
+
     def _accel_inputs(self, t, x, xdot, solved) -> np.ndarray:
         parts = []
         if self._n:
@@ -383,6 +393,27 @@ class NumericSystem:
     def extra(self, name: str, t: float, x=(), solved=()) -> np.ndarray:
         fn, size = self.extra_functions[name]
         return self._call(fn, size, t, x, None, solved)
+
+
+def scaled_condition(mm: np.ndarray) -> np.ndarray | float:
+    """The 2-norm condition number of M after scaling by its diagonal (D^-1/2 M D^-1/2):
+    free of the units the speeds happen to have, so that a large value means the
+    equations are nearly singular, not that a rotor is light.  `mm`: one matrix, or a
+    stack of them (one number each); inf for a singular or non-finite matrix."""
+    a = np.asarray(mm, dtype=float)
+    single = a.ndim == 2
+    if single:
+        a = a[None]
+    d = np.abs(np.diagonal(a, axis1=1, axis2=2))
+    s = np.where(d > 0, 1.0 / np.sqrt(np.where(d > 0, d, 1.0)), 1.0)
+    scaled = a * s[:, :, None] * s[:, None, :]
+    finite = np.all(np.isfinite(scaled), axis=(1, 2))
+    out = np.full(len(a), np.inf)
+    if finite.any():
+        sv = np.linalg.svd(scaled[finite], compute_uv=False)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out[finite] = np.where(sv[:, -1] > 0, sv[:, 0] / sv[:, -1], np.inf)
+    return float(out[0]) if single else out
 
 
 def _lower(d):

@@ -1,0 +1,120 @@
+"""Projection onto configuration constraints.
+
+Autolev's equations carry the constraints of a closed loop at the velocity level only
+(the dependent speeds are solved from them at every evaluation), so the coordinates of
+a loop drift off the loop as errors accumulate.  Given the configuration constraints
+g(q) themselves, a run can be brought back onto g(q) = g(q0) at every print time: the
+smallest correction of the state (Gauss-Newton with the minimum-norm step
+G^T (G G^T)^-1 r, G = dg/dx) until the residual is at rounding level.  The integrator
+restarts from the projected state on each print interval.
+"""
+from __future__ import annotations
+
+import numpy as np
+import sympy as sm
+
+from ..errors import AutolevModelError
+from . import codegen
+from .integrate import IntegrationFailure, Schedule, integrate
+
+
+class Projector:
+    """g(x) and dg/dx compiled for a NumericSystem; projects states onto g = g(x0)."""
+
+    def __init__(self, system, constraints, t0: float, x0, extra_values=(),
+                 max_iter: int = 10):
+        """`extra_values`: values of `constants_needed(system, constraints)`."""
+        m = system.model
+        exprs = _expressions(constraints)
+        for e in exprs:
+            if not isinstance(e, sm.Expr) or isinstance(e, sm.MatrixBase):
+                raise AutolevModelError(f"a constraint must be a scalar expression: {e}")
+        states = list(system.states)
+        jac = m.defs.jacobian(exprs, states)
+        if all(d == 0 for row in jac for d in row):
+            raise AutolevModelError("the constraints do not depend on the state")
+        inputs = {"t": [_time()],
+                  "x": states,
+                  "c": system.params + system.constant_defs
+                  + constants_needed(system, exprs),
+                  "s": system.specified}
+        prog = codegen.Program(inputs, exprs + [d for row in jac for d in row], m.defs,
+                               dict(system.aux_fixed)).build()
+        from .system import compile_program
+        self.function = compile_program(prog, system.backend, "autolev_constraints")
+        self.system = system
+        self._c = np.concatenate([system._c, np.asarray(extra_values, dtype=float)])
+        self.k = len(exprs)
+        self.n = len(states)
+        self.max_iter = max_iter
+        self.target = self.residual_and_jacobian(t0, np.asarray(x0, float))[0]
+        self.largest_correction = 0.0
+
+    def residual_and_jacobian(self, t, x):
+        out = np.empty(self.k + self.k * self.n)
+        self.function.call(np.array([t]), x, self._c, self.system._s, out)
+        return out[:self.k], out[self.k:].reshape(self.k, self.n)
+
+    def __call__(self, t: float, x: np.ndarray) -> np.ndarray:
+        x = np.array(x, dtype=float)
+        x0 = x.copy()
+        tol = 1e-13 * (1.0 + np.abs(self.target).max())
+        for _ in range(self.max_iter):
+            g, jac = self.residual_and_jacobian(t, x)
+            r = g - self.target
+            if np.abs(r).max() <= tol:
+                break
+            step, *_ = np.linalg.lstsq(jac, r, rcond=None)
+            x -= step
+        self.largest_correction = max(self.largest_correction, float(np.abs(x - x0).max()))
+        return x
+
+
+def _expressions(constraints) -> list:
+    return [sm.sympify(c) for c in constraints]
+
+
+def constants_needed(system, constraints) -> list:
+    """Constants the constraints use that the equations of motion do not (their
+    values are inputs of the run too), in alphabetical order."""
+    from .system import alphabetical
+    exprs = _expressions(constraints)
+    given = set(system.states) | {_time()} | set(system.aux_fixed) | set(system.params)
+    _, undefined = system._needed(exprs, given)
+    return alphabetical(s for s in undefined if not system._is_specified(s))
+
+
+def _time():
+    from .. import symbols as S
+    return S.TIME
+
+
+def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_row,
+                        progress, loop, on_stiff, project: Projector) -> dict:
+    """integrate() from print time to print time, projecting the state at each."""
+    schedule.check()
+    times = schedule.print_times()
+    y = np.array(y0, dtype=float)
+    on_row(times[0], y)
+    stats = {"method": method, "evaluations": 0, "steps": 0, "projected": True}
+    for a, b in zip(times, times[1:]):
+        got = []
+        seg = Schedule(a, b, schedule.integstp, 10 ** 9)
+        try:
+            st = integrate(f, y, seg, method, abserr, relerr,
+                           lambda t, yy: got.append(np.array(yy)), None, loop=loop,
+                           on_stiff=on_stiff)
+        except IntegrationFailure:
+            stats["largest_correction"] = project.largest_correction
+            raise
+        stats["evaluations"] += st.get("evaluations", 0)
+        stats["steps"] += st.get("steps", 0)
+        for key in ("stiff_t", "switched_to", "compiled"):
+            if key in st and key not in stats:
+                stats[key] = st[key]
+        y = project(b, got[-1])
+        on_row(b, y)
+        if progress is not None:
+            progress.update(b)
+    stats["largest_correction"] = project.largest_correction
+    return stats
