@@ -28,6 +28,11 @@ from ..errors import AutolevModelError
 from .printer import CodePrinter
 
 
+# elementary functions whose repeated calls are computed once
+_HOISTED = (sm.sin, sm.cos, sm.tan, sm.exp, sm.log, sm.asin, sm.acos, sm.atan, sm.atan2,
+            sm.sinh, sm.cosh, sm.tanh)
+
+
 @dataclass
 class Program:
     """inputs: {name: [symbols]} (each a vector argument); outputs: [expressions].
@@ -60,12 +65,54 @@ class Program:
         for n, s in enumerate(needed):
             self.names[s] = f"w{n}"
             self.assignments.append((self.names[s], self.defs.rhs[s]))
+        self._hoist_calls()
         missing = set()
         for e in [a[1] for a in self.assignments] + self.outputs:
             missing |= {f for f in e.free_symbols if f not in self.names}
         if missing:
             raise AutolevModelError("no value for " + ", ".join(sorted(map(str, missing))))
         return self
+
+    def _hoist_calls(self) -> None:
+        """Every elementary function call that occurs more than once in the program
+        (cos(q1) in every entry of a mass matrix: small expressions stay inline in the
+        definitions) is computed once, into its own variable assigned just before its
+        first use."""
+        def calls(e):
+            out, stack = [], [e]
+            while stack:
+                node = stack.pop()
+                if isinstance(node, _HOISTED):
+                    out.append(node)
+                stack.extend(node.args)
+            return out
+        counts: dict = {}
+        for e in [a[1] for a in self.assignments] + self.outputs:
+            for c in calls(e):
+                counts[c] = counts.get(c, 0) + 1
+        shared = {c for c, k in counts.items() if k > 1}
+        if not shared:
+            return
+        done: dict = {}
+        new: list = []
+
+        def hoist(e):
+            # the calls of e, innermost first, get their variables; e then uses them
+            todo = [c for c in reversed(calls(e)) if c in shared and c not in done]
+            for c in sorted(dict.fromkeys(todo), key=sm.count_ops):
+                if c in done:
+                    continue
+                sym = sm.Dummy(f"h{len(done)}")
+                ident = f"h{len(done)}"
+                self.names[sym] = ident
+                new.append((ident, c.xreplace(done)))
+                done[c] = sym
+            return e.xreplace(done) if done else e
+        for ident, expr in self.assignments:
+            expr = hoist(expr)
+            new.append((ident, expr))
+        self.outputs = [hoist(e) for e in self.outputs]
+        self.assignments = new
 
 # -- Python ---------------------------------------------------------------------------
 def python_source(prog: Program, name: str = "compute") -> str:
