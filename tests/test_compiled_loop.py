@@ -156,3 +156,28 @@ def test_no_stiffness_is_reported_for_ordinary_models(name, method):
         warnings.simplefilter("error")           # any warning fails the test
         r = load(name).simulate(method=method)
     assert r.ok and "stiff_t" not in r.stats
+
+
+def test_cpython_entry_point_gives_the_ctypes_numbers():
+    from autolev.runtime.numerics.cloop import python_include
+    system = run(load("rolling_disc"), TFINAL=0.1).system
+    loop = system.loop
+    if python_include() is None:
+        assert loop._py is None                 # no headers: the ctypes route only
+        return
+    assert loop._py is not None
+    rng = np.random.default_rng(3)
+    for _ in range(5):
+        x = rng.uniform(-1, 1, system.nstate)
+        fast, status = loop.derivatives(0.2, x)
+        saved, loop._py = loop._py, None
+        try:
+            slow, status2 = loop.derivatives(0.2, x)
+        finally:
+            loop._py = saved
+        assert status == status2 == 0
+        assert np.array_equal(fast, slow)
+    # anything but a float64 state array is converted, not refused
+    fast, _ = loop.derivatives(0.2, [0.1] * system.nstate)
+    slow, _ = loop.derivatives(0.2, np.full(system.nstate, 0.1))
+    assert np.array_equal(fast, slow)

@@ -11,12 +11,48 @@ from __future__ import annotations
 
 import ctypes
 import math
+import os
 import time as _time
 from pathlib import Path
 
 import numpy as np
 
 LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
+PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
+
+
+def python_include() -> str | None:
+    """The folder of Python.h when this Python has its headers (then the library also
+    carries a CPython entry point, pyext.c), else None."""
+    import sysconfig
+    inc = sysconfig.get_paths().get("include")
+    if inc and (Path(inc) / "Python.h").exists() and \
+            not os.environ.get("AUTOLEV_NO_PYEXT"):
+        return inc
+    return None
+
+
+def extra_source() -> tuple[str, tuple]:
+    """(C appended to a right-hand side, extra compiler flags)."""
+    inc = python_include()
+    if inc is None:
+        return "\n" + LOOP_SOURCE, ()
+    return "\n" + LOOP_SOURCE + "\n" + PYEXT_SOURCE, ("-I" + inc,)
+
+
+def _load_extension(path: str):
+    """The CPython module inside a library built with PYEXT_SOURCE, or None."""
+    import importlib.machinery
+    import importlib.util
+    loader = importlib.machinery.ExtensionFileLoader("_autolev_rhs", path)
+    spec = importlib.util.spec_from_file_location("_autolev_rhs", path, loader=loader)
+    if spec is None:
+        return None
+    try:
+        module = importlib.util.module_from_spec(spec)
+    except ImportError:
+        return None
+    return module
 
 # return codes and the layout of st[] / opts[] (loop.c's enums)
 DONE, MORE, SINGULAR, SMALL_STEP, CUTS, NONFINITE, STIFF = range(7)
@@ -92,6 +128,12 @@ class CompiledLoop:
         fn.argtypes = [_P, ctypes.c_int, _P, _P, _P, ctypes.c_int, _P, _P, _P, _P, _P, _P]
         fn.restype = ctypes.c_int
         self._integrate = fn
+        self._addr = ctypes.addressof(ctx)
+        self._py = None
+        if hasattr(lib, "PyInit__autolev_rhs"):
+            module = _load_extension(lib._name)
+            if module is not None:
+                self._py = module.derivatives
 
     def set_values(self, c: np.ndarray, s: np.ndarray) -> None:
         """The constants and specifieds the evaluations read (kept referenced here)."""
@@ -102,9 +144,14 @@ class CompiledLoop:
 
     def derivatives(self, t: float, x: np.ndarray) -> tuple[np.ndarray, int]:
         """(x', status): status 0, or SINGULAR (then self.yfail is x)."""
-        x = np.ascontiguousarray(x, dtype=float)
         xdot = np.empty(self.n)
-        r = self._deriv(self._ctx_ref, t, x.ctypes.data, xdot.ctypes.data)
+        if self._py is not None:
+            try:
+                return xdot, self._py(self._addr, t, x, xdot)
+            except TypeError:           # not a float64 array: convert, as below
+                pass
+        x = np.ascontiguousarray(x, dtype=float)
+        r = self._deriv(self._ctx_ref, float(t), x.ctypes.data, xdot.ctypes.data)
         return xdot, r
 
     def run(self, method: str, y0, times, printed, opts: dict, on_rows, progress=None,

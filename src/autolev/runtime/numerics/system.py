@@ -27,7 +27,8 @@ import sympy as sm
 from .. import symbols as S
 from ..errors import AutolevModelError
 from . import codegen
-from .cloop import LOOP_SOURCE, CompiledLoop
+from .cloop import CompiledLoop
+from .cloop import extra_source as loop_extra_source
 
 
 def alphabetical(syms) -> list:
@@ -51,10 +52,10 @@ class Function:
 
 
 def compile_program(prog: codegen.Program, backend: str, name: str,
-                    extra_source: str = "") -> Function:
+                    extra_source: str = "", extra_flags: tuple = ()) -> Function:
     if backend in ("auto", "c") and codegen.compiler() is not None:
         try:
-            fn, src = codegen.compile_c(prog, name, extra_source)
+            fn, src = codegen.compile_c(prog, name, extra_source, extra_flags)
             return Function(fn, "c", src)
         except codegen.CompileError as exc:
             if backend == "c":
@@ -167,9 +168,10 @@ class NumericSystem:
         self._unknown_pos = [self.states.index(_lower(d)) for d in unknowns]
         if self.nstate:
             # the C right-hand side carries the integration loop (loop.c) with it
+            loop_source, loop_flags = loop_extra_source()
             self.rhs_function = compile_program(
                 codegen.Program(inputs, rhs_exprs, defs, fixed).build(), backend,
-                "autolev_rhs", extra_source="\n" + LOOP_SOURCE)
+                "autolev_rhs", extra_source=loop_source, extra_flags=loop_flags)
             if self.rhs_function.backend == "c":
                 call = self.rhs_function.call
                 self.loop = CompiledLoop(call.lib, self.nstate, self._unknown_pos,

@@ -1,0 +1,64 @@
+/* autolev: a CPython entry point for the right-hand side, compiled into the same
+ * library as loop.c when Python's headers are there (cloop.py).  A ctypes call costs
+ * a few microseconds of argument conversion; this costs a fraction of one, which is
+ * what scipy's integrators, calling back into Python at every stage, see.
+ *
+ * derivatives(ctx_address, t, x, out) -> status: out[:] = x' at (t, x); 0, or
+ * AL_SINGULAR.  x and out: C-contiguous float64 buffers of the state's length. */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+
+static int al_buffer(PyObject *o, Py_buffer *b, int writable, Py_ssize_t n)
+{
+    if (PyObject_GetBuffer(o, b, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT |
+                                   (writable ? PyBUF_WRITABLE : 0)) != 0)
+        return -1;
+    if (b->itemsize != 8 || b->format == NULL || strcmp(b->format, "d") != 0 ||
+        b->len != n * 8) {
+        PyBuffer_Release(b);
+        PyErr_SetString(PyExc_TypeError, "expected a float64 array of the state's length");
+        return -1;
+    }
+    return 0;
+}
+
+static PyObject *al_py_derivatives(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    al_ctx *ctx;
+    double t;
+    Py_buffer xb, ob;
+    int r;
+    (void)self;
+    if (nargs != 4) {
+        PyErr_SetString(PyExc_TypeError, "derivatives(ctx, t, x, out)");
+        return NULL;
+    }
+    ctx = (al_ctx *)PyLong_AsVoidPtr(args[0]);
+    if (ctx == NULL && PyErr_Occurred()) return NULL;
+    t = PyFloat_AsDouble(args[1]);
+    if (t == -1.0 && PyErr_Occurred()) return NULL;
+    if (al_buffer(args[2], &xb, 0, ctx->n) != 0) return NULL;
+    if (al_buffer(args[3], &ob, 1, ctx->n) != 0) {
+        PyBuffer_Release(&xb);
+        return NULL;
+    }
+    r = al_f(ctx, t, (const double *)xb.buf, (double *)ob.buf);
+    PyBuffer_Release(&xb);
+    PyBuffer_Release(&ob);
+    return PyLong_FromLong(r);
+}
+
+static PyMethodDef al_methods[] = {
+    {"derivatives", (PyCFunction)(void (*)(void))al_py_derivatives, METH_FASTCALL,
+     "derivatives(ctx, t, x, out) -> status"},
+    {NULL, NULL, 0, NULL}
+};
+
+static struct PyModuleDef al_module = {
+    PyModuleDef_HEAD_INIT, "_autolev_rhs", NULL, -1, al_methods, NULL, NULL, NULL, NULL
+};
+
+PyMODINIT_FUNC PyInit__autolev_rhs(void)
+{
+    return PyModule_Create(&al_module);
+}
