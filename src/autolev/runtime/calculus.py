@@ -26,6 +26,7 @@ import sympy as sm
 from .symbols import TIME, Z, derivative, new_z
 from .errors import AutolevModelError
 from .fastdiff import diff as fast_diff
+from .fastdiff import gradient as fast_gradient
 
 
 def _order_key(s) -> tuple:
@@ -271,16 +272,15 @@ class Definitions:
 
         def gradient(expr, fs):
             acc: dict = {}
-            for f in fs:
-                if f in xset:
-                    parts = {f: sm.S.One}
-                else:
-                    parts = grads.get(f)
-                    if not parts:
-                        continue
-                df = fast_diff(expr, f)
-                if df == 0:
+            live = [f for f in fs if f in xset or grads.get(f)]
+            if not live:
+                return {}
+            dfs = fast_gradient(expr, live)
+            for f in live:
+                df = dfs.get(f)
+                if df is None:
                     continue
+                parts = {f: sm.S.One} if f in xset else grads[f]
                 for x, g in parts.items():
                     acc.setdefault(x, []).append(df * g)
             return {x: sm.Add(*ts) for x, ts in acc.items()}

@@ -99,3 +99,77 @@ def diff(expr: sm.Expr, x: sm.Symbol) -> sm.Expr:
         return r
 
     return d(expr)
+
+
+def gradient(expr: sm.Expr, xs) -> dict:
+    """{x: d expr / d x} for the symbols xs that expr contains, in one memoised pass
+    (differentiating once per x walks the whole expression once per x, which on the
+    long definitions of real models is what dominates)."""
+    xs = set(xs)
+    empty: frozenset = frozenset()
+    deps_memo: dict = {}
+    memo: dict = {}
+
+    def deps(e) -> frozenset:
+        r = deps_memo.get(e)
+        if r is None:
+            if e.is_Atom:
+                r = frozenset((e,)) if e in xs else empty
+            else:
+                r = empty.union(*[deps(a) for a in e.args])
+            deps_memo[e] = r
+        return r
+
+    def add_into(acc: dict, grad: dict, factor=None) -> None:
+        for x, v in grad.items():
+            acc.setdefault(x, []).append(v if factor is None else factor * v)
+
+    def g(e) -> dict:
+        r = memo.get(e)
+        if r is not None:
+            return r
+        dep = deps(e)
+        if not dep:
+            r = {}
+        elif e.is_Symbol:
+            r = {e: _ONE}
+        elif e.is_Add:
+            acc: dict = {}
+            for a in e.args:
+                if deps(a):
+                    add_into(acc, g(a))
+            r = {x: sm.Add(*ts) for x, ts in acc.items()}
+        elif e.is_Mul:
+            args = e.args
+            acc = {}
+            for i, a in enumerate(args):
+                if deps(a):
+                    add_into(acc, g(a), sm.Mul(*(args[:i] + args[i + 1:])))
+            r = {x: sm.Add(*ts) for x, ts in acc.items()}
+        elif e.is_Pow:
+            b, p = e.args
+            if not deps(p):
+                acc = {}
+                add_into(acc, g(b), p * b ** (p - 1))
+                r = {x: ts[0] for x, ts in acc.items()}
+            else:
+                r = {x: diff(e, x) for x in dep}
+        elif isinstance(e, sm.Function) and len(e.args) == 1:
+            (arg,) = e.args
+            outer = _function_derivative(e, arg)
+            if outer is None:
+                r = {x: e.diff(x) for x in dep}
+            else:
+                r = {x: outer * v for x, v in g(arg).items()}
+        elif isinstance(e, sm.atan2):
+            y, xx = e.args
+            gy, gx = g(y), g(xx)
+            den = xx ** 2 + y ** 2
+            r = {x: (xx * gy.get(x, _ZERO) - y * gx.get(x, _ZERO)) / den for x in dep}
+        else:
+            r = {x: e.diff(x) for x in dep}
+        r = {x: v for x, v in r.items() if v != 0}
+        memo[e] = r
+        return r
+
+    return g(sm.sympify(expr))

@@ -47,6 +47,9 @@ class Program:
     fixed: dict = field(default_factory=dict)
     assignments: list = field(default_factory=list)   # (identifier, expression)
     names: dict = field(default_factory=dict)         # symbol -> identifier
+    # identifier -> the function call it holds: printed as that call at its own
+    # assignment and as the identifier everywhere after (see CodePrinter.bind)
+    bound: dict = field(default_factory=dict)
 
     def build(self) -> "Program":
         """Order the definitions the outputs need and name everything."""
@@ -93,25 +96,23 @@ class Program:
         shared = {c for c, k in counts.items() if k > 1}
         if not shared:
             return
-        done: dict = {}
+        done: set = set()
         new: list = []
 
         def hoist(e):
-            # the calls of e, innermost first, get their variables; e then uses them
-            todo = [c for c in reversed(calls(e)) if c in shared and c not in done]
-            for c in sorted(dict.fromkeys(todo), key=sm.count_ops):
-                if c in done:
-                    continue
-                sym = sm.Dummy(f"h{len(done)}")
-                ident = f"h{len(done)}"
-                self.names[sym] = ident
-                new.append((ident, c.xreplace(done)))
-                done[c] = sym
-            return e.xreplace(done) if done else e
+            # the calls of e get variables before e: calls() lists a call before the
+            # calls inside it, so reversed it gives the inner ones first
+            for c in reversed(calls(e)):
+                if c in shared and c not in done:
+                    ident = f"h{len(done)}"
+                    done.add(c)
+                    new.append((ident, c))
+                    self.bound[ident] = c
         for ident, expr in self.assignments:
-            expr = hoist(expr)
+            hoist(expr)
             new.append((ident, expr))
-        self.outputs = [hoist(e) for e in self.outputs]
+        for e in self.outputs:
+            hoist(e)
         self.assignments = new
 
 # -- Python ---------------------------------------------------------------------------
@@ -124,6 +125,8 @@ def python_source(prog: Program, name: str = "compute") -> str:
     p = CodePrinter("python", prog.names)
     for ident, expr in prog.assignments:
         lines.append(f"    {ident} = {p(expr)}")
+        if ident in prog.bound:
+            p.bind(expr, ident)
     for k, e in enumerate(prog.outputs):
         lines.append(f"    out[{k}] = {p(e)}")
     lines.append("    return out")
@@ -200,7 +203,11 @@ def c_source(prog: Program, name: str = "compute") -> str:
             where[s] = f"w[{index[ident]}]"
     c = CodePrinter("c", where)
 
-    statements = [f"w[{k}] = {c(expr)};" for k, (_, expr) in enumerate(prog.assignments)]
+    statements = []
+    for k, (ident, expr) in enumerate(prog.assignments):
+        statements.append(f"w[{k}] = {c(expr)};")
+        if ident in prog.bound:
+            c.bind(expr, f"w[{k}]")
     statements += [f"out[{k}] = {c(e)};" for k, e in enumerate(prog.outputs)]
     params = ", ".join(f"const double *{a}" for a in prog.inputs)
     params = (params + ", " if params else "") + "double *w, double *out"

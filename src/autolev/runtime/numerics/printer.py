@@ -44,6 +44,11 @@ class CodePrinter:
     def __call__(self, expr) -> str:
         return self._p(sm.sympify(expr))[0]
 
+    def bind(self, expr, text: str) -> None:
+        """From now on print `expr` (a compound expression) as `text` (the variable
+        that holds its value)."""
+        self._memo[expr] = (text, _ATOM)
+
     # each method returns (text, precedence); compound subexpressions are printed once
     def _p(self, e):
         if e.is_Atom:
