@@ -148,8 +148,9 @@ class CompiledLoop:
         if self._py is not None:
             try:
                 return xdot, self._py(self._addr, t, x, xdot)
-            except TypeError:           # not a float64 array: convert, as below
-                pass
+            except (TypeError, ValueError):
+                pass       # not a contiguous float64 array (scipy's Jacobian columns
+                #            are strided views): converted, as below
         x = np.ascontiguousarray(x, dtype=float)
         r = self._deriv(self._ctx_ref, float(t), x.ctypes.data, xdot.ctypes.data)
         return xdot, r
