@@ -163,10 +163,10 @@ class Definitions:
             return expr
         z = self._z_of.get(expr)
         if z is None:
-            z = new_z()
+            self.z_count += 1
+            z = new_z(self.z_count)
             self.rhs[z] = expr
             self._z_of[expr] = z
-            self.z_count += 1
         return z
 
     # -- dependency order ------------------------------------------------------

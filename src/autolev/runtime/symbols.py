@@ -8,7 +8,6 @@ wrote it, and `dt(Q1) == Q1'` holds everywhere.
 """
 from __future__ import annotations
 
-import itertools
 
 import sympy as sm
 
@@ -30,11 +29,11 @@ class Z(sm.Dummy):
         return "z_{%s}" % self.name[1:]
 
 
-_z_counter = itertools.count(1)
-
-
-def new_z() -> Z:
-    return Z(f"z{next(_z_counter)}", real=True)
+def new_z(number: int) -> Z:
+    """Z number `number` of a definitions table.  Numbered per table, not per process:
+    the names decide the order of terms in sums, so a model's generated code (and its
+    rounding) must not depend on what else the process built before."""
+    return Z(f"z{number}", real=True)
 
 
 def _assumptions(sym: sm.Symbol) -> dict:
