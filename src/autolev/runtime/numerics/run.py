@@ -512,9 +512,9 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
 
     bar = Progress(sys.stderr if progress is None else progress, sched.tinitial,
                    sched.tfinal, enabled=progress is not False and progress is not None)
+    start = time.perf_counter()
     try:
         loop = system.loop if compiled and not system._spec_fns else None
-        start = time.perf_counter()
         on_stiff = _on_stiff if method == "dop853" else None
         abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
         _loose_tolerance_note(method.lower(), relerr)
@@ -526,7 +526,6 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         else:
             result.stats.update(integrate(f, y0, sched, method, abserr, relerr, on_row,
                                           bar, loop=loop, on_stiff=on_stiff))
-        result.stats["seconds"] = time.perf_counter() - start
         _stiff_note(result.stats, method)
     except IntegrationFailure as exc:
         on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
@@ -545,6 +544,7 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         raise AutolevModelError(str(exc)) from None
     finally:
         bar.done()
+        result.stats["seconds"] = time.perf_counter() - start
         if matrices:
             _conditioning(np.array(matrices), times, states, result)
     result.t = np.array(times)

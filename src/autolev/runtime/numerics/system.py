@@ -185,6 +185,9 @@ class NumericSystem:
                                 f"autolev_{k}"), len(v))
             for k, v in extra.items()}
         self._rhs_out = np.empty(len(rhs_exprs))
+        # the CPython entry point of the compiled right-hand side, when there is one
+        self._py = self.loop._py if self.loop is not None else None
+        self._py_ctx = self.loop._addr if self.loop is not None else None
         self._c = None
         self._s = np.zeros(len(self.specified))
         self._spec_fns: list = []
@@ -341,7 +344,19 @@ class NumericSystem:
 
     def derivatives(self, t: float, x: np.ndarray) -> np.ndarray:
         """State derivatives at (t, x): a fresh array."""
-        s = self._fill_specified(t, x) if self._spec_fns else self._s
+        if self._spec_fns:
+            self._fill_specified(t, x)
+        elif self._py is not None:      # the common case, in as few calls as possible
+            xdot = np.empty(self.nstate)
+            try:
+                status = self._py(self._py_ctx, t, x, xdot)
+            except (TypeError, ValueError):
+                status = None           # not a contiguous float64 array: below
+            if status == 0:
+                return xdot
+            if status is not None:
+                raise SingularMassMatrix(t)
+        s = self._s
         if self.loop is not None:
             xdot, status = self.loop.derivatives(t, x)
             if status:
