@@ -28,6 +28,32 @@ from ..errors import AutolevModelError
 from .printer import CodePrinter
 
 
+def _factor_out(add):
+    """add with the symbols (positive integer powers) common to all its terms taken
+    out as a product, or add itself."""
+    terms = [t.as_powers_dict() for t in add.args]
+    common = None
+    for d in terms:
+        here = {b: e for b, e in d.items()
+                if b.is_Symbol and e.is_Integer and e > 0}
+        if common is None:
+            common = here
+        else:
+            common = {b: min(e, here[b]) for b, e in common.items() if b in here}
+        if not common:
+            return add
+    rest = []
+    for t, d in zip(add.args, terms):
+        factors = []
+        for b, e in d.items():
+            k = e - common.get(b, 0)
+            if k != 0:
+                factors.append(b ** k if k != 1 else b)
+        rest.append(sm.Mul(*factors))
+    outer = [b ** e if e != 1 else b for b, e in common.items()]
+    return sm.Mul(*outer, sm.Add(*rest), evaluate=False) if len(rest) > 1 else add
+
+
 # elementary functions whose repeated calls are computed once
 _HOISTED = (sm.sin, sm.cos, sm.tan, sm.exp, sm.log, sm.asin, sm.acos, sm.atan, sm.atan2,
             sm.sinh, sm.cosh, sm.tanh)
@@ -68,6 +94,7 @@ class Program:
         for n, s in enumerate(needed):
             self.names[s] = f"w{n}"
             self.assignments.append((self.names[s], self.defs.rhs[s]))
+        self._pull_common_factors()
         self._hoist_calls()
         missing = set()
         for e in [a[1] for a in self.assignments] + self.outputs:
@@ -75,6 +102,29 @@ class Program:
         if missing:
             raise AutolevModelError("no value for " + ", ".join(sorted(map(str, missing))))
         return self
+
+    def _pull_common_factors(self) -> None:
+        """Sums whose terms share symbolic factors are written with the factors taken
+        out (c1*w1 + c1*w2 + ... as c1*(w1 + w2 + ...)): Kane's rows are long sums of
+        mass or length times an intermediate, and the multiplications were most of the
+        arithmetic.  Both back ends print the same expressions, so their numbers stay
+        identical."""
+        memo: dict = {}
+
+        def pull(e):
+            if e.is_Atom:
+                return e
+            r = memo.get(e)
+            if r is not None:
+                return r
+            args = [pull(a) for a in e.args]
+            r = e.func(*args) if any(a is not b for a, b in zip(args, e.args)) else e
+            if r.is_Add:
+                r = _factor_out(r)
+            memo[e] = r
+            return r
+        self.assignments = [(ident, pull(expr)) for ident, expr in self.assignments]
+        self.outputs = [pull(e) for e in self.outputs]
 
     def _hoist_calls(self) -> None:
         """Every elementary function call that occurs more than once in the program
@@ -331,7 +381,9 @@ def build_shared_library(source: str, flags: tuple | None = None,
     if lib.exists():
         return lib
     # `shared_source`: compiled once for all models (its own cached object), linked in
-    shared = [build_object(shared_source, flags)] if shared_source else []
+    # at -O3: compiled once, and its loops (the LU solve, the stages) gain from it
+    shared_flags = tuple("-O3" if f.startswith("-O") else f for f in flags)
+    shared = [build_object(shared_source, shared_flags)] if shared_source else []
     with tempfile.TemporaryDirectory() as tmp:
         objects, procs = [], []
         for k, unit in enumerate(source.split(UNIT_MARK)):
