@@ -194,3 +194,20 @@ def test_implicit_methods_run_on_the_compiled_right_hand_side(method):
     x[:, 1] = r.states[-1]
     assert np.array_equal(r.system.derivatives(0.0, x[:, 1]),
                           r.system.derivatives(0.0, r.states[-1]))
+
+
+def test_fast_path_returns_fresh_arrays_and_reports_singularity():
+    system = run(load("double_pendulum"), TFINAL=0.1).system
+    x = np.array([0.5, 1.0, 0.1, -0.2])
+    a = system.derivatives(0.0, x)
+    b = system.derivatives(0.0, x)
+    assert a is not b and np.array_equal(a, b)
+    a[:] = 0.0                                # the caller may keep or change it
+    assert np.array_equal(system.derivatives(0.0, x), b)
+    from autolev.runtime.numerics.system import SingularMassMatrix
+    zero = load("zero_inputs")                # L = 0: a singular mass matrix
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        s = zero.simulate().system
+    with pytest.raises(SingularMassMatrix):
+        s.derivatives(0.0, np.array([0.1, 0.0]))

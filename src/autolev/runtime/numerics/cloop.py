@@ -37,7 +37,7 @@ def extra_source() -> tuple[str, tuple]:
     inc = python_include()
     if inc is None:
         return "\n" + LOOP_SOURCE, ()
-    return "\n" + LOOP_SOURCE + "\n" + PYEXT_SOURCE, ("-I" + inc,)
+    return "\n" + LOOP_SOURCE + "\n" + PYEXT_SOURCE, ("-I" + inc, "-I" + np.get_include())
 
 
 def _load_extension(path: str):
@@ -129,11 +129,12 @@ class CompiledLoop:
         fn.restype = ctypes.c_int
         self._integrate = fn
         self._addr = ctypes.addressof(ctx)
-        self._py = None
+        self._py = self._py_rhs = None
         if hasattr(lib, "PyInit__autolev_rhs"):
             module = _load_extension(lib._name)
             if module is not None:
                 self._py = module.derivatives
+                self._py_rhs = module.rhs
 
     def set_values(self, c: np.ndarray, s: np.ndarray) -> None:
         """The constants and specifieds the evaluations read (kept referenced here)."""

@@ -4,9 +4,13 @@
  * what scipy's integrators, calling back into Python at every stage, see.
  *
  * derivatives(ctx_address, t, x, out) -> status: out[:] = x' at (t, x); 0, or
- * AL_SINGULAR.  x and out: C-contiguous float64 buffers of the state's length. */
+ * AL_SINGULAR.  x and out: C-contiguous float64 buffers of the state's length.
+ * rhs(ctx_address, t, x) -> a new array x', or None when the mass matrix is singular
+ * (the array made here: one Python call less than numpy.empty + derivatives). */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
+#include <numpy/arrayobject.h>
 
 static int al_buffer(PyObject *o, Py_buffer *b, int writable, Py_ssize_t n)
 {
@@ -48,7 +52,43 @@ static PyObject *al_py_derivatives(PyObject *self, PyObject *const *args, Py_ssi
     return PyLong_FromLong(r);
 }
 
+static PyObject *al_py_rhs(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    al_ctx *ctx;
+    double t;
+    Py_buffer xb;
+    npy_intp dims[1];
+    PyObject *out;
+    int r;
+    (void)self;
+    if (nargs != 3) {
+        PyErr_SetString(PyExc_TypeError, "rhs(ctx, t, x)");
+        return NULL;
+    }
+    ctx = (al_ctx *)PyLong_AsVoidPtr(args[0]);
+    if (ctx == NULL && PyErr_Occurred()) return NULL;
+    t = PyFloat_AsDouble(args[1]);
+    if (t == -1.0 && PyErr_Occurred()) return NULL;
+    if (al_buffer(args[2], &xb, 0, ctx->n) != 0) return NULL;
+    dims[0] = ctx->n;
+    out = PyArray_SimpleNew(1, dims, NPY_DOUBLE);
+    if (out == NULL) {
+        PyBuffer_Release(&xb);
+        return NULL;
+    }
+    r = al_f(ctx, t, (const double *)xb.buf,
+             (double *)PyArray_DATA((PyArrayObject *)out));
+    PyBuffer_Release(&xb);
+    if (r != 0) {
+        Py_DECREF(out);
+        Py_RETURN_NONE;
+    }
+    return out;
+}
+
 static PyMethodDef al_methods[] = {
+    {"rhs", (PyCFunction)(void (*)(void))al_py_rhs, METH_FASTCALL,
+     "rhs(ctx, t, x) -> x' (a new array), or None when the mass matrix is singular"},
     {"derivatives", (PyCFunction)(void (*)(void))al_py_derivatives, METH_FASTCALL,
      "derivatives(ctx, t, x, out) -> status"},
     {NULL, NULL, 0, NULL}
@@ -60,5 +100,6 @@ static struct PyModuleDef al_module = {
 
 PyMODINIT_FUNC PyInit__autolev_rhs(void)
 {
+    import_array();
     return PyModule_Create(&al_module);
 }

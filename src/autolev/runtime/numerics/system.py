@@ -186,7 +186,7 @@ class NumericSystem:
             for k, v in extra.items()}
         self._rhs_out = np.empty(len(rhs_exprs))
         # the CPython entry point of the compiled right-hand side, when there is one
-        self._py = self.loop._py if self.loop is not None else None
+        self._py = self.loop._py_rhs if self.loop is not None else None
         self._py_ctx = self.loop._addr if self.loop is not None else None
         self._c = None
         self._s = np.zeros(len(self.specified))
@@ -347,15 +347,14 @@ class NumericSystem:
         if self._spec_fns:
             self._fill_specified(t, x)
         elif self._py is not None:      # the common case, in as few calls as possible
-            xdot = np.empty(self.nstate)
             try:
-                status = self._py(self._py_ctx, t, x, xdot)
+                xdot = self._py(self._py_ctx, t, x)
             except (TypeError, ValueError):
-                status = None           # not a contiguous float64 array: below
-            if status == 0:
+                pass                    # not a contiguous float64 array: below
+            else:
+                if xdot is None:
+                    raise SingularMassMatrix(t)
                 return xdot
-            if status is not None:
-                raise SingularMassMatrix(t)
         s = self._s
         if self.loop is not None:
             xdot, status = self.loop.derivatives(t, x)
