@@ -61,12 +61,15 @@ typedef struct {
 } al_ctx;
 
 /* M u' = f by Gaussian elimination with partial pivoting; -1 when a pivot is
- * exactly zero (LAPACK's dgetrf reports the same case). */
+ * exactly zero (LAPACK's dgetrf reports the same case).  Each pivot is inverted once
+ * and multiplied by (divisions were most of the time of a small solve); system.py's
+ * solve_mass_matrix does the same operations in the same order. */
 static int al_lu_solve(int m, double *a, double *b)
 {
     int i, j, k, p;
+    double inv[64], *invd = m <= 64 ? inv : 0;
     for (k = 0; k < m; k++) {
-        double amax = fabs(a[k * m + k]);
+        double amax = fabs(a[k * m + k]), r;
         p = k;
         for (i = k + 1; i < m; i++) {
             double v = fabs(a[i * m + k]);
@@ -79,21 +82,20 @@ static int al_lu_solve(int m, double *a, double *b)
             }
             { double tmp = b[k]; b[k] = b[p]; b[p] = tmp; }
         }
-        {
-            double piv = a[k * m + k];
-            for (i = k + 1; i < m; i++) {
-                double l = a[i * m + k] / piv;
-                if (l != 0.0) {
-                    for (j = k + 1; j < m; j++) a[i * m + j] -= l * a[k * m + j];
-                    b[i] -= l * b[k];
-                }
+        r = 1.0 / a[k * m + k];
+        if (invd) invd[k] = r;
+        for (i = k + 1; i < m; i++) {
+            double l = a[i * m + k] * r;
+            if (l != 0.0) {
+                for (j = k + 1; j < m; j++) a[i * m + j] -= l * a[k * m + j];
+                b[i] -= l * b[k];
             }
         }
     }
     for (i = m - 1; i >= 0; i--) {
         double acc = b[i];
         for (j = i + 1; j < m; j++) acc -= a[i * m + j] * b[j];
-        b[i] = acc / a[i * m + i];
+        b[i] = acc * (invd ? invd[i] : 1.0 / a[i * m + i]);
     }
     return 0;
 }

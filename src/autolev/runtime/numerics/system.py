@@ -442,8 +442,9 @@ def _lower(d):
 
 def solve_mass_matrix(mm: np.ndarray, f: np.ndarray, t: float) -> np.ndarray:
     """u' from M u' = f by Gaussian elimination with partial pivoting: the operations
-    of loop.c's solve in the same order, so that the Python and C back ends give the
-    same numbers.  SingularMassMatrix when a pivot is exactly zero."""
+    of loop.c's solve in the same order (each pivot inverted once and multiplied by),
+    so that the Python and C back ends give the same numbers.  SingularMassMatrix when
+    a pivot is exactly zero."""
     m = len(f)
     if m == 1:
         if mm[0, 0] == 0 or not np.isfinite(mm[0, 0]):
@@ -451,6 +452,7 @@ def solve_mass_matrix(mm: np.ndarray, f: np.ndarray, t: float) -> np.ndarray:
         return f / mm[0, 0]
     a = np.array(mm, dtype=float)
     b = [float(v) for v in f]
+    inv = [0.0] * m
     for k in range(m):
         col = np.abs(a[k:, k]).tolist()
         p, amax = k, col[0]
@@ -462,9 +464,10 @@ def solve_mass_matrix(mm: np.ndarray, f: np.ndarray, t: float) -> np.ndarray:
         if p != k:
             a[[k, p]] = a[[p, k]]
             b[k], b[p] = b[p], b[k]
-        piv = a[k, k]
+        r = 1.0 / float(a[k, k])
+        inv[k] = r
         for i in range(k + 1, m):
-            li = a[i, k] / piv
+            li = float(a[i, k]) * r
             if li != 0.0:
                 a[i, k + 1:] -= li * a[k, k + 1:]
                 b[i] -= li * b[k]
@@ -475,7 +478,7 @@ def solve_mass_matrix(mm: np.ndarray, f: np.ndarray, t: float) -> np.ndarray:
         ri = rows[i]
         for j in range(i + 1, m):
             acc -= ri[j] * x[j]
-        x[i] = acc / ri[i]
+        x[i] = acc * (inv[i] if m <= 64 else 1.0 / ri[i])
     return np.array(x)
 
 
