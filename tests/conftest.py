@@ -9,6 +9,13 @@ ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "autolev_examples"
 CORPUS = Path(os.environ.get("AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus"))
 SHARED = ROOT.parent / "shared"
+NUMERICS_DATA = ROOT / "tests" / "data" / "numerics"
+
+
+def load_model(name: str):
+    """A model of tests/data/numerics, else of autolev_examples, by file stem."""
+    path = NUMERICS_DATA / f"{name}.al"
+    return autolev.load(path if path.exists() else EXAMPLES / f"{name}.al")
 
 
 def parse(text: str, filename: str = "test.al") -> autolev.Program:

@@ -1,24 +1,19 @@
 """The compiled integration loop (loop.c): the same steps, rows and failures as the
 Python loops, stiffness detection, and the C solve of Kane's equations."""
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import autolev
+from conftest import load_model
 from autolev.runtime.numerics import codegen
 
-HERE = Path(__file__).parent
-DATA = HERE / "data" / "numerics"
-EXAMPLES = HERE.parent / "autolev_examples"
 
 pytestmark = pytest.mark.skipif(codegen.compiler() is None, reason="needs a C compiler")
 
 
-def load(name):
-    path = DATA / f"{name}.al" if (DATA / f"{name}.al").exists() else EXAMPLES / f"{name}.al"
-    return autolev.load(path)
+load = load_model
 
 
 def run(model, **kw):

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import autolev
+from conftest import load_model
 from autolev.runtime.numerics import codegen, files, integrate
 from autolev.runtime.numerics.inputs import InputFileError
 
@@ -19,9 +20,7 @@ DATA = HERE / "data" / "numerics"
 EXAMPLES = HERE.parent / "autolev_examples"
 
 
-def load(name):
-    path = DATA / f"{name}.al" if (DATA / f"{name}.al").exists() else EXAMPLES / f"{name}.al"
-    return autolev.load(path)
+load = load_model
 
 
 def quiet_simulate(model, **kw):

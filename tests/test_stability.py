@@ -6,23 +6,19 @@ import math
 import subprocess
 import sys
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import autolev
+from conftest import load_model
 from autolev.runtime.errors import AutolevModelError
 from autolev.runtime.numerics.system import scaled_condition
 
-HERE = Path(__file__).parent
-DATA = HERE / "data" / "numerics"
-EXAMPLES = HERE.parent / "autolev_examples"
+from conftest import NUMERICS_DATA as DATA
 
 
-def load(name):
-    path = DATA / f"{name}.al" if (DATA / f"{name}.al").exists() else EXAMPLES / f"{name}.al"
-    return autolev.load(path)
+load = load_model
 
 
 # -- bad inputs -------------------------------------------------------------------------

@@ -26,6 +26,21 @@ static int al_buffer(PyObject *o, Py_buffer *b, int writable, Py_ssize_t n)
     return 0;
 }
 
+/* the arguments both entry points share: (ctx, t, x, ...); 0, or -1 with an error */
+static int al_args(PyObject *const *args, Py_ssize_t nargs, Py_ssize_t want,
+                   const char *usage, al_ctx **ctx, double *t, Py_buffer *xb)
+{
+    if (nargs != want) {
+        PyErr_SetString(PyExc_TypeError, usage);
+        return -1;
+    }
+    *ctx = (al_ctx *)PyLong_AsVoidPtr(args[0]);
+    if (*ctx == NULL && PyErr_Occurred()) return -1;
+    *t = PyFloat_AsDouble(args[1]);
+    if (*t == -1.0 && PyErr_Occurred()) return -1;
+    return al_buffer(args[2], xb, 0, (*ctx)->n);
+}
+
 static PyObject *al_py_derivatives(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     al_ctx *ctx;
@@ -33,15 +48,8 @@ static PyObject *al_py_derivatives(PyObject *self, PyObject *const *args, Py_ssi
     Py_buffer xb, ob;
     int r;
     (void)self;
-    if (nargs != 4) {
-        PyErr_SetString(PyExc_TypeError, "derivatives(ctx, t, x, out)");
+    if (al_args(args, nargs, 4, "derivatives(ctx, t, x, out)", &ctx, &t, &xb) != 0)
         return NULL;
-    }
-    ctx = (al_ctx *)PyLong_AsVoidPtr(args[0]);
-    if (ctx == NULL && PyErr_Occurred()) return NULL;
-    t = PyFloat_AsDouble(args[1]);
-    if (t == -1.0 && PyErr_Occurred()) return NULL;
-    if (al_buffer(args[2], &xb, 0, ctx->n) != 0) return NULL;
     if (al_buffer(args[3], &ob, 1, ctx->n) != 0) {
         PyBuffer_Release(&xb);
         return NULL;
@@ -61,15 +69,8 @@ static PyObject *al_py_rhs(PyObject *self, PyObject *const *args, Py_ssize_t nar
     PyObject *out;
     int r;
     (void)self;
-    if (nargs != 3) {
-        PyErr_SetString(PyExc_TypeError, "rhs(ctx, t, x)");
+    if (al_args(args, nargs, 3, "rhs(ctx, t, x)", &ctx, &t, &xb) != 0)
         return NULL;
-    }
-    ctx = (al_ctx *)PyLong_AsVoidPtr(args[0]);
-    if (ctx == NULL && PyErr_Occurred()) return NULL;
-    t = PyFloat_AsDouble(args[1]);
-    if (t == -1.0 && PyErr_Occurred()) return NULL;
-    if (al_buffer(args[2], &xb, 0, ctx->n) != 0) return NULL;
     dims[0] = ctx->n;
     out = PyArray_SimpleNew(1, dims, NPY_DOUBLE);
     if (out == NULL) {
