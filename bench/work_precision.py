@@ -195,37 +195,14 @@ def sympy_double_pendulum():
 
 
 def sympy_planar(n: int = 8):
-    """bench/chains.py's planar n-link pendulum: uniform links of length l and mass m,
-    each turned by q_i about z relative to the one before, gravity along N.x."""
-    import sympy as sm
-    import sympy.physics.mechanics as me
-    q = list(me.dynamicsymbols(f"q1:{n + 1}"))
-    u = list(me.dynamicsymbols(f"u1:{n + 1}"))
-    length, mass, g = sm.symbols("l m g")
-    frame_n = me.ReferenceFrame("N")
-    joint = me.Point("O")
-    joint.set_vel(frame_n, 0)
-    parent = frame_n
-    bodies, loads = [], []
-    for i in range(n):
-        link = me.ReferenceFrame(f"B{i + 1}")
-        link.orient_axis(parent, parent.z, q[i])
-        link.set_ang_vel(parent, u[i] * frame_n.z)
-        centre = joint.locatenew(f"C{i + 1}", length / 2 * link.x)
-        centre.v2pt_theory(joint, frame_n, link)
-        tip = joint.locatenew(f"J{i + 1}", length * link.x)
-        tip.v2pt_theory(joint, frame_n, link)
-        inertia = me.inertia(link, 0, 0, mass * length ** 2 / 12)
-        bodies.append(me.RigidBody(f"b{i + 1}", centre, link, mass, (inertia, centre)))
-        loads.append((centre, mass * g * frame_n.x))
-        parent, joint = link, tip
-    kane = me.KanesMethod(frame_n, q_ind=q, u_ind=u,
-                          kd_eqs=[qi.diff() - ui for qi, ui in zip(q, u)])
-    kane.kanes_equations(bodies, loads)
+    """bench/chains.py's planar n-link pendulum in KanesMethod (bench/scaling.py builds
+    it), with its INPUT values and initial state."""
+    import scaling
+    kane, q, u, (g, length, mass) = scaling.sympy_planar(n)
     values = {length: 0.5, mass: 1.0, g: 9.81}
-    y0 = [math.radians(10 + 5 * (i % 4)) for i in range(1, n + 1)] + [0.0] * n
+    q0, u0 = scaling.initial_state("planar", n)
     names = [f"Q{i}" for i in range(1, n + 1)] + [f"U{i}" for i in range(1, n + 1)]
-    return kane, q, u, values, y0, names
+    return kane, q, u, values, q0 + u0, names
 
 
 SYMPY_BUILDS = {"double_pendulum": sympy_double_pendulum, "planar8": sympy_planar}
