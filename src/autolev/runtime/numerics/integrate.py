@@ -161,7 +161,6 @@ class KuttaMerson:
                 tt = tfinal
             f0 = f1
 
-
     def _stiffness(self, hlamb: float, t: float) -> None:
         """loop.c's al_stiff_count with Kutta-Merson's limit."""
         if hlamb > 1.75:
