@@ -35,7 +35,7 @@ def python_include() -> str | None:
 def extra_source() -> tuple[str, tuple]:
     """(C appended to a right-hand side, extra compiler flags)."""
     inc = python_include()
-    if inc is None:
+    if inc is None or not (Path(np.get_include()) / "numpy" / "arrayobject.h").exists():
         return "\n" + LOOP_SOURCE, ()
     return "\n" + LOOP_SOURCE + "\n" + PYEXT_SOURCE, ("-I" + inc, "-I" + np.get_include())
 
