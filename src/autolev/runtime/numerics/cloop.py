@@ -22,11 +22,12 @@ PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
 
 
 def python_include() -> str | None:
-    """The folder of Python.h when this Python has its headers (then the library also
-    carries a CPython entry point, pyext.c), else None."""
+    """The folder of Python.h when this Python has its headers, and numpy its own
+    (then the library also carries a CPython entry point, pyext.c), else None."""
     import sysconfig
     inc = sysconfig.get_paths().get("include")
     if inc and (Path(inc) / "Python.h").exists() and \
+            (Path(np.get_include()) / "numpy" / "arrayobject.h").exists() and \
             not os.environ.get("AUTOLEV_NO_PYEXT"):
         return inc
     return None
@@ -35,7 +36,7 @@ def python_include() -> str | None:
 def extra_source() -> tuple[str, tuple]:
     """(C appended to a right-hand side, extra compiler flags)."""
     inc = python_include()
-    if inc is None or not (Path(np.get_include()) / "numpy" / "arrayobject.h").exists():
+    if inc is None:
         return "\n" + LOOP_SOURCE, ()
     return "\n" + LOOP_SOURCE + "\n" + PYEXT_SOURCE, ("-I" + inc, "-I" + np.get_include())
 
@@ -129,12 +130,11 @@ class CompiledLoop:
         fn.restype = ctypes.c_int
         self._integrate = fn
         self._addr = ctypes.addressof(ctx)
-        self._py = self._py_rhs = None
+        self._py = None
         if hasattr(lib, "PyInit__autolev_rhs"):
             module = _load_extension(lib._name)
             if module is not None:
-                self._py = module.derivatives
-                self._py_rhs = module.rhs
+                self._py = module.rhs
 
     def set_values(self, c: np.ndarray, s: np.ndarray) -> None:
         """The constants and specifieds the evaluations read (kept referenced here)."""
@@ -145,13 +145,16 @@ class CompiledLoop:
 
     def derivatives(self, t: float, x: np.ndarray) -> tuple[np.ndarray, int]:
         """(x', status): status 0, or SINGULAR (then self.yfail is x)."""
-        xdot = np.empty(self.n)
         if self._py is not None:
             try:
-                return xdot, self._py(self._addr, t, x, xdot)
+                xdot = self._py(self._addr, t, x)
             except (TypeError, ValueError):
                 pass       # not a contiguous float64 array (scipy's Jacobian columns
                 #            are strided views): converted, as below
+            else:
+                return (xdot, 0) if xdot is not None else (np.full(self.n, np.nan),
+                                                           SINGULAR)
+        xdot = np.empty(self.n)
         x = np.ascontiguousarray(x, dtype=float)
         r = self._deriv(self._ctx_ref, float(t), x.ctypes.data, xdot.ctypes.data)
         return xdot, r

@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sm
 
+from .. import symbols as S
 from ..errors import AutolevModelError
 from . import codegen
 from .integrate import IntegrationFailure, Schedule, integrate
@@ -27,13 +28,13 @@ class Projector:
         m = system.model
         exprs = _expressions(constraints)
         for e in exprs:
-            if not isinstance(e, sm.Expr) or isinstance(e, sm.MatrixBase):
+            if not isinstance(e, sm.Expr):
                 raise AutolevModelError(f"a constraint must be a scalar expression: {e}")
         states = list(system.states)
         jac = m.defs.jacobian(exprs, states)
         if all(d == 0 for row in jac for d in row):
             raise AutolevModelError("the constraints do not depend on the state")
-        inputs = {"t": [_time()],
+        inputs = {"t": [S.TIME],
                   "x": states,
                   "c": system.params + system.constant_defs
                   + constants_needed(system, exprs),
@@ -79,14 +80,9 @@ def constants_needed(system, constraints) -> list:
     values are inputs of the run too), in alphabetical order."""
     from .system import alphabetical
     exprs = _expressions(constraints)
-    given = set(system.states) | {_time()} | set(system.aux_fixed) | set(system.params)
+    given = set(system.states) | {S.TIME} | set(system.aux_fixed) | set(system.params)
     _, undefined = system._needed(exprs, given)
     return alphabetical(s for s in undefined if not system._is_specified(s))
-
-
-def _time():
-    from .. import symbols as S
-    return S.TIME
 
 
 def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_row,

@@ -389,15 +389,12 @@ def _zero_hint(zero_params) -> str:
 
 
 def _split_outputs(system, values, result_rows, writer, encoded_out: dict) -> None:
-    flags = system.__dict__.get("_degree_columns")
-    if flags is None:
-        flags = system._degree_columns = [[units.is_degrees(c.unit) for c in cols]
-                                          for cols in system.files]
     pos = 0
     for k, cols in enumerate(system.files):
         vals = values[pos:pos + len(cols)].tolist()
         # units.to_output, with the unit test made once per column
-        row = [v * 180 / math.pi if deg else v for v, deg in zip(vals, flags[k])]
+        row = [v * 180 / math.pi if deg else v
+               for v, deg in zip(vals, system.degree_columns[k])]
         pos += len(cols)
         result_rows[k].append(row)
         if writer is not None:

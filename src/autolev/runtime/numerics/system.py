@@ -17,7 +17,6 @@ ENCODE values, evaluated at print times only, with the accelerations found there
 from __future__ import annotations
 
 import inspect
-import math
 import warnings
 from dataclasses import dataclass
 
@@ -26,7 +25,7 @@ import sympy as sm
 
 from .. import symbols as S
 from ..errors import AutolevModelError
-from . import codegen
+from . import codegen, units
 from .cloop import CompiledLoop
 from .cloop import extra_source as loop_extra_source
 
@@ -118,6 +117,8 @@ class NumericSystem:
 
         # outputs: columns and ENCODE values (derivatives resolved through definitions)
         self.files = [list(cols) for cols in outputs]
+        self.degree_columns = [[units.is_degrees(c.unit) for c in cols]
+                               for cols in self.files]
         self.encoded = list(encoded)
         out_exprs = [self._resolve(c.expr) for cols in self.files for c in cols]
         self.encode_shapes = []
@@ -186,7 +187,7 @@ class NumericSystem:
             for k, v in extra.items()}
         self._rhs_out = np.empty(len(rhs_exprs))
         # the CPython entry point of the compiled right-hand side, when there is one
-        self._py = self.loop._py_rhs if self.loop is not None else None
+        self._py = self.loop._py if self.loop is not None else None
         self._py_ctx = self.loop._addr if self.loop is not None else None
         self._c = None
         self._s = np.zeros(len(self.specified))
@@ -346,7 +347,8 @@ class NumericSystem:
         """State derivatives at (t, x): a fresh array."""
         if self._spec_fns:
             self._fill_specified(t, x)
-        elif self._py is not None:      # the common case, in as few calls as possible
+        elif self._py is not None:      # loop.derivatives inlined: the common case, in
+            #                             as few Python calls as possible
             try:
                 xdot = self._py(self._py_ctx, t, x)
             except (TypeError, ValueError):
