@@ -328,13 +328,10 @@ class Dyadic:
         out = Dyadic()
         for (fa, fb), m in self.terms.items():
             for j in range(3):
-                bj = Vector({fb: tuple(sm.S.One if k == j else sm.S.Zero for k in range(3))})
-                bxv = bj.cross(v)
+                bxv = fb[j + 1].cross(v)
                 for i in range(3):
                     if m[i, j] != 0:
-                        ai = Vector({fa: tuple(sm.S.One if k == i else sm.S.Zero
-                                               for k in range(3))})
-                        out = out + m[i, j] * outer(ai, bxv)
+                        out = out + m[i, j] * outer(fa[i + 1], bxv)
         return out
 
     def rcross(self, v: Vector) -> "Dyadic":
@@ -342,13 +339,10 @@ class Dyadic:
         out = Dyadic()
         for (fa, fb), m in self.terms.items():
             for i in range(3):
-                ai = Vector({fa: tuple(sm.S.One if k == i else sm.S.Zero for k in range(3))})
-                vxa = v.cross(ai)
+                vxa = v.cross(fa[i + 1])
                 for j in range(3):
                     if m[i, j] != 0:
-                        bj = Vector({fb: tuple(sm.S.One if k == j else sm.S.Zero
-                                               for k in range(3))})
-                        out = out + m[i, j] * outer(vxa, bj)
+                        out = out + m[i, j] * outer(vxa, fb[j + 1])
         return out
 
     def express(self, a: "Frame", b: "Frame | None" = None) -> "Dyadic":
