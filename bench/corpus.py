@@ -24,25 +24,29 @@ sys.path.insert(0, str(ROOT / "src"))
 import autolev  # noqa: E402
 
 
-def corpus_models(corpus: Path) -> list[tuple[str, Path]]:
+def corpus_models(corpus: Path, listing: Path | None = None) -> list[tuple[str, Path]]:
     """(id, path) of every model row (kind `al`, not a .a macro) found in the corpus.
 
+    `listing`: a TSV with columns repo, path, kind (and id, commit) -- visible.tsv by
+    default, or another set's manifest laid out the same way under `corpus`.
     A row pinned to an older commit whose files differ from the newest ones lives in
     `OWNER+NAME@commit/` (materialize.py); it is read from an overlay folder that puts
     those files over the newest ones, so its RUN files and macros are of its commit."""
-    listing = ROOT.parent / "shared" / "corpus" / "visible.tsv"
+    listing = listing or ROOT.parent / "shared" / "corpus" / "visible.tsv"
     out, seen = [], set()
     for row in csv.DictReader(open(listing), delimiter="\t"):
         if row["kind"] != "al" or row["path"].lower().endswith(".a"):
             continue
+        ident = row.get("id") or f"{row['repo']}:{row['path']}"
+        commit = row.get("commit") or ""
         base = corpus / row["repo"].replace("/", "+")
-        pinned_root = corpus / (row["repo"].replace("/", "+") + "@" + row["commit"][:8])
+        pinned_root = corpus / (row["repo"].replace("/", "+") + "@" + commit[:8])
         p = base / row["path"]
-        if pinned_root.is_dir() and row["id"].endswith(row["commit"][:8]):
+        if commit and pinned_root.is_dir() and ident.endswith(commit[:8]):
             p = _overlay(base, pinned_root) / row["path"]
         if p.exists() and p not in seen:
             seen.add(p)
-            out.append((row["id"], p))
+            out.append((ident, p))
     return out
 
 
@@ -153,13 +157,16 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--corpus", type=Path, default=Path(os.environ.get(
         "AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus")))
+    ap.add_argument("--listing", type=Path, default=None,
+                    help="a TSV of models (repo, path, kind) under --corpus; default "
+                    "shared/corpus/visible.tsv")
     ap.add_argument("--list", action="store_true", help="list every model and its outcome")
     ap.add_argument("--limit", type=int, default=120, help="seconds per model")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--no-run", action="store_true",
                     help="stop after building: do not perform the CODE commands")
     ns = ap.parse_args()
-    models = corpus_models(ns.corpus)
+    models = corpus_models(ns.corpus, ns.listing)
     if not models:
         print(f"no corpus under {ns.corpus}: see shared/corpus/materialize.py")
         return 1

@@ -84,6 +84,7 @@ class Builder:
         self.sources: dict[str, list[str]] = {}
         self._stack: list[Path] = [self.root_path] if self.root_path else []
         self._ctx: _Context | None = None
+        self._function_files: dict[str, Path | None] = {}
 
     # -- driving ---------------------------------------------------------------
     def build_source(self, src: SourceFile) -> None:
@@ -469,6 +470,55 @@ class Builder:
         self._stack.pop()
         return True
 
+    def _user_function(self, ctx, name: str, arg_ctxs) -> ir.Expr | None:
+        """NAME(args) in an expression, with a file NAME.R next to the model: Autolev's
+        user function, one expression with #k# standing for the k-th argument's text
+        (DAS3's sym_atan2.r); None when there is no such file."""
+        key = name.lower()
+        if key not in self._function_files:
+            dirs = ([self._ctx.path.parent] if self._ctx.path is not None else []) + \
+                ([self.model_root] if self.model_root is not None else [])
+            self._function_files[key] = find_macro(name, dirs, ".r")
+        found = self._function_files[key]
+        if found is None:
+            return None
+        found = found.resolve()
+        args = [self._text(a).strip() for a in arg_ctxs]
+        display = self._display_name(found)
+        src = SourceFile.read(found, display)
+        used = placeholders(src)
+        if used and max(used) > len(args):
+            self._error(ctx, "E030", f"function {name} ({display}) uses #{max(used)}# but "
+                        f"this call gives {len(args)} argument{'s' if len(args) != 1 else ''}")
+            return None
+        if found in self._stack or len(self._stack) >= MAX_INCLUDE_DEPTH:
+            self._error(ctx, "E031", f"function {name} calls itself (directly or through "
+                        "other functions)")
+            return None
+        if display not in self.files:
+            self.files.append(display)
+            self.sources[display] = src.lines
+        where = self._ctx.mapped.locate(ctx.start.start)
+        mapped = expand_macro(src, args, where, f"function {name}({', '.join(args)})")
+        parsed = self.parser.parse(mapped)
+        self.diagnostics.extend(parsed.diagnostics)
+        bodies = [st.getChild(0) for line in parsed.lines
+                  if line.tree.statementLine() is not None
+                  for st in line.tree.statementLine().statement()]
+        if len(bodies) != 1 or not isinstance(bodies[0], P.ExpressionStatementContext):
+            if not parsed.diagnostics:
+                self._error(ctx, "E032", f"function {name} ({display}) must hold one "
+                            f"expression, not {len(bodies)} statements")
+            return None
+        outer = self._ctx
+        self._ctx = _Context(mapped, found, display)
+        self._stack.append(found)
+        try:
+            return self._expr(bodies[0].expr())
+        finally:
+            self._stack.pop()
+            self._ctx = outer
+
     # -- expressions -------------------------------------------------------------
     # The hot path: children are read directly, since ANTLR's typed accessors
     # (ctx.expr(0), ctx.name(), ...) scan the children list on every call.
@@ -509,9 +559,12 @@ class Builder:
         if kind is P.NumberAtomContext:
             return ir.Number(ctx.start.text, span=span)
         if kind is P.CallAtomContext:
-            args = tuple(self._arg(a) for a in kids[2].children[::2]) \
-                if len(kids) == 4 else ()
-            return ir.Call(kids[0].start.text, args, span=span)
+            arg_ctxs = kids[2].children[::2] if len(kids) == 4 else []
+            expanded = self._user_function(ctx, kids[0].start.text, arg_ctxs)
+            if expanded is not None:
+                return expanded
+            return ir.Call(kids[0].start.text, tuple(self._arg(a) for a in arg_ctxs),
+                           span=span)
         if kind is P.VectorAtomContext:
             return self._vector(ctx.start, ctx)
         if kind is P.ParenAtomContext:

@@ -32,6 +32,7 @@ def load_translation(translation, filename: str):
     model = module.__dict__["model"]
     model.namespace = module.__dict__
     model.names = translation.names
+    model.namespaces = translation.namespaces
     # where each CODE statement is in the .al file (diagnostics of its run point there)
     model.code_locations = [translation.line_map.get(n)
                             for n, text in enumerate(translation.code.splitlines(), 1)

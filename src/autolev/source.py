@@ -253,10 +253,11 @@ def resolve_run(name: str, including: Path, model_root: Path) -> Path | None:
     return None
 
 
-def find_macro(name: str, search_dirs: list[Path]) -> Path | None:
-    """The user macro file `name.a` (any case) in the first folder that has it."""
+def find_macro(name: str, search_dirs: list[Path], suffix: str = ".a") -> Path | None:
+    """The user macro file `name.a` (a user function: `name.r`), any case, in the first
+    folder that has it."""
     for d in search_dirs:
-        found = find_file(d, name + ".a")
+        found = find_file(d, name + suffix)
         if found is not None:
             return found
     return None

@@ -131,6 +131,7 @@ class AlgebraMixin:
             unknowns = list(unknowns[0])
         eqs = list(equations) if isinstance(equations, (sm.MatrixBase, list, tuple)) \
             else [equations]
+        eqs = self._dynamical_rows(eqs, unknowns)
         if len(eqs) != len(unknowns):
             raise AutolevModelError(f"SOLVE has {len(eqs)} equations for {len(unknowns)} "
                                     "unknowns")
@@ -139,9 +140,34 @@ class AlgebraMixin:
                 raise AutolevModelError(f"SOLVE's unknowns are names, not {u}")
         a, r = coefficients(eqs, unknowns, self.defs)
         solution = solve_linear(a, -r, self.defs, "SOLVE")
+        self._keep_speeds(unknowns)
         for u, v in zip(unknowns, solution):
             self.define(u, v)
         self.solved = (eqs, unknowns)
+
+    def _keep_speeds(self, unknowns) -> None:
+        """A generalized speed u stays one when SOLVE defines u' (SOLVE(ZERO, U')), although
+        a variable whose derivative is defined is otherwise a coordinate."""
+        rates = [u for u in unknowns if S.base_and_order(u)[1] == 1
+                 and u not in self.defs.rhs]
+        if not rates or self.newtonian_frame is None:
+            return
+        speeds = set(self._generalized_speeds()[0])
+        self.solved_speeds.update(S.base_and_order(u)[0] for u in rates
+                                  if S.base_and_order(u)[0] in speeds)
+
+    def _dynamical_rows(self, eqs: list, unknowns: list) -> list:
+        """After KANE(F1, ..., Fk), ZERO holds the n dynamical rows and then the k rows
+        of the auxiliary speeds, which KANE made the definitions of the F's; SOLVE(ZERO,
+        u1', ..., un') solves the dynamical rows (as Autolev's programs did: first the
+        u', then the F's from them)."""
+        kane = self.kane_equations
+        if kane is None or not kane.unknowns:
+            return eqs
+        n, k = len(kane.speeds), len(kane.auxiliary)
+        if len(eqs) == n + k and len(unknowns) == n:
+            return eqs[:n]
+        return eqs
 
     def zee(self, value, *keep):
         """ZEE(E) / ZEE(E, x): E in the compact Z form, with the names of ZEE_NOT (and

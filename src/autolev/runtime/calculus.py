@@ -18,8 +18,8 @@ computed iteratively in dependency order (no recursion on the depth of the chain
 from __future__ import annotations
 
 import math
-
 from collections.abc import Iterable, Mapping
+from contextlib import contextmanager
 
 import sympy as sm
 
@@ -136,6 +136,38 @@ class Definitions:
         self.rhs[sym] = expr
         self._fs.pop(sym, None)
         self._fo.pop(sym, None)
+
+    def user_definitions(self) -> dict:
+        """The definitions the model made (not the Z's), as they stand now."""
+        return {s: e for s, e in self.rhs.items() if not isinstance(s, Z)}
+
+    @contextmanager
+    def as_of(self, user_definitions: Mapping | None):
+        """The table as it stood when `user_definitions` (a `user_definitions()` taken
+        then) was taken: later definitions hidden, changed ones as they were.  Z's stay:
+        each names an expression, whatever is defined.  (A CODE command's program is
+        built from what was defined when the CODE line came.)"""
+        if user_definitions is None:
+            yield self
+            return
+        now = self.user_definitions()
+        if len(now) == len(user_definitions) and all(
+                user_definitions.get(s) is e for s, e in now.items()):
+            yield self
+            return
+        self._replace_user_definitions(user_definitions)
+        try:
+            yield self
+        finally:
+            self._replace_user_definitions(now)
+
+    def _replace_user_definitions(self, user_definitions: Mapping) -> None:
+        for s in [s for s in self.rhs if not isinstance(s, Z)]:
+            del self.rhs[s]
+        self.rhs.update(user_definitions)
+        self._fs = {s: v for s, v in self._fs.items() if isinstance(s, Z)}
+        self._fo = {s: v for s, v in self._fo.items() if isinstance(s, Z)}
+        self._invalidate()
 
     def undefine(self, sym: sm.Symbol) -> None:
         if self.rhs.pop(sym, None) is not None:

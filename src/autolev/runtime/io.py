@@ -29,6 +29,8 @@ class IOMixin:
         """INPUT(x): the value INPUT gave to x."""
         key = target.upper() if isinstance(target, str) else target
         if key not in self.inputs:
+            if isinstance(key, sm.Symbol) and key in self.defs.rhs:
+                return self._input_value_of_definition(key)
             raise AutolevModelError(f"INPUT({target}): no value was input for it")
         value, unit = self.inputs[key]
         from .functions import degrees_to_radians
@@ -38,6 +40,18 @@ class IOMixin:
             # other unit (DEG/S too) is a label
             value = degrees_to_radians(value)
         return value
+
+    def _input_value_of_definition(self, sym):
+        """INPUT(x) of an x that has a definition but no INPUT value (a constant
+        assigned `x = pi/2`): the definition's value under the input values."""
+        expr = self.defs.explicit(sym)
+        values = {}
+        for s in sorted(expr.free_symbols, key=str):
+            if s not in self.inputs and s not in self.defs.rhs:
+                raise AutolevModelError(f"INPUT({sym}): {sym} = {expr} uses {s}, which has "
+                                        "no INPUT value")
+            values[s] = self.input_value(s)
+        return expr.xreplace(values)
 
     def output(self, *items) -> None:
         """OUTPUT e1 [unit], e2, ...: one more output file, these columns."""
@@ -72,7 +86,7 @@ class IOMixin:
             n_outputs=len(self.outputs), n_encoded=len(self.encoded),
             inputs=dict(self.inputs), units=dict(self.unit_of),
             zero=None if zero is None else sm.Matrix(zero),
-            defined=frozenset(self.defs.rhs)))
+            definitions=self.defs.user_definitions()))
 
     def run(self, out_dir=".", verbose: bool = False, **options):
         """Perform every CODE command with the INPUT values (as `python model.py`
@@ -140,5 +154,6 @@ class CodeCommand:
     units: dict = field(default_factory=dict)
     # ZERO as it stood at CODE time, when KANE() had marked it as the dynamics
     zero: object = None
-    # the names with a definition at CODE time (later ones are not the program's)
-    defined: frozenset | None = None
+    # the model's definitions at CODE time: a later statement (SOLVE after CODE
+    # DYNAMICS) never changes a program already coded
+    definitions: dict | None = None

@@ -61,6 +61,8 @@ class Model(AlgebraMixin, IOMixin):
         self.forces: dict[Point, Vector] = {}
         self.torques: dict[Frame, Vector] = {}
         self.dependent_speeds: list[sm.Symbol] = []
+        # speeds whose derivatives SOLVE defined: still speeds, not coordinates
+        self.solved_speeds: set[sm.Symbol] = set()
         self.auxiliary_speeds: list[sm.Symbol] = []
         self.kane_equations: KaneEquations | None = None
         self._version = 0
@@ -80,21 +82,52 @@ class Model(AlgebraMixin, IOMixin):
         return f"<autolev Model {self.name}>"
 
     def __getitem__(self, name: str):
-        """model["Q1"], model["ZERO"], model["N"]: what the model calls `name` (any case;
-        the translated module's names after autolev.load)."""
-        names = getattr(self, "names", {})
+        """What the model calls `name` (any case), following Autolev's namespaces: a
+        name ending in `>` or `>>` is a vector or dyadic (model["P_NO_P>"] too); any
+        other name is first a quantity (a constant, variable, matrix or other assigned
+        value: model["ZERO"], model["Q1'"]), then a frame, body, point or particle
+        (model["N"]).  Where a name is both (a body A and a matrix A), model.quantity
+        and model.entity ask for each."""
+        if name.endswith(">"):
+            return self.vector(name)
+        for lookup in (self.quantity, self.entity):
+            try:
+                return lookup(name)
+            except KeyError:
+                pass
+        raise KeyError(name)
+
+    def _named(self, space: str, name: str):
         namespace = getattr(self, "namespace", {})
-        for autolev_name, py in names.items():
+        for autolev_name, py in getattr(self, "namespaces", {}).get(space, {}).items():
             if autolev_name.lower() == name.lower() and py in namespace:
                 return namespace[py]
+        raise KeyError(name)
+
+    def quantity(self, name: str):
+        """The constant, variable (Q1, Q1'), matrix or assigned value named `name`."""
+        try:
+            return self._named("quantity", name)
+        except KeyError:
+            pass
+        base = name.rstrip("'")
+        for sym, info in self.info.items():
+            if S.base_and_order(sym)[1] == 0 and sym.name.lower() == base.lower():
+                return S.derivative(sym, len(name) - len(base))
+        raise KeyError(name)
+
+    def entity(self, name: str):
+        """The frame, body, point or particle named `name` (NO, BO, AO included)."""
         for table in (self.frames_by_name, self.points_by_name):
             for k, v in table.items():
                 if k.lower() == name.lower():
                     return v
-        for sym in self.info:
-            if sym.name.lower() == name.lower():
-                return sym
-        raise KeyError(name)
+        return self._named("entity", name)
+
+    def vector(self, name: str):
+        """The vector or dyadic the model assigned to `name` (`V>`, `I>>`, or the name
+        without the marks)."""
+        return self._named("vector", name.rstrip(">"))
 
     def _changed(self) -> None:
         self._version += 1
@@ -442,7 +475,7 @@ class Model(AlgebraMixin, IOMixin):
         vels, angs = [], []
 
         def vel(p):
-            if strict or n in p._vel:
+            if strict or p.has_vel(n):
                 vels.append(p.vel(n))
 
         def ang(f):
@@ -485,7 +518,7 @@ class Model(AlgebraMixin, IOMixin):
         for sym, info in self.info.items():
             d = S.derivative(sym)
             if info.kind in ("variable", "motionvariable") and d in self.defs.rhs \
-                    and S.base_and_order(sym)[1] == 0:
+                    and S.base_and_order(sym)[1] == 0 and sym not in self.solved_speeds:
                 kin_rhs |= self.defs.rhs[d].free_symbols
         vels, angs = self._velocity_sources(strict=False)
         comps = [c for v in vels + angs for cs in v.terms.values() for c in cs]
@@ -498,9 +531,9 @@ class Model(AlgebraMixin, IOMixin):
             if info.kind not in ("variable", "motionvariable") or S.base_and_order(sym)[1]:
                 continue
             d = S.derivative(sym)
-            if d in self.defs.rhs:
+            if d in self.defs.rhs and sym not in self.solved_speeds:
                 continue                                 # a coordinate
-            if sym in kin_rhs or sym in self.dependent_speeds or sym in self.auxiliary_speeds:
+            if sym in kin_rhs or sym in self.solved_speeds or sym in self.dependent_speeds or sym in self.auxiliary_speeds:
                 candidates.append(sym)
             elif info.order >= 1 and appears(d):
                 candidates.append(d)                     # q' acts as the speed
@@ -563,7 +596,7 @@ class Model(AlgebraMixin, IOMixin):
                 frstar[r] += vr.dot(inertial)
         for b in self.bodies_list:
             mc = b.masscenter
-            if n not in mc._vel and n in mc._acc and not mc._acc[n].terms \
+            if not mc.has_vel(n) and n in mc._acc and not mc._acc[n].terms \
                     and not (mc in self.forces and self.forces[mc].terms):
                 # A_BO_N> = 0> given and no velocity (tutorial 9's fixed mass centre):
                 # its inertia force is zero whatever its partial velocities are

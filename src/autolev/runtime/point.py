@@ -28,6 +28,7 @@ class Point:
         self._vel: dict[Frame, Vector] = {}
         self._acc: dict[Frame, Vector] = {}
         self._acc_derived: dict[Frame, Vector] = {}
+        self._vel_derived: dict[Frame, tuple[int, Vector]] = {}
 
     def __repr__(self) -> str:
         return self.name
@@ -79,14 +80,47 @@ class Point:
         self.model._changed()
 
     def has_vel(self, frame: Frame) -> bool:
-        return frame in self._vel
+        """Whether V_self_frame> is assigned or follows from the positions."""
+        return frame in self._vel or self._moving_base(frame) is not None
 
     def vel(self, frame: Frame) -> Vector:
+        """V_self_frame>: as assigned; else V_Q_frame> + DT(P_Q_self>, frame) for the
+        nearest point Q along the defined positions whose velocity in frame is
+        assigned or which is fixed in frame (its origin)."""
         if frame in self._vel:
             return self._vel[frame]
-        raise AutolevModelError(
-            f"the velocity of {self.name} in {frame.name} is not defined "
-            f"(assign V_{self.name}_{frame.name}>, or use V2PTS/V1PT)")
+        version = self.model._version
+        cached = self._vel_derived.get(frame)
+        if cached is not None and cached[0] == version:
+            return cached[1]
+        base = self._moving_base(frame)
+        if base is None:
+            raise AutolevModelError(
+                f"the velocity of {self.name} in {frame.name} is not defined "
+                f"(assign V_{self.name}_{frame.name}>, use V2PTS/V1PT, or define the "
+                f"position of {self.name} from a point fixed in {frame.name} such as "
+                f"{frame.name}O)")
+        v = self.pos_from(base).dt(frame)
+        if frame in base._vel:
+            v = base._vel[frame] + v
+        self._vel_derived[frame] = (version, v)
+        return v
+
+    def _moving_base(self, frame: Frame) -> "Point | None":
+        """The nearest point linked to self by defined positions whose velocity in
+        frame is assigned, or which is frame's origin (fixed in it)."""
+        origin = frame._origin
+        seen = {self}
+        queue = deque([self])
+        while queue:
+            p = queue.popleft()
+            if p is not self and (frame in p._vel or p is origin):
+                return p
+            for q in p._pos:
+                if q not in seen:
+                    seen.add(q)
+                    queue.append(q)
+        return None
 
     def set_acc(self, frame: Frame, value) -> None:
         """A_self_frame> = value."""
@@ -97,6 +131,9 @@ class Point:
         """A_self_frame>: as assigned, else DT(V_self_frame>, frame)."""
         if frame in self._acc:
             return self._acc[frame]
+        if frame not in self._vel:
+            # the velocity itself comes from the positions, as they stand now
+            return self.vel(frame).dt(frame)
         if frame not in self._acc_derived:
             self._acc_derived[frame] = self.vel(frame).dt(frame)
         return self._acc_derived[frame]
@@ -167,6 +204,7 @@ class Body(Frame):
     def __init__(self, name: str, model: "Model", masscenter: Point):
         super().__init__(name, model)
         self.masscenter = masscenter
+        self.origin = masscenter
         self.mass: sm.Expr | None = None
         self._inertia: Dyadic | None = None
         self._inertia_about: tuple[Point, Dyadic] | None = None

@@ -529,6 +529,7 @@ class Frame:
         self._w_user: set[Frame] = set()
         self._alf_user: dict[Frame, Vector] = {}
         self._dcm_cache: dict[Frame, sm.Matrix] = {}
+        self._origin = None
         self.x = Vector({self: (1, 0, 0)})
         self.y = Vector({self: (0, 1, 0)})
         self.z = Vector({self: (0, 0, 1)})
@@ -542,6 +543,18 @@ class Frame:
 
     def unit(self, i: int) -> Vector:
         return self[i]
+
+    @property
+    def origin(self):
+        """AO: the point every frame A has (NO of a Newtonian frame, BO of a body), fixed
+        in A; made when first asked for."""
+        if self._origin is None:
+            self._origin = self.model.point(self.name + "O")
+        return self._origin
+
+    @origin.setter
+    def origin(self, point) -> None:
+        self._origin = point
 
     # -- orientation ------------------------------------------------------------------
     def orient_dcm(self, parent: "Frame", dcm, ang_vel: Vector | None = None) -> None:

@@ -20,6 +20,9 @@ from .names import NameTable, UnsafeName
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
 
 SCALAR_TYPES = ("scalar",)
+# the NameTable's spaces as Autolev's namespaces (derivative names are not Autolev's)
+_NAMESPACE = {"scalar": "quantity", "value": "quantity", "entity": "entity",
+              "vector": "vector"}
 ENTITY_KINDS = ("newtonian", "frame", "body", "point", "particle")
 
 
@@ -65,6 +68,10 @@ class Translation:
     line_map: dict[int, Span]
     diagnostics: list[Diagnostic]
     names: dict[str, str] = field(default_factory=dict)   # Autolev name -> Python name
+    # Autolev's namespaces: "quantity" (scalars, matrices and other assigned values),
+    # "entity" (frames, bodies, points, particles), "vector" (vectors and dyadics),
+    # each Autolev name -> Python name
+    namespaces: dict[str, dict[str, str]] = field(default_factory=dict)
 
 
 class Translator:
@@ -84,11 +91,14 @@ class Translator:
         # AUTORHS ON: a declared name with a stored RHS is replaced by it when read
         self.autorhs = False
         self.defined: set[tuple[str, int]] = set()
+        # the declared name (key, primes) whose new definition is being read
+        self.redefining: tuple[str, int] | None = None
         self.has_code = False
         self.kane_called = False
         self._span: Span | None = None
         self._used_primes = _primes_used(program)
         self.autolev_names: dict[str, str] = {}
+        self.namespaces: dict[str, dict[str, str]] = {}
         # declared scalars keep their names: they are allocated before anything that
         # could clash with them (frames, vectors, derivative names)
         for sym in program.symbols:
@@ -135,6 +145,9 @@ class Translator:
         except UnsafeName:
             raise self.error(f"'{name}' cannot be used as a name") from None
         self.autolev_names.setdefault(name, py)
+        public = _NAMESPACE.get(space)
+        if public is not None:
+            self.namespaces.setdefault(public, {}).setdefault(name, py)
         return py
 
     def declare_scalar(self, name: str, kind: str, order: int) -> Entry:
@@ -185,10 +198,27 @@ class Translator:
             except TranslationError as exc:
                 self.diagnostics.append(self._diagnostic(str(exc), exc.node or st, exc.code,
                                                          "error"))
+                self._known_after_failure(st)
         self._span = None
         self._footer()
         code, line_map = self._render()
-        return Translation(code, line_map, self.diagnostics, dict(self.autolev_names))
+        return Translation(code, line_map, self.diagnostics, dict(self.autolev_names),
+                           {k: dict(v) for k, v in self.namespaces.items()})
+
+    def _known_after_failure(self, st: ir.Statement) -> None:
+        """A name whose assignment failed is still known afterwards (of unknown type),
+        so that one error does not bring others on every line that uses the name."""
+        if not isinstance(st, ir.Assignment):
+            return
+        target = st.target
+        if isinstance(target, ir.VectorName):
+            if target.name.lower() not in self.vectors:
+                self.vectors[target.name.lower()] = Entry(
+                    target.name, "vector", "dyadic" if target.dyadic else "vector")
+        elif isinstance(target, (ir.Name, ir.Index)) and not target.primes:
+            key = target.name.lower()
+            if key not in self.scalars and key not in self.values:
+                self.values[key] = Entry(target.name, "value", "unknown")
 
     def _comments_before(self, st: ir.Statement, previous_end: dict[str, int]) -> None:
         """The user's comment lines and the statement's own lines, as comments."""
@@ -316,6 +346,9 @@ class Translator:
         if key in self.scalars:
             entry = self.scalars[key]
             code = self.ensure_derivative(name, primes) if primes else entry.py
+            if (key, primes) == self.redefining and (key, primes) in self.defined:
+                # X = f(X): on the right, X stands for its previous definition
+                return Typed(f"model.rhs({code})", "scalar")
             if self.autorhs and (key, primes) in self.defined:
                 return Typed(f"model.rhs({code})", "scalar")
             return Typed(code, "scalar")

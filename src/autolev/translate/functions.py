@@ -6,6 +6,8 @@ Autolev's own meaning (DT through definitions, EVALUATE, KE, ...) onto the runti
 """
 from __future__ import annotations
 
+import difflib
+
 from .. import ir
 from .core import ATOM, Translator, Typed
 
@@ -23,7 +25,11 @@ def function(*names):
 def call(tr: Translator, c: ir.Call) -> Typed:
     fn = FUNCTIONS.get(c.name.upper())
     if fn is None:
-        raise tr.error(f"unknown function {c.name.upper()}()", c, "T003")
+        close = difflib.get_close_matches(c.name.upper(), FUNCTIONS, n=1, cutoff=0.6)
+        hint = f"; did you mean {close[0]}?" if close else ""
+        raise tr.error(f"unknown function {c.name.upper()}(): Autolev has no such function, "
+                       f"and no user function file {c.name}.R is next to the model{hint}",
+                       c, "T003")
     return fn(tr, c)
 
 

@@ -95,9 +95,11 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
     method = {"frame": "frames", "body": "bodies", "particle": "particles",
               "point": "points"}[kind]
     _assign_names(tr, pys, f"model.{method}({_quoted_names(names)})")
-    if kind == "body":
+    if kind in ("body", "frame"):
+        # every frame has its origin AO, as NEWTONIAN N has NO and BODIES B has BO
+        attribute = "masscenter" if kind == "body" else "origin"
         for n, py in zip(names, pys):
-            _implicit_point(tr, n + "O", f"{py}.masscenter")
+            _implicit_point(tr, n + "O", f"{py}.{attribute}")
 
 
 def _implicit_point(tr: Translator, name: str, code: str) -> None:
@@ -236,7 +238,12 @@ def assignment(tr: Translator, st: ir.Assignment) -> None:
 
 
 def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> None:
-    value = tr.expr(value_expr)
+    if isinstance(target, ir.Name) and op in ("=", ":="):
+        tr.redefining = (target.name.lower(), target.primes)
+    try:
+        value = tr.expr(value_expr)
+    finally:
+        tr.redefining = None
     if value.type in ("frame", "point", "list"):
         raise tr.error(f"a {value.type} cannot be assigned", value_expr)
     if isinstance(target, ir.VectorName):

@@ -178,24 +178,10 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
         # no OUTPUT: the solution is what the program is for -- write the unknowns
         files = [[Column(u, u.name, (command.inputs.get(u) or (None, None))[1]
                          or command.units.get(u)) for u in unknowns]]
-    extra = None
-    implicit = None
     integrate_states = kind in ("dynamics", "ode")
-    if kind == "ode" and equations:
-        implicit = (equations, unknowns)
-    elif kind == "algebraic" and equations:
-        defs = model.defs
-        zero = {u: 0 for u in unknowns}
-        extra = {"linear": [d for row in defs.jacobian(equations, unknowns) for d in row]
-                 + [defs.substitute(e, zero) for e in equations]}
-    elif kind == "nonlinear":
-        if not equations:
-            raise AutolevModelError("CODE NONLINEAR needs equations and unknowns: "
-                                    "CODE NONLINEAR(EQ, x, y) file")
-        defs = model.defs
-        extra = {"residual": list(equations),
-                 "jacobian": [d for row in defs.jacobian(equations, unknowns)
-                              for d in row]}
+    if kind == "nonlinear" and not equations:
+        raise AutolevModelError("CODE NONLINEAR needs equations and unknowns: "
+                                "CODE NONLINEAR(EQ, x, y) file")
     build_start = time.perf_counter()
     # the numeric system of a command is built once per state of the model (repeated
     # simulate() calls with other inputs reuse its compiled functions)
@@ -204,11 +190,13 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
            id(model.kane_equations), len(model.outputs), len(model.encoded))
     system = cache.get(key)
     if system is None:
-        system = NumericSystem(model, files, encoded, backend=backend,
-                               integrate=integrate_states, implicit=implicit,
-                               solved=unknowns if kind in ("algebraic", "nonlinear") else (),
-                               extra=extra, zero=command.zero if kind == "dynamics" else None,
-                               defined=command.defined)
+        with model.defs.as_of(command.definitions):
+            system = NumericSystem(
+                model, files, encoded, backend=backend, integrate=integrate_states,
+                implicit=(equations, unknowns) if kind == "ode" and equations else None,
+                solved=unknowns if kind in ("algebraic", "nonlinear") else (),
+                extra=_solver_expressions(model.defs, kind, equations, unknowns),
+                zero=command.zero if kind == "dynamics" else None)
         cache.clear()
         cache[key] = system
     build_seconds = time.perf_counter() - build_start
@@ -303,6 +291,19 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                                       [[c.label for c in cols] for cols in files],
                                       extra_files))
     return result
+
+
+def _solver_expressions(defs, kind: str, equations: list, unknowns: list) -> dict | None:
+    """What CODE ALGEBRAIC (the linear system's matrix and right side) and CODE
+    NONLINEAR (residuals and their Jacobian) evaluate besides the outputs."""
+    if kind == "algebraic" and equations:
+        zero = {u: 0 for u in unknowns}
+        return {"linear": [d for row in defs.jacobian(equations, unknowns) for d in row]
+                + [defs.substitute(e, zero) for e in equations]}
+    if kind == "nonlinear":
+        return {"residual": list(equations),
+                "jacobian": [d for row in defs.jacobian(equations, unknowns) for d in row]}
+    return None
 
 
 def _find_symbol(model, name):

@@ -94,10 +94,9 @@ class NumericSystem:
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, implicit=None, solved=(), extra=None,
-                 zero=None, defined=None):
+                 zero=None):
         self.model = m = model
         self._zero = zero
-        self._defined = defined
         self.backend = backend
         defs = m.defs
         self.aux_fixed = {}
@@ -216,8 +215,7 @@ class NumericSystem:
             speeds = []
             if (m.bodies_list or m.particles_list) and m.newtonian_frame is not None:
                 speeds = m.generalized_speeds()[0]
-            known = defs.rhs if self._defined is None else self._defined
-            pending = [u for u in speeds if S.derivative(u) not in known]
+            pending = [u for u in speeds if S.derivative(u) not in defs.rhs]
             if pending:
                 eqs = m._equations()
                 if set(eqs.speeds) != set(pending):
@@ -247,7 +245,7 @@ class NumericSystem:
                         or sym in self.aux_fixed or sym in rates:
                     continue
                 d = S.derivative(sym)
-                if d in defs.rhs and (self._defined is None or d in self._defined):
+                if d in defs.rhs:
                     rates[sym] = defs.rhs[d]
                 elif d in rates:
                     rates[sym] = d               # Q' integrated too: Q's rate is Q'

@@ -1,0 +1,375 @@
+"""Autolev's implicit rules (docs/language.md), each on a small model written here, with
+the expected values worked out by hand or with sympy.physics.mechanics."""
+import math
+import textwrap
+
+import numpy as np
+import pytest
+import sympy as sm
+
+import autolev
+from autolev.runtime.calculus import NumericPoint
+
+
+def load(tmp_path, text: str, name: str = "model.al", **files):
+    """Write the model (and any other files, name -> text) and load it."""
+    for fname, body in files.items():
+        (tmp_path / fname.replace("__", ".")).write_text(textwrap.dedent(body))
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(text))
+    return autolev.load(path)
+
+
+def num(model, expr, values: dict):
+    """expr at values {Autolev name: number} (names of the model's quantities)."""
+    point = NumericPoint(model.defs, {model.quantity(k): v for k, v in values.items()})
+    if isinstance(expr, sm.MatrixBase):
+        return sm.Matrix(expr.shape[0], expr.shape[1],
+                         lambda i, j: model.defs.numeric(expr[i, j], point).real)
+    return model.defs.numeric(sm.sympify(expr), point).real
+
+
+def close(a, b, tol=1e-10) -> bool:
+    a, b = sm.Matrix(a), sm.Matrix(b)
+    return a.shape == b.shape and all(abs(float(x) - float(y)) < tol for x, y in zip(a, b))
+
+
+def rot3(angle):
+    """parent.dcm(child) for a turn by `angle` about axis 3."""
+    c, s = math.cos(angle), math.sin(angle)
+    return sm.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+# -- 1. every frame has an origin point ---------------------------------------------------
+def test_frames_have_an_origin_fixed_in_them(tmp_path):
+    m = load(tmp_path, """
+        NEWTONIAN N
+        FRAMES A
+        POINTS P
+        VARIABLES X', Q'
+        CONSTANTS L
+        SIMPROT(N, A, 3, Q)
+        P_AO_P> = L*A1> + X*A2>
+        V> = V_P_A>
+        """)
+    a, ao = m.entity("A"), m.entity("AO")
+    assert ao is a.origin and ao.name == "AO"
+    # AO is fixed in A: P's velocity in A is the rate of its position in A
+    v = m.vector("V")
+    assert close(num(m, v.to_matrix(a), {"X'": 0.7, "X": 0.1, "Q": 0.3, "L": 2}),
+                 [0, 0.7, 0])
+
+
+def test_a_declared_point_keeps_the_origins_name(tmp_path):
+    m = load(tmp_path, """
+        NEWTONIAN N
+        POINTS AO
+        FRAMES A
+        """)
+    assert m.entity("AO") is not m.entity("A").origin
+
+
+# -- 2. positions, velocities, angular velocities and DCMs along chains -------------------
+CHAIN = """
+    NEWTONIAN N
+    FRAMES DA, DB
+    POINTS CA, CB
+    VARIABLES Q{2}'
+    CONSTANTS L{3}
+    SIMPROT(N, DA, 3, Q1)
+    SIMPROT(DA, DB, 3, Q2)
+    P_NO_CA> = 0>
+    P_CA_DAO> = L1*DA1>
+    P_DAO_DBO> = L2*DA2>
+    P_DBO_CB> = L3*DB1>
+    X> = P_CA_CB>
+    Y> = P_CB_CA>
+    V> = V_CB_N>
+    ACC> = A_CB_N>
+    W> = W_DB_N>
+    M = DB_N
+    """
+
+
+def test_positions_add_along_the_chain_either_way(tmp_path):
+    m = load(tmp_path, CHAIN)
+    n = m.entity("N")
+    q1, q2, l1, l2, l3 = 0.4, -0.9, 1.5, 0.7, 2.0
+    vals = {"Q1": q1, "Q2": q2, "L1": l1, "L2": l2, "L3": l3}
+    a = q1 + q2
+    by_hand = [l1 * math.cos(q1) - l2 * math.sin(q1) + l3 * math.cos(a),
+               l1 * math.sin(q1) + l2 * math.cos(q1) + l3 * math.sin(a), 0]
+    assert close(num(m, m.vector("X").to_matrix(n), vals), by_hand)
+    assert close(num(m, m.vector("Y").to_matrix(n), vals), [-c for c in by_hand])
+
+
+def test_velocity_and_acceleration_come_from_the_positions(tmp_path):
+    m = load(tmp_path, CHAIN)
+    n = m.entity("N")
+    q1, q2, d1, d2, dd1, dd2 = 0.4, -0.9, 0.3, -1.1, 0.5, 0.25
+    l1, l2, l3 = 1.5, 0.7, 2.0
+    vals = {"Q1": q1, "Q2": q2, "Q1'": d1, "Q2'": d2, "Q1''": dd1, "Q2''": dd2,
+            "L1": l1, "L2": l2, "L3": l3}
+    t = sm.Symbol("t")
+    f1, f2 = sm.Function("f1")(t), sm.Function("f2")(t)
+    r = sm.Matrix([l1 * sm.cos(f1) - l2 * sm.sin(f1) + l3 * sm.cos(f1 + f2),
+                   l1 * sm.sin(f1) + l2 * sm.cos(f1) + l3 * sm.sin(f1 + f2), 0])
+    at = {f1.diff(t, 2): dd1, f2.diff(t, 2): dd2, f1.diff(t): d1, f2.diff(t): d2,
+          f1: q1, f2: q2}
+    assert close(num(m, m.vector("V").to_matrix(n), vals), r.diff(t).subs(at))
+    assert close(num(m, m.vector("ACC").to_matrix(n), vals), r.diff(t, 2).subs(at))
+
+
+def test_angular_velocities_and_dcms_chain(tmp_path):
+    m = load(tmp_path, CHAIN)
+    vals = {"Q1": 0.4, "Q2": -0.9, "Q1'": 0.3, "Q2'": -1.1}
+    assert close(num(m, m.vector("W").to_matrix(m.entity("N")), vals), [0, 0, 0.3 - 1.1])
+    assert close(num(m, m.quantity("M"), vals), rot3(0.4 - 0.9).T)
+
+
+def test_an_undefined_link_names_the_two_points(tmp_path):
+    with pytest.raises(autolev.AutolevRuntimeError) as info:
+        load(tmp_path, """
+            NEWTONIAN N
+            POINTS P, R
+            CONSTANTS L
+            P_NO_P> = L*N1>
+            X> = P_P_R>
+            """)
+    message = str(info.value)
+    assert "position of R relative to P" in message and "model.al:6:" in message
+
+
+# -- 3. inertia about any point, and of a set ----------------------------------------------
+INERTIAS = """
+    NEWTONIAN N
+    BODIES DA, DB
+    PARTICLES PP
+    POINTS SO, P
+    CONSTANTS M{3}, L, I{3}
+    MASS DA=M1, DB=M2, PP=M3
+    INERTIA DA, I1, I2, I3
+    INERTIA DB, I1, I2, I3
+    DEGREES OFF
+    SIMPROT(N, DA, 3, PI/2)
+    SIMPROT(N, DB, 1, PI/2)
+    P_NO_DAO> = L*N1>
+    P_DAO_DBO> = L*N2>
+    P_NO_PP> = L*N3>
+    P_NO_P> = L*(N1> + N2> + N3>)
+    P_DAO_SO> = CM(DAO, DA, DB)
+    I_S_SO>> = I_DA_SO>> + I_DB_SO>>
+    J>> = I_DA_P>>
+    K>> = I_PP_P>>
+    T>> = INERTIA(SO, DA, DB)
+    R> = P_NO_SO>
+    """
+
+
+def _parallel_axis(mass, r):
+    r = sm.Matrix(r)
+    return mass * ((r.T * r)[0] * sm.eye(3) - r * r.T)
+
+
+def test_inertia_about_any_point_is_central_plus_parallel_axes(tmp_path):
+    m = load(tmp_path, INERTIAS.replace("PI/2", "0"))
+    vals = {"M1": 2.0, "M2": 3.0, "M3": 5.0, "L": 0.5, "I1": 1.0, "I2": 2.0, "I3": 4.0}
+    n = m.entity("N")
+    central = sm.diag(1.0, 2.0, 4.0)
+    # r from P to DAO: L N1> - L (N1> + N2> + N3>)
+    expected = central + _parallel_axis(2.0, [0, -0.5, -0.5])
+    assert close(num(m, m.vector("J").to_matrix(n), vals), expected)
+    # a particle: the parallel-axis term alone (r from P to PP)
+    assert close(num(m, m.vector("K").to_matrix(n), vals),
+                 _parallel_axis(5.0, [-0.5, -0.5, 0]))
+
+
+def test_inertia_of_a_set_about_its_mass_centre(tmp_path):
+    m = load(tmp_path, INERTIAS)
+    vals = {"M1": 2.0, "M2": 3.0, "M3": 5.0, "L": 0.5, "I1": 1.0, "I2": 2.0, "I3": 4.0}
+    n = m.entity("N")
+    # mass centre of DA and DB: from NO, (2*(L,0,0) + 3*(L,L,0))/5
+    so = [0.5, 0.3, 0]
+    assert close(num(m, m.vector("R").to_matrix(n), vals), so)
+    central = sm.diag(1.0, 2.0, 4.0)
+    da = rot3(math.pi / 2) * central * rot3(math.pi / 2).T
+    rx = sm.Matrix([[1, 0, 0], [0, 0, -1], [0, 1, 0]])        # N.dcm(DB), turn about N1
+    db = rx * central * rx.T
+    expected = (da + _parallel_axis(2.0, [0.5 - so[0], -so[1], 0])
+                + db + _parallel_axis(3.0, [0.5 - so[0], 0.5 - so[1], 0]))
+    assert close(num(m, m.vector("I_S_SO").to_matrix(n), vals), expected)
+    assert close(num(m, m.vector("T").to_matrix(n), vals), expected)
+
+
+# -- 4. SOLVE after KANE(F1, ...) ----------------------------------------------------------
+PENDULUM_TENSION = """
+    NEWTONIAN N
+    FRAMES A
+    PARTICLES P
+    MOTIONVARIABLES' Q', U{2}
+    VARIABLES TENSION
+    CONSTANTS L, M, G
+    SIMPROT(N, A, 3, Q)
+    Q' = U1
+    W_A_N> = U1*A3>
+    P_NO_P> = L*A1>
+    V_P_N> = L*U1*A2> + U2*A1>
+    AUXILIARY[1] = U2
+    CONSTRAIN(AUXILIARY[U2])
+    MASS P = M
+    GRAVITY(G*N1>)
+    FORCE(P, -TENSION*A1>)
+    ZERO = FR() + FRSTAR()
+    KANE(TENSION)
+    SOLVE(ZERO, U1')
+    INPUT L=2, M=3, G=9.81, Q=30 DEG, U1=0.5
+    OUTPUT Q, U1, TENSION
+    CODE DYNAMICS() tension.c
+    """
+
+
+def test_solve_after_kane_with_unknowns_uses_the_dynamical_rows(tmp_path):
+    m = load(tmp_path, PENDULUM_TENSION)
+    assert len(m.quantity("ZERO")) == 2
+    vals = {"Q": 0.4, "U1": 0.9, "L": 2.0, "M": 3.0, "G": 9.81}
+    assert num(m, m.quantity("U1'"), vals) == pytest.approx(-9.81 / 2 * math.sin(0.4))
+    # the rod's tension: m g cos(q) + m L u1^2, from the auxiliary row
+    assert num(m, m.quantity("TENSION"), vals) == pytest.approx(
+        3 * 9.81 * math.cos(0.4) + 3 * 2 * 0.9 ** 2)
+    r = m.simulate(TFINAL=0.5)
+    assert r.outputs[0]["TENSION"][0] == pytest.approx(
+        3 * 9.81 * math.cos(math.pi / 6) + 3 * 2 * 0.25, rel=1e-6)
+
+
+# -- 5. INPUT(x) of a defined name -----------------------------------------------------------
+def test_input_of_a_defined_name_is_its_value_under_the_inputs(tmp_path):
+    m = load(tmp_path, """
+        CONSTANTS A, B, C
+        A = PI/2
+        B = 2*A + C
+        INPUT C = 30 DEG
+        X = INPUT(A)
+        Y = INPUT(B)
+        """)
+    assert m.quantity("X") == sm.pi / 2
+    assert m.quantity("Y") == sm.pi + sm.pi / 6
+
+
+def test_input_of_a_definition_using_a_name_without_value_is_an_error(tmp_path):
+    with pytest.raises(autolev.AutolevRuntimeError, match="uses C, which has no INPUT"):
+        load(tmp_path, """
+            CONSTANTS A, C
+            A = 2*C
+            X = INPUT(A)
+            """)
+
+
+# -- 6. a later statement never rewrites an earlier CODE ---------------------------------------
+PENDULUM = """
+    NEWTONIAN N
+    FRAMES A
+    PARTICLES P
+    MOTIONVARIABLES' Q', U'
+    CONSTANTS L, M, G
+    SIMPROT(N, A, 3, Q)
+    Q' = U
+    W_A_N> = U*A3>
+    P_NO_P> = L*A1>
+    V_P_N> = L*U*A2>
+    MASS P = M
+    GRAVITY(G*N1>)
+    ZERO = FR() + FRSTAR()
+    INPUT L=2, M=3, G=9.81, Q=30 DEG, U=0
+    OUTPUT Q, U
+    CODE DYNAMICS() first.c
+    SOLVE(ZERO, U')
+    CODE DYNAMICS() second.c
+    """
+
+
+def test_solve_after_code_leaves_the_coded_program_alone(tmp_path):
+    m = load(tmp_path, PENDULUM)
+    first, second = m.run(out_dir=tmp_path / "out")
+    assert first.state_names == second.state_names == ["Q", "U"]
+    # the pendulum swings: U is integrated from Kane's equations, not a constant
+    assert first.states[-1, 1] < -0.5
+    # the same motion (M u' = f solved numerically there, SOLVE's closed form here)
+    assert np.allclose(first.states, second.states, rtol=1e-12, atol=1e-14)
+
+
+def test_equations_are_there_after_solve(tmp_path):
+    m = load(tmp_path, PENDULUM)
+    vals = {"Q": 0.4, "L": 2.0, "M": 3.0, "G": 9.81}
+    assert m.speeds == [m.quantity("U")] and m.coordinates == [m.quantity("Q")]
+    assert close(num(m, m.mass_matrix, vals), [[12.0]])
+    assert close(num(m, m.forcing, vals), [[-9.81 * 2 * 3 * math.sin(0.4)]])
+    assert m.symbolic_system("combined").comb_implicit_mat.shape == (2, 2)
+
+
+# -- 8. functions Autolev does not know --------------------------------------------------------
+def test_a_function_file_is_expanded_like_autolevs_user_functions(tmp_path):
+    m = load(tmp_path, """
+        CONSTANTS X, Y
+        A = 2*MYATAN2(Y, -X)
+        """, MYATAN2__R="""
+        % a function file: one expression, #1# and #2# the arguments' text
+        atan(#1#/#2#) + pi/2*sign(#1#)*(1 - sign(#2#))
+        """)
+    for x, y in ((1.0, 0.5), (-1.0, 0.5), (-1.0, -0.5)):
+        value = num(m, m.quantity("A"), {"X": x, "Y": y})
+        assert value == pytest.approx(2 * math.atan2(y, -x))
+
+
+def test_an_unknown_function_is_one_error_with_a_suggestion(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("CONSTANTS A\nX = SYN(A)\nY = X + 1\nZ = 2*Y\n")
+    with pytest.raises(autolev.AutolevTranslationError) as info:
+        autolev.transpile(path)
+    errors = [d for d in info.value.diagnostics if d.severity == "error"]
+    assert len(errors) == 1
+    assert "SYN()" in errors[0].message and "did you mean SIN" in errors[0].message
+    assert errors[0].location.line == 2
+
+
+# -- 10. a definition in terms of its previous self --------------------------------------------
+def test_the_name_on_the_right_of_a_redefinition_is_its_previous_definition(tmp_path):
+    m = load(tmp_path, """
+        VARIABLES DELTA', WH3, WB3, Y
+        SPECIFIED TDELTA
+        CONSTANTS C, TM, TF
+        TDELTA = TM + C*DELTA' + TF
+        TDELTA = REPLACE(TDELTA, DELTA'=WH3-WB3)
+        X = RHS(TDELTA)
+        Y = C
+        Y = Y + 1
+        Y := 2*Y
+        Z = RHS(Y)
+        """)
+    c, tm, tf, wh3, wb3 = (m.quantity(n) for n in ("C", "TM", "TF", "WH3", "WB3"))
+    assert sm.expand(m.quantity("X") - (tm + c * (wh3 - wb3) + tf)) == 0
+    assert sm.expand(m.quantity("Z") - (2 * c + 2)) == 0
+
+
+def test_a_definition_that_refers_to_itself_is_still_an_error(tmp_path):
+    with pytest.raises(autolev.AutolevRuntimeError, match="in terms of itself"):
+        load(tmp_path, "VARIABLES Y\nY = Y + 1\n")
+
+
+# -- 11. names of two kinds ------------------------------------------------------------------
+def test_a_name_that_is_a_body_and_a_matrix(tmp_path):
+    m = load(tmp_path, """
+        NEWTONIAN N
+        BODIES A
+        CONSTANTS K
+        VARIABLES Q'
+        A[1,1] = K
+        A[1,2] = 2
+        VEC> = K*N1>
+        """)
+    k = m.quantity("K")
+    assert m["A"] == sm.Matrix([[k, 2]]) and m.quantity("A") == m["A"]
+    assert m.entity("A").name == "A" and m["AO"] is m.entity("A").masscenter
+    assert m["Q'"] == m.quantity("Q'") and str(m["Q'"]) == "Q'"
+    assert str(m["VEC>"]) == "K*N1>" and m["N"] is m.entity("N")
+    with pytest.raises(KeyError):
+        m["NOSUCH"]
