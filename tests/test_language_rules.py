@@ -1,7 +1,9 @@
 """Autolev's implicit rules (docs/language.md), each on a small model written here, with
 the expected values worked out by hand or with sympy.physics.mechanics."""
+import itertools
 import math
 import textwrap
+import warnings
 
 import numpy as np
 import pytest
@@ -306,6 +308,49 @@ def test_equations_are_there_after_solve(tmp_path):
     assert m.symbolic_system("combined").comb_implicit_mat.shape == (2, 2)
 
 
+# -- 7. dependent speeds at any regular configuration -----------------------------------
+TWO_LOOPS = """
+    % five links in the plane, closed twice: A-B-C-D back to the ground, A-B-C-E too
+    NEWTONIAN N
+    FRAMES A, B, C, D, E
+    MOTIONVARIABLES' Q{5}', U{5}
+    SIMPROT(N, A, 3, Q1)
+    SIMPROT(N, B, 3, Q2)
+    SIMPROT(N, C, 3, Q3)
+    SIMPROT(N, D, 3, Q4)
+    SIMPROT(N, E, 3, Q5)
+    LOOP1> = U1*A2> + U2*B2> + U3*C2> + U4*D2>
+    LOOP2> = U1*A2> + U2*B2> + U3*C2> + U5*E2>
+    DEPENDENT[1] = DOT(LOOP1>, N1>)
+    DEPENDENT[2] = DOT(LOOP1>, N2>)
+    DEPENDENT[3] = DOT(LOOP2>, N1>)
+    DEPENDENT[4] = DOT(LOOP2>, N2>)
+    CONSTRAIN(DEPENDENT[U2, U3, U4, U5])
+    """
+
+
+def test_dependent_speeds_wherever_the_constraints_are_regular(tmp_path):
+    m = load(tmp_path, TWO_LOOPS)
+    args = [m.quantity(f"Q{k}") for k in range(1, 6)] + [m.quantity("U1")]
+    # the dependent speeds' definitions, every Z expanded, as one numeric function
+    dependent = sm.lambdify(args, [m.explicit(m.quantity(f"U{k}")) for k in range(2, 6)])
+    angles = (0, 45, 90, 135, 180, -45, -90)
+    checked = 0
+    for qs in itertools.product(angles, repeat=5):
+        q = [math.radians(a) for a in qs]
+        # the velocity of the loops' ends: sum of u_k (-sin q_k, cos q_k)
+        a = np.array([[-math.sin(q[k]) for k in (1, 2, 3)] + [0],
+                      [math.cos(q[k]) for k in (1, 2, 3)] + [0],
+                      [-math.sin(q[k]) for k in (1, 2)] + [0, -math.sin(q[4])],
+                      [math.cos(q[k]) for k in (1, 2)] + [0, math.cos(q[4])]])
+        if abs(np.linalg.det(a)) < 1e-6:
+            continue
+        b = -np.array([-math.sin(q[0]), math.cos(q[0])] * 2)
+        assert np.allclose(dependent(*q, 1.0), np.linalg.solve(a, b), atol=1e-9), qs
+        checked += 1
+    assert checked > 5000
+
+
 # -- 8. functions Autolev does not know --------------------------------------------------------
 def test_a_function_file_is_expanded_like_autolevs_user_functions(tmp_path):
     m = load(tmp_path, """
@@ -329,6 +374,67 @@ def test_an_unknown_function_is_one_error_with_a_suggestion(tmp_path):
     assert len(errors) == 1
     assert "SYN()" in errors[0].message and "did you mean SIN" in errors[0].message
     assert errors[0].location.line == 2
+
+
+# -- 9. what Autolev's programs printed --------------------------------------------------
+DRIVEN_PENDULUM = """
+    NEWTONIAN N
+    BODIES A, B
+    CONSTANTS g, l{2}, m{2}, i{2}
+    VARIABLES theta{2}'
+    MOTIONVARIABLES' omega{2}'
+    MASS A=m1, B=m2
+    INERTIA A, 0, 0, i1
+    INERTIA B, 0, 0, i2
+    SIMPROT(N, A, 3, theta1)
+    SIMPROT(A, B, 3, theta2)
+    theta1' = omega1
+    theta2' = omega2
+    P_NO_AO> = l1/2*A2>
+    P_NO_BO> = l1*A2> + l2/2*B2>
+    W_A_N> = omega1*N3>
+    W_B_N> = (omega1 + omega2)*N3>
+    V_AO_N> = DT(P_NO_AO>, N)
+    V_BO_N> = DT(P_NO_BO>, N)
+    GRAVITY(g*N2>)
+    SPECIFIED torque
+    torque = 10*SIN(2*PI*T + PI/6)
+    TORQUE(N/A, torque*N3>)
+    ZERO = FR() + FRSTAR()
+    SOLVE(ZERO, omega1', omega2')
+    kinetic = KE(A, B)
+    INPUT g=9.81, l1=2, m1=4, i1=0.5, l2=2, m2=4, i2=0.5
+    OUTPUT omega1, omega2, theta2, kinetic
+    CODE DYNAMICS() FILE
+    """
+
+
+def _kinetic(row, with_i1: bool):
+    """The double pendulum's kinetic energy by hand (row: omega1, omega2, theta2)."""
+    w1, w2, th2 = row
+    m1 = m2 = 4.0
+    l1 = l2 = 2.0
+    i1 = i2 = 0.5
+    v2 = l1 ** 2 * w1 ** 2 + l2 ** 2 / 4 * (w1 + w2) ** 2 + l1 * l2 * w1 * (w1 + w2) * math.cos(th2)
+    return (m1 * (l1 / 2 * w1) ** 2 / 2 + (i1 * w1 ** 2 / 2 if with_i1 else 0.0)
+            + i2 * (w1 + w2) ** 2 / 2 + m2 * v2 / 2)
+
+
+@pytest.mark.parametrize("program, quirks, with_i1", [
+    ("pendulum.c", True, False), ("pendulum.c", False, True), ("pendulum.m", True, True)])
+def test_outputs_as_autolevs_c_output_routine_computed_them(tmp_path, program, quirks,
+                                                            with_i1):
+    m = load(tmp_path, DRIVEN_PENDULUM.replace("FILE", program))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        r = m.simulate(quirks=quirks)
+    table = r.outputs[0]
+    rows = np.column_stack([table["omega1"], table["omega2"], table["theta2"]])
+    assert abs(rows[3, 0]) > 0.1                 # it has started to swing
+    expected = [_kinetic(row, with_i1) for row in rows]
+    assert np.allclose(table["kinetic"], expected, rtol=1e-6, atol=1e-9)
+    said = any("int i1" in str(w.message) for w in caught)
+    assert said == (program.endswith(".c") and quirks)
 
 
 # -- 10. a definition in terms of its previous self --------------------------------------------

@@ -71,6 +71,31 @@ def test_kutta_merson_integrates_exponential_decay_to_tolerance():
     assert stats["steps"] >= 20
 
 
+@pytest.mark.parametrize("fresh", [False, True])
+def test_kutta_merson_as_c_and_as_fortran_programs(fresh):
+    # Autolev 4.1's C programs (kutta(..., 2)) evaluate f at every step's start: one
+    # evaluation more per step than 3.2's Fortran (kutta(..., 1)), which reuses the
+    # last stage's f there; both integrate y' = y cos(t) (y = exp(sin t)) to tolerance
+    calls = []
+
+    def f(t, y):
+        calls.append(t)
+        return y * np.cos(t)
+    rows = []
+    sched = integrate.Schedule(0.0, 1.0, 0.5, 1, fresh_derivatives=fresh)
+    stats = integrate.integrate(f, np.array([1.0]), sched, "kutta-merson", 1e-9, 1e-9,
+                                lambda t, y: rows.append((t, y[0])))
+    t, y = np.array(rows).T
+    assert np.max(np.abs(y - np.exp(np.sin(t)))) < 1e-8
+    advances = 2
+    # 1 check at T0, 1 at each advance's start, 4 per attempted step, and 1 more per
+    # accepted step that is not the last of its advance when fresh
+    attempts = stats["steps"] + stats["rejected"]
+    expected = 1 + advances + 4 * attempts + (stats["steps"] - advances) * fresh
+    assert len(calls) == expected
+    assert stats["steps"] > 4
+
+
 def test_kutta_merson_takes_smaller_steps_for_tighter_tolerance():
     def count(tol):
         return integrate.integrate(lambda t, y: np.array([y[1], -50 * y[0]]),

@@ -190,7 +190,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
             result = run_command(model, command, out_dir=out_dir, method=ns.method,
                                  backend=ns.backend, infile=ns.infile,
                                  progress=None if ns.quiet else sys.stderr,
-                                 overrides=overrides)
+                                 overrides=overrides, quirks=ns.quirks)
         except AutolevModelError as exc:
             text = str(exc)
             if not text.startswith("CODE"):
@@ -331,6 +331,9 @@ def build_parser() -> argparse.ArgumentParser:
                      help="compiled C when a compiler is found (auto), or pure Python")
     run.add_argument("--plot", action="store_true",
                      help="also write a PNG per output file (needs matplotlib)")
+    run.add_argument("--no-quirks", dest="quirks", action="store_false",
+                     help="compute the values meant where Autolev's programs computed "
+                     "others (a quantity named i1 in a C program's outputs)")
     run.add_argument("-q", "--quiet", action="store_true")
     run.set_defaults(func=cmd_run)
 

@@ -402,17 +402,18 @@ class Definitions:
         return sm.Add(*terms)
 
     # -- substitution and expansion ----------------------------------------------
-    def substitute(self, expr, mapping: Mapping) -> sm.Expr:
-        """expr with the symbols of `mapping` replaced, inside definitions too."""
+    def substitute(self, expr, mapping: Mapping, keep: frozenset = frozenset()) -> sm.Expr:
+        """expr with the symbols of `mapping` replaced, inside definitions too (except
+        inside the definitions in `keep`, which stay as they are)."""
         expr = sm.sympify(expr)
         if not mapping:
             return expr
         mapping = {sm.sympify(k): sm.sympify(v) for k, v in mapping.items()}
-        key = frozenset(mapping.items())
+        key = (frozenset(mapping.items()), keep) if keep else frozenset(mapping.items())
         keys = set(mapping)
-        touched = [s for s in self._defined_in(expr) if s not in keys]
+        touched = [s for s in self._defined_in(expr) if s not in keys and s not in keep]
         for s in self._post_order(touched, _CachedFor(self._subs, key),
-                                  prune=lambda s: s in keys
+                                  prune=lambda s: s in keys or s in keep
                                   or not (self.primitive_deps(s) & keys)):
             self._subs[(s, key)] = self.zify(self._subs_shallow(self.rhs[s], mapping, key,
                                                                  self.free(s)))

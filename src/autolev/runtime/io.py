@@ -108,7 +108,8 @@ class IOMixin:
 
     def simulate(self, *, method: str = "kutta-merson", backend: str = "auto",
                  infile=None, out_dir=None, specified=None, progress=None,
-                 compiled: bool = True, constraints=None, **overrides):
+                 compiled: bool = True, constraints=None, quirks: bool = True,
+                 **overrides):
         """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
         CODE command, else a plain simulation) with INPUT values, `overrides`
         (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
@@ -119,7 +120,8 @@ class IOMixin:
         symbols, e.g. `al.dot(P5.pos_from(NO), N.x)` for a closed loop) kept at their
         initial values by projecting the coordinates onto them at every print time
         (closed loops drift off their constraints otherwise: only the velocity
-        constraints are part of the equations).
+        constraints are part of the equations).  `quirks=False`: the values meant where
+        Autolev's programs computed others (docs/language.md).
         Returns a Result (times, states and outputs as numpy arrays)."""
         from .numerics.run import run_command
         command = None
@@ -136,7 +138,7 @@ class IOMixin:
         return run_command(self, command, out_dir=out_dir, method=method, backend=backend,
                            infile=infile, specified=specified, progress=progress,
                            overrides=overrides, compiled=compiled,
-                           constraints=constraints)
+                           constraints=constraints, quirks=quirks)
 
 
 @dataclass

@@ -21,7 +21,10 @@ def solve_linear(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str = "") 
     those nonzero at more probe configurations (all pi/2, and spread over [-pi, pi]),
     and farthest from zero relative to their size -- (L2+Q2) rather than cos(Q1),
     which a cell model meets at 90 degrees.  An entry that is zero for generic values
-    is never a pivot."""
+    is never a pivot.  The system is first split into its block-triangular form;
+    blocks of up to CRAMER_MAX equations are solved by Cramer's rule, which divides
+    only by their determinants (so they are right wherever they are regular); larger
+    irreducible blocks by the elimination above."""
     n = a.rows
     generic = NumericPoint(defs, seed=1)
     probes = [NumericPoint(defs, zero_varying=True, seed=2),
@@ -54,6 +57,8 @@ def solve_linear(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str = "") 
     if n <= 3:
         return _cramer(a, b, defs, what, generic)
     blocks = _block_triangular(a)
+    if blocks is not None and len(blocks) == 1 and n <= CRAMER_MAX:
+        return _cramer(a, b, defs, what, generic)
     if blocks is not None and len(blocks) > 1:
         # solved block by block, each given the unknowns of the blocks before it (a
         # linkage's loops, a joint's pair of constraints); small blocks by Cramer's rule,
@@ -177,26 +182,40 @@ def _block_triangular(a: sm.Matrix) -> list[tuple[list, list]] | None:
     return blocks
 
 
+# irreducible blocks up to this size are solved by Cramer's rule: no pivot of theirs
+# can vanish where they are regular (a 4x4 loop of the bicycle-with-arms model has one
+# at its symmetric pose).  Its determinants by expansion in minors cost n 2^(n-1)
+# products each, 4 times elimination's at n = 4 and 12 times at n = 6.
+CRAMER_MAX = 4
+
+
 def _det(rows, defs: Definitions):
-    """Determinant of a 1x1 to 3x3 matrix (lists), by cofactors."""
+    """Determinant of a small square matrix (lists) by expansion along its rows, each
+    minor (the last rows, a set of columns) computed once and named by a Z."""
     n = len(rows)
-    if n == 1:
-        return rows[0][0]
-    if n == 2:
-        return defs.zify(rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0])
-    total = []
-    for j in range(3):
-        if rows[0][j] == 0:
-            continue
-        minor = [[rows[i][k] for k in range(3) if k != j] for i in (1, 2)]
-        total.append((-1) ** j * rows[0][j] * _det(minor, defs))
-    return defs.zify(sm.Add(*total))
+    minors: dict = {}
+
+    def minor(k: int, cols: tuple):
+        if k == n - 1:
+            return rows[k][cols[0]]
+        got = minors.get((k, cols))
+        if got is None:
+            terms = []
+            for pos, j in enumerate(cols):
+                if rows[k][j] != 0:
+                    rest = minor(k + 1, cols[:pos] + cols[pos + 1:])
+                    if rest != 0:
+                        terms.append((-1) ** pos * rows[k][j] * rest)
+            got = minors[(k, cols)] = defs.zify(sm.Add(*terms))
+        return got
+
+    return minor(0, tuple(range(n)))
 
 
 def _cramer(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str, generic) -> list:
-    """A system of up to three equations by Cramer's rule, as Autolev's solutions read
-    (x_i = det(A_i)/det(A)): the only division is by the determinant, zero exactly
-    where the system is singular, not where an elimination pivot happens to vanish."""
+    """A small system by Cramer's rule, as Autolev's solutions read (x_i =
+    det(A_i)/det(A)): the only division is by the determinant, zero exactly where the
+    system is singular, not where an elimination pivot happens to vanish."""
     n = a.rows
     rows = [[a[i, j] for j in range(n)] for i in range(n)]
     det = _det(rows, defs)

@@ -296,6 +296,11 @@ class Model(AlgebraMixin, IOMixin):
             return self.defs.rhs[value]
         return value
 
+    def previous(self, sym):
+        """X on the right of a new definition of X: its definition so far (X itself
+        when it has none, which makes X = f(X) an error)."""
+        return self.defs.rhs.get(sym, sym)
+
     def explicit(self, value, keep=None):
         """EXPLICIT(x): every definition and Z expanded; EXPLICIT(x, [u, v]) keeps the
         listed names (expressed in terms of them)."""
@@ -327,8 +332,13 @@ class Model(AlgebraMixin, IOMixin):
         D(column, row) is the Jacobian."""
         if isinstance(var, sm.MatrixBase):
             col = value if isinstance(value, sm.MatrixBase) else sm.Matrix([value])
-            return sm.Matrix(len(col), len(var),
-                             lambda i, j: self.defs.diff(col[i], var[j]))
+            xs = list(var)
+            if not all(isinstance(x, sm.Symbol) for x in xs):
+                raise AutolevModelError(f"D(E, [x, ...]) differentiates with respect to "
+                                        f"names, not {', '.join(map(str, xs))}")
+            # one pass over the definitions for every entry (not one per entry)
+            jac = self.defs.jacobian(list(col), xs)
+            return sm.Matrix(len(col), len(xs), lambda i, j: jac[i][j])
         if isinstance(value, Vector):
             if frame is None:
                 raise AutolevModelError("D of a vector needs the frame: D(V>, x, N)")

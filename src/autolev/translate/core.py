@@ -346,9 +346,9 @@ class Translator:
         if key in self.scalars:
             entry = self.scalars[key]
             code = self.ensure_derivative(name, primes) if primes else entry.py
-            if (key, primes) == self.redefining and (key, primes) in self.defined:
+            if (key, primes) == self.redefining:
                 # X = f(X): on the right, X stands for its previous definition
-                return Typed(f"model.rhs({code})", "scalar")
+                return Typed(f"model.previous({code})", "scalar")
             if self.autorhs and (key, primes) in self.defined:
                 return Typed(f"model.rhs({code})", "scalar")
             return Typed(code, "scalar")

@@ -549,7 +549,12 @@ def _solve(tr, c):
     eqs = tr.expr(c.args[0])
     unknowns = []
     for a in c.args[1:]:
-        names = a.names if isinstance(a, ir.NameRange) else [a]
+        if isinstance(a, ir.NameRange):
+            names = a.names
+        elif isinstance(a, ir.Matrix):          # SOLVE(WR, [Q4', Q5'])
+            names = [x for row in a.rows for x in row]
+        else:
+            names = [a]
         for n in names:
             unknowns.append(_symbol_code(tr, n))
             if isinstance(n, ir.Name):

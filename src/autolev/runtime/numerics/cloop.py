@@ -61,7 +61,8 @@ DONE, MORE, SINGULAR, SMALL_STEP, CUTS, NONFINITE, STIFF = range(7)
  ST_TOLD, ST_HPREV, ST_FAIL_T, ST_FAIL_H, ST_IASTI, ST_NONSTI, ST_STIFF_T, ST_HLAMB,
  ST_KMROWS) = range(18)
 ST_SIZE = 24
-OP_RTOL, OP_ATOL, OP_MAXSTEP, OP_TBOUND, OP_STIFF_STOP, OP_BUDGET, OP_INTEGSTP = range(7)
+(OP_RTOL, OP_ATOL, OP_MAXSTEP, OP_TBOUND, OP_STIFF_STOP, OP_BUDGET, OP_INTEGSTP,
+ OP_FRESH) = range(8)
 
 METHOD_CODES = {"kutta-merson": 0, "dop853": 1}
 
@@ -187,6 +188,7 @@ class CompiledLoop:
         op[OP_TBOUND] = times[-1] if len(times) else opts["t0"]
         op[OP_STIFF_STOP] = 1.0 if stiff_stop else 0.0
         op[OP_INTEGSTP] = opts.get("integstp", 0.0)
+        op[OP_FRESH] = 1.0 if opts.get("fresh") else 0.0
         work = np.zeros((16 + 8 + 7) * max(1, n))      # DOP853: 29 n, Kutta-Merson: 7 n
         table = _table()
         done_rows = 0

@@ -12,7 +12,9 @@ Integrators:
   |y1 - y2|/5 (third- against fourth-order); a step fails when, for some state, it is
   at least both RELERR*|y1| and ABSERR, and is then halved; a step is doubled (within
   INTEGSTP) when every error is 64 times smaller; the net number of halvings is capped
-  at 20 over the run, after which the integration fails, as Autolev's did.
+  at 20 over the run, after which the integration fails, as Autolev's did.  Autolev
+  4.1's C programs evaluate the derivatives at the start of every step; 3.2's Fortran
+  reused the last stage's (``Schedule.fresh_derivatives``).
 * scipy's ``RK45``, ``DOP853``, ``Radau``, ``BDF``, ``LSODA``, ``RK23`` with
   ``max_step=INTEGSTP``, ``rtol=RELERR``, ``atol=ABSERR``; rows come from each
   method's dense output.
@@ -46,6 +48,10 @@ class Schedule:
     tfinal: float
     integstp: float
     printint: int
+    # Kutta-Merson as Autolev 4.1's C programs call it (kutta(..., 2)): the derivatives
+    # evaluated at the start of every step; False: as Autolev 3.2's Fortran (kutta(...,
+    # 1)), the last stage's derivatives reused there
+    fresh_derivatives: bool = False
 
     def check(self) -> None:
         h, span = self.integstp, self.tfinal - self.tinitial
@@ -86,14 +92,16 @@ class Schedule:
 class KuttaMerson:
     """Autolev's Kutta-Merson integrator (the state carries over between calls)."""
 
-    def __init__(self, f, n: int, abserr: float, relerr: float):
+    def __init__(self, f, n: int, abserr: float, relerr: float, fresh: bool = False):
         self.f = f
         self.abserr = abserr
         self.relerr = relerr
+        self.fresh = fresh
         self.hc = 0.0
         self.numcuts = 20
         self.evaluations = 0
         self.steps = 0
+        self.rejected = 0
         self.stiff_t = None                 # time at which the stiffness test fired
         self._iasti = self._nonsti = 0
 
@@ -137,6 +145,7 @@ class KuttaMerson:
                 self.hc = h = h2
                 tt = tt - h2
                 self.numcuts -= 1
+                self.rejected += 1
                 if self.numcuts >= 0:
                     continue
                 raise IntegrationFailure(
@@ -159,7 +168,11 @@ class KuttaMerson:
             if (h > 0 and tt > tfinal - 0.1 * h) or (h < 0 and tt < tfinal - 0.1 * h):
                 h = tfinal - (tt - h)
                 tt = tfinal
-            f0 = f1
+            if self.fresh:
+                f0 = f(tt - h, y)
+                self.evaluations += 1
+            else:
+                f0 = f1
 
     def _stiffness(self, hlamb: float, t: float) -> None:
         """loop.c's al_stiff_count with Kutta-Merson's limit."""
@@ -236,13 +249,14 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
 def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
                       stats) -> dict:
     if method == "kutta-merson":
-        km = KuttaMerson(f, len(y), abserr, relerr)
+        km = KuttaMerson(f, len(y), abserr, relerr, schedule.fresh_derivatives)
         for t_next, printed in schedule.steps():
             try:
                 y, _ = km.advance(y, t, schedule.integstp)
             finally:
                 stats["evaluations"] = km.evaluations
                 stats["steps"] = km.steps
+                stats["rejected"] = km.rejected
                 if km.stiff_t is not None:
                     stats["stiff_t"] = km.stiff_t
             t = t_next                     # Autolev's accumulated T
@@ -302,7 +316,7 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
     from . import cloop
     t0 = schedule.tinitial
     opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
-            "max_step": abs(schedule.integstp)}
+            "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives}
     if method == "kutta-merson":
         steps = list(schedule.steps())
         times = [tp for tp, _ in steps]

@@ -43,7 +43,8 @@ enum { ST_T = 0,        /* time of the current state */
 
 /* opts[] */
 enum { OP_RTOL = 0, OP_ATOL, OP_MAXSTEP, OP_TBOUND, OP_STIFF_STOP, OP_BUDGET,
-       OP_INTEGSTP };
+       OP_INTEGSTP,
+       OP_FRESH };      /* Kutta-Merson: f at every step's start (Autolev 4.1's C) */
 
 #define AL_NSTAGES 12
 #define AL_NEXT 16
@@ -160,7 +161,7 @@ static void al_stiff_count(double *st, double hlamb, double limit, double t)
 /* Advance y from t by exactly integstp (as KuttaMerson.advance in integrate.py).
  * work: 7 n doubles. */
 static int al_km_advance(al_ctx *ctx, double *st, double *y, double t, double integstp,
-                         double rtol, double atol, double *work)
+                         double rtol, double atol, int fresh, double *work)
 {
     int n = ctx->n, i, r;
     double *f0 = work, *f1 = work + n, *f2 = work + 2 * n, *y1 = work + 3 * n,
@@ -224,7 +225,11 @@ static int al_km_advance(al_ctx *ctx, double *st, double *y, double t, double in
             h = tfinal - (tt - h);
             tt = tfinal;
         }
-        memcpy(f0, f1, (size_t)n * sizeof(double));
+        if (fresh) {
+            if ((r = al_f(ctx, tt - h, y, f0)) != 0) { st[ST_FAIL_T] = tt - h; return r; }
+        } else {
+            memcpy(f0, f1, (size_t)n * sizeof(double));
+        }
     }
 }
 
@@ -239,7 +244,7 @@ static int al_km_run(al_ctx *ctx, double *st, const double *opts, double *y,
     int k = (int)st[ST_ROW];           /* here: the step index to do next */
     while (k < nsteps) {
         r = al_km_advance(ctx, st, y, st[ST_T], opts[OP_INTEGSTP], opts[OP_RTOL],
-                          opts[OP_ATOL], work);
+                          opts[OP_ATOL], opts[OP_FRESH] != 0, work);
         if (r != 0) return r;
         st[ST_T] = steps[k];
         if (printed[k]) {

@@ -165,10 +165,13 @@ def _unknowns(args, what: str) -> tuple[list, list]:
 # -- running --------------------------------------------------------------------------------
 def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                 backend: str = "auto", infile=None, specified=None, progress=None,
-                overrides=None, compiled: bool = True, constraints=None) -> Result:
+                overrides=None, compiled: bool = True, constraints=None,
+                quirks: bool = True) -> Result:
     """Run one CODE command; files go to out_dir (None: no files).  `constraints`:
     configuration constraints g(q) (sympy expressions in the model's symbols) kept at
-    their initial values by projecting the state onto them at every print time."""
+    their initial values by projecting the state onto them at every print time.
+    `quirks`: compute what Autolev's programs computed where they were wrong
+    (docs/language.md, "Quirks of the generated programs"); False: what was meant."""
     kind = command.kind
     stem = safe_stem(command.filename)
     files = _columns(model, command)
@@ -187,7 +190,7 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
     # simulate() calls with other inputs reuse its compiled functions)
     cache = model.__dict__.setdefault("_numeric_systems", {})
     key = (id(command), backend, model._version, len(model.defs.rhs),
-           id(model.kane_equations), len(model.outputs), len(model.encoded))
+           id(model.kane_equations), len(model.outputs), len(model.encoded), quirks)
     system = cache.get(key)
     if system is None:
         with model.defs.as_of(command.definitions):
@@ -196,10 +199,18 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                 implicit=(equations, unknowns) if kind == "ode" and equations else None,
                 solved=unknowns if kind in ("algebraic", "nonlinear") else (),
                 extra=_solver_expressions(model.defs, kind, equations, unknowns),
-                zero=command.zero if kind == "dynamics" else None)
+                zero=command.zero if kind == "dynamics" else None,
+                hidden_in_outputs=_hidden_in_outputs(command) if quirks else ())
         cache.clear()
         cache[key] = system
     build_seconds = time.perf_counter() - build_start
+    if system.hidden_in_outputs:
+        warnings.warn(
+            f"{command.filename}: Autolev's C program computed the OUTPUT and ENCODE "
+            "quantities with " + ", ".join(f"{s} = 0" for s in system.hidden_in_outputs)
+            + " (its output routine's counter `int i1` hides the model's i1); reproduced "
+            "as it printed them (--no-quirks, or quirks=False, for the values meant)",
+            stacklevel=2)
     system.set_specified({_find_symbol(model, k): v for k, v in (specified or {}).items()})
     given_fns = {i for i, _ in system._spec_fns}
     unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
@@ -268,7 +279,8 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
     try:
         if integrate_states:
             _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
-                          compiled, constraints, inputs.vector(extra_constants))
+                          compiled, constraints, inputs.vector(extra_constants),
+                          c_program=command.filename.lower().endswith(".c"))
         else:
             _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
                            zero_params)
@@ -291,6 +303,12 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
                                       [[c.label for c in cols] for cols in files],
                                       extra_files))
     return result
+
+
+def _hidden_in_outputs(command) -> tuple:
+    """Names the output routine of Autolev's program for `command` declares for itself
+    (every C program of Autolev 4.1 has `int i1;` there)."""
+    return ("i1",) if command.filename.lower().endswith(".c") else ()
 
 
 def _solver_expressions(defs, kind: str, equations: list, unknowns: list) -> dict | None:
@@ -476,13 +494,15 @@ def _conditioning(matrices: np.ndarray, times, states, result) -> None:
 
 
 def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
-                  compiled: bool = True, constraints=None, extra_values=()) -> None:
+                  compiled: bool = True, constraints=None, extra_values=(),
+                  c_program: bool = False) -> None:
     if not system.nstate:
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
     y0 = np.array(inputs.vector(system.states))
     sched = Schedule(inputs.internal("TINITIAL"), inputs.internal("TFINAL"),
-                     inputs.internal("INTEGSTP"), int(inputs.values["PRINTINT"].given))
+                     inputs.internal("INTEGSTP"), int(inputs.values["PRINTINT"].given),
+                     fresh_derivatives=c_program)
     try:
         sched.check()
     except ValueError as exc:

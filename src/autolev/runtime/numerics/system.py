@@ -94,7 +94,7 @@ class NumericSystem:
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, implicit=None, solved=(), extra=None,
-                 zero=None):
+                 zero=None, hidden_in_outputs=()):
         self.model = m = model
         self._zero = zero
         self.backend = backend
@@ -128,12 +128,15 @@ class NumericSystem:
             else:
                 self.encode_shapes.append((name, ()))
                 out_exprs.append(self._resolve(value))
-        self.output_exprs = out_exprs
         extra = {k: [self._resolve(e) for e in v] for k, v in (extra or {}).items()}
 
         # what is given: time, state, solved derivatives and unknowns, fixed speeds
         accel_inputs = list(unknowns) + self.solved
         given = set(self.states) | {S.TIME} | set(self.aux_fixed) | set(accel_inputs)
+        self.hidden_in_outputs = self._hidden(hidden_in_outputs)
+        if self.hidden_in_outputs:
+            out_exprs = self._as_output_routine(out_exprs, rhs_exprs, extra, given)
+        self.output_exprs = out_exprs
         exprs = [sm.sympify(e) for e in rhs_exprs + out_exprs]
         for v in extra.values():
             exprs += v
@@ -270,6 +273,25 @@ class NumericSystem:
         if all(sm.sympify(a - b) == 0 for a, b in zip(z, formed)):
             return None
         return z
+
+    def _hidden(self, names) -> list:
+        """The model's declared symbols spelt exactly as one of `names`."""
+        names = set(names)
+        return [s for s in self.model.info if S.base_and_order(s)[1] == 0 and s.name in names]
+
+    def _as_output_routine(self, out_exprs, rhs_exprs, extra, given) -> list:
+        """The outputs as Autolev's C output routine computed them: its loop counter
+        `int i1` hides a model's quantity named i1, which reads 0 there (reference runs
+        print that), except in what the derivative (or equations) routine computed
+        before and the output routine reuses."""
+        roots = [sm.sympify(e) for e in rhs_exprs] + [e for v in extra.values() for e in v]
+        shared, _ = self._needed(roots, given) if roots else ([], set())
+        keep = frozenset(shared)
+        zero = {s: sm.S.Zero for s in self.hidden_in_outputs}
+        changed = [self.model.defs.substitute(e, zero, keep) for e in out_exprs]
+        if all(a == b for a, b in zip(changed, out_exprs)):
+            self.hidden_in_outputs = []          # no output reads them
+        return changed
 
     def _is_specified(self, s) -> bool:
         return self.model.kind_of(S.base_and_order(s)[0]) == "specified"
