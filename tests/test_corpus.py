@@ -56,6 +56,23 @@ def test_every_corpus_model_parses_except_genuine_errors(corpus):
     assert failures == GENUINE
 
 
+def test_check_reports_an_error_exactly_when_convert_fails(corpus):
+    import autolev
+    from autolev.cli import check_file
+    disagree = []
+    models = corpus_bench.corpus_models(corpus)
+    for ident, path in models:
+        checked = sum(d.severity == "error" for d in check_file(path))
+        try:
+            autolev.transpile(path)
+            converts = True
+        except autolev.AutolevError:
+            converts = False
+        if converts != (checked == 0):
+            disagree.append((ident, checked, converts))
+    assert disagree == []
+
+
 @pytest.mark.slow
 def test_corpus_models_translate_and_build(corpus):
     from concurrent.futures import ProcessPoolExecutor

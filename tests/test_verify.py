@@ -40,6 +40,28 @@ def test_a_wrong_response_is_a_mismatch_with_both_values(tmp_path):
     assert bad[0].ours is not None and bad[0].theirs is not None
 
 
+def test_z_responses_assigned_names_and_euler_parameters_are_compared():
+    # P> mixes the frames N and A: comparable only where the Euler parameters have
+    # unit length (orthogonal direction cosines) and the square root is real
+    report = autolev.verify(DATA / "euler_session.all")
+    assert report.error is None and report.ok
+    assert report.count("match") == len(report.outcomes) == 14
+    z10 = next(o for o in report.outcomes if o.response.lhs == "Z10")
+    assert "as part of (22) S" in z10.detail
+    z1 = next(o for o in report.outcomes if o.response.lhs == "Z1")
+    assert "as part of (17) N_A" in z1.detail
+
+
+def test_a_wrong_response_through_z_and_names_is_a_mismatch(tmp_path):
+    text = (DATA / "euler_session.all").read_text().replace(
+        "-> (21) Z10 = 1 - C^2", "-> (21) Z10 = 1 - 2*C^2")
+    f = tmp_path / "wrong.all"
+    f.write_text(text)
+    report = autolev.verify(f)
+    bad = sorted(o.response.lhs for o in report.outcomes if o.status == "mismatch")
+    assert bad == ["S", "Z10"]
+
+
 def test_a_deliberately_wrong_translation_is_caught(monkeypatch):
     import autolev.runtime.model as model_mod
     real_ke = model_mod.Model.ke

@@ -7,6 +7,8 @@ the file is still checked.
 """
 from __future__ import annotations
 
+import difflib
+
 from dataclasses import dataclass
 
 from antlr4 import CommonTokenStream, InputStream, Token
@@ -31,6 +33,11 @@ _KEYWORDS = {getattr(_P, n) for n in (
     "UNITS", "UNITSYSTEM", "CODE", "SAVE", "ENCODE", "RUN", "EXIT", "QUIT",
     *KNOWN_SETTINGS)}
 _WORDS = _KEYWORDS | {_P.ID}
+# the words a statement can begin with (for "did you mean" on a misspelt one)
+_STATEMENT_WORDS = ("NEWTONIAN", "FRAMES", "BODIES", "PARTICLES", "POINTS", "CONSTANTS",
+                    "VARIABLES", "MOTIONVARIABLES", "SPECIFIED", "IMAGINARY", "MASS",
+                    "INERTIA", "INPUT", "OUTPUT", "UNITS", "UNITSYSTEM", "CODE", "SAVE",
+                    "ENCODE", "RUN", "EXIT", *KNOWN_SETTINGS)
 _EXPRESSION_START = {_P.ID, _P.INT, _P.FLOAT, _P.LPAREN, _P.MINUS}
 _STATEMENT_START = {_P.ID, _P.NEWTONIAN, _P.INPUT}
 _DESCRIPTIONS = {
@@ -250,6 +257,10 @@ class Parser:
         if (index == 1 and chunk[0].type == _P.ID
                 and offending.type in _WORDS | {_P.INT, _P.FLOAT}):
             msg = f"unknown setting or command '{chunk[0].text}'"
+            close = difflib.get_close_matches(chunk[0].text.upper(), _STATEMENT_WORDS,
+                                              n=1, cutoff=0.75)
+            if close:
+                msg += f"; did you mean {close[0]}?"
             notes.append("known settings: " + ", ".join(KNOWN_SETTINGS))
             notes.append("if this is an assignment, '=' is missing")
             return self._diagnostic(mapped, chunk[0].start, "E010", msg, notes)

@@ -317,6 +317,9 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
         return report
     names = _names_of(model)
     for k, r in enumerate(session.responses):
+        if _is_z(r.lhs):
+            report.outcomes.append(None)         # judged with the responses using it
+            continue
         if k in skipped:
             # a name the engine made (NICHECK's WCHECK1'): compare with its definition
             sym = next((x for x in model.defs.rhs if not isinstance(x, Z)
@@ -331,7 +334,46 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
         value, known = captured[k]
         report.outcomes.append(_compare(model, names, r, value, known, session, points,
                                         tolerance))
+    _judge_z_responses(session, report)
     return report
+
+
+def _is_z(lhs: str) -> bool:
+    return re.fullmatch(r"Z\d+", lhs.strip().upper()) is not None
+
+
+def _judge_z_responses(session: Session, report: Report) -> None:
+    """A Z response (`Z68 = 0.25*u2*Z56 - ...`) names a piece of a result Autolev went on
+    to print: it is compared through the first later response that uses it (directly or
+    through other Z's) and could be compared."""
+    responses = session.responses
+    uses = [{t.upper() for t in re.findall(r"\b[Zz]\d+\b", r.expr)} for r in responses]
+    for k, r in enumerate(responses):
+        if report.outcomes[k] is not None:
+            continue
+        name = r.lhs.strip().upper()
+        reach = {name}
+        judged = None
+        for j in range(k + 1, len(responses)):
+            if responses[j].lhs.strip().upper() == name:
+                break                            # Z renumbered: later uses are another's
+            if not (uses[j] & reach):
+                continue
+            if _is_z(responses[j].lhs):
+                reach.add(responses[j].lhs.strip().upper())
+                continue
+            o = report.outcomes[j]
+            if o is not None and o.status in ("match", "mismatch"):
+                judged = (o, responses[j])
+                break
+        if judged is None:
+            report.outcomes[k] = Outcome(r, "not comparable", "Autolev's intermediate "
+                                         "variable, used by no later response that could "
+                                         "be compared")
+        else:
+            o, user = judged
+            report.outcomes[k] = Outcome(r, o.status, f"{o.detail}, as part of "
+                                         f"({user.number}) {user.lhs}")
 
 
 def _build(session: Session, p: Path):
@@ -348,7 +390,7 @@ def _build(session: Session, p: Path):
         text, where, kinds = [], {}, {}
         after: dict[int, list[int]] = {}
         for k, r in enumerate(session.responses):
-            if k not in skipped:
+            if k not in skipped and not _is_z(r.lhs):
                 after.setdefault(r.after, []).append(k)
         for i, ln in enumerate(lines, 1):
             text.append(ln)
@@ -393,7 +435,7 @@ def _build(session: Session, p: Path):
         ns = model.namespace
         captured = {}
         for k in range(len(session.responses)):
-            if k in skipped:
+            if k in skipped or _is_z(session.responses[k].lhs):
                 continue
             name = tr.names.get(f"{_CAPTURE}{k}" + {"vector": ">", "dyadic": ">>"}.get(
                 kinds.get(k), ""), None)
@@ -408,6 +450,30 @@ def _build(session: Session, p: Path):
                 captured[k] = (value, ns["_verify_defs"].get(k))
         return model, captured, skipped
     return None, None, "too many responses our translation cannot capture"
+
+
+# (seed, span of the pseudo-random values) of the points tried, in order
+_POINTS = ([(seed, (0.5, 1.5)) for seed in range(1, 4)]
+           + [(seed, (0.1, 0.5)) for seed in range(1, 4)]
+           + [(seed, (-0.5, 0.5)) for seed in range(1, 7)])
+
+
+def _is_real(a) -> bool:
+    a = np.asarray(a, dtype=complex)
+    return bool(np.all(np.isfinite(a)) and
+                np.all(np.abs(a.imag) <= 1e-12 * (1 + np.abs(a.real))))
+
+
+def _assigned_value(model, text: str):
+    """A name the session assigned without declaring it (u1 = dot(W_DiskA_N>, DiskA1>)):
+    Autolev kept it as a name in later responses; its value is our value of it."""
+    try:
+        value = model.quantity(text)
+    except KeyError:
+        raise NotComparable(f"{text} is not a name of our model") from None
+    if not hasattr(value, "free_symbols") or hasattr(value, "shape"):
+        raise NotComparable(f"{text} is not a scalar of our model")
+    return value
 
 
 def _names_of(model) -> dict:
@@ -425,7 +491,9 @@ def _names_of(model) -> dict:
 
 def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> Outcome:
     from .runtime.calculus import NumericPoint
-    from .runtime.symbols import TIME
+    from sympy import Symbol
+
+    from .runtime.symbols import TIME, Z
     from .runtime.vector import Dyadic, Vector
 
     defs = model.defs
@@ -436,14 +504,20 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
         if re.fullmatch(r"Z\d+", other.lhs.upper()) and other.number < r.number:
             z_text[other.lhs.upper()] = other.expr
 
-    ours_all, theirs_all = [], []
-    for seed in range(points):
-        point = NumericPoint(defs, seed=seed + 1)
+    def evaluate(point):
+        """(ours, Autolev's) at one point, as arrays of the same shape."""
+        for quaternion in model.unit_quaternions:
+            free = [e for e in quaternion if isinstance(e, Symbol) and e not in defs.rhs]
+            if len(free) == 4:
+                values = [float(point.value(e, {})) for e in free]
+                norm = math.sqrt(sum(v * v for v in values))
+                point.values.update({e: v / norm for e, v in zip(free, values)})
         if known is not None:
             # names defined only after the response are free there (a later CONSTRAIN
-            # defines the dependent speeds): they get values of their own
+            # defines the dependent speeds): they get values of their own.  Z's made
+            # later name expressions, whatever is defined: they keep their values
             for s in defs.rhs:
-                if s not in known:
+                if s not in known and not isinstance(s, Z):
                     point.cache[s] = point.value(s, {})
         znum: dict = {}
 
@@ -467,9 +541,9 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
             if key == "T":
                 return num(TIME)
             sym = by_name.get(key)
-            if sym is None:
-                raise NotComparable(f"{text} is not a name of our model")
-            return num(sym)
+            if sym is not None:
+                return num(sym)
+            return num(_assigned_value(model, text))
 
         def unit_vector(text):
             body = text.rstrip(">")
@@ -493,42 +567,57 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
                 out = out + dcm(fa) @ mm @ dcm(fb).T
             return out
 
+        if r.expr.strip() in ("0>", "0>>"):
+            theirs = np.zeros(3 if r.expr.strip() == "0>" else (3, 3), dtype=complex)
+        else:
+            theirs = _Parser(r.expr, scalar, unit_vector).parse()
+        if isinstance(theirs, _Matrix):
+            theirs = theirs.a
+        if isinstance(ours, Vector):
+            mine = vec_num(ours)
+        elif isinstance(ours, Dyadic):
+            mine = dyad_num(ours)
+        elif hasattr(ours, "shape") and not isinstance(ours, np.ndarray):
+            mine = np.array([[num(ours[i, j]) for j in range(ours.shape[1])]
+                             for i in range(ours.shape[0])])
+        else:
+            mine = num(ours)
+        mine, theirs = np.asarray(mine, dtype=complex), np.asarray(theirs, dtype=complex)
+        if mine.shape != theirs.shape:
+            if mine.size != theirs.size:
+                raise NotComparable(f"shapes differ: ours {mine.shape}, Autolev's "
+                                    f"{theirs.shape}")
+            mine = mine.reshape(theirs.shape)
+        return mine, theirs
+
+    # points where both values are real: equal expressions may take different branches
+    # of a root or logarithm where they are complex (Euler parameters far from unit
+    # length make 1 - Z10^2 negative)
+    ours_all, theirs_all, complex_pairs = [], [], []
+    for seed, span in _POINTS:
         try:
-            if r.expr.strip() in ("0>", "0>>"):
-                theirs = np.zeros(3 if r.expr.strip() == "0>" else (3, 3), dtype=complex)
-            else:
-                theirs = _Parser(r.expr, scalar, unit_vector).parse()
-            if isinstance(theirs, _Matrix):
-                theirs = theirs.a
-            if isinstance(ours, Vector):
-                mine = vec_num(ours)
-            elif isinstance(ours, Dyadic):
-                mine = dyad_num(ours)
-            elif hasattr(ours, "shape") and not isinstance(ours, np.ndarray):
-                mine = np.array([[num(ours[i, j]) for j in range(ours.shape[1])]
-                                 for i in range(ours.shape[0])])
-            else:
-                mine = num(ours)
+            mine, theirs = evaluate(NumericPoint(defs, seed=seed, span=span))
         except NotComparable as exc:
             return Outcome(r, "not comparable", str(exc))
         except (ZeroDivisionError, OverflowError, ValueError, TypeError) as exc:
             return Outcome(r, "not comparable", f"cannot evaluate: {exc}")
-        mine, theirs = np.asarray(mine, dtype=complex), np.asarray(theirs, dtype=complex)
-        if mine.shape != theirs.shape:
-            if mine.size == theirs.size:
-                mine = mine.reshape(theirs.shape)
-            else:
-                return Outcome(r, "not comparable",
-                               f"shapes differ: ours {mine.shape}, Autolev's {theirs.shape}")
-        ours_all.append(mine)
-        theirs_all.append(theirs)
+        if _is_real(mine) and _is_real(theirs):
+            ours_all.append(mine)
+            theirs_all.append(theirs)
+            if len(ours_all) == points:
+                break
+        elif len(complex_pairs) < points:
+            complex_pairs.append((mine, theirs))
+    if not ours_all:
+        ours_all = [m for m, _ in complex_pairs]
+        theirs_all = [t for _, t in complex_pairs]
     a, b = np.array(ours_all), np.array(theirs_all)
     # values are O(1) at the sample points; a scale below 1e-6 is cancellation to zero
     scale = max(float(np.abs(a).max(initial=0)), float(np.abs(b).max(initial=0)), 1e-6)
     err = float(np.abs(a - b).max(initial=0)) / scale
     if err <= tol:
         return Outcome(r, "match", f"relative difference {err:.1e}", a[0], b[0])
-    return Outcome(r, "mismatch", f"relative difference {err:.1e} at {points} points",
+    return Outcome(r, "mismatch", f"relative difference {err:.1e} at {len(a)} points",
                    a[0], b[0])
 
 

@@ -46,13 +46,15 @@ class NumericPoint:
     `zero_varying` (the configuration where models are usually linearised)."""
 
     def __init__(self, defs: "Definitions", values: Mapping | None = None,
-                 zero_varying: bool = False, seed: int = 0, varying=None):
-        """`varying`: None (pseudo-random in [0.5, 1.5] like the constants), a number
-        for every time-varying symbol, or "wide" (pseudo-random in [-pi, pi])."""
+                 zero_varying: bool = False, seed: int = 0, varying=None,
+                 span: tuple[float, float] = (0.5, 1.5)):
+        """`varying`: None (pseudo-random in `span` like the constants), a number for
+        every time-varying symbol, or "wide" (pseudo-random in [-pi, pi])."""
         self.defs = defs
         self.values = dict(values or {})
         self.varying_value = 0 if zero_varying else varying
         self.seed = seed
+        self.span = span
         self.cache: dict = {}
 
     def value(self, sym, cache):
@@ -66,7 +68,8 @@ class NumericPoint:
             if self.varying_value == "wide":
                 return sm.Float(math.pi * (2 * h - 1))
             return sm.sympify(self.varying_value)
-        return sm.Float(0.5 + h)
+        lo, hi = self.span
+        return sm.Float(lo + (hi - lo) * h)
 
 
 def _number(e):

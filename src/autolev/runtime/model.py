@@ -77,6 +77,7 @@ class Model(AlgebraMixin, IOMixin):
         self.encoded: list = []         # (name, value) of ENCODE
         self.code_commands: list = []   # (kind, filename, args, sweep, options)
         self._kinematics_pending: dict = {}   # U -> f(q') awaiting inversion
+        self.unit_quaternions: list = []       # (e1, e2, e3, e4) of DIRCOS(..., EULER, ...)
 
     def __repr__(self) -> str:
         return f"<autolev Model {self.name}>"

@@ -616,6 +616,9 @@ class Frame:
         """DIRCOS(parent, self, EULER, e1, e2, e3, e4) with e4 the scalar part."""
         dcm, w = euler_parameters((e1, e2, e3, e4), self.model.defs.dt_raw)
         self.orient_dcm(parent, dcm, Vector({self: w}))
+        # a unit quaternion: numeric checks give the four values unit length, else the
+        # direction cosines are not orthogonal there
+        self.model.unit_quaternions.append(tuple(_s(e) for e in (e1, e2, e3, e4)))
 
     def _path(self, other: "Frame", edges_of) -> list["Frame"] | None:
         """Shortest path self -> other through the given edge dictionaries."""

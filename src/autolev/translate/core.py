@@ -198,12 +198,40 @@ class Translator:
             except TranslationError as exc:
                 self.diagnostics.append(self._diagnostic(str(exc), exc.node or st, exc.code,
                                                          "error"))
+                if exc.code == "T002":
+                    self._report_other_undeclared(st, exc.node)
                 self._known_after_failure(st)
         self._span = None
         self._footer()
         code, line_map = self._render()
         return Translation(code, line_map, self.diagnostics, dict(self.autolev_names),
                            {k: dict(v) for k, v in self.namespaces.items()})
+
+    def _report_other_undeclared(self, st: ir.Statement, first) -> None:
+        """The names after the first undeclared one in the statement that are not
+        declared or defined either (every one is reported, not only the first)."""
+        seen = {first.name.lower()} if isinstance(first, ir.Name) else set()
+        if isinstance(st, ir.Assignment):       # what it reads, not what it assigns
+            target = st.target
+            read = [st.value] + (list(target.indices) if isinstance(target, ir.Index) else [])
+        else:
+            read = list(_statement_exprs(st))
+        for e in read:
+            for node in _expression_names(e):
+                key = node.name.lower()
+                if node is first or key in seen or self._resolvable(node):
+                    continue
+                seen.add(key)
+                self.diagnostics.append(self._diagnostic(
+                    f"'{node.name}' is not declared or defined", node, "T002", "error"))
+
+    def _resolvable(self, node: ir.Name) -> bool:
+        key = node.name.lower()
+        return (key in self.scalars or key in self.entities
+                or (key in self.values and not node.primes)
+                or key in ("t", "pi", "u_independent", "u_dependent", "u_auxiliary")
+                or self.split_entities(node.name, ("frame", "newtonian", "body"), 2)
+                is not None)
 
     def _known_after_failure(self, st: ir.Statement) -> None:
         """A name whose assignment failed is still known afterwards (of unknown type),
@@ -518,6 +546,36 @@ def _exprs_in(value):
     elif hasattr(value, "__dataclass_fields__") and not isinstance(value, (ir.Unit,)):
         for v in vars(value).values():
             yield from _exprs_in(v)
+
+
+# functions whose arguments hold words that are not names of the model (units,
+# LINEAR/ANGULAR, rotation types, rotor shapes)
+_WORD_ARGUMENTS = {"UNITS", "MOMENTUM", "GYROSTAT", "DIRCOS", "KINDIFFS", "ANGVEL"}
+
+
+def _expression_names(e: ir.Expr):
+    """The plain names read by an expression, in order (not the words some functions
+    take as arguments, nor the left sides of x=v arguments)."""
+    stack = [e]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, ir.Name):
+            yield node
+        elif isinstance(node, ir.Call):
+            if node.name.upper() not in _WORD_ARGUMENTS:
+                stack.extend(reversed(node.args))
+        elif isinstance(node, ir.Equation):
+            stack.append(node.rhs)
+        elif isinstance(node, ir.BinOp):
+            stack.extend((node.right, node.left))
+        elif isinstance(node, ir.Neg):
+            stack.append(node.operand)
+        elif isinstance(node, ir.Range):
+            stack.extend((node.hi, node.lo))
+        elif isinstance(node, ir.Matrix):
+            stack.extend(reversed([x for row in node.rows for x in row]))
+        elif isinstance(node, ir.Index):
+            stack.extend(reversed(node.indices))
 
 
 def _split_into(pieces: list[str], count: int, accept) -> list | None:
