@@ -34,6 +34,23 @@ def test_check_reports_file_line_col_and_exits_1(tmp_path, capsys):
     assert lines[-1] == "checked 1 file: 2 errors, 0 warnings (1 file with errors)"
 
 
+def test_check_reports_what_the_translation_would_refuse(tmp_path, capsys):
+    f = tmp_path / "names.al"
+    f.write_text("NEWTONIAM N\nCONSTANTS A\nY = A + C + D*SIN(E)\nZ = COSS(A)\n")
+    code, out, _ = run(capsys, "check", str(f))
+    assert code == 1
+    assert "did you mean NEWTONIAN?" in out
+    # the syntax first: the translation's findings come when the model reads
+    f.write_text("CONSTANTS A\nY = A + C + D*SIN(E)\nZ = COSS(A)\nW> = V>\n")
+    code, out, _ = run(capsys, "check", str(f))
+    assert code == 1
+    errors = [ln for ln in out.splitlines() if ": error: " in ln]
+    assert [e.split(": error: ")[0].rsplit(":", 2)[1:] for e in errors] == \
+        [["2", "9"], ["2", "13"], ["2", "19"], ["3", "5"], ["4", "6"]]
+    assert "unknown function COSS(): " in errors[3] and "COS" in errors[3].split("did you mean")[1]
+    assert out.splitlines()[-1].startswith("checked 1 file: 5 errors")
+
+
 def test_check_json(tmp_path, capsys):
     f = tmp_path / "bad.al"
     f.write_text("x = )\nVARIABLES v\nVARIABLES v\n")

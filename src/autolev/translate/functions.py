@@ -25,8 +25,11 @@ def function(*names):
 def call(tr: Translator, c: ir.Call) -> Typed:
     fn = FUNCTIONS.get(c.name.upper())
     if fn is None:
-        close = difflib.get_close_matches(c.name.upper(), FUNCTIONS, n=1, cutoff=0.6)
-        hint = f"; did you mean {close[0]}?" if close else ""
+        close = difflib.get_close_matches(c.name.upper(), FUNCTIONS, n=3, cutoff=0.6)
+        hint = ""
+        if close:
+            hint = "; did you mean " + (" or ".join(close) if len(close) < 3 else
+                                        f"{close[0]}, {close[1]} or {close[2]}") + "?"
         raise tr.error(f"unknown function {c.name.upper()}(): Autolev has no such function, "
                        f"and no user function file {c.name}.R is next to the model{hint}",
                        c, "T003")
