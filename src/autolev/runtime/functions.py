@@ -34,11 +34,21 @@ def cross(a, b):
 
 
 def mag(v: Vector):
-    return sm.sqrt(v.dot(v))
+    """MAG(V>), named by a Z (as Autolev's Z12 = Z11^0.5) when not small."""
+    defs = v._defs()
+    square = v.dot(v)
+    if defs is None:
+        return sm.sqrt(square)
+    return defs.zify(sm.sqrt(defs.zify(square)))
 
 
 def unitvec(v: Vector) -> Vector:
-    return v / mag(v)
+    """UNITVEC(V>): its measure numbers over its magnitude, each named by a Z (the
+    derivatives of unnamed quotients of square roots grow without bound)."""
+    defs = v._defs()
+    if defs is None:
+        return v / mag(v)
+    return (v * defs.zify(1 / mag(v))).zified()
 
 
 def express(x, frame: Frame, other: Frame | None = None):
