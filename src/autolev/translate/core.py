@@ -14,6 +14,7 @@ from fractions import Fraction
 
 from .. import ir
 from ..errors import Diagnostic, Span
+from .emit import comment, docstring, quote
 from .names import NameTable, UnsafeName
 
 # precedence of the Python written for an expression
@@ -271,23 +272,23 @@ class Translator:
                         self.emit("")
                     blank = False
                     body = text.lstrip("%").rstrip()
-                    self.emit("#" + (" " + body.strip() if body.strip() else ""))
+                    self.emit("#" + (" " + comment(body.strip()) if body.strip() else ""))
             if blank and self.lines and self.lines[-1].code:
                 self.emit("")
             previous_end[span.file] = max(end, prev)
         for i in range(start, end + 1):
-            self.emit("# " + lines[i - 1].rstrip())
+            self.emit("# " + comment(lines[i - 1].rstrip()))
 
     def _header(self) -> None:
         src = self.program.filename
-        self.emit(f'"""Translated from {_basename(src)} by autolev.\n\n'
+        self.emit(f'"""Translated from {docstring(_basename(src))} by autolev.\n\n'
                   "Importing this module builds the model; running it performs the model's\n"
                   'CODE commands with its INPUT values."""')
         self.emit("import sympy as sm")
         self.emit("")
         self.emit("import autolev.runtime as al")
         self.emit("")
-        self.emit(f"model = al.Model({self.module_name!r})")
+        self.emit(f"model = al.Model({quote(self.module_name)})")
         self.emit("t = model.t")
         self.emit("")
 

@@ -10,6 +10,7 @@ import difflib
 
 from .. import ir
 from .core import ATOM, Translator, Typed
+from .emit import quote
 
 FUNCTIONS: dict = {}
 
@@ -557,7 +558,7 @@ def _units(tr, c):
         units_factor(ua, ub)              # unknown units and unlike kinds: diagnosed here
     except AutolevModelError as exc:
         raise tr.error(str(exc), c) from None
-    return Typed(f"al.units_factor({ua!r}, {ub!r})", "scalar")
+    return Typed(f"al.units_factor({quote(ua)}, {quote(ub)})", "scalar")
 
 
 def _unit_text(tr, e) -> str:

@@ -6,6 +6,7 @@ import textwrap
 
 from .. import ir
 from .core import Entry, Translator, Typed
+from .emit import comment, quote
 from .special import assign_vector
 
 HANDLERS: dict = {}
@@ -36,9 +37,9 @@ def _assign_names(tr: Translator, names: list[str], call: str) -> None:
 def _quoted_names(names: list[str]) -> str:
     text = " ".join(names)
     if len(text) <= 70:
-        return repr(text)
+        return quote(text)
     parts = textwrap.wrap(text, 70)
-    return "(" + " ".join(repr(p + (" " if i < len(parts) - 1 else ""))
+    return "(" + " ".join(quote(p + (" " if i < len(parts) - 1 else ""))
                           for i, p in enumerate(parts)) + ")"
 
 
@@ -81,7 +82,7 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
         n = names[0]
         py = tr.py_name("entity", n, "frame")
         tr.entities[n.lower()] = Entry(py, "newtonian", "frame")
-        tr.emit(f"{py} = model.newtonian({n!r})")
+        tr.emit(f"{py} = model.newtonian({quote(n)})")
         _implicit_point(tr, n + "O", f"{py}.origin")
         return
     pys = []
@@ -147,7 +148,7 @@ def _declare_scalars(tr: Translator, st: ir.Declaration) -> None:
         if order and kind != "constant":
             opts += f", order={order}"
         if sign:
-            opts += f", sign={sign!r}"
+            opts += f", sign={quote(sign)}"
         _assign_names(tr, pys, f"model.{method}({_quoted_names(names)}{opts})")
         for k in range(1, order + 1):
             used = [(n, p) for n, p in items if (n.lower(), k) in tr._used_primes]
@@ -168,7 +169,7 @@ def _implicit_constant(tr: Translator, e: ir.Expr) -> None:
         key = e.name.lower()
         if key not in tr.scalars and key not in tr.values and key not in ("t", "pi"):
             entry = tr.declare_scalar(e.name, "constant", 0)
-            tr.emit(f"{entry.py} = model.constants({e.name!r})")
+            tr.emit(f"{entry.py} = model.constants({quote(e.name)})")
 
 
 @handles(ir.MassStatement)
@@ -415,7 +416,7 @@ def _dircos(tr, c):
         raise tr.error(f"DIRCOS does not know {c.args[2].name}; expected BODYijk, SPACEijk "
                        "or EULER", c.args[2])
     method = "orient_body_fixed" if m.group(1) == "BODY" else "orient_space_fixed"
-    tr.emit(f"{b}.{method}({a}, ({', '.join(angles)}), {m.group(2)!r})")
+    tr.emit(f"{b}.{method}({a}, ({', '.join(angles)}), {quote(m.group(2))})")
 
 
 @command("KINDIFFS")
@@ -424,7 +425,7 @@ def _kindiffs(tr, c):
         raise tr.error("KINDIFFS(A, B, BODYijk|SPACEijk|EULER, q...)", c)
     a, b = tr.frame(c.args[0]).code, tr.frame(c.args[1]).code
     coords = [_symbol_code(tr, x) for x in c.args[3:]]
-    tr.emit(f"model.kindiffs({a}, {b}, {c.args[2].name.upper()!r}, {', '.join(coords)})")
+    tr.emit(f"model.kindiffs({a}, {b}, {quote(c.args[2].name.upper())}, {', '.join(coords)})")
     for x in c.args[3:]:
         if isinstance(x, ir.Name):
             tr.defined.add((x.name.lower(), x.primes + 1))
@@ -434,13 +435,13 @@ def _kindiffs(tr, c):
 def _angvel(tr, c):
     if len(c.args) == 2:
         a, b = tr.frame(c.args[0]).code, tr.frame(c.args[1]).code
-        tr.emit(f"# (Autolev displayed W_{c.args[1].name}_{c.args[0].name}>)")
+        tr.emit(f"# (Autolev displayed {comment(f'W_{c.args[1].name}_{c.args[0].name}>')})")
         tr.emit(f"{b}.ang_vel_in({a})")
         return
     if len(c.args) == 6 and isinstance(c.args[2], ir.Name):
         a, b = tr.frame(c.args[0]).code, tr.frame(c.args[1]).code
         angles = [tr.scalar(x).code for x in c.args[3:]]
-        tr.emit(f"model.angvel({a}, {b}, {c.args[2].name.upper()!r}, {', '.join(angles)})")
+        tr.emit(f"model.angvel({a}, {b}, {quote(c.args[2].name.upper())}, {', '.join(angles)})")
         return
     raise tr.error("ANGVEL(A, B) or ANGVEL(A, B, BODYijk|SPACEijk|RODRIGUES, a1, a2, a3)", c)
 
@@ -608,7 +609,7 @@ def _integration_name(name: str) -> str | None:
 
 
 def _unit_arg(unit: ir.Unit | None) -> str:
-    return "" if unit is None else f", {unit.text!r}"
+    return "" if unit is None else f", {quote(unit.text)}"
 
 
 @handles(ir.Input)
@@ -621,7 +622,7 @@ def input_statement(tr: Translator, st: ir.Input) -> None:
             continue
         if isinstance(target, ir.Name) and _integration_name(target.name) and \
                 target.name.lower() not in tr.scalars and not target.primes:
-            tr.emit(f"model.input({_integration_name(target.name)!r}, {value}"
+            tr.emit(f"model.input({quote(_integration_name(target.name))}, {value}"
                     f"{_unit_arg(item.unit)})")
             continue
         if isinstance(target, ir.Index):
@@ -631,7 +632,7 @@ def input_statement(tr: Translator, st: ir.Input) -> None:
                 tr.warn(f"INPUT {target.name}: not a declared name nor an integration "
                         "parameter (TINITIAL TFINAL INTEGSTP PRINTINT ABSERR RELERR); the "
                         "value is not used", target, "W104")
-                tr.emit(f"# (INPUT {target.name} = ... ignored: {target.name} is not declared)")
+                tr.emit(f"# (INPUT {comment(target.name)} = ... ignored: not declared)")
                 continue
             t = tr.name(target.name, target.primes, target).code
         tr.emit(f"model.input({t}, {value}{_unit_arg(item.unit)})")
@@ -645,7 +646,7 @@ def output_statement(tr: Translator, st: ir.Output) -> None:
         if x.type not in ("scalar", "matrix", "unknown"):
             raise tr.error(f"OUTPUT writes scalars, not a {x.type}", item.expr)
         label = _label(item.expr)
-        items.append(f"({x.code}, {label!r}{_unit_arg(item.unit)})")
+        items.append(f"({x.code}, {quote(label)}{_unit_arg(item.unit)})")
     _call_lines(tr, "model.output(", items)
 
 
@@ -692,20 +693,20 @@ def units_statement(tr: Translator, st: ir.UnitsStatement) -> None:
         for target in item.targets:
             key = _integration_name(target.name) or target.name.upper()
             if key in _INTEGRATION or key == "T":
-                name = repr(key)
+                name = quote(key)
             elif target.name.lower() in tr.scalars:
                 name = tr.name(target.name, target.primes, target).code
             elif target.name.lower() in tr.values:
                 # an assigned, undeclared name: its unit goes with the name
-                name = repr(target.name + "'" * target.primes)
+                name = quote(target.name + "'" * target.primes)
             else:
-                name = repr(target.name)
-            tr.emit(f"model.units({name}, {item.unit.text!r})")
+                name = quote(target.name)
+            tr.emit(f"model.units({name}, {quote(item.unit.text)})")
 
 
 @handles(ir.UnitSystem)
 def unit_system(tr: Translator, st: ir.UnitSystem) -> None:
-    tr.emit(f"model.unit_system({', '.join(repr(u) for u in st.units)})")
+    tr.emit(f"model.unit_system({', '.join(quote(u) for u in st.units)})")
 
 
 @handles(ir.Code)
@@ -723,12 +724,12 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
         opts += (f", sweep=({target}, {tr.scalar(sw.start).code}, {tr.scalar(sw.stop).code}, "
                  f"{tr.scalar(sw.step).code}{_unit_arg(sw.unit)})")
     if st.options:
-        opts += f", options={tuple(st.options)!r}"
+        opts += f", options=({''.join(quote(o) + ', ' for o in st.options)})"
     zero = tr.values.get("zero")
     if tr.kane_called and zero is not None and zero.type == "matrix":
         opts += f", zero={zero.py}"
     tr.has_code = True
-    tr.emit(f"model.code({st.what!r}, {st.filename!r}{opts})")
+    tr.emit(f"model.code({quote(st.what)}, {quote(st.filename)}{opts})")
 
 
 @handles(ir.Encode)
@@ -736,23 +737,23 @@ def encode(tr: Translator, st: ir.Encode) -> None:
     items = []
     for e in st.exprs:
         x = tr.expr(e)
-        items.append(f"({_text_of(e)!r}, {x.code})")
+        items.append(f"({quote(_text_of(e))}, {x.code})")
     _call_lines(tr, "model.encode(", items)
 
 
 @handles(ir.Save)
 def save(tr: Translator, st: ir.Save) -> None:
-    tr.emit(f"# (SAVE wrote Autolev's session transcript {st.filename})")
+    tr.emit(f"# (SAVE wrote Autolev's session transcript {comment(st.filename)})")
 
 
 @handles(ir.Run)
 def run(tr: Translator, st: ir.Run) -> None:
-    tr.emit(f"# (the statements of {st.filename} follow)")
+    tr.emit(f"# (the statements of {comment(st.filename)} follow)")
 
 
 @handles(ir.MacroCall)
 def macro(tr: Translator, st: ir.MacroCall) -> None:
-    tr.emit(f"# (macro {st.name}: its statements follow)")
+    tr.emit(f"# (macro {comment(st.name)}: its statements follow)")
 
 
 @handles(ir.Exit)
@@ -769,6 +770,6 @@ def setting(tr: Translator, st: ir.Setting) -> None:
         tr.autorhs = st.value in ("ON", "ALL")
     elif st.name == "COMPLEX":
         tr.complex = st.value == "ON"
-    value = "None" if st.value is None else repr(st.value)
-    tr.emit(f"model.setting({st.name!r}, {value})")
+    value = "None" if st.value is None else quote(st.value)
+    tr.emit(f"model.setting({quote(st.name)}, {value})")
 
