@@ -156,7 +156,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
 
     warnings.showwarning = _print_warning
     path = Path(ns.file)
-    if ns.method not in METHODS:
+    if ns.method is not None and ns.method not in METHODS:
         print(f"autolev run: unknown --method {ns.method} (one of {', '.join(METHODS)})",
               file=sys.stderr)
         return 2
@@ -328,9 +328,10 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("file", metavar="FILE", help=".al model")
     run.add_argument("--out", default=".", metavar="DIR",
                      help="folder for the output files (default: the current folder)")
-    run.add_argument("--method", default="kutta-merson", metavar="M",
-                     help="integrator: kutta-merson (Autolev's, default), rk45, dop853, "
-                     "radau, bdf, lsoda, rk23")
+    run.add_argument("--method", default=None, metavar="M",
+                     help="integrator: kutta-merson, rk45, dop853, radau, bdf, lsoda, "
+                     "rk23 (default: the one of Autolev's program for each CODE file: "
+                     "rk45 -- Matlab's ode45 -- for .m, else Kutta-Merson)")
     run.add_argument("--set", action="append", metavar="NAME=VALUE",
                      help="an input value, in the unit the model gives it (degrees for a "
                      "DEG input); repeatable")

@@ -106,7 +106,7 @@ class IOMixin:
                       + "".join(f"\n  wrote {f}" for f in r.files))
         return results
 
-    def simulate(self, *, method: str = "kutta-merson", backend: str = "auto",
+    def simulate(self, *, method: str | None = None, backend: str = "auto",
                  infile=None, out_dir=None, specified=None, progress=None,
                  compiled: bool = True, constraints=None, quirks: bool = True,
                  **overrides):
@@ -114,6 +114,8 @@ class IOMixin:
         CODE command, else a plain simulation) with INPUT values, `overrides`
         (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
         ({name: f(t) or f(t, x)}).  Files are written only when out_dir is given.
+        `method`: the integrator (default: the one of the program Autolev wrote for the
+        CODE file: ode45, i.e. "rk45", for a .m file, else its Kutta-Merson).
         `compiled=False` keeps the integration loop in Python even when the right-hand
         side is compiled C (Kutta-Merson and DOP853 otherwise run wholly in C).
         `constraints`: configuration constraints g(q) (sympy expressions in the model's

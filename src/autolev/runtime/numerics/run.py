@@ -163,7 +163,14 @@ def _unknowns(args, what: str) -> tuple[list, list]:
 
 
 # -- running --------------------------------------------------------------------------------
-def run_command(model, command, out_dir=None, method: str = "kutta-merson",
+def program_method(filename: str) -> str:
+    """The integrator of the program Autolev wrote for a CODE file: Matlab's programs
+    call ode45 (Dormand-Prince 5(4), which is scipy's RK45), the C and Fortran ones
+    their Kutta-Merson."""
+    return "rk45" if filename.lower().endswith(".m") else "kutta-merson"
+
+
+def run_command(model, command, out_dir=None, method: str | None = None,
                 backend: str = "auto", infile=None, specified=None, progress=None,
                 overrides=None, compiled: bool = True, constraints=None,
                 quirks: bool = True) -> Result:
@@ -173,6 +180,7 @@ def run_command(model, command, out_dir=None, method: str = "kutta-merson",
     `quirks`: compute what Autolev's programs computed where they were wrong
     (docs/language.md, "Quirks of the generated programs"); False: what was meant."""
     kind = command.kind
+    method = method or program_method(command.filename)
     stem = safe_stem(command.filename)
     files = _columns(model, command)
     encoded = _encoded(model, command)
