@@ -437,6 +437,48 @@ def test_outputs_as_autolevs_c_output_routine_computed_them(tmp_path, program, q
     assert said == (program.endswith(".c") and quirks)
 
 
+DECAY = """
+    VARIABLES X'
+    X' = -3*X
+    INPUT X = 1, TFINAL = 1, INTEGSTP = 0.1, ABSERR = 1E-4, RELERR = 1E-4
+    OUTPUT X
+    CODE DYNAMICS() FILE
+    """
+
+
+def test_a_matlab_program_integrates_with_ode45_over_every_integstp(tmp_path):
+    import scipy.integrate
+    m = load(tmp_path, DECAY.replace("FILE", "decay.m"))
+    r = m.simulate()
+    assert r.stats["method"] == "rk45"
+    # Autolev's Matlab loop: ode45(@f, [T T+INTEGSTP], VAR, RelTol, AbsTol, MaxStep)
+    y, t, expected = 1.0, 0.0, [1.0]
+    for _ in range(10):
+        sol = scipy.integrate.solve_ivp(lambda t, y: -3 * y, (t, t + 0.1), [y],
+                                        method="RK45", rtol=1e-4, atol=1e-4, max_step=0.1)
+        y, t = sol.y[0, -1], t + 0.1
+        expected.append(y)
+    assert np.array_equal(r.states[:, 0], expected)
+    c = load(tmp_path, DECAY.replace("FILE", "decay.c"), name="c.al").simulate()
+    assert c.stats["method"] == "kutta-merson" and not np.array_equal(c.states[:, 0],
+                                                                      expected)
+
+
+def test_numeric_angles_are_degrees_unless_written_with_pi(tmp_path):
+    m = load(tmp_path, """
+        NEWTONIAN N
+        FRAMES A, B, C
+        SIMPROT(N, A, 3, PI/2)
+        SIMPROT(N, B, 3, 90)
+        DEGREES OFF
+        SIMPROT(N, C, 3, 0.5)
+        """)
+    n = m.entity("N")
+    assert close(num(m, n.dcm(m.entity("A")), {}), rot3(math.pi / 2))
+    assert close(num(m, n.dcm(m.entity("B")), {}), rot3(math.pi / 2))
+    assert close(num(m, n.dcm(m.entity("C")), {}), rot3(0.5))
+
+
 # -- 10. a definition in terms of its previous self --------------------------------------------
 def test_the_name_on_the_right_of_a_redefinition_is_its_previous_definition(tmp_path):
     m = load(tmp_path, """

@@ -364,16 +364,16 @@ def display(tr: Translator, st: ir.Display) -> None:
 
 
 def _angle(tr: Translator, e: ir.Expr) -> str:
-    """A numeric angle is in degrees unless DEGREES OFF."""
+    """A number is an angle in degrees unless DEGREES OFF; an angle written with PI
+    (PI/2) is in radians either way (docs/language.md)."""
     x = tr.scalar(e)
-    if tr.degrees and _is_numeric(e):
+    if tr.degrees and _is_plain_number(e):
         return f"al.degrees_to_radians({x.code})"
     return x.code
 
 
-def _is_numeric(e: ir.Expr) -> bool:
+def _is_plain_number(e: ir.Expr) -> bool:
     return not any(isinstance(n, (ir.Name, ir.Call, ir.Index, ir.VectorName))
-                   and not (isinstance(n, ir.Name) and n.name.lower() == "pi")
                    for n in ir.walk(e))
 
 

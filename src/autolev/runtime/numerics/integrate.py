@@ -52,6 +52,9 @@ class Schedule:
     # evaluated at the start of every step; False: as Autolev 3.2's Fortran (kutta(...,
     # 1)), the last stage's derivatives reused there
     fresh_derivatives: bool = False
+    # as Autolev's Matlab programs: the integrator started afresh over every INTEGSTP
+    # (ode45(@f, [T T+INTEGSTP], VAR, ...) in their loop)
+    restart_each_step: bool = False
 
     def check(self) -> None:
         h, span = self.integstp, self.tfinal - self.tinitial
@@ -268,9 +271,38 @@ def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progres
     name = SCIPY_METHODS.get(method.lower())
     if name is None:
         raise ValueError(f"unknown integrator {method!r} (one of {', '.join(METHODS)})")
+    if schedule.restart_each_step:
+        return _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
+                                stats)
     times = [tp for tp, printed in schedule.steps() if printed]
     return _scipy_rows(f, y, t, times, name, schedule, abserr, relerr, on_row, progress,
                        stats)
+
+
+def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
+                     stats) -> dict:
+    """A scipy solver started afresh from (T, y) to T + INTEGSTP, step after step."""
+    for t_next, printed in schedule.steps():
+        solver = scipy.integrate._ivp.ivp.METHODS[name](
+            f, t, y, t_next, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
+        while solver.status == "running":
+            message = solver.step()
+            stats["steps"] += 1
+            if solver.status == "failed":
+                stats["evaluations"] += solver.nfev
+                raise IntegrationFailure(f"{name} failed at T = {solver.t:.6g}: {message}",
+                                         solver.t, solver.y)
+            if not np.all(np.isfinite(solver.y)):
+                raise IntegrationFailure(f"the state is not finite at T = {solver.t:.6g}",
+                                         solver.t_old, y)
+        stats["evaluations"] += solver.nfev
+        y = solver.y.copy()
+        t = t_next                         # Autolev's accumulated T
+        if printed:
+            on_row(t, y)
+        if progress is not None:
+            progress.update(t)
+    return stats
 
 
 def _scipy_rows(f, y, t, times, name, schedule, abserr, relerr, on_row, progress,

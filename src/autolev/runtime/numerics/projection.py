@@ -95,7 +95,8 @@ def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_ro
     stats = {"method": method, "evaluations": 0, "steps": 0, "projected": True}
     for a, b in zip(times, times[1:]):
         got = []
-        seg = Schedule(a, b, schedule.integstp, 10 ** 9, schedule.fresh_derivatives)
+        seg = Schedule(a, b, schedule.integstp, 10 ** 9, schedule.fresh_derivatives,
+                       schedule.restart_each_step)
         try:
             st = integrate(f, y, seg, method, abserr, relerr,
                            lambda t, yy: got.append(np.array(yy)), None, loop=loop,

@@ -288,7 +288,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         if integrate_states:
             _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                           compiled, constraints, inputs.vector(extra_constants),
-                          c_program=command.filename.lower().endswith(".c"))
+                          program=command.filename.lower().rsplit(".", 1)[-1])
         else:
             _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
                            zero_params)
@@ -503,14 +503,17 @@ def _conditioning(matrices: np.ndarray, times, states, result) -> None:
 
 def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                   compiled: bool = True, constraints=None, extra_values=(),
-                  c_program: bool = False) -> None:
+                  program: str = "") -> None:
+    """`program`: the language of Autolev's program for the CODE file ("c", "m", ...),
+    whose way of integrating is followed."""
     if not system.nstate:
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
     y0 = np.array(inputs.vector(system.states))
     sched = Schedule(inputs.internal("TINITIAL"), inputs.internal("TFINAL"),
                      inputs.internal("INTEGSTP"), int(inputs.values["PRINTINT"].given),
-                     fresh_derivatives=c_program)
+                     fresh_derivatives=program == "c",
+                     restart_each_step=program == "m")
     try:
         sched.check()
     except ValueError as exc:
