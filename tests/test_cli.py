@@ -189,3 +189,13 @@ def test_run_reports_a_bad_code_command_at_its_line(tmp_path, capsys):
     code, _, err = run(capsys, "run", str(f), "--out", str(tmp_path), "-q")
     assert code == 1
     assert f"{f}:3: error: CODE ALGEBRAIC: 1 equations for 2 unknowns" in err
+
+
+def test_run_warns_when_two_code_commands_write_the_same_files(tmp_path, capsys):
+    f = tmp_path / "two.al"
+    f.write_text("VARIABLES X'\nX' = -X\nINPUT X = 1\nOUTPUT X\nCODE DYNAMICS() two.c\n"
+                 "CODE DYNAMICS() two.m\n")
+    code, out, err = run(capsys, "run", str(f), "--out", str(tmp_path / "out"), "-q")
+    assert code == 0
+    assert "two.al:6: warning: CODE two.m writes the same files (two.1, ...)" in err
+    assert "as CODE two.c" in err

@@ -152,6 +152,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
     from .runtime.errors import AutolevModelError
     from .runtime.io import CodeCommand
     from .runtime.numerics.integrate import METHODS
+    from .runtime.numerics.files import safe_stem
     from .runtime.numerics.run import run_command
 
     warnings.showwarning = _print_warning
@@ -192,9 +193,17 @@ def cmd_run(ns: argparse.Namespace) -> int:
                                 inputs=dict(model.inputs), units=dict(model.unit_of))]
     out_dir = Path(ns.out)
     status = 0
+    written_by: dict[str, str] = {}
     for k, command in enumerate(commands):
         where = locations[k] if k < len(locations) and locations[k] is not None else None
         label = (f"{where.start.file}:{where.start.line}" if where is not None else str(path))
+        stem = safe_stem(command.filename).lower()
+        if stem in written_by:
+            print(f"{label}: warning: CODE {command.filename} writes the same files "
+                  f"({safe_stem(command.filename)}.1, ...) as CODE {written_by[stem]}; "
+                  "its run replaces them (give --out per program to keep both)",
+                  file=sys.stderr)
+        written_by[stem] = command.filename
         t0 = time.monotonic()
         try:
             result = run_command(model, command, out_dir=out_dir, method=ns.method,
