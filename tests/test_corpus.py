@@ -36,8 +36,6 @@ NOT_BUILDING = {
     "ridermodel-leanangle": ("build", "INV needs a square matrix"),       # ROWS(B,3:4) is 2x5
     "npparser-example5-7": ("build", "cannot solve the DEPENDENT constraints"),  # qA' for all
     "sympy-ruletest10": ("build", "the velocity of O in N is not defined"),
-    # waiting for GYROSTAT (issue 4)
-    "npparser-example5-9": ("translate", "unknown function GYROSTAT"),
 }
 
 
