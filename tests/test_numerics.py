@@ -139,8 +139,18 @@ def test_output_header_centres_labels_in_15_character_columns():
     assert lines[0] == "% FILE: PEND.1"
     assert lines[1] == "%"
     assert lines[2] == "%       T             Q1           ENERGY"
-    assert lines[3] == "%     (SEC)          (DEG)         (UNITS)"
+    # units as the model wrote them, as Autolev's C programs print them
+    # ("(radian/sec)" in AutolevToolKit's PendulumDynamics.c)
+    assert lines[3] == "%     (sec)          (deg)         (UNITS)"
     assert lines[4] == ""
+
+
+def test_output_header_keeps_the_spelling_and_cuts_labels_to_14_characters():
+    text = files.header("X.1", ["omega", "dot(v_bhat_n>,cross(p_ahat_bhat>,n3>))"],
+                        ["radian/sec", None])
+    lines = text.splitlines()
+    assert lines[2] == "%     omega     dot(v_bhat_n>,"
+    assert lines[3] == "% (radian/sec)      (UNITS)"
 
 
 def test_rows_are_written_with_autolevs_format():

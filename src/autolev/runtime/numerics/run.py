@@ -301,7 +301,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         raise
     if writer is not None:
         result.files = ([in_written] if in_written else []) + writer.close()
-        program = f"autolev run ({command.filename})"
+        program = command.filename         # the program whose files these are
         extra_files = []
         if encoded:
             values = list(result.encoded.items())
