@@ -119,6 +119,18 @@ def test_macro_that_calls_itself(tmp_path):
     assert d.code == "E031"
 
 
+def test_macros_and_functions_linked_outside_the_model_folder_are_refused(tmp_path):
+    secret = write(tmp_path / "secret" / "passwd", "root:x:0:0:SECRET-TEXT\n")
+    model = tmp_path / "model"
+    model.mkdir()
+    (model / "leak.a").symlink_to(secret)
+    (model / "leakf.r").symlink_to(secret)
+    f = write(model / "m.al", "CONSTANTS A\nLEAK()\nX = LEAKF(A)\n")
+    found = diagnostics(f)
+    assert [d.code for d in found] == ["E025", "E025"]
+    assert all("SECRET-TEXT" not in (d.message + (d.source_line or "")) for d in found)
+
+
 def test_run_includes_a_file(tmp_path):
     write(tmp_path / "kin.al", "NEWTONIAN N\nBODIES A\n")
     f = write(tmp_path / "dyn.al", "RUN kin.al\nMASS A = m\n")

@@ -19,7 +19,7 @@ from . import ir
 from ._antlr.AutolevParser import AutolevParser as P
 from .errors import Diagnostic, Location, Span
 from .source import (MAX_INCLUDE_DEPTH, MappedText, RunRefused, SourceFile, expand_macro,
-                     find_macro, mapped_source, placeholders, resolve_run)
+                     find_macro, is_within, mapped_source, placeholders, resolve_run)
 from .syntax import KNOWN_SETTINGS, Parser
 
 MAX_DECLARED_NAMES = 10000
@@ -445,6 +445,10 @@ class Builder:
         if found is None:
             return False
         found = found.resolve()
+        if not is_within(found, self.model_root):
+            self._error(ctx, "E025", f"macro {call.name}: refused, its file leads outside "
+                        f"the model's folder ({self.model_root}), through a link")
+            return True
         args_ctx = ctx.argList().arg() if ctx.argList() else []
         args = [self._text(a).strip() for a in args_ctx]
         display = self._display_name(found)
@@ -483,6 +487,10 @@ class Builder:
         if found is None:
             return None
         found = found.resolve()
+        if self.model_root is None or not is_within(found, self.model_root):
+            self._error(ctx, "E025", f"function {name}: refused, its file leads outside "
+                        f"the model's folder ({self.model_root}), through a link")
+            return None
         args = [self._text(a).strip() for a in arg_ctxs]
         display = self._display_name(found)
         src = SourceFile.read(found, display)
