@@ -1,0 +1,105 @@
+"""The build cache of compiled right-hand sides: private, verified before loading, and
+rebuilt when a cached library is damaged (issue 15, item 2)."""
+import os
+import stat
+import subprocess
+import pytest
+
+import autolev
+from autolev.runtime.numerics import codegen
+from conftest import EXAMPLES
+
+pytestmark = pytest.mark.skipif(codegen.compiler() is None, reason="needs a C compiler")
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    folder = tmp_path / "home" / "cache" / "build"
+    monkeypatch.setenv("AUTOLEV_CACHE", str(folder))
+    return folder
+
+
+RUN = f"""
+import json, warnings
+import autolev
+model = autolev.load({str(EXAMPLES / "double_pendulum.al")!r})
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    r = model.simulate(TFINAL=0.2)
+print(json.dumps({{"ok": r.ok, "backend": r.system.rhs_function.backend,
+                  "states": r.states.tolist(), "said": [str(w.message) for w in caught]}}))
+"""
+
+
+def simulate(umask=None):
+    """A run in a process of its own (a library once loaded stays mapped in a process:
+    what the next run loads must be tested in a new one)."""
+    import json
+    import sys
+    out = subprocess.run([sys.executable, "-c", RUN], capture_output=True, text=True,
+                         preexec_fn=(lambda: os.umask(umask)) if umask is not None else None)
+    assert out.returncode == 0, out.stderr[-2000:]
+    got = json.loads(out.stdout.splitlines()[-1])
+    assert got["ok"] and got["backend"] == "c"
+    return got
+
+
+def libraries(folder):
+    return sorted(folder.glob("al_*.so"))
+
+
+def test_the_cache_is_made_private_whatever_the_umask(cache):
+    simulate(umask=0)
+    for d in (cache, cache.parent, cache.parent.parent):
+        assert stat.S_IMODE(d.stat().st_mode) == 0o700, d
+    for lib in libraries(cache):
+        assert stat.S_IMODE(lib.stat().st_mode) & 0o022 == 0
+        assert (lib.parent / (lib.name + ".sha256")).exists()
+
+
+@pytest.mark.parametrize("damage", [b"", b"garbage" * 10, "truncated"])
+def test_a_damaged_cached_library_is_rebuilt(cache, damage):
+    first = simulate()
+    for lib in libraries(cache):
+        data = lib.read_bytes()
+        lib.write_bytes(data[: len(data) // 2] if damage == "truncated" else damage)
+    again = simulate()
+    assert again["states"] == first["states"]
+    for lib in libraries(cache):
+        assert codegen._verified(lib)
+
+
+def _planted_library(path, marker):
+    """A shared library that creates `marker` when it is loaded."""
+    src = path.with_suffix(".c")
+    src.write_text('#include <stdio.h>\n__attribute__((constructor)) static void hit(void)'
+                   f' {{ FILE *f = fopen("{marker}", "w"); if (f) fclose(f); }}\n')
+    subprocess.run([codegen.compiler(), "-shared", "-fPIC", "-o", str(path), str(src)],
+                   check=True)
+    src.unlink()
+
+
+def test_a_library_planted_in_a_cache_others_can_write_is_not_loaded(cache, tmp_path):
+    simulate()
+    marker = tmp_path / "PLANTED-CODE-RAN"
+    for lib in libraries(cache):
+        _planted_library(lib, marker)
+        # whoever can write the folder can write the digest too
+        codegen._install(lib, lib)
+    os.chmod(cache, 0o777)
+    said = simulate()["said"]
+    assert not marker.exists()
+    assert any("writable by others" in m for m in said)
+
+
+@pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() != 0,
+                    reason="giving a file to another user needs root")
+def test_a_library_of_another_user_is_not_loaded(cache, tmp_path):
+    simulate()
+    marker = tmp_path / "PLANTED-CODE-RAN"
+    for lib in libraries(cache):
+        _planted_library(lib, marker)
+        codegen._install(lib, lib)
+        os.chown(lib, 65534, 65534)              # nobody's
+    simulate()
+    assert not marker.exists()
