@@ -503,6 +503,23 @@ def test_a_definition_that_refers_to_itself_is_still_an_error(tmp_path):
         load(tmp_path, "VARIABLES Y\nY = Y + 1\n")
 
 
+def test_a_declared_t_is_the_models_own_not_time(tmp_path):
+    for name in ("t", "T"):
+        m = load(tmp_path, f"""
+            CONSTANTS {name}, K
+            VARIABLES X'
+            X' = -K*X + {name}
+            INPUT X = 1, K = 1, {name} = 5
+            Y = DT({name})
+            OUTPUT X
+            CODE DYNAMICS() decay.c
+            """, name=f"m{name}.al")
+        assert m.quantity(name) != m.t and m.quantity("Y") == 0
+        r = m.simulate()
+        # X' = 5 - X from X = 1: X = 5 - 4 exp(-t)
+        assert r.states[-1, 0] == pytest.approx(5 - 4 * math.exp(-1), rel=1e-6)
+
+
 # -- 11. names of two kinds ------------------------------------------------------------------
 def test_a_name_that_is_a_body_and_a_matrix(tmp_path):
     m = load(tmp_path, """

@@ -114,3 +114,16 @@ def test_every_corpus_session_verifies(corpus):
     for f in files:
         report = autolev.verify(f)
         assert report.ok and report.count("match") > 100, report.summary()
+
+
+def test_the_models_own_names_never_stand_for_the_captures(tmp_path):
+    # a model's VERIFY0 and _verify_defs are its own: a wrong response stays wrong
+    text = (DATA / "pendulum.all").read_text().replace(
+        "-> (23) V_P_N> = L*U1*A2>", "-> (23) V_P_N> = L*U1*A1>")
+    text = text.replace("   (3) CONSTANTS L,M,G", "   (3) CONSTANTS L,M,G\n"
+                        "   (3) VERIFY0 = 7\n   (3) VERIFY1 = 7\n   (3) _verify_defs = 1")
+    f = tmp_path / "names.all"
+    f.write_text(text)
+    report = autolev.verify(f)
+    assert report.error is None
+    assert [o.response.lhs for o in report.outcomes if o.status == "mismatch"] == ["V_P_N>"]

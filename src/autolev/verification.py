@@ -288,17 +288,29 @@ def _plain(v):
     return [[z.real, z.imag] for z in a.ravel()]
 
 
-_CAPTURE = "VERIFY"
+# the generated module's dictionary of the definitions known at each capture (a dunder
+# name: the translation gives no user name that form)
+_KNOWN = "__verify_defs__"
 
 
-def _capture_statement(k: int, lhs: str) -> tuple[str, str] | None:
+def _capture_prefix(source: str) -> str:
+    """A prefix for the capture statements' names that no name of the session starts
+    with (a model's own VERIFY0 must not become the capture of a response)."""
+    words = {w.upper() for w in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", source)}
+    prefix = "VERIFY"
+    while any(w.startswith(prefix) for w in words):
+        prefix += "X"
+    return prefix
+
+
+def _capture_statement(k: int, lhs: str, prefix: str) -> tuple[str, str] | None:
     """The Autolev statement that captures our value of lhs, and its kind."""
     name = lhs.strip()
     if name.endswith(">>"):
-        return f"{_CAPTURE}{k}>> = {name}", "dyadic"
+        return f"{prefix}{k}>> = {name}", "dyadic"
     if name.endswith(">"):
-        return f"{_CAPTURE}{k}> = {name}", "vector"
-    return f"{_CAPTURE}{k} = {name}", "value"
+        return f"{prefix}{k}> = {name}", "vector"
+    return f"{prefix}{k} = {name}", "value"
 
 
 def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
@@ -385,6 +397,7 @@ def _build(session: Session, p: Path):
     from .errors import AutolevSyntaxError
 
     lines = session.source.splitlines()
+    capture = _capture_prefix(session.source)
     skipped: dict[int, str] = {}
     for _attempt in range(6):
         text, where, kinds = [], {}, {}
@@ -395,7 +408,7 @@ def _build(session: Session, p: Path):
         for i, ln in enumerate(lines, 1):
             text.append(ln)
             for k in after.get(i, []):
-                stmt, kind = _capture_statement(k, session.responses[k].lhs)
+                stmt, kind = _capture_statement(k, session.responses[k].lhs, capture)
                 text.append(stmt)
                 where[len(text)] = k
                 kinds[k] = kind
@@ -415,12 +428,12 @@ def _build(session: Session, p: Path):
             return None, None, f"the model does not parse: {exc}"
         code = tr.code.splitlines()
         for n, text in enumerate(code):
-            m = re.match(rf"^({_CAPTURE}(\d+)\w*) = ", text)
+            m = re.match(rf"^({capture}(\d+)\w*) = ", text)
             if m and int(m.group(2)) in kinds:
                 # same line (the line map stays right): the definitions known then
-                code[n] = text + (f"; _verify_defs[{int(m.group(2))}] = "
+                code[n] = text + (f"; {_KNOWN}[{int(m.group(2))}] = "
                                   "frozenset(model.defs.rhs)")
-        code.insert(0, "_verify_defs = {}")
+        code.insert(0, f"{_KNOWN} = {{}}")
         tr.code = "\n".join(code) + "\n"
         tr.line_map = {k + 1: v for k, v in tr.line_map.items()}
         try:
@@ -437,17 +450,17 @@ def _build(session: Session, p: Path):
         for k in range(len(session.responses)):
             if k in skipped or _is_z(session.responses[k].lhs):
                 continue
-            name = tr.names.get(f"{_CAPTURE}{k}" + {"vector": ">", "dyadic": ">>"}.get(
+            name = tr.names.get(f"{capture}{k}" + {"vector": ">", "dyadic": ">>"}.get(
                 kinds.get(k), ""), None)
             value = ns.get(name) if name else None
             if value is None:
                 name = next((v for a, v in tr.names.items()
-                             if a.upper().rstrip(">") == f"{_CAPTURE}{k}"), None)
+                             if a.upper().rstrip(">") == f"{capture}{k}"), None)
                 value = ns.get(name) if name else None
             if value is None:
                 skipped[k] = "our translation keeps no value for it"
             else:
-                captured[k] = (value, ns["_verify_defs"].get(k))
+                captured[k] = (value, ns[_KNOWN].get(k))
         return model, captured, skipped
     return None, None, "too many responses our translation cannot capture"
 

@@ -11,8 +11,13 @@ from __future__ import annotations
 
 import sympy as sm
 
+class _Time(sm.Symbol):
+    """The class of Autolev's T alone: a model's own quantity named t or T (CONSTANTS t)
+    is a symbol of another class, so the two are never the same sympy symbol."""
+
+
 #: Autolev's T: the independent variable.
-TIME = sm.Symbol("t", real=True)
+TIME = _Time("t", real=True)
 
 # symbol -> (base symbol, derivative order); base -> max order known
 _BASE: dict[sm.Symbol, tuple[sm.Symbol, int]] = {}
