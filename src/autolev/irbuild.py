@@ -44,7 +44,9 @@ STATEMENT_KEYWORDS = {"NEWTONIAN", "FRAME", "FRAMES", "BODY", "BODIES", "PARTICL
                       "SPECIFIEDS", "IMAGINARY", "MASS", "INERTIA", "INPUT", "INPUTS",
                       "OUTPUT", "OUTPUTS", "UNITS", "UNITSYSTEM", "CODE", "SAVE", "ENCODE",
                       "RUN"}
-OPTIONAL_VALUE = ("PAUSE",)   # a bare PAUSE stops the session until a key is pressed
+OPTIONAL_VALUE = ("PAUSE",)
+# numbers are doubles: 400 characters hold every one (and keep Python's int() fast)
+MAX_NUMBER_DIGITS = 400   # a bare PAUSE stops the session until a key is pressed
 CODE_KINDS = ("dynamics", "algebraic", "nonlinear", "ode")
 CODE_OPTIONS = ("subs", "nosubs")
 
@@ -227,7 +229,7 @@ class Builder:
         dims = [d for p in parts if not isinstance(p, str) for d in p]
         count = 1
         for d in dims:
-            count *= len(d)
+            count *= d.stop - d.start            # not len(): a range may exceed a C size
         if count > MAX_DECLARED_NAMES:
             self._error(ctx, "E041", f"this range declares {count} names; "
                         f"at most {MAX_DECLARED_NAMES} are allowed")
@@ -287,7 +289,7 @@ class Builder:
 
     def _expression_statement(self, ctx: P.ExpressionStatementContext) -> ir.Statement | None:
         expr = self._expr(ctx.expr())
-        if isinstance(expr, ir.Call):
+        if isinstance(expr, ir.Call) and isinstance(ctx.expr().getChild(0), P.PrimaryContext):
             call_ctx = ctx.expr().primary()
             if self._macro(call_ctx, expr):
                 return None
@@ -565,7 +567,12 @@ class Builder:
             return ir.Name(kids[0].start.text, self._primes(kids[0], kids[1:]) if len(kids) > 1
                            else 0, span=span)
         if kind is P.NumberAtomContext:
-            return ir.Number(ctx.start.text, span=span)
+            text = ctx.start.text
+            if len(text) > MAX_NUMBER_DIGITS:
+                self._error(ctx, "E042", f"a number of {len(text)} characters; at most "
+                            f"{MAX_NUMBER_DIGITS} are read")
+                return ir.Number("0", span=span)
+            return ir.Number(text, span=span)
         if kind is P.CallAtomContext:
             arg_ctxs = kids[2].children[::2] if len(kids) == 4 else []
             expanded = self._user_function(ctx, kids[0].start.text, arg_ctxs)

@@ -322,7 +322,8 @@ class Translator:
 
     def _x_Number(self, e: ir.Number, want) -> Typed:
         if e.is_integer:
-            return Typed(e.text, "scalar", ATOM, Fraction(int(e.text)))
+            value = int(e.text)
+            return Typed(str(value), "scalar", ATOM, Fraction(value))    # 007 is 7
         return Typed(e.text, "scalar", ATOM)
 
     def _x_Neg(self, e: ir.Neg, want) -> Typed:

@@ -306,6 +306,9 @@ def _assign_element(tr: Translator, target: ir.Index, op: str, value: Typed) -> 
     if entry is None:
         if key in tr.scalars:
             raise tr.error(f"{target.name} is a declared scalar, not a matrix", target)
+        if op not in ("=", ":="):
+            raise tr.error(f"{target.name} has no value yet ({op} needs one)", target,
+                           "T002")
         entry = Entry(tr.py_name("value", target.name), "value", "matrix")
         tr.values[key] = entry
         current = "None"

@@ -1,0 +1,40 @@
+"""Input that once ended in a Python traceback is a diagnostic at its line now (issue 15,
+item 5, the cases fixed so far)."""
+import pytest
+
+import autolev
+
+
+def diagnostics_of(tmp_path, text):
+    path = tmp_path / "m.al"
+    path.write_text(text)
+    with pytest.raises(autolev.AutolevError) as info:
+        autolev.transpile(path)
+    return [d for d in info.value.diagnostics if d.severity == "error"]
+
+
+def test_leading_zeros_are_a_decimal_number(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("CONSTANTS A\nX = 007*A\n")
+    model = autolev.load(path)
+    assert model["X"] == 7 * model["A"]
+
+
+def test_a_number_too_long_to_be_a_double(tmp_path):
+    (d,) = diagnostics_of(tmp_path, "X = " + "9" * 5000 + "\n")
+    assert d.code == "E042" and (d.location.line, d.location.col) == (1, 5)
+
+
+def test_a_range_too_large_to_count(tmp_path):
+    (d,) = diagnostics_of(tmp_path, "CONSTANTS C{1:99999999999999999999}\n")
+    assert d.code == "E041" and "99999999999999999999 names" in d.message
+
+
+def test_a_signed_call_on_its_own_line_is_displayed(tmp_path):
+    program = autolev.parse("VARIABLES X\n+SIN(X)\n-COS(X)\n", "m.al")
+    assert [s.kind for s in program.statements] == ["declaration", "display", "display"]
+
+
+def test_a_compound_assignment_to_an_element_of_nothing(tmp_path):
+    (d,) = diagnostics_of(tmp_path, "Q[1] += 1\n")
+    assert d.code == "T002" and "Q has no value yet" in d.message
