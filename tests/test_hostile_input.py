@@ -38,3 +38,18 @@ def test_a_signed_call_on_its_own_line_is_displayed(tmp_path):
 def test_a_compound_assignment_to_an_element_of_nothing(tmp_path):
     (d,) = diagnostics_of(tmp_path, "Q[1] += 1\n")
     assert d.code == "T002" and "Q has no value yet" in d.message
+
+
+def test_long_sums_and_continued_lines_translate(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("CONSTANTS A, B\nX = " + " + ".join(["A"] * 500) + " - B*B*B/B\n"
+                    "Y = A &\n" + "+ B &\n" * 800 + "+ A\n")
+    model = autolev.load(path)
+    a, b = model["A"], model["B"]
+    assert model["X"] == 500 * a - b ** 2 and model["Y"] == 2 * a + 800 * b
+
+
+@pytest.mark.parametrize("text", ["-" * 500 + "A", "^".join(["A"] * 500)])
+def test_signs_and_powers_nested_hundreds_deep(tmp_path, text):
+    (d,) = diagnostics_of(tmp_path, "CONSTANTS A\nX = " + text + "\n")
+    assert d.code == "T004" and d.location.line == 2

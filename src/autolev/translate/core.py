@@ -196,6 +196,12 @@ class Translator:
                 if handler is None:
                     raise self.error(f"{st.kind} statements are not supported yet", st)
                 handler(self, st)
+            except RecursionError:
+                # unary signs or powers nested hundreds deep (a chain of sums is a loop)
+                self.diagnostics.append(self._diagnostic(
+                    "this statement's expression is nested too deeply to translate", st,
+                    "T004", "error"))
+                self._known_after_failure(st)
             except TranslationError as exc:
                 self.diagnostics.append(self._diagnostic(str(exc), exc.node or st, exc.code,
                                                          "error"))
@@ -334,7 +340,23 @@ class Translator:
         return Typed("-" + x.wrapped(MUL), x.type, UNARY)
 
     def _x_BinOp(self, e: ir.BinOp, want) -> Typed:
-        a, b = self.expr(e.left), self.expr(e.right)
+        # a left-associated chain (A + B - C + ..., A*B/C) is folded in a loop: responses
+        # pasted into models sum hundreds of terms, deeper than Python's recursion
+        group = "+-" if e.op in "+-" else "*/" if e.op in "*/" else None
+        chain = []
+        node: ir.Expr = e
+        while group and isinstance(node, ir.BinOp) and node.op in group:
+            chain.append(node)
+            node = node.left
+        if not chain:
+            chain, node = [e], e.left
+        result = self.expr(node)
+        for level in reversed(chain):
+            result = self._binary(level, result, self.expr(level.right))
+            result.node = level
+        return result
+
+    def _binary(self, e: ir.BinOp, a: Typed, b: Typed) -> Typed:
         op = e.op
         if a.exact is not None and b.exact is not None:
             v = _fold(op, a.exact, b.exact)
