@@ -127,3 +127,13 @@ def test_the_models_own_names_never_stand_for_the_captures(tmp_path):
     report = autolev.verify(f)
     assert report.error is None
     assert [o.response.lhs for o in report.outcomes if o.status == "mismatch"] == ["V_P_N>"]
+
+
+@pytest.mark.parametrize("response, reason", [
+    ("(" * 5000 + "L" + ")" * 5000, "nested too deeply"),
+    ("ATAN2(L)", "ATAN2 takes two arguments")])
+def test_unreadable_responses_are_not_comparable_with_the_reason(tmp_path, response, reason):
+    f = tmp_path / "m.al"
+    f.write_text(f"CONSTANTS L\nX = L\n% -> X = {response}\n")
+    (o,) = autolev.verify(f).outcomes
+    assert o.status == "not comparable" and reason in o.detail

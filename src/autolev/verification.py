@@ -201,6 +201,9 @@ class _Parser:
                 args.append(self.sum())
             self.take(")")
             if text.upper() == "ATAN2":
+                if len(args) != 2:
+                    raise NotComparable(f"ATAN2 takes two arguments, the response gives "
+                                        f"{len(args)}")
                 return complex(math.atan2(args[0].real, args[1].real))
             return complex(_FUNCS[text.upper()](*args))
         if text.endswith(">"):
@@ -614,6 +617,8 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
             return Outcome(r, "not comparable", str(exc))
         except (ZeroDivisionError, OverflowError, ValueError, TypeError) as exc:
             return Outcome(r, "not comparable", f"cannot evaluate: {exc}")
+        except RecursionError:
+            return Outcome(r, "not comparable", "the response is nested too deeply to read")
         if _is_real(mine) and _is_real(theirs):
             ours_all.append(mine)
             theirs_all.append(theirs)
