@@ -53,3 +53,27 @@ def test_long_sums_and_continued_lines_translate(tmp_path):
 def test_signs_and_powers_nested_hundreds_deep(tmp_path, text):
     (d,) = diagnostics_of(tmp_path, "CONSTANTS A\nX = " + text + "\n")
     assert d.code == "T004" and d.location.line == 2
+
+
+def test_a_file_where_the_output_folder_should_be(tmp_path):
+    from conftest import EXAMPLES
+    model = autolev.load(EXAMPLES / "double_pendulum.al")
+    (tmp_path / "out").write_text("not a folder")
+    for out in (tmp_path / "out", tmp_path / "out" / "sub"):
+        with pytest.raises(autolev.runtime.AutolevModelError,
+                           match="cannot write the output files into"):
+            model.simulate(out_dir=out, TFINAL=0.1)
+
+
+def test_a_full_disk_while_writing_rows(tmp_path, monkeypatch):
+    import errno
+
+    from autolev.runtime.numerics import files
+    from conftest import EXAMPLES
+    model = autolev.load(EXAMPLES / "double_pendulum.al")
+
+    def full(self, k, row):
+        raise OSError(errno.ENOSPC, "No space left on device", "double_pendulum.1")
+    monkeypatch.setattr(files.OutputFiles, "write", full)
+    with pytest.raises(autolev.runtime.AutolevModelError, match="No space left on device"):
+        model.simulate(out_dir=tmp_path / "out", TFINAL=0.1)

@@ -11,6 +11,7 @@ import math
 import sys
 import time
 import warnings
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -264,10 +265,13 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     in_written = None
     if out_dir is not None:
         folder = Path(out_dir)
-        folder.mkdir(parents=True, exist_ok=True)
-        if infile is None or Path(infile).resolve() != own_in.resolve():
-            inputs.write_file(own_in, own_in.name, kinds)
-            in_written = own_in
+        with _writing(folder):
+            if folder.exists() and not folder.is_dir():
+                raise NotADirectoryError(20, "not a folder", str(folder))
+            folder.mkdir(parents=True, exist_ok=True)
+            if infile is None or Path(infile).resolve() != own_in.resolve():
+                inputs.write_file(own_in, own_in.name, kinds)
+                in_written = own_in
     system.set_parameters(inputs.vector(system.params))
     if integrate_states:
         bad = _inertia_problems(system, inputs, zero=False)
@@ -282,8 +286,9 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     result.stats["build_seconds"] = build_seconds
     writer = None
     if folder is not None:
-        writer = OutputFiles(folder, stem, [([c.label for c in cols],
-                                             [c.unit for c in cols]) for cols in files])
+        with _writing(folder):
+            writer = OutputFiles(folder, stem, [([c.label for c in cols],
+                                                 [c.unit for c in cols]) for cols in files])
     try:
         if integrate_states:
             _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
@@ -292,25 +297,42 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         else:
             _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
                            zero_params)
-    except BaseException:
+    except BaseException as exc:
         if writer is not None:
-            if result.failure is not None or len(result.t):
-                writer.close()
-            else:
-                writer.discard()
+            with _writing(folder):
+                if result.failure is not None or len(result.t):
+                    writer.close()
+                else:
+                    writer.discard()
+        if isinstance(exc, OSError):
+            with _writing(folder):
+                raise
         raise
     if writer is not None:
-        result.files = ([in_written] if in_written else []) + writer.close()
-        program = command.filename         # the program whose files these are
-        extra_files = []
-        if encoded:
-            values = list(result.encoded.items())
-            result.files.append(write_encoded(folder, stem, values))
-            extra_files.append((f"{stem}.encode", ",".join(n for n, _ in encoded)))
-        result.files.append(write_dir(folder, stem, program,
-                                      [[c.label for c in cols] for cols in files],
-                                      extra_files))
+        with _writing(folder):
+            result.files = ([in_written] if in_written else []) + writer.close()
+            program = command.filename         # the program whose files these are
+            extra_files = []
+            if encoded:
+                values = list(result.encoded.items())
+                result.files.append(write_encoded(folder, stem, values))
+                extra_files.append((f"{stem}.encode", ",".join(n for n, _ in encoded)))
+            result.files.append(write_dir(folder, stem, program,
+                                          [[c.label for c in cols] for cols in files],
+                                          extra_files))
     return result
+
+
+@contextmanager
+def _writing(folder: Path):
+    """A failure of the disk (a read-only or full folder, a file where the folder
+    should be) as one message naming the place, not a traceback."""
+    try:
+        yield
+    except OSError as exc:
+        where = exc.filename or folder
+        raise AutolevModelError(f"cannot write the output files into {folder}: "
+                                f"{exc.strerror or exc} ({where})") from None
 
 
 def _hidden_in_outputs(command) -> tuple:
