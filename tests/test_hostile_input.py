@@ -77,3 +77,17 @@ def test_a_full_disk_while_writing_rows(tmp_path, monkeypatch):
     monkeypatch.setattr(files.OutputFiles, "write", full)
     with pytest.raises(autolev.runtime.AutolevModelError, match="No space left on device"):
         model.simulate(out_dir=tmp_path / "out", TFINAL=0.1)
+
+
+def test_nested_functions_translate_each_argument_once(monkeypatch):
+    from autolev.translate.core import Translator
+    calls = []
+    real = Translator.expr
+
+    def counting(self, e, want="value"):
+        calls.append(e)
+        return real(self, e, want)
+    monkeypatch.setattr(Translator, "expr", counting)
+    text = "CONSTANTS A\nX = " + "SIN(COS(" * 20 + "A" + "))" * 20 + "\n"
+    autolev.transpile(text, "m.al")
+    assert len(calls) <= 2 * 40 + 10        # linear in the depth, not 2^40

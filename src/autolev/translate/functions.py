@@ -63,11 +63,12 @@ _SYMPY = {"SIN": "sm.sin", "COS": "sm.cos", "TAN": "sm.tan", "ASIN": "sm.asin",
 
 def _elementary(tr: Translator, c: ir.Call) -> Typed:
     (a,) = nargs(tr, c, 1)
-    x = tr.expr(a)
+    x = tr.expr(a)              # once: translating an argument twice is exponential
     fn = _SYMPY[c.name.upper()]
     if x.type == "matrix":
         return Typed(f"{x.code}.applyfunc({fn})", "matrix")
-    x = tr.scalar(a)
+    if x.type not in ("scalar", "unknown"):
+        raise tr.error(f"a scalar is needed here, not a {x.type}", a)
     return Typed(f"{fn}({x.code})", "scalar")
 
 
