@@ -91,3 +91,21 @@ def test_nested_functions_translate_each_argument_once(monkeypatch):
     text = "CONSTANTS A\nX = " + "SIN(COS(" * 20 + "A" + "))" * 20 + "\n"
     autolev.transpile(text, "m.al")
     assert len(calls) <= 2 * 40 + 10        # linear in the depth, not 2^40
+
+
+@pytest.mark.parametrize("text, line", [
+    ("X = 10^10^10", 1), ("X = 9^9^9", 1), ("X = 2^2^2^2^2^2", 1), ("X = (10^900)^(10^6)", 1),
+    ("X = FACTORIAL(100000000)", 1), ("CONSTANTS A\nX = TAYLOR(SIN(A), 99999, A=0)", 2)])
+def test_exact_numbers_and_series_too_large_to_compute(tmp_path, text, line):
+    (d,) = diagnostics_of(tmp_path, text + "\n")
+    assert d.code == "T005" and d.location.line == line
+
+
+def test_exact_numbers_of_ordinary_size_stay_exact(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("X = 2^10 + 1/3 + (1/2)^3 + 10^300\nY = FACTORIAL(20)\n")
+    model = autolev.load(path)
+    import sympy as sm
+    assert model["X"] == sm.Integer(1024) + sm.Rational(1, 3) + sm.Rational(1, 8) \
+        + sm.Integer(10) ** 300
+    assert model["Y"] == sm.factorial(20)

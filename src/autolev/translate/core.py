@@ -9,6 +9,7 @@ Statement families and functions live in `statements.py` and `functions.py`.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -16,6 +17,9 @@ from .. import ir
 from ..errors import Diagnostic, Span
 from .emit import comment, docstring, quote
 from .names import NameTable, UnsafeName
+
+# exact integers and rationals are kept exact up to this many digits
+MAX_EXACT_DIGITS = 1000
 
 # precedence of the Python written for an expression
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
@@ -361,6 +365,12 @@ class Translator:
         if a.exact is not None and b.exact is not None:
             v = _fold(op, a.exact, b.exact)
             if v is not None:
+                digits = max(v.numerator.bit_length(), v.denominator.bit_length()) * 0.30103
+                if digits > MAX_EXACT_DIGITS:
+                    raise self.error(f"this exact number has about {digits:.0f} digits; "
+                                     f"exact numbers of more than {MAX_EXACT_DIGITS} digits "
+                                     "are refused (write a decimal number, 1E300, for a "
+                                     "floating-point one)", e, "T005")
                 return _exact_typed(v)
         ta, tb = a.type, b.type
         if op in "+-":
@@ -385,6 +395,14 @@ class Translator:
         # power
         if ta not in ("scalar", "matrix", "unknown") or tb not in ("scalar", "unknown"):
             raise self.error(f"cannot raise a {ta} to a power", e)
+        if a.exact is not None and b.exact is not None and abs(a.exact) > 1 and \
+                b.exact > 0 and _log10(b.exact) + math.log10(_log10(a.exact)) > \
+                math.log10(MAX_EXACT_DIGITS):
+            # sympy would compute the exact number (10^10^10 has 10^10 digits)
+            digits = 10 ** (_log10(b.exact) + math.log10(_log10(a.exact)))
+            raise self.error(f"this power has about {digits:.3g} digits; exact numbers of "
+                             f"more than {MAX_EXACT_DIGITS} digits are refused (write a "
+                             "decimal number, 1E300, for a floating-point one)", e, "T005")
         return Typed(f"{a.wrapped(POW + 1)}**{b.wrapped(UNARY)}", ta, POW)
 
     def _x_Name(self, e: ir.Name, want) -> Typed:
@@ -625,9 +643,17 @@ def _fold(op: str, a: Fraction, b: Fraction) -> Fraction | None:
         return a * b
     if op == "/":
         return a / b if b != 0 else None
-    if op == "^" and b.denominator == 1 and abs(b) <= 64 and not (a == 0 and b < 0):
+    if op == "^" and b.denominator == 1 and not (a == 0 and b < 0) and \
+            (abs(b) <= 64 or a in (0, 1, -1) or
+             math.log10(abs(b)) + math.log10(abs(_log10(a)) or 1) <=
+             math.log10(MAX_EXACT_DIGITS)):
         return a ** int(b)
     return None
+
+
+def _log10(v: Fraction) -> float:
+    """log10 |v| of an exact number however large (float(v) would overflow)."""
+    return math.log10(abs(v.numerator)) - math.log10(v.denominator)
 
 
 def _exact_typed(v: Fraction) -> Typed:

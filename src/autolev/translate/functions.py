@@ -13,6 +13,9 @@ from .core import ATOM, Translator, Typed
 from .emit import quote
 
 FUNCTIONS: dict = {}
+# beyond these, exact computation takes minutes or gigabytes for what a model never needs
+MAX_FACTORIAL = 450          # 450! has 1001 digits
+MAX_TAYLOR_ORDER = 30
 
 
 def function(*names):
@@ -65,6 +68,9 @@ def _elementary(tr: Translator, c: ir.Call) -> Typed:
     (a,) = nargs(tr, c, 1)
     x = tr.expr(a)              # once: translating an argument twice is exponential
     fn = _SYMPY[c.name.upper()]
+    if fn == "sm.factorial" and x.exact is not None and x.exact > MAX_FACTORIAL:
+        raise tr.error(f"FACTORIAL({x.exact}) has more than a thousand digits; at most "
+                       f"FACTORIAL({MAX_FACTORIAL}) is computed exactly", c, "T005")
     if x.type == "matrix":
         return Typed(f"{x.code}.applyfunc({fn})", "matrix")
     if x.type not in ("scalar", "unknown"):
@@ -436,6 +442,11 @@ def _taylor(tr, c):
     if len(c.args) < 3:
         raise tr.error("TAYLOR(E, n, x=a, ...) or TAYLOR(E, n:m, x=a, ...)", c)
     x = tr.expr(c.args[0])
+    degrees = [tr.scalar(d) for d in ((c.args[1].lo, c.args[1].hi)
+                                      if isinstance(c.args[1], ir.Range) else (c.args[1],))]
+    if any(d.exact is not None and d.exact > MAX_TAYLOR_ORDER for d in degrees):
+        raise tr.error(f"TAYLOR to order {max(d.exact for d in degrees if d.exact)}: at most "
+                       f"order {MAX_TAYLOR_ORDER} is expanded", c.args[1], "T005")
     order = _degree_range(tr, c.args[1])
     points = []
     for a in c.args[2:]:
