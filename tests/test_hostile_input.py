@@ -109,3 +109,10 @@ def test_exact_numbers_of_ordinary_size_stay_exact(tmp_path):
     assert model["X"] == sm.Integer(1024) + sm.Rational(1, 3) + sm.Rational(1, 8) \
         + sm.Integer(10) ** 300
     assert model["Y"] == sm.factorial(20)
+
+
+def test_an_integstp_that_cannot_advance_the_time(tmp_path):
+    from conftest import EXAMPLES
+    model = autolev.load(EXAMPLES / "double_pendulum.al")
+    with pytest.raises(autolev.runtime.AutolevModelError, match="too small to advance"):
+        model.simulate(INTEGSTP=1e-300)

@@ -65,6 +65,10 @@ class Schedule:
                              f"({span:g})")
         if self.printint < 1 or self.printint != int(self.printint):
             raise ValueError("PRINTINT must be a positive integer")
+        for t in (self.tinitial, self.tfinal):
+            if np.isfinite(t) and t + h == t:
+                raise ValueError(f"INTEGSTP ({h:g}) is too small to advance the time from "
+                                 f"T = {t:g} in floating point")
 
     def steps(self):
         """(T after the step, print?) for every INTEGSTP step, as Autolev's loop."""
