@@ -79,13 +79,20 @@ def _planted_library(path, marker):
     src.unlink()
 
 
+def _plant(cache, marker) -> list:
+    """Replace every cached library by one that creates `marker` when loaded, with the
+    digest that matches it (whoever can write the folder can write the digest too)."""
+    planted = libraries(cache)
+    for lib in planted:
+        _planted_library(lib, marker)
+        codegen._install(lib, lib)
+    return planted
+
+
 def test_a_library_planted_in_a_cache_others_can_write_is_not_loaded(cache, tmp_path):
     simulate()
     marker = tmp_path / "PLANTED-CODE-RAN"
-    for lib in libraries(cache):
-        _planted_library(lib, marker)
-        # whoever can write the folder can write the digest too
-        codegen._install(lib, lib)
+    _plant(cache, marker)
     os.chmod(cache, 0o777)
     said = simulate()["said"]
     assert not marker.exists()
@@ -97,9 +104,7 @@ def test_a_library_planted_in_a_cache_others_can_write_is_not_loaded(cache, tmp_
 def test_a_library_of_another_user_is_not_loaded(cache, tmp_path):
     simulate()
     marker = tmp_path / "PLANTED-CODE-RAN"
-    for lib in libraries(cache):
-        _planted_library(lib, marker)
-        codegen._install(lib, lib)
+    for lib in _plant(cache, marker):
         os.chown(lib, 65534, 65534)              # nobody's
     simulate()
     assert not marker.exists()

@@ -11,6 +11,17 @@ from autolev.verification import read_session
 DATA = Path(__file__).parent / "data" / "verify"
 
 
+def edited(tmp_path, session: str, *replacements) -> Path:
+    """A copy of the session DATA/session with each (old, new) text replaced."""
+    text = (DATA / session).read_text()
+    for old, new in replacements:
+        assert old in text
+        text = text.replace(old, new)
+    f = tmp_path / session
+    f.write_text(text)
+    return f
+
+
 def test_reader_takes_inputs_responses_and_continuation_lines():
     s = read_session((DATA / "pendulum.all").read_text())
     assert s.source.splitlines()[1] == "MOTIONVARIABLES' Q{2}', U{2}'"
@@ -30,10 +41,8 @@ def test_a_correct_session_matches_every_response():
 
 
 def test_a_wrong_response_is_a_mismatch_with_both_values(tmp_path):
-    text = (DATA / "pendulum.all").read_text().replace(
-        "-> (23) V_P_N> = L*U1*A2>", "-> (23) V_P_N> = L*U1*A1>")
-    f = tmp_path / "wrong.all"
-    f.write_text(text)
+    f = edited(tmp_path, "pendulum.all",
+               ("-> (23) V_P_N> = L*U1*A2>", "-> (23) V_P_N> = L*U1*A1>"))
     report = autolev.verify(f)
     bad = [o for o in report.outcomes if o.status == "mismatch"]
     assert [o.response.lhs for o in bad] == ["V_P_N>"] and not report.ok
@@ -53,10 +62,8 @@ def test_z_responses_assigned_names_and_euler_parameters_are_compared():
 
 
 def test_a_wrong_response_through_z_and_names_is_a_mismatch(tmp_path):
-    text = (DATA / "euler_session.all").read_text().replace(
-        "-> (21) Z10 = 1 - C^2", "-> (21) Z10 = 1 - 2*C^2")
-    f = tmp_path / "wrong.all"
-    f.write_text(text)
+    f = edited(tmp_path, "euler_session.all",
+               ("-> (21) Z10 = 1 - C^2", "-> (21) Z10 = 1 - 2*C^2"))
     report = autolev.verify(f)
     bad = sorted(o.response.lhs for o in report.outcomes if o.status == "mismatch")
     assert bad == ["S", "Z10"]
@@ -90,9 +97,7 @@ def test_names_our_model_lacks_are_not_comparable_and_do_not_fail(tmp_path):
 def test_cli_exit_status_and_json(tmp_path, capsys):
     assert main(["verify", str(DATA / "pendulum.all")]) == 0
     assert "18 match, 0 mismatch" in capsys.readouterr().out
-    text = (DATA / "pendulum.all").read_text().replace("0.5*M*L^2", "0.6*M*L^2")
-    f = tmp_path / "bad.all"
-    f.write_text(text)
+    f = edited(tmp_path, "pendulum.all", ("0.5*M*L^2", "0.6*M*L^2"))
     assert main(["verify", str(f), "--json"]) == 1
     data = json.loads(capsys.readouterr().out)
     assert data["mismatch"] == 1 and data["match"] == 17
@@ -118,12 +123,10 @@ def test_every_corpus_session_verifies(corpus):
 
 def test_the_models_own_names_never_stand_for_the_captures(tmp_path):
     # a model's VERIFY0 and _verify_defs are its own: a wrong response stays wrong
-    text = (DATA / "pendulum.all").read_text().replace(
-        "-> (23) V_P_N> = L*U1*A2>", "-> (23) V_P_N> = L*U1*A1>")
-    text = text.replace("   (3) CONSTANTS L,M,G", "   (3) CONSTANTS L,M,G\n"
-                        "   (3) VERIFY0 = 7\n   (3) VERIFY1 = 7\n   (3) _verify_defs = 1")
-    f = tmp_path / "names.all"
-    f.write_text(text)
+    f = edited(tmp_path, "pendulum.all",
+               ("-> (23) V_P_N> = L*U1*A2>", "-> (23) V_P_N> = L*U1*A1>"),
+               ("   (3) CONSTANTS L,M,G", "   (3) CONSTANTS L,M,G\n   (3) VERIFY0 = 7\n"
+                "   (3) VERIFY1 = 7\n   (3) _verify_defs = 1"))
     report = autolev.verify(f)
     assert report.error is None
     assert [o.response.lhs for o in report.outcomes if o.status == "mismatch"] == ["V_P_N>"]

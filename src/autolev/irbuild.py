@@ -44,9 +44,9 @@ STATEMENT_KEYWORDS = {"NEWTONIAN", "FRAME", "FRAMES", "BODY", "BODIES", "PARTICL
                       "SPECIFIEDS", "IMAGINARY", "MASS", "INERTIA", "INPUT", "INPUTS",
                       "OUTPUT", "OUTPUTS", "UNITS", "UNITSYSTEM", "CODE", "SAVE", "ENCODE",
                       "RUN"}
-OPTIONAL_VALUE = ("PAUSE",)
+OPTIONAL_VALUE = ("PAUSE",)   # a bare PAUSE stops the session until a key is pressed
 # numbers are doubles: 400 characters hold every one (and keep Python's int() fast)
-MAX_NUMBER_DIGITS = 400   # a bare PAUSE stops the session until a key is pressed
+MAX_NUMBER_DIGITS = 400
 CODE_KINDS = ("dynamics", "algebraic", "nonlinear", "ode")
 CODE_OPTIONS = ("subs", "nosubs")
 
@@ -446,35 +446,45 @@ class Builder:
         found = find_macro(call.name, dirs)
         if found is None:
             return False
-        found = found.resolve()
-        if not is_within(found, self.model_root):
-            self._error(ctx, "E025", f"macro {call.name}: refused, its file leads outside "
-                        f"the model's folder ({self.model_root}), through a link")
-            return True
         args_ctx = ctx.argList().arg() if ctx.argList() else []
         args = [self._text(a).strip() for a in args_ctx]
-        display = self._display_name(found)
-        src = SourceFile.read(found, display)
-        used = placeholders(src)
-        if used and max(used) > len(args):
-            self._error(ctx, "E030", f"macro {call.name} ({display}) uses #{max(used)}# but "
-                        f"this call gives {len(args)} argument{'s' if len(args) != 1 else ''}")
+        got = self._expansion_source(ctx, "macro", call.name, found, args)
+        if got is None:
             return True
-        if found in self._stack or len(self._stack) >= MAX_INCLUDE_DEPTH:
-            self._error(ctx, "E031", f"macro {call.name} calls itself (directly or through "
-                        "other macros)")
-            return True
+        found, src, display = got
         self.statements.append(ir.MacroCall(name=call.name, args=tuple(args), path=str(found),
                                             span=self._span(ctx), text=self._text(ctx)))
-        if display not in self.files:
-            self.files.append(display)
-            self.sources[display] = src.lines
         where = self._ctx.mapped.locate(ctx.start.start)
         what = f"macro {call.name}({', '.join(args)})"
         self._stack.append(found)
         self._build(expand_macro(src, args, where, what), found, display)
         self._stack.pop()
         return True
+
+    def _expansion_source(self, ctx, what: str, name: str, found: Path, args: list[str]):
+        """(path, source, display name) of the macro or function file `found` for a call
+        with `args`, read and registered; None, after its diagnostic, when the file
+        leads outside the model's folder, wants more arguments, or calls itself."""
+        found = found.resolve()
+        if not is_within(found, self.model_root):
+            self._error(ctx, "E025", f"{what} {name}: refused, its file leads outside "
+                        f"the model's folder ({self.model_root}), through a link")
+            return None
+        display = self._display_name(found)
+        src = SourceFile.read(found, display)
+        used = placeholders(src)
+        if used and max(used) > len(args):
+            self._error(ctx, "E030", f"{what} {name} ({display}) uses #{max(used)}# but "
+                        f"this call gives {len(args)} argument{'s' if len(args) != 1 else ''}")
+            return None
+        if found in self._stack or len(self._stack) >= MAX_INCLUDE_DEPTH:
+            self._error(ctx, "E031", f"{what} {name} calls itself (directly or through "
+                        f"other {what}s)")
+            return None
+        if display not in self.files:
+            self.files.append(display)
+            self.sources[display] = src.lines
+        return found, src, display
 
     def _user_function(self, ctx, name: str, arg_ctxs) -> ir.Expr | None:
         """NAME(args) in an expression, with a file NAME.R next to the model: Autolev's
@@ -485,29 +495,13 @@ class Builder:
             dirs = ([self._ctx.path.parent] if self._ctx.path is not None else []) + \
                 ([self.model_root] if self.model_root is not None else [])
             self._function_files[key] = find_macro(name, dirs, ".r")
-        found = self._function_files[key]
-        if found is None:
-            return None
-        found = found.resolve()
-        if self.model_root is None or not is_within(found, self.model_root):
-            self._error(ctx, "E025", f"function {name}: refused, its file leads outside "
-                        f"the model's folder ({self.model_root}), through a link")
+        if self._function_files[key] is None or self.model_root is None:
             return None
         args = [self._text(a).strip() for a in arg_ctxs]
-        display = self._display_name(found)
-        src = SourceFile.read(found, display)
-        used = placeholders(src)
-        if used and max(used) > len(args):
-            self._error(ctx, "E030", f"function {name} ({display}) uses #{max(used)}# but "
-                        f"this call gives {len(args)} argument{'s' if len(args) != 1 else ''}")
+        got = self._expansion_source(ctx, "function", name, self._function_files[key], args)
+        if got is None:
             return None
-        if found in self._stack or len(self._stack) >= MAX_INCLUDE_DEPTH:
-            self._error(ctx, "E031", f"function {name} calls itself (directly or through "
-                        "other functions)")
-            return None
-        if display not in self.files:
-            self.files.append(display)
-            self.sources[display] = src.lines
+        found, src, display = got
         where = self._ctx.mapped.locate(ctx.start.start)
         mapped = expand_macro(src, args, where, f"function {name}({', '.join(args)})")
         parsed = self.parser.parse(mapped)

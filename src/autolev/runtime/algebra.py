@@ -148,13 +148,12 @@ class AlgebraMixin:
     def _keep_speeds(self, unknowns) -> None:
         """A generalized speed u stays one when SOLVE defines u' (SOLVE(ZERO, U')), although
         a variable whose derivative is defined is otherwise a coordinate."""
-        rates = [u for u in unknowns if S.base_and_order(u)[1] == 1
-                 and u not in self.defs.rhs]
-        if not rates or self.newtonian_frame is None:
+        bases = [S.base_and_order(u)[0] for u in unknowns
+                 if S.base_and_order(u)[1] == 1 and u not in self.defs.rhs]
+        if not bases or self.newtonian_frame is None:
             return
         speeds = set(self._generalized_speeds()[0])
-        self.solved_speeds.update(S.base_and_order(u)[0] for u in rates
-                                  if S.base_and_order(u)[0] in speeds)
+        self.solved_speeds.update(b for b in bases if b in speeds)
 
     def _dynamical_rows(self, eqs: list, unknowns: list) -> list:
         """After KANE(F1, ..., Fk), ZERO holds the n dynamical rows and then the k rows

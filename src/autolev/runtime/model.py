@@ -544,7 +544,8 @@ class Model(AlgebraMixin, IOMixin):
             d = S.derivative(sym)
             if d in self.defs.rhs and sym not in self.solved_speeds:
                 continue                                 # a coordinate
-            if sym in kin_rhs or sym in self.solved_speeds or sym in self.dependent_speeds or sym in self.auxiliary_speeds:
+            if sym in kin_rhs or sym in self.solved_speeds or sym in self.dependent_speeds \
+                    or sym in self.auxiliary_speeds:
                 candidates.append(sym)
             elif info.order >= 1 and appears(d):
                 candidates.append(d)                     # q' acts as the speed

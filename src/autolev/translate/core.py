@@ -396,10 +396,10 @@ class Translator:
         if ta not in ("scalar", "matrix", "unknown") or tb not in ("scalar", "unknown"):
             raise self.error(f"cannot raise a {ta} to a power", e)
         if a.exact is not None and b.exact is not None and abs(a.exact) > 1 and \
-                b.exact > 0 and _log10(b.exact) + math.log10(_log10(a.exact)) > \
+                b.exact > 0 and _power_digits_log10(a.exact, b.exact) > \
                 math.log10(MAX_EXACT_DIGITS):
             # sympy would compute the exact number (10^10^10 has 10^10 digits)
-            digits = 10 ** (_log10(b.exact) + math.log10(_log10(a.exact)))
+            digits = 10 ** _power_digits_log10(a.exact, b.exact)
             raise self.error(f"this power has about {digits:.3g} digits; exact numbers of "
                              f"more than {MAX_EXACT_DIGITS} digits are refused (write a "
                              "decimal number, 1E300, for a floating-point one)", e, "T005")
@@ -644,9 +644,7 @@ def _fold(op: str, a: Fraction, b: Fraction) -> Fraction | None:
     if op == "/":
         return a / b if b != 0 else None
     if op == "^" and b.denominator == 1 and not (a == 0 and b < 0) and \
-            (abs(b) <= 64 or a in (0, 1, -1) or
-             math.log10(abs(b)) + math.log10(abs(_log10(a)) or 1) <=
-             math.log10(MAX_EXACT_DIGITS)):
+            (abs(b) <= 64 or _power_digits_log10(a, b) <= math.log10(MAX_EXACT_DIGITS)):
         return a ** int(b)
     return None
 
@@ -654,6 +652,13 @@ def _fold(op: str, a: Fraction, b: Fraction) -> Fraction | None:
 def _log10(v: Fraction) -> float:
     """log10 |v| of an exact number however large (float(v) would overflow)."""
     return math.log10(abs(v.numerator)) - math.log10(v.denominator)
+
+
+def _power_digits_log10(a: Fraction, b: Fraction) -> float:
+    """log10 of the number of digits of a^b (-inf for 0, 1 and -1, or b = 0)."""
+    if a in (0, 1, -1) or b == 0:
+        return -math.inf
+    return _log10(b) + math.log10(abs(_log10(a)))
 
 
 def _exact_typed(v: Fraction) -> Typed:

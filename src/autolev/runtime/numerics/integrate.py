@@ -289,17 +289,11 @@ def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
     for t_next, printed in schedule.steps():
         solver = scipy.integrate._ivp.ivp.METHODS[name](
             f, t, y, t_next, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
-        while solver.status == "running":
-            message = solver.step()
-            stats["steps"] += 1
-            if solver.status == "failed":
-                stats["evaluations"] += solver.nfev
-                raise IntegrationFailure(f"{name} failed at T = {solver.t:.6g}: {message}",
-                                         solver.t, solver.y)
-            if not np.all(np.isfinite(solver.y)):
-                raise IntegrationFailure(f"the state is not finite at T = {solver.t:.6g}",
-                                         solver.t_old, y)
-        stats["evaluations"] += solver.nfev
+        try:
+            while solver.status == "running":
+                _step(solver, name, stats)
+        finally:
+            stats["evaluations"] += solver.nfev
         y = solver.y.copy()
         t = t_next                         # Autolev's accumulated T
         if printed:
@@ -307,6 +301,19 @@ def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
         if progress is not None:
             progress.update(t)
     return stats
+
+
+def _step(solver, name: str, stats: dict) -> None:
+    """One step of a scipy solver; IntegrationFailure when it fails or leaves the
+    finite numbers."""
+    message = solver.step()
+    stats["steps"] += 1
+    if solver.status == "failed":
+        raise IntegrationFailure(f"{name} failed at T = {solver.t:.6g}: {message}",
+                                 solver.t, solver.y)
+    if not np.all(np.isfinite(solver.y)):
+        raise IntegrationFailure(f"the state is not finite at T = {solver.t:.6g}",
+                                 solver.t_old, solver.dense_output()(solver.t_old))
 
 
 def _scipy_rows(f, y, t, times, name, schedule, abserr, relerr, on_row, progress,
@@ -319,15 +326,10 @@ def _scipy_rows(f, y, t, times, name, schedule, abserr, relerr, on_row, progress
         f, t, y, t_end, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
     k = 0
     while k < len(times):
-        message = solver.step()
-        stats["steps"] += 1
-        stats["evaluations"] = solver.nfev
-        if solver.status == "failed":
-            raise IntegrationFailure(f"{name} failed at T = {solver.t:.6g}: {message}",
-                                     solver.t, solver.y)
-        if not np.all(np.isfinite(solver.y)):
-            raise IntegrationFailure(f"the state is not finite at T = {solver.t:.6g}",
-                                     solver.t_old, solver.dense_output()(solver.t_old))
+        try:
+            _step(solver, name, stats)
+        finally:
+            stats["evaluations"] = solver.nfev
         interp = None
         direction = 1 if t_end >= schedule.tinitial else -1
         while k < len(times) and (times[k] - solver.t) * direction <= 0:

@@ -7,6 +7,7 @@ overrides), run, and write Autolev's files (`NAME.in`, `NAME.1..k`, `NAME.dir`, 
 """
 from __future__ import annotations
 
+import errno
 import math
 import sys
 import time
@@ -164,11 +165,17 @@ def _unknowns(args, what: str) -> tuple[list, list]:
 
 
 # -- running --------------------------------------------------------------------------------
+def program_language(filename: str) -> str:
+    """The language of the program Autolev wrote for a CODE file ("c", "m", "f", ...):
+    what it integrated with, and how, follows from it."""
+    return filename.lower().rsplit(".", 1)[-1] if "." in filename else ""
+
+
 def program_method(filename: str) -> str:
     """The integrator of the program Autolev wrote for a CODE file: Matlab's programs
     call ode45 (Dormand-Prince 5(4), which is scipy's RK45), the C and Fortran ones
     their Kutta-Merson."""
-    return "rk45" if filename.lower().endswith(".m") else "kutta-merson"
+    return "rk45" if program_language(filename) == "m" else "kutta-merson"
 
 
 def run_command(model, command, out_dir=None, method: str | None = None,
@@ -179,7 +186,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     configuration constraints g(q) (sympy expressions in the model's symbols) kept at
     their initial values by projecting the state onto them at every print time.
     `quirks`: compute what Autolev's programs computed where they were wrong
-    (docs/language.md, "Quirks of the generated programs"); False: what was meant."""
+    (docs/language.md, "What Autolev's programs computed"); False: what was meant."""
     kind = command.kind
     method = method or program_method(command.filename)
     stem = safe_stem(command.filename)
@@ -267,7 +274,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         folder = Path(out_dir)
         with _writing(folder):
             if folder.exists() and not folder.is_dir():
-                raise NotADirectoryError(20, "not a folder", str(folder))
+                raise NotADirectoryError(errno.ENOTDIR, "not a folder", str(folder))
             folder.mkdir(parents=True, exist_ok=True)
             if infile is None or Path(infile).resolve() != own_in.resolve():
                 inputs.write_file(own_in, own_in.name, kinds)
@@ -293,7 +300,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         if integrate_states:
             _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                           compiled, constraints, inputs.vector(extra_constants),
-                          program=command.filename.lower().rsplit(".", 1)[-1])
+                          program=program_language(command.filename))
         else:
             _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
                            zero_params)
@@ -304,7 +311,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
                     writer.close()
                 else:
                     writer.discard()
-        if isinstance(exc, OSError):
+        if isinstance(exc, OSError) and folder is not None:
             with _writing(folder):
                 raise
         raise
@@ -338,7 +345,7 @@ def _writing(folder: Path):
 def _hidden_in_outputs(command) -> tuple:
     """Names the output routine of Autolev's program for `command` declares for itself
     (every C program of Autolev 4.1 has `int i1;` there)."""
-    return ("i1",) if command.filename.lower().endswith(".c") else ()
+    return ("i1",) if program_language(command.filename) == "c" else ()
 
 
 def _solver_expressions(defs, kind: str, equations: list, unknowns: list) -> dict | None:

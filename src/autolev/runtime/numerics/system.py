@@ -277,7 +277,8 @@ class NumericSystem:
     def _hidden(self, names) -> list:
         """The model's declared symbols spelt exactly as one of `names`."""
         names = set(names)
-        return [s for s in self.model.info if S.base_and_order(s)[1] == 0 and s.name in names]
+        return [s for s in self.model.info
+                if S.base_and_order(s)[1] == 0 and s.name in names]
 
     def _as_output_routine(self, out_exprs, rhs_exprs, extra, given) -> list:
         """The outputs as Autolev's C output routine computed them: its loop counter
