@@ -93,31 +93,64 @@ def test_singular_mass_matrix_stops_both_loops_at_the_same_place():
 
 
 @pytest.mark.parametrize("method", ["kutta-merson", "dop853"])
-def test_slices_of_a_long_run_continue_exactly_where_they_stopped(method):
+def test_slices_and_blocks_of_a_long_run_continue_exactly_where_they_stopped(method):
+    """Budget slices of one call and blocks of the schedule (what keeps a long run's
+    memory bounded) both resume the integrator's exact state."""
     m = load("double_pendulum")
     system = run(m, TFINAL=0.1).system
     y0 = np.array([0.5, 1.0, 0.0, 0.0])
-    sched = autolev.runtime.numerics.integrate.Schedule(0.0, 20.0, 0.1, 1)
-    if method == "kutta-merson":
-        steps = list(sched.steps())
-        times, printed = [t for t, _ in steps], [1] * len(steps)
-    else:
-        times, printed = [t for t, p in sched.steps() if p], None
-    opts = dict(t0=0.0, rtol=1e-10, atol=1e-10, integstp=0.1, max_step=0.1)
+    sched = autolev.runtime.numerics.integrate.Schedule(0.0, 20.0, 0.1, 3)
+    opts = dict(t0=0.0, rtol=1e-10, atol=1e-10, integstp=0.1, max_step=0.1,
+                t_bound=sched.final_time())
 
-    def collect(budget):
+    def blocks(size):
+        if method == "kutta-merson":
+            return sched.blocks(size)
+        return ((times, None) for times in sched.print_blocks())
+
+    def collect(budget, size):
         got = []
-        out = system.loop.run(method, y0, times, printed, opts,
+        out = system.loop.run(method, y0, blocks(size), opts,
                               lambda ts, rows: got.append((ts, rows)), budget=budget,
                               adapt=False)
         assert out["status"] == 0
         return got, out
-    sliced, a = collect(50.0)
-    whole, b = collect(1e9)
+    sliced, a = collect(50.0, 1 << 16)
+    blocked, c = collect(1e9, 7)
+    whole, b = collect(1e9, 1 << 16)
     assert len(sliced) > 20 and len(whole) == 1
-    assert np.array_equal(np.concatenate([ts for ts, _ in sliced]), whole[0][0])
-    assert np.array_equal(np.concatenate([r for _, r in sliced]), whole[0][1])
-    assert a["stats"] == b["stats"]
+    if method == "kutta-merson":
+        assert len(blocked) == 29             # 200 steps in blocks of 7
+    for parts, out in ((sliced, a), (blocked, c)):
+        assert np.array_equal(np.concatenate([ts for ts, _ in parts]), whole[0][0])
+        assert np.array_equal(np.concatenate([r for _, r in parts]), whole[0][1])
+        assert out["stats"] == b["stats"]
+    assert len(whole[0][0]) == 67             # every third of 200 steps, and the last
+
+
+def test_the_schedule_in_blocks_is_autolevs_loop():
+    """Blocks of any size give the T of repeated addition and the print flags of
+    Autolev's counter, the last step printed (a loop written out here as reference)."""
+    from autolev.runtime.numerics.integrate import Schedule
+
+    def reference(t0, t1, h, printint):
+        out, t, counter = [], t0, printint
+        while not (t + 0.01 * h >= t1 if t1 >= t0 else t + 0.01 * h <= t1):
+            t += h
+            counter -= 1
+            last = t + 0.01 * h >= t1 if t1 >= t0 else t + 0.01 * h <= t1
+            out.append((t, counter <= 0 or last))
+            if counter <= 0 or last:
+                counter = printint
+        return out
+    for t0, t1, h, printint in [(0.0, 1.0, 0.1, 1), (0.0, 2.37, 0.1, 4),
+                                (1.0, -0.5, -0.07, 3), (0.3, 0.3, 0.1, 1),
+                                (0.0, 1e3, 0.01, 7)]:
+        expected = reference(t0, t1, h, printint)
+        for size in (1, 5, 64, 1 << 16):
+            got = [(t, bool(p)) for times, printed in Schedule(t0, t1, h, printint)
+                   .blocks(size) for t, p in zip(times.tolist(), printed.tolist())]
+            assert got == expected, (t0, t1, h, printint, size)
 
 
 def test_stiff_equations_are_detected_and_handed_to_an_implicit_method():

@@ -209,7 +209,8 @@ def cmd_run(ns: argparse.Namespace) -> int:
             result = run_command(model, command, out_dir=out_dir, method=ns.method,
                                  backend=ns.backend, infile=ns.infile,
                                  progress=None if ns.quiet else sys.stderr,
-                                 overrides=overrides, quirks=ns.quirks)
+                                 overrides=overrides, quirks=ns.quirks,
+                                 keep_rows=bool(ns.plot))
         except AutolevModelError as exc:
             text = str(exc)
             if not text.startswith("CODE"):
@@ -222,12 +223,13 @@ def cmd_run(ns: argparse.Namespace) -> int:
             print(f"{label}: {result.failure}", file=sys.stderr)
             status = 1
         if not ns.quiet:
-            what = (f"{len(result.t)} rows" if result.kind in ("dynamics", "ode")
+            stats = result.stats
+            what = (f"{stats.get('rows', 0)} rows" if result.kind in ("dynamics", "ode")
                     else "solved" if result.kind != "algebraic" or result.solution
                     else "evaluated")
             print(f"CODE {command.kind.upper()} {command.filename}: {what} in {elapsed:.2f} s"
-                  + (f" ({result.stats.get('method')}, {result.stats.get('steps')} steps)"
-                     if result.stats else ""))
+                  + (f" ({stats['method']}, {stats.get('steps')} steps)"
+                     if stats.get("method") else ""))
             for f in result.files:
                 print(f"  wrote {f}")
         if ns.plot and result.outputs:

@@ -160,24 +160,21 @@ class CompiledLoop:
         r = self._deriv(self._ctx_ref, float(t), x.ctypes.data, xdot.ctypes.data)
         return xdot, r
 
-    def run(self, method: str, y0, times, printed, opts: dict, on_rows, progress=None,
+    def run(self, method: str, y0, blocks, opts: dict, on_rows, progress=None,
             stiff_stop: bool = False, budget: float = 2000.0, adapt: bool = True) -> dict:
-        """Integrate from y0 at opts['t0'].  Kutta-Merson: `times` are the T after
-        every INTEGSTP step and `printed` flags the printed ones; DOP853: `times` are
-        the print times.  on_rows(t_array, rows) gets the rows of each slice.
-        `budget`: right-hand-side calls in the first slice (later slices are sized to
-        about 0.1 s each unless `adapt` is false).
+        """Integrate from y0 at opts['t0'] over `blocks` of the schedule, (times,
+        printed) each; Kutta-Merson: the T after every INTEGSTP step and which are
+        printed; DOP853: the print times (printed None).  opts['t_bound']: DOP853's
+        end (the last print time).  The integrator's state carries from block to block,
+        so only one block's rows are in memory.  on_rows(t_array, rows) gets the rows of
+        each slice.  `budget`: right-hand-side calls in the first slice (later slices
+        are sized to about 0.1 s each unless `adapt` is false).
         Returns a dict: status, t (of the last accepted state), y, stats, fail_t,
-        fail_h, stiff_t, hlamb."""
+        fail_h, stiff_t, hlamb, and rest (DOP853: the print times of the current block
+        not reached when it stopped)."""
         code = METHOD_CODES[method]
         n = self.n
         y = np.array(y0, dtype=float)
-        times = np.ascontiguousarray(times, dtype=float)
-        flags = np.ascontiguousarray(printed if printed is not None else
-                                     np.ones(len(times)), dtype=np.intc)
-        nrows = int(flags.sum()) if code == 0 else len(times)
-        rows = np.zeros((max(1, nrows), n))
-        rtimes = np.zeros(max(1, nrows))
         st = np.zeros(ST_SIZE)
         st[ST_T] = opts["t0"]
         st[ST_NUMCUTS] = 20
@@ -185,34 +182,48 @@ class CompiledLoop:
         op = np.zeros(8)
         op[OP_RTOL], op[OP_ATOL] = opts["rtol"], opts["atol"]
         op[OP_MAXSTEP] = opts.get("max_step", math.inf)
-        op[OP_TBOUND] = times[-1] if len(times) else opts["t0"]
+        op[OP_TBOUND] = opts.get("t_bound", opts["t0"])
         op[OP_STIFF_STOP] = 1.0 if stiff_stop else 0.0
         op[OP_INTEGSTP] = opts.get("integstp", 0.0)
         op[OP_FRESH] = 1.0 if opts.get("fresh") else 0.0
         work = np.zeros((16 + 8 + 7) * max(1, n))      # DOP853: 29 n, Kutta-Merson: 7 n
         table = _table()
-        done_rows = 0
-        args = (self._ctx_ref, code, y.ctypes.data, st.ctypes.data, op.ctypes.data,
-                len(times), times.ctypes.data, flags.ctypes.data, rows.ctypes.data,
-                rtimes.ctypes.data, work.ctypes.data, table.ctypes.data)
-        while True:
-            op[OP_BUDGET] = budget
-            start = _time.perf_counter()
-            r = self._integrate(*args)
-            elapsed = _time.perf_counter() - start
-            written = int(st[ST_KMROWS] if code == 0 else st[ST_ROW])
-            if written > done_rows:
-                t_rows = rtimes[done_rows:written] if code == 0 else times[done_rows:written]
-                on_rows(np.array(t_rows), rows[done_rows:written].copy())
-                done_rows = written
-            if progress is not None:
-                progress.update(st[ST_T])
-            if r != MORE:
+        r = DONE
+        times = np.zeros(0)
+        for block, printed in blocks:
+            times = np.ascontiguousarray(block, dtype=float)
+            flags = np.ascontiguousarray(printed if printed is not None else
+                                         np.ones(len(times)), dtype=np.intc)
+            nrows = int(flags.sum()) if code == 0 else len(times)
+            rows = np.zeros((max(1, nrows), n))
+            rtimes = np.zeros(max(1, nrows))
+            st[ST_ROW] = st[ST_KMROWS] = 0
+            done_rows = 0
+            args = (self._ctx_ref, code, y.ctypes.data, st.ctypes.data, op.ctypes.data,
+                    len(times), times.ctypes.data, flags.ctypes.data, rows.ctypes.data,
+                    rtimes.ctypes.data, work.ctypes.data, table.ctypes.data)
+            while True:
+                op[OP_BUDGET] = budget
+                start = _time.perf_counter()
+                r = self._integrate(*args)
+                elapsed = _time.perf_counter() - start
+                written = int(st[ST_KMROWS] if code == 0 else st[ST_ROW])
+                if written > done_rows:
+                    t_rows = (rtimes[done_rows:written] if code == 0
+                              else times[done_rows:written])
+                    on_rows(np.array(t_rows), rows[done_rows:written].copy())
+                    done_rows = written
+                if progress is not None:
+                    progress.update(st[ST_T])
+                if r != MORE:
+                    break
+                if adapt:       # slices of about a tenth of a second
+                    budget = min(max(200.0, budget * (0.1 / max(elapsed, 1e-6))), 1e7)
+            if r != DONE:
                 break
-            if adapt:       # slices of about a tenth of a second
-                budget = min(max(200.0, budget * (0.1 / max(elapsed, 1e-6))), 1e7)
+        rest = times[int(st[ST_ROW]):] if code != 0 else np.zeros(0)
         stats = {"evaluations": int(st[ST_NFEV]), "steps": int(st[ST_NSTEP]),
                  "rejected": int(st[ST_NREJ])}
-        return {"status": r, "t": float(st[ST_T]), "y": y, "stats": stats,
+        return {"status": r, "t": float(st[ST_T]), "y": y, "stats": stats, "rest": rest,
                 "fail_t": float(st[ST_FAIL_T]), "fail_h": float(st[ST_FAIL_H]),
                 "stiff_t": float(st[ST_STIFF_T]), "hlamb": float(st[ST_HLAMB])}

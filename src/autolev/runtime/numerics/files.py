@@ -11,13 +11,23 @@ The layout is that of Autolev 4.1's C and Matlab programs:
 
 Each label is centred in a 15-character column (the first after the `%`), units in
 brackets (`(UNITS)` when none was given), each value written as `" %- 14.6E"`.
-Rows are written as they are computed, so a run that fails keeps what it wrote.
+Rows are written as they are computed (a run's memory does not grow with its rows),
+into temporaries renamed together when the run ends (`RunFiles`).
 """
 from __future__ import annotations
 
+import errno
 import math
 import os
+import signal
+import threading
+from contextlib import contextmanager
 from pathlib import Path, PureWindowsPath
+
+try:
+    import fcntl
+except ImportError:           # Windows: runs into one folder are not locked
+    fcntl = None
 
 from ..errors import AutolevModelError
 
@@ -60,22 +70,14 @@ def row(values) -> str:
 
 
 class OutputFiles:
-    """The files of one run, written row by row (temporary names until closed, so an
-    interrupted run never leaves a half-written file under the final name... except
-    the rows of a failed integration, which are kept on purpose)."""
+    """The tables `NAME.1 ... NAME.k` of one run, written row by row into temporaries
+    that `RunFiles` renames with the run's other files."""
 
-    def __init__(self, folder: Path, stem: str, files: list[tuple[list, list]]):
-        self.folder = Path(folder)
-        self.stem = stem
-        self.paths = [self.folder / f"{stem}.{k}" for k in range(1, len(files) + 1)]
-        self._handles = []
-        self._tmp = []
-        for path, (labels, units) in zip(self.paths, files):
-            tmp = path.with_name(path.name + f".{os.getpid()}.part")
-            h = open(tmp, "w", newline="\n")
+    def __init__(self, run: "RunFiles", files: list[tuple[list, list]]):
+        self.paths = [run.folder / f"{run.stem}.{k}" for k in range(1, len(files) + 1)]
+        self._handles = [run.open(path) for path in self.paths]
+        for h, path, (labels, units) in zip(self._handles, self.paths, files):
             h.write(header(path.name, labels, units))
-            self._handles.append(h)
-            self._tmp.append(tmp)
 
     def write(self, k: int, values) -> None:
         self._handles[k].write(row(values))
@@ -85,22 +87,164 @@ class OutputFiles:
         for h in self._handles:
             h.write(f"% {text}\n")
 
-    def close(self) -> list[Path]:
-        for h, tmp, path in zip(self._handles, self._tmp, self.paths):
-            h.close()
-            os.replace(tmp, path)
+
+# the suffix of a run's temporaries: hidden, and recognisable as stale after a crash
+PART = ".autolev-part"
+
+
+class RunFiles:
+    """Every file of one run into `folder`, written as a set: under temporary names
+    until `commit` renames them all (the `.dir` last), so a refused, interrupted or
+    failed-to-write run leaves the previous run's files as they were.  While it is
+    open the folder is locked against another run (flock on the folder itself)."""
+
+    def __init__(self, folder: Path, stem: str):
+        self.folder = Path(folder)
+        self.stem = stem
+        self._staged: list[tuple[Path, Path]] = []       # (temporary, final)
         self._handles = []
-        return self.paths
+        if self.folder.exists() and not self.folder.is_dir():
+            raise NotADirectoryError(errno.ENOTDIR, "not a folder", str(self.folder))
+        self.folder.mkdir(parents=True, exist_ok=True)
+        self._lock = _lock_folder(self.folder)
+        try:
+            self._remove_stale()
+        except BaseException:
+            self.release()
+            raise
+
+    def _remove_stale(self) -> None:
+        """Temporaries of runs that were killed (no other run can be writing here)."""
+        for tmp in self.folder.glob(f".*{PART}"):
+            if tmp.is_file() or tmp.is_symlink():
+                tmp.unlink(missing_ok=True)
+
+    def open(self, final: Path):
+        """A new text file that becomes `final` at commit."""
+        tmp = final.with_name(f".{final.name}.{os.getpid()}{PART}")
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        self._staged.append((tmp, final))
+        handle = os.fdopen(fd, "w", newline="\n", encoding="utf-8")
+        self._handles.append(handle)
+        return handle
+
+    def text(self, name: str, text: str) -> None:
+        with self.open(self.folder / name) as h:
+            h.write(text)
+
+    def tables(self, files: list[tuple[list, list]]) -> OutputFiles:
+        return OutputFiles(self, files)
+
+    def commit(self) -> list[Path]:
+        """Rename every temporary to its name; returns the files, in writing order."""
+        for h in self._handles:
+            h.close()
+        self._handles = []
+        order = sorted(self._staged, key=lambda pair: pair[1].suffix == ".dir")
+        for tmp, final in order:
+            os.replace(tmp, final)
+        self._staged = []
+        self._remove_superseded([final for _, final in order])
+        return [final for _, final in order]
+
+    def _remove_superseded(self, written: list[Path]) -> None:
+        """The previous run's tables and `.encode` this run did not write (fewer OUTPUT
+        statements, no ENCODE): they would pass for this run's."""
+        names = {p.name for p in written}
+        for path in self.folder.glob(f"{glob_escape(self.stem)}.*"):
+            suffix = path.name[len(self.stem) + 1:]
+            if path.name in names or not (suffix.isdigit() or suffix == "encode"):
+                continue
+            if path.is_file() and not path.is_symlink() and _written_by_a_run(path):
+                path.unlink()
 
     def discard(self) -> None:
-        for h, tmp in zip(self._handles, self._tmp):
+        for h in self._handles:
             h.close()
-            tmp.unlink(missing_ok=True)
         self._handles = []
+        for tmp, _ in self._staged:
+            tmp.unlink(missing_ok=True)
+        self._staged = []
+
+    def release(self) -> None:
+        if self._lock is not None:
+            os.close(self._lock)
+            self._lock = None
 
 
-def write_dir(folder: Path, stem: str, program: str, files: list[list[str]],
-              extra: list[tuple[str, str]] = ()) -> Path:
+def glob_escape(text: str) -> str:
+    return "".join(f"[{c}]" if c in "*?[" else c for c in text)
+
+
+def _written_by_a_run(path: Path) -> bool:
+    with open(path, "rb") as h:
+        head = h.read(64)
+    return head.startswith(b"% FILE: ") or head.startswith(b"% values of the ENCODE")
+
+
+def _lock_folder(folder: Path):
+    """An exclusive lock on the folder (its descriptor), or a clear refusal when
+    another run holds it; None where the file system has no locks."""
+    if fcntl is None:
+        return None
+    fd = os.open(folder, os.O_RDONLY)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        os.close(fd)
+        raise AutolevModelError(f"another autolev run is writing into {folder}; wait "
+                                "for it to end, or give this one another --out") from None
+    except OSError as exc:
+        if exc.errno not in (errno.ENOLCK, errno.EOPNOTSUPP, errno.EINVAL):
+            os.close(fd)
+            raise
+        os.close(fd)
+        return None
+    return fd
+
+
+class RunInterrupted(BaseException):
+    """SIGTERM or SIGHUP arrived while a run's files were being written."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+
+@contextmanager
+def termination_cleans_up():
+    """SIGTERM and SIGHUP (left at their default, in the main thread) raise
+    RunInterrupted inside the block, so that its temporaries are removed; afterwards
+    the signal is delivered again to its default action (the process ends as it
+    would have)."""
+    wanted = [s for s in (getattr(signal, "SIGTERM", None), getattr(signal, "SIGHUP", None))
+              if s is not None]
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {s: signal.getsignal(s) for s in wanted}
+    ours = [s for s in wanted if previous[s] == signal.SIG_DFL]
+
+    def interrupt(signum, frame):
+        raise RunInterrupted(signum)
+
+    for s in ours:
+        signal.signal(s, interrupt)
+    try:
+        yield
+    except RunInterrupted as exc:
+        for s in ours:
+            signal.signal(s, previous[s])
+        ours = []
+        signal.raise_signal(exc.signum)
+        raise
+    finally:
+        for s in ours:
+            signal.signal(s, previous[s])
+
+
+def dir_text(stem: str, program: str, files: list[list[str]],
+             extra: list[tuple[str, str]] = ()) -> str:
     """NAME.dir: which file holds which quantities."""
     names = [f"{stem}.{k}" for k in range(1, len(files) + 1)] + [n for n, _ in extra]
     width = max(len(n) for n in names) + 4 if names else 12
@@ -110,12 +254,10 @@ def write_dir(folder: Path, stem: str, program: str, files: list[list[str]],
         lines.append(f"{name:<{width}}{','.join(labels)}")
     for name, contents in extra:
         lines.append(f"{name:<{width}}{contents}")
-    path = Path(folder) / f"{stem}.dir"
-    _write(path, "\n".join(lines) + "\n")
-    return path
+    return "\n".join(lines) + "\n"
 
 
-def write_encoded(folder: Path, stem: str, values: list[tuple[str, object]]) -> Path:
+def encoded_text(values: list[tuple[str, object]]) -> str:
     """NAME.encode: the ENCODE quantities, one per line (`A[1,2]<TAB>value`, 1-based
     indices, 17 significant digits)."""
     lines = ["% values of the ENCODE quantities (1-based indices), printed %.17g"]
@@ -129,12 +271,4 @@ def write_encoded(folder: Path, stem: str, values: list[tuple[str, object]]) -> 
                     lines.append(f"{name}{idx}\t{float(value[i, j]):.17g}")
         else:
             lines.append(f"{name}\t{float(value):.17g}")
-    path = Path(folder) / f"{stem}.encode"
-    _write(path, "\n".join(lines) + "\n")
-    return path
-
-
-def _write(path: Path, text: str) -> None:
-    tmp = path.with_name(path.name + f".{os.getpid()}.tmp")
-    tmp.write_text(text)
-    os.replace(tmp, path)
+    return "\n".join(lines) + "\n"

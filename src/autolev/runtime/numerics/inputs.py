@@ -15,7 +15,6 @@ model still works for the names it shares (the others are reported).
 from __future__ import annotations
 
 import math
-import os
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
@@ -218,10 +217,10 @@ class Inputs:
                          f"{len(entries)} values are taken in Autolev's order (constants, "
                          "initial values, integration parameters), as Autolev's programs "
                          "read them")
+        strangers = []                     # (line, name) not inputs of this model
         for key, (lineno, name, value, file_unit) in zip(keys, entries):
             if key is None:
-                notes.append(f"{path}:{lineno}: {name} is not an input of this model; "
-                             "ignored")
+                strangers.append((lineno, name))
                 continue
             if key == "PRINTINT" and (value != int(value) or value < 1):
                 raise InputFileError(f"{path}:{lineno}:60: PRINTINT must be a positive "
@@ -232,10 +231,23 @@ class Inputs:
                 notes.append(f"{path}:{lineno}: {name} is given in {file_unit} but the model "
                              f"uses {unit or 'no unit'}; read as {unit or 'a plain number'}")
             self.values[key] = Value(value, unit, f"{path.name}:{lineno}")
+        if strangers:
+            notes.append(f"{path}:{strangers[0][0]}: " + _some(n for _, n in strangers)
+                         + (" is not an input" if len(strangers) == 1 else
+                            f" ({len(strangers)} names) are not inputs")
+                         + " of this model; ignored")
+        found = set(keys)
+        absent = [k for k in self.names if k not in found]
+        if absent:
+            notes.append(f"{path}: no value for " + _some(map(display_name, absent))
+                         + " (a file cut short?); "
+                         + ("it keeps its" if len(absent) == 1 else "they keep their")
+                         + " INPUT value or default")
         return notes
 
-    def write_file(self, path, title: str, kinds: dict) -> None:
-        """Autolev's `.in` layout; kinds: key -> description ("Constant", ...)."""
+    def file_text(self, title: str, kinds: dict) -> str:
+        """The `.in` file of these values, in Autolev's layout; kinds: key -> description
+        ("Constant", ...)."""
         lines = [f"File: {title}",
                  "-" * 77,
                  "Note: Use spaces not tabs while editing this file.",
@@ -264,7 +276,14 @@ class Inputs:
             lines += ["", "  INTEGSTP*PRINTINT is the time-interval for writing of output.",
                       "  ABSERR and RELERR are the absolute and relative error tolerances of "
                       "the integrator."]
-        _atomic_write(path, "\n".join(lines) + "\n")
+        return "\n".join(lines) + "\n"
+
+
+def _some(names, shown: int = 8) -> str:
+    """A list of names, the first `shown` of them and how many more."""
+    names = list(names)
+    more = len(names) - shown
+    return ", ".join(names[:shown]) + (f", ... and {more} more" if more > 0 else "")
 
 
 def _parse_number(text: str):
@@ -285,13 +304,6 @@ def _format(v: float) -> str:
             mant, exp = s.split("E")
             s = f"{mant}E{int(exp):+03d}"
     return s if s.startswith("-") else " " + s
-
-
-def _atomic_write(path, text: str) -> None:
-    path = Path(path)
-    tmp = path.with_name(path.name + f".{os.getpid()}.tmp")
-    tmp.write_text(text)
-    os.replace(tmp, path)
 
 
 def warn_zero(keys, what: str) -> None:

@@ -21,6 +21,7 @@ Integrators:
 """
 from __future__ import annotations
 
+import itertools
 import math
 import time as _time
 from dataclasses import dataclass
@@ -34,12 +35,14 @@ METHODS = ("kutta-merson",) + tuple(SCIPY_METHODS)
 
 
 class IntegrationFailure(Exception):
-    """The integration stopped at time t with state y."""
+    """The integration stopped at time t with state y; `cuts`: because Kutta-Merson's
+    step was halved more than it allows (the failure that needs explaining)."""
 
-    def __init__(self, message: str, t: float, y: np.ndarray):
+    def __init__(self, message: str, t: float, y: np.ndarray, cuts: bool = False):
         super().__init__(message)
         self.t = t
         self.y = np.array(y, dtype=float)
+        self.cuts = cuts
 
 
 @dataclass
@@ -70,30 +73,65 @@ class Schedule:
                 raise ValueError(f"INTEGSTP ({h:g}) is too small to advance the time from "
                                  f"T = {t:g} in floating point")
 
+    # steps per block of the schedule: its memory is this, whatever TFINAL is
+    BLOCK = 1 << 16
+
+    def blocks(self, size: int | None = None):
+        """The schedule in blocks: (T after each step, printed?) as two arrays, T
+        accumulated step by step as Autolev's loop did (np.add.accumulate adds in
+        order)."""
+        size = size or self.BLOCK
+        t, h = self.tinitial, self.integstp
+        if self._done(t):
+            return
+        done_steps = 0
+        while True:
+            times = np.add.accumulate(np.concatenate(([t], np.full(size, h))))[1:]
+            finished = self._done(times)
+            last = int(np.argmax(finished)) if finished.any() else None
+            if last is not None:
+                times = times[:last + 1]
+            index = np.arange(done_steps + 1, done_steps + len(times) + 1)
+            printed = index % self.printint == 0
+            if last is not None:
+                printed[-1] = True
+            yield times, printed
+            if last is not None:
+                return
+            t = float(times[-1])
+            done_steps += len(times)
+
     def steps(self):
         """(T after the step, print?) for every INTEGSTP step, as Autolev's loop."""
-        t, h = self.tinitial, self.integstp
-        counter = self.printint
-        while not self._done(t):
-            t = t + h
-            counter -= 1
-            last = self._done(t)
-            if counter <= 0 or last:
-                counter = self.printint
-                yield t, True
-            else:
-                yield t, False
+        for times, printed in self.blocks():
+            yield from zip(times.tolist(), printed.tolist())
 
-    def _done(self, t: float) -> bool:
+    def print_blocks(self):
+        """The print times after TINITIAL, in blocks."""
+        for times, printed in self.blocks():
+            if printed.any():
+                yield times[printed]
+
+    def final_time(self) -> float:
+        """T after the last step (TINITIAL when there is none)."""
+        t = self.tinitial
+        for times, _ in self.blocks():
+            t = float(times[-1])
+        return t
+
+    def _done(self, t):
+        """Whether T (a number or an array) is where Autolev's loop stops."""
         h = self.integstp
-        if self.tfinal >= self.tinitial and t + 0.01 * h >= self.tfinal:
-            return True
-        if self.tfinal <= self.tinitial and t + 0.01 * h <= self.tfinal:
-            return True
-        return False
+        ahead = np.asarray(t) + 0.01 * h
+        done = np.zeros(np.shape(t), dtype=bool)
+        if self.tfinal >= self.tinitial:
+            done |= ahead >= self.tfinal
+        if self.tfinal <= self.tinitial:
+            done |= ahead <= self.tfinal
+        return done if np.ndim(t) else bool(done)
 
     def print_times(self) -> list[float]:
-        return [self.tinitial] + [t for t, p in self.steps() if p]
+        return [self.tinitial] + [t for block in self.print_blocks() for t in block.tolist()]
 
 
 class KuttaMerson:
@@ -157,7 +195,7 @@ class KuttaMerson:
                     continue
                 raise IntegrationFailure(
                     f"the step size has been halved too many times at T = {tt - h:.4E}",
-                    tt - h, y)
+                    tt - h, y, cuts=True)
             if not np.all(np.isfinite(y2)):
                 raise IntegrationFailure(f"the state is not finite at T = {tt:.6g}", tt - h, y)
             self.steps += 1
@@ -278,9 +316,8 @@ def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progres
     if schedule.restart_each_step:
         return _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
                                 stats)
-    times = [tp for tp, printed in schedule.steps() if printed]
-    return _scipy_rows(f, y, t, times, name, schedule, abserr, relerr, on_row, progress,
-                       stats)
+    return _scipy_rows(f, y, t, schedule.print_blocks(), schedule.final_time(), name,
+                       schedule, abserr, relerr, on_row, progress, stats)
 
 
 def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
@@ -316,36 +353,38 @@ def _step(solver, name: str, stats: dict) -> None:
                                  solver.t_old, solver.dense_output()(solver.t_old))
 
 
-def _scipy_rows(f, y, t, times, name, schedule, abserr, relerr, on_row, progress,
+def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, progress,
                 stats) -> dict:
-    """Rows at `times` (after t) from a scipy solver started at (t, y)."""
-    if not times:
+    """Rows at the print times of `blocks` (arrays of times after t, up to t_end) from a
+    scipy solver started at (t, y)."""
+    if t_end == t:
         return stats
-    t_end = times[-1]
     solver = scipy.integrate._ivp.ivp.METHODS[name](
         f, t, y, t_end, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
-    k = 0
-    while k < len(times):
-        try:
-            _step(solver, name, stats)
-        finally:
-            stats["evaluations"] = solver.nfev
-        interp = None
-        direction = 1 if t_end >= schedule.tinitial else -1
-        while k < len(times) and (times[k] - solver.t) * direction <= 0:
-            if times[k] == solver.t:
-                yk = solver.y.copy()
-            else:
-                interp = interp or solver.dense_output()
-                yk = interp(times[k])
-            on_row(times[k], yk)
-            k += 1
-        if progress is not None:
-            progress.update(solver.t)
-        if solver.status == "finished" and k < len(times):
-            for tk in times[k:]:             # t_end reached exactly: the rest coincide
-                on_row(tk, solver.y.copy())
-            break
+    direction = 1 if t_end >= t else -1
+    for times in blocks:
+        k = 0
+        while k < len(times):
+            if solver.status == "finished":    # t_end reached exactly: the rest coincide
+                for tk in times[k:].tolist():
+                    on_row(tk, solver.y.copy())
+                break
+            try:
+                _step(solver, name, stats)
+            finally:
+                stats["evaluations"] = solver.nfev
+            interp = None
+            while k < len(times) and (times[k] - solver.t) * direction <= 0:
+                tk = float(times[k])
+                if tk == solver.t:
+                    yk = solver.y.copy()
+                else:
+                    interp = interp or solver.dense_output()
+                    yk = interp(tk)
+                on_row(tk, yk)
+                k += 1
+            if progress is not None:
+                progress.update(solver.t)
     return stats
 
 
@@ -353,23 +392,22 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
                         on_stiff) -> dict:
     from . import cloop
     t0 = schedule.tinitial
-    opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
-            "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives}
-    if method == "kutta-merson":
-        steps = list(schedule.steps())
-        times = [tp for tp, _ in steps]
-        printed = [1 if p else 0 for _, p in steps]
-    else:
-        times = [tp for tp, p in schedule.steps() if p]
-        printed = None
-    if not times:
+    t_end = schedule.final_time()
+    if t_end == t0:
         return {"method": method, "evaluations": 0, "steps": 0, "compiled": True}
+    opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
+            "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives,
+            "t_bound": t_end}
+    if method == "kutta-merson":
+        blocks = schedule.blocks()
+    else:
+        blocks = ((times, None) for times in schedule.print_blocks())
 
     def on_rows(ts, rows):
-        for tk, yk in zip(ts, rows):
-            on_row(float(tk), yk)
+        for tk, yk in zip(ts.tolist(), rows):
+            on_row(tk, yk)
 
-    out = loop.run(method, y, times, printed, opts, on_rows, progress,
+    out = loop.run(method, y, blocks, opts, on_rows, progress,
                    stiff_stop=on_stiff is not None)
     stats = dict(out["stats"], method=method, compiled=True)
     r, tf, hf = out["status"], out["fail_t"], out["fail_h"]
@@ -379,14 +417,13 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
         return stats
     if r == cloop.STIFF:
         switch = on_stiff(out["stiff_t"], out["hlamb"])
-        done = [tk for tk in times if (tk - out["t"]) * (times[-1] - t0) <= 0]
-        rest = times[len(done):]
         if switch is None:       # go on with DOP853 (scipy's, from the same state)
             switch = "dop853"
         stats["switched_to"] = switch
         more = {"method": switch, "evaluations": 0, "steps": 0}
-        _scipy_rows(f, out["y"], out["t"], rest, SCIPY_METHODS[switch], schedule, abserr,
-                    relerr, on_row, progress, more)
+        rest = itertools.chain([out["rest"]], (times for times, _ in blocks))
+        _scipy_rows(f, out["y"], out["t"], rest, t_end, SCIPY_METHODS[switch], schedule,
+                    abserr, relerr, on_row, progress, more)
         stats["evaluations"] += more["evaluations"]
         stats["steps"] += more["steps"]
         return stats
@@ -396,7 +433,8 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
                                  loop.yfail)
     if r == cloop.CUTS:
         raise IntegrationFailure(
-            f"the step size has been halved too many times at T = {tf:.4E}", tf, y_last)
+            f"the step size has been halved too many times at T = {tf:.4E}", tf, y_last,
+            cuts=True)
     if r == cloop.SMALL_STEP:
         if method == "kutta-merson":
             raise IntegrationFailure(

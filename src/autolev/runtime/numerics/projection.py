@@ -89,11 +89,11 @@ def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_ro
                         progress, loop, on_stiff, project: Projector) -> dict:
     """integrate() from print time to print time, projecting the state at each."""
     schedule.check()
-    times = schedule.print_times()
     y = np.array(y0, dtype=float)
-    on_row(times[0], y)
+    on_row(schedule.tinitial, y)
     stats = {"method": method, "evaluations": 0, "steps": 0, "projected": True}
-    for a, b in zip(times, times[1:]):
+    a = schedule.tinitial
+    for b in (t for block in schedule.print_blocks() for t in block.tolist()):
         got = []
         seg = Schedule(a, b, schedule.integstp, 10 ** 9, schedule.fresh_derivatives,
                        schedule.restart_each_step)
@@ -111,6 +111,7 @@ def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_ro
                 stats[key] = st[key]
         y = project(b, got[-1])
         on_row(b, y)
+        a = b
         if progress is not None:
             progress.update(b)
     stats["largest_correction"] = project.largest_correction

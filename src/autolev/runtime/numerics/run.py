@@ -7,7 +7,6 @@ overrides), run, and write Autolev's files (`NAME.in`, `NAME.1..k`, `NAME.dir`, 
 """
 from __future__ import annotations
 
-import errno
 import math
 import sys
 import time
@@ -24,7 +23,7 @@ from .. import symbols as S
 from ..errors import AutolevModelError
 from ..vector import Vector
 from . import units
-from .files import OutputFiles, safe_stem, write_dir, write_encoded
+from .files import RunFiles, dir_text, encoded_text, safe_stem, termination_cleans_up
 from .inputs import INTEGRATION, Inputs, display_name
 from .integrate import IntegrationFailure, Progress, Schedule, integrate
 from .projection import Projector, constants_needed, integrate_projected
@@ -181,12 +180,14 @@ def program_method(filename: str) -> str:
 def run_command(model, command, out_dir=None, method: str | None = None,
                 backend: str = "auto", infile=None, specified=None, progress=None,
                 overrides=None, compiled: bool = True, constraints=None,
-                quirks: bool = True) -> Result:
+                quirks: bool = True, keep_rows: bool = True) -> Result:
     """Run one CODE command; files go to out_dir (None: no files).  `constraints`:
     configuration constraints g(q) (sympy expressions in the model's symbols) kept at
     their initial values by projecting the state onto them at every print time.
     `quirks`: compute what Autolev's programs computed where they were wrong
-    (docs/language.md, "What Autolev's programs computed"); False: what was meant."""
+    (docs/language.md, "What Autolev's programs computed"); False: what was meant.
+    `keep_rows=False`: the Result holds only the last row (the files hold them all),
+    so that memory does not grow with the length of the run."""
     kind = command.kind
     method = method or program_method(command.filename)
     stem = safe_stem(command.filename)
@@ -252,7 +253,6 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     inputs = Inputs(model, names, integration, given=command.inputs,
                     unit_table=command.units)
     notes = []
-    own_in = Path(out_dir) / f"{stem}.in" if out_dir is not None else None
     if infile is not None:
         notes += inputs.read_file(infile)
     for name, value in (overrides or {}).items():
@@ -268,17 +268,6 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     inputs.check_finite()
     _degree_rates_note(inputs, names)
 
-    folder = None
-    in_written = None
-    if out_dir is not None:
-        folder = Path(out_dir)
-        with _writing(folder):
-            if folder.exists() and not folder.is_dir():
-                raise NotADirectoryError(errno.ENOTDIR, "not a folder", str(folder))
-            folder.mkdir(parents=True, exist_ok=True)
-            if infile is None or Path(infile).resolve() != own_in.resolve():
-                inputs.write_file(own_in, own_in.name, kinds)
-                in_written = own_in
     system.set_parameters(inputs.vector(system.params))
     if integrate_states:
         bad = _inertia_problems(system, inputs, zero=False)
@@ -291,42 +280,46 @@ def run_command(model, command, out_dir=None, method: str | None = None,
                     {display_name(k): inputs.values[k].given for k in inputs.names},
                     system=system)
     result.stats["build_seconds"] = build_seconds
-    writer = None
-    if folder is not None:
-        with _writing(folder):
-            writer = OutputFiles(folder, stem, [([c.label for c in cols],
-                                                 [c.unit for c in cols]) for cols in files])
-    try:
+
+    def perform(writer):
         if integrate_states:
             _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                           compiled, constraints, inputs.vector(extra_constants),
-                          program=program_language(command.filename))
+                          program=program_language(command.filename), keep_rows=keep_rows)
         else:
             _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
                            zero_params)
-    except BaseException as exc:
-        if writer is not None:
-            with _writing(folder):
-                if result.failure is not None or len(result.t):
-                    writer.close()
-                else:
-                    writer.discard()
-        if isinstance(exc, OSError) and folder is not None:
-            with _writing(folder):
-                raise
-        raise
-    if writer is not None:
+
+    if out_dir is None:
+        perform(None)
+        return result
+    folder = Path(out_dir)
+    own_in = folder / f"{stem}.in"
+    with termination_cleans_up():
         with _writing(folder):
-            result.files = ([in_written] if in_written else []) + writer.close()
-            program = command.filename         # the program whose files these are
-            extra_files = []
-            if encoded:
-                values = list(result.encoded.items())
-                result.files.append(write_encoded(folder, stem, values))
-                extra_files.append((f"{stem}.encode", ",".join(n for n, _ in encoded)))
-            result.files.append(write_dir(folder, stem, program,
-                                          [[c.label for c in cols] for cols in files],
-                                          extra_files))
+            run_files = RunFiles(folder, stem)
+        try:
+            with _writing(folder):
+                if infile is None or Path(infile).resolve() != own_in.resolve():
+                    run_files.text(own_in.name, inputs.file_text(own_in.name, kinds))
+                writer = run_files.tables([([c.label for c in cols], [c.unit for c in cols])
+                                           for cols in files])
+                perform(writer)          # rows are written as they come (a full disk, too)
+                extra_files = []
+                if encoded:
+                    run_files.text(f"{stem}.encode",
+                                   encoded_text(list(result.encoded.items())))
+                    extra_files.append((f"{stem}.encode", ",".join(n for n, _ in encoded)))
+                # the `.dir` names the program whose files these are
+                run_files.text(f"{stem}.dir", dir_text(
+                    stem, command.filename, [[c.label for c in cols] for cols in files],
+                    extra_files))
+                result.files = run_files.commit()
+        except BaseException:
+            run_files.discard()
+            raise
+        finally:
+            run_files.release()
     return result
 
 
@@ -510,31 +503,59 @@ def _stiff_note(stats: dict, method: str) -> None:
                   stacklevel=3)
 
 
-def _conditioning(matrices: np.ndarray, times, states, result) -> None:
-    """The scaled condition number of the mass matrix at every row: its largest value
-    in the stats, and a warning with the time and state of the first row past
-    COND_WARN (an exactly singular matrix stops the run with its own message)."""
-    conds = scaled_condition(matrices)
-    k = int(np.argmax(conds))
-    result.stats["cond_max"] = float(conds[k])
-    result.stats["cond_max_t"] = times[k]
-    bad = np.nonzero((conds > COND_WARN) & np.isfinite(conds))[0]
-    if len(bad):
-        i = int(bad[0])
-        cond = float(conds[i])
-        state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, states[i]))
-        warnings.warn(
-            f"the mass matrix is nearly singular at T = {times[i]:.6g} (condition number "
-            f"{cond:.2g} after scaling by its diagonal: the accelerations may have lost "
-            f"{min(16, int(math.log10(min(cond, 1e16))))} of their 16 digits); the state "
-            f"there: {state}", stacklevel=5)
+class Conditioning:
+    """The scaled condition number of the mass matrix at every row, in batches (its
+    memory does not grow with the run): the largest value and where, and the first
+    row past COND_WARN (an exactly singular matrix stops the run with its own
+    message)."""
+
+    BATCH = 4096
+
+    def __init__(self):
+        self.largest = None          # (cond, t)
+        self.first_bad = None        # (cond, t, state)
+        self._batch = []             # (t, state, matrix)
+
+    def add(self, t, state, matrix) -> None:
+        self._batch.append((t, state, matrix))
+        if len(self._batch) >= self.BATCH:
+            self._flush()
+
+    def _flush(self) -> None:
+        if not self._batch:
+            return
+        conds = scaled_condition(np.array([m for _, _, m in self._batch]))
+        k = int(np.argmax(conds))
+        if self.largest is None or conds[k] > self.largest[0]:
+            self.largest = (float(conds[k]), self._batch[k][0])
+        bad = np.nonzero((conds > COND_WARN) & np.isfinite(conds))[0]
+        if len(bad) and self.first_bad is None:
+            i = int(bad[0])
+            self.first_bad = (float(conds[i]), self._batch[i][0], self._batch[i][1])
+        self._batch = []
+
+    def report(self, result) -> None:
+        """The stats, and a warning with the time and state of the first bad row."""
+        self._flush()
+        if self.largest is None:
+            return
+        result.stats["cond_max"], result.stats["cond_max_t"] = self.largest
+        if self.first_bad is not None:
+            cond, t, state = self.first_bad
+            shown = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, state))
+            warnings.warn(
+                f"the mass matrix is nearly singular at T = {t:.6g} (condition number "
+                f"{cond:.2g} after scaling by its diagonal: the accelerations may have lost "
+                f"{min(16, int(math.log10(min(cond, 1e16))))} of their 16 digits); the state "
+                f"there: {shown}", stacklevel=4)
 
 
 def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                   compiled: bool = True, constraints=None, extra_values=(),
-                  program: str = "") -> None:
+                  program: str = "", keep_rows: bool = True) -> None:
     """`program`: the language of Autolev's program for the CODE file ("c", "m", ...),
-    whose way of integrating is followed."""
+    whose way of integrating is followed.  `keep_rows`: the Result holds every row
+    (else only the last: a run's memory is then independent of its length)."""
     if not system.nstate:
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
@@ -547,9 +568,11 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         sched.check()
     except ValueError as exc:
         raise AutolevModelError(str(exc)) from None
+    # with keep_rows false only the last row is kept: the files have them all
     times, states = [], []
     rows = [[] for _ in system.files]
     encoded: dict = {}
+    conditioning = Conditioning()
 
     def f(t, y):
         try:
@@ -557,24 +580,28 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         except SingularMassMatrix as exc:
             raise IntegrationFailure(str(exc), t, y) from None
 
-    matrices: list = []        # the mass matrix at every row (conditioning, at the end)
-
     def on_row(t, y):
         values = system.outputs(t, y)       # solves for the accelerations once
+        if not keep_rows and times:
+            times.clear()
+            states.clear()
+            for r in rows:
+                r.clear()
         times.append(t)
         states.append(np.array(y))
         _split_outputs(system, values, rows, writer, encoded)
+        result.stats["rows"] = result.stats.get("rows", 0) + 1
         mm = system.last_mass_matrix()
         if mm is not None:
-            matrices.append(mm)
+            conditioning.add(t, states[-1], mm)
 
     bar = Progress(sys.stderr if progress is None else progress, sched.tinitial,
                    sched.tfinal, enabled=progress is not False and progress is not None)
     start = time.perf_counter()
+    abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
     try:
         loop = system.loop if compiled and not system._spec_fns else None
         on_stiff = _on_stiff if method == "dop853" else None
-        abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
         _loose_tolerance_note(method.lower(), relerr)
         if constraints:
             projector = Projector(system, constraints, sched.tinitial, y0, extra_values)
@@ -590,11 +617,13 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, exc.y))
         result.failure = (f"Numerical integration failed to converge: {exc}; the state "
                           f"there: {state}"
-                          + (_zero_hint(zero_params) if len(times) <= 1 else ""))
+                          + (_zero_hint(zero_params) if result.stats["rows"] <= 1 else ""))
         if "singular" in str(exc):
             problems = _inertia_problems(system, inputs)
             if problems:
                 result.failure += "; " + "; ".join(problems)
+        if exc.cuts:
+            result.failure += "; " + _halving_verdict(f, exc, sched, abserr, relerr)
         result.failure_time = exc.t
         if writer is not None:
             writer.note("Error: " + result.failure)
@@ -603,12 +632,59 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
     finally:
         bar.done()
         result.stats["seconds"] = time.perf_counter() - start
-        if matrices:
-            _conditioning(np.array(matrices), times, states, result)
+        conditioning.report(result)
     result.t = np.array(times)
     result.states = np.array(states).reshape(len(states), system.nstate)
     result.outputs = _tables(system, rows, result.name)
     result.encoded = encoded
+
+
+# h*|lambda| where Kutta-Merson stops being stable on the negative real axis
+KM_STABILITY = 3.5
+
+
+def _halving_verdict(f, failure, schedule, abserr: float, relerr: float) -> str:
+    """Why Kutta-Merson's step was halved too often: zero tolerances, or stiffness
+    (judged by the Jacobian's eigenvalues where it stopped), or neither."""
+    if abserr <= 0 and relerr <= 0:
+        return ("ABSERR and RELERR are both 0, which no step can satisfy: give them "
+                "values (e.g. ABSERR = 1E-8, RELERR = 1E-7)")
+    floor = abs(schedule.integstp) / 2 ** 20
+    rho = _spectral_radius(f, failure.t, failure.y)
+    if rho is None:
+        return "the derivatives are not finite near that state"
+    if rho * floor > KM_STABILITY:
+        return (f"the equations are stiff there (the Jacobian's largest eigenvalue is "
+                f"about {rho:.3g} in size: Kutta-Merson needs steps below "
+                f"{KM_STABILITY / rho:.2g}, finer than the {floor:.2g} its 20 halvings of "
+                "INTEGSTP allow); an implicit method takes them in stride: --method radau "
+                "(method='radau')")
+    verdict = (f"the equations are not stiff there (the Jacobian's largest eigenvalue is "
+               f"about {rho:.3g} in size)")
+    if abserr <= 0:
+        return verdict + ("; ABSERR = 0 makes any state that is exactly 0 fail the error "
+                          "test: give ABSERR a small value (e.g. 1E-8)")
+    return verdict + ("; the derivatives may jump or grow without bound near that state, "
+                      "or ABSERR and RELERR are below what double precision can meet")
+
+
+def _spectral_radius(f, t: float, y: np.ndarray) -> float | None:
+    """max |eigenvalue| of df/dy at (t, y), by forward differences; None where the
+    derivatives cannot be evaluated."""
+    try:
+        f0 = np.asarray(f(t, y), dtype=float)
+        columns = []
+        for j in range(len(y)):
+            step = 1.5e-8 * max(1.0, abs(y[j]))
+            moved = np.array(y, dtype=float)
+            moved[j] += step
+            columns.append((np.asarray(f(t, moved), dtype=float) - f0) / step)
+    except IntegrationFailure:
+        return None
+    jac = np.array(columns).T
+    if not np.all(np.isfinite(jac)):
+        return None
+    return float(np.max(np.abs(np.linalg.eigvals(jac)))) if len(y) else 0.0
 
 
 def _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_params):

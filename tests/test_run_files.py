@@ -1,0 +1,144 @@
+"""A run's files are written as a set (issue 15, item 3): a refused, interrupted or
+failed-to-write run leaves the previous run's files as they were, with no temporaries,
+and two runs cannot write into one folder at once."""
+import errno
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+import autolev
+from autolev.runtime import AutolevModelError
+from autolev.runtime.numerics import files
+from conftest import EXAMPLES
+
+PENDULUM = EXAMPLES / "double_pendulum.al"
+
+
+@pytest.fixture(scope="module")
+def model():
+    return autolev.load(PENDULUM)
+
+
+def snapshot(folder):
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
+
+
+def first_run(model, out):
+    result = model.simulate(out_dir=out, TFINAL=0.2)
+    assert result.ok and (out / "double_pendulum.in").exists()
+    return snapshot(out)
+
+
+def test_a_refused_run_leaves_the_previous_files(model, tmp_path):
+    out = tmp_path / "out"
+    before = first_run(model, out)
+    with pytest.raises(AutolevModelError, match="must not be negative"):
+        model.simulate(out_dir=out, TFINAL=0.2, M1=-1)
+    assert snapshot(out) == before
+
+
+def test_a_full_disk_mid_run_leaves_the_previous_files(model, tmp_path, monkeypatch):
+    out = tmp_path / "out"
+    before = first_run(model, out)
+    written = []
+
+    def fills_up(self, k, values):
+        written.append(values)
+        if len(written) > 3:
+            raise OSError(errno.ENOSPC, "No space left on device")
+    monkeypatch.setattr(files.OutputFiles, "write", fills_up)
+    with pytest.raises(AutolevModelError, match="No space left on device"):
+        model.simulate(out_dir=out, TFINAL=0.4, Q1=80)
+    assert len(written) == 4
+    assert snapshot(out) == before          # the new .in (Q1 = 80) is not beside old rows
+
+
+def test_a_second_run_into_a_locked_folder_is_refused(model, tmp_path):
+    out = tmp_path / "out"
+    before = first_run(model, out)
+    holder = files.RunFiles(out, "other")
+    try:
+        with pytest.raises(AutolevModelError, match="another autolev run is writing into"):
+            model.simulate(out_dir=out, TFINAL=0.2, Q1=80)
+    finally:
+        holder.discard()
+        holder.release()
+    assert snapshot(out) == before
+    assert model.simulate(out_dir=out, TFINAL=0.2, Q1=80).ok      # free again
+
+
+def test_temporaries_of_a_killed_run_are_removed_by_the_next(model, tmp_path):
+    out = tmp_path / "out"
+    first_run(model, out)
+    stale = out / f".double_pendulum.1.99999{files.PART}"
+    stale.write_text("% FILE: double_pendulum.1\n 1.0\n")
+    model.simulate(out_dir=out, TFINAL=0.2)
+    assert not stale.exists()
+    assert not [p for p in out.iterdir() if p.name.endswith(files.PART)]
+
+
+def test_tables_of_the_previous_run_that_this_run_did_not_write_go(model, tmp_path):
+    out = tmp_path / "out"
+    first_run(model, out)
+    (out / "double_pendulum.7").write_text("% FILE: double_pendulum.7\n")
+    (out / "double_pendulum.8").write_text("the user's own notes\n")
+    result = model.simulate(out_dir=out, TFINAL=0.2)
+    names = {p.name for p in out.iterdir()}
+    assert "double_pendulum.7" not in names and "double_pendulum.8" in names
+    assert {p.name for p in result.files} <= names
+
+
+def test_an_integration_failure_keeps_its_rows_as_autolev_did(tmp_path):
+    path = tmp_path / "blowup.al"
+    path.write_text("VARIABLES X'\nINPUT X = 1, TFINAL = 2, INTEGSTP = 0.1\nX' = X^2\n"
+                    "OUTPUT T, X\nCODE ODE() blowup.c\n")
+    result = autolev.load(path).simulate(out_dir=tmp_path / "out")
+    assert not result.ok and len(result.t) > 5
+    table = (tmp_path / "out" / "blowup.1").read_text()
+    assert table.count("\n") > 5 and "% Error: Numerical integration failed" in table
+
+
+def cli(*args, **kw):
+    return subprocess.Popen([sys.executable, "-m", "autolev", *map(str, args)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **kw)
+
+
+@pytest.mark.skipif(not hasattr(signal, "SIGTERM") or os.name != "posix",
+                    reason="POSIX signals")
+def test_sigterm_mid_run_leaves_the_previous_files_and_no_temporaries(model, tmp_path):
+    out = tmp_path / "out"
+    before = first_run(model, out)
+    proc = cli("run", PENDULUM, "--out", out, "--tfinal", "1e6", "--set", "Q1=80",
+               "--method", "rk45")          # the Python loop: long, and rows come slowly
+    deadline = time.monotonic() + 60
+    while not [p for p in out.iterdir() if p.name.endswith(files.PART)]:
+        assert proc.poll() is None and time.monotonic() < deadline
+        time.sleep(0.05)
+    time.sleep(0.3)
+    proc.send_signal(signal.SIGTERM)
+    proc.communicate(timeout=60)
+    assert proc.returncode == -signal.SIGTERM        # ended as the signal would end it
+    assert snapshot(out) == before
+
+
+def test_two_cli_runs_into_one_folder(model, tmp_path):
+    out = tmp_path / "out"
+    first_run(model, out)
+    slow = cli("run", PENDULUM, "--out", out, "--tfinal", "1e6", "--method", "rk45")
+    try:
+        deadline = time.monotonic() + 60
+        while not [p for p in out.iterdir() if p.name.endswith(files.PART)]:
+            assert slow.poll() is None and time.monotonic() < deadline
+            time.sleep(0.05)
+        second = cli("run", PENDULUM, "--out", out, "--set", "Q1=80")
+        _, err = second.communicate(timeout=120)
+        assert second.returncode == 1
+        assert f"another autolev run is writing into {out}" in err
+        assert "Traceback" not in err
+    finally:
+        slow.kill()
+        slow.communicate()
