@@ -108,3 +108,76 @@ def test_a_library_of_another_user_is_not_loaded(cache, tmp_path):
         os.chown(lib, 65534, 65534)              # nobody's
     simulate()
     assert not marker.exists()
+
+
+MALLORY = 61002          # a uid of no account: the kernel's checks need none
+
+
+def as_mallory(script: str) -> subprocess.CompletedProcess:
+    """A shell command run by another user (uid MALLORY): what it cannot do, the kernel
+    refuses, whatever our code believes."""
+    return subprocess.run(["/bin/sh", "-c", script], user=MALLORY, group=MALLORY,
+                          extra_groups=[], cwd="/", capture_output=True, text=True,
+                          env={"PATH": "/usr/bin:/bin", "HOME": "/nonexistent"})
+
+
+@pytest.fixture
+def shared_tmp():
+    """A folder every user may create files in (sticky, as /tmp)."""
+    import shutil
+    import tempfile
+    folder = tempfile.mkdtemp(prefix="autolev-two-users-", dir="/tmp")
+    os.chmod(folder, 0o1777)
+    yield folder
+    shutil.rmtree(folder)
+
+
+@pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() != 0,
+                    reason="running a process as a second user needs root")
+def test_a_second_user_cannot_make_our_runs_load_their_code(shared_tmp, monkeypatch):
+    from pathlib import Path
+    shared = Path(shared_tmp)
+    ours = shared / "ours"
+    monkeypatch.setenv("AUTOLEV_CACHE", str(ours))
+    first = simulate()
+    names = sorted(p.name for p in ours.glob("al_*") if p.suffix in (".so", ".o"))
+    assert any(n.endswith(".so") for n in names) and any(n.endswith(".o") for n in names)
+    # their code: a library and an object that create MARKER when loaded, with digests
+    marker = shared / "PLANTED-CODE-RAN"
+    planted = shared / "planted"
+    planted.mkdir(mode=0o755)
+    _planted_library(planted / "lib.so", marker)
+    src = planted / "obj.c"
+    src.write_text('#include <stdio.h>\n__attribute__((constructor)) static void hit(void)'
+                   f' {{ FILE *f = fopen("{marker}", "w"); if (f) fclose(f); }}\n')
+    subprocess.run([codegen.compiler(), "-c", "-fPIC", "-o", str(planted / "obj.o"),
+                    str(src)], check=True)
+    for kind in ("lib.so", "obj.o"):
+        codegen._install(planted / kind, planted / ("x" + kind))
+        os.chmod(planted / ("x" + kind), 0o755)
+    copies = " && ".join(
+        f"cp {planted}/x{'lib.so' if n.endswith('.so') else 'obj.o'} DIR/{n} && "
+        f"cp {planted}/x{'lib.so' if n.endswith('.so') else 'obj.o'}.sha256 DIR/{n}.sha256"
+        for n in names)
+
+    # 1. our cache: they can neither write into it, nor list it, nor move it aside
+    for attempt in (copies.replace("DIR", str(ours)), f"ls {ours}",
+                    f"mv {ours} {shared}/moved", f"rm -rf {ours}"):
+        r = as_mallory(attempt)
+        assert r.returncode != 0 and ("Permission denied" in r.stderr
+                                      or "Operation not permitted" in r.stderr), attempt
+    assert simulate()["states"] == first["states"] and not marker.exists()
+
+    # 2. a cache folder they made first, at the path we were told to use, filled with
+    #    their code under the names we would load, and its symlink
+    theirs = shared / "theirs"
+    r = as_mallory(f"mkdir -m 755 {theirs} && " + copies.replace("DIR", str(theirs))
+                   + f" && ln -s {theirs} {shared}/link")
+    assert r.returncode == 0, r.stderr
+    assert all((theirs / n).stat().st_uid == MALLORY for n in names)
+    for path in (theirs, shared / "link"):
+        monkeypatch.setenv("AUTOLEV_CACHE", str(path))
+        got = simulate()
+        assert got["states"] == first["states"]
+        assert any(f"belongs to another user (uid {MALLORY})" in m for m in got["said"])
+        assert not marker.exists()
