@@ -126,6 +126,52 @@ def test_scipy_methods_give_rows_on_the_print_grid(method):
     assert np.max(np.abs(y - np.sin(t))) < 1e-7
 
 
+@pytest.mark.parametrize("method", ["kutta-merson", "rk45", "dop853", "radau"])
+def test_rows_do_not_depend_on_the_schedules_blocks(method, monkeypatch):
+    """A long run takes its schedule in blocks (bounded memory): any block size gives
+    the same rows."""
+    def rows_with(block):
+        monkeypatch.setattr(integrate.Schedule, "BLOCK", block)
+        rows = []
+        integrate.integrate(lambda t, y: np.array([y[1], -y[0] - 0.1 * y[1] ** 3]),
+                            np.array([0.0, 1.0]), integrate.Schedule(0.0, 3.0, 0.05, 4),
+                            method, 1e-9, 1e-9, lambda t, y: rows.append((t, *y)))
+        return np.array(rows)
+    whole = rows_with(1 << 16)
+    assert len(whole) == 16                    # T0, then every fourth of 60 steps
+    for block in (1, 3, 8):
+        assert np.array_equal(rows_with(block), whole)
+
+
+def test_a_long_schedule_is_not_walked_before_the_first_step():
+    """TFINAL = 1e15 (1e16 steps): under Autolev's Kutta-Merson and the compiled DOP853
+    the first rows come at once, from the first block (scipy's solvers need their end
+    first, a walk over the schedule)."""
+    made = []
+
+    class Counted(integrate.Schedule):
+        def blocks(self, size=None):
+            for block in super().blocks(size):
+                made.append(len(block[0]))
+                yield block
+
+    class Enough(Exception):
+        pass
+
+    def on_row(t, y):
+        if t > 1.0:
+            raise Enough
+    system = quiet_simulate(load("double_pendulum"), TFINAL=0.1).system
+    y0 = np.array([0.5, 1.0, 0.0, 0.0])
+    for method, loop in (("kutta-merson", None), ("kutta-merson", system.loop),
+                         ("dop853", system.loop)):
+        made.clear()
+        with pytest.raises(Enough):
+            integrate.integrate(system.derivatives, y0, Counted(0.0, 1e15, 0.1, 1), method,
+                                1e-8, 1e-8, on_row, loop=loop)
+        assert 1 <= len(made) <= 3, method
+
+
 def test_unknown_method_is_refused():
     with pytest.raises(ValueError, match="unknown integrator"):
         integrate.integrate(lambda t, y: -y, np.array([1.0]), integrate.Schedule(0, 1, .1, 1),

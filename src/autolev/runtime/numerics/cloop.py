@@ -163,9 +163,9 @@ class CompiledLoop:
     def run(self, method: str, y0, blocks, opts: dict, on_rows, progress=None,
             stiff_stop: bool = False, budget: float = 2000.0, adapt: bool = True) -> dict:
         """Integrate from y0 at opts['t0'] over `blocks` of the schedule, (times,
-        printed) each; Kutta-Merson: the T after every INTEGSTP step and which are
-        printed; DOP853: the print times (printed None).  opts['t_bound']: DOP853's
-        end (the last print time).  The integrator's state carries from block to block,
+        printed, end) each; Kutta-Merson: the T after every INTEGSTP step and which are
+        printed (end None); DOP853: the print times (printed None) and the end it may
+        step to (see Schedule.bounded_print_blocks).  The state carries from block to block,
         so only one block's rows are in memory.  on_rows(t_array, rows) gets the rows of
         each slice.  `budget`: right-hand-side calls in the first slice (later slices
         are sized to about 0.1 s each unless `adapt` is false).
@@ -182,7 +182,7 @@ class CompiledLoop:
         op = np.zeros(8)
         op[OP_RTOL], op[OP_ATOL] = opts["rtol"], opts["atol"]
         op[OP_MAXSTEP] = opts.get("max_step", math.inf)
-        op[OP_TBOUND] = opts.get("t_bound", opts["t0"])
+        op[OP_TBOUND] = opts["t0"]
         op[OP_STIFF_STOP] = 1.0 if stiff_stop else 0.0
         op[OP_INTEGSTP] = opts.get("integstp", 0.0)
         op[OP_FRESH] = 1.0 if opts.get("fresh") else 0.0
@@ -190,8 +190,10 @@ class CompiledLoop:
         table = _table()
         r = DONE
         times = np.zeros(0)
-        for block, printed in blocks:
+        for block, printed, end in blocks:
             times = np.ascontiguousarray(block, dtype=float)
+            if end is not None:
+                op[OP_TBOUND] = end
             flags = np.ascontiguousarray(printed if printed is not None else
                                          np.ones(len(times)), dtype=np.intc)
             nrows = int(flags.sum()) if code == 0 else len(times)

@@ -106,18 +106,35 @@ class Schedule:
         for times, printed in self.blocks():
             yield from zip(times.tolist(), printed.tolist())
 
-    def print_blocks(self):
+    def print_blocks(self, size: int | None = None):
         """The print times after TINITIAL, in blocks."""
-        for times, printed in self.blocks():
+        for times, printed in self.blocks(size):
             if printed.any():
                 yield times[printed]
 
     def final_time(self) -> float:
-        """T after the last step (TINITIAL when there is none)."""
+        """T after the last step (TINITIAL when there is none): a walk over the whole
+        schedule (memory of one block)."""
         t = self.tinitial
         for times, _ in self.blocks():
             t = float(times[-1])
         return t
+
+    def bounded_print_blocks(self, size: int | None = None):
+        """(print times, end) for each block of print times: `end` is T after the last
+        step once the blocks ahead show it (the last block is at most two ahead), else a
+        time beyond it.  A solver bounded by `end` cannot pass the next block's last
+        row (its steps are at most INTEGSTP), so it never steps past the true end, and
+        no pass over the whole schedule is needed before the first step."""
+        blocks = self.print_blocks(size)
+        beyond = self.tfinal + 2 * self.integstp
+        window = list(itertools.islice(blocks, 2))
+        while window:
+            ahead = next(blocks, None)
+            if ahead is not None:
+                window.append(ahead)
+            end = float(window[-1][-1]) if ahead is None else beyond
+            yield window.pop(0), end
 
     def _done(self, t):
         """Whether T (a number or an array) is where Autolev's loop stops."""
@@ -355,8 +372,9 @@ def _step(solver, name: str, stats: dict) -> None:
 
 def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, progress,
                 stats) -> dict:
-    """Rows at the print times of `blocks` (arrays of times after t, up to t_end) from a
-    scipy solver started at (t, y)."""
+    """Rows at the print times of `blocks` (arrays of times after t, up to t_end) from
+    a scipy solver started at (t, y) and bounded by t_end (scipy's solvers take their
+    end once, at the start)."""
     if t_end == t:
         return stats
     solver = scipy.integrate._ivp.ivp.METHODS[name](
@@ -365,7 +383,7 @@ def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, 
     for times in blocks:
         k = 0
         while k < len(times):
-            if solver.status == "finished":    # t_end reached exactly: the rest coincide
+            if solver.status == "finished":    # the end reached exactly: the rest coincide
                 for tk in times[k:].tolist():
                     on_row(tk, solver.y.copy())
                 break
@@ -392,16 +410,12 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
                         on_stiff) -> dict:
     from . import cloop
     t0 = schedule.tinitial
-    t_end = schedule.final_time()
-    if t_end == t0:
-        return {"method": method, "evaluations": 0, "steps": 0, "compiled": True}
     opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
-            "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives,
-            "t_bound": t_end}
+            "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives}
     if method == "kutta-merson":
-        blocks = schedule.blocks()
+        blocks = ((times, printed, None) for times, printed in schedule.blocks())
     else:
-        blocks = ((times, None) for times in schedule.print_blocks())
+        blocks = ((times, None, end) for times, end in schedule.bounded_print_blocks())
 
     def on_rows(ts, rows):
         for tk, yk in zip(ts.tolist(), rows):
@@ -421,9 +435,9 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
             switch = "dop853"
         stats["switched_to"] = switch
         more = {"method": switch, "evaluations": 0, "steps": 0}
-        rest = itertools.chain([out["rest"]], (times for times, _ in blocks))
-        _scipy_rows(f, out["y"], out["t"], rest, t_end, SCIPY_METHODS[switch], schedule,
-                    abserr, relerr, on_row, progress, more)
+        rest = itertools.chain([out["rest"]], (times for times, _, _ in blocks))
+        _scipy_rows(f, out["y"], out["t"], rest, schedule.final_time(),
+                    SCIPY_METHODS[switch], schedule, abserr, relerr, on_row, progress, more)
         stats["evaluations"] += more["evaluations"]
         stats["steps"] += more["steps"]
         return stats
