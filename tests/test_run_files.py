@@ -8,6 +8,7 @@ import subprocess
 import sys
 import time
 
+import numpy as np
 import pytest
 
 import autolev
@@ -142,3 +143,14 @@ def test_two_cli_runs_into_one_folder(model, tmp_path):
     finally:
         slow.kill()
         slow.communicate()
+
+
+def test_a_run_that_keeps_only_its_last_row_writes_the_same_files(model, tmp_path):
+    kept = model.simulate(out_dir=tmp_path / "a", TFINAL=1)
+    last = model.simulate(out_dir=tmp_path / "b", TFINAL=1, keep_rows=False)
+    assert snapshot(tmp_path / "a") == snapshot(tmp_path / "b")
+    assert len(kept.t) == 101 and kept.stats["rows"] == last.stats["rows"] == 101
+    assert len(last.t) == 1 and last.t[0] == kept.t[-1]
+    assert np.array_equal(last.states[0], kept.states[-1])
+    assert np.array_equal(last.outputs[1].data[0], kept.outputs[1].data[-1])
+    assert last.stats["cond_max"] == kept.stats["cond_max"]
