@@ -154,3 +154,20 @@ def test_a_run_that_keeps_only_its_last_row_writes_the_same_files(model, tmp_pat
     assert np.array_equal(last.states[0], kept.states[-1])
     assert np.array_equal(last.outputs[1].data[0], kept.outputs[1].data[-1])
     assert last.stats["cond_max"] == kept.stats["cond_max"]
+
+
+def test_a_folder_that_refuses_files_is_one_message_and_no_partial_set(model, tmp_path,
+                                                                       monkeypatch):
+    # root may write anywhere: the refusal of a read-only folder is the kernel's EACCES
+    real_open = os.open
+
+    def read_only(path, flags, *args, **kw):
+        if str(path).endswith(files.PART):
+            raise PermissionError(errno.EACCES, "Permission denied", str(path))
+        return real_open(path, flags, *args, **kw)
+    monkeypatch.setattr(files.os, "open", read_only)
+    out = tmp_path / "out"
+    with pytest.raises(AutolevModelError, match=f"cannot write the output files into {out}: "
+                       "Permission denied"):
+        model.simulate(out_dir=out, TFINAL=0.2)
+    assert list(out.iterdir()) == []
