@@ -112,7 +112,9 @@ def run_model(args) -> dict:
 
 def _run_code(model, out: dict) -> None:
     """Perform the model's CODE commands with its INPUT values (files into a temporary
-    folder): 'ok', 'integration failed' (Autolev's failure: rows kept) or an error."""
+    folder): 'ok', or why not, said to be 'before the build' (nothing was compiled for
+    the command) or 'after the build' (its numeric system was built: a failure found
+    that late cost the user the build)."""
     import tempfile
     import warnings
 
@@ -124,15 +126,19 @@ def _run_code(model, out: dict) -> None:
     with tempfile.TemporaryDirectory() as tmp, warnings.catch_warnings():
         warnings.simplefilter("ignore")
         for command in model.code_commands:
+            systems = model.__dict__.setdefault("_numeric_systems", {})
             try:
                 r = run_command(model, command, out_dir=tmp)
             except AutolevModelError as exc:
-                outcomes.append(f"error: {str(exc).splitlines()[0][:160]}")
+                when = ("after the build" if any(k[0] == id(command) for k in systems)
+                        else "before the build")
+                outcomes.append(f"error {when}: {str(exc).splitlines()[0][:160]}")
                 continue
             except _Timeout:
                 outcomes.append("did not finish in the time limit")
                 break
-            outcomes.append("ok" if r.ok else f"integration failed: {r.failure[:120]}")
+            outcomes.append("ok" if r.ok else
+                            f"integration failed after the build: {r.failure[:120]}")
     out["run"] = outcomes
 
 
@@ -188,8 +194,13 @@ def main() -> int:
         done = [r for r in coded if r.get("run") and all(o == "ok" for o in r["run"])]
         failed = [r for r in coded if r.get("run") and any(o.startswith("integration")
                                                            for o in r["run"])]
+        late = [r for r in coded if r.get("run") and any("after the build" in o
+                                                          for o in r["run"])]
+        early = [r for r in coded if r.get("run") and any("before the build" in o
+                                                           for o in r["run"])]
         print(f"run      : {len(done)}/{len(coded)} models with a CODE command run every "
-              f"one to completion; {len(failed)} stop with Autolev's integration failure")
+              f"one to completion; {len(failed)} stop with Autolev's integration failure; "
+              f"{len(late)} fail after the build, {len(early)} are stopped before it")
         for r in coded:
             if r not in done:
                 print(f"  {r['id']}: run: " + "; ".join(r.get("run") or ["not built"]))

@@ -85,8 +85,8 @@ def test_halving_failure_is_the_same_in_c_and_python():
 
 def test_singular_mass_matrix_stops_both_loops_at_the_same_place():
     m = load("zero_inputs")               # L = 0: M = m L^2 = 0
-    a = run(m, compiled=True)
-    b = run(m, compiled=False)
+    a = run(m, compiled=True, missing_values="zero")
+    b = run(m, compiled=False, missing_values="zero")
     assert not a.ok and "singular" in a.failure
     assert a.failure == b.failure
     assert np.array_equal(a.states, b.states)
@@ -236,6 +236,6 @@ def test_fast_path_returns_fresh_arrays_and_reports_singularity():
     zero = load("zero_inputs")                # L = 0: a singular mass matrix
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        s = zero.simulate().system
+        s = zero.simulate(missing_values="zero").system
     with pytest.raises(SingularMassMatrix):
         s.derivatives(0.0, np.array([0.1, 0.0]))

@@ -353,9 +353,25 @@ def test_overrides_use_the_inputs_units_and_unknown_names_are_refused():
         quiet_simulate(m, LENGTH=2)
 
 
-def test_missing_constant_is_zero_warned_and_named_when_the_run_fails():
-    with pytest.warns(UserWarning, match="no INPUT value for L"):
-        r = load("zero_inputs").simulate()
+def test_missing_constant_stops_the_run_before_the_build_unless_zero_is_asked(tmp_path,
+                                                                               monkeypatch):
+    from autolev.runtime.numerics import system as numeric_system
+    compiled = []
+    real = numeric_system.compile_program
+    monkeypatch.setattr(numeric_system, "compile_program",
+                        lambda *a, **kw: compiled.append(a[2]) or real(*a, **kw))
+    model = load("zero_inputs")
+    with pytest.raises(autolev.runtime.MissingValues,
+                       match=r"1 constant of zero_inputs.c has no value: L\."):
+        model.simulate(out_dir=tmp_path)
+    assert compiled == []                       # refused before anything was compiled
+    template = tmp_path / "zero_inputs-template.in"
+    assert [p.name for p in tmp_path.iterdir()] == [template.name]
+    assert "Constant             L                    UNITS           | 0.0" in \
+        template.read_text()
+    with pytest.warns(UserWarning, match="no value for L: using 0"):
+        r = model.simulate(missing_values="zero")
+    assert compiled                             # now built
     assert not r.ok
     assert "constants that are 0: L" in r.failure
     assert len(r.t) == 1                        # the row where it stopped

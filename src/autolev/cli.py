@@ -210,7 +210,8 @@ def cmd_run(ns: argparse.Namespace) -> int:
                                  backend=ns.backend, infile=ns.infile,
                                  progress=None if ns.quiet else sys.stderr,
                                  overrides=overrides, quirks=ns.quirks,
-                                 keep_rows=bool(ns.plot))
+                                 keep_rows=bool(ns.plot),
+                                 missing_values="zero" if ns.zero_missing else "refuse")
         except AutolevModelError as exc:
             text = str(exc)
             if not text.startswith("CODE"):
@@ -356,6 +357,9 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--no-quirks", dest="quirks", action="store_false",
                      help="compute the values meant where Autolev's programs computed "
                      "others (a quantity named i1 in a C program's outputs)")
+    run.add_argument("--zero-missing", action="store_true",
+                     help="give 0 to constants that have no value (INPUT, --in or --set) "
+                     "instead of stopping before the build")
     run.add_argument("-q", "--quiet", action="store_true")
     run.set_defaults(func=cmd_run)
 

@@ -3,13 +3,14 @@
     import autolev.runtime as al
     model = al.Model("pendulum")
 """
+from .errors import MissingValues
 from .model import KaneEquations, Model
 from .point import Body, Particle, Point
 from .symbols import TIME, Z, derivative, derivatives
 from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
 
 __all__ = ["Model", "KaneEquations", "Frame", "Vector", "Dyadic", "Point", "Particle",
-           "Body", "AutolevModelError", "TIME", "Z", "derivative", "derivatives", "outer"]
+           "Body", "AutolevModelError", "MissingValues", "TIME", "Z", "derivative", "derivatives", "outer"]
 from .functions import *  # noqa: E402,F401,F403  (Autolev's functions: al.dot, al.express, ...)
 from .functions import __all__ as _functions_all  # noqa: E402
 

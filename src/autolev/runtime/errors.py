@@ -3,3 +3,7 @@
 
 class AutolevModelError(Exception):
     """A model cannot do what a statement asks (missing mass, velocity, ...)."""
+
+
+class MissingValues(AutolevModelError):
+    """Constants a run needs have no value (raised before anything is compiled)."""

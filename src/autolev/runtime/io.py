@@ -109,7 +109,7 @@ class IOMixin:
     def simulate(self, *, method: str | None = None, backend: str = "auto",
                  infile=None, out_dir=None, specified=None, progress=None,
                  compiled: bool = True, constraints=None, quirks: bool = True,
-                 keep_rows: bool = True, **overrides):
+                 keep_rows: bool = True, missing_values: str = "refuse", **overrides):
         """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
         CODE command, else a plain simulation) with INPUT values, `overrides`
         (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
@@ -125,7 +125,8 @@ class IOMixin:
         constraints are part of the equations).  `quirks=False`: the values meant where
         Autolev's programs computed others (docs/language.md).  `keep_rows=False`: the
         Result holds only the last row (a long run into out_dir then needs no memory
-        for its rows).
+        for its rows).  `missing_values="zero"`: constants without a value are 0 (with a
+        warning) instead of stopping the run before it is compiled (MissingValues).
         Returns a Result (times, states and outputs as numpy arrays)."""
         from .numerics.run import run_command
         command = None
@@ -142,7 +143,8 @@ class IOMixin:
         return run_command(self, command, out_dir=out_dir, method=method, backend=backend,
                            infile=infile, specified=specified, progress=progress,
                            overrides=overrides, compiled=compiled,
-                           constraints=constraints, quirks=quirks, keep_rows=keep_rows)
+                           constraints=constraints, quirks=quirks, keep_rows=keep_rows,
+                           missing_values=missing_values)
 
 
 @dataclass

@@ -232,17 +232,36 @@ class Inputs:
                              f"uses {unit or 'no unit'}; read as {unit or 'a plain number'}")
             self.values[key] = Value(value, unit, f"{path.name}:{lineno}")
         if strangers:
-            notes.append(f"{path}:{strangers[0][0]}: " + _some(n for _, n in strangers)
+            notes.append(f"{path}:{strangers[0][0]}: " + some_names(n for _, n in strangers)
                          + (" is not an input" if len(strangers) == 1 else
                             f" ({len(strangers)} names) are not inputs")
                          + " of this model; ignored")
         found = set(keys)
         absent = [k for k in self.names if k not in found]
         if absent:
-            notes.append(f"{path}: no value for " + _some(map(display_name, absent))
+            notes.append(f"{path}: no value for " + some_names(map(display_name, absent))
                          + " (a file cut short?); "
                          + ("it keeps its" if len(absent) == 1 else "they keep their")
                          + " INPUT value or default")
+        return notes
+
+    def read_file_over_model(self, path, constants) -> list[str]:
+        """read_file, except that a file whose constants are all 0 (the template many
+        repositories ship, never filled in) gives none of them: they keep the model's
+        INPUT values, or have none."""
+        before = {k: self.values[k] for k in constants if k in self.values}
+        notes = self.read_file(path)
+        name = Path(path).name
+        read = [k for k in constants
+                if k in self.values and self.values[k].source.startswith(name + ":")]
+        if read and all(self.values[k].given == 0 for k in read):
+            notes.append(f"{path}: every constant in it is 0 (a template never filled "
+                         "in?): taken as giving none")
+            for k in read:
+                if k in before:
+                    self.values[k] = before[k]
+                else:
+                    del self.values[k]
         return notes
 
     def file_text(self, title: str, kinds: dict) -> str:
@@ -279,7 +298,7 @@ class Inputs:
         return "\n".join(lines) + "\n"
 
 
-def _some(names, shown: int = 8) -> str:
+def some_names(names, shown: int = 8) -> str:
     """A list of names, the first `shown` of them and how many more."""
     names = list(names)
     more = len(names) - shown

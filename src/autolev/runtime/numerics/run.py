@@ -20,11 +20,11 @@ import scipy.linalg
 import sympy as sm
 
 from .. import symbols as S
-from ..errors import AutolevModelError
+from ..errors import AutolevModelError, MissingValues
 from ..vector import Vector
 from . import units
 from .files import RunFiles, dir_text, encoded_text, safe_stem, termination_cleans_up
-from .inputs import INTEGRATION, Inputs, display_name
+from .inputs import INTEGRATION, Inputs, display_name, some_names
 from .integrate import IntegrationFailure, Progress, Schedule, integrate
 from .projection import Projector, constants_needed, integrate_projected
 from .system import Column, NumericSystem, SingularMassMatrix, scaled_condition
@@ -180,14 +180,20 @@ def program_method(filename: str) -> str:
 def run_command(model, command, out_dir=None, method: str | None = None,
                 backend: str = "auto", infile=None, specified=None, progress=None,
                 overrides=None, compiled: bool = True, constraints=None,
-                quirks: bool = True, keep_rows: bool = True) -> Result:
+                quirks: bool = True, keep_rows: bool = True,
+                missing_values: str = "refuse") -> Result:
     """Run one CODE command; files go to out_dir (None: no files).  `constraints`:
     configuration constraints g(q) (sympy expressions in the model's symbols) kept at
     their initial values by projecting the state onto them at every print time.
     `quirks`: compute what Autolev's programs computed where they were wrong
     (docs/language.md, "What Autolev's programs computed"); False: what was meant.
     `keep_rows=False`: the Result holds only the last row (the files hold them all),
-    so that memory does not grow with the length of the run."""
+    so that memory does not grow with the length of the run.  `missing_values`:
+    "refuse" (a constant the run needs without a value from INPUT, the .in file or
+    the overrides stops it before anything is compiled, MissingValues) or "zero"
+    (they are 0, with a warning)."""
+    if missing_values not in ("refuse", "zero"):
+        raise ValueError(f"missing_values: 'refuse' or 'zero', not {missing_values!r}")
     kind = command.kind
     method = method or program_method(command.filename)
     stem = safe_stem(command.filename)
@@ -202,6 +208,47 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     if kind == "nonlinear" and not equations:
         raise AutolevModelError("CODE NONLINEAR needs equations and unknowns: "
                                 "CODE NONLINEAR(EQ, x, y) file")
+    def inputs_of(system):
+        """The run's inputs (constants, initial values or guesses, integration
+        parameters): INPUT values, then the .in file, then the overrides.  Refuses, before
+        anything is compiled, constants that have no value from any of them."""
+        extra_constants = (constants_needed(system, constraints)
+                           if constraints and integrate_states else [])
+        constants = list(system.params) + extra_constants
+        kinds = {p: "Constant" for p in constants}
+        names = list(constants)
+        if integrate_states:
+            names += system.states
+            kinds.update({x: "Initial Value" for x in system.states})
+            integration = INTEGRATION
+        elif kind == "nonlinear":
+            names += unknowns
+            kinds.update({u: "Initial Guess" for u in unknowns})
+            integration = ("ABSERR", "RELERR")
+        else:
+            integration = ()
+        inputs = Inputs(model, names, integration, given=command.inputs,
+                        unit_table=command.units)
+        notes = []
+        if infile is not None:
+            notes += inputs.read_file_over_model(infile, constants)
+        for name, value in (overrides or {}).items():
+            inputs.set(name, value)
+        for note in notes:
+            warnings.warn(note, stacklevel=4)
+        missing = inputs.missing(constants)
+        if missing and missing_values == "refuse":
+            raise MissingValues(_missing_message(missing, inputs, kinds, out_dir, stem,
+                                                 command.filename))
+        inputs.fill_missing(constants)
+        if missing:
+            warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
+                          + ": using 0", stacklevel=4)
+        inputs.fill_missing(names)
+        inputs.check_finite()
+        _degree_rates_note(inputs, names)
+        return inputs, kinds, names, extra_constants
+
     build_start = time.perf_counter()
     # the numeric system of a command is built once per state of the model (repeated
     # simulate() calls with other inputs reuse its compiled functions)
@@ -209,6 +256,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     key = (id(command), backend, model._version, len(model.defs.rhs),
            id(model.kane_equations), len(model.outputs), len(model.encoded), quirks)
     system = cache.get(key)
+    prepared = []
     if system is None:
         with model.defs.as_of(command.definitions):
             system = NumericSystem(
@@ -217,9 +265,11 @@ def run_command(model, command, out_dir=None, method: str | None = None,
                 solved=unknowns if kind in ("algebraic", "nonlinear") else (),
                 extra=_solver_expressions(model.defs, kind, equations, unknowns),
                 zero=command.zero if kind == "dynamics" else None,
-                hidden_in_outputs=_hidden_in_outputs(command) if quirks else ())
+                hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
+                before_compiling=lambda s: prepared.append(inputs_of(s)))
         cache.clear()
         cache[key] = system
+    inputs, kinds, names, extra_constants = prepared[0] if prepared else inputs_of(system)
     build_seconds = time.perf_counter() - build_start
     if system.hidden_in_outputs:
         warnings.warn(
@@ -234,39 +284,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     if unassigned:
         warnings.warn("specified quantities without a definition or a function, set to 0: "
                       + ", ".join(map(str, unassigned)), stacklevel=2)
-
-    # inputs: constants, initial values (or guesses), integration parameters
-    extra_constants = (constants_needed(system, constraints)
-                       if constraints and integrate_states else [])
-    kinds = {p: "Constant" for p in system.params + extra_constants}
-    names = list(system.params) + extra_constants
-    if integrate_states:
-        names += system.states
-        kinds.update({x: "Initial Value" for x in system.states})
-        integration = INTEGRATION
-    elif kind == "nonlinear":
-        names += unknowns
-        kinds.update({u: "Initial Guess" for u in unknowns})
-        integration = ("ABSERR", "RELERR")
-    else:
-        integration = ()
-    inputs = Inputs(model, names, integration, given=command.inputs,
-                    unit_table=command.units)
-    notes = []
-    if infile is not None:
-        notes += inputs.read_file(infile)
-    for name, value in (overrides or {}).items():
-        inputs.set(name, value)
-    for note in notes:
-        warnings.warn(note, stacklevel=2)
     sweep = _sweep(model, command, inputs)
-    missing = inputs.fill_missing(system.params + extra_constants)
-    if missing:
-        warnings.warn("no INPUT value for " + ", ".join(display_name(k) for k in missing)
-                      + ": using 0", stacklevel=2)
-    inputs.fill_missing(names)
-    inputs.check_finite()
-    _degree_rates_note(inputs, names)
 
     system.set_parameters(inputs.vector(system.params))
     if integrate_states:
@@ -321,6 +339,37 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         finally:
             run_files.release()
     return result
+
+
+def _missing_message(missing, inputs, kinds, out_dir, stem: str, program: str) -> str:
+    """What is missing, how to give it, and where a template to fill in was written
+    (the run's output folder; an existing file is never replaced)."""
+    text = (f"{len(missing)} constant{'s' if len(missing) > 1 else ''} of {program} "
+            f"{'have' if len(missing) > 1 else 'has'} no value: "
+            + some_names(map(display_name, missing), 12)
+            + ".  Autolev's program read them from its .in file; give them with --in FILE "
+            "(an Autolev .in file), --set NAME=VALUE (in the model's units), or INPUT "
+            "statements in the model (--zero-missing, or missing_values='zero', runs with "
+            "0 for each)")
+    if out_dir is None:
+        return text
+    template = Path(out_dir) / f"{stem}-template.in"
+    filled = {k: inputs.values.get(k) for k in inputs.names}
+    inputs.fill_missing(inputs.names, "template")
+    try:
+        folder = Path(out_dir)
+        folder.mkdir(parents=True, exist_ok=True)
+        with open(template, "x", encoding="utf-8", newline="\n") as h:
+            h.write(inputs.file_text(template.name, kinds))
+        text += f"; a template to fill in, with every input: {template}"
+    except FileExistsError:
+        text += f"; the template {template} from before is still there (fill it in)"
+    except OSError as exc:
+        text += f" (no template written: {exc.strerror})"
+    for k, v in filled.items():
+        if v is None:
+            inputs.values.pop(k, None)
+    return text
 
 
 @contextmanager

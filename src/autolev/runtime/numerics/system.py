@@ -90,11 +90,13 @@ class NumericSystem:
     integrates by solving the equations for the unknown derivatives at each step, in
     place of Kane's equations.  `solved`: symbols whose values the caller supplies at
     output time (the unknowns of ALGEBRAIC/NONLINEAR); `extra`: {name: [expressions]}
-    compiled with the outputs' inputs."""
+    compiled with the outputs' inputs.  `before_compiling(system)`: called once the
+    states, parameters and specified quantities are known, before anything is
+    compiled (a run checks its inputs there: a refusal then costs no compilation)."""
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, implicit=None, solved=(), extra=None,
-                 zero=None, hidden_in_outputs=()):
+                 zero=None, hidden_in_outputs=(), before_compiling=None):
         self.model = m = model
         self._zero = zero
         self.backend = backend
@@ -156,6 +158,8 @@ class NumericSystem:
                 used |= defs.free(s)
         self.constant_defs = [s for s in const_defs if s in used]
         c_syms = self.params + self.constant_defs
+        if before_compiling is not None:
+            before_compiling(self)
 
         self.nstate = len(self.states)
         inputs = {"t": [S.TIME], "x": self.states, "c": c_syms, "s": self.specified}

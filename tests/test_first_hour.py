@@ -1,0 +1,120 @@
+"""A user's first hour with a legacy model (issue 19): models published without their
+parameter values are stopped before the build, told what is missing and how to give
+it, and handed a template to fill in."""
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import autolev
+
+# a pendulum whose constants were typed into Autolev's .in file, not the model: only M
+# and the initial angle have INPUT values
+PENDULUM = """NEWTONIAN N
+BODIES A
+POINTS O
+VARIABLES Q'
+MOTIONVARIABLES' U'
+CONSTANTS M, L, G, I
+SIMPROT(N, A, 3, Q)
+Q' = U
+W_A_N> = U*N3>
+P_O_AO> = L*A1>
+V_AO_N> = DT(P_O_AO>, N)
+MASS A = M
+INERTIA A, 0, 0, I
+GRAVITY(G*N1>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT Q = 30 DEG, M = 1
+OUTPUT T, Q DEG, U
+CODE DYNAMICS() pend.c
+"""
+
+
+@pytest.fixture
+def model_file(tmp_path):
+    path = tmp_path / "pend.al"
+    path.write_text(PENDULUM)
+    return path
+
+
+def cli(*args):
+    return subprocess.run([sys.executable, "-m", "autolev", *map(str, args)],
+                          capture_output=True, text=True)
+
+
+def fill(template, values: dict) -> str:
+    """The template with values written into column 60, as a user would."""
+    out = []
+    for line in template.read_text().splitlines():
+        name = line[21:42].strip()
+        if len(line) > 58 and line[58] == "|" and name in values:
+            line = line[:59] + f" {values[name]}"
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def test_missing_values_stop_the_run_with_what_to_do_and_a_template(model_file, tmp_path):
+    out = tmp_path / "out"
+    r = cli("run", model_file, "--out", out)
+    assert r.returncode == 1 and "Traceback" not in r.stderr
+    assert "3 constants of pend.c have no value: G, I, L." in r.stderr
+    assert "--in FILE" in r.stderr and "--set NAME=VALUE" in r.stderr
+    template = out / "pend-template.in"
+    assert f"a template to fill in, with every input: {template}" in r.stderr
+    assert sorted(p.name for p in out.iterdir()) == ["pend-template.in"]   # no run files
+    # filled in and given back, the run uses its values: a compound pendulum, whose
+    # small-angle period is 2 pi sqrt((I + M L^2) / (M G L))
+    (tmp_path / "mine.in").write_text(fill(template, {"G": 9.81, "L": 0.5, "I": 0.02,
+                                                      "Q": 1, "TFINAL": 4,
+                                                      "INTEGSTP": 0.001}))
+    r = cli("run", model_file, "--out", out, "--in", tmp_path / "mine.in")
+    assert r.returncode == 0, r.stderr
+    rows = np.loadtxt(out / "pend.1", comments="%")
+    t, q = rows[:, 0], rows[:, 1]
+    period = 2 * math.pi * math.sqrt((0.02 + 0.25) / (9.81 * 0.5))
+    crossings = t[1:][(q[:-1] > 0) & (q[1:] <= 0)]
+    assert abs((crossings[1] - crossings[0]) - period) < 2e-3
+    # a second refusal does not replace the template the user may be filling in
+    template.write_text(template.read_text() + "% my notes\n")
+    r = cli("run", model_file, "--out", out)
+    assert r.returncode == 1 and "from before is still there" in r.stderr
+    assert template.read_text().endswith("% my notes\n")
+
+
+def test_an_all_zero_in_file_is_a_template_never_filled_in(model_file, tmp_path):
+    model = autolev.load(model_file)
+    with pytest.raises(autolev.runtime.MissingValues):
+        model.simulate(out_dir=tmp_path)
+    template = tmp_path / "pend-template.in"
+    zeros = tmp_path / "zeros.in"
+    zeros.write_text(fill(template, {"M": 0}))        # every constant 0
+    with pytest.warns(UserWarning, match="every constant in it is 0"):
+        with pytest.raises(autolev.runtime.MissingValues,
+                           match="3 constants of pend.c have no value: G, I, L"):
+            model.simulate(infile=zeros)              # M keeps its INPUT value
+
+
+def test_zero_for_missing_values_on_request(model_file):
+    model = autolev.load(model_file)
+    with pytest.warns(UserWarning, match="no value for G, I, L: using 0"):
+        r = model.simulate(missing_values="zero", TFINAL=0.1)
+    # L = I = 0: a massless point at the pivot, whose mass matrix is singular
+    assert not r.ok and "constants that are 0: G, I, L" in r.failure
+    r = cli("run", model_file, "--zero-missing", "--out", model_file.parent / "z")
+    assert r.returncode == 1 and "no value for G, I, L: using 0" in r.stderr
+    assert "singular" in r.stderr
+
+
+def test_set_gives_the_missing_values(model_file, tmp_path):
+    r = cli("run", model_file, "--out", tmp_path / "o", "--set", "G=9.81", "--set", "L=1",
+            "--set", "I=0", "--tfinal", "0.5")
+    assert r.returncode == 0, r.stderr
+    rows = np.loadtxt(tmp_path / "o" / "pend.1", comments="%")
+    # a point mass on a rod of length 1: Q'' = -G sin Q; energy is conserved
+    q, u = np.radians(rows[:, 1]), rows[:, 2]
+    energy = 0.5 * u ** 2 - 9.81 * np.cos(q)
+    assert np.ptp(energy) < 1e-6 and rows[-1, 0] == pytest.approx(0.5)
