@@ -118,3 +118,86 @@ def test_set_gives_the_missing_values(model_file, tmp_path):
     q, u = np.radians(rows[:, 1]), rows[:, 2]
     energy = 0.5 * u ** 2 - 9.81 * np.cos(q)
     assert np.ptp(energy) < 1e-6 and rows[-1, 0] == pytest.approx(0.5)
+
+
+# -- options that surprised (item 4) --------------------------------------------------------
+TWO_PROGRAMS = """VARIABLES X'
+CONSTANTS K
+SPECIFIED F, G
+F = 2*T
+INPUT K = 2, X = 1, TFINAL = 1
+X' = -K*X + F + G
+OUTPUT T, X
+CODE ODE() decay.c
+Y = K^2
+OUTPUT Y
+CODE ALGEBRAIC() square.c
+"""
+
+
+@pytest.fixture
+def two_programs(tmp_path):
+    path = tmp_path / "two.al"
+    path.write_text(TWO_PROGRAMS)
+    return path
+
+
+def test_options_apply_where_they_mean_something(two_programs, tmp_path):
+    out = tmp_path / "out"
+    r = cli("run", two_programs, "--out", out, "--tfinal", "2", "--set", "K=3")
+    assert r.returncode == 0, r.stderr
+    assert "TFINAL is not an input of CODE ALGEBRAIC square.c: ignored there" in r.stderr
+    decay = np.loadtxt(out / "decay.1", comments="%")
+    # X' = -3 X + 2 T (G unassigned: 0), X(0) = 1: X = (1 + 2/9) e^(-3T) + 2T/3 - 2/9
+    t = decay[-1, 0]
+    assert t == pytest.approx(2.0)
+    expected = (1 + 2 / 9) * math.exp(-3 * t) + 2 * t / 3 - 2 / 9
+    assert decay[-1, 1] == pytest.approx(expected, rel=1e-6)
+    assert np.loadtxt(out / "square.2", comments="%").item() == pytest.approx(9.0)
+
+
+def test_a_set_name_the_model_does_not_have_writes_nothing(two_programs, tmp_path):
+    r = cli("run", two_programs, "--out", tmp_path / "out", "--set", "KK=3")
+    assert r.returncode == 2
+    assert "--set KK: the model has no quantity of that name" in r.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_choosing_the_code_command(two_programs, tmp_path):
+    model = autolev.load(two_programs)
+    assert model.simulate(code="square.c").kind == "algebraic"
+    assert model.simulate(code="SQUARE").outputs[1]["Y"][0] == pytest.approx(4.0)
+    assert model.simulate(code=0).kind == "ode"
+    with pytest.raises(autolev.runtime.AutolevModelError,
+                       match=r"no CODE command 'sq' \(the model's: 0: decay.c, 1: square.c\)"):
+        model.simulate(code="sq")
+    r = cli("run", two_programs, "--out", tmp_path / "o", "--code", "1")
+    assert r.returncode == 0 and sorted(p.name for p in (tmp_path / "o").iterdir()) == \
+        ["square.1", "square.2", "square.dir", "square.in"]
+
+
+def test_a_function_for_a_defined_specified_is_refused(two_programs):
+    model = autolev.load(two_programs)
+    with pytest.raises(autolev.runtime.AutolevModelError,
+                       match=r"F is defined in the model \(F = 2\*t\)"):
+        model.simulate(specified={"F": lambda t: 0.0})
+    r = model.simulate(specified={"G": lambda t: 1.0}, TFINAL=1)
+    # X' = -2 X + 2 T + 1, X(0) = 1: X = e^(-2T) + T
+    assert np.allclose(r["X"], np.exp(-2 * r.t) + r.t, rtol=1e-6)
+
+
+def test_paths_given_as_strings_and_outputs_asked_by_name(two_programs):
+    text = autolev.transpile(str(two_programs))
+    assert "model.code('ode', 'decay.c'" in text
+    with pytest.raises(autolev.AutolevFileError, match="nothere.al: cannot read"):
+        autolev.transpile(str(two_programs.parent / "nothere.al"))
+    assert autolev.parse("X = 1").statements[0].kind == "assignment"   # text stays text
+    r = autolev.load(str(two_programs)).simulate(code="decay.c")
+    assert "X" in r.outputs[0] and "x" in r.outputs[0] and "Y" not in r.outputs[0]
+
+
+def test_check_names_a_missing_file_once(tmp_path):
+    r = cli("check", tmp_path / "gone.al")
+    assert r.returncode == 1
+    assert r.stdout.count("gone.al") == 1
+    assert f"{tmp_path / 'gone.al'}: error: cannot read: No such file or directory" in r.stdout

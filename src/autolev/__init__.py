@@ -24,14 +24,16 @@ __all__ = ["parse", "transpile", "load", "verify", "Program", "AutolevError", "A
 def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
     """Read Autolev source into a `Program`.
 
-    `source` is the text of a model, or a path (`pathlib.Path`) to read.  `filename`
-    names the model in diagnostics; user macros (NAME.A) and `RUN` files are looked
-    up next to it.  Raises `AutolevSyntaxError` with all diagnostics when the model
-    cannot be read.
+    `source` is the text of a model, or a path to read: a `pathlib.Path`, or a string
+    of one line that names a file (or ends in .al, then a missing file is an error).
+    `filename` names the model in diagnostics; user macros (NAME.A) and `RUN` files are
+    looked up next to it.  Raises `AutolevSyntaxError` with all diagnostics when the
+    model cannot be read, `AutolevFileError` when its file cannot.
     """
     from .irbuild import Builder, sort_key
     from .source import SourceFile
 
+    source = _as_path(source)
     if isinstance(source, os.PathLike):
         src = SourceFile.read(source, filename or os.fspath(source))
         path: Path | None = Path(source)
@@ -45,6 +47,16 @@ def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
     program = builder.program()
     program.diagnostics.sort(key=sort_key)
     return program
+
+
+def _as_path(source):
+    """A string that is a file's name, as a Path; model text is left as it is."""
+    if not isinstance(source, str) or "\n" in source or "\r" in source:
+        return source
+    name = source.strip()
+    if name and (name.lower().endswith((".al", ".all")) or os.path.isfile(name)):
+        return Path(name)
+    return source
 
 
 def translation(source: str | os.PathLike, filename: str | None = None):

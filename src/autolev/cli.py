@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from . import __version__
-from .errors import AutolevError, AutolevSyntaxError, Diagnostic
+from .errors import AutolevError, AutolevFileError, AutolevSyntaxError, Diagnostic
 
 MODEL_SUFFIXES = (".al",)
 MACRO_SUFFIXES = (".a",)
@@ -61,7 +61,10 @@ def cmd_check(ns: argparse.Namespace) -> int:
     for path in files:
         try:
             diags = check_file(path)
-        except AutolevError as exc:   # unreadable file
+        except AutolevFileError as exc:
+            diags = []
+            failure = exc.reason
+        except AutolevError as exc:
             diags = []
             failure = str(exc)
         else:
@@ -153,7 +156,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
     from .runtime.io import CodeCommand
     from .runtime.numerics.integrate import METHODS
     from .runtime.numerics.files import safe_stem
-    from .runtime.numerics.run import run_command
+    from .runtime.numerics.run import names_a_quantity, run_command
 
     warnings.showwarning = _print_warning
     path = Path(ns.file)
@@ -191,10 +194,25 @@ def cmd_run(ns: argparse.Namespace) -> int:
         commands = [CodeCommand("dynamics", f"{path.stem}.c", [], None, (),
                                 n_outputs=len(model.outputs), n_encoded=len(model.encoded),
                                 inputs=dict(model.inputs), units=dict(model.unit_of))]
+    unknown = [name for name in overrides if not names_a_quantity(model, name)]
+    if unknown:
+        print(f"autolev run: --set {', '.join(unknown)}: the model has no quantity of "
+              f"{'that name' if len(unknown) == 1 else 'those names'}", file=sys.stderr)
+        return 2
+    chosen = list(range(len(commands)))
+    if ns.code:
+        try:
+            picked = {id(model.code_command(int(name) if name.isdigit() else name))
+                      for name in ns.code}
+        except AutolevModelError as exc:
+            print(f"autolev run: --code: {exc}", file=sys.stderr)
+            return 2
+        chosen = [k for k, c in enumerate(commands) if id(c) in picked]
     out_dir = Path(ns.out)
     status = 0
     written_by: dict[str, str] = {}
-    for k, command in enumerate(commands):
+    for k in chosen:
+        command = commands[k]
         where = locations[k] if k < len(locations) and locations[k] is not None else None
         label = (f"{where.start.file}:{where.start.line}" if where is not None else str(path))
         stem = safe_stem(command.filename).lower()
@@ -357,6 +375,9 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--no-quirks", dest="quirks", action="store_false",
                      help="compute the values meant where Autolev's programs computed "
                      "others (a quantity named i1 in a C program's outputs)")
+    run.add_argument("--code", action="append", metavar="FILE",
+                     help="run only this CODE command (its file name, e.g. bike.c, or "
+                     "its 0-based index); repeatable")
     run.add_argument("--zero-missing", action="store_true",
                      help="give 0 to constants that have no value (INPUT, --in or --set) "
                      "instead of stopping before the build")

@@ -152,7 +152,12 @@ class AutolevSyntaxError(AutolevError):
 
 
 class AutolevFileError(AutolevError):
-    """A model file could not be found or read."""
+    """A model file could not be found or read: `path`, and `reason` (why)."""
+
+    def __init__(self, path, reason: str):
+        self.path = path
+        self.reason = reason
+        super().__init__(f"{path}: {reason}")
 
 
 class AutolevTranslationError(AutolevError):

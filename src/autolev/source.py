@@ -60,7 +60,7 @@ class SourceFile:
         try:
             raw = p.read_bytes()
         except OSError as exc:
-            raise AutolevFileError(f"{p}: cannot read: {exc.strerror or exc}") from None
+            raise AutolevFileError(p, f"cannot read: {exc.strerror or exc}") from None
         return cls(name or str(path), decode(raw), p)
 
     def line_text(self, line: int) -> str | None:

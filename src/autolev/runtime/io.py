@@ -106,10 +106,30 @@ class IOMixin:
                       + "".join(f"\n  wrote {f}" for f in r.files))
         return results
 
+    def code_command(self, which):
+        """A CODE command by its file name (any case, the extension optional: "bike.c",
+        "BIKE") or its 0-based index among the model's CODE commands."""
+        from .numerics.files import safe_stem
+        commands = list(self.code_commands)
+        if isinstance(which, int) and not isinstance(which, bool):
+            if 0 <= which < len(commands):
+                return commands[which]
+        else:
+            wanted = str(which).strip().lower()
+            for c in commands:
+                if c.filename.lower() == wanted:
+                    return c
+            found = [c for c in commands if safe_stem(c.filename).lower() == wanted]
+            if len(found) == 1:
+                return found[0]
+        shown = ", ".join(f"{k}: {c.filename}" for k, c in enumerate(commands)) or "none"
+        raise AutolevModelError(f"no CODE command {which!r} (the model's: {shown})")
+
     def simulate(self, *, method: str | None = None, backend: str = "auto",
                  infile=None, out_dir=None, specified=None, progress=None,
                  compiled: bool = True, constraints=None, quirks: bool = True,
-                 keep_rows: bool = True, missing_values: str = "refuse", **overrides):
+                 keep_rows: bool = True, missing_values: str = "refuse", code=None,
+                 **overrides):
         """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
         CODE command, else a plain simulation) with INPUT values, `overrides`
         (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
@@ -127,10 +147,11 @@ class IOMixin:
         Result holds only the last row (a long run into out_dir then needs no memory
         for its rows).  `missing_values="zero"`: constants without a value are 0 (with a
         warning) instead of stopping the run before it is compiled (MissingValues).
+        `code`: which CODE command to run (see code_command).
         Returns a Result (times, states and outputs as numpy arrays)."""
         from .numerics.run import run_command
-        command = None
-        for c in self.code_commands:
+        command = self.code_command(code) if code is not None else None
+        for c in self.code_commands if command is None else ():
             if c.kind in ("dynamics", "ode"):
                 command = c
                 break

@@ -49,6 +49,10 @@ class OutputTable:
                 return self.data[:, j]
         raise KeyError(label)
 
+    def __contains__(self, label) -> bool:
+        return isinstance(label, str) and any(n.upper() == label.upper()
+                                              for n in self.labels)
+
 
 @dataclass
 class Result:
@@ -232,8 +236,16 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         notes = []
         if infile is not None:
             notes += inputs.read_file_over_model(infile, constants)
+        elsewhere = []                    # the model's, but not inputs of this command
         for name, value in (overrides or {}).items():
+            if inputs.lookup(name) is None and names_a_quantity(model, name):
+                elsewhere.append(name)
+                continue
             inputs.set(name, value)
+        if elsewhere:
+            notes.append(", ".join(elsewhere) + f" {'is' if len(elsewhere) == 1 else 'are'}"
+                         f" not {'an input' if len(elsewhere) == 1 else 'inputs'} of "
+                         f"CODE {kind.upper()} {command.filename}: ignored there")
         for note in notes:
             warnings.warn(note, stacklevel=4)
         missing = inputs.missing(constants)
@@ -278,7 +290,11 @@ def run_command(model, command, out_dir=None, method: str | None = None,
             + " (its output routine's counter `int i1` hides the model's i1); reproduced "
             "as it printed them (--no-quirks, or quirks=False, for the values meant)",
             stacklevel=2)
-    system.set_specified({_find_symbol(model, k): v for k, v in (specified or {}).items()})
+    functions = {_find_symbol(model, k): v for k, v in (specified or {}).items()}
+    unused = [sym for sym in functions if sym not in system.set_specified(functions)]
+    if unused:
+        raise AutolevModelError("specified: " + "; ".join(
+            _unused_specified(model, system, sym) for sym in unused))
     given_fns = {i for i, _ in system._spec_fns}
     unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
     if unassigned:
@@ -401,6 +417,35 @@ def _solver_expressions(defs, kind: str, equations: list, unknowns: list) -> dic
         return {"residual": list(equations),
                 "jacobian": [d for row in defs.jacobian(equations, unknowns) for d in row]}
     return None
+
+
+def names_a_quantity(model, name: str) -> bool:
+    """Whether `name` (as --set or an override gives it: Q1, Q1', Q1P, TFINAL) is an
+    integration parameter or a quantity of the model."""
+    name = name.strip()
+    if name.upper() in INTEGRATION or name.upper() == "INTEGSTEP":
+        return True
+    primes = len(name) - len(name.upper().rstrip("P"))       # Q1PP is Q1''
+    for candidate in [name] + [name[:-k] + "'" * k for k in range(1, primes + 1)]:
+        try:
+            model.quantity(candidate)
+            return True
+        except KeyError:
+            continue
+    return False
+
+
+def _unused_specified(model, system, sym) -> str:
+    """Why a function given for `sym` would drive nothing."""
+    if model.defs.rhs.get(sym) is not None:
+        shown = str(model.defs.rhs[sym])
+        shown = shown if len(shown) <= 60 else shown[:57] + "..."
+        return (f"{sym} is defined in the model ({sym} = {shown}), so a "
+                "function for it would be ignored; functions drive only SPECIFIED "
+                "quantities the model leaves undefined (remove its definition to drive it)")
+    if sym in system.params or sym in system.states:
+        return f"{sym} is not a SPECIFIED quantity but an input (give it a value instead)"
+    return f"{sym} does not enter this run's equations or outputs"
 
 
 def _find_symbol(model, name):

@@ -345,13 +345,16 @@ class NumericSystem:
         if self.loop is not None:
             self.loop.set_values(self._c, self._s)
 
-    def set_specified(self, functions: dict) -> None:
-        """{symbol: callable f(t) or f(t, x)} for undefined specified quantities."""
+    def set_specified(self, functions: dict) -> set:
+        """{symbol: callable f(t) or f(t, x)} for undefined specified quantities;
+        returns the symbols used (a derivative's values come from its lower one's)."""
         self._spec_fns = []
+        used = set()
         for i, s in enumerate(self.specified):
             fn = functions.get(s)
             if fn is not None:
                 self._spec_fns.append((i, _as_time_state_function(fn)))
+                used.add(s)
             else:
                 base, k = S.base_and_order(s)
                 lower = [(S.derivative(base, j), j) for j in range(k - 1, -1, -1)]
@@ -360,7 +363,9 @@ class NumericSystem:
                         self._spec_fns.append(
                             (i, _finite_difference(_as_time_state_function(functions[low]),
                                                    k - j)))
+                        used.add(low)
                         break
+        return used
 
     def _fill_specified(self, t, x) -> np.ndarray:
         s = self._s
