@@ -370,7 +370,11 @@ def main() -> int:
                     "kutta-merson for C and Fortran, rk45 for Matlab's ode45)")
     ap.add_argument("--tolerance", type=float, default=1e-6)
     ap.add_argument("--keep", type=Path, help="keep our output files here")
+    ap.add_argument("--truth", type=Path, default=TRUTH,
+                    help="the folder of reference runs (index.tsv and one folder per run)")
     ns = ap.parse_args()
+    global TRUTH
+    TRUTH = ns.truth
     models = dict(corpus_models(ns.corpus))
     rows = [r for r in csv.DictReader(open(TRUTH / "index.tsv"), delimiter="\t")
             if r["status"].startswith(("ok", "failed")) and r["run"] != "-"]
