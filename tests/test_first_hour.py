@@ -2,6 +2,7 @@
 parameter values are stopped before the build, told what is missing and how to give
 it, and handed a template to fill in."""
 import math
+import re
 import subprocess
 import sys
 
@@ -201,3 +202,55 @@ def test_check_names_a_missing_file_once(tmp_path):
     assert r.returncode == 1
     assert r.stdout.count("gone.al") == 1
     assert f"{tmp_path / 'gone.al'}: error: cannot read: No such file or directory" in r.stdout
+
+
+# -- python model.py is autolev run (item 3) ------------------------------------------------
+def both_spellings(model_file, tmp_path, *options):
+    """`autolev run model.al` and `python model.py` of its conversion, each into a folder
+    of its own: (completed processes, folders)."""
+    converted = tmp_path / "converted.py"
+    r = cli("convert", model_file, "-o", converted)
+    assert r.returncode == 0, r.stderr
+    a = cli("run", model_file, "--out", tmp_path / "a", *options)
+    b = subprocess.run([sys.executable, str(converted), "--out", str(tmp_path / "b"),
+                        *map(str, options)], capture_output=True, text=True)
+    return (a, b), (tmp_path / "a", tmp_path / "b")
+
+
+def test_the_converted_module_runs_as_autolev_run(model_file, tmp_path):
+    (a, b), (da, db) = both_spellings(model_file, tmp_path, "--set", "G=9.81",
+                                      "--set", "L=1", "--set", "I=0.1", "--tfinal", "0.5")
+    assert a.returncode == b.returncode == 0, b.stderr
+    assert sorted(p.name for p in da.iterdir()) == sorted(p.name for p in db.iterdir())
+    for f in da.iterdir():
+        assert f.read_bytes() == (db / f.name).read_bytes(), f.name
+    def lines(out):           # the times taken differ from run to run
+        return [re.sub(r"\d+\.\d+ s\b", "_ s", x) for x in out.splitlines()
+                if "built in" not in x]
+    assert lines(a.stdout) == [x.replace(str(db), str(da)) for x in lines(b.stdout)]
+
+
+def test_the_converted_module_fails_as_autolev_run(model_file, tmp_path):
+    (a, b), _ = both_spellings(model_file, tmp_path)         # G, I, L have no value
+    assert a.returncode == b.returncode == 1
+    for r in (a, b):
+        assert "3 constants of pend.c have no value: G, I, L." in r.stderr
+        assert "Traceback" not in r.stderr
+    (a, b), _ = both_spellings(model_file, tmp_path, "--zero-missing")
+    assert a.returncode == b.returncode == 1                 # a singular mass matrix
+    failure = [x for x in a.stderr.splitlines() if "failed to converge" in x][0]
+    assert failure.split(": ", 1)[1] in b.stderr
+
+
+def test_an_edited_module_that_breaks_is_a_diagnostic_at_its_line(model_file, tmp_path):
+    converted = tmp_path / "converted.py"
+    cli("convert", model_file, "-o", converted)
+    lines = converted.read_text().splitlines()
+    k = next(i for i, x in enumerate(lines) if x.startswith("A.mass"))
+    lines[k] = lines[k].replace("= M", "= MM")
+    converted.write_text("\n".join(lines) + "\n")
+    r = subprocess.run([sys.executable, str(converted)], capture_output=True, text=True,
+                       cwd=tmp_path)
+    assert r.returncode == 1 and "Traceback" not in r.stderr
+    assert (f"{converted}:{k + 1}:1: error: this statement failed: NameError: name 'MM' is "
+            "not defined (Autolev: MASS A = M)") in r.stderr

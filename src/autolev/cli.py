@@ -134,9 +134,12 @@ def _load_for_run(path: Path):
     import autolev
     from autolev.irbuild import sort_key
 
-    from .loader import load_for_run
+    from .loader import load_for_run, load_python
     try:
-        model, notes = load_for_run(path)
+        if path.suffix.lower() == ".py":      # a converted model, as it now reads
+            model, notes = load_python(path), []
+        else:
+            model, notes = load_for_run(path)
     except (AutolevSyntaxError, autolev.AutolevTranslationError,
             autolev.AutolevRuntimeError) as exc:
         for d in sorted(exc.diagnostics, key=sort_key):

@@ -19,6 +19,10 @@ _STATEMENT_FAILURES = (AutolevModelError, TypeError, ValueError, ZeroDivisionErr
                        NonInvertibleMatrixError)
 
 
+# what an edited converted module can raise besides what its statements can
+_EDITING_SLIPS = (NameError, ImportError, AssertionError)
+
+
 def load_translation(translation, filename: str):
     """Run the generated module; return its model, with `namespace` and `names`."""
     name = "autolev_model"
@@ -52,7 +56,63 @@ def _diagnostic(exc: BaseException, translation, pyfile: str) -> Diagnostic:
     return Diagnostic(loc, "R001", message, "error", None)
 
 
-__all__ = ["load_translation"]
+def load_python(path) -> object:
+    """The model of a converted module (`python model.py`, `autolev run model.py`), as
+    the file now reads (the user may have edited it): a statement that fails, or text
+    that is not Python, is a diagnostic at its line, with the Autolev statement the
+    comments above it quote."""
+    from pathlib import Path
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        from .errors import AutolevFileError
+        raise AutolevFileError(p, f"cannot read: {getattr(exc, 'strerror', None) or exc}")
+    module = types.ModuleType("autolev_model")
+    module.__file__ = str(p)
+    try:
+        code = compile(text, str(p), "exec")
+    except SyntaxError as exc:
+        loc = Location(str(p), exc.lineno or 1, exc.offset or 1)
+        raise AutolevRuntimeError(Diagnostic(loc, "R002", f"not Python: {exc.msg}", "error",
+                                             None)) from None
+    try:
+        exec(code, module.__dict__)
+    except _STATEMENT_FAILURES + _EDITING_SLIPS as exc:
+        line = None
+        for frame, lineno in traceback.walk_tb(exc.__traceback__):
+            if frame.f_code.co_filename == str(p):
+                line = lineno
+        message = str(exc) if isinstance(exc, AutolevModelError) else \
+            f"this statement failed: {type(exc).__name__}: {exc}"
+        quoted = _quoted_statement(text.splitlines(), line) if line else None
+        if quoted:
+            message += f" (Autolev: {quoted})"
+        raise AutolevRuntimeError(Diagnostic(Location(str(p), line or 1, 1), "R001",
+                                             message, "error", None)) from None
+    model = module.__dict__.get("model")
+    if model is None:
+        raise AutolevRuntimeError(Diagnostic(Location(str(p), 1, 1), "R003",
+                                             "this module defines no `model`", "error",
+                                             None))
+    model.namespace = module.__dict__
+    return model
+
+
+def _quoted_statement(lines: list[str], line: int) -> str | None:
+    """The Autolev statement a converted module quotes in the comments just above the
+    code at `line` (1-based)."""
+    k = line - 2
+    while k >= 0 and lines[k].strip() and not lines[k].lstrip().startswith("#"):
+        k -= 1
+    quoted = []
+    while k >= 0 and lines[k].lstrip().startswith("#"):
+        quoted.insert(0, lines[k].lstrip()[1:].strip())
+        k -= 1
+    return " ".join(q for q in quoted if q) or None
+
+
+__all__ = ["load_translation", "load_python"]
 
 
 def load_for_run(path) -> tuple[object, list]:

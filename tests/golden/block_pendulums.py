@@ -6,6 +6,14 @@ import sympy as sm
 
 import autolev.runtime as al
 
+if __name__ == "__main__":
+    # `python this.py [options]` is `autolev run this.py [options]`: the same
+    # messages, files and exit status
+    import sys
+
+    from autolev.cli import main
+    sys.exit(main(["run", __file__, *sys.argv[1:]]))
+
 model = al.Model('block_pendulums')
 t = model.t
 
@@ -115,8 +123,3 @@ model.input('INTEGSTP', 0.01)
 model.output((t, 'T'), (Q1, 'Q1'), (Q2, 'Q2', 'deg'), (Q3, 'Q3', 'deg'))
 # CODE DYNAMICS() block_pendulums.c
 model.code('dynamics', 'block_pendulums.c', zero=ZERO)
-
-
-if __name__ == "__main__":
-    # perform the CODE commands: Autolev's files go to the current folder
-    model.run(verbose=True)

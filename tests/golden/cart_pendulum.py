@@ -6,6 +6,14 @@ import sympy as sm
 
 import autolev.runtime as al
 
+if __name__ == "__main__":
+    # `python this.py [options]` is `autolev run this.py [options]`: the same
+    # messages, files and exit status
+    import sys
+
+    from autolev.cli import main
+    sys.exit(main(["run", __file__, *sys.argv[1:]]))
+
 model = al.Model('cart_pendulum')
 t = model.t
 
@@ -69,8 +77,3 @@ model.input('INTEGSTP', 0.01)
 model.output((t, 'T'), (X, 'X'), (TH, 'TH', 'deg'))
 # CODE DYNAMICS() cart_pendulum.c
 model.code('dynamics', 'cart_pendulum.c', zero=ZERO)
-
-
-if __name__ == "__main__":
-    # perform the CODE commands: Autolev's files go to the current folder
-    model.run(verbose=True)

@@ -6,6 +6,14 @@ import sympy as sm
 
 import autolev.runtime as al
 
+if __name__ == "__main__":
+    # `python this.py [options]` is `autolev run this.py [options]`: the same
+    # messages, files and exit status
+    import sys
+
+    from autolev.cli import main
+    sys.exit(main(["run", __file__, *sys.argv[1:]]))
+
 model = al.Model('mass_spring_damper')
 t = model.t
 
@@ -64,8 +72,3 @@ model.input('INTEGSTP', 0.02)
 model.output((t, 'T', 'sec'), (X, 'X', 'm'), (V, 'V', 'm/sec'))
 # CODE DYNAMICS() mass_spring_damper.c
 model.code('dynamics', 'mass_spring_damper.c', zero=ZERO)
-
-
-if __name__ == "__main__":
-    # perform the CODE commands: Autolev's files go to the current folder
-    model.run(verbose=True)

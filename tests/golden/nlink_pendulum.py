@@ -6,6 +6,14 @@ import sympy as sm
 
 import autolev.runtime as al
 
+if __name__ == "__main__":
+    # `python this.py [options]` is `autolev run this.py [options]`: the same
+    # messages, files and exit status
+    import sys
+
+    from autolev.cli import main
+    sys.exit(main(["run", __file__, *sys.argv[1:]]))
+
 model = al.Model('nlink_pendulum')
 t = model.t
 
@@ -134,8 +142,3 @@ model.output(
 )
 # CODE DYNAMICS() nlink_pendulum.c
 model.code('dynamics', 'nlink_pendulum.c', zero=ZERO)
-
-
-if __name__ == "__main__":
-    # perform the CODE commands: Autolev's files go to the current folder
-    model.run(verbose=True)

@@ -6,6 +6,14 @@ import sympy as sm
 
 import autolev.runtime as al
 
+if __name__ == "__main__":
+    # `python this.py [options]` is `autolev run this.py [options]`: the same
+    # messages, files and exit status
+    import sys
+
+    from autolev.cli import main
+    sys.exit(main(["run", __file__, *sys.argv[1:]]))
+
 model = al.Model('simple_pendulum')
 t = model.t
 
@@ -57,8 +65,3 @@ model.input('INTEGSTP', 0.01)
 model.output((t, 'T', 'sec'), (THETA, 'THETA', 'deg'), (THETAp, "THETA'", 'rad/sec'))
 # CODE DYNAMICS() simple_pendulum.c
 model.code('dynamics', 'simple_pendulum.c', zero=ZERO)
-
-
-if __name__ == "__main__":
-    # perform the CODE commands: Autolev's files go to the current folder
-    model.run(verbose=True)

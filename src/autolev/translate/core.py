@@ -213,7 +213,6 @@ class Translator:
                     self._report_other_undeclared(st, exc.node)
                 self._known_after_failure(st)
         self._span = None
-        self._footer()
         code, line_map = self._render()
         return Translation(code, line_map, self.diagnostics, dict(self.autolev_names),
                            {k: dict(v) for k, v in self.namespaces.items()})
@@ -298,16 +297,17 @@ class Translator:
         self.emit("")
         self.emit("import autolev.runtime as al")
         self.emit("")
+        self.emit('if __name__ == "__main__":')
+        self.emit("    # `python this.py [options]` is `autolev run this.py [options]`: the same")
+        self.emit("    # messages, files and exit status")
+        self.emit("    import sys")
+        self.emit("")
+        self.emit("    from autolev.cli import main")
+        self.emit('    sys.exit(main(["run", __file__, *sys.argv[1:]]))')
+        self.emit("")
         self.emit(f"model = al.Model({quote(self.module_name)})")
         self.emit("t = model.t")
         self.emit("")
-
-    def _footer(self) -> None:
-        self.emit("")
-        self.emit("")
-        self.emit('if __name__ == "__main__":')
-        self.emit("    # perform the CODE commands: Autolev's files go to the current folder")
-        self.emit("    model.run(verbose=True)")
 
     def _render(self) -> tuple[str, dict[int, Span]]:
         out, line_map = [], {}
