@@ -254,3 +254,37 @@ def test_an_edited_module_that_breaks_is_a_diagnostic_at_its_line(model_file, tm
     assert r.returncode == 1 and "Traceback" not in r.stderr
     assert (f"{converted}:{k + 1}:1: error: this statement failed: NameError: name 'MM' is "
             "not defined (Autolev: MASS A = M)") in r.stderr
+
+
+# -- plots that explain (item 5) ------------------------------------------------------------
+def test_one_panel_per_unit_sharing_time_with_labelled_axes():
+    pytest.importorskip("matplotlib", reason="plots need the optional matplotlib")
+    from autolev.plots import figure
+    from autolev.runtime.numerics.run import OutputTable
+    t = np.linspace(0, 10, 101)
+    table = OutputTable("m.1", ["T", "Q1", "Q2", "U1", "ENERGY"],
+                        ["sec", "deg", "DEG", "rad/sec", "joules"],
+                        np.column_stack([t, 90 * np.sin(t), 45 * np.cos(t), np.cos(t),
+                                         1000.0 + 1e-6 * t]))
+    fig = figure(table)
+    axes = fig.axes
+    assert [ax.get_ylabel() for ax in axes] == ["deg", "rad/sec", "joules"]
+    assert [[line.get_label() for line in ax.get_lines()] for ax in axes] == \
+        [["Q1", "Q2"], ["U1"], ["ENERGY"]]
+    assert axes[-1].get_xlabel() == "T (sec)"
+    assert all(ax.get_shared_x_axes().joined(axes[0], ax) for ax in axes)
+    fig.canvas.draw()
+    # 1000.000001 is written as it is, not as "+1e3" with offsets of 1e-6
+    assert axes[-1].yaxis.get_offset_text().get_text() == ""
+    assert fig._suptitle.get_text() == "m.1"
+
+
+def test_a_table_without_time_is_plotted_against_its_first_column_and_says_so():
+    pytest.importorskip("matplotlib", reason="plots need the optional matplotlib")
+    from autolev.plots import figure
+    from autolev.runtime.numerics.run import OutputTable
+    x = np.linspace(0, 1, 11)
+    fig = figure(OutputTable("sweep.1", ["Q", "Y"], ["deg", None],
+                             np.column_stack([x, x ** 2])))
+    assert fig.axes[0].get_xlabel() == "Q (deg)" and fig.axes[0].get_ylabel() == "no unit"
+    assert "no T column: plotted against its first column, Q" in fig._suptitle.get_text()

@@ -255,36 +255,11 @@ def cmd_run(ns: argparse.Namespace) -> int:
             for f in result.files:
                 print(f"  wrote {f}")
         if ns.plot and result.outputs:
-            for f in _plot(result, out_dir):
+            from .plots import write_pngs
+            for f in write_pngs(result, out_dir):
                 if not ns.quiet:
                     print(f"  wrote {f}")
     return status
-
-
-def _plot(result, out_dir: Path) -> list[Path]:
-    """A PNG per output file: every column against the first."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    written = []
-    for table in result.outputs:
-        if table.data.shape[0] < 2 or table.data.shape[1] < 2:
-            continue
-        fig, ax = plt.subplots(figsize=(8, 5))
-        x = table.data[:, 0]
-        for j in range(1, table.data.shape[1]):
-            unit = f" ({table.units[j]})" if table.units[j] else ""
-            ax.plot(x, table.data[:, j], label=f"{table.labels[j]}{unit}")
-        ax.set_xlabel(table.labels[0] + (f" ({table.units[0]})" if table.units[0] else ""))
-        ax.set_title(table.filename)
-        ax.legend(fontsize="small")
-        ax.grid(True, alpha=0.3)
-        path = out_dir / f"{table.filename}.png"
-        fig.savefig(path, dpi=100)
-        plt.close(fig)
-        written.append(path)
-    return written
 
 
 def cmd_verify(ns: argparse.Namespace) -> int:

@@ -1,0 +1,72 @@
+"""Pictures of a run's output tables (matplotlib, an optional dependency).
+
+One figure per output file: its columns against time (or, in a table without a T
+column, against its first column, which the figure says), one panel per unit so that
+degrees do not squash radians per second, the panels sharing the time axis, each
+labelled with its unit, numbers written out (no offset notation).
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+
+def _unit_key(unit: str | None) -> str:
+    return (unit or "").strip().upper()
+
+
+def abscissa(table) -> tuple[int, str | None]:
+    """(column index of the x axis, a note when it is not time)."""
+    for j, label in enumerate(table.labels):
+        if label.strip().upper() in ("T", "TIME"):
+            return j, None
+    return 0, (f"no T column: plotted against its first column, {table.labels[0]}"
+               if table.labels else None)
+
+
+def figure(table):
+    """The figure of one OutputTable, or None when there is nothing to draw (fewer than
+    two rows or two columns)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    data = table.data
+    if data.shape[0] < 2 or data.shape[1] < 2:
+        return None
+    xj, note = abscissa(table)
+    groups: dict[str, list[int]] = {}
+    for j in range(data.shape[1]):
+        if j != xj:
+            groups.setdefault(_unit_key(table.units[j]), []).append(j)
+    fig, axes = plt.subplots(len(groups), 1, sharex=True, squeeze=False,
+                             figsize=(8, 1.2 + 2.3 * len(groups)))
+    for ax, (unit, columns) in zip(axes[:, 0], groups.items()):
+        for j in columns:
+            ax.plot(data[:, xj], data[:, j], label=table.labels[j])
+        ax.set_ylabel(table.units[columns[0]] or "no unit")
+        ax.ticklabel_format(axis="y", useOffset=False)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="small", loc="best")
+    bottom = axes[-1, 0]
+    x_unit = table.units[xj]
+    bottom.set_xlabel(table.labels[xj] + (f" ({x_unit})" if x_unit else ""))
+    bottom.ticklabel_format(axis="x", useOffset=False)
+    fig.suptitle(table.filename + (f"\n{note}" if note else ""), fontsize="medium")
+    fig.tight_layout()
+    return fig
+
+
+def write_pngs(result, out_dir: Path) -> list[Path]:
+    """A PNG per output table of the run (NAME.k.png); returns the files written."""
+    import matplotlib.pyplot as plt
+
+    written = []
+    for table in result.outputs:
+        fig = figure(table)
+        if fig is None:
+            continue
+        path = Path(out_dir) / f"{table.filename}.png"
+        fig.savefig(path, dpi=100)
+        plt.close(fig)
+        written.append(path)
+    return written
