@@ -211,6 +211,11 @@ def cmd_run(ns: argparse.Namespace) -> int:
             print(f"autolev run: --code: {exc}", file=sys.stderr)
             return 2
         chosen = [k for k, c in enumerate(commands) if id(c) in picked]
+    elif ns.first_dynamics:
+        chosen = [k for k, c in enumerate(commands) if c.kind in ("dynamics", "ode")][:1]
+        if not chosen:
+            print(f"{path}: error: no CODE DYNAMICS or ODE to animate", file=sys.stderr)
+            return 1
     out_dir = Path(ns.out)
     status = 0
     written_by: dict[str, str] = {}
@@ -231,7 +236,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
                                  backend=ns.backend, infile=ns.infile,
                                  progress=None if ns.quiet else sys.stderr,
                                  overrides=overrides, quirks=ns.quirks,
-                                 keep_rows=bool(ns.plot),
+                                 keep_rows=bool(ns.plot or ns.animate),
                                  missing_values="zero" if ns.zero_missing else "refuse")
         except AutolevModelError as exc:
             text = str(exc)
@@ -254,12 +259,51 @@ def cmd_run(ns: argparse.Namespace) -> int:
                      if stats.get("method") else ""))
             for f in result.files:
                 print(f"  wrote {f}")
+        if ns.animate and result.kind in ("dynamics", "ode") and len(result.t):
+            try:
+                for f in _animate(model, result, out_dir, ns):
+                    if not ns.quiet:
+                        print(f"  wrote {f}")
+            except AutolevModelError as exc:
+                print(f"{label}: error: cannot animate {command.filename}: {exc}",
+                      file=sys.stderr)
+                status = 1
         if ns.plot and result.outputs:
             from .plots import write_pngs
             for f in write_pngs(result, out_dir):
                 if not ns.quiet:
                     print(f"  wrote {f}")
     return status
+
+
+def cmd_animate(ns: argparse.Namespace) -> int:
+    """`run` of one CODE DYNAMICS (the first, or --code), with its motion written."""
+    formats = ns.formats or ["html"] + (["gif"] if _has_matplotlib() else [])
+    if any(f in ("gif", "mp4") for f in formats) and not _has_matplotlib():
+        print("autolev animate: a GIF or MP4 needs matplotlib (pip install "
+              "'autolev[plot]'); --format html needs nothing more", file=sys.stderr)
+        return 2
+    ns.formats = formats
+    ns.code = [ns.code] if ns.code is not None else None
+    return cmd_run(ns)
+
+
+def _has_matplotlib() -> bool:
+    import importlib.util
+    return importlib.util.find_spec("matplotlib") is not None
+
+
+def _animate(model, result, out_dir: Path, ns) -> list[Path]:
+    from .animation import MAX_FRAMES, motion, write_html, write_movie
+    m = motion(model, result, ns.frames or MAX_FRAMES)
+    written = []
+    for fmt in ns.formats or ["html"] + (["gif"] if _has_matplotlib() else []):
+        path = out_dir / f"{result.name}.{fmt}"
+        if fmt == "html":
+            written.append(write_html(m, path, f"{result.name} ({model.name})"))
+        else:
+            written.append(write_movie(m, path))
+    return written
 
 
 def cmd_verify(ns: argparse.Namespace) -> int:
@@ -295,6 +339,32 @@ def _short(v) -> str:
     a = np.asarray(v, dtype=complex)
     a = a.real if np.all(np.abs(a.imag) < 1e-12) else a
     return np.array2string(a, precision=8, max_line_width=100)
+
+
+def _run_options(parser) -> None:
+    """The options of a run, shared by `run` and `animate`."""
+    parser.add_argument("file", metavar="FILE", help=".al model")
+    parser.add_argument("--out", default=".", metavar="DIR",
+                        help="folder for the output files (default: the current folder)")
+    parser.add_argument("--method", default=None, metavar="M",
+                        help="integrator: kutta-merson, rk45, dop853, radau, bdf, lsoda, "
+                        "rk23 (default: the one of Autolev's program for each CODE file: "
+                        "rk45 -- Matlab's ode45 -- for .m, else Kutta-Merson)")
+    parser.add_argument("--set", action="append", metavar="NAME=VALUE",
+                        help="an input value, in the unit the model gives it (degrees for a "
+                        "DEG input); repeatable")
+    parser.add_argument("--tfinal", type=float, metavar="T", help="final time (TFINAL)")
+    parser.add_argument("--in", dest="infile", metavar="FILE.in",
+                        help="read input values from an Autolev .in file")
+    parser.add_argument("--backend", default="auto", choices=("auto", "c", "python"),
+                        help="compiled C when a compiler is found (auto), or pure Python")
+    parser.add_argument("--no-quirks", dest="quirks", action="store_false",
+                        help="compute the values meant where Autolev's programs computed "
+                        "others (a quantity named i1 in a C program's outputs)")
+    parser.add_argument("--zero-missing", action="store_true",
+                        help="give 0 to constants that have no value (INPUT, --in or --set) "
+                        "instead of stopping before the build")
+    parser.add_argument("-q", "--quiet", action="store_true")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -333,34 +403,33 @@ def build_parser() -> argparse.ArgumentParser:
                          "commands with its INPUT values: DYNAMICS and ODE are integrated, "
                          "ALGEBRAIC and NONLINEAR solved.  Writes Autolev's files NAME.in, "
                          "NAME.1 ... NAME.k (one per OUTPUT) and NAME.dir into --out.")
-    run.add_argument("file", metavar="FILE", help=".al model")
-    run.add_argument("--out", default=".", metavar="DIR",
-                     help="folder for the output files (default: the current folder)")
-    run.add_argument("--method", default=None, metavar="M",
-                     help="integrator: kutta-merson, rk45, dop853, radau, bdf, lsoda, "
-                     "rk23 (default: the one of Autolev's program for each CODE file: "
-                     "rk45 -- Matlab's ode45 -- for .m, else Kutta-Merson)")
-    run.add_argument("--set", action="append", metavar="NAME=VALUE",
-                     help="an input value, in the unit the model gives it (degrees for a "
-                     "DEG input); repeatable")
-    run.add_argument("--tfinal", type=float, metavar="T", help="final time (TFINAL)")
-    run.add_argument("--in", dest="infile", metavar="FILE.in",
-                     help="read input values from an Autolev .in file")
-    run.add_argument("--backend", default="auto", choices=("auto", "c", "python"),
-                     help="compiled C when a compiler is found (auto), or pure Python")
+    _run_options(run)
     run.add_argument("--plot", action="store_true",
                      help="also write a PNG per output file (needs matplotlib)")
-    run.add_argument("--no-quirks", dest="quirks", action="store_false",
-                     help="compute the values meant where Autolev's programs computed "
-                     "others (a quantity named i1 in a C program's outputs)")
+    run.add_argument("--animate", action="store_true",
+                     help="also write the motion of each CODE DYNAMICS: NAME.html (a 3-D "
+                     "view to rotate and scrub) and, with matplotlib, NAME.gif")
     run.add_argument("--code", action="append", metavar="FILE",
                      help="run only this CODE command (its file name, e.g. bike.c, or "
                      "its 0-based index); repeatable")
-    run.add_argument("--zero-missing", action="store_true",
-                     help="give 0 to constants that have no value (INPUT, --in or --set) "
-                     "instead of stopping before the build")
-    run.add_argument("-q", "--quiet", action="store_true")
-    run.set_defaults(func=cmd_run)
+    run.set_defaults(func=cmd_run, formats=None, frames=None, first_dynamics=False)
+
+    anim = sub.add_parser("animate", help="run a model and write its motion as a picture",
+                          description="Run FILE's first CODE DYNAMICS (or --code) and write "
+                          "a stick figure of its points in the Newtonian frame over the run: "
+                          "NAME.html, a self-contained page with a 3-D view to rotate and a "
+                          "time slider, and NAME.gif (or .mp4) with matplotlib.  The run's "
+                          "own files are written too.")
+    _run_options(anim)
+    anim.add_argument("--code", metavar="FILE",
+                      help="the CODE command to animate (default: the first DYNAMICS/ODE)")
+    anim.add_argument("--format", dest="formats", action="append",
+                      choices=("html", "gif", "mp4"),
+                      help="what to write (repeatable; default: html, and gif when "
+                      "matplotlib is installed)")
+    anim.add_argument("--frames", type=int, default=None, metavar="N",
+                      help="frames at most (default 400; the rows are sampled evenly)")
+    anim.set_defaults(func=cmd_animate, plot=False, animate=True, first_dynamics=True)
 
     ver = sub.add_parser("verify", help="check a translation against Autolev's responses",
                          description="Replay the responses Autolev printed (an .all session "

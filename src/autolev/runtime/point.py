@@ -67,6 +67,10 @@ class Point:
             p = prev[p]
         return total
 
+    def linked_points(self) -> list["Point"]:
+        """The points whose position from this one the model gave directly."""
+        return list(self._pos)
+
     def locate_new(self, name: str, value) -> "Point":
         p = self.model.point(name)
         p.set_pos(self, value)

@@ -334,6 +334,38 @@ class NumericSystem:
             expr = expr.xreplace(subs)
         return expr
 
+    def lacking(self, exprs) -> list:
+        """The constants `exprs` need that this run has no value for (the run's inputs
+        are only what its equations and outputs use)."""
+        exprs = [self._resolve(e) for e in exprs]
+        _, undefined = self._needed(exprs, set(self.states) | {S.TIME} | set(self.aux_fixed))
+        known = set(self.params) | set(self.specified)
+        return alphabetical(s for s in undefined if s not in known)
+
+    def evaluator(self, exprs, name: str = "autolev_quantities", extra_values=None):
+        """f(t, x) -> the values of `exprs` (e.g. positions) with this run's constants
+        and specified quantities, and `extra_values` ({symbol: value}) for the constants
+        the run lacks (see lacking)."""
+        extra_values = dict(extra_values or {})
+        missing = [s for s in self.lacking(exprs) if s not in extra_values]
+        if missing:
+            raise AutolevModelError("these quantities have no value in this run: "
+                                    + ", ".join(map(str, missing)))
+        exprs = [self._resolve(e) for e in exprs]
+        extra = list(extra_values)
+        inputs = {"t": [S.TIME], "x": self.states, "c": self.params + self.constant_defs,
+                  "s": self.specified, "e": extra}
+        fn = compile_program(codegen.Program(inputs, exprs, self.model.defs,
+                                             dict(self.aux_fixed)).build(), "python", name)
+        extra_array = np.array([float(extra_values[k]) for k in extra])
+
+        def evaluate(t: float, x) -> np.ndarray:
+            out = np.empty(len(exprs))
+            s = self._fill_specified(t, x) if self._spec_fns else self._s
+            fn.call(np.array([t]), np.asarray(x, dtype=float), self._c, s, extra_array, out)
+            return out
+        return evaluate
+
     # -- values ---------------------------------------------------------------------------
     def set_parameters(self, values: np.ndarray) -> None:
         """Parameter values (in self.params order); evaluates the constants once."""
