@@ -288,3 +288,16 @@ def test_a_table_without_time_is_plotted_against_its_first_column_and_says_so():
                              np.column_stack([x, x ** 2])))
     assert fig.axes[0].get_xlabel() == "Q (deg)" and fig.axes[0].get_ylabel() == "no unit"
     assert "no T column: plotted against its first column, Q" in fig._suptitle.get_text()
+
+
+def test_a_negative_mass_is_refused_before_the_build(model_file, monkeypatch):
+    from autolev.runtime.numerics import system as numeric_system
+    compiled = []
+    real = numeric_system.compile_program
+    monkeypatch.setattr(numeric_system, "compile_program",
+                        lambda *a, **kw: compiled.append(a[2]) or real(*a, **kw))
+    model = autolev.load(model_file)
+    with pytest.raises(autolev.runtime.AutolevModelError,
+                       match="masses and inertias must not be negative: body A has mass -1"):
+        model.simulate(M=-1, G=9.81, L=1, I=0.1)
+    assert compiled == []

@@ -259,6 +259,11 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         inputs.fill_missing(names)
         inputs.check_finite()
         _degree_rates_note(inputs, names)
+        if integrate_states:           # before the build: it needs only the inputs
+            bad = _inertia_problems(system, inputs, zero=False)
+            if bad:
+                raise AutolevModelError("masses and inertias must not be negative: "
+                                        + "; ".join(bad))
         return inputs, kinds, names, extra_constants
 
     build_start = time.perf_counter()
@@ -303,11 +308,6 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     sweep = _sweep(model, command, inputs)
 
     system.set_parameters(inputs.vector(system.params))
-    if integrate_states:
-        bad = _inertia_problems(system, inputs, zero=False)
-        if bad:
-            raise AutolevModelError("masses and inertias must not be negative: "
-                                    + "; ".join(bad))
     zero_params = [display_name(p) for p in system.params if inputs.internal(p) == 0.0]
     result = Result(kind, stem, np.zeros(0), np.zeros((0, system.nstate)),
                     [display_name(x) for x in system.states], [], {},
