@@ -301,3 +301,14 @@ def test_a_negative_mass_is_refused_before_the_build(model_file, monkeypatch):
                        match="masses and inertias must not be negative: body A has mass -1"):
         model.simulate(M=-1, G=9.81, L=1, I=0.1)
     assert compiled == []
+
+
+def test_variables_an_algebraic_program_reads_are_named_inputs(tmp_path):
+    path = tmp_path / "fk.al"
+    path.write_text("VARIABLES Q\nCONSTANTS L\nY = L*SIN(Q)\nOUTPUT Y\nCODE ALGEBRAIC() fk.c\n")
+    model = autolev.load(path)
+    with pytest.raises(autolev.runtime.MissingValues,
+                       match=r"^2 inputs of fk.c have no value: L, Q\."):
+        model.simulate()
+    r = model.simulate(L=2, Q=30)                # Q in radians: no unit given
+    assert r.outputs[0]["Y"][0] == pytest.approx(2 * math.sin(30))

@@ -250,8 +250,8 @@ def run_command(model, command, out_dir=None, method: str | None = None,
             warnings.warn(note, stacklevel=4)
         missing = inputs.missing(constants)
         if missing and missing_values == "refuse":
-            raise MissingValues(_missing_message(missing, inputs, kinds, out_dir, stem,
-                                                 command.filename))
+            raise MissingValues(_missing_message(model, missing, inputs, kinds, out_dir,
+                                                 stem, command.filename))
         inputs.fill_missing(constants)
         if missing:
             warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
@@ -357,10 +357,14 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     return result
 
 
-def _missing_message(missing, inputs, kinds, out_dir, stem: str, program: str) -> str:
+def _missing_message(model, missing, inputs, kinds, out_dir, stem: str,
+                     program: str) -> str:
     """What is missing, how to give it, and where a template to fill in was written
     (the run's output folder; an existing file is never replaced)."""
-    text = (f"{len(missing)} constant{'s' if len(missing) > 1 else ''} of {program} "
+    # CODE ALGEBRAIC takes variables as inputs too
+    what = ("constant" if all(model.kind_of(S.base_and_order(k)[0]) == "constant"
+                              for k in missing) else "input")
+    text = (f"{len(missing)} {what}{'s' if len(missing) > 1 else ''} of {program} "
             f"{'have' if len(missing) > 1 else 'has'} no value: "
             + some_names(map(display_name, missing), 12)
             + ".  Autolev's program read them from its .in file; give them with --in FILE "
