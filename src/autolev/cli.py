@@ -8,7 +8,8 @@ import sys
 from pathlib import Path
 
 from . import __version__
-from .errors import AutolevError, AutolevFileError, AutolevSyntaxError, Diagnostic
+from .errors import (AutolevError, AutolevFileError, AutolevRuntimeError, AutolevSyntaxError,
+                     AutolevTranslationError, Diagnostic)
 
 MODEL_SUFFIXES = (".al",)
 MACRO_SUFFIXES = (".a",)
@@ -188,15 +189,20 @@ def cmd_run(ns: argparse.Namespace) -> int:
     if model is None:
         print(f"{path}: not run", file=sys.stderr)
         return 1
-    if not ns.quiet:
+    if not ns.quiet and (model.code_commands or ns.first_dynamics):
         print(f"{path}: built in {time.monotonic() - start:.1f} s")
     commands = list(model.code_commands)
     locations = list(getattr(model, "code_locations", []))
-    if not commands:
-        print(f"{path}: no CODE command; simulating as CODE DYNAMICS", file=sys.stderr)
+    if not commands and ns.first_dynamics:
+        print(f"{path}: no CODE command; animating it as CODE DYNAMICS", file=sys.stderr)
         commands = [CodeCommand("dynamics", f"{path.stem}.c", [], None, (),
                                 n_outputs=len(model.outputs), n_encoded=len(model.encoded),
                                 inputs=dict(model.inputs), units=dict(model.unit_of))]
+    elif not commands:
+        # what Autolev showed for a model that writes no program: its responses
+        print(f"{path}: no CODE command: the responses Autolev displayed follow "
+              "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
+        return _print_transcript(path, None)
     unknown = [name for name in overrides if not names_a_quantity(model, name)]
     if unknown:
         print(f"autolev run: --set {', '.join(unknown)}: the model has no quantity of "
@@ -274,6 +280,38 @@ def cmd_run(ns: argparse.Namespace) -> int:
                 if not ns.quiet:
                     print(f"  wrote {f}")
     return status
+
+
+def cmd_transcript(ns: argparse.Namespace) -> int:
+    """The responses Autolev displayed for each statement, as its .all files."""
+    return _print_transcript(Path(ns.file), Path(ns.out) if ns.out else None)
+
+
+def _print_transcript(path: Path, out_dir: Path | None) -> int:
+    from .transcript import transcript
+    if path.suffix.lower() == ".py":
+        print(f"{path}: a transcript is made from the .al model", file=sys.stderr)
+        return 2
+    try:
+        text = transcript(path)
+    except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
+        for d in exc.diagnostics:
+            print(d.format(), file=sys.stderr)
+        return 1
+    if out_dir is None:
+        sys.stdout.write(text)
+        return 0
+    target = out_dir / f"{path.stem}.all"
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+        tmp = target.with_name(f".{target.name}.{os.getpid()}.tmp")
+        tmp.write_text(text, encoding="utf-8")
+        os.replace(tmp, target)
+    except OSError as exc:
+        print(f"autolev transcript: cannot write {target}: {exc.strerror}", file=sys.stderr)
+        return 1
+    print(f"wrote {target}")
+    return 0
 
 
 def cmd_animate(ns: argparse.Namespace) -> int:
@@ -430,6 +468,15 @@ def build_parser() -> argparse.ArgumentParser:
     anim.add_argument("--frames", type=int, default=None, metavar="N",
                       help="frames at most (default 400; the rows are sampled evenly)")
     anim.set_defaults(func=cmd_animate, plot=False, animate=True, first_dynamics=True)
+
+    tr = sub.add_parser("transcript", help="the responses Autolev displayed (.all)",
+                        description="Print what Autolev displayed for FILE: every input "
+                        "line numbered (n), and after each assignment the value it defined "
+                        "(with the Z variables it uses), as in Autolev's .all files.  "
+                        "`autolev verify NAME.all` replays such a transcript.")
+    tr.add_argument("file", metavar="FILE", help=".al model")
+    tr.add_argument("--out", metavar="DIR", help="write DIR/NAME.all instead of printing")
+    tr.set_defaults(func=cmd_transcript)
 
     ver = sub.add_parser("verify", help="check a translation against Autolev's responses",
                          description="Replay the responses Autolev printed (an .all session "
