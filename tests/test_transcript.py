@@ -83,3 +83,10 @@ def test_autolev_run_of_a_model_without_code_prints_its_transcript(disc, tmp_pat
                         str(tmp_path / "t")], capture_output=True, text=True)
     assert r.returncode == 0
     assert (tmp_path / "t" / "disc.all").read_text() == transcript(disc)
+
+
+def test_a_derivative_defined_twice_shows_each_definition(tmp_path):
+    path = tmp_path / "twice.al"
+    path.write_text("VARIABLES X'\nCONSTANTS A\nX' = A*X\nX' = 2*A\n")
+    responses = [x for x in transcript(path).splitlines() if x.startswith("->")]
+    assert responses == ["-> (4) X' = A*X", "-> (6) X' = 2*A"]

@@ -134,8 +134,13 @@ def transcript(path) -> str:
         span = st.span
         if st.kind != "assignment" or span is None or Path(span.start.file) != p:
             continue
-        lhs = st.text.split("=", 1)[0].rstrip(":+-*/^ ").strip()
-        responses.append(Response(len(responses) + 1, span.end.line, lhs, "", span.end.line))
+        lhs, _, rhs = st.text.partition("=")
+        lhs = lhs.rstrip(":+-*/^ ").strip()
+        # a derivative's value is its definition, which a later X' = ... replaces: the
+        # response is the right side as the statement gave it
+        captured_as = f"({rhs.strip()})" if lhs.endswith("'") and st.op == "=" else lhs
+        responses.append(Response(len(responses) + 1, span.end.line, captured_as, "",
+                                  span.end.line))
         written.append(lhs)
     session = Session("\n".join(lines) + "\n", responses, str(p))
     model, captured, skipped = _build(session, p)
@@ -152,8 +157,6 @@ def transcript(path) -> str:
         out.append(f"   ({number}) {line}")
         for k in after.get(no, []):
             value, _ = captured[k]
-            if isinstance(value, sm.Symbol) and value in model.defs.rhs:
-                value = model.defs.rhs[value]        # Q1' = U1: the definition
             for z in _z_chain(model, value, shown):
                 number += 1
                 out.append(f"-> ({number}) {expression(z)} = "
