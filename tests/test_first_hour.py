@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import autolev
+import autolev.runtime
 
 # a pendulum whose constants were typed into Autolev's .in file, not the model: only M
 # and the initial angle have INPUT values
@@ -312,3 +313,44 @@ def test_variables_an_algebraic_program_reads_are_named_inputs(tmp_path):
         model.simulate()
     r = model.simulate(L=2, Q=30)                # Q in radians: no unit given
     assert r.outputs[0]["Y"][0] == pytest.approx(2 * math.sin(30))
+
+
+SPINNER = """NEWTONIAN N
+BODIES A
+VARIABLES Q{3}'
+MOTIONVARIABLES' U{3}'
+CONSTANTS M
+SIMPROT(N, A, 3, Q3)
+Q1' = U1
+Q2' = U2
+Q3' = U3
+W_A_N> = U1*A1> + U2*A2> + U3*A3>
+V_AO_N> = 0>
+MASS A = M
+INERTIA A, 1, 1, 1, @PRODUCTS@
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT M = 1, U1 = 1, TFINAL = 0.1
+OUTPUT T, U1
+CODE DYNAMICS() spin.c
+"""
+
+
+def spinner(tmp_path, products):
+    path = tmp_path / "spin.al"
+    path.write_text(SPINNER.replace("@PRODUCTS@", products))
+    return autolev.load(path)
+
+
+def test_an_inertia_no_body_has_is_refused_before_the_build(tmp_path):
+    # I12 = 2: [[1, 2, 0], [2, 1, 0], [0, 0, 1]] has principal inertias -1, 1, 3
+    with pytest.raises(autolev.runtime.AutolevModelError,
+                       match="body A has principal inertias -1, 1, 3"):
+        spinner(tmp_path, "2, 0, 0").simulate()
+
+
+def test_a_singular_inertia_is_named_when_the_run_fails(tmp_path):
+    # all products 1: [[1, 1, 1], ...] has principal inertias 0, 0, 3
+    r = spinner(tmp_path, "1, 1, 1").simulate()
+    assert not r.ok and r.failure_time == 0.0
+    assert "body A has a singular central inertia (principal inertias 0, 0, 3)" in r.failure

@@ -516,15 +516,24 @@ def _inertia_problems(system, inputs, zero: bool = True) -> list[str]:
             inertia = b.central_inertia.to_matrix(b)
         except AutolevModelError:
             inertia = None
-        diag = [num(inertia[i, i]) for i in range(3)] if inertia is not None else []
+        principal = []
+        if inertia is not None:
+            numbers = np.array([[num(inertia[i, j]) for j in range(3)] for i in range(3)])
+            if np.all(np.isfinite(numbers)):
+                principal = list(np.linalg.eigvalsh((numbers + numbers.T) / 2))
+            else:
+                principal = [math.nan]
         if not mass > 0 and (zero or mass != 0):
             what = f"body {b.name} has mass {mass:g}"
-            if diag and not any(d > 0 for d in diag):
+            if principal and not any(d > 0 for d in principal):
                 what += " and no inertia"
             out.append(what)
-        elif diag and any(not d >= 0 for d in diag):
+        elif principal and any(not d >= -1e-12 * max(map(abs, principal)) for d in principal):
             out.append(f"body {b.name} has principal inertias "
-                       + ", ".join(f"{d:g}" for d in diag))
+                       + ", ".join(f"{d:.6g}" for d in principal))
+        elif zero and len(principal) == 3 and min(principal) <= 1e-12 * max(principal):
+            out.append(f"body {b.name} has a singular central inertia (principal inertias "
+                       + ", ".join(f"{max(d, 0.0):.6g}" for d in principal) + ")")
     return out
 
 
@@ -716,7 +725,7 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         result.failure = (f"Numerical integration failed to converge: {exc}; the state "
                           f"there: {state}"
                           + (_zero_hint(zero_params) if result.stats["rows"] <= 1 else ""))
-        if "singular" in str(exc):
+        if "singular" in str(exc) or (result.stats["rows"] <= 1 and "not finite" in str(exc)):
             problems = _inertia_problems(system, inputs)
             if problems:
                 result.failure += "; " + "; ".join(problems)
