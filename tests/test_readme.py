@@ -1,0 +1,19 @@
+"""The README speaks of what ships with the project (issue 19, item 7): every file it
+names is in the repository, and it points at nothing beside it."""
+import re
+
+from conftest import ROOT
+
+README = (ROOT / "README.md").read_text()
+
+
+def test_no_path_leaves_the_repository():
+    assert "../" not in README
+
+
+def test_every_file_it_names_ships():
+    named = set(re.findall(r"\b((?:docs|bench|tests|tools|autolev_examples|grammar|src)"
+                           r"/[\w./-]+\.\w+)", README))
+    assert len(named) > 10
+    missing = sorted(p for p in named if not (ROOT / p).exists())
+    assert missing == []
