@@ -361,6 +361,7 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
 
 
 def main() -> int:
+    global TRUTH                  # --truth: the reference runs read by every function
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--corpus", type=Path, default=Path(os.environ.get(
         "AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus")))
@@ -373,7 +374,6 @@ def main() -> int:
     ap.add_argument("--truth", type=Path, default=TRUTH,
                     help="the folder of reference runs (index.tsv and one folder per run)")
     ns = ap.parse_args()
-    global TRUTH
     TRUTH = ns.truth
     models = dict(corpus_models(ns.corpus))
     rows = [r for r in csv.DictReader(open(TRUTH / "index.tsv"), delimiter="\t")
