@@ -239,8 +239,9 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
                 else:
                     notes.append(f"{k} not an input here")
         try:
+            # the reference program read these values, zeros of a template included
             result = run_command(model, command, out_dir=workdir, method=method,
-                                 infile=infile, overrides=known)
+                                 infile=infile, overrides=known, missing_values="zero")
         except autolev.AutolevError as exc:
             out["status"] = f"run failed: {exc}"
             return out
@@ -259,7 +260,7 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             fine = run_command(model, command, out_dir=None, method=method, infile=infile,
-                               overrides=tight)
+                               overrides=tight, missing_values="zero")
         k = min(len(fine.t), len(result.t))      # a failed run: the rows both have
         if k > 1:
             a, b = fine.states[:k], result.states[:k]
