@@ -95,7 +95,8 @@ def test_nested_functions_translate_each_argument_once(monkeypatch):
 
 @pytest.mark.parametrize("text, line", [
     ("X = 10^10^10", 1), ("X = 9^9^9", 1), ("X = 2^2^2^2^2^2", 1), ("X = (10^900)^(10^6)", 1),
-    ("X = FACTORIAL(100000000)", 1), ("CONSTANTS A\nX = TAYLOR(SIN(A), 99999, A=0)", 2)])
+    ("X = FACTORIAL(100000000)", 1), ("CONSTANTS A\nX = TAYLOR(SIN(A), 99999, A=0)", 2),
+    ("X = 2^(10^310)", 1), ("X = " + "9" * 350 + "^" + "9" * 350, 1)])
 def test_exact_numbers_and_series_too_large_to_compute(tmp_path, text, line):
     (d,) = diagnostics_of(tmp_path, text + "\n")
     assert d.code == "T005" and d.location.line == line
@@ -116,3 +117,84 @@ def test_an_integstp_that_cannot_advance_the_time(tmp_path):
     model = autolev.load(EXAMPLES / "double_pendulum.al")
     with pytest.raises(autolev.runtime.AutolevModelError, match="too small to advance"):
         model.simulate(INTEGSTP=1e-300)
+
+
+# -- found by bench/fuzz.py --mode grammar ------------------------------------------
+def load_error(tmp_path, text):
+    """The one error diagnostic of loading (parse, translate, run) a model."""
+    path = tmp_path / "m.al"
+    path.write_text(text)
+    with pytest.raises(autolev.AutolevError) as info:
+        autolev.load(path)
+    (d,) = [d for d in info.value.diagnostics if d.severity == "error"]
+    return d
+
+
+def test_sums_and_products_of_thousands_of_terms_load(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("CONSTANTS A, B\nX = " + " + ".join(["A", "B"] * 900) + "\n"
+                    "Y = " + "*".join(["A"] * 1500) + "/B\n")
+    model = autolev.load(path)
+    a, b = model["A"], model["B"]
+    assert model["X"] == 900 * (a + b) and model["Y"] == a ** 1500 / b
+
+
+def test_a_sum_longer_than_python_compiles(tmp_path):
+    (d,) = diagnostics_of(tmp_path, "CONSTANTS A\nX = " + " + ".join(["A"] * 5000) + "\n")
+    assert d.code == "T004" and d.location.line == 2 and "5000 terms" in d.message
+
+
+@pytest.mark.parametrize("text", [
+    "(" + " + ".join(["A"] * 1999) + ")*" + "*".join(["A"] * 1999),
+    "SIN(" * 210 + "A" + ")" * 210])
+def test_statements_nested_deeper_than_python_compiles(tmp_path, text):
+    d = load_error(tmp_path, "CONSTANTS A\nX = " + text + "\n")
+    assert d.code == "R001" and "nested too deeply" in d.message
+    assert (d.location.line, d.location.col) == (2, 1)
+
+
+def test_a_function_of_a_matrix_expression_applies_to_each_element(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("CONSTANTS A, B\nM = [A, 0; 0, B]\nC = COS(-M)\nS = SIN([A]^2)\n"
+                    "E = ELEMENT(M*2 + M, 2, 2)\n")
+    model = autolev.load(path)
+    import sympy as sm
+    a, b = model["A"], model["B"]
+    assert model["C"] == sm.Matrix([[sm.cos(a), 1], [1, sm.cos(b)]])
+    assert model["S"] == sm.Matrix([[sm.sin(a ** 2)]]) and model["E"] == 3 * b
+
+
+@pytest.mark.parametrize("text", ["RUN " + "x" * 300 + ".al", "X = " + "F" * 300 + "(1)"])
+def test_file_names_too_long_for_the_file_system(tmp_path, text):
+    with pytest.raises(autolev.AutolevError) as info:
+        autolev.transpile(text + "\n", str(tmp_path / "m.al"))
+    assert [d.location.line for d in info.value.diagnostics] == [1]
+
+
+@pytest.mark.parametrize("text, message", [
+    ("X = DIAGMAT(99999999, 1)", "more than 1000000 elements"),
+    ("M[3903042726] = 1", "more than 1000000 elements"),
+    ("M = [1, 2]\nX = ROWS(M, 1:99999999)", "indices 1:99999999 are outside 1..1")])
+def test_matrices_too_large_to_build(tmp_path, text, message):
+    d = load_error(tmp_path, text + "\n")
+    assert d.code == "R001" and message in d.message
+    assert d.location.line == text.count("\n") + 1
+
+
+def test_names_longer_than_a_line_of_the_translation(tmp_path):
+    long = "L" + "x" * 100
+    path = tmp_path / "m.al"
+    path.write_text(f"CONSTANTS A, {long}, B{'y' * 80}\nBODIES {long}\nMASS {long} = A\n"
+                    f"E = {long}^2 + A\n")
+    model = autolev.load(path)
+    assert model["E"] == model[long] ** 2 + model["A"]
+    assert model.entity(long).mass == model["A"]
+
+
+def test_a_statement_the_parser_reads_but_nested_too_deeply_to_build(tmp_path):
+    text = "A"
+    for _ in range(400):
+        text = f"({text})^2"
+    from conftest import errors_of
+    (d,) = errors_of("CONSTANTS A\nX = " + text + "\n")
+    assert d.code == "E004" and (d.location.line, d.location.col) == (2, 1)

@@ -135,31 +135,33 @@ class Neg(Expr):
 
 
 def walk(expr: Expr) -> Iterator[Expr]:
-    """Every node of an expression tree, parents first."""
-    yield expr
+    """Every node of an expression tree, parents first (in a loop: a sum of thousands of
+    terms is deeper than Python's recursion)."""
+    stack = [expr]
+    while stack:
+        node = stack.pop()
+        yield node
+        stack.extend(reversed(_children(node)))
+
+
+def _children(expr: Expr) -> tuple[Expr, ...]:
     if isinstance(expr, BinOp):
-        yield from walk(expr.left)
-        yield from walk(expr.right)
-    elif isinstance(expr, Neg):
-        yield from walk(expr.operand)
-    elif isinstance(expr, (Range,)):
-        yield from walk(expr.lo)
-        yield from walk(expr.hi)
-    elif isinstance(expr, Equation):
-        yield from walk(expr.lhs)
-        yield from walk(expr.rhs)
-    elif isinstance(expr, Call):
-        for a in expr.args:
-            yield from walk(a)
-    elif isinstance(expr, Index):
-        for a in expr.indices:
-            yield from walk(a)
-    elif isinstance(expr, NameRange):
-        yield from expr.names
-    elif isinstance(expr, Matrix):
-        for row in expr.rows:
-            for e in row:
-                yield from walk(e)
+        return expr.left, expr.right
+    if isinstance(expr, Neg):
+        return (expr.operand,)
+    if isinstance(expr, Range):
+        return expr.lo, expr.hi
+    if isinstance(expr, Equation):
+        return expr.lhs, expr.rhs
+    if isinstance(expr, Call):
+        return expr.args
+    if isinstance(expr, Index):
+        return expr.indices
+    if isinstance(expr, NameRange):
+        return expr.names
+    if isinstance(expr, Matrix):
+        return tuple(e for row in expr.rows for e in row)
+    return ()
 
 
 # ---------------------------------------------------------------------------

@@ -145,7 +145,12 @@ class Builder:
     def _statement(self, ctx: P.StatementContext) -> None:
         node = ctx.getChild(0)
         handler = self._HANDLERS[type(node)]
-        result = handler(self, node)
+        try:
+            result = handler(self, node)
+        except RecursionError:
+            # the parser read it, but building it recurses deeper than Python allows
+            self._error(ctx, "E004", "this statement is nested too deeply to read")
+            return
         if result is not None:
             self.statements.append(result)
 
@@ -535,8 +540,18 @@ class Builder:
             if kids[0].symbol.type == P.PLUS:
                 return operand
             return ir.Neg(operand, span=self._span(ctx))
-        return ir.BinOp(kids[1].symbol.text, self._expr(kids[0]), self._expr(kids[2]),
-                        span=self._span(ctx))
+        # a left-associated chain (A + B - C ..., A*B/C) is walked in a loop: a sum of
+        # thousands of terms is deeper than Python's recursion
+        chain = [ctx]
+        if type(ctx) in (P.AddExprContext, P.MulExprContext):
+            while type(chain[-1].children[0]) is type(ctx):
+                chain.append(chain[-1].children[0])
+        result = self._expr(chain[-1].children[0])
+        for level in reversed(chain):
+            kids = level.children
+            result = ir.BinOp(kids[1].symbol.text, result, self._expr(kids[2]),
+                              span=self._span(level))
+        return result
 
     def _primes(self, name_ctx, primes: list) -> int:
         """Count primes, which must follow the name directly (q'' not q ' ')."""

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 
+import textwrap
 import traceback
 import types
 
@@ -28,7 +29,12 @@ def load_translation(translation, filename: str):
     name = "autolev_model"
     module = types.ModuleType(name)
     module.__file__ = filename + ".py"
-    code = compile(translation.code, module.__file__, "exec")
+    try:
+        code = compile(translation.code, module.__file__, "exec")
+    except (RecursionError, SyntaxError) as exc:
+        if not _beyond_pythons_nesting(exc):
+            raise
+        raise AutolevRuntimeError(_too_deep(translation, module.__file__)) from None
     try:
         exec(code, module.__dict__)
     except _STATEMENT_FAILURES as exc:
@@ -42,6 +48,31 @@ def load_translation(translation, filename: str):
                             for n, text in enumerate(translation.code.splitlines(), 1)
                             if text.startswith("model.code(")]
     return model
+
+
+def _beyond_pythons_nesting(exc: Exception) -> bool:
+    """Python's own limits on nesting, which a correct translation can exceed too."""
+    return isinstance(exc, RecursionError) or exc.msg == "too many nested parentheses"
+
+
+def _too_deep(translation, pyfile: str) -> Diagnostic:
+    """The statement whose Python nests deeper than Python compiles (a sum of thousands
+    of terms inside a product of thousands, powers nested 200 deep, ...)."""
+    lines = translation.code.splitlines()
+    statements: dict = {}
+    for n, span in translation.line_map.items():
+        statements.setdefault(span, []).append(lines[n - 1])
+    location = Location(pyfile, 1, 1)
+    for span, code in statements.items():
+        try:
+            compile(textwrap.dedent("\n".join(code)), pyfile, "exec")
+        except (RecursionError, SyntaxError) as exc:
+            if _beyond_pythons_nesting(exc):
+                location = span.start
+                break
+            # otherwise a part of a compound statement, which does not compile alone
+    return Diagnostic(location, "R001", "this statement is nested too deeply for Python to "
+                      "compile", "error", None)
 
 
 def _diagnostic(exc: BaseException, translation, pyfile: str) -> Diagnostic:

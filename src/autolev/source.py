@@ -204,12 +204,12 @@ def find_file(base: Path, relative: str) -> Path | None:
             current = current.parent
             continue
         exact = current / part
-        if exact.exists():
-            current = exact
-            continue
         try:
+            if exact.exists():
+                current = exact
+                continue
             matches = [c for c in current.iterdir() if c.name.lower() == part.lower()]
-        except OSError:
+        except OSError:         # a name too long for the file system, an unreadable folder
             return None
         if not matches:
             return None

@@ -9,6 +9,8 @@ import sympy as sm
 from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
 
 ZERO = Vector()
+# a symbolic matrix this large takes minutes and gigabytes to build (1000 x 1000: 3 s)
+MAX_MATRIX_ELEMENTS = 10 ** 6
 
 
 # -- vectors -----------------------------------------------------------------------
@@ -95,6 +97,9 @@ def dyadic(frame: Frame, m, other: Frame | None = None) -> Dyadic:
 def set_element(m, index: tuple, value) -> sm.Matrix:
     """X[i] = value or X[i, j] = value (1-based); X grows to hold the element."""
     idx = [_index(i) for i in index]
+    if math.prod(idx) > MAX_MATRIX_ELEMENTS:
+        raise AutolevModelError(f"element {list(idx)}: a matrix of more than "
+                                f"{MAX_MATRIX_ELEMENTS} elements is not built")
     if m is None:
         m = sm.zeros(0, 1) if len(idx) == 1 else sm.zeros(0, 0)
     m = sm.Matrix(m) if not isinstance(m, sm.MutableDenseMatrix) else m.copy()
@@ -153,6 +158,9 @@ def diagmat(n, *args) -> sm.Matrix:
         rows, cols, x = int(n), int(n), args[0]
     else:
         rows, cols, x = int(n), int(args[0]), args[1]
+    if rows * cols > MAX_MATRIX_ELEMENTS:
+        raise AutolevModelError(f"DIAGMAT: a {rows} x {cols} matrix has more than "
+                                f"{MAX_MATRIX_ELEMENTS} elements, the most that is built")
     return sm.Matrix(rows, cols, lambda i, j: x if i == j else 0)
 
 
@@ -161,6 +169,9 @@ def _selection(items, count: int) -> list[int]:
     for it in items:
         if isinstance(it, tuple):
             lo, hi = int(it[0]), int(it[1])
+            # the ends first: a range of millions outside the matrix is never listed
+            if lo <= hi and not 1 <= lo <= hi <= count:
+                raise AutolevModelError(f"indices {lo}:{hi} are outside 1..{count}")
             out.extend(range(lo, hi + 1))
         else:
             out.append(int(it))

@@ -20,6 +20,8 @@ from .names import NameTable, UnsafeName
 
 # exact integers and rationals are kept exact up to this many digits
 MAX_EXACT_DIGITS = 1000
+# Python cannot compile a longer chain A + B + ... (its nesting limit is about 3000)
+MAX_CHAIN_TERMS = 2000
 
 # precedence of the Python written for an expression
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
@@ -354,6 +356,11 @@ class Translator:
             node = node.left
         if not chain:
             chain, node = [e], e.left
+        if len(chain) >= MAX_CHAIN_TERMS:
+            what = "sum" if group == "+-" else "product"
+            raise self.error(f"a {what} of {len(chain) + 1} terms; at most {MAX_CHAIN_TERMS} "
+                             f"terms in one sum or product are translated (split it into "
+                             "several names)", e, "T004")
         result = self.expr(node)
         for level in reversed(chain):
             result = self._binary(level, result, self.expr(level.right))
@@ -399,8 +406,10 @@ class Translator:
                 b.exact > 0 and _power_digits_log10(a.exact, b.exact) > \
                 math.log10(MAX_EXACT_DIGITS):
             # sympy would compute the exact number (10^10^10 has 10^10 digits)
-            digits = 10 ** _power_digits_log10(a.exact, b.exact)
-            raise self.error(f"this power has about {digits:.3g} digits; exact numbers of "
+            log_digits = _power_digits_log10(a.exact, b.exact)
+            # beyond a float's range (2^(10^400)), the digit count as a power of ten
+            digits = f"{10 ** log_digits:.3g}" if log_digits < 300 else f"10^{log_digits:.0f}"
+            raise self.error(f"this power has about {digits} digits; exact numbers of "
                              f"more than {MAX_EXACT_DIGITS} digits are refused (write a "
                              "decimal number, 1E300, for a floating-point one)", e, "T005")
         return Typed(f"{a.wrapped(POW + 1)}**{b.wrapped(UNARY)}", ta, POW)

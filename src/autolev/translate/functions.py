@@ -72,7 +72,7 @@ def _elementary(tr: Translator, c: ir.Call) -> Typed:
         raise tr.error(f"FACTORIAL({x.exact}) has more than a thousand digits; at most "
                        f"FACTORIAL({MAX_FACTORIAL}) is computed exactly", c, "T005")
     if x.type == "matrix":
-        return Typed(f"{x.code}.applyfunc({fn})", "matrix")
+        return Typed(f"{x.wrapped(ATOM)}.applyfunc({fn})", "matrix")
     if x.type not in ("scalar", "unknown"):
         raise tr.error(f"a scalar is needed here, not a {x.type}", a)
     return Typed(f"{fn}({x.code})", "scalar")
@@ -550,7 +550,7 @@ def _element(tr, c):
     args = nargs(tr, c, 2, 3)
     m = _matrix_arg(tr, args[0], "ELEMENT")
     idx = [tr.index_code(a) for a in args[1:]]
-    return Typed(f"{m.code}[{', '.join(idx)}]", "scalar")
+    return Typed(f"{m.wrapped(ATOM)}[{', '.join(idx)}]", "scalar")
 
 
 @function("EIG")

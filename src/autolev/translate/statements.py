@@ -38,7 +38,7 @@ def _quoted_names(names: list[str]) -> str:
     text = " ".join(names)
     if len(text) <= 70:
         return quote(text)
-    parts = textwrap.wrap(text, 70)
+    parts = textwrap.wrap(text, 70, break_long_words=False)   # never split a name
     return "(" + " ".join(quote(p + (" " if i < len(parts) - 1 else ""))
                           for i, p in enumerate(parts)) + ")"
 
