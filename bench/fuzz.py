@@ -28,13 +28,19 @@ starts a fresh one.  Outcomes:
 
   ok         the model loaded
   diagnosed  an AutolevError with well-formed diagnostics (line/col >= 1, a message)
-  crash      any other exception (the first tracebacks are printed with the source)
+  crash      any other exception, or a worker that died otherwise (the first ones are
+             printed with the case's source, then one line per failure)
   hang       over the time limit
   memory     MemoryError, or the worker was killed (over the memory limit)
-  escaped    a file appeared outside the case's folder
+  escaped    a file appeared outside the case's folder: any new file in the worker's
+             own folders (its working directory), or one the case names in the temp
+             folder, the repository or the home folder
 
-Prints a table (one row per mode and seed, then one per seed and generator); the exit
-status is 1 when anything crashed, hung, blew the memory limit or escaped.
+Each case has its own random stream (from the seed and its index), so `--replay`
+regenerates it alone.  With several seeds or the grammar mode, a table follows: one
+row per mode and seed (wall time; for mutants, "ok" counts those that parsed and "-"
+marks what is not measured), then one row per seed and generator (summed case times).
+The exit status is 1 when anything crashed, hung, blew the memory limit or escaped.
 
     python bench/fuzz.py [--mutants 10000] [--seed 1] [--corpus DIR]
     python bench/fuzz.py --mode grammar|all [--cases 10000] [--seeds 1,2] [--jobs 1]
