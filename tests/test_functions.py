@@ -77,6 +77,12 @@ def test_expand_and_factor_as_statements_change_the_name():
     assert ns["E"] == 4*x**2 + x*(7*y + 21) + 4*y**2 + 21*y
 
 
+def test_factor_leaves_function_arguments_as_they_are():
+    ns = build("VARIABLES x\nCONSTANTS a, b\nE = a*x + b*x + SIN(x*(a+b))\nFACTOR(E, x)")
+    x, a, b = (sm.Symbol(n, real=True) for n in "xab")
+    assert ns["E"] == x * (a + b) + sm.sin(x * (a + b))
+
+
 def test_arrange_replace_and_evaluate():
     ns = build("CONSTANTS a,b\nVARIABLES x\nAr = ARRANGE(a*x + b*x + a*b, 1, x)\n"
                "R = REPLACE(a*x + b, x=SIN(b), a=2)\nV = EVALUATE(a*x^2, x=2, a=3)\n"
@@ -229,7 +235,9 @@ def test_eig_values_and_vectors_in_a_documented_order():
 # -- scalars ------------------------------------------------------------------------------
 @pytest.mark.parametrize("expr, want", [
     ("INT(2.7)", 2), ("INT(-2.7)", -2), ("ROUND(2.5)", 3), ("ROUND(-2.5)", -3),
-    ("ROUND(2.4)", 2), ("SIGN(-3)", -1), ("ABS(-2)", 2), ("MAX(1, 3, 2)", 3),
+    ("ROUND(2.4)", 2), ("INT(3*SQRT(2))", 4), ("ROUND(-3*SQRT(2))", -4),
+    ("ROUND(0.49999999999999994)", 0), ("INT(-0.5)", 0), ("SIGN(-3)", -1), ("ABS(-2)", 2),
+    ("MAX(1, 3, 2)", 3),
     ("MIN(4, -1)", -1), ("LOG10(1000)", 3), ("SQR(3)", 9), ("EXP(0)", 1),
     ("FACTORIAL(4)", 24), ("CEIL(2.1)", 3), ("FLOOR(-2.1)", -3), ("SQRT(16)", 4),
     ("SEC(0)", 1), ("CSC(PI/2)", 1), ("COT(PI/4)", 1), ("ATAN2(1, 1)", math.pi / 4),
@@ -248,6 +256,20 @@ def test_int_round_sign_abs_max_min_stay_symbolic_and_evaluate_later():
     for v, want in ((-2.7, (-2, -3, -1, 2.7, 1, -2.7)), (2.5, (2, 3, 1, 2.5, 2.5, 1))):
         got = [float(ns[k].subs(x, v)) for k in ("I", "R", "S", "A1", "M", "N")]
         assert got == list(want)
+
+
+def test_int_and_round_are_one_node_each_however_deep():
+    # as sign(x)*floor(|x|) the argument appeared twice: 2^depth nodes
+    ns = build("VARIABLES x\nE = " + "INT(ROUND(" * 15 + "x" + "))" * 15)
+    x = sm.Symbol("x", real=True)
+    assert sm.count_ops(ns["E"]) <= 2 and float(ns["E"].subs(x, -2.5)) == -3.0
+    assert sm.diff(ns["E"], x) == 0        # constant between the integers
+
+
+def test_int_of_a_number_beyond_a_double_stays_unevaluated():
+    # COS(SINH(1E7)) exactly needs millions of digits; Autolev computed in doubles
+    ns = build("VARIABLES x\nE = INT(COS(SINH(x)))\nF = EVALUATE(E, x = 10^7)")
+    assert not ns["F"].is_Integer and ns["F"].free_symbols == set()
 
 
 def test_negative_exponent_binds_to_the_power():

@@ -273,6 +273,24 @@ def test_c_and_python_back_ends_give_identical_numbers():
     assert np.array_equal(a.states, b.states)
 
 
+@pytest.mark.parametrize("backend", ["python", "c"])
+def test_int_and_round_in_generated_code_truncate_and_round_halves_away(backend):
+    import sympy as sm
+    from autolev.runtime import Int, Round
+    from autolev.runtime.calculus import Definitions
+    if backend == "c" and codegen.compiler() is None:
+        pytest.skip("no C compiler on this machine: only the Python back end exists")
+    x = sm.Symbol("x")
+    prog = codegen.Program({"x": [x]}, [Int(x), Round(x)], Definitions()).build()
+    fn = (codegen.compile_c if backend == "c" else codegen.compile_python)(prog)[0]
+    # by hand: toward zero, and halves away from zero (C's round)
+    for v, want in ((2.5, (2, 3)), (-2.5, (-2, -3)), (-2.7, (-2, -3)), (-0.2, (0, 0)),
+                    (0.49999999999999994, (0, 0)), (1e300, (1e300, 1e300))):
+        out = np.zeros(2)
+        fn(np.array([v]), out)
+        assert tuple(out) == want
+
+
 def test_generated_code_does_not_depend_on_the_hash_seed():
     code = ("import autolev, warnings; warnings.simplefilter('ignore');"
             f"m = autolev.load({str(EXAMPLES / 'nlink_pendulum.al')!r});"

@@ -6,6 +6,7 @@ import math
 import numpy as np
 import sympy as sm
 
+from .calculus import refuse_huge_powers
 from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
 
 ZERO = Vector()
@@ -236,7 +237,12 @@ def _map(x, fn):
 
 def replace(x, mapping: dict):
     """REPLACE(E, a=b, ...): substitute sub-expressions."""
-    return _map(x, lambda e: e.subs(mapping))
+    mapping = {sm.sympify(k): sm.sympify(v) for k, v in mapping.items()}
+
+    def substituted(e):
+        refuse_huge_powers(e, mapping)
+        return e.subs(mapping)
+    return _map(x, substituted)
 
 
 def expand(x, lo=None, hi=None):
@@ -246,7 +252,7 @@ def expand(x, lo=None, hi=None):
 
 def factor(x, *vars_):
     if vars_:
-        return _map(x, lambda e: sm.collect(sm.expand(e), list(vars_)))
+        return _map(x, lambda e: sm.collect(sm.expand(e, deep=False), list(vars_)))
     return _map(x, sm.factor)
 
 
@@ -307,21 +313,75 @@ def epsilon(x, tol):
     return _map(x, clean)
 
 
+class Int(sm.Function):
+    """INT(x) of Autolev: x truncated toward zero.  One node (not sign(x)*floor(|x|),
+    which holds x twice and doubles the tree at every level of nesting)."""
+
+    @classmethod
+    def eval(cls, x):
+        return _integer_of(x, _truncated)
+
+    def _eval_is_integer(self):
+        return self.args[0].is_extended_real
+
+    def _eval_is_real(self):
+        return self.args[0].is_extended_real
+
+    def fdiff(self, argindex=1):
+        return sm.S.Zero
+
+
+class Round(sm.Function):
+    """ROUND(x) of Autolev: the nearest integer, halves away from zero (C's round)."""
+
+    @classmethod
+    def eval(cls, x):
+        return _integer_of(x, _rounded)
+
+    def _eval_is_integer(self):
+        return self.args[0].is_extended_real
+
+    def _eval_is_real(self):
+        return self.args[0].is_extended_real
+
+    def fdiff(self, argindex=1):
+        return sm.S.Zero
+
+
+def _truncated(q) -> int:
+    return int(q)
+
+
+def _rounded(q) -> int:
+    t = int(q)
+    return t + (1 if q > 0 else -1) if abs(q - t) >= sm.Rational(1, 2) else t
+
+
+def _integer_of(x, integer):
+    """INT or ROUND of a number: exact for a rational or a decimal, the double-precision
+    value otherwise (as Autolev computed it; an exact evaluation of COS(SINH(1E7))
+    needs millions of digits), None (kept as it is) for a symbol, an infinity or nan."""
+    if isinstance(x, (Int, Round)):
+        return x
+    if not x.is_number or x.is_extended_real is False:
+        return None
+    if x.is_Rational:
+        return sm.Integer(integer(x))
+    if x.is_Float:
+        return sm.Integer(integer(sm.Rational(x))) if x.is_finite else None
+    from .numerics.codegen import number_value
+    v = number_value(x)
+    return sm.Integer(integer(sm.Rational(v))) if math.isfinite(v) else None
+
+
 def integer_part(x):
     """INT(x): x truncated toward zero."""
-    x = sm.sympify(x)
-    if x.is_number and x.is_real:
-        return sm.Integer(int(x))
-    return sm.sign(x) * sm.floor(sm.Abs(x))
+    return Int(sm.sympify(x))
 
 
 def round_half_away(x):
     """ROUND(x): nearest integer, halves away from zero."""
-    x = sm.sympify(x)
-    if x.is_number and x.is_real:
-        v = float(x)
-        return sm.Integer(int(math.floor(abs(v) + 0.5)) * (1 if v >= 0 else -1))
-    return sm.sign(x) * sm.floor(sm.Abs(x) + sm.Rational(1, 2))
+    return Round(sm.sympify(x))
 
 
 def degrees_to_radians(x):
@@ -411,5 +471,6 @@ def units_factor(a: str, b: str):
 __all__ = ["ZERO", "VectorColumn", "dot", "cross", "mag", "unitvec", "express", "vector", "matrix", "dyadic",
            "outer", "set_element", "block_matrix", "transpose", "trace", "diagmat", "rows",
            "cols", "eig", "replace", "expand", "factor", "simplify", "arrange", "polynomial",
-           "roots", "epsilon", "integer_part", "round_half_away", "degrees_to_radians",
+           "roots", "epsilon", "integer_part", "round_half_away", "Int", "Round",
+           "degrees_to_radians",
            "unit_value", "units_factor"]

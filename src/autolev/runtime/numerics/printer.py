@@ -17,14 +17,15 @@ _C_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "a
             "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
             "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "exp": "exp",
             "log": "log", "floor": "floor", "ceiling": "ceil", "Abs": "fabs",
-            "atan2": "atan2", "erf": "erf", "gamma": "tgamma"}
+            "atan2": "atan2", "erf": "erf", "gamma": "tgamma", "Int": "trunc",
+            "Round": "round"}
 _PY_FUNCS = {"sin": "math.sin", "cos": "math.cos", "tan": "math.tan", "asin": "math.asin",
              "acos": "math.acos", "atan": "math.atan", "sinh": "math.sinh",
              "cosh": "math.cosh", "tanh": "math.tanh", "asinh": "math.asinh",
              "acosh": "math.acosh", "atanh": "math.atanh", "exp": "math.exp",
              "log": "math.log", "floor": "math.floor", "ceiling": "math.ceil",
              "Abs": "math.fabs", "atan2": "math.atan2", "erf": "math.erf",
-             "gamma": "math.gamma"}
+             "gamma": "math.gamma", "Int": "_trunc", "Round": "_round"}
 
 # precedence: higher binds tighter
 _ADD, _MUL, _UNARY, _POW, _ATOM = 1, 2, 3, 4, 5
