@@ -88,9 +88,16 @@ def test_nested_functions_translate_each_argument_once(monkeypatch):
         calls.append(e)
         return real(self, e, want)
     monkeypatch.setattr(Translator, "expr", counting)
-    text = "CONSTANTS A\nX = " + "SIN(COS(" * 20 + "A" + "))" * 20 + "\n"
+    text = "CONSTANTS A\nX = " + "SIN(COS(" * 16 + "A" + "))" * 16 + "\n"
     autolev.transpile(text, "m.al")
-    assert len(calls) <= 2 * 40 + 10        # linear in the depth, not 2^40
+    assert len(calls) <= 2 * 32 + 10        # linear in the depth, not 2^32
+
+
+def test_functions_nested_beyond_the_limit_are_a_diagnostic_at_the_innermost_call(tmp_path):
+    text = "CONSTANTS A\nX = " + "TANH(SINH(" * 17 + "A" + "))" * 17 + "\n"
+    (d,) = diagnostics_of(tmp_path, text)
+    assert d.code == "T004" and "nested more than 32 deep" in d.message
+    assert (d.location.line, d.location.col) == (2, 5 + 32 * 5)
 
 
 @pytest.mark.parametrize("text, line", [
@@ -144,10 +151,9 @@ def test_a_sum_longer_than_python_compiles(tmp_path):
     assert d.code == "T004" and d.location.line == 2 and "5000 terms" in d.message
 
 
-@pytest.mark.parametrize("text", [
-    "(" + " + ".join(["A"] * 1999) + ")*" + "*".join(["A"] * 1999),
-    "SIN(" * 210 + "A" + ")" * 210])
-def test_statements_nested_deeper_than_python_compiles(tmp_path, text):
+def test_statements_nested_deeper_than_python_compiles(tmp_path):
+    # (functions nested this deep are refused before: T004)
+    text = "(" + " + ".join(["A"] * 1999) + ")*" + "*".join(["A"] * 1999)
     d = load_error(tmp_path, "CONSTANTS A\nX = " + text + "\n")
     assert d.code == "R001" and "nested too deeply" in d.message
     assert (d.location.line, d.location.col) == (2, 1)
@@ -198,3 +204,37 @@ def test_a_statement_the_parser_reads_but_nested_too_deeply_to_build(tmp_path):
     from conftest import errors_of
     (d,) = errors_of("CONSTANTS A\nX = " + text + "\n")
     assert d.code == "E004" and (d.location.line, d.location.col) == (2, 1)
+
+
+@pytest.mark.parametrize("text", ["X = EXP(1000000)", "X = COS(SINH(FACTORIAL(11)))",
+                                  "X = EXP(EXP(20))", "X = COSH(-10^400)"])
+def test_functions_of_numbers_beyond_a_double_are_refused(tmp_path, text):
+    (d,) = diagnostics_of(tmp_path, text + "\n")
+    assert d.code == "T005" and "beyond double precision" in d.message
+
+
+def test_functions_of_numbers_within_a_double_stay_exact(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("X = EXP(700) + SIN(10^400) + EXP(-10^6)\n")
+    import sympy as sm
+    x = autolev.load(path)["X"]
+    assert x == sm.exp(700) + sm.sin(sm.Integer(10) ** 400) + sm.exp(-10 ** 6)
+
+
+@pytest.mark.parametrize("text", ["VARIABLES X'\nE = EVALUATE(X^4294967297, X = 2)",
+                                  "VARIABLES X'\nZ = X + 1\nE = EVALUATE(Z^99999, X = 1)",
+                                  "VARIABLES X'\nE = REPLACE(X^(-4294967297), X = 1/3)"])
+def test_substituting_a_number_into_a_huge_exact_power_is_refused(tmp_path, text):
+    d = load_error(tmp_path, text + "\n")
+    assert d.code == "R001" and "exact numbers of more than 1000 digits" in d.message
+    assert d.location.line == text.count("\n") + 1
+
+
+def test_substituting_into_powers_that_stay_small(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("VARIABLES X'\nA = EVALUATE(X^4294967297, X = 1)\n"
+                    "B = EVALUATE(X^4294967297, X = 2.0)\nC = EVALUATE(X^900, X = 10)\n")
+    import sympy as sm
+    m = autolev.load(path)
+    assert m["A"] == 1 and m["C"] == sm.Integer(10) ** 900
+    assert float(sm.log(m["B"], 2)) == pytest.approx(4294967297)

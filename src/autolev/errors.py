@@ -8,6 +8,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+# exact numbers beyond this many digits are refused (sympy would compute 10^10^10 in
+# full) where the translator folds literals and where the runtime substitutes values
+MAX_EXACT_DIGITS = 1000
+
 
 @dataclass(frozen=True)
 class Location:

@@ -23,6 +23,7 @@ from contextlib import contextmanager
 
 import sympy as sm
 
+from ..errors import MAX_EXACT_DIGITS
 from .symbols import TIME, Z, derivative, new_z
 from .errors import AutolevModelError
 from .fastdiff import diff as fast_diff
@@ -106,6 +107,42 @@ def is_small(e: sm.Basic, limit: int = SMALL) -> bool:
             return False
         stack.extend(node.args)
     return True
+
+
+def _exact_number(v) -> bool:
+    return v.is_Rational or v.is_Pow and v.base.is_Rational and v.exp.is_Rational
+
+
+# an exponent below this cannot give MAX_EXACT_DIGITS digits from an exact base
+_LARGE_EXPONENT = MAX_EXACT_DIGITS / math.log10(2)
+
+
+def refuse_huge_powers(expr, repl: dict) -> None:
+    """Refuse a substitution that would make sympy compute an exact power of more than
+    MAX_EXACT_DIGITS digits (EVALUATE(X^4294967297, X=2) takes gigabytes)."""
+    seen: set = set()
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if e.is_Atom or e in seen:
+            continue
+        seen.add(e)
+        stack.extend(e.args)
+        if not (e.is_Pow and e.exp.is_Integer and abs(e.exp) > _LARGE_EXPONENT):
+            continue
+        base, power = e.base.xreplace(repl), abs(int(e.exp))
+        if base.is_Pow and base.base.is_Rational and base.exp.is_Rational:
+            base, power = base.base, power * abs(base.exp)
+        if not base.is_Rational or base in (0, 1, -1):
+            continue
+        digits = float(power) * math.log10(max(abs(base.p), base.q))
+        if digits > MAX_EXACT_DIGITS:
+            values = ", ".join(f"{k} = {v}" for k, v in repl.items() if k in e.free_symbols)
+            raise AutolevModelError(
+                f"{str(e).replace('**', '^')} with {values} is an exact number of about "
+                f"{digits:.3g} digits; exact numbers of more than "
+                f"{MAX_EXACT_DIGITS} digits are refused (give a decimal value, 2.0, for a "
+                "floating-point result)")
 
 
 class Definitions:
@@ -432,7 +469,11 @@ class Definitions:
             r = self._subs.get((s, key))
             if r is not None:
                 repl[s] = r
-        return expr.xreplace(repl) if repl else expr
+        if not repl:
+            return expr
+        if any(_exact_number(v) for v in repl.values()):
+            refuse_huge_powers(expr, repl)
+        return expr.xreplace(repl)
 
     def explicit(self, expr, keep: Iterable[sm.Symbol] = ()) -> sm.Expr:
         """expr with every definition (and Z) expanded, except the symbols in `keep`."""

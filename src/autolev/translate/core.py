@@ -14,14 +14,15 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 
 from .. import ir
-from ..errors import Diagnostic, Span
+from ..errors import MAX_EXACT_DIGITS, Diagnostic, Span
 from .emit import comment, docstring, quote
 from .names import NameTable, UnsafeName
 
-# exact integers and rationals are kept exact up to this many digits
-MAX_EXACT_DIGITS = 1000
 # Python cannot compile a longer chain A + B + ... (its nesting limit is about 3000)
 MAX_CHAIN_TERMS = 2000
+# functions nested deeper than this make sympy's automatic evaluation exponential (the
+# real-imaginary split of TANH(SINH(...)) 150 deep runs for hours); models nest three
+MAX_CALL_NESTING = 32
 
 # precedence of the Python written for an expression
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
@@ -49,6 +50,7 @@ class Typed:
     prec: int = ATOM
     exact: Fraction | None = None      # value of a pure integer/rational expression
     node: object = None
+    approx: float | None = None        # double value of a function of numbers (EXP(2))
 
     def wrapped(self, below: int) -> str:
         return f"({self.code})" if self.prec < below else self.code
@@ -95,6 +97,7 @@ class Translator:
         self.diagnostics: list[Diagnostic] = []
         self.degrees = True
         self.complex = False
+        self.call_depth = 0
         # AUTORHS ON: a declared name with a stored RHS is replaced by it when read
         self.autorhs = False
         self.defined: set[tuple[str, int]] = set()
@@ -477,7 +480,15 @@ class Translator:
 
     def _x_Call(self, e: ir.Call, want) -> Typed:
         from .functions import call
-        return call(self, e)
+        if self.call_depth >= MAX_CALL_NESTING:
+            raise self.error(f"functions nested more than {MAX_CALL_NESTING} deep; at most "
+                             f"{MAX_CALL_NESTING} are translated (name the inner parts)",
+                             e, "T004")
+        self.call_depth += 1
+        try:
+            return call(self, e)
+        finally:
+            self.call_depth -= 1
 
     def _x_Index(self, e: ir.Index, want) -> Typed:
         key = e.name.lower()

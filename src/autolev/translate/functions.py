@@ -7,6 +7,7 @@ Autolev's own meaning (DT through definitions, EVALUATE, KE, ...) onto the runti
 from __future__ import annotations
 
 import difflib
+import math
 
 from .. import ir
 from .core import ATOM, Translator, Typed
@@ -64,10 +65,19 @@ _SYMPY = {"SIN": "sm.sin", "COS": "sm.cos", "TAN": "sm.tan", "ASIN": "sm.asin",
           "COT": "sm.cot", "ASINH": "sm.asinh", "ACOSH": "sm.acosh", "ATANH": "sm.atanh"}
 
 
+# the same functions in double precision, to catch a number beyond a double's range
+_DOUBLE = {"SIN": math.sin, "COS": math.cos, "TAN": math.tan, "ASIN": math.asin,
+           "ACOS": math.acos, "ATAN": math.atan, "SINH": math.sinh, "COSH": math.cosh,
+           "TANH": math.tanh, "EXP": math.exp, "LOG": math.log, "SQRT": math.sqrt,
+           "ABS": abs, "FACTORIAL": lambda v: math.gamma(v + 1), "ASINH": math.asinh,
+           "ACOSH": math.acosh, "ATANH": math.atanh}
+
+
 def _elementary(tr: Translator, c: ir.Call) -> Typed:
     (a,) = nargs(tr, c, 1)
     x = tr.expr(a)              # once: translating an argument twice is exponential
-    fn = _SYMPY[c.name.upper()]
+    name = c.name.upper()
+    fn = _SYMPY[name]
     if fn == "sm.factorial" and x.exact is not None and x.exact > MAX_FACTORIAL:
         raise tr.error(f"FACTORIAL({x.exact}) has more than a thousand digits; at most "
                        f"FACTORIAL({MAX_FACTORIAL}) is computed exactly", c, "T005")
@@ -75,7 +85,31 @@ def _elementary(tr: Translator, c: ir.Call) -> Typed:
         return Typed(f"{x.wrapped(ATOM)}.applyfunc({fn})", "matrix")
     if x.type not in ("scalar", "unknown"):
         raise tr.error(f"a scalar is needed here, not a {x.type}", a)
-    return Typed(f"{fn}({x.code})", "scalar")
+    return Typed(f"{fn}({x.code})", "scalar", approx=_double_value(tr, c, name, x))
+
+
+def _double_value(tr: Translator, c: ir.Call, name: str, x: Typed) -> float | None:
+    """The function of a number in double precision, as Autolev computed it; a value
+    beyond a double's range is refused (sympy would keep EXP(1E6) exact, and the sine
+    of it takes millions of digits)."""
+    if name not in _DOUBLE:
+        return None
+    if x.approx is not None:
+        v = x.approx
+    elif x.exact is not None:
+        v = float(x.exact) if abs(x.exact) < 10 ** 308 else (math.inf if x.exact > 0 else -math.inf)
+    else:
+        return None
+    try:
+        r = _DOUBLE[name](v)
+    except (ValueError, ZeroDivisionError):
+        return None             # outside the real domain: sympy's complex value stays
+    except OverflowError:
+        r = math.inf
+    if math.isinf(r):
+        raise tr.error(f"{name} of this number is beyond double precision (more than "
+                       "1.8E308); Autolev computed numbers in doubles", c, "T005")
+    return r
 
 
 for _n in _SYMPY:
