@@ -89,14 +89,20 @@ def _plant(cache, marker) -> list:
     return planted
 
 
-def test_a_library_planted_in_a_cache_others_can_write_is_not_loaded(cache, tmp_path):
+def test_a_library_planted_in_a_cache_others_can_write_is_not_loaded(cache, tmp_path,
+                                                                    monkeypatch):
     simulate()
     marker = tmp_path / "PLANTED-CODE-RAN"
     _plant(cache, marker)
     os.chmod(cache, 0o777)
+    temp = tmp_path / "temp"
+    temp.mkdir()
+    monkeypatch.setenv("TMPDIR", str(temp))
     said = simulate()["said"]
     assert not marker.exists()
     assert any("writable by others" in m for m in said)
+    # the private folder the run built in instead is gone when the run ends
+    assert not list(temp.glob("autolev-build-*"))
 
 
 @pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() != 0,

@@ -9,6 +9,7 @@ the same numbers: the same operations in the same order, in double precision.
 """
 from __future__ import annotations
 
+import atexit
 import ctypes
 import hashlib
 import math
@@ -191,6 +192,21 @@ def _heaviside(x):
     return 1.0 if x > 0 else (0.5 if x == 0 else 0.0)
 
 
+def _trunc(x):
+    return float(math.trunc(x))
+
+
+def _round(x):
+    # C's round: halves away from zero (x - trunc(x) is exact in double precision)
+    t = float(math.trunc(x))
+    return t + math.copysign(1.0, x) if abs(x - t) >= 0.5 else t
+
+
+def _np_round(x):
+    t = np.trunc(x)
+    return t + np.copysign(1.0, x) * (np.abs(x - t) >= 0.5)
+
+
 class _NumpyMath:
     """`math` for the fallback evaluation: numpy's functions, which give inf and nan
     where math raises (as the C code does)."""
@@ -213,9 +229,8 @@ def compile_python(prog: Program, name: str = "compute"):
     numpy scalars, which gives inf or nan like compiled C."""
     source = python_source(prog, name)
     code = compile(source, f"<autolev generated {name}>", "exec")
-    fast_ns = {"math": math, "_sign": _sign, "_heaviside": _heaviside}
+    fast_ns, safe_ns = _fast_namespace(), _safe_namespace()
     exec(code, fast_ns)
-    safe_ns = {"math": _NumpyMath(), "_sign": np.sign, "_heaviside": _np_heaviside}
     exec(code, safe_ns)
     fast, safe = fast_ns[name], safe_ns[name]
     n_in = len(prog.inputs)
@@ -232,6 +247,27 @@ def compile_python(prog: Program, name: str = "compute"):
 
 def _np_heaviside(x):
     return np.heaviside(x, 0.5)
+
+
+def _fast_namespace() -> dict:
+    return {"math": math, "_sign": _sign, "_heaviside": _heaviside, "_trunc": _trunc,
+            "_round": _round}
+
+
+def _safe_namespace() -> dict:
+    return {"math": _NumpyMath(), "_sign": np.sign, "_heaviside": _np_heaviside,
+            "_trunc": np.trunc, "_round": _np_round}
+
+
+def number_value(expr) -> float:
+    """A closed-form number (no symbols) in double precision, computed as the generated
+    code computes it: inf or nan where that overflows or is undefined."""
+    code = compile(CodePrinter("python", {})(expr), "<autolev number>", "eval")
+    try:
+        return float(eval(code, _fast_namespace()))
+    except _MATH_ERRORS:
+        with np.errstate(all="ignore"):
+            return float(eval(code, _safe_namespace()))
 
 
 # -- C ---------------------------------------------------------------------------------
@@ -352,7 +388,9 @@ def cache_dir() -> Path:
         warnings.warn(f"the build cache {path} {problem}; building in a private temporary "
                       "folder instead (set AUTOLEV_CACHE to a folder of your own, mode 700)",
                       stacklevel=3)
-        _FALLBACK_CACHE.append(Path(tempfile.mkdtemp(prefix="autolev-build-")))
+        folder = tempfile.mkdtemp(prefix="autolev-build-")
+        atexit.register(shutil.rmtree, folder, ignore_errors=True)   # nothing left in /tmp
+        _FALLBACK_CACHE.append(Path(folder))
     return _FALLBACK_CACHE[0]
 
 
