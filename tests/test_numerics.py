@@ -380,8 +380,9 @@ def test_missing_constant_stops_the_run_before_the_build_unless_zero_is_asked(tm
                         lambda *a, **kw: compiled.append(a[2]) or real(*a, **kw))
     model = load("zero_inputs")
     with pytest.raises(autolev.runtime.MissingValues,
-                       match=r"1 constant of zero_inputs.c has no value: L\."):
+                       match=r"1 constant of zero_inputs.c has no value: L\.") as info:
         model.simulate(out_dir=tmp_path)
+    assert info.value.names == ("L",)
     assert compiled == []                       # refused before anything was compiled
     template = tmp_path / "zero_inputs-template.in"
     assert [p.name for p in tmp_path.iterdir()] == [template.name]

@@ -6,4 +6,9 @@ class AutolevModelError(Exception):
 
 
 class MissingValues(AutolevModelError):
-    """Constants a run needs have no value (raised before anything is compiled)."""
+    """Constants a run needs have no value (raised before anything is compiled);
+    `names`: their names as the model spells them."""
+
+    def __init__(self, message: str, names=()):
+        super().__init__(message)
+        self.names = tuple(names)

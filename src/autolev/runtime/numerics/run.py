@@ -251,7 +251,8 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         missing = inputs.missing(constants)
         if missing and missing_values == "refuse":
             raise MissingValues(_missing_message(model, missing, inputs, kinds, out_dir,
-                                                 stem, command.filename))
+                                                 stem, command.filename),
+                                [display_name(k) for k in missing])
         inputs.fill_missing(constants)
         if missing:
             warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
