@@ -15,7 +15,6 @@ import argparse
 import csv
 import os
 import sys
-from collections import Counter
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -185,7 +184,8 @@ def main() -> int:
     for stage in order:
         failed = sum(r["stage"] == stage for r in results)
         passed -= failed
-        print(f"{stage:9s}: {total - sum(r['stage'] in order[:order.index(stage) + 1] for r in results)}"
+        passed = total - sum(r['stage'] in order[:order.index(stage) + 1] for r in results)
+        print(f"{stage:9s}: {passed}"
               f"/{total} models get past it ({failed} stop here)")
     ok = sum(r["stage"] == "ok" for r in results)
     print(f"translate and build without a diagnostic: {ok}/{total} ({100 * ok / total:.1f} %)")

@@ -783,12 +783,12 @@ def literals_case(rng: random.Random) -> tuple[str, str]:
         f"M = [1, 2]\nE = ROWS(M, 1:{huge})", f"M = [1; 2]\nE = M[{huge}]",
         f"M[{huge}] = A1\nE = {rng.choice(('SIN(M)', 'M + M', 'TRANSPOSE(M)*M', 'ROWS(M)'))}",
         "VARIABLES Z" + "'" * log_uniform(rng, 4, 400),
-        "E = X" + "'" * log_uniform(rng, 3, 400), f"INPUT TFINAL = 1E308, INTEGSTP = 1E-308",
+        "E = X" + "'" * log_uniform(rng, 3, 400), "INPUT TFINAL = 1E308, INTEGSTP = 1E-308",
         f"INPUT A1 = {digits} m", f"DIGITS {huge}", f"PAUSE {digits}", "AUTOEPSILON 1E-400",
         f"SIMPROT(N, A, {huge}, Q1)", "SIMPROT(N, A, 3, 1E308)", f"E = EXPAND(X, 1:{huge})",
         f"E = ARRANGE(A1*X, {huge}, X)", f"E = POLYNOMIAL([{', '.join(['1'] * 50)}], X)",
         f"E = EXPAND((A1 + B1 + C1)^{rng.randint(5, 60)})", f"E = (A1 + X)^{huge}",
-        f"E = SIN({digits})", f"E = EXP({big})", f"E = LOG(1E-400)", f"E = INT({digits}.5)",
+        f"E = SIN({digits})", f"E = EXP({big})", "E = LOG(1E-400)", f"E = INT({digits}.5)",
         f"E = ROUND(1E{rng.randint(300, 400)})", f"E = {digits} * N1>",
         f"E = D(X^{huge}, X)", f"E = EVALUATE(X^{huge}, X = 2)")
     chosen = [rng.choice(statements) for _ in range(rng.randint(1, 3))]

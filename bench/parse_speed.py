@@ -126,7 +126,8 @@ def main() -> int:
         ours_good = sum(times[f] for f in good)
         theirs_good = sum(data["times"][f] for f in good)
         print(f"sympy parse_autolev: {theirs:.2f} s over all {len(files)} models "
-              f"({len(files) - len(good)} raised, reported syntax errors or stopped early); time ratio sympy/autolev "
+              f"({len(files) - len(good)} raised, reported syntax errors or stopped early); "
+              "time ratio sympy/autolev "
               f"{theirs / ours:.2f}")
         print(f"  on the {len(good)} models sympy reads without an error: sympy "
               f"{theirs_good:.2f} s, autolev {ours_good:.2f} s, ratio "

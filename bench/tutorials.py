@@ -24,7 +24,6 @@ import sympy as sm
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
 
-import autolev  # noqa: E402
 from autolev.errors import AutolevError  # noqa: E402
 
 CORPUS = Path(os.environ.get("AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus"))
@@ -104,7 +103,6 @@ def main() -> int:
     # -- tutorial 1: responses worked out by hand ---------------------------------------
     m, _ = models[1]
     ns = m.namespace
-    x, y = sm.Symbol("x", real=True), sm.Symbol("y", real=True)
     check("T1 F = Evaluate(Taylor(x*cos(y), 0:7), x=1, y=0.5)",
           abs(float(ns["F"]) - (1 - .5**2 / 2 + .5**4 / 24 - .5**6 / 720)) < 1e-15,
           f"{float(ns['F']):.12f}")

@@ -5,7 +5,6 @@ import stat
 import subprocess
 import pytest
 
-import autolev
 from autolev.runtime.numerics import codegen
 from conftest import EXAMPLES
 

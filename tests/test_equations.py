@@ -204,7 +204,8 @@ def test_rolling_disc_equals_sympy_kanesmethod():
     CN = CO.locatenew("CN", -r * B.z)
     CN.v2pt_theory(CO, N, C)
     disc = me.RigidBody("disc", CO, C, mass,
-                        (me.inertia(C, mass * r ** 2 / 4, mass * r ** 2 / 2, mass * r ** 2 / 4), CO))
+                        (me.inertia(C, mass * r ** 2 / 4, mass * r ** 2 / 2, mass * r ** 2 / 4),
+                         CO))
     km = me.KanesMethod(N, list(qs), list(us[:3]), kd_eqs=[q_.diff() - u_ for q_, u_ in
                                                           zip(qs, us)],
                         u_dependent=list(us[3:]),

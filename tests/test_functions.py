@@ -285,7 +285,8 @@ def test_negative_exponent_binds_to_the_power():
     ("ft, m", sm.Rational(3048, 10000)), ("in, cm", sm.Rational(254, 100)),
     ("lbf, n", sm.Rational(44482216152605, 10**13)), ("slug, kg", None),
     ("n*m, lbf*ft", 1 / (sm.Rational(44482216152605, 10**13) * sm.Rational(3048, 10000))),
-    ("rpm, rad/sec", sm.pi / 30), ("min, sec", 60), ("km, m", 1000), ("g, kg", sm.Rational(1, 1000)),
+    ("rpm, rad/sec", sm.pi / 30), ("min, sec", 60), ("km, m", 1000),
+    ("g, kg", sm.Rational(1, 1000)),
 ])
 def test_units_factors_are_exact(args, want):
     # the peer knows only deg<->rad, rounded to 0.0174533
@@ -364,7 +365,8 @@ def test_gyrostat_adds_the_rotor_spin_times_its_axial_inertia():
                "W_A_N> = VECTOR(A, W1, W2, W3)\nW_B_A> = OMEGA*A3>\n"
                "P_NO_AO> = 0>\n"
                "H> = MOMENTUM(ANGULAR, AO) + GYROSTAT(ANGMOM, CYLINDER, A, B, J)\n"
-               "H3 = DOT(H>, A3>)\nH1 = DOT(H>, A1>)".replace("MASS A=M\n", "CONSTANTS M, I{3}\nMASS A=M\n"))
+               "H3 = DOT(H>, A3>)\nH1 = DOT(H>, A1>)".replace("MASS A=M\n",
+                                                            "CONSTANTS M, I{3}\nMASS A=M\n"))
     v = dict(W1=0.1, W2=0.2, W3=1.0, OMEGA=-20.0, J=0.07634, I1=1.25, I2=4.25, I3=5.0)
     assert abs(val(ns, ns["H3"], **v) - (5.0 * 1.0 + 0.07634 * -20.0)) < 1e-12
     assert abs(val(ns, ns["H1"], **v) - 1.25 * 0.1) < 1e-12

@@ -100,7 +100,8 @@ def test_unitsystem():
 
 @pytest.mark.parametrize("text, what, filename, options", [
     ("CODE DYNAMICS() bike.c", "dynamics", "bike.c", ()),
-    ("Code Algebraic() gait2d_osim/gait2d_FK_raw.c", "algebraic", "gait2d_osim/gait2d_FK_raw.c", ()),
+    ("Code Algebraic() gait2d_osim/gait2d_FK_raw.c", "algebraic", "gait2d_osim/gait2d_FK_raw.c",
+     ()),
     ("CODE DYNAMICS() 7segSprint_raw.f, NOSUBS", "dynamics", "7segSprint_raw.f", ("NOSUBS",)),
     ("CODE DYNAMICS() BICYCLE10.M ,SUBS", "dynamics", "BICYCLE10.M", ("SUBS",)),
     (r"Code Algebraic() dir\file_raw.c", "algebraic", r"dir\file_raw.c", ()),

@@ -154,7 +154,8 @@ class Parser:
             first_per_line.setdefault(mapped.text.count("\n", 0, off), off)
         for off in first_per_line.values():
             ch = mapped.text[off] if off < len(mapped.text) else ""
-            shown = repr(ch) if ch.isprintable() and ch not in "'\"" else f"U+{ord(ch):04X}" if ch else "?"
+            shown = (repr(ch) if ch.isprintable() and ch not in "'\""
+                     else f"U+{ord(ch):04X}" if ch else "?")
             if ch == "#":
                 msg = ("unexpected character '#' (macro placeholders #1#, #2#... are only "
                        "replaced in a .a file called as a macro)")

@@ -27,7 +27,6 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import AutolevError
 from .source import decode
 
 _INPUT = re.compile(r"^\s*\((\d+)\)\s?(.*)$")

@@ -10,7 +10,8 @@ from .symbols import TIME, Z, derivative, derivatives
 from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
 
 __all__ = ["Model", "KaneEquations", "Frame", "Vector", "Dyadic", "Point", "Particle",
-           "Body", "AutolevModelError", "MissingValues", "TIME", "Z", "derivative", "derivatives", "outer"]
+           "Body", "AutolevModelError", "MissingValues", "TIME", "Z", "derivative", "derivatives",
+           "outer"]
 from .functions import *  # noqa: E402,F401,F403  (Autolev's functions: al.dot, al.express, ...)
 from .functions import __all__ as _functions_all  # noqa: E402
 

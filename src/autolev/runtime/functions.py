@@ -468,7 +468,8 @@ def units_factor(a: str, b: str):
     return va / vb
 
 
-__all__ = ["ZERO", "VectorColumn", "dot", "cross", "mag", "unitvec", "express", "vector", "matrix", "dyadic",
+__all__ = ["ZERO", "VectorColumn", "dot", "cross", "mag", "unitvec", "express", "vector", "matrix",
+           "dyadic",
            "outer", "set_element", "block_matrix", "transpose", "trace", "diagmat", "rows",
            "cols", "eig", "replace", "expand", "factor", "simplify", "arrange", "polynomial",
            "roots", "epsilon", "integer_part", "round_half_away", "Int", "Round",

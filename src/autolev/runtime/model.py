@@ -199,7 +199,8 @@ class Model(AlgebraMixin, IOMixin):
             else:
                 self.info[sym] = SymbolInfo(kind, order, len(self.info))
                 if kind != "constant":
-                    self.defs.mark_varying(sym, *(S.derivative(sym, k) for k in range(1, order + 1)))
+                    rates = (S.derivative(sym, k) for k in range(1, order + 1))
+                    self.defs.mark_varying(sym, *rates)
                     for k in range(1, order + 1):
                         d = S.derivative(sym, k)
                         self.info.setdefault(d, SymbolInfo(kind, order - k, len(self.info)))

@@ -565,7 +565,7 @@ class Translator:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in ("frame", "newtonian", "body"):
                 return Typed(ent.py, "frame")
-        raise self.error(f"a frame or body is needed here", e)
+        raise self.error("a frame or body is needed here", e)
 
     def point(self, e: ir.Expr) -> Typed:
         """An expression that must name a point (or particle)."""
@@ -573,7 +573,7 @@ class Translator:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in ("point", "particle"):
                 return Typed(ent.py, "point")
-        raise self.error(f"a point or particle is needed here", e)
+        raise self.error("a point or particle is needed here", e)
 
     def entity(self, e: ir.Expr, kinds=ENTITY_KINDS) -> Entry:
         if isinstance(e, ir.Name) and not e.primes:

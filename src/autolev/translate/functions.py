@@ -52,7 +52,8 @@ def nargs(tr: Translator, c: ir.Call, *counts: int) -> list:
 def _plain(tr: Translator, c: ir.Call):
     for a in c.args:
         if isinstance(a, (ir.Range, ir.Equation)):
-            raise tr.error(f"{c.name.upper()} does not take '{'=' if isinstance(a, ir.Equation) else ':'}' "
+            sign = "=" if isinstance(a, ir.Equation) else ":"
+            raise tr.error(f"{c.name.upper()} does not take '{sign}' "
                            "arguments", a)
 
 

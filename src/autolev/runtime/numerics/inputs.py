@@ -21,7 +21,6 @@ from pathlib import Path
 
 import sympy as sm
 
-from .. import symbols as S
 from ..errors import AutolevModelError
 from . import units
 
