@@ -143,7 +143,6 @@ class AlgebraMixin:
         self._keep_speeds(unknowns)
         for u, v in zip(unknowns, solution):
             self.define(u, v)
-        self.solved = (eqs, unknowns)
 
     def _keep_speeds(self, unknowns) -> None:
         """A generalized speed u stays one when SOLVE defines u' (SOLVE(ZERO, U')), although

@@ -209,10 +209,6 @@ class Definitions:
         self._fo = {s: v for s, v in self._fo.items() if isinstance(s, Z)}
         self._invalidate()
 
-    def undefine(self, sym: sm.Symbol) -> None:
-        if self.rhs.pop(sym, None) is not None:
-            self._invalidate()
-
     def _invalidate(self) -> None:
         self._pdeps.clear()
         self._dt.clear()
@@ -220,9 +216,6 @@ class Definitions:
         self._diff.clear()
         self._subs.clear()
         self._explicit.clear()
-
-    def is_defined(self, sym) -> bool:
-        return sym in self.rhs
 
     def mark_varying(self, *syms: sm.Symbol) -> None:
         self.varying.update(syms)
@@ -492,11 +485,6 @@ class Definitions:
             cache[s] = rhs.xreplace(repl) if repl else rhs
         repl = {s: cache[s] for s in roots if s in cache}
         return expr.xreplace(repl) if repl else expr
-
-    def expand_z(self, expr) -> sm.Expr:
-        """expr with only the Z's expanded (user definitions keep their names)."""
-        keep = [s for s in self.rhs if not isinstance(s, Z)]
-        return self.explicit(expr, keep)
 
     # -- numbers -----------------------------------------------------------------
     def numeric(self, expr, point: "NumericPoint") -> complex:

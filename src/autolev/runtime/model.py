@@ -19,8 +19,6 @@ from .point import Body, Particle, Point
 from .vector import (AutolevModelError, Dyadic, Frame, Vector, _vector, body_fixed,
                      euler_parameter_rates, space_fixed)
 
-SCALAR_KINDS = ("constant", "variable", "motionvariable", "specified", "imaginary")
-
 
 @dataclass
 class SymbolInfo:
@@ -68,7 +66,6 @@ class Model(AlgebraMixin, IOMixin):
         self._version = 0
         self._formed: tuple[int, KaneEquations] | None = None
         self.settings: dict[str, object] = {}
-        self.solved = None
         self._nicheck_work = None
         self.inputs: dict = {}          # symbol or integration name -> (value, unit)
         self.outputs: list = []         # one list of (expr, label, unit) per OUTPUT
