@@ -163,6 +163,16 @@ class Inputs:
                 raise AutolevModelError("PRINTINT must be a positive integer")
         self.values[key] = Value(value, self.unit_of(key), source)
 
+    def set_internal(self, name: str, value: float, source: str = "operating point") -> None:
+        """NAME=VALUE in SI units and radians (whatever unit the input was given in)."""
+        key = self.lookup(name)
+        if key is None or key in self.integration:
+            known = ", ".join(display_name(k) for k in self.names)
+            raise AutolevModelError(f"no quantity named {name!r} here (known: {known})")
+        unit = self.unit_of(key)
+        given = units.to_output(float(value), unit)
+        self.values[key] = Value(given, unit, source)
+
     def lookup(self, name: str):
         """The key called `name` (any case; Q1p and Q1' are the same)."""
         wanted = name.strip()

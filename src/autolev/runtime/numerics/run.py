@@ -181,25 +181,33 @@ def program_method(filename: str) -> str:
     return "rk45" if program_language(filename) == "m" else "kutta-merson"
 
 
-def run_command(model, command, out_dir=None, method: str | None = None,
-                backend: str = "auto", infile=None, specified=None, progress=None,
-                overrides=None, compiled: bool = True, constraints=None,
-                quirks: bool = True, keep_rows: bool = True,
-                missing_values: str = "refuse") -> Result:
-    """Run one CODE command; files go to out_dir (None: no files).  `constraints`:
-    configuration constraints g(q) (sympy expressions in the model's symbols) kept at
-    their initial values by projecting the state onto them at every print time.
-    `quirks`: compute what Autolev's programs computed where they were wrong
-    (docs/language.md, "What Autolev's programs computed"); False: what was meant.
-    `keep_rows=False`: the Result holds only the last row (the files hold them all),
-    so that memory does not grow with the length of the run.  `missing_values`:
-    "refuse" (a constant the run needs without a value from INPUT, the .in file or
-    the overrides stops it before anything is compiled, MissingValues) or "zero"
-    (they are 0, with a warning)."""
+@dataclass
+class Prepared:
+    """A CODE command ready to execute: its numeric system (parameters set) and inputs."""
+
+    system: NumericSystem
+    inputs: Inputs
+    kinds: dict             # input -> "Constant", "Initial Value", ...
+    stem: str
+    files: list
+    encoded: list
+    unknowns: list
+    sweep: tuple | None
+    extra_constants: list
+    build_seconds: float
+
+
+def prepare_command(model, command, backend: str = "auto", infile=None, specified=None,
+                    overrides=None, internal_values=None, constraints=None,
+                    quirks: bool = True, missing_values: str = "refuse",
+                    out_dir=None) -> Prepared:
+    """Build (or reuse) the command's numeric system and take its inputs: INPUT values,
+    then the .in file, then `overrides` (in the quantities' units), then
+    `internal_values` ({name: value} in SI units and radians); refuses missing values
+    before anything is compiled (see run_command)."""
     if missing_values not in ("refuse", "zero"):
         raise ValueError(f"missing_values: 'refuse' or 'zero', not {missing_values!r}")
     kind = command.kind
-    method = method or program_method(command.filename)
     stem = safe_stem(command.filename)
     files = _columns(model, command)
     encoded = _encoded(model, command)
@@ -242,12 +250,17 @@ def run_command(model, command, out_dir=None, method: str | None = None,
                 elsewhere.append(name)
                 continue
             inputs.set(name, value)
+        for name, value in (internal_values or {}).items():
+            if inputs.lookup(name) is None and names_a_quantity(model, name):
+                elsewhere.append(name)
+                continue
+            inputs.set_internal(name, value)
         if elsewhere:
             notes.append(", ".join(elsewhere) + f" {'is' if len(elsewhere) == 1 else 'are'}"
                          f" not {'an input' if len(elsewhere) == 1 else 'inputs'} of "
                          f"CODE {kind.upper()} {command.filename}: ignored there")
         for note in notes:
-            warnings.warn(note, stacklevel=4)
+            warnings.warn(note, stacklevel=5)
         missing = inputs.missing(constants)
         if missing and missing_values == "refuse":
             raise MissingValues(_missing_message(model, missing, inputs, kinds, out_dir,
@@ -256,7 +269,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
         inputs.fill_missing(constants)
         if missing:
             warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
-                          + ": using 0", stacklevel=4)
+                          + ": using 0", stacklevel=5)
         inputs.fill_missing(names)
         inputs.check_finite()
         _degree_rates_note(inputs, names)
@@ -295,7 +308,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
             "quantities with " + ", ".join(f"{s} = 0" for s in system.hidden_in_outputs)
             + " (its output routine's counter `int i1` hides the model's i1); reproduced "
             "as it printed them (--no-quirks, or quirks=False, for the values meant)",
-            stacklevel=2)
+            stacklevel=3)
     functions = {_find_symbol(model, k): v for k, v in (specified or {}).items()}
     unused = [sym for sym in functions if sym not in system.set_specified(functions)]
     if unused:
@@ -305,16 +318,44 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
     if unassigned:
         warnings.warn("specified quantities without a definition or a function, set to 0: "
-                      + ", ".join(map(str, unassigned)), stacklevel=2)
+                      + ", ".join(map(str, unassigned)), stacklevel=3)
     sweep = _sweep(model, command, inputs)
 
     system.set_parameters(inputs.vector(system.params))
+    return Prepared(system, inputs, kinds, stem, files, encoded, unknowns, sweep,
+                    extra_constants, build_seconds)
+
+
+def run_command(model, command, out_dir=None, method: str | None = None,
+                backend: str = "auto", infile=None, specified=None, progress=None,
+                overrides=None, compiled: bool = True, constraints=None,
+                quirks: bool = True, keep_rows: bool = True,
+                missing_values: str = "refuse") -> Result:
+    """Run one CODE command; files go to out_dir (None: no files).  `constraints`:
+    configuration constraints g(q) (sympy expressions in the model's symbols) kept at
+    their initial values by projecting the state onto them at every print time.
+    `quirks`: compute what Autolev's programs computed where they were wrong
+    (docs/language.md, "What Autolev's programs computed"); False: what was meant.
+    `keep_rows=False`: the Result holds only the last row (the files hold them all),
+    so that memory does not grow with the length of the run.  `missing_values`:
+    "refuse" (a constant the run needs without a value from INPUT, the .in file or
+    the overrides stops it before anything is compiled, MissingValues) or "zero"
+    (they are 0, with a warning)."""
+    prepared = prepare_command(model, command, backend=backend, infile=infile,
+                               specified=specified, overrides=overrides,
+                               constraints=constraints, quirks=quirks,
+                               missing_values=missing_values, out_dir=out_dir)
+    system, inputs, kinds = prepared.system, prepared.inputs, prepared.kinds
+    kind, stem, files, encoded = command.kind, prepared.stem, prepared.files, prepared.encoded
+    unknowns, sweep, extra_constants = prepared.unknowns, prepared.sweep, prepared.extra_constants
+    integrate_states = kind in ("dynamics", "ode")
+    method = method or program_method(command.filename)
     zero_params = [display_name(p) for p in system.params if inputs.internal(p) == 0.0]
     result = Result(kind, stem, np.zeros(0), np.zeros((0, system.nstate)),
                     [display_name(x) for x in system.states], [], {},
                     {display_name(k): inputs.values[k].given for k in inputs.names},
                     system=system)
-    result.stats["build_seconds"] = build_seconds
+    result.stats["build_seconds"] = prepared.build_seconds
 
     def perform(writer):
         if integrate_states:
