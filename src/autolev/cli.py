@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import sys
 from pathlib import Path
@@ -282,6 +283,76 @@ def cmd_run(ns: argparse.Namespace) -> int:
     return status
 
 
+def _name_values(items, option: str) -> dict | None:
+    """NAME=VALUE items of a repeatable option, or None after printing the bad one."""
+    values = {}
+    for item in items or []:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip():
+            print(f"autolev: {option} expects NAME=VALUE, not {item!r}", file=sys.stderr)
+            return None
+        values[name.strip()] = value.strip()
+    return values
+
+
+def cmd_linearize(ns: argparse.Namespace) -> int:
+    """Linearize a model's CODE DYNAMICS at an operating point; print the eigenvalues."""
+    import warnings
+
+    from .runtime.errors import AutolevModelError
+    from .runtime.numerics.files import safe_stem
+    from .runtime.numerics.linearize import eigenvalue_table
+
+    warnings.showwarning = _print_warning
+    path = Path(ns.file)
+    overrides = _name_values(ns.set, "--set")
+    at = _name_values(ns.at, "--at")
+    if overrides is None or at is None:
+        return 2
+    point = {}
+    for name, text in at.items():
+        try:
+            point[name] = float(text)
+        except ValueError:
+            point[name] = math.nan
+        if not math.isfinite(point[name]):
+            print(f"autolev linearize: --at {name}={text}: not a finite number",
+                  file=sys.stderr)
+            return 2
+    model = _load_for_run(path)
+    if model is None:
+        print(f"{path}: not linearized", file=sys.stderr)
+        return 1
+    try:
+        lin = model.linearize(point, inputs=ns.inputs.split(",") if ns.inputs else None,
+                              code=int(ns.code) if ns.code and ns.code.isdigit() else ns.code,
+                              backend=ns.backend, infile=ns.infile, overrides=overrides,
+                              missing_values="zero" if ns.zero_missing else "refuse")
+    except AutolevModelError as exc:
+        print(f"{path}: error: {exc}", file=sys.stderr)
+        return 1
+    if not lin.steady:
+        print(f"{path}: warning: not an equilibrium or a steady motion: the accelerations "
+              f"are {', '.join(f'{a:.6g}' for a in lin.accelerations)} there "
+              "(the eigenvalues describe only the motion near this instant)", file=sys.stderr)
+    table = eigenvalue_table(lin)
+    print(f"{len(lin.states)} states ({', '.join(lin.states)}); inputs: "
+          f"{', '.join(lin.inputs) or 'none'}")
+    print(table, end="")
+    if ns.out:
+        out = Path(ns.out)
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+            target = out / f"{safe_stem(path.stem)}-eigenvalues.csv"
+            target.write_text(table)
+        except OSError as exc:
+            print(f"autolev linearize: cannot write into {out}: {exc.strerror}",
+                  file=sys.stderr)
+            return 1
+        print(f"  wrote {target}")
+    return 0
+
+
 def cmd_transcript(ns: argparse.Namespace) -> int:
     """The responses Autolev displayed for each statement, as its .all files."""
     return _print_transcript(Path(ns.file), Path(ns.out) if ns.out else None)
@@ -451,6 +522,30 @@ def build_parser() -> argparse.ArgumentParser:
                      help="run only this CODE command (its file name, e.g. bike.c, or "
                      "its 0-based index); repeatable")
     run.set_defaults(func=cmd_run, formats=None, frames=None, first_dynamics=False)
+
+    lin = sub.add_parser("linearize", help="eigenvalues of a model at an operating point",
+                         description="Linearize FILE's first CODE DYNAMICS (or --code) at "
+                         "an operating point (--at, in SI units and radians; the rest from "
+                         "INPUT, --in and --set; states and specified quantities otherwise "
+                         "0) and print the eigenvalues (CSV: real, imaginary, frequency in "
+                         "Hz, damping ratio).  Exact Jacobians through the Z's.")
+    lin.add_argument("file", metavar="FILE", help=".al model")
+    lin.add_argument("--at", action="append", metavar="NAME=VALUE",
+                     help="the operating point: a constant, coordinate, speed or specified "
+                     "quantity in SI units and radians; repeatable")
+    lin.add_argument("--set", action="append", metavar="NAME=VALUE",
+                     help="an input value, in the unit the model gives it; repeatable")
+    lin.add_argument("--in", dest="infile", metavar="FILE.in",
+                     help="read input values from an Autolev .in file")
+    lin.add_argument("--inputs", metavar="NAMES",
+                     help="the specified quantities that are inputs (B's columns), "
+                     "comma-separated (default: all without a definition)")
+    lin.add_argument("--code", metavar="FILE", help="which CODE DYNAMICS (file name or index)")
+    lin.add_argument("--out", metavar="DIR", help="also write NAME-eigenvalues.csv there")
+    lin.add_argument("--backend", default="auto", choices=("auto", "c", "python"))
+    lin.add_argument("--zero-missing", action="store_true",
+                     help="give 0 to constants that have no value")
+    lin.set_defaults(func=cmd_linearize)
 
     anim = sub.add_parser("animate", help="run a model and write its motion as a picture",
                           description="Run FILE's first CODE DYNAMICS (or --code) and write "

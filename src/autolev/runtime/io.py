@@ -150,6 +150,16 @@ class IOMixin:
         `code`: which CODE command to run (see code_command).
         Returns a Result (times, states and outputs as numpy arrays)."""
         from .numerics.run import run_command
+        return run_command(self, self._command_to_run(code), out_dir=out_dir, method=method,
+                           backend=backend, infile=infile, specified=specified, progress=progress,
+                           overrides=overrides, compiled=compiled,
+                           constraints=constraints, quirks=quirks, keep_rows=keep_rows,
+                           missing_values=missing_values)
+
+
+    def _command_to_run(self, code=None) -> "CodeCommand":
+        """The CODE command `code` names, else the first CODE DYNAMICS or ODE, else the
+        first CODE command, else a plain simulation of the model as it stands."""
         command = self.code_command(code) if code is not None else None
         for c in self.code_commands if command is None else ():
             if c.kind in ("dynamics", "ode"):
@@ -161,11 +171,23 @@ class IOMixin:
             command = CodeCommand("dynamics", f"{self.name}.c", [], None, (),
                                   n_outputs=len(self.outputs), n_encoded=len(self.encoded),
                                   inputs=dict(self.inputs), units=dict(self.unit_of))
-        return run_command(self, command, out_dir=out_dir, method=method, backend=backend,
-                           infile=infile, specified=specified, progress=progress,
-                           overrides=overrides, compiled=compiled,
-                           constraints=constraints, quirks=quirks, keep_rows=keep_rows,
-                           missing_values=missing_values)
+        return command
+
+    def linearize(self, operating_point=None, inputs=None, *, code=None,
+                  backend: str = "auto", infile=None, missing_values: str = "refuse",
+                  overrides=None):
+        """The equations of motion linearized at `operating_point` ({name: value} for
+        constants, coordinates, speeds and specified quantities, in SI units and
+        radians; the rest from INPUT, the .in file, or 0 for states and specified
+        quantities): a Linearization with A, B (columns: `inputs`, default every
+        specified quantity without a definition), C, D (rows: the OUTPUT columns),
+        `eigenvalues()` and `modes()`.  Exact Jacobians through the Z's, evaluated by
+        compiled code.  `code`: which CODE DYNAMICS (see code_command); `overrides`:
+        {name: value} in the quantities' own units, as `simulate` takes them."""
+        from .numerics.linearize import linearize
+        return linearize(self, self._command_to_run(code), operating_point, inputs,
+                         backend=backend, infile=infile, missing_values=missing_values,
+                         overrides=overrides)
 
 
 @dataclass

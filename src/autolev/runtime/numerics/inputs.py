@@ -167,7 +167,7 @@ class Inputs:
         """NAME=VALUE in SI units and radians (whatever unit the input was given in)."""
         key = self.lookup(name)
         if key is None or key in self.integration:
-            known = ", ".join(display_name(k) for k in self.names)
+            known = ", ".join(display_name(k) for k in self.names if k not in self.integration)
             raise AutolevModelError(f"no quantity named {name!r} here (known: {known})")
         unit = self.unit_of(key)
         given = units.to_output(float(value), unit)

@@ -200,11 +200,12 @@ class Prepared:
 def prepare_command(model, command, backend: str = "auto", infile=None, specified=None,
                     overrides=None, internal_values=None, constraints=None,
                     quirks: bool = True, missing_values: str = "refuse",
-                    out_dir=None) -> Prepared:
+                    out_dir=None, warn_unassigned: bool = True) -> Prepared:
     """Build (or reuse) the command's numeric system and take its inputs: INPUT values,
     then the .in file, then `overrides` (in the quantities' units), then
     `internal_values` ({name: value} in SI units and radians); refuses missing values
-    before anything is compiled (see run_command)."""
+    before anything is compiled (see run_command).  `warn_unassigned`: warn about
+    specified quantities that will be 0 (not when they are a linearization's inputs)."""
     if missing_values not in ("refuse", "zero"):
         raise ValueError(f"missing_values: 'refuse' or 'zero', not {missing_values!r}")
     kind = command.kind
@@ -316,7 +317,7 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
             _unused_specified(model, system, sym) for sym in unused))
     given_fns = {i for i, _ in system._spec_fns}
     unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
-    if unassigned:
+    if unassigned and warn_unassigned:
         warnings.warn("specified quantities without a definition or a function, set to 0: "
                       + ", ".join(map(str, unassigned)), stacklevel=3)
     sweep = _sweep(model, command, inputs)

@@ -115,6 +115,7 @@ class NumericSystem:
         rate_exprs = [sm.S.Zero if rates[x] in solved_here else rates[x]
                       for x in self.states]
         rhs_exprs = rate_exprs + dyn
+        self.rhs_exprs = rhs_exprs      # rates (0 where solved), then M row by row, then F
 
         # outputs: columns and ENCODE values (derivatives resolved through definitions)
         self.files = [list(cols) for cols in outputs]

@@ -1,0 +1,214 @@
+"""Linearization of a model's equations of motion about an operating point.
+
+The state x is what the model's CODE DYNAMICS program integrates, the inputs s are
+its specified quantities without a definition, the outputs y its OUTPUT columns:
+
+    x' = f(x, s)      ->   dx' = A dx + B ds
+    y  = g(x, s, x')  ->   dy  = C dx + D ds
+
+Exact: every Jacobian is the derivative of the symbolic equations through the Z's
+(`Definitions.jacobian`), compiled and evaluated at the point; no finite differences.
+Where Kane's equations give accelerations a from M a = F, the derivative of a is
+M^-1 (dF - dM a) at the point (M is factorised, never inverted symbolically).
+Dependent speeds are definitions in terms of the independent ones, so they are
+eliminated already; dependent coordinates stay in the state (each configuration
+constraint then adds an eigenvalue 0: the constraint's value is conserved).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg
+
+from .. import symbols as S
+from ..errors import AutolevModelError
+from . import codegen
+from .inputs import display_name
+from .run import prepare_command
+from .system import compile_program
+
+
+@dataclass
+class Linearization:
+    """A, B, C, D at one operating point, with the names of their rows and columns;
+    values in SI units and radians."""
+
+    A: np.ndarray
+    B: np.ndarray
+    C: np.ndarray
+    D: np.ndarray
+    states: list
+    inputs: list
+    outputs: list
+    point: dict             # every constant, state and input value used
+    rates: np.ndarray       # x' at the point
+    accelerations: np.ndarray   # the accelerations Kane's equations give there
+
+    def eigenvalues(self) -> np.ndarray:
+        """The eigenvalues of A, by real part, then imaginary part."""
+        return self.modes()[0]
+
+    def modes(self) -> tuple[np.ndarray, np.ndarray]:
+        """(eigenvalues, eigenvectors as columns, each of unit norm), in the order of
+        `eigenvalues`."""
+        values, vectors = np.linalg.eig(self.A)
+        order = np.lexsort((values.imag, values.real))
+        return values[order], vectors[:, order]
+
+    @property
+    def steady(self) -> bool:
+        """Whether the point is an equilibrium or a steady motion: the accelerations
+        vanish (coordinates may move at constant rates, a bicycle's wheels turning)."""
+        scale = max(1.0, float(np.max(np.abs(self.rates), initial=0.0)))
+        return bool(np.all(np.abs(self.accelerations) <= 1e-9 * scale))
+
+
+def linearize(model, command, operating_point=None, inputs=None, backend: str = "auto",
+              infile=None, missing_values: str = "refuse", overrides=None) -> Linearization:
+    """The linearization of `command` (a CODE DYNAMICS) at `operating_point`: {name:
+    value} for the model's constants, coordinates, speeds and specified quantities, in
+    SI units and radians.  Names it leaves out take their INPUT (or .in) values;
+    coordinates and speeds without either are 0, specified quantities 0.  `inputs`:
+    the names of the specified quantities that make B's columns (default: all of the
+    program's specified quantities without a definition).  `overrides`: {name: value}
+    in the quantities' own units (as `simulate` takes them), before the point's."""
+    if command.kind != "dynamics":
+        raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
+                                "CODE DYNAMICS program has equations of motion to linearize")
+    point = dict(operating_point or {})
+    specified_values = {}
+    for name in list(point):
+        sym = _symbol_named(model, name)
+        if sym is not None and model.kind_of(sym) == "specified":
+            specified_values[sym] = float(point.pop(name))
+    prepared = prepare_command(model, command, backend=backend, infile=infile,
+                               overrides=overrides, internal_values=point,
+                               missing_values=missing_values, warn_unassigned=False)
+    system = prepared.system
+    if not system.nstate:
+        raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "
+                                "there is no state to linearize")
+    unused = [display_name(s) for s in specified_values if s not in system.specified]
+    if unused:
+        raise AutolevModelError("these specified quantities are not inputs of "
+                                f"{command.filename}: {', '.join(unused)}")
+    chosen = _chosen_inputs(model, system, inputs)
+    n_columns = sum(len(cols) for cols in system.files)
+    with model.defs.as_of(command.definitions):
+        jacobians = _jacobian_functions(system, chosen, n_columns, backend)
+    t0 = prepared.inputs.internal("TINITIAL")
+    x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
+    s0 = np.array([specified_values.get(s, 0.0) for s in system.specified], dtype=float)
+    lin = _evaluate(system, jacobians, chosen, t0, x0, s0)
+    lin.point = {display_name(p): float(v) for p, v in zip(system.params, system._c)}
+    lin.point.update({display_name(x): float(v) for x, v in zip(system.states, x0)})
+    lin.point.update({display_name(s): float(v) for s, v in zip(system.specified, s0)})
+    lin.outputs = [c.label for cols in system.files for c in cols]
+    return lin
+
+
+def _symbol_named(model, name: str):
+    wanted = str(name).strip().upper().replace("'", "P")
+    for sym in model.info:
+        if display_name(sym).upper().replace("'", "P") == wanted:
+            return sym
+    return None
+
+
+def _chosen_inputs(model, system, names) -> list:
+    if names is None:
+        return list(system.specified)
+    chosen = []
+    for name in names:
+        sym = _symbol_named(model, name)
+        if sym is None or sym not in system.specified:
+            known = ", ".join(display_name(s) for s in system.specified) or "none"
+            raise AutolevModelError(f"{name!r} is not a specified quantity this program "
+                                    f"reads (those it reads: {known})")
+        chosen.append(sym)
+    return chosen
+
+
+@dataclass
+class _Jacobians:
+    rhs: object             # values and Jacobian of the right-hand side
+    outputs: object         # values-free Jacobian of the OUTPUT columns
+    n_rhs: int
+    n_out: int
+
+
+def _jacobian_functions(system, chosen: list, n_columns: int, backend: str) -> _Jacobians:
+    """Compiled functions: the right-hand side (rates, M, F) and its Jacobian in the
+    state and the chosen inputs; the Jacobian of the OUTPUT columns in the state, the
+    chosen inputs and the accelerations."""
+    defs = system.model.defs
+    variables = list(system.states) + chosen
+    rhs = list(system.rhs_exprs)
+    rhs_jac = defs.jacobian(rhs, variables)
+    c_syms = system.params + system.constant_defs
+    given = {"t": [S.TIME], "x": system.states, "c": c_syms, "s": system.specified}
+    fixed = dict(system.aux_fixed)
+    rhs_fn = compile_program(
+        codegen.Program(given, rhs + [d for row in rhs_jac for d in row], defs,
+                        fixed).build(), backend, "autolev_linear_rhs")
+    out_exprs = system.output_exprs[:n_columns]
+    accels = list(system.implicit_unknowns)
+    out_jac = defs.jacobian(out_exprs, variables + accels) if out_exprs else []
+    out_fn = compile_program(
+        codegen.Program(dict(given, a=accels), [d for row in out_jac for d in row], defs,
+                        fixed).build(), backend, "autolev_linear_outputs")
+    return _Jacobians(rhs_fn, out_fn, len(rhs), len(out_exprs))
+
+
+def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linearization:
+    nx, nv, n = system.nstate, system.nstate + len(chosen), len(system.implicit_unknowns)
+    out = np.empty(jac.n_rhs * (1 + nv))
+    jac.rhs.call(np.array([t0]), x0, system._c, s0, out)
+    values, grads = out[:jac.n_rhs], out[jac.n_rhs:].reshape(jac.n_rhs, nv)
+    rates = values[:nx].copy()
+    jrates = grads[:nx].copy()
+    accelerations = np.zeros(n)
+    if n:
+        mass = values[nx:nx + n * n].reshape(n, n)
+        forcing = values[nx + n * n:nx + n * n + n]
+        dmass = grads[nx:nx + n * n].reshape(n, n, nv)
+        dforcing = grads[nx + n * n:nx + n * n + n]
+        try:
+            lu = scipy.linalg.lu_factor(mass, check_finite=True)
+        except ValueError:
+            raise AutolevModelError("the mass matrix is not finite at the operating point") \
+                from None
+        if np.any(np.abs(np.diag(lu[0])) <= 1e-14 * np.max(np.abs(mass), initial=1.0)):
+            raise AutolevModelError("the mass matrix is singular at the operating point")
+        accelerations = scipy.linalg.lu_solve(lu, forcing)
+        daccel = scipy.linalg.lu_solve(lu, dforcing - np.einsum("ijk,j->ik", dmass,
+                                                                accelerations))
+        rates[system._unknown_pos] = accelerations
+        jrates[system._unknown_pos] = daccel
+    else:
+        daccel = np.zeros((0, nv))
+    ny = jac.n_out
+    jy = np.empty(ny * (nv + n))
+    jac.outputs.call(np.array([t0]), x0, system._c, s0, accelerations, jy)
+    jy = jy.reshape(ny, nv + n)
+    through_accelerations = jy[:, nv:nv + n] @ daccel if n else np.zeros((ny, nv))
+    jout = jy[:, :nv] + through_accelerations
+    return Linearization(
+        A=jrates[:, :nx], B=jrates[:, nx:], C=jout[:, :nx], D=jout[:, nx:],
+        states=[display_name(x) for x in system.states],
+        inputs=[display_name(s) for s in chosen], outputs=[], point={},
+        rates=rates, accelerations=accelerations)
+
+
+
+def eigenvalue_table(lin: Linearization) -> str:
+    """The eigenvalues as CSV: real part, imaginary part, and for a complex pair the
+    frequency (Hz) and damping ratio."""
+    lines = ["real,imaginary,frequency_hz,damping_ratio"]
+    for ev in lin.eigenvalues():
+        mag = abs(ev)
+        freq = f"{abs(ev.imag) / (2 * np.pi):.12g}" if ev.imag != 0 else ""
+        zeta = f"{0.0 - ev.real / mag:.12g}" if ev.imag != 0 and mag > 0 else ""
+        lines.append(f"{ev.real:.15g},{ev.imag:.15g},{freq},{zeta}")
+    return "\n".join(lines) + "\n"

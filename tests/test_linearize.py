@@ -1,0 +1,149 @@
+"""Model.linearize: A, B, C, D at an operating point, checked against a hand derivation
+(pendulum), against central differences of the integrated right-hand side (a second
+method), and against the classical stability speed of a rolling disc."""
+import math
+
+import numpy as np
+import pytest
+
+import autolev
+from autolev.runtime.numerics.run import prepare_command
+from conftest import EXAMPLES
+
+PENDULUM = """NEWTONIAN N
+BODIES A
+MOTIONVARIABLES' Q', U'
+CONSTANTS G, L, M
+SPECIFIED TQ
+SIMPROT(N, A, 3, Q)
+Q' = U
+W_A_N> = U*A3>
+P_NO_AO> = L*A1>
+V_AO_N> = DT(P_NO_AO>, N)
+MASS A = M
+INERTIA A, 0, 0, 0
+GRAVITY(G*N1>)
+TORQUE(A, TQ*A3>)
+ZERO = FR() + FRSTAR()
+KANE()
+X = L*COS(Q)
+OUTPUT Q, X, U'
+INPUT G = 9.81, L = 2, M = 3, Q = 10 deg, U = 0, TFINAL = 1
+CODE DYNAMICS() pendulum.c
+"""
+
+
+@pytest.fixture(scope="module")
+def pendulum(tmp_path_factory):
+    path = tmp_path_factory.mktemp("lin") / "pendulum.al"
+    path.write_text(PENDULUM)
+    return autolev.load(path)
+
+
+def test_a_pendulum_by_hand(pendulum):
+    # m L^2 u' = -m g L sin(q) + TQ, X = L cos(q): by hand at q = 0.3 rad
+    g, L, m, q = 9.81, 2.0, 3.0, 0.3
+    lin = pendulum.linearize({"Q": q})
+    assert lin.states == ["Q", "U"] and lin.inputs == ["TQ"]
+    assert lin.outputs == ["Q", "X", "U'"]
+    assert np.allclose(lin.A, [[0, 1], [-g / L * math.cos(q), 0]], rtol=1e-14)
+    assert np.allclose(lin.B, [[0], [1 / (m * L * L)]], rtol=1e-14)
+    assert np.allclose(lin.C, [[1, 0], [-L * math.sin(q), 0], [-g / L * math.cos(q), 0]],
+                       rtol=1e-14)
+    assert np.allclose(lin.D, [[0], [0], [1 / (m * L * L)]], rtol=1e-14)
+    assert lin.accelerations == pytest.approx([-g / L * math.sin(q)], rel=1e-14)
+    assert not lin.steady
+
+
+def test_operating_point_in_radians_and_the_rest_from_input(pendulum):
+    hanging = pendulum.linearize({"Q": 0})
+    assert hanging.steady and hanging.point["M"] == 3.0 and hanging.point["Q"] == 0.0
+    w = math.sqrt(9.81 / 2)
+    assert np.allclose(hanging.eigenvalues(), [-1j * w, 1j * w], rtol=1e-14)
+    upright = pendulum.linearize({"Q": math.pi, "L": 1.0})
+    assert np.allclose(upright.eigenvalues(), [-math.sqrt(9.81), math.sqrt(9.81)])
+    # INPUT Q = 10 deg when the point leaves Q out
+    assert pendulum.linearize().point["Q"] == pytest.approx(math.radians(10), rel=1e-15)
+    torqued = pendulum.linearize({"Q": 0.0, "TQ": 6.0})
+    assert torqued.accelerations == pytest.approx([6.0 / 12.0])
+
+
+def test_inputs_and_names_are_checked(pendulum):
+    assert pendulum.linearize({"Q": 0}, inputs=[]).B.shape == (2, 0)
+    with pytest.raises(autolev.runtime.AutolevModelError, match="'Q' is not a specified"):
+        pendulum.linearize(inputs=["Q"])
+    with pytest.raises(autolev.runtime.AutolevModelError, match="no quantity named 'K'"):
+        pendulum.linearize({"K": 1.0})
+
+
+def central_differences(system, t, x, h=1e-6):
+    cols = []
+    for k in range(len(x)):
+        e = np.zeros(len(x))
+        e[k] = h * max(1.0, abs(x[k]))
+        cols.append((system.derivatives(t, x + e) - system.derivatives(t, x - e)) / (2 * e[k]))
+    return np.array(cols).T
+
+
+@pytest.mark.parametrize("name, point", [
+    ("double_pendulum", {"Q1": 0.4, "Q2": -1.1, "U1": 0.7, "U2": -0.2}),
+    ("rolling_disc", {"Q2": 0.3, "Q3": 1.0, "U1": 0.5, "U2": -0.4, "U3": 6.0}),
+])
+def test_jacobians_agree_with_differences_of_the_right_hand_side(name, point):
+    model = autolev.load(EXAMPLES / f"{name}.al")
+    lin = model.linearize(point)
+    system = prepare_command(model, model._command_to_run(), internal_values=point).system
+    x = np.array([lin.point[s] for s in lin.states])
+    assert np.allclose(system.derivatives(0.0, x), lin.rates, rtol=1e-13, atol=1e-13)
+    assert np.allclose(lin.A, central_differences(system, 0.0, x), rtol=1e-6, atol=1e-7)
+
+
+def test_a_rolling_disc_is_stable_upright_above_the_classical_speed():
+    # a thin disc rolling upright is stable when its spin exceeds sqrt(g / (3 r))
+    model = autolev.load(EXAMPLES / "rolling_disc.al")       # r = 0.3, g = 9.81
+    critical = math.sqrt(9.81 / (3 * 0.3))
+    below = model.linearize({"Q2": 0, "U3": critical * (1 - 1e-6)})
+    above = model.linearize({"Q2": 0, "U3": critical * (1 + 1e-6)})
+    assert below.steady and above.steady
+    assert max(below.eigenvalues().real) > 1e-4
+    assert max(above.eigenvalues().real) < 1e-9
+    assert max(abs(above.eigenvalues().imag)) > 1e-4
+
+
+def test_only_a_dynamics_program_is_linearized(tmp_path):
+    path = tmp_path / "alg.al"
+    path.write_text("CONSTANTS A\nVARIABLES X\nE = X - A\nINPUT A = 1\n"
+                    "CODE ALGEBRAIC(E, X) alg.c\n")
+    with pytest.raises(autolev.runtime.AutolevModelError, match="only a CODE DYNAMICS"):
+        autolev.load(path).linearize()
+
+
+def test_the_command_prints_and_writes_the_eigenvalues(pendulum, tmp_path, capsys):
+    from autolev.cli import main
+    model_file = tmp_path / "pendulum.al"
+    model_file.write_text(PENDULUM)
+    assert main(["linearize", str(model_file), "--at", "Q=0", "--set", "L=8",
+                 "--out", str(tmp_path / "out")]) == 0
+    printed = capsys.readouterr().out
+    assert "2 states (Q, U); inputs: TQ" in printed
+    rows = (tmp_path / "out" / "pendulum-eigenvalues.csv").read_text().splitlines()
+    assert rows[0] == "real,imaginary,frequency_hz,damping_ratio"
+    w = math.sqrt(9.81 / 8)                              # --set L=8 (metres, as given)
+    values = [[float(v) for v in row.split(",")] for row in rows[1:]]
+    assert [v[1] for v in values] == pytest.approx([-w, w], rel=1e-14)
+    assert [v[2] for v in values] == pytest.approx([w / (2 * math.pi)] * 2, rel=1e-12)
+    assert [v[3] for v in values] == [0.0, 0.0]
+
+
+@pytest.mark.parametrize("args, status, message", [
+    (["--at", "Q=x"], 2, "--at Q=x: not a finite number"),
+    (["--at", "Q"], 2, "--at expects NAME=VALUE"),
+    (["--at", "K=1"], 1, "no quantity named 'K' here (known: G, L, M, Q, U)"),
+    (["--inputs", "M"], 1, "'M' is not a specified quantity"),
+])
+def test_the_command_refuses_what_it_cannot_use(tmp_path, capsys, args, status, message):
+    from autolev.cli import main
+    model_file = tmp_path / "pendulum.al"
+    model_file.write_text(PENDULUM)
+    assert main(["linearize", str(model_file), *args]) == status
+    assert message in capsys.readouterr().err
