@@ -147,3 +147,24 @@ def test_the_command_refuses_what_it_cannot_use(tmp_path, capsys, args, status, 
     model_file.write_text(PENDULUM)
     assert main(["linearize", str(model_file), *args]) == status
     assert message in capsys.readouterr().err
+
+
+def test_a_sweep_finds_the_rolling_discs_critical_spin(tmp_path, capsys):
+    from autolev.cli import main
+    assert main(["linearize", str(EXAMPLES / "rolling_disc.al"), "--at", "Q2=0",
+                 "--sweep", "U3=2:5:7", "--out", str(tmp_path)]) == 0
+    rows = (tmp_path / "rolling_disc-sweep.csv").read_text().splitlines()
+    assert rows[0].startswith("U3,re1,im1,re2,im2,") and len(rows) == 8
+    critical = math.sqrt(9.81 / (3 * 0.3))                    # 3.30 rad/s
+    for row in rows[1:]:
+        cells = [float(c) for c in row.split(",")]
+        spin, real_parts = cells[0], cells[1::2]
+        assert len(real_parts) == 8
+        assert (max(real_parts) > 1e-3) == (spin < critical)
+
+
+@pytest.mark.parametrize("text", ["U3=2:5", "U3=2:5:0", "=1:2:3", "U3=a:2:3", "U3=1:inf:3"])
+def test_a_malformed_sweep_is_refused(tmp_path, capsys, text):
+    from autolev.cli import main
+    assert main(["linearize", str(EXAMPLES / "rolling_disc.al"), "--sweep", text]) == 2
+    assert "--sweep expects NAME=START:STOP:N" in capsys.readouterr().err

@@ -319,15 +319,24 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
             print(f"autolev linearize: --at {name}={text}: not a finite number",
                   file=sys.stderr)
             return 2
+    sweep = _sweep_range(ns.sweep) if ns.sweep else None
+    if ns.sweep and sweep is None:
+        return 2
     model = _load_for_run(path)
     if model is None:
         print(f"{path}: not linearized", file=sys.stderr)
         return 1
+
+    def at(extra):
+        return model.linearize(dict(point, **extra),
+                               inputs=ns.inputs.split(",") if ns.inputs else None,
+                               code=int(ns.code) if ns.code and ns.code.isdigit() else ns.code,
+                               backend=ns.backend, infile=ns.infile, overrides=overrides,
+                               missing_values="zero" if ns.zero_missing else "refuse")
     try:
-        lin = model.linearize(point, inputs=ns.inputs.split(",") if ns.inputs else None,
-                              code=int(ns.code) if ns.code and ns.code.isdigit() else ns.code,
-                              backend=ns.backend, infile=ns.infile, overrides=overrides,
-                              missing_values="zero" if ns.zero_missing else "refuse")
+        if sweep is not None:
+            return _linearize_sweep(path, sweep, at, ns.out)
+        lin = at({})
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
@@ -347,6 +356,59 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
             target.write_text(table)
         except OSError as exc:
             print(f"autolev linearize: cannot write into {out}: {exc.strerror}",
+                  file=sys.stderr)
+            return 1
+        print(f"  wrote {target}")
+    return 0
+
+
+def _sweep_range(text: str):
+    """NAME=START:STOP:N as (name, values), or None after printing what is wrong."""
+    name, sep, rest = text.partition("=")
+    parts = rest.split(":")
+    try:
+        start, stop, count = float(parts[0]), float(parts[1]), int(parts[2])
+    except (IndexError, ValueError):
+        count = 0
+    if not sep or not name.strip() or len(parts) != 3 or count < 1 \
+            or not (math.isfinite(start) and math.isfinite(stop)):
+        print(f"autolev linearize: --sweep expects NAME=START:STOP:N (N >= 1), not {text!r}",
+              file=sys.stderr)
+        return None
+    if count == 1:
+        return name.strip(), [start]
+    return name.strip(), [start + (stop - start) * k / (count - 1) for k in range(count)]
+
+
+def _linearize_sweep(path: Path, sweep, at, out: str | None) -> int:
+    """Eigenvalues against one quantity of the operating point: CSV on stdout (and in
+    --out as NAME-sweep.csv)."""
+    import time
+
+    from .runtime.numerics.files import safe_stem
+    from .runtime.numerics.linearize import sweep_table
+    name, values = sweep
+    start = time.monotonic()
+    lins = []
+    for k, v in enumerate(values):
+        lins.append(at({name: v}))
+        if time.monotonic() - start > 2 and (k + 1) % 20 == 0:
+            print(f"  {k + 1}/{len(values)} points", file=sys.stderr)
+    table = sweep_table(name, values, lins)
+    print(table, end="")
+    unsteady = [v for v, lin in zip(values, lins) if not lin.steady]
+    if unsteady:
+        print(f"{path}: warning: not an equilibrium or a steady motion at {name} = "
+              + ", ".join(f"{v:.6g}" for v in unsteady[:5])
+              + (" ..." if len(unsteady) > 5 else ""), file=sys.stderr)
+    if out:
+        folder = Path(out)
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+            target = folder / f"{safe_stem(path.stem)}-sweep.csv"
+            target.write_text(table)
+        except OSError as exc:
+            print(f"autolev linearize: cannot write into {folder}: {exc.strerror}",
                   file=sys.stderr)
             return 1
         print(f"  wrote {target}")
@@ -541,7 +603,12 @@ def build_parser() -> argparse.ArgumentParser:
                      help="the specified quantities that are inputs (B's columns), "
                      "comma-separated (default: all without a definition)")
     lin.add_argument("--code", metavar="FILE", help="which CODE DYNAMICS (file name or index)")
-    lin.add_argument("--out", metavar="DIR", help="also write NAME-eigenvalues.csv there")
+    lin.add_argument("--sweep", metavar="NAME=START:STOP:N",
+                     help="eigenvalues at N values of one quantity of the operating point "
+                     "(SI units, radians): CSV of the value and each eigenvalue's real and "
+                     "imaginary part")
+    lin.add_argument("--out", metavar="DIR",
+                     help="also write NAME-eigenvalues.csv (or NAME-sweep.csv) there")
     lin.add_argument("--backend", default="auto", choices=("auto", "c", "python"))
     lin.add_argument("--zero-missing", action="store_true",
                      help="give 0 to constants that have no value")

@@ -95,8 +95,12 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
                                 f"{command.filename}: {', '.join(unused)}")
     chosen = _chosen_inputs(model, system, inputs)
     n_columns = sum(len(cols) for cols in system.files)
-    with model.defs.as_of(command.definitions):
-        jacobians = _jacobian_functions(system, chosen, n_columns, backend)
+    key = ("linearize", tuple(chosen), n_columns, backend)
+    jacobians = system.derived.get(key)
+    if jacobians is None:           # once per system: a sweep reuses them
+        with model.defs.as_of(command.definitions):
+            jacobians = system.derived[key] = _jacobian_functions(system, chosen,
+                                                                  n_columns, backend)
     t0 = prepared.inputs.internal("TINITIAL")
     x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
     s0 = np.array([specified_values.get(s, 0.0) for s in system.specified], dtype=float)
@@ -211,4 +215,19 @@ def eigenvalue_table(lin: Linearization) -> str:
         freq = f"{abs(ev.imag) / (2 * np.pi):.12g}" if ev.imag != 0 else ""
         zeta = f"{0.0 - ev.real / mag:.12g}" if ev.imag != 0 and mag > 0 else ""
         lines.append(f"{ev.real:.15g},{ev.imag:.15g},{freq},{zeta}")
+    return "\n".join(lines) + "\n"
+
+
+def sweep_table(name: str, values, linearizations) -> str:
+    """Eigenvalues against a swept quantity as CSV: the value, then the real and
+    imaginary part of each eigenvalue (in `eigenvalues()` order)."""
+    values = list(values)
+    n = len(linearizations[0].states) if linearizations else 0
+    head = [name] + [f"{part}{k + 1}" for k in range(n) for part in ("re", "im")]
+    lines = [",".join(head)]
+    for v, lin in zip(values, linearizations):
+        cells = [f"{v:.15g}"]
+        for ev in lin.eigenvalues():
+            cells += [f"{ev.real:.15g}", f"{ev.imag:.15g}"]
+        lines.append(",".join(cells))
     return "\n".join(lines) + "\n"

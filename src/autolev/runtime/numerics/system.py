@@ -116,6 +116,8 @@ class NumericSystem:
                       for x in self.states]
         rhs_exprs = rate_exprs + dyn
         self.rhs_exprs = rhs_exprs      # rates (0 where solved), then M row by row, then F
+        # functions compiled from this system later (a linearization's Jacobians), by key
+        self.derived: dict = {}
 
         # outputs: columns and ENCODE values (derivatives resolved through definitions)
         self.files = [list(cols) for cols in outputs]
