@@ -184,9 +184,10 @@ def _block_triangular(a: sm.Matrix) -> list[tuple[list, list]] | None:
 
 # irreducible blocks up to this size are solved by Cramer's rule: no pivot of theirs
 # can vanish where they are regular (a 4x4 loop of the bicycle-with-arms model has one
-# at its symmetric pose).  Its determinants by expansion in minors cost n 2^(n-1)
-# products each, 4 times elimination's at n = 4 and 12 times at n = 6.
-CRAMER_MAX = 4
+# at its symmetric pose, a Whipple bicycle's 5x5 rolling constraints one upright).  Its
+# determinants by expansion in minors cost n 2^(n-1) products each, 4 times
+# elimination's at n = 4 and 12 times at n = 6.
+CRAMER_MAX = 6
 
 
 def _det(rows, defs: Definitions):
