@@ -168,3 +168,38 @@ def test_a_malformed_sweep_is_refused(tmp_path, capsys, text):
     from autolev.cli import main
     assert main(["linearize", str(EXAMPLES / "rolling_disc.al"), "--sweep", text]) == 2
     assert "--sweep expects NAME=START:STOP:N" in capsys.readouterr().err
+
+
+def loop_closure(model):
+    r = model["P5"].pos_from(model["NO"])
+    return [r.dot(model["N"].x), r.dot(model["N"].y)]
+
+
+def test_a_four_bar_reduced_by_its_loop_closure():
+    # the example is a parallelogram (links 1 m, 2 m, 1 m on a 2 m base, 5 kg/m): links
+    # 2 and 4 swing alike and link 3 translates, so hanging (Q1 = -90 deg) it is a
+    # pendulum with V = 15 g sin(Q1) and T = (5/3 + 5/3 + 10)/2 U1^2: w^2 = 15 g / (40/3)
+    model = autolev.load(EXAMPLES / "fourbar.al")
+    near = {"Q1": -math.pi / 2, "Q2": 1.5 * math.pi + 0.1, "Q3": -math.pi / 2 - 0.1, "U1": 0}
+    lin = model.linearize(near, constraints=loop_closure(model))
+    assert lin.states == ["Q1", "U1"] and lin.dependent == ["Q2", "Q3"]
+    assert lin.point["Q2"] == pytest.approx(1.5 * math.pi, abs=1e-12)   # put on the loop
+    assert lin.point["Q3"] == pytest.approx(-math.pi / 2, abs=1e-12)
+    assert lin.steady and lin.A.shape == (2, 2) and lin.C.shape == (6, 2)
+    w = math.sqrt(15 * 9.81 / (40 / 3))
+    assert np.allclose(lin.eigenvalues(), [-1j * w, 1j * w], atol=1e-12)
+    # unreduced, each constraint adds an eigenvalue 0
+    full = model.linearize(dict(near, Q2=1.5 * math.pi, Q3=-math.pi / 2))
+    assert np.allclose(sorted(full.eigenvalues(), key=abs), [0, 0, -1j * w, 1j * w],
+                       atol=1e-12)
+
+
+def test_dependent_coordinates_named_or_refused():
+    model = autolev.load(EXAMPLES / "fourbar.al")
+    point = {"Q1": -math.pi / 2, "Q2": 1.5 * math.pi, "Q3": -math.pi / 2, "U1": 0}
+    lin = model.linearize(point, constraints=loop_closure(model), dependent=["q1", "Q3"])
+    assert lin.states == ["Q2", "U1"] and lin.dependent == ["Q1", "Q3"]
+    w = math.sqrt(15 * 9.81 / (40 / 3))
+    assert np.allclose(lin.eigenvalues(), [-1j * w, 1j * w], atol=1e-12)
+    with pytest.raises(autolev.runtime.AutolevModelError, match="2 state names are needed"):
+        model.linearize(point, constraints=loop_closure(model), dependent=["Q2"])

@@ -175,7 +175,7 @@ class IOMixin:
 
     def linearize(self, operating_point=None, inputs=None, *, code=None,
                   backend: str = "auto", infile=None, missing_values: str = "refuse",
-                  overrides=None):
+                  overrides=None, constraints=None, dependent=None):
         """The equations of motion linearized at `operating_point` ({name: value} for
         constants, coordinates, speeds and specified quantities, in SI units and
         radians; the rest from INPUT, the .in file, or 0 for states and specified
@@ -183,11 +183,14 @@ class IOMixin:
         specified quantity without a definition), C, D (rows: the OUTPUT columns),
         `eigenvalues()` and `modes()`.  Exact Jacobians through the Z's, evaluated by
         compiled code.  `code`: which CODE DYNAMICS (see code_command); `overrides`:
-        {name: value} in the quantities' own units, as `simulate` takes them."""
+        {name: value} in the quantities' own units, as `simulate` takes them.
+        `constraints`: configuration constraints g = 0 (sympy expressions, as for
+        `simulate`): the point is put on them and the state reduced to the independent
+        coordinates (`dependent`: the names of those they fix; default: chosen)."""
         from .numerics.linearize import linearize
         return linearize(self, self._command_to_run(code), operating_point, inputs,
                          backend=backend, infile=infile, missing_values=missing_values,
-                         overrides=overrides)
+                         overrides=overrides, constraints=constraints, dependent=dependent)
 
 
 @dataclass

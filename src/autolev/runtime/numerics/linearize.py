@@ -11,12 +11,15 @@ Exact: every Jacobian is the derivative of the symbolic equations through the Z'
 Where Kane's equations give accelerations a from M a = F, the derivative of a is
 M^-1 (dF - dM a) at the point (M is factorised, never inverted symbolically).
 Dependent speeds are definitions in terms of the independent ones, so they are
-eliminated already; dependent coordinates stay in the state (each configuration
-constraint then adds an eigenvalue 0: the constraint's value is conserved).
+eliminated already.  Dependent coordinates stay in the state (each configuration
+constraint then adds an eigenvalue 0: the constraint's value is conserved) unless the
+configuration constraints g(q) = 0 are given: the point is then put on them (Newton on
+the dependent coordinates) and the state reduced to the independent ones, with
+dq_dep = -G_dep^-1 G_ind dq_ind (G = dg/dx at the point).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg
@@ -44,6 +47,7 @@ class Linearization:
     point: dict             # every constant, state and input value used
     rates: np.ndarray       # x' at the point
     accelerations: np.ndarray   # the accelerations Kane's equations give there
+    dependent: list = field(default_factory=list)   # coordinates the constraints fixed
 
     def eigenvalues(self) -> np.ndarray:
         """The eigenvalues of A, by real part, then imaginary part."""
@@ -65,14 +69,18 @@ class Linearization:
 
 
 def linearize(model, command, operating_point=None, inputs=None, backend: str = "auto",
-              infile=None, missing_values: str = "refuse", overrides=None) -> Linearization:
+              infile=None, missing_values: str = "refuse", overrides=None,
+              constraints=None, dependent=None) -> Linearization:
     """The linearization of `command` (a CODE DYNAMICS) at `operating_point`: {name:
     value} for the model's constants, coordinates, speeds and specified quantities, in
     SI units and radians.  Names it leaves out take their INPUT (or .in) values;
     coordinates and speeds without either are 0, specified quantities 0.  `inputs`:
     the names of the specified quantities that make B's columns (default: all of the
     program's specified quantities without a definition).  `overrides`: {name: value}
-    in the quantities' own units (as `simulate` takes them), before the point's."""
+    in the quantities' own units (as `simulate` takes them), before the point's.
+    `constraints`: configuration constraints g (sympy expressions in the model's
+    symbols, g = 0 on the motion); `dependent`: the names of the coordinates they fix
+    (default: chosen where G is best conditioned)."""
     if command.kind != "dynamics":
         raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
                                 "CODE DYNAMICS program has equations of motion to linearize")
@@ -84,7 +92,8 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
             specified_values[sym] = float(point.pop(name))
     prepared = prepare_command(model, command, backend=backend, infile=infile,
                                overrides=overrides, internal_values=point,
-                               missing_values=missing_values, warn_unassigned=False)
+                               constraints=constraints, missing_values=missing_values,
+                               warn_unassigned=False)
     system = prepared.system
     if not system.nstate:
         raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "
@@ -104,12 +113,70 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     t0 = prepared.inputs.internal("TINITIAL")
     x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
     s0 = np.array([specified_values.get(s, 0.0) for s in system.specified], dtype=float)
+    on_constraints = None
+    if constraints:
+        on_constraints = _ConfigurationConstraints(
+            system, constraints, t0, x0, prepared.inputs.vector(prepared.extra_constants),
+            dependent)
+        x0 = on_constraints.solve(t0, x0)
     lin = _evaluate(system, jacobians, chosen, t0, x0, s0)
     lin.point = {display_name(p): float(v) for p, v in zip(system.params, system._c)}
     lin.point.update({display_name(x): float(v) for x, v in zip(system.states, x0)})
     lin.point.update({display_name(s): float(v) for s, v in zip(system.specified, s0)})
     lin.outputs = [c.label for cols in system.files for c in cols]
+    if on_constraints is not None:
+        on_constraints.reduce(lin, t0, x0)
     return lin
+
+
+class _ConfigurationConstraints:
+    """g(x) = 0 and G = dg/dx compiled; puts a point on g = 0 by Newton's method on
+    the dependent coordinates and reduces a linearization to the independent ones."""
+
+    def __init__(self, system, constraints, t0: float, x0, extra_values, dependent):
+        from .projection import Projector
+        self.projector = Projector(system, constraints, t0, x0, extra_values)
+        self.names = [display_name(x) for x in system.states]
+        g, jac = self.projector.residual_and_jacobian(t0, np.asarray(x0, dtype=float))
+        m = len(g)
+        if dependent is None:
+            _, r, pivots = scipy.linalg.qr(jac, pivoting=True)
+            if m > min(jac.shape) or abs(r[m - 1, m - 1]) <= 1e-10 * max(1.0, abs(r[0, 0])):
+                raise AutolevModelError("the configuration constraints are not independent "
+                                        "at the operating point")
+            self.dep = sorted(int(k) for k in pivots[:m])
+        else:
+            upper = [n.upper() for n in self.names]
+            unknown = [d for d in dependent if str(d).upper() not in upper]
+            if unknown or len(dependent) != m:
+                raise AutolevModelError(f"dependent: {m} state names are needed (one per "
+                                        f"constraint), not {', '.join(map(str, dependent))}")
+            self.dep = sorted(upper.index(str(d).upper()) for d in dependent)
+        self.ind = [k for k in range(len(self.names)) if k not in self.dep]
+
+    def solve(self, t0: float, x0) -> np.ndarray:
+        x = np.array(x0, dtype=float)
+        for _ in range(50):
+            g, jac = self.projector.residual_and_jacobian(t0, x)
+            if np.abs(g).max() <= 1e-13 * (1.0 + np.abs(x).max()):
+                return x
+            x[self.dep] -= np.linalg.solve(jac[:, self.dep], g)
+        raise AutolevModelError(
+            "the operating point cannot be put on the configuration constraints by "
+            f"changing {', '.join(self.names[k] for k in self.dep)} (residual "
+            f"{np.abs(g).max():.3g}); give values for them closer to the constraints")
+
+    def reduce(self, lin: Linearization, t0: float, x0) -> None:
+        _, jac = self.projector.residual_and_jacobian(t0, x0)
+        ind, dep = self.ind, self.dep
+        basis = np.zeros((len(self.names), len(ind)))
+        basis[ind, np.arange(len(ind))] = 1.0
+        basis[dep] = -np.linalg.solve(jac[:, dep], jac[:, ind])
+        lin.A, lin.B = lin.A[ind] @ basis, lin.B[ind]
+        lin.C = lin.C @ basis
+        lin.rates = lin.rates[ind]
+        lin.states = [self.names[k] for k in ind]
+        lin.dependent = [self.names[k] for k in dep]
 
 
 def _symbol_named(model, name: str):
