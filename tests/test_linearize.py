@@ -114,8 +114,20 @@ def test_only_a_dynamics_program_is_linearized(tmp_path):
     path = tmp_path / "alg.al"
     path.write_text("CONSTANTS A\nVARIABLES X\nE = X - A\nINPUT A = 1\n"
                     "CODE ALGEBRAIC(E, X) alg.c\n")
+    model = autolev.load(path)
     with pytest.raises(autolev.runtime.AutolevModelError, match="only a CODE DYNAMICS"):
-        autolev.load(path).linearize()
+        model.linearize(code="alg.c")
+    # without CODE DYNAMICS, the model's equations as they stand: here no motion at all
+    with pytest.raises(autolev.runtime.AutolevModelError, match="no state to linearize"):
+        model.linearize()
+
+
+def test_a_model_without_code_dynamics_is_linearized_as_it_stands(tmp_path):
+    path = tmp_path / "bare.al"
+    path.write_text(PENDULUM.replace("CODE DYNAMICS() pendulum.c\n", ""))
+    lin = autolev.load(path).linearize({"Q": 0})
+    w = math.sqrt(9.81 / 2)
+    assert np.allclose(lin.eigenvalues(), [-1j * w, 1j * w], rtol=1e-14)
 
 
 def test_the_command_prints_and_writes_the_eigenvalues(pendulum, tmp_path, capsys):

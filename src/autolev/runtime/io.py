@@ -167,11 +167,13 @@ class IOMixin:
                 break
         if command is None and self.code_commands:
             command = self.code_commands[0]
-        if command is None:
-            command = CodeCommand("dynamics", f"{self.name}.c", [], None, (),
-                                  n_outputs=len(self.outputs), n_encoded=len(self.encoded),
-                                  inputs=dict(self.inputs), units=dict(self.unit_of))
-        return command
+        return command if command is not None else self._plain_dynamics()
+
+    def _plain_dynamics(self) -> "CodeCommand":
+        """CODE DYNAMICS of the model as it stands (for a model that writes none)."""
+        return CodeCommand("dynamics", f"{self.name}.c", [], None, (),
+                           n_outputs=len(self.outputs), n_encoded=len(self.encoded),
+                           inputs=dict(self.inputs), units=dict(self.unit_of))
 
     def linearize(self, operating_point=None, inputs=None, *, code=None,
                   backend: str = "auto", infile=None, missing_values: str = "refuse",
@@ -182,13 +184,19 @@ class IOMixin:
         quantities): a Linearization with A, B (columns: `inputs`, default every
         specified quantity without a definition), C, D (rows: the OUTPUT columns),
         `eigenvalues()` and `modes()`.  Exact Jacobians through the Z's, evaluated by
-        compiled code.  `code`: which CODE DYNAMICS (see code_command); `overrides`:
+        compiled code.  `code`: which CODE DYNAMICS (see code_command; default: the
+        first, else the model's equations as they stand); `overrides`:
         {name: value} in the quantities' own units, as `simulate` takes them.
         `constraints`: configuration constraints g = 0 (sympy expressions, as for
         `simulate`): the point is put on them and the state reduced to the independent
         coordinates (`dependent`: the names of those they fix; default: chosen)."""
         from .numerics.linearize import linearize
-        return linearize(self, self._command_to_run(code), operating_point, inputs,
+        if code is not None:
+            command = self.code_command(code)
+        else:       # the first CODE DYNAMICS, else the model's equations as they stand
+            command = next((c for c in self.code_commands if c.kind == "dynamics"),
+                           None) or self._plain_dynamics()
+        return linearize(self, command, operating_point, inputs,
                          backend=backend, infile=infile, missing_values=missing_values,
                          overrides=overrides, constraints=constraints, dependent=dependent)
 
