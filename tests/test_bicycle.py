@@ -1,5 +1,5 @@
 """A Whipple bicycle written from the Meijaard et al. (2007) benchmark's description
-(tests/data/whipple_benchmark.al) linearized upright: the benchmark's eigenvalues at
+(autolev_examples/whipple_benchmark.al) linearized upright: the benchmark's eigenvalues at
 5 m/s and its weave and capsize speeds (Meijaard, Papadopoulos, Ruina and Schwab, Proc.
 R. Soc. A 463, 2007, tables 2 and 3)."""
 import math
@@ -12,7 +12,7 @@ from scipy.optimize import brentq
 import autolev
 from conftest import ROOT
 
-MODEL = ROOT / "tests" / "data" / "whipple_benchmark.al"
+MODEL = ROOT / "autolev_examples" / "whipple_benchmark.al"
 REAR_RADIUS = 0.3
 WEAVE = complex(-0.775341882195845, 4.46486771378823)
 CAPSIZE = -0.322866429004087

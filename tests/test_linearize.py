@@ -215,3 +215,23 @@ def test_dependent_coordinates_named_or_refused():
     assert np.allclose(lin.eigenvalues(), [-1j * w, 1j * w], atol=1e-12)
     with pytest.raises(autolev.runtime.AutolevModelError, match="2 state names are needed"):
         model.linearize(point, constraints=loop_closure(model), dependent=["Q2"])
+
+
+def test_a_sweep_is_drawn_with_plot(tmp_path, capsys):
+    pytest.importorskip("matplotlib", reason="--plot needs the optional matplotlib")
+    from autolev.cli import main
+    model_file = tmp_path / "pendulum.al"
+    model_file.write_text(PENDULUM)
+    assert main(["linearize", str(model_file), "--sweep", "Q=0:3:7", "--plot",
+                 "--out", str(tmp_path / "out")]) == 0
+    png = tmp_path / "out" / "pendulum-sweep.png"
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and png.stat().st_size > 5000
+    assert "not an equilibrium or a steady motion at Q = 0.5" in capsys.readouterr().err
+
+
+def test_plot_without_a_sweep_is_refused(tmp_path, capsys):
+    from autolev.cli import main
+    model_file = tmp_path / "pendulum.al"
+    model_file.write_text(PENDULUM)
+    assert main(["linearize", str(model_file), "--plot"]) == 2
+    assert "--plot draws a --sweep" in capsys.readouterr().err

@@ -322,6 +322,16 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
     sweep = _sweep_range(ns.sweep) if ns.sweep else None
     if ns.sweep and sweep is None:
         return 2
+    if ns.plot:
+        if sweep is None:
+            print("autolev linearize: --plot draws a --sweep", file=sys.stderr)
+            return 2
+        try:
+            import matplotlib  # noqa: F401
+        except ImportError:
+            print("autolev linearize: --plot needs matplotlib (pip install 'autolev[plot]')",
+                  file=sys.stderr)
+            return 2
     model = _load_for_run(path)
     if model is None:
         print(f"{path}: not linearized", file=sys.stderr)
@@ -335,7 +345,7 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
                                missing_values="zero" if ns.zero_missing else "refuse")
     try:
         if sweep is not None:
-            return _linearize_sweep(path, sweep, at, ns.out)
+            return _linearize_sweep(path, sweep, at, ns.out, ns.plot)
         lin = at({})
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
@@ -380,9 +390,9 @@ def _sweep_range(text: str):
     return name.strip(), [start + (stop - start) * k / (count - 1) for k in range(count)]
 
 
-def _linearize_sweep(path: Path, sweep, at, out: str | None) -> int:
+def _linearize_sweep(path: Path, sweep, at, out: str | None, plot: bool = False) -> int:
     """Eigenvalues against one quantity of the operating point: CSV on stdout (and in
-    --out as NAME-sweep.csv)."""
+    --out as NAME-sweep.csv; with `plot`, NAME-sweep.png in --out or here)."""
     import time
 
     from .runtime.numerics.files import safe_stem
@@ -401,17 +411,26 @@ def _linearize_sweep(path: Path, sweep, at, out: str | None) -> int:
         print(f"{path}: warning: not an equilibrium or a steady motion at {name} = "
               + ", ".join(f"{v:.6g}" for v in unsteady[:5])
               + (" ..." if len(unsteady) > 5 else ""), file=sys.stderr)
-    if out:
-        folder = Path(out)
+    if out or plot:
+        folder = Path(out or ".")
+        stem = safe_stem(path.stem)
         try:
             folder.mkdir(parents=True, exist_ok=True)
-            target = folder / f"{safe_stem(path.stem)}-sweep.csv"
-            target.write_text(table)
+            written = []
+            if out:
+                written.append(folder / f"{stem}-sweep.csv")
+                written[-1].write_text(table)
+            if plot:
+                from .plots import write_eigenvalue_png
+                written.append(write_eigenvalue_png(
+                    folder / f"{stem}-sweep.png", name, values,
+                    [lin.eigenvalues() for lin in lins], f"{path.name}: eigenvalues"))
         except OSError as exc:
             print(f"autolev linearize: cannot write into {folder}: {exc.strerror}",
                   file=sys.stderr)
             return 1
-        print(f"  wrote {target}")
+        for target in written:
+            print(f"  wrote {target}")
     return 0
 
 
@@ -607,6 +626,9 @@ def build_parser() -> argparse.ArgumentParser:
                      help="eigenvalues at N values of one quantity of the operating point "
                      "(SI units, radians): CSV of the value and each eigenvalue's real and "
                      "imaginary part")
+    lin.add_argument("--plot", action="store_true",
+                     help="with --sweep: also draw NAME-sweep.png, real and imaginary parts "
+                     "against the swept quantity (needs matplotlib)")
     lin.add_argument("--out", metavar="DIR",
                      help="also write NAME-eigenvalues.csv (or NAME-sweep.csv) there")
     lin.add_argument("--backend", default="auto", choices=("auto", "c", "python"))

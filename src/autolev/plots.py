@@ -70,3 +70,36 @@ def write_pngs(result, out_dir: Path) -> list[Path]:
         plt.close(fig)
         written.append(path)
     return written
+
+
+def eigenvalue_figure(name: str, values, eigenvalues, title: str = ""):
+    """The eigenvalues against a swept quantity: real parts above, imaginary parts
+    below, as points (the branches cross, so no line joins them); `eigenvalues`: one
+    array per value."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6.5))
+    for v, ev in zip(values, eigenvalues):
+        top.plot([v] * len(ev), [e.real for e in ev], "k.", markersize=3)
+        bottom.plot([v] * len(ev), [abs(e.imag) for e in ev], "b.", markersize=3)
+    top.axhline(0.0, color="r", linewidth=0.8)
+    top.set_ylabel("real part (1/s)")
+    bottom.set_ylabel("|imaginary part| (rad/s)")
+    bottom.set_xlabel(name)
+    for ax in (top, bottom):
+        ax.grid(True, alpha=0.3)
+        ax.ticklabel_format(useOffset=False)
+    fig.suptitle(title or f"eigenvalues against {name}", fontsize="medium")
+    fig.tight_layout()
+    return fig
+
+
+def write_eigenvalue_png(path: Path, name: str, values, eigenvalues, title: str = "") -> Path:
+    import matplotlib.pyplot as plt
+
+    fig = eigenvalue_figure(name, values, eigenvalues, title)
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+    return Path(path)
