@@ -235,3 +235,27 @@ def test_plot_without_a_sweep_is_refused(tmp_path, capsys):
     model_file.write_text(PENDULUM)
     assert main(["linearize", str(model_file), "--plot"]) == 2
     assert "--plot draws a --sweep" in capsys.readouterr().err
+
+
+def test_equations_undefined_at_the_point_are_a_clear_error(tmp_path):
+    path = tmp_path / "bad.al"
+    path.write_text("VARIABLES Q''\nCONSTANTS G, L\nQ'' = -G/L*SIN(Q)\n"
+                    "INPUT G = 9.81, L = 0, Q = 0, Q' = 0\nCODE DYNAMICS() bad.c\n")
+    with pytest.raises(autolev.runtime.AutolevModelError,
+                       match="not finite at the operating point: the derivatives of Q'"):
+        autolev.load(path).linearize()
+
+
+def test_a_model_without_kanes_equations_and_its_accelerations(tmp_path):
+    # X'' written out: the rate of X' is its acceleration, as Kane's would be
+    path = tmp_path / "plain.al"
+    path.write_text("VARIABLES Q''\nCONSTANTS G, L\nQ'' = -G/L*SIN(Q)\n"
+                    "INPUT G = 9.81, L = 2, Q = 0, Q' = 0\nCODE DYNAMICS() plain.c\n")
+    model = autolev.load(path)
+    hanging = model.linearize()
+    assert hanging.states == ["Q", "Q'"] and hanging.steady
+    w = math.sqrt(9.81 / 2)
+    assert np.allclose(hanging.eigenvalues(), [-1j * w, 1j * w], rtol=1e-14)
+    tilted = model.linearize({"Q": 0.3})
+    assert not tilted.steady
+    assert tilted.accelerations == pytest.approx([-9.81 / 2 * math.sin(0.3)], rel=1e-14)

@@ -46,7 +46,7 @@ class Linearization:
     outputs: list
     point: dict             # every constant, state and input value used
     rates: np.ndarray       # x' at the point
-    accelerations: np.ndarray   # the accelerations Kane's equations give there
+    accelerations: np.ndarray   # the rates of the speeds there (Kane's or SOLVE's)
     dependent: list = field(default_factory=list)   # coordinates the constraints fixed
 
     def eigenvalues(self) -> np.ndarray:
@@ -120,6 +120,13 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
             dependent)
         x0 = on_constraints.solve(t0, x0)
     lin = _evaluate(system, jacobians, chosen, t0, x0, s0)
+    bad = [display_name(x) for x, row, rate in zip(system.states, lin.A, lin.rates)
+           if not (np.all(np.isfinite(row)) and np.isfinite(rate))]
+    if bad:
+        raise AutolevModelError(
+            "the equations of motion are not finite at the operating point: the "
+            f"derivatives of {', '.join(bad)} (or their partial derivatives) are "
+            "infinite or undefined there (a division by zero: a mass or an inertia of 0?)")
     lin.point = {display_name(p): float(v) for p, v in zip(system.params, system._c)}
     lin.point.update({display_name(x): float(v) for x, v in zip(system.states, x0)})
     lin.point.update({display_name(s): float(v) for s, v in zip(system.specified, s0)})
@@ -269,7 +276,18 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
         A=jrates[:, :nx], B=jrates[:, nx:], C=jout[:, :nx], D=jout[:, nx:],
         states=[display_name(x) for x in system.states],
         inputs=[display_name(s) for s in chosen], outputs=[], point={},
-        rates=rates, accelerations=accelerations)
+        rates=rates, accelerations=rates[_speed_positions(system)])
+
+
+def _speed_positions(system) -> list:
+    """The states that are speeds: those Kane's equations give the rates of, and those
+    that are the rate of another state (Q' = U makes U a speed, Q' one in X'' = ...)."""
+    positions = set(system._unknown_pos)
+    index = {x: k for k, x in enumerate(system.states)}
+    for expr in system.rhs_exprs[:system.nstate]:
+        if expr in index:
+            positions.add(index[expr])
+    return sorted(positions)
 
 
 
