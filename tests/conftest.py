@@ -41,7 +41,7 @@ def expr(text: str):
     return only(parse(f"X_ = {text}")).value
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def corpus() -> Path:
     if not CORPUS.is_dir():
         pytest.skip(f"corpus not materialized at {CORPUS} (see shared/corpus/materialize.py)")

@@ -259,3 +259,56 @@ def test_a_model_without_kanes_equations_and_its_accelerations(tmp_path):
     tilted = model.linearize({"Q": 0.3})
     assert not tilted.steady
     assert tilted.accelerations == pytest.approx([-9.81 / 2 * math.sin(0.3)], rel=1e-14)
+
+
+DOUBLE_PENDULUM = """NEWTONIAN N
+FRAMES A, B
+PARTICLES P1, P2
+MOTIONVARIABLES' Q{2}', U{2}'
+CONSTANTS G, L1, L2, M1, M2
+SIMPROT(N, A, 3, Q1)
+SIMPROT(A, B, 3, Q2)
+Q1' = U1
+Q2' = U2
+W_A_N> = U1*A3>
+W_B_A> = U2*A3>
+P_NO_P1> = L1*A1>
+P_P1_P2> = L2*B1>
+V_P1_N> = DT(P_NO_P1>, N)
+V_P2_N> = DT(P_NO_P1> + P_P1_P2>, N)
+MASS P1 = M1, P2 = M2
+GRAVITY(G*N1>)
+ZERO = FR() + FRSTAR()
+SOLVE(ZERO, U1', U2')
+INPUT G = 9.81, L1 = 1.5, L2 = 0.7, M1 = 2, M2 = 3
+"""
+
+
+def test_a_locked_joint_makes_one_rigid_pendulum(tmp_path):
+    # Q2 held at b: one body, masses at L1 a1 and L1 a1 + L2 (cos b a1 + sin b a2);
+    # it hangs with its mass centre below O and swings at w^2 = g |sum m r| / sum m r^2
+    path = tmp_path / "double.al"
+    path.write_text(DOUBLE_PENDULUM)
+    model = autolev.load(path)
+    g, l1, l2, m1, m2, b = 9.81, 1.5, 0.7, 2.0, 3.0, 0.4
+    cx, cy = m1 * l1 + m2 * (l1 + l2 * math.cos(b)), m2 * l2 * math.sin(b)
+    inertia = m1 * l1 ** 2 + m2 * (l1 ** 2 + l2 ** 2 + 2 * l1 * l2 * math.cos(b))
+    w = math.sqrt(g * math.hypot(cx, cy) / inertia)
+    lin = model.linearize({"Q1": -math.atan2(cy, cx), "Q2": b}, locked=["Q2"])
+    assert lin.states == ["Q1", "U1"] and lin.locked == ["Q2"]
+    assert lin.steady and lin.point["Q2"] == b
+    assert np.allclose(lin.eigenvalues(), [-1j * w, 1j * w], rtol=1e-13)
+    # unlocked, the same point is no equilibrium: the second link swings down
+    free = model.linearize({"Q1": -math.atan2(cy, cx), "Q2": b})
+    assert free.states == ["Q1", "Q2", "U1", "U2"] and not free.steady
+
+
+def test_only_a_coordinate_with_its_own_speed_can_be_locked(tmp_path):
+    path = tmp_path / "double.al"
+    path.write_text(DOUBLE_PENDULUM.replace("Q2' = U2", "Q2' = U2 - U1")
+                    .replace("W_B_A> = U2*A3>", "W_B_A> = (U2 - U1)*A3>"))
+    model = autolev.load(path)
+    with pytest.raises(autolev.runtime.AutolevModelError, match="Q2' = U for an independent"):
+        model.linearize(locked=["Q2"])
+    with pytest.raises(autolev.runtime.AutolevModelError, match="'G' is not a coordinate"):
+        model.linearize(locked=["G"])

@@ -16,9 +16,9 @@ from .errors import (AutolevError, AutolevFileError, AutolevRuntimeError, Autole
 from .ir import Program
 
 __version__ = "0.1.0"
-__all__ = ["parse", "transpile", "load", "verify", "Program", "AutolevError", "AutolevSyntaxError",
-           "AutolevTranslationError", "AutolevRuntimeError", "AutolevFileError",
-           "Diagnostic", "Location", "Span", "__version__"]
+__all__ = ["parse", "transpile", "load", "verify", "grid", "Program", "AutolevError",
+           "AutolevSyntaxError", "AutolevTranslationError", "AutolevRuntimeError",
+           "AutolevFileError", "Diagnostic", "Location", "Span", "__version__"]
 
 
 def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
@@ -89,3 +89,10 @@ def load(path: str | os.PathLike):
     from .loader import load_translation
     p = Path(path)
     return load_translation(translation(p), str(p))
+
+
+def grid(**axes) -> list:
+    """Every combination of the values given for each name, as points for
+    `Model.sweep`: grid(V=[3, 4, 5], M=[80, 85]) has 6 points."""
+    from .runtime.studies import grid as _grid
+    return _grid(**axes)

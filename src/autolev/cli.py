@@ -336,13 +336,25 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
     if model is None:
         print(f"{path}: not linearized", file=sys.stderr)
         return 1
+    constraints = []
+    for name in _listed(ns.constraint):
+        try:
+            value = model.quantity(name)
+        except KeyError:
+            print(f"autolev linearize: --constraint {name}: the model has no quantity "
+                  "of that name", file=sys.stderr)
+            return 2
+        constraints += list(value) if hasattr(value, "shape") else [value]
 
     def at(extra):
         return model.linearize(dict(point, **extra),
                                inputs=ns.inputs.split(",") if ns.inputs else None,
                                code=int(ns.code) if ns.code and ns.code.isdigit() else ns.code,
                                backend=ns.backend, infile=ns.infile, overrides=overrides,
-                               missing_values="zero" if ns.zero_missing else "refuse")
+                               missing_values="zero" if ns.zero_missing else "refuse",
+                               constraints=constraints or None,
+                               dependent=_listed(ns.dependent) or None,
+                               locked=_listed(ns.lock) or None)
     try:
         if sweep is not None:
             return _linearize_sweep(path, sweep, at, ns.out, ns.plot)
@@ -370,6 +382,11 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
             return 1
         print(f"  wrote {target}")
     return 0
+
+
+def _listed(values) -> list:
+    """Names given as repeated options, each possibly comma-separated."""
+    return [n.strip() for v in values or () for n in v.split(",") if n.strip()]
 
 
 def _sweep_range(text: str):
@@ -622,6 +639,16 @@ def build_parser() -> argparse.ArgumentParser:
                      help="the specified quantities that are inputs (B's columns), "
                      "comma-separated (default: all without a definition)")
     lin.add_argument("--code", metavar="FILE", help="which CODE DYNAMICS (file name or index)")
+    lin.add_argument("--lock", action="append", metavar="NAMES",
+                     help="coordinates held at their values, as by a rigid joint (each "
+                     "with Q' = U: U's equation is dropped); comma-separated, repeatable")
+    lin.add_argument("--constraint", action="append", metavar="NAME",
+                     help="a quantity of the model that is 0 on the motion (a configuration "
+                     "constraint, scalar or matrix): the point is put on it and the state "
+                     "reduced to the independent coordinates; repeatable")
+    lin.add_argument("--dependent", action="append", metavar="NAMES",
+                     help="with --constraint: the coordinates the constraints fix "
+                     "(default: chosen where the constraints' Jacobian is best conditioned)")
     lin.add_argument("--sweep", metavar="NAME=START:STOP:N",
                      help="eigenvalues at N values of one quantity of the operating point "
                      "(SI units, radians): CSV of the value and each eigenvalue's real and "

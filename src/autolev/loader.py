@@ -5,6 +5,7 @@ from __future__ import annotations
 import textwrap
 import traceback
 import types
+from dataclasses import dataclass
 
 import sympy as sm
 from sympy.matrices.exceptions import NonInvertibleMatrixError
@@ -41,6 +42,7 @@ def load_translation(translation, filename: str):
         raise AutolevRuntimeError(_diagnostic(exc, translation, module.__file__)) from None
     model = module.__dict__["model"]
     model.namespace = module.__dict__
+    model.source = ModelSource("translation", translation, filename, model.revision())
     model.names = translation.names
     model.namespaces = translation.namespaces
     # where each CODE statement is in the .al file (diagnostics of its run point there)
@@ -99,12 +101,17 @@ def load_python(path) -> object:
     except (OSError, UnicodeDecodeError) as exc:
         from .errors import AutolevFileError
         raise AutolevFileError(p, f"cannot read: {getattr(exc, 'strerror', None) or exc}")
+    return run_python(text, str(p))
+
+
+def run_python(text: str, filename: str) -> object:
+    """The model of a converted module's text (see load_python)."""
     module = types.ModuleType("autolev_model")
-    module.__file__ = str(p)
+    module.__file__ = filename
     try:
-        code = compile(text, str(p), "exec")
+        code = compile(text, filename, "exec")
     except SyntaxError as exc:
-        loc = Location(str(p), exc.lineno or 1, exc.offset or 1)
+        loc = Location(filename, exc.lineno or 1, exc.offset or 1)
         raise AutolevRuntimeError(Diagnostic(loc, "R002", f"not Python: {exc.msg}", "error",
                                              None)) from None
     try:
@@ -112,22 +119,41 @@ def load_python(path) -> object:
     except _STATEMENT_FAILURES + _EDITING_SLIPS as exc:
         line = None
         for frame, lineno in traceback.walk_tb(exc.__traceback__):
-            if frame.f_code.co_filename == str(p):
+            if frame.f_code.co_filename == filename:
                 line = lineno
         message = str(exc) if isinstance(exc, AutolevModelError) else \
             f"this statement failed: {type(exc).__name__}: {exc}"
         quoted = _quoted_statement(text.splitlines(), line) if line else None
         if quoted:
             message += f" (Autolev: {quoted})"
-        raise AutolevRuntimeError(Diagnostic(Location(str(p), line or 1, 1), "R001",
+        raise AutolevRuntimeError(Diagnostic(Location(filename, line or 1, 1), "R001",
                                              message, "error", None)) from None
     model = module.__dict__.get("model")
     if model is None:
-        raise AutolevRuntimeError(Diagnostic(Location(str(p), 1, 1), "R003",
+        raise AutolevRuntimeError(Diagnostic(Location(filename, 1, 1), "R003",
                                              "this module defines no `model`", "error",
                                              None))
     model.namespace = module.__dict__
+    model.source = ModelSource("python", text, filename, model.revision())
     return model
+
+
+@dataclass(frozen=True)
+class ModelSource:
+    """What rebuilds a loaded model in another process (a sweep's workers): its
+    translation, or a converted module's text; `state`: its revision() as loaded."""
+
+    kind: str               # "translation" or "python"
+    content: object         # the Translation, or the module's text
+    filename: str
+    state: tuple
+
+    def load(self):
+        if self.kind == "translation":
+            return load_translation(self.content, self.filename)
+        return run_python(self.content, self.filename)
+
+
 
 
 def _quoted_statement(lines: list[str], line: int) -> str | None:
@@ -143,7 +169,7 @@ def _quoted_statement(lines: list[str], line: int) -> str | None:
     return " ".join(q for q in quoted if q) or None
 
 
-__all__ = ["load_translation", "load_python"]
+__all__ = ["load_translation", "load_python", "run_python", "ModelSource"]
 
 
 def load_for_run(path) -> tuple[object, list]:

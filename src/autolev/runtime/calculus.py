@@ -161,6 +161,11 @@ class Definitions:
         self._fs: dict[sm.Symbol, frozenset] = {}   # free symbols of each definition
         self._fo: dict[sm.Symbol, tuple] = {}       # the same, in a fixed order
         self.z_count = 0
+        # counts the user definitions made: what was derived from the table is stale
+        # when it changes (a Z added names an expression and changes nothing)
+        self.user_version = 0
+        self._views: dict = {}      # id of an as_of snapshot -> (snapshot, its version)
+        self._view_count = 0
 
     # -- the table -------------------------------------------------------------
     def define(self, sym: sm.Symbol, expr) -> None:
@@ -173,6 +178,7 @@ class Definitions:
                                     f"{expr}")
         if not isinstance(sym, Z):
             self._invalidate()
+            self.user_version += 1
         self.rhs[sym] = expr
         self._fs.pop(sym, None)
         self._fo.pop(sym, None)
@@ -195,11 +201,24 @@ class Definitions:
                 user_definitions.get(s) is e for s, e in now.items()):
             yield self
             return
+        outside = self.user_version
         self._replace_user_definitions(user_definitions)
+        self.user_version = self._view_version(user_definitions)
         try:
             yield self
         finally:
             self._replace_user_definitions(now)
+            self.user_version = outside
+
+    def _view_version(self, user_definitions: Mapping):
+        """A version for the table seen through `as_of(user_definitions)`: the same
+        each time that snapshot is viewed, never one the table itself takes."""
+        kept = self._views.get(id(user_definitions))
+        if kept is None or kept[0] is not user_definitions:
+            self._view_count += 1
+            kept = self._views[id(user_definitions)] = (user_definitions,
+                                                        ("view", self._view_count))
+        return kept[1]
 
     def _replace_user_definitions(self, user_definitions: Mapping) -> None:
         for s in [s for s in self.rhs if not isinstance(s, Z)]:

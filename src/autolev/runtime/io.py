@@ -170,14 +170,29 @@ class IOMixin:
         return command if command is not None else self._plain_dynamics()
 
     def _plain_dynamics(self) -> "CodeCommand":
-        """CODE DYNAMICS of the model as it stands (for a model that writes none)."""
-        return CodeCommand("dynamics", f"{self.name}.c", [], None, (),
-                           n_outputs=len(self.outputs), n_encoded=len(self.encoded),
-                           inputs=dict(self.inputs), units=dict(self.unit_of))
+        """CODE DYNAMICS of the model as it stands (for a model that writes none); the
+        same object while the model is unchanged, so its numeric system is reused."""
+        key = (self._version, self.defs.user_version, len(self.outputs), len(self.encoded),
+               tuple(self.inputs.items()), tuple(self.unit_of.items()))
+        kept = self.__dict__.get("_plain_command")
+        if kept is None or kept[0] != key:
+            kept = self._plain_command = (key, CodeCommand(
+                "dynamics", f"{self.name}.c", [], None, (), n_outputs=len(self.outputs),
+                n_encoded=len(self.encoded), inputs=dict(self.inputs),
+                units=dict(self.unit_of)))
+        return kept[1]
+
+    def sweep(self, points, what: str = "linearize", **options):
+        """A parameter study: the model linearized (what="linearize") or simulated
+        (what="simulate") at every point, translated and compiled once, on the local
+        cores or on `executor=` (a Dask Client, any concurrent.futures Executor); one
+        table.  See autolev.runtime.studies.sweep."""
+        from .studies import sweep
+        return sweep(self, points, what, **options)
 
     def linearize(self, operating_point=None, inputs=None, *, code=None,
                   backend: str = "auto", infile=None, missing_values: str = "refuse",
-                  overrides=None, constraints=None, dependent=None):
+                  overrides=None, constraints=None, dependent=None, locked=None):
         """The equations of motion linearized at `operating_point` ({name: value} for
         constants, coordinates, speeds and specified quantities, in SI units and
         radians; the rest from INPUT, the .in file, or 0 for states and specified
@@ -189,7 +204,9 @@ class IOMixin:
         {name: value} in the quantities' own units, as `simulate` takes them.
         `constraints`: configuration constraints g = 0 (sympy expressions, as for
         `simulate`): the point is put on them and the state reduced to the independent
-        coordinates (`dependent`: the names of those they fix; default: chosen)."""
+        coordinates (`dependent`: the names of those they fix; default: chosen).
+        `locked`: names of coordinates held at their values (with Q' = U: U = U' = 0,
+        U's row of Kane's equations dropped), as a rigid joint would."""
         from .numerics.linearize import linearize
         if code is not None:
             command = self.code_command(code)
@@ -198,7 +215,8 @@ class IOMixin:
                            None) or self._plain_dynamics()
         return linearize(self, command, operating_point, inputs,
                          backend=backend, infile=infile, missing_values=missing_values,
-                         overrides=overrides, constraints=constraints, dependent=dependent)
+                         overrides=overrides, constraints=constraints, dependent=dependent,
+                         locked=locked)
 
 
 @dataclass

@@ -130,6 +130,12 @@ class Model(AlgebraMixin, IOMixin):
     def _changed(self) -> None:
         self._version += 1
 
+    def revision(self) -> tuple:
+        """A value that changes whenever the model is changed (a statement, an INPUT,
+        a CODE command), so that what was derived from it can be known stale."""
+        return (self._version, self.defs.user_version, tuple(self.inputs.items()),
+                len(self.code_commands))
+
     def _orientation_changed(self) -> None:
         for f in self.frames_by_name.values():
             f._dcm_cache.clear()
@@ -556,7 +562,7 @@ class Model(AlgebraMixin, IOMixin):
         return independent, list(self.dependent_speeds), aux
 
     def _form(self, inertia: bool = True) -> KaneEquations:
-        key = (self._version, len(self.defs.rhs), inertia)
+        key = (self._version, self.defs.user_version, inertia)
         if self._formed is not None and self._formed[0][:2] == key[:2] and \
                 (self._formed[0][2] or not inertia):
             return self._formed[1]

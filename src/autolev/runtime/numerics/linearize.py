@@ -19,7 +19,8 @@ dq_dep = -G_dep^-1 G_ind dq_ind (G = dg/dx at the point).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import warnings
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import scipy.linalg
@@ -48,6 +49,7 @@ class Linearization:
     rates: np.ndarray       # x' at the point
     accelerations: np.ndarray   # the rates of the speeds there (Kane's or SOLVE's)
     dependent: list = field(default_factory=list)   # coordinates the constraints fixed
+    locked: list = field(default_factory=list)      # coordinates held (with their speeds)
 
     def eigenvalues(self) -> np.ndarray:
         """The eigenvalues of A, by real part, then imaginary part."""
@@ -70,7 +72,7 @@ class Linearization:
 
 def linearize(model, command, operating_point=None, inputs=None, backend: str = "auto",
               infile=None, missing_values: str = "refuse", overrides=None,
-              constraints=None, dependent=None) -> Linearization:
+              constraints=None, dependent=None, locked=None) -> Linearization:
     """The linearization of `command` (a CODE DYNAMICS) at `operating_point`: {name:
     value} for the model's constants, coordinates, speeds and specified quantities, in
     SI units and radians.  Names it leaves out take their INPUT (or .in) values;
@@ -80,11 +82,20 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     in the quantities' own units (as `simulate` takes them), before the point's.
     `constraints`: configuration constraints g (sympy expressions in the model's
     symbols, g = 0 on the motion); `dependent`: the names of the coordinates they fix
-    (default: chosen where G is best conditioned)."""
+    (default: chosen where G is best conditioned).  `locked`: names of coordinates held
+    at their values (a rigid joint: Q' = U, with U and U' then 0 and U's row of Kane's
+    equations dropped); the state leaves them out."""
     if command.kind != "dynamics":
         raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
                                 "CODE DYNAMICS program has equations of motion to linearize")
     point = dict(operating_point or {})
+    held = _locked_coordinates(model, locked or ())
+    if held:
+        command = _with_kanes_equations(model, command)
+        for q in held:            # a locked coordinate without a value is held at 0
+            if q not in command.inputs and not any(
+                    _symbol_named(model, name) == q for name in point):
+                point[display_name(q)] = 0.0
     specified_values = {}
     for name in list(point):
         sym = _symbol_named(model, name)
@@ -93,7 +104,7 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     prepared = prepare_command(model, command, backend=backend, infile=infile,
                                overrides=overrides, internal_values=point,
                                constraints=constraints, missing_values=missing_values,
-                               warn_unassigned=False)
+                               warn_unassigned=False, locked=held)
     system = prepared.system
     if not system.nstate:
         raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "
@@ -131,6 +142,7 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     lin.point.update({display_name(x): float(v) for x, v in zip(system.states, x0)})
     lin.point.update({display_name(s): float(v) for s, v in zip(system.specified, s0)})
     lin.outputs = [c.label for cols in system.files for c in cols]
+    lin.locked = [display_name(q) for q in held]
     if on_constraints is not None:
         on_constraints.reduce(lin, t0, x0)
     return lin
@@ -184,6 +196,37 @@ class _ConfigurationConstraints:
         lin.rates = lin.rates[ind]
         lin.states = [self.names[k] for k in ind]
         lin.dependent = [self.names[k] for k in dep]
+
+
+def _locked_coordinates(model, names) -> list:
+    held = []
+    for name in names:
+        sym = _symbol_named(model, name)
+        if sym is None or model.kind_of(sym) not in ("variable", "motionvariable") \
+                or S.base_and_order(sym)[1] != 0:
+            raise AutolevModelError(f"locked: {name!r} is not a coordinate of the model")
+        if sym not in held:
+            held.append(sym)
+    return held
+
+
+def _with_kanes_equations(model, command):
+    """`command` with the speeds' derivatives undefined again where SOLVE(ZERO, U')
+    defined them, so the program solves Kane's equations (which locking can cut down);
+    one object per command, so its numeric system is built once."""
+    kept = model.__dict__.setdefault("_unsolved_commands", {})
+    entry = kept.get(id(command))
+    if entry is not None and entry[0] is command:
+        return entry[1]
+    solved = {S.derivative(u) for u in model.solved_speeds}
+    if command.definitions is not None:
+        definitions = command.definitions
+    else:
+        definitions = model.defs.user_definitions()
+    unsolved = replace(command, definitions={s: e for s, e in definitions.items()
+                                             if s not in solved})
+    kept[id(command)] = (command, unsolved)
+    return unsolved
 
 
 def _symbol_named(model, name: str):
@@ -253,7 +296,9 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
         dmass = grads[nx:nx + n * n].reshape(n, n, nv)
         dforcing = grads[nx + n * n:nx + n * n + n]
         try:
-            lu = scipy.linalg.lu_factor(mass, check_finite=True)
+            with warnings.catch_warnings():     # a singular M is reported below
+                warnings.simplefilter("ignore", scipy.linalg.LinAlgWarning)
+                lu = scipy.linalg.lu_factor(mass, check_finite=True)
         except ValueError:
             raise AutolevModelError("the mass matrix is not finite at the operating point") \
                 from None

@@ -200,12 +200,13 @@ class Prepared:
 def prepare_command(model, command, backend: str = "auto", infile=None, specified=None,
                     overrides=None, internal_values=None, constraints=None,
                     quirks: bool = True, missing_values: str = "refuse",
-                    out_dir=None, warn_unassigned: bool = True) -> Prepared:
+                    out_dir=None, warn_unassigned: bool = True, locked=()) -> Prepared:
     """Build (or reuse) the command's numeric system and take its inputs: INPUT values,
     then the .in file, then `overrides` (in the quantities' units), then
     `internal_values` ({name: value} in SI units and radians); refuses missing values
     before anything is compiled (see run_command).  `warn_unassigned`: warn about
-    specified quantities that will be 0 (not when they are a linearization's inputs)."""
+    specified quantities that will be 0 (not when they are a linearization's inputs).
+    `locked`: coordinates held fixed (see NumericSystem)."""
     if missing_values not in ("refuse", "zero"):
         raise ValueError(f"missing_values: 'refuse' or 'zero', not {missing_values!r}")
     kind = command.kind
@@ -285,9 +286,13 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
     # the numeric system of a command is built once per state of the model (repeated
     # simulate() calls with other inputs reuse its compiled functions)
     cache = model.__dict__.setdefault("_numeric_systems", {})
-    key = (id(command), backend, model._version, len(model.defs.rhs),
-           id(model.kane_equations), len(model.outputs), len(model.encoded), quirks)
-    system = cache.get(key)
+
+    def state_key():
+        return (backend, model._version, model.defs.user_version, id(model.kane_equations),
+                len(model.outputs), len(model.encoded), quirks, tuple(locked))
+    # the command itself is kept with its system: an id() alone may be reused
+    entry = cache.get(state_key())
+    system = entry[1] if entry is not None and entry[0] is command else None
     prepared = []
     if system is None:
         with model.defs.as_of(command.definitions):
@@ -298,9 +303,9 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
                 extra=_solver_expressions(model.defs, kind, equations, unknowns),
                 zero=command.zero if kind == "dynamics" else None,
                 hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
-                before_compiling=lambda s: prepared.append(inputs_of(s)))
+                before_compiling=lambda s: prepared.append(inputs_of(s)), locked=locked)
         cache.clear()
-        cache[key] = system
+        cache[state_key()] = (command, system)      # after the build: it may form KANE
     inputs, kinds, names, extra_constants = prepared[0] if prepared else inputs_of(system)
     build_seconds = time.perf_counter() - build_start
     if system.hidden_in_outputs:

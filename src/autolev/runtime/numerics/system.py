@@ -88,21 +88,29 @@ class NumericSystem:
     `integrate=False` (ALGEBRAIC/NONLINEAR programs) builds no right-hand side; every
     variable is an input then.  `implicit=(equations, unknowns)` (CODE ODE(EQ, x'', ...))
     integrates by solving the equations for the unknown derivatives at each step, in
-    place of Kane's equations.  `solved`: symbols whose values the caller supplies at
-    output time (the unknowns of ALGEBRAIC/NONLINEAR); `extra`: {name: [expressions]}
+    place of Kane's equations.  `locked`: coordinates held where they are (a rigid
+    joint): each must have Q' = U for an independent speed U, which is then 0 with U',
+    its row of Kane's equations dropped, and Q a constant of the program.  `solved`:
+    symbols whose values the caller supplies at output time (the unknowns of
+    ALGEBRAIC/NONLINEAR); `extra`: {name: [expressions]}
     compiled with the outputs' inputs.  `before_compiling(system)`: called once the
     states, parameters and specified quantities are known, before anything is
     compiled (a run checks its inputs there: a refusal then costs no compilation)."""
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, implicit=None, solved=(), extra=None,
-                 zero=None, hidden_in_outputs=(), before_compiling=None):
+                 zero=None, hidden_in_outputs=(), before_compiling=None, locked=()):
         self.model = m = model
         self._zero = zero
         self.backend = backend
         defs = m.defs
         self.aux_fixed = {}
         for u in m.auxiliary_speeds:
+            self.aux_fixed[u] = 0.0
+            self.aux_fixed[S.derivative(u)] = 0.0
+        self.locked = list(locked)
+        self._locked_speeds = [self._speed_of_locked(q) for q in self.locked]
+        for u in self._locked_speeds:
             self.aux_fixed[u] = 0.0
             self.aux_fixed[S.derivative(u)] = 0.0
         rates, unknowns, dyn = (self._integrated(implicit) if integrate else ({}, [], []))
@@ -226,7 +234,7 @@ class NumericSystem:
             if (m.bodies_list or m.particles_list) and m.newtonian_frame is not None:
                 speeds = m.generalized_speeds()[0]
             pending = [u for u in speeds if S.derivative(u) not in defs.rhs]
-            if pending:
+            if pending or self.locked:
                 eqs = m._equations()
                 if set(eqs.speeds) != set(pending):
                     raise AutolevModelError(
@@ -235,6 +243,12 @@ class NumericSystem:
                         + ", ".join(map(str, eqs.speeds)))
                 unknowns = [S.derivative(u) for u in eqs.speeds]
                 rows = self._dynamics_rows(eqs)
+                if self.locked:     # the free speeds' rows of Kane's equations
+                    free = [k for k, u in enumerate(eqs.speeds)
+                            if u not in self._locked_speeds]
+                    formed = list(eqs.rows[:len(eqs.speeds), 0]) if rows is None else rows
+                    rows = [formed[k] for k in free]
+                    unknowns = [unknowns[k] for k in free]
                 if rows is None:
                     mm, f = m.mass_matrix, m.forcing
                 else:
@@ -252,7 +266,7 @@ class NumericSystem:
             changed = False
             for sym, info in sorted(m.info.items(), key=lambda kv: kv[1].index):
                 if info.kind not in ("variable", "motionvariable") or sym in defs.rhs \
-                        or sym in self.aux_fixed or sym in rates:
+                        or sym in self.aux_fixed or sym in rates or sym in self.locked:
                     continue
                 d = S.derivative(sym)
                 if d in defs.rhs:
@@ -263,6 +277,17 @@ class NumericSystem:
                     continue
                 changed = True
         return rates, unknowns, dyn
+
+    def _speed_of_locked(self, q):
+        """U of a locked coordinate Q, from its kinematical equation Q' = U."""
+        m = self.model
+        rate = m.defs.rhs.get(S.derivative(q))
+        independent = m.generalized_speeds()[0] if m.newtonian_frame is not None else []
+        if rate not in independent:
+            raise AutolevModelError(
+                f"{q} cannot be locked: locking needs the kinematical equation {q}' = U "
+                f"for an independent generalized speed U (here {q}' = {rate})")
+        return rate
 
     def _dynamics_rows(self, eqs) -> list | None:
         """The rows of ZERO to solve for the speeds' derivatives, when ZERO (as it

@@ -1,0 +1,350 @@
+"""Parameter studies: one model linearized or simulated at many points, translated and
+compiled once, as one table.
+
+Where the points are evaluated:
+- on this machine's cores (the default): the first point is evaluated here, which
+  builds and compiles everything, then worker processes forked from this one (they
+  inherit the model and its compiled code) take the rest in chunks;
+- on any executor passed as `executor=` (a `concurrent.futures.Executor`, or a Dask
+  `distributed.Client`, whose `submit` is the same): each task carries the model's
+  translation, and each worker process rebuilds the model once and keeps it for the
+  tasks that follow (a cluster's workers share no memory with this process).
+"""
+from __future__ import annotations
+
+import hashlib
+import itertools
+import multiprocessing
+import os
+import pickle
+import sys
+import threading
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import AutolevModelError
+
+STUDIES = ("linearize", "simulate")
+# options a study passes on: Model.linearize's and Model.simulate's keywords
+_OPTIONS = {
+    "linearize": {"inputs", "code", "backend", "infile", "missing_values", "overrides",
+                  "constraints", "dependent", "locked"},
+    "simulate": {"method", "backend", "infile", "specified", "compiled", "constraints",
+                 "quirks", "missing_values", "code"},
+}
+# in an executor's worker: {digest of a model's source: model}, per thread (a model's
+# numeric state is not shared between threads)
+_WORKER_MODELS = threading.local()
+_FORKED: dict = {}             # what a forked worker inherits: the model being swept
+# evaluated here, without workers, when the points left would take less than this
+LOCAL_SECONDS = 2.0
+
+
+def grid(**axes) -> list[dict]:
+    """Every combination of the values given for each name (a full factorial), as the
+    list of points `sweep` takes: grid(V=[3, 4, 5], M_B=[80, 85]) has 6 points."""
+    names = list(axes)
+    values = [list(np.atleast_1d(np.asarray(v, dtype=float))) for v in axes.values()]
+    return [dict(zip(names, (float(x) for x in combo)))
+            for combo in itertools.product(*values)]
+
+
+@dataclass
+class SweepTable:
+    """A study's results: one row per point, columns by name (NumPy arrays)."""
+
+    columns: dict
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.columns[name]
+
+    def __len__(self) -> int:
+        return len(next(iter(self.columns.values()))) if self.columns else 0
+
+    @property
+    def names(self) -> list:
+        return list(self.columns)
+
+    def to_pandas(self):
+        import pandas
+        return pandas.DataFrame(self.columns)
+
+    def to_csv(self) -> str:
+        """The table as CSV text (numbers to full precision)."""
+        lines = [",".join(self.columns)]
+        for k in range(len(self)):
+            lines.append(",".join(_cell(col[k]) for col in self.columns.values()))
+        return "\n".join(lines) + "\n"
+
+
+def sweep(model, points, what: str = "linearize", *, executor=None,
+          workers: int | None = None, collect=None, progress=None, as_frame=None,
+          chunk_size: int | None = None, **options):
+    """Evaluate `model` at every point of `points` and return one table.
+
+    `points`: a list of {name: value}, or {name: sequence} (the k-th point takes the
+    k-th value of each; `grid` makes a full factorial).  `what="linearize"`: each point
+    is an operating point (SI units and radians, as `Model.linearize` takes it); the
+    columns are the point's values, then re_k and im_k for each eigenvalue (in
+    `eigenvalues()` order) and `steady`.  `what="simulate"`: each point gives input
+    values in the quantities' own units (TFINAL too, as `Model.simulate` takes them);
+    the columns are the point's values, then the last row's states and OUTPUT columns.
+    `collect(linearization or result) -> {column: number}` chooses other columns (with
+    an executor it must be a function pickle can send, defined at a module's top level).
+    A point the model refuses (AutolevModelError) gets NaN and its message in the
+    `failure` column.  `options`: passed on to linearize or simulate.
+
+    `executor`: None runs on the local cores (`workers` processes, default all; 1:
+    here, in order); else any object with `submit(fn, *args)` (a concurrent.futures
+    Executor, a Dask Client).  `progress`: a stream for progress lines (default: stderr
+    when the study takes more than a few seconds; False: none).  `as_frame`: a pandas
+    DataFrame (default when pandas is installed) or a SweepTable (False)."""
+    if what not in STUDIES:
+        raise ValueError(f"what: one of {', '.join(STUDIES)}, not {what!r}")
+    unknown = set(options) - _OPTIONS[what]
+    if unknown:
+        raise TypeError(f"sweep(what={what!r}) takes no option {', '.join(sorted(unknown))}")
+    rows = _as_points(points)
+    _check_names(model, rows, what)
+    report = _Progress(len(rows), progress)
+    if not rows:
+        return _table([], [], as_frame)
+    if executor is not None:
+        results = _on_executor(model, executor, what, rows, options, collect,
+                               chunk_size, report)
+    else:
+        results = _on_local_cores(model, workers, what, rows, options, collect,
+                                  chunk_size, report)
+    report.done()
+    return _table(rows, results, as_frame)
+
+
+# -- evaluating one point ------------------------------------------------------------------
+def _evaluate(model, what: str, point: dict, options: dict, collect) -> dict:
+    try:
+        if what == "linearize":
+            found = model.linearize(point, **options)
+        else:
+            from .numerics.run import run_command
+            opts = dict(options)
+            command = model._command_to_run(opts.pop("code", None))
+            # the rows only when `collect` may want them: memory stays flat otherwise
+            found = run_command(model, command, overrides=point,
+                                keep_rows=collect is not None, **opts)
+            if found.failure:
+                return {"failure": found.failure, **(collect or _last_row)(found)}
+    except AutolevModelError as exc:
+        return {"failure": str(exc)}
+    return dict((collect or _default_columns[what])(found))
+
+
+def _eigenvalue_columns(lin) -> dict:
+    columns = {}
+    for k, ev in enumerate(lin.eigenvalues(), 1):
+        columns[f"re{k}"] = float(ev.real)
+        columns[f"im{k}"] = float(ev.imag)
+    columns["steady"] = bool(lin.steady)
+    return columns
+
+
+def _last_row(result) -> dict:
+    columns = {}
+    if len(result.states):
+        columns.update(zip(result.state_names, (float(v) for v in result.states[-1])))
+    for table in result.outputs:
+        if len(table.data):
+            for label, value in zip(table.labels, table.data[-1]):
+                columns.setdefault(label, float(value))
+    return columns
+
+
+_default_columns = {"linearize": _eigenvalue_columns, "simulate": _last_row}
+
+
+def _evaluate_chunk(model, what, chunk, options, collect) -> list:
+    return [_evaluate(model, what, point, options, collect) for point in chunk]
+
+
+# -- where the points are evaluated --------------------------------------------------------
+def _on_local_cores(model, workers, what, rows, options, collect, chunk_size, report):
+    """Here until the first point (which builds and compiles) and some more have shown
+    what a point costs; the rest in forked workers when they would take more than a
+    couple of seconds here."""
+    results = [_evaluate(model, what, rows[0], options, collect)]
+    report.advance(1)
+    count = _worker_count(workers, len(rows) - 1)
+    forkable = count > 1 and "fork" in multiprocessing.get_all_start_methods()
+    start = time.perf_counter()
+    while len(results) < len(rows):
+        per_point = (time.perf_counter() - start) / max(len(results) - 1, 1)
+        if forkable and len(results) > 1 and \
+                per_point * (len(rows) - len(results)) > LOCAL_SECONDS:
+            break
+        results.append(_evaluate(model, what, rows[len(results)], options, collect))
+        report.advance(1)
+    rest = rows[len(results):]
+    if not rest:
+        return results
+    from concurrent.futures import ProcessPoolExecutor
+    chunks = _chunks(rest, chunk_size or max(1, min(64, len(rest) // (4 * count))))
+    _FORKED["model"] = model
+    try:
+        with ProcessPoolExecutor(count, mp_context=multiprocessing.get_context("fork")) as pool:
+            futures = [pool.submit(_forked_chunk, what, chunk, options, collect)
+                       for chunk in chunks]
+            for future, chunk in zip(futures, chunks):
+                results += future.result()
+                report.advance(len(chunk))
+    finally:
+        _FORKED.clear()
+    return results
+
+
+def _forked_chunk(what, chunk, options, collect) -> list:
+    return _evaluate_chunk(_FORKED["model"], what, chunk, options, collect)
+
+
+def _on_executor(model, executor, what, rows, options, collect, chunk_size, report):
+    source = getattr(model, "source", None)
+    if source is None:
+        raise AutolevModelError("this model was not loaded from a file (autolev.load): "
+                                "an executor's workers have nothing to rebuild it from")
+    if model.revision() != source.state:
+        raise AutolevModelError(
+            "the model was changed after it was loaded; an executor's workers rebuild it "
+            "from its file's translation and would not see the change (give the values "
+            "as the study's points or options instead)")
+    payload = pickle.dumps(source)
+    digest = hashlib.sha256(payload).hexdigest()
+    chunks = _chunks(rows, chunk_size or max(1, min(64, len(rows) // 16 or 1)))
+    futures = [executor.submit(_remote_chunk, payload, digest, what, chunk, options, collect)
+               for chunk in chunks]
+    results = []
+    for future, chunk in zip(futures, chunks):
+        results += future.result()
+        report.advance(len(chunk))
+    return results
+
+
+def _remote_chunk(payload: bytes, digest: str, what, chunk, options, collect) -> list:
+    """A task on an executor's worker: the model from its source, rebuilt once per
+    worker process (the digest is checked: the payload is what was sent)."""
+    kept = getattr(_WORKER_MODELS, "kept", None)
+    if kept is not None and kept[0] == digest:
+        model = kept[1]
+    else:
+        if hashlib.sha256(payload).hexdigest() != digest:
+            raise RuntimeError("a sweep task's model does not match its digest")
+        model = pickle.loads(payload).load()
+        _WORKER_MODELS.kept = (digest, model)       # one model per worker thread
+    return _evaluate_chunk(model, what, chunk, options, collect)
+
+
+def _worker_count(workers, n_points: int) -> int:
+    if workers is None:
+        try:
+            workers = len(os.sched_getaffinity(0))
+        except AttributeError:          # not on Linux
+            workers = os.cpu_count() or 1
+    if workers < 1:
+        raise ValueError(f"workers: at least 1, not {workers}")
+    return min(workers, n_points)
+
+
+def _chunks(rows: list, size: int) -> list:
+    return [rows[k:k + size] for k in range(0, len(rows), size)]
+
+
+# -- the points and the table --------------------------------------------------------------
+def _as_points(points) -> list:
+    if isinstance(points, dict):
+        lengths = {len(np.atleast_1d(v)) for v in points.values()}
+        if len(lengths) > 1:
+            raise ValueError("points: every name needs as many values (or use grid() "
+                             "for every combination)")
+        names = list(points)
+        columns = [np.atleast_1d(np.asarray(v, dtype=float)) for v in points.values()]
+        return [dict(zip(names, (float(c[k]) for c in columns)))
+                for k in range(lengths.pop() if lengths else 0)]
+    rows = []
+    for point in points:
+        if not isinstance(point, dict):
+            raise TypeError(f"points: each point is a {{name: value}} dict, not {point!r}")
+        rows.append({str(k): float(v) for k, v in point.items()})
+    return rows
+
+
+def _check_names(model, rows: list, what: str) -> None:
+    from .io import INTEGRATION_PARAMETERS
+    from .numerics.run import names_a_quantity
+    names = {name for row in rows for name in row}
+    unknown = sorted(n for n in names if not names_a_quantity(model, n)
+                     and not (what == "simulate" and n.upper() in INTEGRATION_PARAMETERS))
+    if unknown:
+        raise AutolevModelError("points: the model has no quantity named "
+                                + ", ".join(unknown))
+
+
+def _table(rows: list, results: list, as_frame):
+    names = list(dict.fromkeys(n for row in rows for n in row))
+    names += [n for n in dict.fromkeys(k for r in results for k in r if k != "failure")
+              if n not in names]
+    columns = {}
+    for name in names:
+        values = [r.get(name, row.get(name, np.nan)) for row, r in zip(rows, results)]
+        columns[name] = np.array(values, dtype=bool if all(
+            isinstance(v, (bool, np.bool_)) for v in values) and values else float)
+    if any("failure" in r for r in results):
+        columns["failure"] = np.array([r.get("failure", "") for r in results], dtype=object)
+    table = SweepTable(columns)
+    if as_frame is False:
+        return table
+    try:
+        import pandas  # noqa: F401
+    except ImportError:
+        if as_frame:
+            raise ImportError("as_frame=True needs pandas (pip install pandas)") from None
+        return table
+    return table.to_pandas()
+
+
+def _cell(value) -> str:
+    if isinstance(value, (float, np.floating)):
+        return f"{value:.17g}"
+    text = str(value)
+    return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
+
+
+class _Progress:
+    """Progress lines on a stream, once the study has taken a few seconds: at every
+    5 % of the points, or every 10 s."""
+
+    def __init__(self, total: int, stream):
+        self.total, self.count = total, 0
+        self.stream = None if stream is False else (
+            sys.stderr if stream is None or stream is True else stream)
+        self.start = self.last = time.monotonic()
+        self.step = -1                  # the last 5 % step shown
+
+    def advance(self, n: int) -> None:
+        self.count += n
+        if self.stream is None:
+            return
+        now = time.monotonic()
+        step = self.count * 20 // max(self.total, 1)
+        if now - self.start >= 3 and (step > self.step or now - self.last >= 10):
+            self._line(now, step)
+
+    def done(self) -> None:
+        if self.stream is not None and self.step >= 0 and self.step < 20:
+            self._line(time.monotonic(), 20)
+
+    def _line(self, now: float, step: int) -> None:
+        elapsed = now - self.start
+        left = elapsed * (self.total - self.count) / max(self.count, 1)
+        print(f"  sweep: {self.count}/{self.total} points, {elapsed:.1f} s"
+              + (f", about {left:.0f} s left" if self.count < self.total else ""),
+              file=self.stream, flush=True)
+        self.last, self.step = now, step
