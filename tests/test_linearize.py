@@ -4,6 +4,7 @@ method), and against the classical stability speed of a rolling disc."""
 import math
 
 import numpy as np
+import sympy as sm
 import pytest
 
 import autolev
@@ -312,3 +313,41 @@ def test_only_a_coordinate_with_its_own_speed_can_be_locked(tmp_path):
         model.linearize(locked=["Q2"])
     with pytest.raises(autolev.runtime.AutolevModelError, match="'G' is not a coordinate"):
         model.linearize(locked=["G"])
+
+
+def test_symbolic_a_and_b_by_hand(pendulum):
+    lin = pendulum.linearize_symbolic()
+    g, length, m, q = (pendulum.quantity(n) for n in ("G", "L", "M", "Q"))
+    assert lin.states == ["Q", "U"] and lin.inputs == ["TQ"]
+    assert sm.simplify(lin.A - sm.Matrix([[0, 1], [-g / length * sm.cos(q), 0]])) == \
+        sm.zeros(2, 2)
+    assert sm.simplify(lin.B - sm.Matrix([0, 1 / (m * length ** 2)])) == sm.zeros(2, 1)
+
+
+def test_symbolic_jacobians_agree_with_the_numbers(tmp_path):
+    path = tmp_path / "double.al"
+    path.write_text(DOUBLE_PENDULUM)
+    model = autolev.load(path)
+    point = {"Q1": 0.3, "Q2": -0.5, "U1": 0.7, "U2": 0.2}
+    constants = {"G": 9.81, "L1": 1.5, "L2": 0.7, "M1": 2, "M2": 3}
+    numeric = model.linearize(point)
+    symbolic = model.linearize_symbolic(dict(point, **constants))
+    assert symbolic.states == numeric.states
+    assert np.allclose(np.array(symbolic.A, dtype=float), numeric.A, rtol=0, atol=1e-12)
+    held = model.linearize_symbolic(locked=["Q2"])        # one body: no U1 in its A
+    assert held.states == ["Q1", "U1"] and sm.simplify(held.A[1, 1]) == 0
+    with pytest.raises(autolev.runtime.AutolevModelError, match="at most 2 states"):
+        model.linearize_symbolic(max_states=2)
+
+
+def test_the_command_locks_and_names_constraints(tmp_path, capsys):
+    from autolev.cli import main
+    path = tmp_path / "double.al"
+    path.write_text(DOUBLE_PENDULUM + "LOOP = L1*SIN(Q1)\n")
+    assert main(["linearize", str(path), "--lock", "Q2"]) == 0
+    assert capsys.readouterr().out.startswith("2 states (Q1, U1)")
+    assert main(["linearize", str(path), "--constraint", "NOPE"]) == 2
+    assert "--constraint NOPE: the model has no quantity" in capsys.readouterr().err
+    # L1 sin(Q1) = 0 fixes Q1 (at 0): the state is Q2 and the two speeds
+    assert main(["linearize", str(path), "--constraint", "LOOP", "--dependent", "Q1"]) == 0
+    assert capsys.readouterr().out.startswith("3 states (Q2, U1, U2)")

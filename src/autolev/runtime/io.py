@@ -182,6 +182,18 @@ class IOMixin:
                 units=dict(self.unit_of)))
         return kept[1]
 
+    def linearize_symbolic(self, point=None, inputs=None, *, code=None, locked=None,
+                           max_states: int | None = None):
+        """A and B as sympy matrices in the model's symbols, with `point` ({name:
+        value}) substituted; refused above `max_states` states (default 12: beyond,
+        the expressions outgrow reading).  See Model.linearize for the rest."""
+        from .numerics.linearize import MAX_SYMBOLIC_STATES, linearize_symbolic
+        command = self.code_command(code) if code is not None else next(
+            (c for c in self.code_commands if c.kind == "dynamics"), None) \
+            or self._plain_dynamics()
+        return linearize_symbolic(self, command, point, inputs, locked,
+                                  max_states or MAX_SYMBOLIC_STATES)
+
     def sweep(self, points, what: str = "linearize", **options):
         """A parameter study: the model linearized (what="linearize") or simulated
         (what="simulate") at every point, translated and compiled once, on the local

@@ -318,14 +318,14 @@ def _cell(value) -> str:
 
 
 class _Progress:
-    """Progress lines on a stream, once the study has taken a few seconds: at every
-    5 % of the points, or every 10 s."""
+    """Progress lines on a stream once the points after the first (which builds and
+    compiles) have taken a few seconds: at every 5 % of the points, or every 10 s."""
 
     def __init__(self, total: int, stream):
         self.total, self.count = total, 0
         self.stream = None if stream is False else (
             sys.stderr if stream is None or stream is True else stream)
-        self.start = self.last = time.monotonic()
+        self.start = self.last = None
         self.step = -1                  # the last 5 % step shown
 
     def advance(self, n: int) -> None:
@@ -333,6 +333,10 @@ class _Progress:
         if self.stream is None:
             return
         now = time.monotonic()
+        if self.start is None:          # the clock starts once the first point is done
+            self.start = self.last = now
+            self.first = self.count
+            return
         step = self.count * 20 // max(self.total, 1)
         if now - self.start >= 3 and (step > self.step or now - self.last >= 10):
             self._line(now, step)
@@ -343,7 +347,7 @@ class _Progress:
 
     def _line(self, now: float, step: int) -> None:
         elapsed = now - self.start
-        left = elapsed * (self.total - self.count) / max(self.count, 1)
+        left = elapsed * (self.total - self.count) / max(self.count - self.first, 1)
         print(f"  sweep: {self.count}/{self.total} points, {elapsed:.1f} s"
               + (f", about {left:.0f} s left" if self.count < self.total else ""),
               file=self.stream, flush=True)

@@ -24,13 +24,14 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 import scipy.linalg
+import sympy as sm
 
 from .. import symbols as S
 from ..errors import AutolevModelError
 from . import codegen
 from .inputs import display_name
 from .run import prepare_command
-from .system import compile_program
+from .system import NumericSystem, compile_program
 
 
 @dataclass
@@ -146,6 +147,67 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     if on_constraints is not None:
         on_constraints.reduce(lin, t0, x0)
     return lin
+
+
+@dataclass
+class SymbolicLinearization:
+    """A and B as sympy matrices in the model's symbols (x' = f(x, s): A = df/dx,
+    B = df/ds), with the names of their rows and columns."""
+
+    A: sm.Matrix
+    B: sm.Matrix
+    states: list
+    inputs: list
+    locked: list = field(default_factory=list)
+
+
+# beyond this many states symbolic Jacobians grow past what anyone reads or simplifies
+MAX_SYMBOLIC_STATES = 12
+
+
+def linearize_symbolic(model, command, point=None, inputs=None, locked=None,
+                       max_states: int = MAX_SYMBOLIC_STATES) -> SymbolicLinearization:
+    """A and B of `command`'s equations of motion as expressions: every definition and
+    Z expanded, Kane's accelerations solved by sympy's LU (for small models: more than
+    `max_states` states is refused).  `point`: {name: value} substituted (SI units and
+    radians); the rest stay symbols.  Dependent coordinates stay in the state."""
+    if command.kind != "dynamics":
+        raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
+                                "CODE DYNAMICS program has equations of motion to linearize")
+    held = _locked_coordinates(model, locked or ())
+    if held:
+        command = _with_kanes_equations(model, command)
+    values = {}
+    for name, value in (point or {}).items():
+        sym = _symbol_named(model, name)
+        if sym is None:
+            raise AutolevModelError(f"point: the model has no quantity named {name!r}")
+        values[sym] = sm.nsimplify(value) if isinstance(value, int) else value
+    with model.defs.as_of(command.definitions):
+        system = NumericSystem(model, backend="python", zero=command.zero, locked=held)
+        if system.nstate > max_states:
+            raise AutolevModelError(
+                f"{system.nstate} states: symbolic A and B are for models of at most "
+                f"{max_states} states (Model.linearize gives them as numbers at a point)")
+        chosen = _chosen_inputs(model, system, inputs)
+        explicit = model.defs.explicit
+        nx, n = system.nstate, len(system.implicit_unknowns)
+        rates = [explicit(e) for e in system.rhs_exprs[:nx]]
+        if n:
+            dyn = [explicit(e) for e in system.rhs_exprs[nx:nx + n * n + n]]
+            mass, forcing = sm.Matrix(n, n, dyn[:n * n]), sm.Matrix(dyn[n * n:])
+            for pos, a in zip(system._unknown_pos, mass.LUsolve(forcing)):
+                rates[pos] = a
+    fixed = {k: sm.S.Zero for k in system.aux_fixed}
+    f = sm.Matrix(rates).xreplace(fixed)
+    a_matrix = f.jacobian(system.states)
+    b_matrix = f.jacobian(chosen) if chosen else sm.zeros(len(f), 0)
+    if values:
+        a_matrix, b_matrix = a_matrix.xreplace(values), b_matrix.xreplace(values)
+    return SymbolicLinearization(a_matrix, b_matrix,
+                                 [display_name(x) for x in system.states],
+                                 [display_name(c) for c in chosen],
+                                 [display_name(q) for q in held])
 
 
 class _ConfigurationConstraints:
