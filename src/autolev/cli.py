@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import os
@@ -155,7 +156,6 @@ def _load_for_run(path: Path):
 def cmd_run(ns: argparse.Namespace) -> int:
     """Translate, build and run the model's CODE commands; write Autolev's files."""
     import time
-    import warnings
 
     from .runtime.errors import AutolevModelError
     from .runtime.io import CodeCommand
@@ -163,7 +163,6 @@ def cmd_run(ns: argparse.Namespace) -> int:
     from .runtime.numerics.files import safe_stem
     from .runtime.numerics.run import names_a_quantity, run_command
 
-    warnings.showwarning = _print_warning
     path = Path(ns.file)
     if ns.method is not None and ns.method not in METHODS:
         print(f"autolev run: unknown --method {ns.method} (one of {', '.join(METHODS)})",
@@ -297,13 +296,11 @@ def _name_values(items, option: str) -> dict | None:
 
 def cmd_linearize(ns: argparse.Namespace) -> int:
     """Linearize a model's CODE DYNAMICS at an operating point; print the eigenvalues."""
-    import warnings
 
     from .runtime.errors import AutolevModelError
     from .runtime.numerics.files import safe_stem
     from .runtime.numerics.linearize import eigenvalue_table
 
-    warnings.showwarning = _print_warning
     path = Path(ns.file)
     overrides = _name_values(ns.set, "--set")
     at = _name_values(ns.at, "--at")
@@ -705,6 +702,19 @@ def build_parser() -> argparse.ArgumentParser:
     return ap
 
 
+@contextlib.contextmanager
+def _warnings_as_notes():
+    """Warnings printed as one-line notes while a command runs (not for the process:
+    a caller of main() keeps its own warning display)."""
+    import warnings
+    shown = warnings.showwarning
+    warnings.showwarning = _print_warning
+    try:
+        yield
+    finally:
+        warnings.showwarning = shown
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = build_parser()
     ns = ap.parse_args(argv)
@@ -712,7 +722,8 @@ def main(argv: list[str] | None = None) -> int:
         ap.print_help()
         return 2
     try:
-        return ns.func(ns)
+        with _warnings_as_notes():
+            return ns.func(ns)
     except AutolevSyntaxError as exc:
         print(exc, file=sys.stderr)
         return 1

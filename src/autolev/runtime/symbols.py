@@ -8,6 +8,7 @@ wrote it, and `dt(Q1) == Q1'` holds everywhere.
 """
 from __future__ import annotations
 
+import functools
 
 import sympy as sm
 
@@ -19,8 +20,6 @@ class _Time(sm.Symbol):
 #: Autolev's T: the independent variable.
 TIME = _Time("t", real=True)
 
-# symbol -> (base symbol, derivative order); base -> max order known
-_BASE: dict[sm.Symbol, tuple[sm.Symbol, int]] = {}
 
 
 class Z(sm.Dummy):
@@ -61,16 +60,22 @@ def derivative(sym: sm.Symbol, n: int = 1) -> sm.Symbol:
     """The symbol of the n-th time derivative of `sym` (`Q1` -> `Q1'`)."""
     if n == 0:
         return sym
-    base, order = _BASE.get(sym, (sym, 0))
-    target = order + n
-    d = sm.Symbol(base.name + "'" * target, **_assumptions(base))
-    _BASE[d] = (base, target)
-    return d
+    base, order = base_and_order(sym)
+    return sm.Symbol(base.name + "'" * (order + n), **_assumptions(base))
 
 
+@functools.lru_cache(maxsize=8192)
 def base_and_order(sym: sm.Symbol) -> tuple[sm.Symbol, int]:
-    """(`Q1`, 2) for `Q1''`; (`x`, 0) for any symbol that is not a derivative."""
-    return _BASE.get(sym, (sym, 0))
+    """(`Q1`, 2) for `Q1''`; (`x`, 0) for any symbol that is not a derivative.  Read
+    from the name (no Autolev name has a quote; a derivative symbol has the base's
+    assumptions), so that no registry of every derivative made grows with the process."""
+    if type(sym) is not sm.Symbol:
+        return sym, 0
+    name = sym.name
+    base = name.rstrip("'")
+    if base == name or not base:
+        return sym, 0
+    return sm.Symbol(base, **_assumptions(sym)), len(name) - len(base)
 
 
 def derivatives(*syms: sm.Symbol, order: int = 1) -> tuple[sm.Symbol, ...] | sm.Symbol:
