@@ -161,3 +161,14 @@ def test_parse_and_translate_agree_on_all_constructs_file():
         autolev.transpile(text, "all_constructs.al")
     except autolev.AutolevTranslationError as exc:
         assert all(d.line >= 1 for d in exc.diagnostics)
+
+
+def test_the_module_imports_sympy_only_when_it_uses_it():
+    plain = autolev.transpile("CONSTANTS A, B\nC = A*B\n")
+    assert "import sympy" not in plain and "sm." not in plain
+    matrix = autolev.transpile("CONSTANTS A, B\nM = [A, B; B, A]\nD = DET(M)\n")
+    assert "import sympy as sm\n" in matrix and "sm.Matrix" in matrix
+    for text in (plain, matrix):         # both build their model
+        namespace: dict = {}
+        exec(compile(text, "<generated>", "exec"), namespace)
+        assert namespace["model"] is not None

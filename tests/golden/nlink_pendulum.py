@@ -2,8 +2,6 @@
 
 Importing this module builds the model; running it performs the model's
 CODE commands with its INPUT values."""
-import sympy as sm
-
 import autolev.runtime as al
 
 if __name__ == "__main__":

@@ -10,6 +10,7 @@ Statement families and functions live in `statements.py` and `functions.py`.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -28,6 +29,9 @@ MAX_CALL_NESTING = 32
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
 
 SCALAR_TYPES = ("scalar",)
+# the generated module imports sympy only when some line uses it
+_SYMPY_IMPORT = "import sympy as sm"
+_USES_SYMPY = re.compile(r"\bsm\.")
 # the NameTable's spaces as Autolev's namespaces (derivative names are not Autolev's)
 _NAMESPACE = {"scalar": "quantity", "value": "quantity", "entity": "entity",
               "vector": "vector"}
@@ -298,7 +302,7 @@ class Translator:
         self.emit(f'"""Translated from {docstring(_basename(src))} by autolev.\n\n'
                   "Importing this module builds the model; running it performs the model's\n"
                   'CODE commands with its INPUT values."""')
-        self.emit("import sympy as sm")
+        self.emit(_SYMPY_IMPORT)
         self.emit("")
         self.emit("import autolev.runtime as al")
         self.emit("")
@@ -315,8 +319,13 @@ class Translator:
         self.emit("")
 
     def _render(self) -> tuple[str, dict[int, Span]]:
+        lines = self.lines
+        if not any(_USES_SYMPY.search(line.code) for line in lines
+                   if line.code != _SYMPY_IMPORT):     # the header's import, unused
+            k = next(i for i, line in enumerate(lines) if line.code == _SYMPY_IMPORT)
+            lines = lines[:k] + lines[k + 2:]
         out, line_map = [], {}
-        for n, line in enumerate(self.lines, 1):
+        for n, line in enumerate(lines, 1):
             out.append(line.code)
             if line.span is not None:
                 line_map[n] = line.span
