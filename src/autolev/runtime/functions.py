@@ -313,41 +313,6 @@ def epsilon(x, tol):
     return _map(x, clean)
 
 
-class Int(sm.Function):
-    """INT(x) of Autolev: x truncated toward zero.  One node (not sign(x)*floor(|x|),
-    which holds x twice and doubles the tree at every level of nesting)."""
-
-    @classmethod
-    def eval(cls, x):
-        return _integer_of(x, _truncated)
-
-    def _eval_is_integer(self):
-        return self.args[0].is_extended_real
-
-    def _eval_is_real(self):
-        return self.args[0].is_extended_real
-
-    def fdiff(self, argindex=1):
-        return sm.S.Zero
-
-
-class Round(sm.Function):
-    """ROUND(x) of Autolev: the nearest integer, halves away from zero (C's round)."""
-
-    @classmethod
-    def eval(cls, x):
-        return _integer_of(x, _rounded)
-
-    def _eval_is_integer(self):
-        return self.args[0].is_extended_real
-
-    def _eval_is_real(self):
-        return self.args[0].is_extended_real
-
-    def fdiff(self, argindex=1):
-        return sm.S.Zero
-
-
 def _truncated(q) -> int:
     return int(q)
 
@@ -357,11 +322,42 @@ def _rounded(q) -> int:
     return t + (1 if q > 0 else -1) if abs(q - t) >= sm.Rational(1, 2) else t
 
 
+class _IntegerValued(sm.Function):
+    """A function of Autolev's whose value is an integer near x (`_integer` says
+    which): one node, not sign(x)*floor(|x|), which holds x twice and doubles the tree
+    at every level of nesting.  Its derivative is 0."""
+
+    @classmethod
+    def eval(cls, x):
+        return _integer_of(x, cls._integer)
+
+    def _eval_is_integer(self):
+        return self.args[0].is_extended_real
+
+    def _eval_is_real(self):
+        return self.args[0].is_extended_real
+
+    def fdiff(self, argindex=1):
+        return sm.S.Zero
+
+
+class Int(_IntegerValued):
+    """INT(x) of Autolev: x truncated toward zero."""
+
+    _integer = staticmethod(_truncated)
+
+
+class Round(_IntegerValued):
+    """ROUND(x) of Autolev: the nearest integer, halves away from zero (C's round)."""
+
+    _integer = staticmethod(_rounded)
+
+
 def _integer_of(x, integer):
     """INT or ROUND of a number: exact for a rational or a decimal, the double-precision
     value otherwise (as Autolev computed it; an exact evaluation of COS(SINH(1E7))
     needs millions of digits), None (kept as it is) for a symbol, an infinity or nan."""
-    if isinstance(x, (Int, Round)):
+    if isinstance(x, _IntegerValued):
         return x
     if not x.is_number or x.is_extended_real is False:
         return None
