@@ -169,11 +169,19 @@ class IOMixin:
             command = self.code_commands[0]
         return command if command is not None else self._plain_dynamics()
 
+    def _command_to_linearize(self, code=None) -> "CodeCommand":
+        """The CODE command `code` names, else the first CODE DYNAMICS, else the model's
+        equations as they stand."""
+        if code is not None:
+            return self.code_command(code)
+        return next((c for c in self.code_commands if c.kind == "dynamics"),
+                    None) or self._plain_dynamics()
+
     def _plain_dynamics(self) -> "CodeCommand":
         """CODE DYNAMICS of the model as it stands (for a model that writes none); the
         same object while the model is unchanged, so its numeric system is reused."""
-        key = (self._version, self.defs.user_version, len(self.outputs), len(self.encoded),
-               tuple(self.inputs.items()), tuple(self.unit_of.items()))
+        key = (self.revision(), len(self.outputs), len(self.encoded),
+               tuple(self.unit_of.items()))
         kept = self.__dict__.get("_plain_command")
         if kept is None or kept[0] != key:
             kept = self._plain_command = (key, CodeCommand(
@@ -188,11 +196,8 @@ class IOMixin:
         value}) substituted; refused above `max_states` states (default 12: beyond,
         the expressions outgrow reading).  See Model.linearize for the rest."""
         from .numerics.linearize import MAX_SYMBOLIC_STATES, linearize_symbolic
-        command = self.code_command(code) if code is not None else next(
-            (c for c in self.code_commands if c.kind == "dynamics"), None) \
-            or self._plain_dynamics()
-        return linearize_symbolic(self, command, point, inputs, locked,
-                                  max_states or MAX_SYMBOLIC_STATES)
+        return linearize_symbolic(self, self._command_to_linearize(code), point, inputs,
+                                  locked, max_states or MAX_SYMBOLIC_STATES)
 
     def sweep(self, points, what: str = "linearize", **options):
         """A parameter study: the model linearized (what="linearize") or simulated
@@ -220,12 +225,7 @@ class IOMixin:
         `locked`: names of coordinates held at their values (with Q' = U: U = U' = 0,
         U's row of Kane's equations dropped), as a rigid joint would."""
         from .numerics.linearize import linearize
-        if code is not None:
-            command = self.code_command(code)
-        else:       # the first CODE DYNAMICS, else the model's equations as they stand
-            command = next((c for c in self.code_commands if c.kind == "dynamics"),
-                           None) or self._plain_dynamics()
-        return linearize(self, command, operating_point, inputs,
+        return linearize(self, self._command_to_linearize(code), operating_point, inputs,
                          backend=backend, infile=infile, missing_values=missing_values,
                          overrides=overrides, constraints=constraints, dependent=dependent,
                          locked=locked)

@@ -86,17 +86,12 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     (default: chosen where G is best conditioned).  `locked`: names of coordinates held
     at their values (a rigid joint: Q' = U, with U and U' then 0 and U's row of Kane's
     equations dropped); the state leaves them out."""
-    if command.kind != "dynamics":
-        raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
-                                "CODE DYNAMICS program has equations of motion to linearize")
+    command, held = _program_to_linearize(model, command, locked)
     point = dict(operating_point or {})
-    held = _locked_coordinates(model, locked or ())
-    if held:
-        command = _with_kanes_equations(model, command)
-        for q in held:            # a locked coordinate without a value is held at 0
-            if q not in command.inputs and not any(
-                    _symbol_named(model, name) == q for name in point):
-                point[display_name(q)] = 0.0
+    for q in held:                # a locked coordinate without a value is held at 0
+        if q not in command.inputs and not any(
+                _symbol_named(model, name) == q for name in point):
+            point[display_name(q)] = 0.0
     specified_values = {}
     for name in list(point):
         sym = _symbol_named(model, name)
@@ -171,12 +166,7 @@ def linearize_symbolic(model, command, point=None, inputs=None, locked=None,
     Z expanded, Kane's accelerations solved by sympy's LU (for small models: more than
     `max_states` states is refused).  `point`: {name: value} substituted (SI units and
     radians); the rest stay symbols.  Dependent coordinates stay in the state."""
-    if command.kind != "dynamics":
-        raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
-                                "CODE DYNAMICS program has equations of motion to linearize")
-    held = _locked_coordinates(model, locked or ())
-    if held:
-        command = _with_kanes_equations(model, command)
+    command, held = _program_to_linearize(model, command, locked)
     values = {}
     for name, value in (point or {}).items():
         sym = _symbol_named(model, name)
@@ -258,6 +248,16 @@ class _ConfigurationConstraints:
         lin.rates = lin.rates[ind]
         lin.states = [self.names[k] for k in ind]
         lin.dependent = [self.names[k] for k in dep]
+
+
+def _program_to_linearize(model, command, locked) -> tuple:
+    """(the command whose equations are linearized, the locked coordinates): a CODE
+    DYNAMICS, solving Kane's equations where coordinates are locked."""
+    if command.kind != "dynamics":
+        raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
+                                "CODE DYNAMICS program has equations of motion to linearize")
+    held = _locked_coordinates(model, locked or ())
+    return (_with_kanes_equations(model, command) if held else command), held
 
 
 def _locked_coordinates(model, names) -> list:
