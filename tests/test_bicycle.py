@@ -7,16 +7,13 @@ import warnings
 
 import numpy as np
 import pytest
-from scipy.optimize import brentq
 
 import autolev
+from bicycle_benchmark import (CAPSIZE, CAPSIZE_SPEED, CASTOR, REAR_RADIUS, WEAVE,
+                               WEAVE_SPEED, critical_speeds, lean_and_steer)
 from conftest import ROOT
 
 MODEL = ROOT / "autolev_examples" / "whipple_benchmark.al"
-REAR_RADIUS = 0.3
-WEAVE = complex(-0.775341882195845, 4.46486771378823)
-CAPSIZE = -0.322866429004087
-CASTOR = -14.0783896927982
 
 
 @pytest.fixture(scope="module")
@@ -29,13 +26,6 @@ def bicycle():
 def upright(model, speed):
     # the rear wheel turns about its axle (to the right) at -v/r to roll forward at v
     return model.linearize({"Q5": math.pi / 10, "U6": -speed / REAR_RADIUS})
-
-
-def lean_and_steer(lin) -> np.ndarray:
-    """The eigenvalues of roll, steer and their rates: the other coordinates are
-    ignorable (position, yaw, wheel angles) or dependent (pitch), their eigenvalues 0."""
-    idx = [lin.states.index(n) for n in ("Q4", "Q7", "U4", "U7")]
-    return np.linalg.eigvals(lin.A[np.ix_(idx, idx)])
 
 
 def test_the_whipple_bicycle_gives_the_benchmark_eigenvalues(bicycle):
@@ -55,28 +45,6 @@ def test_weave_and_capsize_speeds_from_a_sweep_and_root_finding(bicycle, tmp_pat
     assert main(["linearize", str(MODEL), "--at", f"Q5={math.pi / 10!r}",
                  "--sweep", "U6=-10:-25:16", "--out", str(tmp_path)]) == 0
     rows = (tmp_path / "whipple_benchmark-sweep.csv").read_text().splitlines()[1:]
-    speeds, weave_re, capsize_re = [], [], []
-    for row in rows:
-        cells = [float(c) for c in row.split(",")]
-        ev = np.array(cells[1::2]) + 1j * np.array(cells[2::2])
-        speeds.append(-cells[0] * REAR_RADIUS)
-        weave_re.append(max(ev[np.abs(ev.imag) > 1e-9].real))
-        real = ev[np.abs(ev.imag) <= 1e-9].real
-        capsize_re.append(max(real[np.abs(real) > 1e-9]))      # not the zeros
-
-    def bracket(values):
-        k = next(i for i in range(len(values) - 1) if values[i] * values[i + 1] < 0)
-        return speeds[k], speeds[k + 1]
-
-    def weave(v):
-        ev = lean_and_steer(upright(bicycle, v))
-        return max(ev[np.abs(ev.imag) > 1e-9].real)
-
-    def capsize(v):
-        ev = lean_and_steer(upright(bicycle, v))
-        return max(ev[np.abs(ev.imag) <= 1e-9].real)
-
-    assert brentq(weave, *bracket(weave_re), xtol=1e-13) == pytest.approx(
-        4.29238253634111, abs=1e-9)
-    assert brentq(capsize, *bracket(capsize_re), xtol=1e-13) == pytest.approx(
-        6.02426201538837, abs=1e-9)
+    weave, capsize = critical_speeds(rows, lambda v: upright(bicycle, v))
+    assert weave == pytest.approx(WEAVE_SPEED, abs=1e-9)
+    assert capsize == pytest.approx(CAPSIZE_SPEED, abs=1e-9)

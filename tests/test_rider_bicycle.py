@@ -10,18 +10,15 @@ import warnings
 
 import numpy as np
 import pytest
-from scipy.optimize import brentq
 
 import autolev
+from bicycle_benchmark import (CAPSIZE, CAPSIZE_SPEED, CASTOR, REAR_RADIUS, WEAVE,
+                               WEAVE_SPEED, critical_speeds, lean_and_steer)
 from conftest import ROOT
 
 pytestmark = pytest.mark.corpus
 
 RIDER_MODEL = "moorepants+RiderModel/autolev/WhipplePlusRiderLean.AL"
-REAR_RADIUS = 0.3
-WEAVE = complex(-0.775341882195845, 4.46486771378823)
-CAPSIZE = -0.322866429004087
-CASTOR = -14.0783896927982
 # the benchmark's parameters in the model's names (its INPUT lines are commented out)
 BENCHMARK = dict(W=1.02, C=0.08, LAMBDA=math.pi / 10, G=9.81, RR=0.3, M_R=2, IRXX=0.0603,
                  IRYY=0.12, XB=0.3, ZB=-0.9, M_B=85, IBXX=9.2, IBYY=11, IBZZ=2.8,
@@ -45,11 +42,6 @@ def upright(model, speed, **changes):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")        # V: declared, used by no equation
         return model.linearize(point, locked=["Q9"])
-
-
-def lean_and_steer(lin) -> np.ndarray:
-    idx = [lin.states.index(n) for n in ("Q4", "Q7", "U4", "U7")]
-    return np.linalg.eigvals(lin.A[np.ix_(idx, idx)])
 
 
 def test_the_massless_rider_locked_is_the_benchmark_bicycle(rider_bicycle):
@@ -81,32 +73,11 @@ def test_weave_and_capsize_speeds_from_the_command(rider_bicycle, corpus, tmp_pa
                      "--sweep", "U6=-10:-25:16", "--out", str(tmp_path)]) == 0
     lines = (tmp_path / "WhipplePlusRiderLean-sweep.csv").read_text().splitlines()
     assert lines[0].startswith("U6,re1,im1,")
-    speeds, weave_re, capsize_re = [], [], []
-    for row in lines[1:]:
-        cells = [float(c) for c in row.split(",")]
-        ev = np.array(cells[1::2]) + 1j * np.array(cells[2::2])
-        assert len(ev) == 10                    # pitch Q5 reduced away by PZERO = 0
-        speeds.append(-cells[0] * REAR_RADIUS)
-        weave_re.append(max(ev[np.abs(ev.imag) > 1e-9].real))
-        real = ev[np.abs(ev.imag) <= 1e-9].real
-        capsize_re.append(max(real[np.abs(real) > 1e-9]))
-
-    def bracket(values):
-        k = next(i for i in range(len(values) - 1) if values[i] * values[i + 1] < 0)
-        return speeds[k], speeds[k + 1]
-
-    def weave(v):
-        ev = lean_and_steer(upright(rider_bicycle, v))
-        return max(ev[np.abs(ev.imag) > 1e-9].real)
-
-    def capsize(v):
-        ev = lean_and_steer(upright(rider_bicycle, v))
-        return max(ev[np.abs(ev.imag) <= 1e-9].real)
-
-    assert brentq(weave, *bracket(weave_re), xtol=1e-13) == pytest.approx(
-        4.29238253634111, abs=1e-9)
-    assert brentq(capsize, *bracket(capsize_re), xtol=1e-13) == pytest.approx(
-        6.02426201538837, abs=1e-9)
+    for row in lines[1:]:                       # pitch Q5 reduced away by PZERO = 0
+        assert len(row.split(",")) == 1 + 2 * 10
+    weave, capsize = critical_speeds(lines[1:], lambda v: upright(rider_bicycle, v))
+    assert weave == pytest.approx(WEAVE_SPEED, abs=1e-9)
+    assert capsize == pytest.approx(CAPSIZE_SPEED, abs=1e-9)
 
 
 def test_a_locked_rider_of_mass_is_a_heavier_rear_frame(rider_bicycle):
