@@ -4,7 +4,8 @@
     model = al.Model("pendulum")
 """
 from .errors import MissingValues
-from .model import KaneEquations, Model
+from .kane import KaneEquations
+from .model import Model
 from .point import Body, Particle, Point
 from .symbols import TIME, Z, derivative, derivatives
 from .vector import AutolevModelError, Dyadic, Frame, Vector, outer

@@ -151,7 +151,7 @@ class AlgebraMixin:
                  if S.base_and_order(u)[1] == 1 and u not in self.defs.rhs]
         if not bases or self.newtonian_frame is None:
             return
-        speeds = set(self._generalized_speeds()[0])
+        speeds = set(self.generalized_speeds(complete=False)[0])
         self.solved_speeds.update(b for b in bases if b in speeds)
 
     def _dynamical_rows(self, eqs: list, unknowns: list) -> list:

@@ -38,7 +38,7 @@ def cross(a, b):
 
 def mag(v: Vector):
     """MAG(V>), named by a Z (as Autolev's Z12 = Z11^0.5) when not small."""
-    defs = v._defs()
+    defs = v.definitions()
     square = v.dot(v)
     if defs is None:
         return sm.sqrt(square)
@@ -48,7 +48,7 @@ def mag(v: Vector):
 def unitvec(v: Vector) -> Vector:
     """UNITVEC(V>): its measure numbers over its magnitude, each named by a Z (the
     derivatives of unnamed quotients of square roots grow without bound)."""
-    defs = v._defs()
+    defs = v.definitions()
     if defs is None:
         return v / mag(v)
     return (v * defs.zify(1 / mag(v))).zified()

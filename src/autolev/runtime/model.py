@@ -6,41 +6,18 @@ the constraints, and forms Kane's equations with Autolev's conventions.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import sympy as sm
 
 from . import symbols as S
 from .algebra import AlgebraMixin
 from .io import IOMixin
 from .calculus import Definitions
+from . import kane
+from .kane import KaneEquations, SymbolInfo
 from .linalg import coefficients, solve_linear
 from .point import Body, Particle, Point
 from .vector import (AutolevModelError, Dyadic, Frame, Vector, _vector, body_fixed,
                      euler_parameter_rates, space_fixed)
-
-
-@dataclass
-class SymbolInfo:
-    kind: str            # constant variable motionvariable specified imaginary
-    order: int           # derivatives declared
-    index: int           # declaration order
-
-
-@dataclass
-class KaneEquations:
-    """Kane's dynamical equations, one row per independent (then auxiliary) speed."""
-
-    speeds: list          # independent speeds (rows), in order
-    auxiliary: list       # auxiliary speeds (extra rows)
-    dependent: list       # dependent speeds (defined by the constraints)
-    fr: sm.Matrix
-    frstar: sm.Matrix
-    unknowns: list = field(default_factory=list)   # KANE(F1, ...): solved from the aux rows
-
-    @property
-    def rows(self) -> sm.Matrix:
-        return self.fr + self.frstar
 
 
 class Model(AlgebraMixin, IOMixin):
@@ -127,8 +104,14 @@ class Model(AlgebraMixin, IOMixin):
         without the marks)."""
         return self._named("vector", name.rstrip(">"))
 
-    def _changed(self) -> None:
+    def note_change(self) -> None:
+        """Called by the model's frames and points when they change."""
         self._version += 1
+
+    @property
+    def version(self) -> int:
+        """Counts the changes to the model's frames, points, loads and kinematics."""
+        return self._version
 
     def revision(self) -> tuple:
         """A value that changes whenever the model is changed (a statement, an INPUT,
@@ -136,12 +119,12 @@ class Model(AlgebraMixin, IOMixin):
         return (self._version, self.defs.user_version, tuple(self.inputs.items()),
                 len(self.code_commands))
 
-    def _orientation_changed(self) -> None:
+    def note_orientation_change(self) -> None:
         for f in self.frames_by_name.values():
-            f._dcm_cache.clear()
+            f.forget_derived()
         for p in self.points_by_name.values():
-            p._acc_derived.clear()
-        self._changed()
+            p.forget_derived()
+        self.note_change()
 
     # -- declarations ------------------------------------------------------------------
     def newtonian(self, name: str) -> Frame:
@@ -244,10 +227,10 @@ class Model(AlgebraMixin, IOMixin):
             # the speed; it is solved for the rates once they can all be determined
             self._kinematics_pending[sym] = value
             self._resolve_kinematics()
-            self._changed()
+            self.note_change()
             return
         self.defs.define(sym, value)
-        self._changed()
+        self.note_change()
 
     def _rates_in(self, value) -> set:
         """Undefined first derivatives of variables that appear in value."""
@@ -356,7 +339,7 @@ class Model(AlgebraMixin, IOMixin):
     def kindiffs(self, parent: Frame, child: Frame, kind: str, *coords) -> None:
         """KINDIFFS(A, B, BODYijk|SPACEijk|EULER, q...): define the q' so that the
         rotation sequence's angular velocity equals the assigned W_B_A>."""
-        if parent not in child._w_user:
+        if not child.ang_vel_assigned(parent):
             raise AutolevModelError(f"KINDIFFS needs W_{child.name}_{parent.name}> "
                                     "assigned first (in terms of the speeds)")
         kind = kind.lower()
@@ -401,12 +384,12 @@ class Model(AlgebraMixin, IOMixin):
 
     def add_force(self, point: Point, value) -> None:
         self.forces[point] = self.forces.get(point, Vector()) + _vector(value)
-        self._changed()
+        self.note_change()
 
     def set_force(self, point: Point, value) -> None:
         """FORCE_P> = F>"""
         self.forces[point] = _vector(value)
-        self._changed()
+        self.note_change()
 
     def force_on(self, point: Point) -> Vector:
         """FORCE_P>: the resultant force applied to P so far."""
@@ -423,11 +406,11 @@ class Model(AlgebraMixin, IOMixin):
 
     def add_torque(self, frame: Frame, value) -> None:
         self.torques[frame] = self.torques.get(frame, Vector()) + _vector(value)
-        self._changed()
+        self.note_change()
 
     def set_torque(self, frame: Frame, value) -> None:
         self.torques[frame] = _vector(value)
-        self._changed()
+        self.note_change()
 
     def torque_on(self, frame: Frame) -> Vector:
         return self.torques.get(frame, Vector())
@@ -482,154 +465,31 @@ class Model(AlgebraMixin, IOMixin):
             raise AutolevModelError("no NEWTONIAN frame was declared")
         return self.newtonian_frame
 
-    def _velocity_sources(self, inertia: bool = True, strict: bool = True):
-        """(velocities, angular velocities) of the loaded points and frames and, with
-        `inertia`, of every particle and body.  Missing ones are errors when `strict`,
-        else skipped."""
-        n = self._newtonian()
-        vels, angs = [], []
+    def kane_system(self) -> kane.System:
+        """What Kane's method reads from this model."""
+        return kane.System(self._newtonian(), self.forces, self.torques,
+                           self.particles_list, self.bodies_list, self.defs)
 
-        def vel(p):
-            if strict or p.has_vel(n):
-                vels.append(p.vel(n))
-
-        def ang(f):
-            try:
-                angs.append(f.ang_vel_in(n))
-            except AutolevModelError:
-                if strict:
-                    raise
-        for p, f in self.forces.items():
-            if f.terms:
-                vel(p)
-        for a, t in self.torques.items():
-            if t.terms:
-                ang(a)
-        if inertia:
-            for p in self.particles_list:
-                vel(p)
-            for b in self.bodies_list:
-                vel(b.masscenter)
-                ang(b)
-        return vels, angs
-
-    def generalized_speeds(self) -> tuple[list, list, list]:
-        if self._kinematics_pending:
+    def generalized_speeds(self, complete: bool = True) -> tuple[list, list, list]:
+        """(independent, dependent, auxiliary) generalized speeds (see kane.py); with
+        `complete`, the kinematical equations must determine every coordinate's rate."""
+        if complete and self._kinematics_pending:
             raise AutolevModelError(
                 "the kinematical equations written as U = f(Q') do not determine every Q'"
                 f" ({', '.join(f'{u} = {v}' for u, v in self._kinematics_pending.items())})")
-        return self._generalized_speeds()
-
-    def _generalized_speeds(self) -> tuple[list, list, list]:
-        """(independent, dependent, auxiliary) generalized speeds.
-
-        A variable or motion variable whose first derivative is defined is a
-        coordinate.  A symbol on the right of a kinematical equation is a speed.  Any
-        other motion variable X declared with X' is a coordinate whose X' acts as the
-        speed (MOTIONVARIABLES' Q{9}''); declared without, X is a speed.  Of these
-        candidates, those the velocities depend on (through definitions) count, in
-        declaration order."""
-        kin_rhs: set = set()
-        for sym, info in self.info.items():
-            d = S.derivative(sym)
-            if info.kind in ("variable", "motionvariable") and d in self.defs.rhs \
-                    and S.base_and_order(sym)[1] == 0 and sym not in self.solved_speeds:
-                kin_rhs |= self.defs.rhs[d].free_symbols
-        vels, angs = self._velocity_sources(strict=False)
-        comps = [c for v in vels + angs for cs in v.terms.values() for c in cs]
-
-        def appears(u) -> bool:
-            return any(self.defs.depends_on(c, u) for c in comps)
-
-        candidates: list = []
-        for sym, info in sorted(self.info.items(), key=lambda kv: kv[1].index):
-            if info.kind not in ("variable", "motionvariable") or S.base_and_order(sym)[1]:
-                continue
-            d = S.derivative(sym)
-            if d in self.defs.rhs and sym not in self.solved_speeds:
-                continue                                 # a coordinate
-            if sym in kin_rhs or sym in self.solved_speeds or sym in self.dependent_speeds \
-                    or sym in self.auxiliary_speeds:
-                candidates.append(sym)
-            elif info.order >= 1 and appears(d):
-                candidates.append(d)                     # q' acts as the speed
-            elif info.kind == "motionvariable" or info.order >= 1:
-                candidates.append(sym)
-        taken = set(self.dependent_speeds) | set(self.auxiliary_speeds)
-        independent = [u for u in candidates
-                       if u not in taken and u not in self.defs.rhs and appears(u)]
-        aux = [u for u in self.auxiliary_speeds if appears(u)]
-        return independent, list(self.dependent_speeds), aux
+        declared = kane.SpeedDeclarations(self.info, self.solved_speeds,
+                                          self.dependent_speeds, self.auxiliary_speeds)
+        return kane.generalized_speeds(self.kane_system(), declared)
 
     def _form(self, inertia: bool = True) -> KaneEquations:
         key = (self._version, self.defs.user_version, inertia)
         if self._formed is not None and self._formed[0][:2] == key[:2] and \
                 (self._formed[0][2] or not inertia):
             return self._formed[1]
-        n = self._newtonian()
-        indep, dep, aux = self.generalized_speeds()
-        rows = indep + aux
-        if not rows:
-            raise AutolevModelError("no generalized speeds: the velocities depend on no "
-                                    "motion variable (declare MOTIONVARIABLES, or give "
-                                    "kinematical equations q' = ...)")
-        cache: dict = {}
-
-        def partials(v: Vector) -> list[Vector]:
-            key = id(v)
-            if key not in cache:
-                cache[key] = (v, [_partial(v, u, self.defs) for u in rows])
-            return cache[key][1]
-
-        fr = [sm.S.Zero] * len(rows)
-        frstar = [sm.S.Zero] * len(rows)
-        for p, f in self.forces.items():
-            if not f.terms:
-                continue
-            for r, vr in enumerate(partials(p.vel(n))):
-                fr[r] += vr.dot(f)
-        for a, t in self.torques.items():
-            if not t.terms:
-                continue
-            for r, wr in enumerate(partials(a.ang_vel_in(n))):
-                fr[r] += wr.dot(t)
-        if inertia:
-            self._inertia_forces(n, partials, frstar)
-        z = self.defs.zify
-        eqs = KaneEquations(indep, aux, dep, sm.Matrix([z(e) for e in fr]),
-                            sm.Matrix([z(e) for e in frstar]))
+        speeds = self.generalized_speeds()
+        eqs = kane.form(self.kane_system(), speeds, inertia)
         self._formed = (key, eqs)
         return eqs
-
-    def _inertia_forces(self, n: Frame, partials, frstar: list) -> None:
-        for p in self.particles_list:
-            v = p.vel(n)
-            if p.mass is None:
-                raise AutolevModelError(f"the mass of particle {p.name} is not given "
-                                        f"(MASS {p.name}=...)")
-            inertial = -p.mass * p.acc(n)
-            for r, vr in enumerate(partials(v)):
-                frstar[r] += vr.dot(inertial)
-        for b in self.bodies_list:
-            mc = b.masscenter
-            if not mc.has_vel(n) and n in mc._acc and not mc._acc[n].terms \
-                    and not (mc in self.forces and self.forces[mc].terms):
-                # A_BO_N> = 0> given and no velocity (tutorial 9's fixed mass centre):
-                # its inertia force is zero whatever its partial velocities are
-                b.mass_checked()
-            else:
-                v = mc.vel(n)
-                force = -b.mass_checked() * mc.acc(n)
-                for r, vr in enumerate(partials(v)):
-                    frstar[r] += vr.dot(force)
-            w = b.ang_vel_in(n)
-            alf = b.ang_acc_in(n)
-            if not w.terms and not alf.terms:
-                continue        # a body that does not turn needs no inertia
-            inertia = b.central_inertia
-            torque = -(inertia.dot(alf) + w.cross(inertia.dot(w)))
-            for r, wr in enumerate(partials(w)):
-                frstar[r] += wr.dot(torque)
 
     def speed_column(self, which: str, order: int = 0) -> sm.Matrix:
         """U_INDEPENDENT, U_DEPENDENT, U_AUXILIARY (primed: their derivatives)."""
@@ -644,7 +504,7 @@ class Model(AlgebraMixin, IOMixin):
             speeds = tuple(speeds[0])
         if not speeds:
             speeds = tuple(self.generalized_speeds()[0])
-        return VectorColumn([_partial(value, u, self.defs) for u in speeds])
+        return VectorColumn([kane.partial_velocity(value, u, self.defs) for u in speeds])
 
     def fr(self) -> sm.Matrix:
         """FR(): generalized active forces, one row per independent (then auxiliary) speed."""
@@ -823,9 +683,9 @@ class Model(AlgebraMixin, IOMixin):
         a rotor spinning at Omega relative to A).  No Autolev source defines GYROSTAT;
         this is the textbook gyrostat term H = I.w + J*Omega*a3 it is used for."""
         n = self._newtonian()
-        if carrier in rotor._w_user:
+        if rotor.ang_vel_assigned(carrier):
             spin = rotor.ang_vel_in(carrier)
-        elif n in rotor._w_user:
+        elif rotor.ang_vel_assigned(n):
             spin = rotor.ang_vel_in(n)
         else:
             raise AutolevModelError(
@@ -895,13 +755,6 @@ def _split(names) -> list[str]:
     for n in names:
         out.extend(n.replace(",", " ").split())
     return out
-
-
-def _partial(v: Vector, u, defs: Definitions) -> Vector:
-    """Partial velocity dv/du, measure numbers differentiated in their own frames
-    (orientations never depend on speeds)."""
-    return Vector({f: tuple(defs.zify(defs.diff(c, u)) for c in comps)
-                   for f, comps in v.terms.items()})
 
 
 def _solve_small(a: sm.Matrix, b: sm.Matrix) -> list:

@@ -41,7 +41,7 @@ class Point:
         value = _vector(value)
         self._pos[other] = value
         other._pos[self] = -value
-        self.model._changed()
+        self.model.note_change()
 
     def pos_from(self, other: "Point") -> Vector:
         """P_other_self>: the sum of position vectors along the points linking them."""
@@ -81,7 +81,7 @@ class Point:
         """V_self_frame> = value."""
         self._vel[frame] = _vector(value)
         self._acc_derived.pop(frame, None)
-        self.model._changed()
+        self.model.note_change()
 
     def has_vel(self, frame: Frame) -> bool:
         """Whether V_self_frame> is assigned or follows from the positions."""
@@ -93,7 +93,7 @@ class Point:
         assigned or which is fixed in frame (its origin)."""
         if frame in self._vel:
             return self._vel[frame]
-        version = self.model._version
+        version = self.model.version
         cached = self._vel_derived.get(frame)
         if cached is not None and cached[0] == version:
             return cached[1]
@@ -113,7 +113,7 @@ class Point:
     def _moving_base(self, frame: Frame) -> "Point | None":
         """The nearest point linked to self by defined positions whose velocity in
         frame is assigned, or which is frame's origin (fixed in it)."""
-        origin = frame._origin
+        origin = frame.declared_origin
         seen = {self}
         queue = deque([self])
         while queue:
@@ -129,7 +129,7 @@ class Point:
     def set_acc(self, frame: Frame, value) -> None:
         """A_self_frame> = value."""
         self._acc[frame] = _vector(value)
-        self.model._changed()
+        self.model.note_change()
 
     def acc(self, frame: Frame) -> Vector:
         """A_self_frame>: as assigned, else DT(V_self_frame>, frame)."""
@@ -141,6 +141,14 @@ class Point:
         if frame not in self._acc_derived:
             self._acc_derived[frame] = self.vel(frame).dt(frame)
         return self._acc_derived[frame]
+
+    def acc_assigned_zero(self, frame: Frame) -> bool:
+        """Whether the model assigned A_self_frame> = 0>."""
+        return frame in self._acc and not self._acc[frame].terms
+
+    def forget_derived(self) -> None:
+        """Drop the accelerations derived from the velocities (an orientation changed)."""
+        self._acc_derived.clear()
 
     def v2pt_theory(self, other: "Point", outframe: Frame, fixedframe: Frame) -> Vector:
         """V2PTS(outframe, fixedframe, other, self): both points fixed in fixedframe."""
@@ -229,7 +237,7 @@ class Body(Frame):
             self._inertia, self._inertia_about = dyadic, None
         else:
             self._inertia, self._inertia_about = None, (about, dyadic)
-        self.model._changed()
+        self.model.note_change()
 
     def set_inertia_dyadic(self, dyadic: Dyadic, about: Point | None = None) -> None:
         """I_B_O>> = dyadic."""
@@ -237,7 +245,7 @@ class Body(Frame):
             self._inertia, self._inertia_about = dyadic, None
         else:
             self._inertia, self._inertia_about = None, (about, dyadic)
-        self.model._changed()
+        self.model.note_change()
 
     @property
     def central_inertia(self) -> Dyadic:

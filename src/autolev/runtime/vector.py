@@ -174,12 +174,13 @@ class Vector:
         return self.express(frame).terms.get(frame, _ZERO3)
 
     def zified(self) -> "Vector":
-        defs = self._defs()
+        defs = self.definitions()
         if defs is None:
             return self
         return Vector({f: tuple(defs.zify(x) for x in c) for f, c in self.terms.items()})
 
-    def _defs(self):
+    def definitions(self):
+        """The Definitions of the model its frames belong to (None for 0>)."""
         for f in self.terms:
             return f.model.defs
         return None
@@ -556,6 +557,15 @@ class Frame:
     def origin(self, point) -> None:
         self._origin = point
 
+    @property
+    def declared_origin(self):
+        """AO if the model has it, else None (asking for `origin` would make it)."""
+        return self._origin
+
+    def forget_derived(self) -> None:
+        """Drop the direction cosines derived along paths (an orientation changed)."""
+        self._dcm_cache.clear()
+
     # -- orientation ------------------------------------------------------------------
     def orient_dcm(self, parent: "Frame", dcm, ang_vel: Vector | None = None) -> None:
         """Orient self relative to parent with parent.dcm(self) == dcm (Autolev's
@@ -568,7 +578,7 @@ class Frame:
             raise AutolevModelError(f"a direction cosine matrix is 3x3, not {dcm.shape}")
         self._dcm_edges[parent] = dcm.T
         parent._dcm_edges[self] = dcm
-        self.model._orientation_changed()
+        self.model.note_orientation_change()
         if parent not in self._w_user:
             w = ang_vel if ang_vel is not None else _DerivedAngVel(parent, self)
             self._w_edges[parent] = w
@@ -677,6 +687,10 @@ class Frame:
         other._w_edges[self] = -value
         self._w_user.add(other)
         other._w_user.add(self)
+
+    def ang_vel_assigned(self, other: "Frame") -> bool:
+        """Whether the model assigned W_self_other> (or W_other_self>) itself."""
+        return other in self._w_user
 
     def _w_edge(self, other: "Frame") -> Vector:
         w = self._w_edges[other]

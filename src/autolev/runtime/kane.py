@@ -1,0 +1,230 @@
+"""Kane's method: generalized speeds, partial velocities, Fr and Fr*.
+
+Apart from the Model as sympy keeps KanesMethod apart from bodies and loads: every
+function takes what it needs explicitly (the Newtonian frame, the loads, the
+particles and bodies, the definitions) and returns the equations; nothing here
+changes a model.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+
+import sympy as sm
+
+from . import symbols as S
+from .calculus import Definitions
+from .errors import AutolevModelError
+from .point import Body, Particle, Point
+from .vector import Frame, Vector
+
+MOTION_KINDS = ("variable", "motionvariable")
+
+
+@dataclass
+class SymbolInfo:
+    kind: str            # constant variable motionvariable specified imaginary
+    order: int           # derivatives declared
+    index: int           # declaration order
+
+
+@dataclass
+class KaneEquations:
+    """Kane's dynamical equations, one row per independent (then auxiliary) speed."""
+
+    speeds: list          # independent speeds (rows), in order
+    auxiliary: list       # auxiliary speeds (extra rows)
+    dependent: list       # dependent speeds (defined by the constraints)
+    fr: sm.Matrix
+    frstar: sm.Matrix
+    unknowns: list = field(default_factory=list)   # KANE(F1, ...): solved from the aux rows
+
+    @property
+    def rows(self) -> sm.Matrix:
+        return self.fr + self.frstar
+
+
+@dataclass
+class System:
+    """What Kane's method reads from a model: its frame, loads and massive items."""
+
+    newtonian: Frame
+    forces: Mapping[Point, Vector]
+    torques: Mapping[Frame, Vector]
+    particles: list[Particle]
+    bodies: list[Body]
+    defs: Definitions
+
+
+@dataclass
+class SpeedDeclarations:
+    """What decides which symbols are generalized speeds."""
+
+    info: Mapping[sm.Symbol, SymbolInfo]
+    solved: set            # speeds whose derivatives SOLVE defined
+    dependent: list
+    auxiliary: list
+
+
+def velocity_sources(system: System, inertia: bool = True, strict: bool = True):
+    """(velocities, angular velocities) of the loaded points and frames and, with
+    `inertia`, of every particle and body.  Missing ones are errors when `strict`,
+    else skipped."""
+    n = system.newtonian
+    vels, angs = [], []
+
+    def vel(p):
+        if strict or p.has_vel(n):
+            vels.append(p.vel(n))
+
+    def ang(f):
+        try:
+            angs.append(f.ang_vel_in(n))
+        except AutolevModelError:
+            if strict:
+                raise
+    for p, f in system.forces.items():
+        if f.terms:
+            vel(p)
+    for a, t in system.torques.items():
+        if t.terms:
+            ang(a)
+    if inertia:
+        for p in system.particles:
+            vel(p)
+        for b in system.bodies:
+            vel(b.masscenter)
+            ang(b)
+    return vels, angs
+
+
+def generalized_speeds(system: System, decl: SpeedDeclarations) -> tuple[list, list, list]:
+    """(independent, dependent, auxiliary) generalized speeds.
+
+    A variable or motion variable whose first derivative is defined is a
+    coordinate.  A symbol on the right of a kinematical equation is a speed.  Any
+    other motion variable X declared with X' is a coordinate whose X' acts as the
+    speed (MOTIONVARIABLES' Q{9}''); declared without, X is a speed.  Of these
+    candidates, those the velocities depend on (through definitions) count, in
+    declaration order."""
+    defs = system.defs
+    vels, angs = velocity_sources(system, strict=False)
+    comps = [c for v in vels + angs for cs in v.terms.values() for c in cs]
+
+    def appears(u) -> bool:
+        return any(defs.depends_on(c, u) for c in comps)
+
+    candidates = _speed_candidates(defs, decl, appears)
+    taken = set(decl.dependent) | set(decl.auxiliary)
+    independent = [u for u in candidates
+                   if u not in taken and u not in defs.rhs and appears(u)]
+    aux = [u for u in decl.auxiliary if appears(u)]
+    return independent, list(decl.dependent), aux
+
+
+def _speed_candidates(defs: Definitions, decl: SpeedDeclarations,
+                      appears: Callable[[sm.Symbol], bool]) -> list:
+    kin_rhs: set = set()
+    for sym, info in decl.info.items():
+        d = S.derivative(sym)
+        if info.kind in MOTION_KINDS and d in defs.rhs \
+                and S.base_and_order(sym)[1] == 0 and sym not in decl.solved:
+            kin_rhs |= defs.rhs[d].free_symbols
+    named_speeds = decl.solved | set(decl.dependent) | set(decl.auxiliary)
+    candidates: list = []
+    for sym, info in sorted(decl.info.items(), key=lambda kv: kv[1].index):
+        if info.kind not in MOTION_KINDS or S.base_and_order(sym)[1]:
+            continue
+        d = S.derivative(sym)
+        if d in defs.rhs and sym not in decl.solved:
+            continue                                 # a coordinate
+        if sym in kin_rhs or sym in named_speeds:
+            candidates.append(sym)
+        elif info.order >= 1 and appears(d):
+            candidates.append(d)                     # q' acts as the speed
+        elif info.kind == "motionvariable" or info.order >= 1:
+            candidates.append(sym)
+    return candidates
+
+
+def partial_velocity(v: Vector, u, defs: Definitions) -> Vector:
+    """Partial velocity dv/du, measure numbers differentiated in their own frames
+    (orientations never depend on speeds)."""
+    return Vector({f: tuple(defs.zify(defs.diff(c, u)) for c in comps)
+                   for f, comps in v.terms.items()})
+
+
+class _Partials:
+    """The partial velocities of each velocity vector, taken once per vector."""
+
+    def __init__(self, speeds: list, defs: Definitions):
+        self.speeds, self.defs = speeds, defs
+        self._by_vector: dict[int, tuple[Vector, list[Vector]]] = {}
+
+    def __call__(self, v: Vector) -> list[Vector]:
+        key = id(v)            # the vector is kept with its entry, so the id stays its own
+        if key not in self._by_vector:
+            self._by_vector[key] = (v, [partial_velocity(v, u, self.defs)
+                                        for u in self.speeds])
+        return self._by_vector[key][1]
+
+
+def form(system: System, speeds: tuple[list, list, list],
+         inertia: bool = True) -> KaneEquations:
+    """Fr and (with `inertia`) Fr*, one row per independent then auxiliary speed of
+    `speeds` = (independent, dependent, auxiliary), Z-named."""
+    indep, dep, aux = speeds
+    rows = indep + aux
+    if not rows:
+        raise AutolevModelError("no generalized speeds: the velocities depend on no "
+                                "motion variable (declare MOTIONVARIABLES, or give "
+                                "kinematical equations q' = ...)")
+    n = system.newtonian
+    partials = _Partials(rows, system.defs)
+    fr = [sm.S.Zero] * len(rows)
+    for p, f in system.forces.items():
+        if f.terms:
+            _accumulate(fr, partials(p.vel(n)), f)
+    for a, t in system.torques.items():
+        if t.terms:
+            _accumulate(fr, partials(a.ang_vel_in(n)), t)
+    frstar = [sm.S.Zero] * len(rows)
+    if inertia:
+        _inertia_forces(system, partials, frstar)
+    z = system.defs.zify
+    return KaneEquations(indep, aux, dep, sm.Matrix([z(e) for e in fr]),
+                         sm.Matrix([z(e) for e in frstar]))
+
+
+def _accumulate(total: list, partials: Iterable[Vector], load: Vector) -> None:
+    for r, vr in enumerate(partials):
+        total[r] += vr.dot(load)
+
+
+def _inertia_forces(system: System, partials: _Partials, frstar: list) -> None:
+    n = system.newtonian
+    for p in system.particles:
+        if p.mass is None:
+            raise AutolevModelError(f"the mass of particle {p.name} is not given "
+                                    f"(MASS {p.name}=...)")
+        v = p.vel(n)
+        inertial = -p.mass * p.acc(n)     # before the partials: Z's keep their order
+        _accumulate(frstar, partials(v), inertial)
+    for b in system.bodies:
+        mc = b.masscenter
+        if not mc.has_vel(n) and mc.acc_assigned_zero(n) \
+                and not (mc in system.forces and system.forces[mc].terms):
+            # A_BO_N> = 0> given and no velocity (tutorial 9's fixed mass centre):
+            # its inertia force is zero whatever its partial velocities are
+            b.mass_checked()
+        else:
+            v = mc.vel(n)
+            inertial = -b.mass_checked() * mc.acc(n)
+            _accumulate(frstar, partials(v), inertial)
+        w = b.ang_vel_in(n)
+        alf = b.ang_acc_in(n)
+        if not w.terms and not alf.terms:
+            continue        # a body that does not turn needs no inertia
+        inertia = b.central_inertia
+        torque = -(inertia.dot(alf) + w.cross(inertia.dot(w)))
+        _accumulate(frstar, partials(w), torque)
