@@ -43,7 +43,7 @@ t1 = time.perf_counter()
 out = {"form": t1 - t0, "z": m.defs.z_count}
 from autolev.runtime.errors import AutolevModelError
 try:
-    out["speeds"] = len(m._equations().speeds)
+    out["speeds"] = len(m.equations().speeds)
 except AutolevModelError:         # a model with no dynamics (kinematics only)
     out["speeds"] = 0
 t2 = time.perf_counter()

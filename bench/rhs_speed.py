@@ -158,7 +158,7 @@ class CDriver:
             raise RuntimeError("the driver's derivatives differ from the system's")
         rhs = ctypes.cast(loop.lib.autolev_rhs, ctypes.c_void_p).value
         tt = np.array([t])
-        out = np.empty_like(loop._out)
+        out = np.empty_like(loop.out_buffer)
         ptrs = (rhs, tt.ctypes.data, x.ctypes.data, loop.ctx.c, loop.ctx.s, loop.ctx.w,
                 out.ctypes.data)
         alone = self._median_us(lambda k: self._rhs(*ptrs, k), budget, repeats)

@@ -11,7 +11,7 @@ import pytest
 import autolev
 from autolev import animation
 from autolev.runtime import AutolevModelError
-from conftest import EXAMPLES
+from helpers import EXAMPLES
 
 
 @pytest.fixture(scope="module")

@@ -3,7 +3,7 @@ import py_compile
 
 import pytest
 
-from conftest import ROOT
+from helpers import ROOT
 
 SCRIPTS = sorted((ROOT / "bench").glob("*.py"))
 

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 import autolev
-from bicycle_benchmark import (CAPSIZE, CAPSIZE_SPEED, CASTOR, REAR_RADIUS, WEAVE,
+from helpers.bicycle import (CAPSIZE, CAPSIZE_SPEED, CASTOR, REAR_RADIUS, WEAVE,
                                WEAVE_SPEED, critical_speeds, lean_and_steer)
-from conftest import ROOT
+from helpers import ROOT
 
 MODEL = ROOT / "autolev_examples" / "whipple_benchmark.al"
 

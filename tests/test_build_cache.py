@@ -6,7 +6,7 @@ import subprocess
 import pytest
 
 from autolev.runtime.numerics import codegen
-from conftest import EXAMPLES
+from helpers import EXAMPLES
 
 pytestmark = pytest.mark.skipif(codegen.compiler() is None, reason="needs a C compiler")
 

@@ -18,8 +18,8 @@ import sympy as sm
 import sympy.physics.mechanics as me
 
 import autolev
-from conftest import ROOT
-from mech import symbols, value
+from helpers import ROOT
+from helpers.mechanics import symbols, value
 
 sys.path.insert(0, str(ROOT / "bench"))
 import chains  # noqa: E402

@@ -7,7 +7,7 @@ import pytest
 
 import autolev
 from autolev.cli import main
-from conftest import EXAMPLES
+from helpers import EXAMPLES
 
 
 def run(capsys, *argv):

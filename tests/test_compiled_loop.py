@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import autolev
-from conftest import load_model
+from helpers import load_model
 from autolev.runtime.numerics import codegen
 
 
@@ -68,9 +68,10 @@ def test_c_solve_of_kanes_equations_matches_the_python_solve():
         assert np.array_equal(c_dot, py_dot)
         # and both solve M u' = f (M and f as the generated function gives them)
         out = np.empty(ns + n * n + n)
-        system.rhs_function.call(np.array([0.3]), x, system._c, system._s, out)
+        system.rhs_function.call(np.array([0.3]), x, system.constant_values,
+                                 system.specified_values, out)
         mm, f = out[ns:ns + n * n].reshape(n, n), out[ns + n * n:]
-        assert np.allclose(mm @ c_dot[system._unknown_pos], f, rtol=1e-12, atol=1e-12)
+        assert np.allclose(mm @ c_dot[system.unknown_positions], f, rtol=1e-12, atol=1e-12)
 
 
 def test_halving_failure_is_the_same_in_c_and_python():

@@ -2,7 +2,7 @@
 import pytest
 
 from autolev import ir
-from conftest import errors_of, only, parse
+from helpers import errors_of, only, parse
 
 
 def names(text):

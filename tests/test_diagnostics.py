@@ -4,7 +4,7 @@ import re
 import pytest
 
 import autolev
-from conftest import errors_of
+from helpers import errors_of
 
 ANTLR_WORDS = re.compile(r"mismatched input|extraneous input|no viable alternative|"
                          r"token recognition|expecting|<EOF>|missing '|\bNL\b|\bID\b")

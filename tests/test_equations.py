@@ -4,7 +4,7 @@ results published in SymPy's documentation (shared/seed-systems.md)."""
 import sympy as sm
 import sympy.physics.mechanics as me
 
-from mech import close, example, random_values, symbols, value
+from helpers.mechanics import close, example, random_values, symbols, value
 
 t = me.dynamicsymbols._t
 

@@ -2,7 +2,7 @@
 import pytest
 
 from autolev import ir
-from conftest import errors_of, expr
+from helpers import errors_of, expr
 
 N, B = ir.Name, ir.BinOp
 

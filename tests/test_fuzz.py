@@ -4,7 +4,7 @@ import importlib.util
 import random
 import sys
 
-from conftest import EXAMPLES, ROOT
+from helpers import EXAMPLES, ROOT
 
 spec = importlib.util.spec_from_file_location("fuzz", ROOT / "bench" / "fuzz.py")
 fuzz = importlib.util.module_from_spec(spec)

@@ -6,7 +6,7 @@ import difflib
 import pytest
 
 import autolev
-from conftest import EXAMPLES, ROOT
+from helpers import EXAMPLES, ROOT
 
 GOLDEN = ROOT / "tests" / "golden"
 MODELS = sorted(EXAMPLES.glob("*.al"))

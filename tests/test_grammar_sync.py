@@ -8,7 +8,7 @@ import sys
 
 import pytest
 
-from conftest import ROOT
+from helpers import ROOT
 
 GRAMMAR = ROOT / "grammar" / "Autolev.g4"
 GENERATED = ROOT / "src" / "autolev" / "_antlr"

@@ -56,7 +56,7 @@ def test_signs_and_powers_nested_hundreds_deep(tmp_path, text):
 
 
 def test_a_file_where_the_output_folder_should_be(tmp_path):
-    from conftest import EXAMPLES
+    from helpers import EXAMPLES
     model = autolev.load(EXAMPLES / "double_pendulum.al")
     (tmp_path / "out").write_text("not a folder")
     for out in (tmp_path / "out", tmp_path / "out" / "sub"):
@@ -69,7 +69,7 @@ def test_a_full_disk_while_writing_rows(tmp_path, monkeypatch):
     import errno
 
     from autolev.runtime.numerics import files
-    from conftest import EXAMPLES
+    from helpers import EXAMPLES
     model = autolev.load(EXAMPLES / "double_pendulum.al")
 
     def full(self, k, row):
@@ -120,7 +120,7 @@ def test_exact_numbers_of_ordinary_size_stay_exact(tmp_path):
 
 
 def test_an_integstp_that_cannot_advance_the_time(tmp_path):
-    from conftest import EXAMPLES
+    from helpers import EXAMPLES
     model = autolev.load(EXAMPLES / "double_pendulum.al")
     with pytest.raises(autolev.runtime.AutolevModelError, match="too small to advance"):
         model.simulate(INTEGSTP=1e-300)
@@ -201,7 +201,7 @@ def test_a_statement_the_parser_reads_but_nested_too_deeply_to_build(tmp_path):
     text = "A"
     for _ in range(400):
         text = f"({text})^2"
-    from conftest import errors_of
+    from helpers import errors_of
     (d,) = errors_of("CONSTANTS A\nX = " + text + "\n")
     assert d.code == "E004" and (d.location.line, d.location.col) == (2, 1)
 

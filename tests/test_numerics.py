@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import autolev
-from conftest import load_model
+from helpers import load_model
 from autolev.runtime.numerics import codegen, files, integrate
 from autolev.runtime.numerics.inputs import InputFileError
 

@@ -6,7 +6,7 @@ from antlr4.error.ErrorListener import ErrorListener
 from autolev import ir
 from autolev._antlr.AutolevLexer import AutolevLexer
 from autolev._antlr.AutolevParser import AutolevParser
-from conftest import EXAMPLES, ROOT, parse
+from helpers import EXAMPLES, ROOT, parse
 
 
 class Collect(ErrorListener):

@@ -2,7 +2,7 @@
 names is in the repository, and it points at nothing beside it."""
 import re
 
-from conftest import ROOT
+from helpers import ROOT
 
 README = (ROOT / "README.md").read_text()
 

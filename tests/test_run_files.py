@@ -14,7 +14,7 @@ import pytest
 import autolev
 from autolev.runtime import AutolevModelError
 from autolev.runtime.numerics import files
-from conftest import EXAMPLES
+from helpers import EXAMPLES
 
 PENDULUM = EXAMPLES / "double_pendulum.al"
 

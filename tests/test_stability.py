@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 
 import autolev
-from conftest import load_model
+from helpers import load_model
 from autolev.runtime.errors import AutolevModelError
 from autolev.runtime.numerics.system import scaled_condition
 
-from conftest import NUMERICS_DATA as DATA
+from helpers import NUMERICS_DATA as DATA
 
 
 load = load_model

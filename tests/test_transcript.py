@@ -8,7 +8,7 @@ import pytest
 import sympy as sm
 
 from autolev.transcript import expression, transcript
-from conftest import EXAMPLES
+from helpers import EXAMPLES
 
 DISC = """% a point on a turning disc
 NEWTONIAN N

@@ -2,7 +2,7 @@
 import pytest
 
 import autolev
-from conftest import parse
+from helpers import parse
 
 
 def translate(text: str) -> str:
@@ -152,7 +152,7 @@ def test_autorhs_on_reads_stored_right_hand_sides():
 
 
 def test_parse_and_translate_agree_on_all_constructs_file():
-    from conftest import ROOT
+    from helpers import ROOT
     text = (ROOT / "tests" / "data" / "all_constructs.al").read_text()
     parse(text)
     # the file is a syntax sample, not a consistent model: it must translate or

@@ -7,6 +7,7 @@ import numpy as np
 import sympy as sm
 
 from .calculus import refuse_huge_powers
+from .printer import number_value
 from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
 
 ZERO = Vector()
@@ -365,7 +366,6 @@ def _integer_of(x, integer):
         return sm.Integer(integer(x))
     if x.is_Float:
         return sm.Integer(integer(sm.Rational(x))) if x.is_finite else None
-    from .numerics.codegen import number_value
     v = number_value(x)
     return sm.Integer(integer(sm.Rational(v))) if math.isfinite(v) else None
 

@@ -10,7 +10,6 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import sympy as sm
-import sympy.physics.mechanics as me
 
 from . import symbols as S
 from .errors import AutolevModelError
@@ -20,8 +19,15 @@ if TYPE_CHECKING:
     from .vector import Frame, Vector
 
 
+def _mechanics():
+    # sympy.physics.mechanics takes 0.1 s to import: only sympy interop pays it
+    import sympy.physics.mechanics
+    return sympy.physics.mechanics
+
+
 def dynamic_map(model: "Model") -> dict:
     """{our symbol: its sympy counterpart} for every variable and derivative."""
+    me = _mechanics()
     mapping: dict = {S.TIME: me.dynamicsymbols._t}
     for sym, info in model.info.items():
         base, order = S.base_and_order(sym)
@@ -45,8 +51,9 @@ def to_sympy_expr(model: "Model", expr, mapping: dict | None = None):
 
 def to_sympy_frame(frame: "Frame"):
     """A sympy ReferenceFrame oriented as `frame` is (through the model's frames)."""
+    me = _mechanics()
     model = frame.model
-    cache = model.__dict__.setdefault("_sympy_frames", {})
+    cache = model.derived.table("sympy frames", (model.version, model.defs.user_version))
     if frame in cache:
         return cache[frame]
     mapping = dynamic_map(model)
@@ -56,7 +63,7 @@ def to_sympy_frame(frame: "Frame"):
     cache[root] = me.ReferenceFrame(root.name)
     while todo:
         f = todo.pop()
-        for g in f._dcm_edges:
+        for g in f.oriented_neighbours():
             if g in cache or g.name == "_probe":
                 continue
             sg = me.ReferenceFrame(g.name)
@@ -74,6 +81,7 @@ def to_sympy_frame(frame: "Frame"):
 
 def to_sympy_vector(v: "Vector", frames: dict | None = None, mapping: dict | None = None):
     """A sympy.physics.vector.Vector equal to v."""
+    me = _mechanics()
     total = me.Vector(0)
     for f, comps in v.terms.items():
         sf = (frames or {}).get(f) or to_sympy_frame(f)
@@ -85,6 +93,7 @@ def to_sympy_vector(v: "Vector", frames: dict | None = None, mapping: dict | Non
 
 
 def to_sympy_point(point):
+    me = _mechanics()
     return me.Point(point.name)
 
 
@@ -94,8 +103,9 @@ def symbolic_system(model: "Model", form: str = "combined"):
     form "explicit": x' = F(x); "combined": M(x) x' = F(x) for the whole state;
     "separate": q' = G(q, u) and M u' = f kept apart.  With dependent speeds the state
     ends with them and their constraint rows are marked algebraic (alg_con)."""
+    me = _mechanics()
     mapping = dynamic_map(model)
-    eqs = model._equations()
+    eqs = model.equations()
     qs = [mapping[q] for q in model.coordinates]
     us = [mapping.get(u, u) for u in eqs.speeds]
     dep = [mapping[u] for u in model.dependent_speeds]

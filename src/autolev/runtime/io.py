@@ -1,12 +1,14 @@
 """INPUT, OUTPUT, UNITS, ENCODE and CODE: what a model records for its numerics
-(a mixin of Model).  The simulation itself lives in autolev.runtime.numerics."""
+(a mixin of Model).  Running them is autolev.runtime.simulation's."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
 import sympy as sm
 
-from .vector import AutolevModelError
+from .errors import AutolevModelError
+from .functions import degrees_to_radians
+from .units import is_degrees
 
 INTEGRATION_PARAMETERS = ("TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR")
 
@@ -33,8 +35,6 @@ class IOMixin:
                 return self._input_value_of_definition(key)
             raise AutolevModelError(f"INPUT({target}): no value was input for it")
         value, unit = self.inputs[key]
-        from .functions import degrees_to_radians
-        from .numerics.units import is_degrees
         if is_degrees(unit):
             # the value the program stores, as Autolev's did: 30 DEG is pi/6; every
             # other unit (DEG/S too) is a label
@@ -87,148 +87,6 @@ class IOMixin:
             inputs=dict(self.inputs), units=dict(self.unit_of),
             zero=None if zero is None else sm.Matrix(zero),
             definitions=self.defs.user_definitions()))
-
-    def run(self, out_dir=".", verbose: bool = False, **options):
-        """Perform every CODE command with the INPUT values (as `python model.py`
-        does): writes Autolev's files into out_dir; returns the results.  `verbose`
-        reports each run (and any failure) on standard output."""
-        import sys
-
-        from .numerics.run import run_command
-        results = []
-        for c in self.code_commands:
-            r = run_command(self, c, out_dir=out_dir,
-                            progress=sys.stderr if verbose else None, **options)
-            results.append(r)
-            if verbose:
-                print(f"CODE {c.kind.upper()} {c.filename}: "
-                      + ("ok" if r.ok else r.failure)
-                      + "".join(f"\n  wrote {f}" for f in r.files))
-        return results
-
-    def code_command(self, which):
-        """A CODE command by its file name (any case, the extension optional: "bike.c",
-        "BIKE") or its 0-based index among the model's CODE commands."""
-        from .numerics.files import safe_stem
-        commands = list(self.code_commands)
-        if isinstance(which, int) and not isinstance(which, bool):
-            if 0 <= which < len(commands):
-                return commands[which]
-        else:
-            wanted = str(which).strip().lower()
-            for c in commands:
-                if c.filename.lower() == wanted:
-                    return c
-            found = [c for c in commands if safe_stem(c.filename).lower() == wanted]
-            if len(found) == 1:
-                return found[0]
-        shown = ", ".join(f"{k}: {c.filename}" for k, c in enumerate(commands)) or "none"
-        raise AutolevModelError(f"no CODE command {which!r} (the model's: {shown})")
-
-    def simulate(self, *, method: str | None = None, backend: str = "auto",
-                 infile=None, out_dir=None, specified=None, progress=None,
-                 compiled: bool = True, constraints=None, quirks: bool = True,
-                 keep_rows: bool = True, missing_values: str = "refuse", code=None,
-                 **overrides):
-        """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
-        CODE command, else a plain simulation) with INPUT values, `overrides`
-        (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
-        ({name: f(t) or f(t, x)}).  Files are written only when out_dir is given.
-        `method`: the integrator (default: the one of the program Autolev wrote for the
-        CODE file: ode45, i.e. "rk45", for a .m file, else its Kutta-Merson).
-        `compiled=False` keeps the integration loop in Python even when the right-hand
-        side is compiled C (Kutta-Merson and DOP853 otherwise run wholly in C).
-        `constraints`: configuration constraints g(q) (sympy expressions in the model's
-        symbols, e.g. `al.dot(P5.pos_from(NO), N.x)` for a closed loop) kept at their
-        initial values by projecting the coordinates onto them at every print time
-        (closed loops drift off their constraints otherwise: only the velocity
-        constraints are part of the equations).  `quirks=False`: the values meant where
-        Autolev's programs computed others (docs/language.md).  `keep_rows=False`: the
-        Result holds only the last row (a long run into out_dir then needs no memory
-        for its rows).  `missing_values="zero"`: constants without a value are 0 (with a
-        warning) instead of stopping the run before it is compiled (MissingValues).
-        `code`: which CODE command to run (see code_command).
-        Returns a Result (times, states and outputs as numpy arrays)."""
-        from .numerics.run import run_command
-        return run_command(self, self._command_to_run(code), out_dir=out_dir, method=method,
-                           backend=backend, infile=infile, specified=specified, progress=progress,
-                           overrides=overrides, compiled=compiled,
-                           constraints=constraints, quirks=quirks, keep_rows=keep_rows,
-                           missing_values=missing_values)
-
-
-    def _command_to_run(self, code=None) -> "CodeCommand":
-        """The CODE command `code` names, else the first CODE DYNAMICS or ODE, else the
-        first CODE command, else a plain simulation of the model as it stands."""
-        command = self.code_command(code) if code is not None else None
-        for c in self.code_commands if command is None else ():
-            if c.kind in ("dynamics", "ode"):
-                command = c
-                break
-        if command is None and self.code_commands:
-            command = self.code_commands[0]
-        return command if command is not None else self._plain_dynamics()
-
-    def _command_to_linearize(self, code=None) -> "CodeCommand":
-        """The CODE command `code` names, else the first CODE DYNAMICS, else the model's
-        equations as they stand."""
-        if code is not None:
-            return self.code_command(code)
-        return next((c for c in self.code_commands if c.kind == "dynamics"),
-                    None) or self._plain_dynamics()
-
-    def _plain_dynamics(self) -> "CodeCommand":
-        """CODE DYNAMICS of the model as it stands (for a model that writes none); the
-        same object while the model is unchanged, so its numeric system is reused."""
-        key = (self.revision(), len(self.outputs), len(self.encoded),
-               tuple(self.unit_of.items()))
-        kept = self.__dict__.get("_plain_command")
-        if kept is None or kept[0] != key:
-            kept = self._plain_command = (key, CodeCommand(
-                "dynamics", f"{self.name}.c", [], None, (), n_outputs=len(self.outputs),
-                n_encoded=len(self.encoded), inputs=dict(self.inputs),
-                units=dict(self.unit_of)))
-        return kept[1]
-
-    def linearize_symbolic(self, point=None, inputs=None, *, code=None, locked=None,
-                           max_states: int | None = None):
-        """A and B as sympy matrices in the model's symbols, with `point` ({name:
-        value}) substituted; refused above `max_states` states (default 12: beyond,
-        the expressions outgrow reading).  See Model.linearize for the rest."""
-        from .numerics.linearize import MAX_SYMBOLIC_STATES, linearize_symbolic
-        return linearize_symbolic(self, self._command_to_linearize(code), point, inputs,
-                                  locked, max_states or MAX_SYMBOLIC_STATES)
-
-    def sweep(self, points, what: str = "linearize", **options):
-        """A parameter study: the model linearized (what="linearize") or simulated
-        (what="simulate") at every point, translated and compiled once, on the local
-        cores or on `executor=` (a Dask Client, any concurrent.futures Executor); one
-        table.  See autolev.runtime.studies.sweep."""
-        from .studies import sweep
-        return sweep(self, points, what, **options)
-
-    def linearize(self, operating_point=None, inputs=None, *, code=None,
-                  backend: str = "auto", infile=None, missing_values: str = "refuse",
-                  overrides=None, constraints=None, dependent=None, locked=None):
-        """The equations of motion linearized at `operating_point` ({name: value} for
-        constants, coordinates, speeds and specified quantities, in SI units and
-        radians; the rest from INPUT, the .in file, or 0 for states and specified
-        quantities): a Linearization with A, B (columns: `inputs`, default every
-        specified quantity without a definition), C, D (rows: the OUTPUT columns),
-        `eigenvalues()` and `modes()`.  Exact Jacobians through the Z's, evaluated by
-        compiled code.  `code`: which CODE DYNAMICS (see code_command; default: the
-        first, else the model's equations as they stand); `overrides`:
-        {name: value} in the quantities' own units, as `simulate` takes them.
-        `constraints`: configuration constraints g = 0 (sympy expressions, as for
-        `simulate`): the point is put on them and the state reduced to the independent
-        coordinates (`dependent`: the names of those they fix; default: chosen).
-        `locked`: names of coordinates held at their values (with Q' = U: U = U' = 0,
-        U's row of Kane's equations dropped), as a rigid joint would."""
-        from .numerics.linearize import linearize
-        return linearize(self, self._command_to_linearize(code), operating_point, inputs,
-                         backend=backend, infile=infile, missing_values=missing_values,
-                         overrides=overrides, constraints=constraints, dependent=dependent,
-                         locked=locked)
 
 
 @dataclass

@@ -10,17 +10,21 @@ import sympy as sm
 
 from . import symbols as S
 from .algebra import AlgebraMixin
+from .derived import DerivedCache
 from .io import IOMixin
 from .calculus import Definitions
 from . import kane
 from .kane import KaneEquations, SymbolInfo
 from .linalg import coefficients, solve_linear
-from .point import Body, Particle, Point
-from .vector import (AutolevModelError, Dyadic, Frame, Vector, _vector, body_fixed,
-                     euler_parameter_rates, space_fixed)
+from .functions import VectorColumn
+from .interop import symbolic_system, to_sympy_expr, to_sympy_vector
+from .point import Body, Particle, Point, point_mass_inertia
+from .simulation import SimulationMixin
+from .vector import (AutolevModelError, Dyadic, Frame, UnitDyadic, Vector, _vector,
+                     body_fixed, euler_parameter_rates, space_fixed)
 
 
-class Model(AlgebraMixin, IOMixin):
+class Model(AlgebraMixin, IOMixin, SimulationMixin):
     def __init__(self, name: str = "model", degrees: bool = True, complex: bool = False):
         self.name = name
         self.defs = Definitions()
@@ -44,6 +48,8 @@ class Model(AlgebraMixin, IOMixin):
         self._formed: tuple[int, KaneEquations] | None = None
         self.settings: dict[str, object] = {}
         self._nicheck_work = None
+        # what numerics and interop derive from the model (numeric systems, ...)
+        self.derived = DerivedCache()
         self.inputs: dict = {}          # symbol or integration name -> (value, unit)
         self.outputs: list = []         # one list of (expr, label, unit) per OUTPUT
         self.unit_of: dict = {}         # UNITS x = unit
@@ -499,7 +505,6 @@ class Model(AlgebraMixin, IOMixin):
 
     def partials(self, value, *speeds):
         """PARTIALS(V>, u1, ...): the partial velocities of V> with respect to the speeds."""
-        from .functions import VectorColumn
         if len(speeds) == 1 and isinstance(speeds[0], (sm.MatrixBase, list, tuple)):
             speeds = tuple(speeds[0])
         if not speeds:
@@ -535,14 +540,15 @@ class Model(AlgebraMixin, IOMixin):
         return eqs
 
     # the equations, in the forms sympy users know ---------------------------------------
-    def _equations(self) -> KaneEquations:
+    def equations(self) -> KaneEquations:
+        """Kane's equations: those KANE() took, else formed from the model as it stands."""
         if self.kane_equations is None:
             return self.kane()
         return self.kane_equations
 
     @property
     def speeds(self) -> list:
-        return self._equations().speeds
+        return self.equations().speeds
 
     @property
     def speed_derivatives(self) -> list:
@@ -577,7 +583,7 @@ class Model(AlgebraMixin, IOMixin):
     @property
     def mass_matrix(self) -> sm.Matrix:
         """M in M*u' = forcing (independent speeds; Z-named entries)."""
-        eqs = self._equations()
+        eqs = self.equations()
         rows = eqs.rows[:len(eqs.speeds), 0]
         ud = self.speed_derivatives
         jac = self.defs.jacobian(rows, ud)
@@ -585,7 +591,7 @@ class Model(AlgebraMixin, IOMixin):
 
     @property
     def forcing(self) -> sm.Matrix:
-        eqs = self._equations()
+        eqs = self.equations()
         rows = eqs.rows[:len(eqs.speeds), 0]
         zero = {u: 0 for u in self.speed_derivatives}
         return sm.Matrix([self.defs.substitute(e, zero) for e in rows])
@@ -616,12 +622,10 @@ class Model(AlgebraMixin, IOMixin):
     def symbolic_system(self, form: str = "combined"):
         """A sympy SymbolicSystem ('explicit', 'combined' or 'separate'), in
         dynamicsymbols with every definition expanded."""
-        from .interop import symbolic_system
         return symbolic_system(self, form)
 
     def to_sympy(self, value):
         """An expression, matrix or vector as plain sympy (dynamicsymbols, expanded)."""
-        from .interop import to_sympy_expr, to_sympy_vector
         if isinstance(value, Vector):
             return to_sympy_vector(value)
         return to_sympy_expr(self, value)
@@ -710,7 +714,6 @@ class Model(AlgebraMixin, IOMixin):
 
     def inertia_of(self, point: Point, *items) -> Dyadic:
         """INERTIA(O[, B...]): inertia dyadic about O of the system (or listed items)."""
-        from .point import point_mass_inertia
         n = self._some_frame()
         total = Dyadic()
         for it in self._items(items):
@@ -723,7 +726,6 @@ class Model(AlgebraMixin, IOMixin):
 
     def particle_inertia(self, particle: Particle, point: Point) -> Dyadic:
         """I_P_O>>: inertia dyadic of particle P about point O."""
-        from .point import point_mass_inertia
         return point_mass_inertia(self._particle_mass(particle), particle.pos_from(point),
                                   self._some_frame())
 
@@ -735,7 +737,6 @@ class Model(AlgebraMixin, IOMixin):
 
     def unit_dyadic(self) -> Dyadic:
         """1>>: the unit dyadic (the same in every frame's basis)."""
-        from .vector import UnitDyadic
         return UnitDyadic(self._some_frame())
 
     def mass_of(self, *items):

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 
 import sympy as sm
 
+from .interop import to_sympy_point
 from .vector import AutolevModelError, Dyadic, Frame, Vector, _vector, outer
 
 if TYPE_CHECKING:
@@ -193,7 +194,6 @@ class Point:
         return a
 
     def to_sympy(self):
-        from .interop import to_sympy_point
         return to_sympy_point(self)
 
 

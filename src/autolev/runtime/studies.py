@@ -20,11 +20,14 @@ import pickle
 import sys
 import threading
 import time
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 
 from .errors import AutolevModelError
+from .io import INTEGRATION_PARAMETERS
+from .numerics.run import names_a_quantity, run_command
 
 STUDIES = ("linearize", "simulate")
 # options a study passes on: Model.linearize's and Model.simulate's keywords
@@ -127,9 +130,8 @@ def _evaluate(model, what: str, point: dict, options: dict, collect) -> dict:
         if what == "linearize":
             found = model.linearize(point, **options)
         else:
-            from .numerics.run import run_command
             opts = dict(options)
-            command = model._command_to_run(opts.pop("code", None))
+            command = model.command_to_run(opts.pop("code", None))
             # the rows only when `collect` may want them: memory stays flat otherwise
             found = run_command(model, command, overrides=point,
                                 keep_rows=collect is not None, **opts)
@@ -187,7 +189,6 @@ def _on_local_cores(model, workers, what, rows, options, collect, chunk_size, re
     rest = rows[len(results):]
     if not rest:
         return results
-    from concurrent.futures import ProcessPoolExecutor
     chunks = _chunks(rest, chunk_size or max(1, min(64, len(rest) // (4 * count))))
     _FORKED["model"] = model
     try:
@@ -277,8 +278,6 @@ def _as_points(points) -> list:
 
 
 def _check_names(model, rows: list, what: str) -> None:
-    from .io import INTEGRATION_PARAMETERS
-    from .numerics.run import names_a_quantity
     names = {name for row in rows for name in row}
     unknown = sorted(n for n in names if not names_a_quantity(model, n)
                      and not (what == "simulate" and n.upper() in INTEGRATION_PARAMETERS))

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 import sympy as sm
 
 from .errors import AutolevModelError
+from .interop import to_sympy_frame, to_sympy_vector
 from .symbols import TIME
 
 if TYPE_CHECKING:
@@ -244,7 +245,6 @@ class Vector:
 
     def to_sympy(self, frames: dict | None = None):
         """sympy.physics.vector.Vector (frames mapped by `frames`, else made)."""
-        from .interop import to_sympy_vector
         return to_sympy_vector(self, frames)
 
 
@@ -688,6 +688,10 @@ class Frame:
         self._w_user.add(other)
         other._w_user.add(self)
 
+    def oriented_neighbours(self) -> list["Frame"]:
+        """The frames whose orientation relative to this one the model gave directly."""
+        return list(self._dcm_edges)
+
     def ang_vel_assigned(self, other: "Frame") -> bool:
         """Whether the model assigned W_self_other> (or W_other_self>) itself."""
         return other in self._w_user
@@ -746,7 +750,6 @@ class Frame:
         return alf
 
     def to_sympy(self):
-        from .interop import to_sympy_frame
         return to_sympy_frame(self)
 
 

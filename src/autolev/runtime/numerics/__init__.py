@@ -1,5 +1,3 @@
 """Numerics of Autolev's CODE commands: compiled functions, integration on Autolev's
-print schedule, its input and output files."""
-from .run import OutputTable, Result, run_command
-
-__all__ = ["OutputTable", "Result", "run_command"]
+print schedule, its input and output files.  Each stage is its own module
+(run.py drives them); the package imports none of them, so a stage loads alone."""

@@ -107,7 +107,7 @@ class CompiledLoop:
         self.m = len(unknown_pos)
         self._upos = np.ascontiguousarray(unknown_pos, dtype=np.intc)
         self._w = work
-        self._out = np.zeros(max(1, nout))
+        self.out_buffer = np.zeros(max(1, nout))
         self._lu = np.zeros(max(1, self.m * self.m))
         self._b = np.zeros(max(1, self.m))
         self.yfail = np.zeros(max(1, nstate))
@@ -117,7 +117,7 @@ class CompiledLoop:
         ctx.n, ctx.m = nstate, self.m
         ctx.upos = self._upos.ctypes.data
         ctx.w = work.ctypes.data
-        ctx.out = self._out.ctypes.data
+        ctx.out = self.out_buffer.ctypes.data
         ctx.lu = self._lu.ctypes.data
         ctx.b = self._b.ctypes.data
         ctx.yfail = self.yfail.ctypes.data
@@ -130,7 +130,7 @@ class CompiledLoop:
         fn.argtypes = [_P, ctypes.c_int, _P, _P, _P, ctypes.c_int, _P, _P, _P, _P, _P, _P]
         fn.restype = ctypes.c_int
         self._integrate = fn
-        self._addr = ctypes.addressof(ctx)
+        self.context_address = ctypes.addressof(ctx)
         self._py = None
         if hasattr(lib, "PyInit__autolev_rhs"):
             module = _load_extension(lib._name)
@@ -148,7 +148,7 @@ class CompiledLoop:
         """(x', status): status 0, or SINGULAR (then self.yfail is x)."""
         if self._py is not None:
             try:
-                xdot = self._py(self._addr, t, x)
+                xdot = self._py(self.context_address, t, x)
             except (TypeError, ValueError):
                 pass       # not a contiguous float64 array (scipy's Jacobian columns
                 #            are strided views): converted, as below

@@ -12,7 +12,6 @@ from __future__ import annotations
 import atexit
 import ctypes
 import hashlib
-import math
 import os
 import shutil
 import subprocess
@@ -26,7 +25,7 @@ import sympy as sm
 
 from ..calculus import Definitions
 from ..errors import AutolevModelError
-from .printer import CodePrinter
+from ..printer import MATH_ERRORS, CodePrinter, fast_namespace, safe_namespace
 
 
 def _factor_out(add):
@@ -184,52 +183,13 @@ def python_source(prog: Program, name: str = "compute") -> str:
     return "\n".join(lines) + "\n"
 
 
-def _sign(x):
-    return (x > 0) - (x < 0)
-
-
-def _heaviside(x):
-    return 1.0 if x > 0 else (0.5 if x == 0 else 0.0)
-
-
-def _trunc(x):
-    return float(math.trunc(x))
-
-
-def _round(x):
-    # C's round: halves away from zero (x - trunc(x) is exact in double precision)
-    t = float(math.trunc(x))
-    return t + math.copysign(1.0, x) if abs(x - t) >= 0.5 else t
-
-
-def _np_round(x):
-    t = np.trunc(x)
-    return t + np.copysign(1.0, x) * (np.abs(x - t) >= 0.5)
-
-
-class _NumpyMath:
-    """`math` for the fallback evaluation: numpy's functions, which give inf and nan
-    where math raises (as the C code does)."""
-
-    def __getattr__(self, name):
-        if name in ("gamma", "erf"):
-            import scipy.special
-            return getattr(scipy.special, name)
-        return getattr(np, {"fabs": "abs", "atan2": "arctan2", "asin": "arcsin",
-                            "acos": "arccos", "atan": "arctan", "asinh": "arcsinh",
-                            "acosh": "arccosh", "atanh": "arctanh"}.get(name, name))
-
-
-_MATH_ERRORS = (ZeroDivisionError, ValueError, OverflowError, TypeError)
-
-
 def compile_python(prog: Program, name: str = "compute"):
     """A Python function for the program: math-module speed, and where Python raises
     (division by zero, a domain error, a complex power) the same code evaluated with
     numpy scalars, which gives inf or nan like compiled C."""
     source = python_source(prog, name)
     code = compile(source, f"<autolev generated {name}>", "exec")
-    fast_ns, safe_ns = _fast_namespace(), _safe_namespace()
+    fast_ns, safe_ns = fast_namespace(), safe_namespace()
     exec(code, fast_ns)
     exec(code, safe_ns)
     fast, safe = fast_ns[name], safe_ns[name]
@@ -238,36 +198,11 @@ def compile_python(prog: Program, name: str = "compute"):
     def call(*arrays):
         try:
             return fast(*arrays)
-        except _MATH_ERRORS:
+        except MATH_ERRORS:
             with np.errstate(all="ignore"):
                 args = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
                 return safe(*args, arrays[n_in])
     return call, source
-
-
-def _np_heaviside(x):
-    return np.heaviside(x, 0.5)
-
-
-def _fast_namespace() -> dict:
-    return {"math": math, "_sign": _sign, "_heaviside": _heaviside, "_trunc": _trunc,
-            "_round": _round}
-
-
-def _safe_namespace() -> dict:
-    return {"math": _NumpyMath(), "_sign": np.sign, "_heaviside": _np_heaviside,
-            "_trunc": np.trunc, "_round": _np_round}
-
-
-def number_value(expr) -> float:
-    """A closed-form number (no symbols) in double precision, computed as the generated
-    code computes it: inf or nan where that overflows or is undefined."""
-    code = compile(CodePrinter("python", {})(expr), "<autolev number>", "eval")
-    try:
-        return float(eval(code, _fast_namespace()))
-    except _MATH_ERRORS:
-        with np.errstate(all="ignore"):
-            return float(eval(code, _safe_namespace()))
 
 
 # -- C ---------------------------------------------------------------------------------

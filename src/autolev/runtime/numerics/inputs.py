@@ -21,10 +21,10 @@ from pathlib import Path
 
 import sympy as sm
 
+from .. import units
 from ..errors import AutolevModelError
-from . import units
+from ..io import INTEGRATION_PARAMETERS as INTEGRATION
 
-INTEGRATION = ("TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR")
 DEFAULTS = {"TINITIAL": 0.0, "TFINAL": 1.0, "INTEGSTP": 0.1, "PRINTINT": 1,
             "ABSERR": 1.0e-8, "RELERR": 1.0e-7}
 DESCRIPTIONS = {"TINITIAL": "Initial Time", "TFINAL": "Final Time",

@@ -29,6 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.integrate
 
+from . import cloop
+
 SCIPY_METHODS = {"rk45": "RK45", "dop853": "DOP853", "radau": "Radau", "bdf": "BDF",
                  "lsoda": "LSODA", "rk23": "RK23"}
 METHODS = ("kutta-merson",) + tuple(SCIPY_METHODS)
@@ -408,7 +410,6 @@ def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, 
 
 def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, progress,
                         on_stiff) -> dict:
-    from . import cloop
     t0 = schedule.tinitial
     opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
             "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives}

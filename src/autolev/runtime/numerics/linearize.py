@@ -30,6 +30,7 @@ from .. import symbols as S
 from ..errors import AutolevModelError
 from . import codegen
 from .inputs import display_name
+from .projection import Projector
 from .run import prepare_command
 from .system import NumericSystem, compile_program
 
@@ -134,7 +135,7 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
             "the equations of motion are not finite at the operating point: the "
             f"derivatives of {', '.join(bad)} (or their partial derivatives) are "
             "infinite or undefined there (a division by zero: a mass or an inertia of 0?)")
-    lin.point = {display_name(p): float(v) for p, v in zip(system.params, system._c)}
+    lin.point = {display_name(p): float(v) for p, v in zip(system.params, system.constant_values)}
     lin.point.update({display_name(x): float(v) for x, v in zip(system.states, x0)})
     lin.point.update({display_name(s): float(v) for s, v in zip(system.specified, s0)})
     lin.outputs = [c.label for cols in system.files for c in cols]
@@ -186,7 +187,7 @@ def linearize_symbolic(model, command, point=None, inputs=None, locked=None,
         if n:
             dyn = [explicit(e) for e in system.rhs_exprs[nx:nx + n * n + n]]
             mass, forcing = sm.Matrix(n, n, dyn[:n * n]), sm.Matrix(dyn[n * n:])
-            for pos, a in zip(system._unknown_pos, mass.LUsolve(forcing)):
+            for pos, a in zip(system.unknown_positions, mass.LUsolve(forcing)):
                 rates[pos] = a
     fixed = {k: sm.S.Zero for k in system.aux_fixed}
     f = sm.Matrix(rates).xreplace(fixed)
@@ -205,7 +206,6 @@ class _ConfigurationConstraints:
     the dependent coordinates and reduces a linearization to the independent ones."""
 
     def __init__(self, system, constraints, t0: float, x0, extra_values, dependent):
-        from .projection import Projector
         self.projector = Projector(system, constraints, t0, x0, extra_values)
         self.names = [display_name(x) for x in system.states]
         g, jac = self.projector.residual_and_jacobian(t0, np.asarray(x0, dtype=float))
@@ -276,7 +276,7 @@ def _with_kanes_equations(model, command):
     """`command` with the speeds' derivatives undefined again where SOLVE(ZERO, U')
     defined them, so the program solves Kane's equations (which locking can cut down);
     one object per command, so its numeric system is built once."""
-    kept = model.__dict__.setdefault("_unsolved_commands", {})
+    kept = model.derived.table("commands solving Kane's equations")
     entry = kept.get(id(command))
     if entry is not None and entry[0] is command:
         return entry[1]
@@ -347,7 +347,7 @@ def _jacobian_functions(system, chosen: list, n_columns: int, backend: str) -> _
 def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linearization:
     nx, nv, n = system.nstate, system.nstate + len(chosen), len(system.implicit_unknowns)
     out = np.empty(jac.n_rhs * (1 + nv))
-    jac.rhs.call(np.array([t0]), x0, system._c, s0, out)
+    jac.rhs.call(np.array([t0]), x0, system.constant_values, s0, out)
     values, grads = out[:jac.n_rhs], out[jac.n_rhs:].reshape(jac.n_rhs, nv)
     rates = values[:nx].copy()
     jrates = grads[:nx].copy()
@@ -369,13 +369,13 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
         accelerations = scipy.linalg.lu_solve(lu, forcing)
         daccel = scipy.linalg.lu_solve(lu, dforcing - np.einsum("ijk,j->ik", dmass,
                                                                 accelerations))
-        rates[system._unknown_pos] = accelerations
-        jrates[system._unknown_pos] = daccel
+        rates[system.unknown_positions] = accelerations
+        jrates[system.unknown_positions] = daccel
     else:
         daccel = np.zeros((0, nv))
     ny = jac.n_out
     jy = np.empty(ny * (nv + n))
-    jac.outputs.call(np.array([t0]), x0, system._c, s0, accelerations, jy)
+    jac.outputs.call(np.array([t0]), x0, system.constant_values, s0, accelerations, jy)
     jy = jy.reshape(ny, nv + n)
     through_accelerations = jy[:, nv:nv + n] @ daccel if n else np.zeros((ny, nv))
     jout = jy[:, :nv] + through_accelerations
@@ -389,7 +389,7 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
 def _speed_positions(system) -> list:
     """The states that are speeds: those Kane's equations give the rates of, and those
     that are the rate of another state (Q' = U makes U a speed, Q' one in X'' = ...)."""
-    positions = set(system._unknown_pos)
+    positions = set(system.unknown_positions)
     index = {x: k for k, x in enumerate(system.states)}
     for expr in system.rhs_exprs[:system.nstate]:
         if expr in index:

@@ -17,6 +17,7 @@ from .. import symbols as S
 from ..errors import AutolevModelError
 from . import codegen
 from .integrate import IntegrationFailure, Schedule, integrate
+from .system import alphabetical, compile_program
 
 
 class Projector:
@@ -41,10 +42,10 @@ class Projector:
                   "s": system.specified}
         prog = codegen.Program(inputs, exprs + [d for row in jac for d in row], m.defs,
                                dict(system.aux_fixed)).build()
-        from .system import compile_program
         self.function = compile_program(prog, system.backend, "autolev_constraints")
         self.system = system
-        self._c = np.concatenate([system._c, np.asarray(extra_values, dtype=float)])
+        self._c = np.concatenate([system.constant_values,
+                                  np.asarray(extra_values, dtype=float)])
         self.k = len(exprs)
         self.n = len(states)
         self.max_iter = max_iter
@@ -53,7 +54,7 @@ class Projector:
 
     def residual_and_jacobian(self, t, x):
         out = np.empty(self.k + self.k * self.n)
-        self.function.call(np.array([t]), x, self._c, self.system._s, out)
+        self.function.call(np.array([t]), x, self._c, self.system.specified_values, out)
         return out[:self.k], out[self.k:].reshape(self.k, self.n)
 
     def __call__(self, t: float, x: np.ndarray) -> np.ndarray:
@@ -78,11 +79,10 @@ def _expressions(constraints) -> list:
 def constants_needed(system, constraints) -> list:
     """Constants the constraints use that the equations of motion do not (their
     values are inputs of the run too), in alphabetical order."""
-    from .system import alphabetical
     exprs = _expressions(constraints)
     given = set(system.states) | {S.TIME} | set(system.aux_fixed) | set(system.params)
-    _, undefined = system._needed(exprs, given)
-    return alphabetical(s for s in undefined if not system._is_specified(s))
+    _, undefined = system.needed(exprs, given)
+    return alphabetical(s for s in undefined if not system.is_specified(s))
 
 
 def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_row,

@@ -20,9 +20,10 @@ import scipy.linalg
 import sympy as sm
 
 from .. import symbols as S
+from .. import units
+from ..calculus import NumericPoint
 from ..errors import AutolevModelError, MissingValues
 from ..vector import Vector
-from . import units
 from .files import RunFiles, dir_text, encoded_text, safe_stem, termination_cleans_up
 from .inputs import INTEGRATION, Inputs, display_name, some_names
 from .integrate import IntegrationFailure, Progress, Schedule, integrate
@@ -285,13 +286,13 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
     build_start = time.perf_counter()
     # the numeric system of a command is built once per state of the model (repeated
     # simulate() calls with other inputs reuse its compiled functions)
-    cache = model.__dict__.setdefault("_numeric_systems", {})
-
-    def state_key():
-        return (backend, model._version, model.defs.user_version, id(model.kane_equations),
-                len(model.outputs), len(model.encoded), quirks, tuple(locked))
+    def systems():
+        state = (model.version, model.defs.user_version, id(model.kane_equations),
+                 len(model.outputs), len(model.encoded))
+        return model.derived.table("numeric systems", state)
+    key = (id(command), backend, quirks, tuple(locked))
     # the command itself is kept with its system: an id() alone may be reused
-    entry = cache.get(state_key())
+    entry = systems().get(key)
     system = entry[1] if entry is not None and entry[0] is command else None
     prepared = []
     if system is None:
@@ -304,8 +305,7 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
                 zero=command.zero if kind == "dynamics" else None,
                 hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
                 before_compiling=lambda s: prepared.append(inputs_of(s)), locked=locked)
-        cache.clear()
-        cache[state_key()] = (command, system)      # after the build: it may form KANE
+        systems()[key] = (command, system)      # after the build: it may form KANE
     inputs, kinds, names, extra_constants = prepared[0] if prepared else inputs_of(system)
     build_seconds = time.perf_counter() - build_start
     if system.hidden_in_outputs:
@@ -320,7 +320,7 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
     if unused:
         raise AutolevModelError("specified: " + "; ".join(
             _unused_specified(model, system, sym) for sym in unused))
-    given_fns = {i for i, _ in system._spec_fns}
+    given_fns = {i for i, _ in system.specified_functions}
     unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
     if unassigned and warn_unassigned:
         warnings.warn("specified quantities without a definition or a function, set to 0: "
@@ -541,7 +541,6 @@ def _inertia_problems(system, inputs, zero: bool = True) -> list[str]:
     """Bodies and particles whose mass (or a principal inertia) is negative or not a
     number (and, with `zero`, zero) with these inputs: what makes a mass matrix
     singular or meaningless."""
-    from ..calculus import NumericPoint
     m = system.model
     values = {p: inputs.internal(p) for p in system.params}
     point = NumericPoint(m.defs, values)
@@ -755,7 +754,7 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
     start = time.perf_counter()
     abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
     try:
-        loop = system.loop if compiled and not system._spec_fns else None
+        loop = system.loop if compiled and not system.specified_functions else None
         on_stiff = _on_stiff if method == "dop853" else None
         _loose_tolerance_note(method.lower(), relerr)
         if constraints:

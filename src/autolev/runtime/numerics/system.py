@@ -24,8 +24,9 @@ import numpy as np
 import sympy as sm
 
 from .. import symbols as S
+from .. import units
 from ..errors import AutolevModelError
-from . import codegen, units
+from . import codegen
 from .cloop import CompiledLoop
 from .cloop import extra_source as loop_extra_source
 
@@ -153,9 +154,9 @@ class NumericSystem:
         exprs = [sm.sympify(e) for e in rhs_exprs + out_exprs]
         for v in extra.values():
             exprs += v
-        order, undefined = self._needed(exprs, given)
-        self.specified = alphabetical(s for s in undefined if self._is_specified(s))
-        params = [s for s in undefined if not self._is_specified(s)]
+        order, undefined = self.needed(exprs, given)
+        self.specified = alphabetical(s for s in undefined if self.is_specified(s))
+        params = [s for s in undefined if not self.is_specified(s)]
         self.params = (alphabetical(params) if integrate
                        else _derivative_order_then_name(params))
         pset = set(self.params)
@@ -183,7 +184,7 @@ class NumericSystem:
         out_backend = backend if integrate else "python"
         self.rhs_function = None
         self.loop = None
-        self._unknown_pos = [self.states.index(_lower(d)) for d in unknowns]
+        self.unknown_positions = [self.states.index(_lower(d)) for d in unknowns]
         if self.nstate:
             # the C right-hand side carries the integration loop (loop.c) with it
             loop_source, loop_flags = loop_extra_source()
@@ -192,7 +193,7 @@ class NumericSystem:
                 "autolev_rhs", extra_source=loop_source, extra_flags=loop_flags)
             if self.rhs_function.backend == "c":
                 call = self.rhs_function.call
-                self.loop = CompiledLoop(call.lib, self.nstate, self._unknown_pos,
+                self.loop = CompiledLoop(call.lib, self.nstate, self.unknown_positions,
                                          call.work, len(rhs_exprs))
         inputs_out = dict(inputs, a=accel_inputs)
         self.output_function = compile_program(
@@ -205,10 +206,10 @@ class NumericSystem:
         self._rhs_out = np.empty(len(rhs_exprs))
         # the CPython entry point of the compiled right-hand side, when there is one
         self._py = self.loop._py if self.loop is not None else None
-        self._py_ctx = self.loop._addr if self.loop is not None else None
-        self._c = None
-        self._s = np.zeros(len(self.specified))
-        self._spec_fns: list = []
+        self._py_ctx = self.loop.context_address if self.loop is not None else None
+        self.constant_values = None
+        self.specified_values = np.zeros(len(self.specified))
+        self.specified_functions: list = []
 
     # -- structure ------------------------------------------------------------------------
     def _integrated(self, implicit) -> tuple[dict, list, list]:
@@ -235,7 +236,7 @@ class NumericSystem:
                 speeds = m.generalized_speeds()[0]
             pending = [u for u in speeds if S.derivative(u) not in defs.rhs]
             if pending or self.locked:
-                eqs = m._equations()
+                eqs = m.equations()
                 if set(eqs.speeds) != set(pending):
                     raise AutolevModelError(
                         "the derivatives of some speeds are defined (SOLVE) and others "
@@ -318,7 +319,7 @@ class NumericSystem:
         print that), except in what the derivative (or equations) routine computed
         before and the output routine reuses."""
         roots = [sm.sympify(e) for e in rhs_exprs] + [e for v in extra.values() for e in v]
-        shared, _ = self._needed(roots, given) if roots else ([], set())
+        shared, _ = self.needed(roots, given) if roots else ([], set())
         keep = frozenset(shared)
         zero = {s: sm.S.Zero for s in self.hidden_in_outputs}
         changed = [self.model.defs.substitute(e, zero, keep) for e in out_exprs]
@@ -326,10 +327,10 @@ class NumericSystem:
             self.hidden_in_outputs = []          # no output reads them
         return changed
 
-    def _is_specified(self, s) -> bool:
+    def is_specified(self, s) -> bool:
         return self.model.kind_of(S.base_and_order(s)[0]) == "specified"
 
-    def _needed(self, exprs, given) -> tuple[list, set]:
+    def needed(self, exprs, given) -> tuple[list, set]:
         defs = self.model.defs
         roots = set()
         for e in exprs:
@@ -352,7 +353,7 @@ class NumericSystem:
                 base, k = S.base_and_order(s)
                 if k == 0 or s in defs.rhs or s in self.implicit_unknowns \
                         or s in self.aux_fixed or s in self.states or s in self.solved \
-                        or self._is_specified(s):
+                        or self.is_specified(s):
                     continue
                 lower = S.derivative(base, k - 1)
                 if lower in self.states or lower in defs.rhs:
@@ -366,7 +367,7 @@ class NumericSystem:
         """The constants `exprs` need that this run has no value for (the run's inputs
         are only what its equations and outputs use)."""
         exprs = [self._resolve(e) for e in exprs]
-        _, undefined = self._needed(exprs, set(self.states) | {S.TIME} | set(self.aux_fixed))
+        _, undefined = self.needed(exprs, set(self.states) | {S.TIME} | set(self.aux_fixed))
         known = set(self.params) | set(self.specified)
         return alphabetical(s for s in undefined if s not in known)
 
@@ -389,8 +390,10 @@ class NumericSystem:
 
         def evaluate(t: float, x) -> np.ndarray:
             out = np.empty(len(exprs))
-            s = self._fill_specified(t, x) if self._spec_fns else self._s
-            fn.call(np.array([t]), np.asarray(x, dtype=float), self._c, s, extra_array, out)
+            s = self._fill_specified(t, x) if self.specified_functions \
+                else self.specified_values
+            fn.call(np.array([t]), np.asarray(x, dtype=float), self.constant_values, s,
+                    extra_array, out)
             return out
         return evaluate
 
@@ -401,26 +404,26 @@ class NumericSystem:
         cd = np.empty(len(self.constant_defs))
         if len(cd):
             self.constants_function.call(p, cd)
-        self._c = np.concatenate([p, cd])
+        self.constant_values = np.concatenate([p, cd])
         if self.loop is not None:
-            self.loop.set_values(self._c, self._s)
+            self.loop.set_values(self.constant_values, self.specified_values)
 
     def set_specified(self, functions: dict) -> set:
         """{symbol: callable f(t) or f(t, x)} for undefined specified quantities;
         returns the symbols used (a derivative's values come from its lower one's)."""
-        self._spec_fns = []
+        self.specified_functions = []
         used = set()
         for i, s in enumerate(self.specified):
             fn = functions.get(s)
             if fn is not None:
-                self._spec_fns.append((i, _as_time_state_function(fn)))
+                self.specified_functions.append((i, _as_time_state_function(fn)))
                 used.add(s)
             else:
                 base, k = S.base_and_order(s)
                 lower = [(S.derivative(base, j), j) for j in range(k - 1, -1, -1)]
                 for low, j in lower:
                     if low in functions:
-                        self._spec_fns.append(
+                        self.specified_functions.append(
                             (i, _finite_difference(_as_time_state_function(functions[low]),
                                                    k - j)))
                         used.add(low)
@@ -428,14 +431,14 @@ class NumericSystem:
         return used
 
     def _fill_specified(self, t, x) -> np.ndarray:
-        s = self._s
-        for i, fn in self._spec_fns:
+        s = self.specified_values
+        for i, fn in self.specified_functions:
             s[i] = fn(t, x)
         return s
 
     def derivatives(self, t: float, x: np.ndarray) -> np.ndarray:
         """State derivatives at (t, x): a fresh array."""
-        if self._spec_fns:
+        if self.specified_functions:
             self._fill_specified(t, x)
         elif self._py is not None:      # loop.derivatives inlined: the common case, in
             #                             as few Python calls as possible
@@ -447,21 +450,21 @@ class NumericSystem:
                 if xdot is None:
                     raise SingularMassMatrix(t)
                 return xdot
-        s = self._s
+        s = self.specified_values
         if self.loop is not None:
             xdot, status = self.loop.derivatives(t, x)
             if status:
                 raise SingularMassMatrix(t)
             return xdot
         out = self._rhs_out
-        self.rhs_function.call(np.array([t]), x, self._c, s, out)
+        self.rhs_function.call(np.array([t]), x, self.constant_values, s, out)
         ns = self.nstate
         xdot = out[:ns].copy()
         n = self._n
         if n:
             mm = out[ns:ns + n * n].reshape(n, n)
             f = out[ns + n * n:ns + n * n + n]
-            xdot[self._unknown_pos] = solve_mass_matrix(mm, f, t)
+            xdot[self.unknown_positions] = solve_mass_matrix(mm, f, t)
         return xdot
 
     def last_mass_matrix(self) -> np.ndarray | None:
@@ -470,7 +473,7 @@ class NumericSystem:
         n, ns = self._n, self.nstate
         if not n:
             return None
-        out = self.loop._out if self.loop is not None else self._rhs_out
+        out = self.loop.out_buffer if self.loop is not None else self._rhs_out
         return np.array(out[ns:ns + n * n]).reshape(n, n)
 
     def _accel_inputs(self, t, x, xdot, solved) -> np.ndarray:
@@ -481,7 +484,7 @@ class NumericSystem:
                     xdot = self.derivatives(t, x)
                 except SingularMassMatrix:          # outputs that need them are NaN
                     xdot = np.full(self.nstate, np.nan)
-            parts.append(xdot[self._unknown_pos])
+            parts.append(xdot[self.unknown_positions])
         if self.solved:
             parts.append(np.asarray(solved, dtype=float))
         return np.concatenate(parts) if parts else np.zeros(0)
@@ -489,9 +492,9 @@ class NumericSystem:
     def _call(self, fn, size, t, x, xdot=None, solved=()) -> np.ndarray:
         x = np.asarray(x, dtype=float)
         a = self._accel_inputs(t, x, xdot, solved)
-        s = self._fill_specified(t, x) if self._spec_fns else self._s
+        s = self._fill_specified(t, x) if self.specified_functions else self.specified_values
         out = np.empty(size)
-        fn.call(np.array([t]), x, self._c, s, a, out)
+        fn.call(np.array([t]), x, self.constant_values, s, a, out)
         return out
 
     def outputs(self, t: float, x=(), xdot=None, solved=()) -> np.ndarray:

@@ -1,9 +1,8 @@
-"""Helpers for equation tests: load an example once, evaluate its expressions at
+"""Helpers for equation tests: load an example, evaluate its expressions at
 random states through the model's definitions, and build the same system with
 sympy for an independent derivation."""
 from __future__ import annotations
 
-import functools
 import random
 
 import sympy as sm
@@ -11,11 +10,11 @@ import sympy as sm
 import autolev
 from autolev.runtime.calculus import NumericPoint
 from autolev.runtime.symbols import derivative
-from conftest import EXAMPLES
+from helpers import EXAMPLES
 
 
-@functools.lru_cache(maxsize=None)
 def example(name: str):
+    """A fresh model of autolev_examples (tests may change it: none is shared)."""
     return autolev.load(EXAMPLES / f"{name}.al")
 
 

@@ -5,13 +5,18 @@ sympy's code printers sort the terms of every sum and dispatch per node through
 several layers; on a gait model's thousands of long expressions that is minutes.  This
 printer walks each expression once, in sympy's argument order, and prints numbers as
 the shortest decimal that round-trips (exactly the double the other language reads).
+The namespace the printed Python runs in, and closed-form numbers evaluated through
+it (INT, ROUND of a number), are here too.
 """
 from __future__ import annotations
 
+import math
+
+import numpy as np
 import sympy as sm
 from sympy.core.numbers import NumberSymbol
 
-from ..errors import AutolevModelError
+from .errors import AutolevModelError
 
 _C_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
             "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
@@ -215,3 +220,71 @@ class CodePrinter:
     def _relational(self, e):
         op = {"<": "<", "<=": "<=", ">": ">", ">=": ">=", "==": "==", "!=": "!="}[e.rel_op]
         return f"({self._p(e.lhs)[0]} {op} {self._p(e.rhs)[0]})", _ATOM
+
+
+# -- the namespace printed Python runs in ---------------------------------------------
+def _sign(x):
+    return (x > 0) - (x < 0)
+
+
+def _heaviside(x):
+    return 1.0 if x > 0 else (0.5 if x == 0 else 0.0)
+
+
+def _trunc(x):
+    return float(math.trunc(x))
+
+
+def _round(x):
+    # C's round: halves away from zero (x - trunc(x) is exact in double precision)
+    t = float(math.trunc(x))
+    return t + math.copysign(1.0, x) if abs(x - t) >= 0.5 else t
+
+
+def _np_round(x):
+    t = np.trunc(x)
+    return t + np.copysign(1.0, x) * (np.abs(x - t) >= 0.5)
+
+
+class _NumpyMath:
+    """`math` for the fallback evaluation: numpy's functions, which give inf and nan
+    where math raises (as the C code does)."""
+
+    def __getattr__(self, name):
+        if name in ("gamma", "erf"):
+            import scipy.special
+            return getattr(scipy.special, name)
+        return getattr(np, {"fabs": "abs", "atan2": "arctan2", "asin": "arcsin",
+                            "acos": "arccos", "atan": "arctan", "asinh": "arcsinh",
+                            "acosh": "arccosh", "atanh": "arctanh"}.get(name, name))
+
+
+# what the math module raises where C gives inf or nan
+MATH_ERRORS = (ZeroDivisionError, ValueError, OverflowError, TypeError)
+
+
+def _np_heaviside(x):
+    return np.heaviside(x, 0.5)
+
+
+def fast_namespace() -> dict:
+    """What the printed Python calls: the math module and C's sign, step, trunc, round."""
+    return {"math": math, "_sign": _sign, "_heaviside": _heaviside, "_trunc": _trunc,
+            "_round": _round}
+
+
+def safe_namespace() -> dict:
+    """The same names on numpy, which gives inf and nan where math raises (as C does)."""
+    return {"math": _NumpyMath(), "_sign": np.sign, "_heaviside": _np_heaviside,
+            "_trunc": np.trunc, "_round": _np_round}
+
+
+def number_value(expr) -> float:
+    """A closed-form number (no symbols) in double precision, computed as the generated
+    code computes it: inf or nan where that overflows or is undefined."""
+    code = compile(CodePrinter("python", {})(expr), "<autolev number>", "eval")
+    try:
+        return float(eval(code, fast_namespace()))
+    except MATH_ERRORS:
+        with np.errstate(all="ignore"):
+            return float(eval(code, safe_namespace()))

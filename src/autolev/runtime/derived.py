@@ -1,0 +1,21 @@
+"""What the numerics and interop derive from a model, kept while it stays valid."""
+from __future__ import annotations
+
+from collections.abc import Hashable
+
+
+class DerivedCache:
+    """Tables of derived things, each table valid for one state of the model: asking
+    for a table with another state drops what the old state derived."""
+
+    def __init__(self) -> None:
+        self._tables: dict[str, tuple[Hashable, dict]] = {}
+
+    def table(self, kind: str, state: Hashable = None) -> dict:
+        kept = self._tables.get(kind)
+        if kept is None or kept[0] != state:
+            kept = self._tables[kind] = (state, {})
+        return kept[1]
+
+    def clear(self) -> None:
+        self._tables.clear()

@@ -1,0 +1,56 @@
+"""The package's shape: its import graph (tools/import_graph.py) and its layers."""
+import importlib.util
+import sys
+
+import pytest
+
+from helpers import ROOT
+
+_spec = importlib.util.spec_from_file_location("import_graph", ROOT / "tools" / "import_graph.py")
+import_graph = importlib.util.module_from_spec(_spec)
+sys.modules["import_graph"] = import_graph
+_spec.loader.exec_module(import_graph)
+
+GRAPH = import_graph.import_graph()
+SYMBOLIC_ENGINE_TOP = {"autolev.runtime.model", "autolev.runtime.simulation",
+                       "autolev.runtime.studies", "autolev.runtime.algebra"}
+
+
+def _under(package: str) -> list[str]:
+    return [m for m in GRAPH if m == package or m.startswith(package + ".")]
+
+
+def test_the_graph_tool_sees_a_cycle_and_layers_a_chain():
+    graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}
+    assert import_graph.cycles(graph) == [["a", "b", "c"]]
+    chain = {"top": {"mid"}, "mid": {"low"}, "low": set()}
+    assert import_graph.layers(chain) == {"low": 0, "mid": 1, "top": 2}
+
+
+def test_the_graph_holds_function_level_imports_but_not_type_checking_ones():
+    # vector.py imports Model for type checking only; numerics/run.py is imported by
+    # simulation.py at module level
+    assert "autolev.runtime.model" not in GRAPH["autolev.runtime.vector"]
+    assert "autolev.runtime.numerics.run" in GRAPH["autolev.runtime.simulation"]
+
+
+def test_no_import_cycle_in_the_runtime():
+    runtime = {m: GRAPH[m] for m in _under("autolev.runtime")}
+    assert import_graph.cycles(runtime) == []
+
+
+@pytest.mark.parametrize("module", _under("autolev.runtime"))
+def test_runtime_never_imports_the_translator_or_the_parser(module):
+    outside = {m for m in GRAPH[module] if not m.startswith("autolev.runtime")}
+    assert outside <= {"autolev.errors"}, f"{module} imports {sorted(outside)}"
+
+
+@pytest.mark.parametrize("module", _under("autolev.runtime.numerics"))
+def test_numerics_sit_on_the_symbolic_engine_not_on_the_model(module):
+    above = GRAPH[module] & SYMBOLIC_ENGINE_TOP
+    assert not above, f"{module} imports {sorted(above)}"
+
+
+def test_kanes_method_is_apart_from_the_model():
+    assert "autolev.runtime.model" not in GRAPH["autolev.runtime.kane"]
+    assert "autolev.runtime.kane" in GRAPH["autolev.runtime.model"]
