@@ -157,23 +157,48 @@ def cmd_run(ns: argparse.Namespace) -> int:
     """Translate, build and run the model's CODE commands; write Autolev's files."""
     import time
 
-    from .runtime.errors import AutolevModelError
-    from .runtime.io import CodeCommand
-    from .runtime.numerics.integrate import METHODS
-    from .runtime.numerics.files import safe_stem
-    from .runtime.numerics.run import names_a_quantity, run_command
-
     path = Path(ns.file)
+    overrides = _run_overrides(ns)
+    if overrides is None:
+        return 2
+    start = time.monotonic()
+    model = _load_for_run(path)
+    if model is None:
+        print(f"{path}: not run", file=sys.stderr)
+        return 1
+    if not ns.quiet and (model.code_commands or ns.first_dynamics):
+        print(f"{path}: built in {time.monotonic() - start:.1f} s")
+    if not model.code_commands and not ns.first_dynamics:
+        # what Autolev showed for a model that writes no program: its responses
+        print(f"{path}: no CODE command: the responses Autolev displayed follow "
+              "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
+        return _print_transcript(path, None)
+    from .runtime.numerics.run import names_a_quantity
+    unknown = [name for name in overrides if not names_a_quantity(model, name)]
+    if unknown:
+        print(f"autolev run: --set {', '.join(unknown)}: the model has no quantity of "
+              f"{'that name' if len(unknown) == 1 else 'those names'}", file=sys.stderr)
+        return 2
+    commands = _commands_to_run(model, ns, path)
+    if isinstance(commands, int):
+        return commands
+    return _run_and_report(model, commands, overrides, ns, path)
+
+
+def _run_overrides(ns: argparse.Namespace) -> dict | None:
+    """--set and --tfinal as {NAME: value}, after checking --method and --plot; None
+    after printing what is wrong."""
+    from .runtime.numerics.integrate import METHODS
     if ns.method is not None and ns.method not in METHODS:
         print(f"autolev run: unknown --method {ns.method} (one of {', '.join(METHODS)})",
               file=sys.stderr)
-        return 2
+        return None
     overrides = {}
     for item in ns.set or []:
         name, sep, value = item.partition("=")
         if not sep or not name.strip():
             print(f"autolev run: --set expects NAME=VALUE, not {item!r}", file=sys.stderr)
-            return 2
+            return None
         overrides[name.strip()] = value.strip()
     if ns.tfinal is not None:
         overrides["TFINAL"] = ns.tfinal
@@ -183,102 +208,93 @@ def cmd_run(ns: argparse.Namespace) -> int:
         except ImportError:
             print("autolev run: --plot needs matplotlib (pip install 'autolev[plot]')",
                   file=sys.stderr)
-            return 2
-    start = time.monotonic()
-    model = _load_for_run(path)
-    if model is None:
-        print(f"{path}: not run", file=sys.stderr)
-        return 1
-    if not ns.quiet and (model.code_commands or ns.first_dynamics):
-        print(f"{path}: built in {time.monotonic() - start:.1f} s")
-    commands = list(model.code_commands)
-    locations = list(getattr(model, "code_locations", []))
-    if not commands and ns.first_dynamics:
+            return None
+    return overrides
+
+
+def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list | int:
+    """The CODE commands --code or --first-dynamics chose (all by default), or the
+    exit status after printing why there are none."""
+    from .runtime.errors import AutolevModelError
+    if not model.code_commands:
         print(f"{path}: no CODE command; animating it as CODE DYNAMICS", file=sys.stderr)
-        commands = [CodeCommand("dynamics", f"{path.stem}.c", [], None, (),
-                                n_outputs=len(model.outputs), n_encoded=len(model.encoded),
-                                inputs=dict(model.inputs), units=dict(model.unit_of))]
-    elif not commands:
-        # what Autolev showed for a model that writes no program: its responses
-        print(f"{path}: no CODE command: the responses Autolev displayed follow "
-              "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
-        return _print_transcript(path, None)
-    unknown = [name for name in overrides if not names_a_quantity(model, name)]
-    if unknown:
-        print(f"autolev run: --set {', '.join(unknown)}: the model has no quantity of "
-              f"{'that name' if len(unknown) == 1 else 'those names'}", file=sys.stderr)
-        return 2
-    chosen = list(range(len(commands)))
+        return [model.plain_dynamics()]
     if ns.code:
         try:
-            picked = {id(model.code_command(int(name) if name.isdigit() else name))
-                      for name in ns.code}
+            return model.commands_named([int(name) if name.isdigit() else name
+                                         for name in ns.code])
         except AutolevModelError as exc:
             print(f"autolev run: --code: {exc}", file=sys.stderr)
             return 2
-        chosen = [k for k, c in enumerate(commands) if id(c) in picked]
-    elif ns.first_dynamics:
-        chosen = [k for k, c in enumerate(commands) if c.kind in ("dynamics", "ode")][:1]
+    if ns.first_dynamics:
+        chosen = [c for c in model.code_commands if c.kind in ("dynamics", "ode")][:1]
         if not chosen:
             print(f"{path}: error: no CODE DYNAMICS or ODE to animate", file=sys.stderr)
             return 1
-    out_dir = Path(ns.out)
-    status = 0
+        return chosen
+    return list(model.code_commands)
+
+
+def _run_and_report(model, commands: list, overrides: dict, ns: argparse.Namespace,
+                    path: Path) -> int:
+    from .runtime.numerics.files import safe_stem
+    where = {id(c): w for c, w in zip(model.code_commands,
+                                      getattr(model, "code_locations", []))}
+
+    def label(command) -> str:
+        w = where.get(id(command))
+        return f"{w.start.file}:{w.start.line}" if w is not None else str(path)
     written_by: dict[str, str] = {}
-    for k in chosen:
-        command = commands[k]
-        where = locations[k] if k < len(locations) and locations[k] is not None else None
-        label = (f"{where.start.file}:{where.start.line}" if where is not None else str(path))
+    for command in commands:
         stem = safe_stem(command.filename).lower()
         if stem in written_by:
-            print(f"{label}: warning: CODE {command.filename} writes the same files "
-                  f"({safe_stem(command.filename)}.1, ...) as CODE {written_by[stem]}; "
+            print(f"{label(command)}: warning: CODE {command.filename} writes the same "
+                  f"files ({safe_stem(command.filename)}.1, ...) as CODE {written_by[stem]}; "
                   "its run replaces them (give --out per program to keep both)",
                   file=sys.stderr)
         written_by[stem] = command.filename
-        t0 = time.monotonic()
-        try:
-            result = run_command(model, command, out_dir=out_dir, method=ns.method,
-                                 backend=ns.backend, infile=ns.infile,
-                                 progress=None if ns.quiet else sys.stderr,
-                                 overrides=overrides, quirks=ns.quirks,
-                                 keep_rows=bool(ns.plot or ns.animate),
-                                 missing_values="zero" if ns.zero_missing else "refuse")
-        except AutolevModelError as exc:
-            text = str(exc)
-            if not text.startswith("CODE"):
-                text = f"CODE {command.kind.upper()}: {text}"
-            print(f"{label}: error: {text}", file=sys.stderr)
+    out_dir = Path(ns.out)
+    status = 0
+    runs = model.run_commands(
+        commands, out_dir, keep_going=True, method=ns.method, backend=ns.backend,
+        infile=ns.infile, progress=None if ns.quiet else sys.stderr, overrides=overrides,
+        quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate),
+        missing_values="zero" if ns.zero_missing else "refuse")
+    for done in runs:
+        if done.error is not None:
+            print(f"{label(done.command)}: error: {done.error}", file=sys.stderr)
             status = 1
             continue
-        elapsed = time.monotonic() - t0
-        if result.failure:
-            print(f"{label}: {result.failure}", file=sys.stderr)
+        if done.result.failure:
+            print(f"{label(done.command)}: {done.result.failure}", file=sys.stderr)
             status = 1
         if not ns.quiet:
-            stats = result.stats
-            what = (f"{stats.get('rows', 0)} rows" if result.kind in ("dynamics", "ode")
-                    else "solved" if result.kind != "algebraic" or result.solution
-                    else "evaluated")
-            print(f"CODE {command.kind.upper()} {command.filename}: {what} in {elapsed:.2f} s"
-                  + (f" ({stats['method']}, {stats.get('steps')} steps)"
-                     if stats.get("method") else ""))
-            for f in result.files:
+            print(done.summary())
+            for f in done.result.files:
                 print(f"  wrote {f}")
-        if ns.animate and result.kind in ("dynamics", "ode") and len(result.t):
-            try:
-                for f in _animate(model, result, out_dir, ns):
-                    if not ns.quiet:
-                        print(f"  wrote {f}")
-            except AutolevModelError as exc:
-                print(f"{label}: error: cannot animate {command.filename}: {exc}",
-                      file=sys.stderr)
-                status = 1
-        if ns.plot and result.outputs:
-            from .plots import write_pngs
-            for f in write_pngs(result, out_dir):
+        status = max(status, _after_run(model, done, out_dir, ns, label(done.command)))
+    return status
+
+
+def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -> int:
+    """--animate and --plot of one finished run."""
+    from .runtime.errors import AutolevModelError
+    result = done.result
+    status = 0
+    if ns.animate and result.kind in ("dynamics", "ode") and len(result.t):
+        try:
+            for f in _animate(model, result, out_dir, ns):
                 if not ns.quiet:
                     print(f"  wrote {f}")
+        except AutolevModelError as exc:
+            print(f"{label}: error: cannot animate {done.command.filename}: {exc}",
+                  file=sys.stderr)
+            status = 1
+    if ns.plot and result.outputs:
+        from .plots import write_pngs
+        for f in write_pngs(result, out_dir):
+            if not ns.quiet:
+                print(f"  wrote {f}")
     return status
 
 

@@ -3,30 +3,81 @@ swept (a mixin of Model).  This layer sits on the numerics, which never import i
 from __future__ import annotations
 
 import sys
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass
 
 from . import studies
 from .errors import AutolevModelError
 from .io import CodeCommand
 from .numerics.files import safe_stem
 from .numerics.linearize import MAX_SYMBOLIC_STATES, linearize, linearize_symbolic
-from .numerics.run import run_command
+from .numerics.run import Result, run_command
+
+
+@dataclass
+class CommandRun:
+    """One CODE command's run: its result, or why the model could not run it."""
+
+    command: CodeCommand
+    result: Result | None
+    error: str | None
+    seconds: float
+
+    def summary(self) -> str:
+        """`CODE DYNAMICS bike.c: 101 rows in 0.21 s (kutta-merson, 412 steps)`."""
+        result, stats = self.result, self.result.stats
+        what = (f"{stats.get('rows', 0)} rows" if result.kind in ("dynamics", "ode")
+                else "solved" if result.kind != "algebraic" or result.solution
+                else "evaluated")
+        return (f"CODE {self.command.kind.upper()} {self.command.filename}: {what} in "
+                f"{self.seconds:.2f} s" + (f" ({stats['method']}, {stats.get('steps')} steps)"
+                                          if stats.get("method") else ""))
 
 
 class SimulationMixin:
-    def run(self, out_dir=".", verbose: bool = False, **options):
-        """Perform every CODE command with the INPUT values (as `python model.py`
-        does): writes Autolev's files into out_dir; returns the results.  `verbose`
-        reports each run (and any failure) on standard output."""
+    def run(self, out_dir=".", verbose: bool = False, code=None, **options):
+        """Perform the CODE commands (every one, or those `code` names: a name or index,
+        or a list of them) with the INPUT values, as `autolev run` and `python
+        model.py` do: writes Autolev's files into out_dir; returns the results.
+        `verbose` reports each run on standard output and its progress on standard
+        error.  `options`: as `simulate` takes them."""
         results = []
-        for c in self.code_commands:
-            r = run_command(self, c, out_dir=out_dir,
-                            progress=sys.stderr if verbose else None, **options)
-            results.append(r)
+        for done in self.run_commands(self.commands_named(code), out_dir,
+                                      progress=sys.stderr if verbose else None, **options):
+            results.append(done.result)
             if verbose:
-                print(f"CODE {c.kind.upper()} {c.filename}: "
-                      + ("ok" if r.ok else r.failure)
-                      + "".join(f"\n  wrote {f}" for f in r.files))
+                print(done.summary() + "".join(f"\n  wrote {f}" for f in done.result.files))
         return results
+
+    def commands_named(self, code=None) -> list[CodeCommand]:
+        """The CODE commands `code` names (see code_command; a list names several, in
+        the model's order), or all of them."""
+        if code is None:
+            return list(self.code_commands)
+        names = code if isinstance(code, (list, tuple)) else [code]
+        picked = {id(self.code_command(name)) for name in names}
+        return [c for c in self.code_commands if id(c) in picked]
+
+    def run_commands(self, commands, out_dir=None, keep_going: bool = False,
+                     **options) -> Iterator[CommandRun]:
+        """Run each command in turn (the one pipeline behind run, `autolev run` and
+        `python model.py`): one CommandRun per command as it finishes.  A command the
+        model cannot run stops the rest, or with `keep_going` is reported in its
+        CommandRun's `error`."""
+        for command in commands:
+            start = time.monotonic()
+            try:
+                result = run_command(self, command, out_dir=out_dir, **options)
+            except AutolevModelError as exc:
+                if not keep_going:
+                    raise
+                text = str(exc)
+                if not text.startswith("CODE"):
+                    text = f"CODE {command.kind.upper()}: {text}"
+                yield CommandRun(command, None, text, time.monotonic() - start)
+                continue
+            yield CommandRun(command, result, None, time.monotonic() - start)
 
     def code_command(self, which):
         """A CODE command by its file name (any case, the extension optional: "bike.c",

@@ -198,6 +198,87 @@ class Prepared:
     build_seconds: float
 
 
+@dataclass
+class _InputsWanted:
+    """What prepare_command was given for the run's inputs."""
+
+    model: object
+    command: object
+    stem: str
+    unknowns: list
+    infile: object
+    overrides: dict | None
+    internal_values: dict | None
+    constraints: object
+    missing_values: str
+    out_dir: object
+
+    @property
+    def integrate_states(self) -> bool:
+        return self.command.kind in ("dynamics", "ode")
+
+
+def _take_inputs(ask: _InputsWanted, system):
+    """The run's inputs (constants, initial values or guesses, integration
+    parameters): INPUT values, then the .in file, then the overrides.  Refuses, before
+    anything is compiled, constants that have no value from any of them."""
+    extra_constants = (constants_needed(system, ask.constraints)
+                       if ask.constraints and ask.integrate_states else [])
+    constants = list(system.params) + extra_constants
+    kinds = {p: "Constant" for p in constants}
+    names = list(constants)
+    if ask.integrate_states:
+        names += system.states
+        kinds.update({x: "Initial Value" for x in system.states})
+        integration = INTEGRATION
+    elif ask.command.kind == "nonlinear":
+        names += ask.unknowns
+        kinds.update({u: "Initial Guess" for u in ask.unknowns})
+        integration = ("ABSERR", "RELERR")
+    else:
+        integration = ()
+    inputs = Inputs(ask.model, names, integration, given=ask.command.inputs,
+                    unit_table=ask.command.units)
+    notes = []
+    if ask.infile is not None:
+        notes += inputs.read_file_over_model(ask.infile, constants)
+    elsewhere = []                    # the model's, but not inputs of this command
+    for name, value in (ask.overrides or {}).items():
+        if inputs.lookup(name) is None and names_a_quantity(ask.model, name):
+            elsewhere.append(name)
+            continue
+        inputs.set(name, value)
+    for name, value in (ask.internal_values or {}).items():
+        if inputs.lookup(name) is None and names_a_quantity(ask.model, name):
+            elsewhere.append(name)
+            continue
+        inputs.set_internal(name, value)
+    if elsewhere:
+        notes.append(", ".join(elsewhere) + f" {'is' if len(elsewhere) == 1 else 'are'}"
+                     f" not {'an input' if len(elsewhere) == 1 else 'inputs'} of "
+                     f"CODE {ask.command.kind.upper()} {ask.command.filename}: ignored there")
+    for note in notes:
+        warnings.warn(note, stacklevel=5)
+    missing = inputs.missing(constants)
+    if missing and ask.missing_values == "refuse":
+        raise MissingValues(_missing_message(ask.model, missing, inputs, kinds, ask.out_dir,
+                                             ask.stem, ask.command.filename),
+                            [display_name(k) for k in missing])
+    inputs.fill_missing(constants)
+    if missing:
+        warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
+                      + ": using 0", stacklevel=5)
+    inputs.fill_missing(names)
+    inputs.check_finite()
+    _degree_rates_note(inputs, names)
+    if ask.integrate_states:       # before the build: it needs only the inputs
+        bad = _inertia_problems(system, inputs, zero=False)
+        if bad:
+            raise AutolevModelError("masses and inertias must not be negative: "
+                                    + "; ".join(bad))
+    return inputs, kinds, names, extra_constants
+
+
 def prepare_command(model, command, backend: str = "auto", infile=None, specified=None,
                     overrides=None, internal_values=None, constraints=None,
                     quirks: bool = True, missing_values: str = "refuse",
@@ -219,94 +300,17 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
         # no OUTPUT: the solution is what the program is for -- write the unknowns
         files = [[Column(u, u.name, (command.inputs.get(u) or (None, None))[1]
                          or command.units.get(u)) for u in unknowns]]
-    integrate_states = kind in ("dynamics", "ode")
     if kind == "nonlinear" and not equations:
         raise AutolevModelError("CODE NONLINEAR needs equations and unknowns: "
                                 "CODE NONLINEAR(EQ, x, y) file")
-    def inputs_of(system):
-        """The run's inputs (constants, initial values or guesses, integration
-        parameters): INPUT values, then the .in file, then the overrides.  Refuses, before
-        anything is compiled, constants that have no value from any of them."""
-        extra_constants = (constants_needed(system, constraints)
-                           if constraints and integrate_states else [])
-        constants = list(system.params) + extra_constants
-        kinds = {p: "Constant" for p in constants}
-        names = list(constants)
-        if integrate_states:
-            names += system.states
-            kinds.update({x: "Initial Value" for x in system.states})
-            integration = INTEGRATION
-        elif kind == "nonlinear":
-            names += unknowns
-            kinds.update({u: "Initial Guess" for u in unknowns})
-            integration = ("ABSERR", "RELERR")
-        else:
-            integration = ()
-        inputs = Inputs(model, names, integration, given=command.inputs,
-                        unit_table=command.units)
-        notes = []
-        if infile is not None:
-            notes += inputs.read_file_over_model(infile, constants)
-        elsewhere = []                    # the model's, but not inputs of this command
-        for name, value in (overrides or {}).items():
-            if inputs.lookup(name) is None and names_a_quantity(model, name):
-                elsewhere.append(name)
-                continue
-            inputs.set(name, value)
-        for name, value in (internal_values or {}).items():
-            if inputs.lookup(name) is None and names_a_quantity(model, name):
-                elsewhere.append(name)
-                continue
-            inputs.set_internal(name, value)
-        if elsewhere:
-            notes.append(", ".join(elsewhere) + f" {'is' if len(elsewhere) == 1 else 'are'}"
-                         f" not {'an input' if len(elsewhere) == 1 else 'inputs'} of "
-                         f"CODE {kind.upper()} {command.filename}: ignored there")
-        for note in notes:
-            warnings.warn(note, stacklevel=5)
-        missing = inputs.missing(constants)
-        if missing and missing_values == "refuse":
-            raise MissingValues(_missing_message(model, missing, inputs, kinds, out_dir,
-                                                 stem, command.filename),
-                                [display_name(k) for k in missing])
-        inputs.fill_missing(constants)
-        if missing:
-            warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
-                          + ": using 0", stacklevel=5)
-        inputs.fill_missing(names)
-        inputs.check_finite()
-        _degree_rates_note(inputs, names)
-        if integrate_states:           # before the build: it needs only the inputs
-            bad = _inertia_problems(system, inputs, zero=False)
-            if bad:
-                raise AutolevModelError("masses and inertias must not be negative: "
-                                        + "; ".join(bad))
-        return inputs, kinds, names, extra_constants
-
+    ask = _InputsWanted(model, command, stem, unknowns, infile, overrides, internal_values,
+                        constraints, missing_values, out_dir)
     build_start = time.perf_counter()
-    # the numeric system of a command is built once per state of the model (repeated
-    # simulate() calls with other inputs reuse its compiled functions)
-    def systems():
-        state = (model.version, model.defs.user_version, id(model.kane_equations),
-                 len(model.outputs), len(model.encoded))
-        return model.derived.table("numeric systems", state)
-    key = (id(command), backend, quirks, tuple(locked))
-    # the command itself is kept with its system: an id() alone may be reused
-    entry = systems().get(key)
-    system = entry[1] if entry is not None and entry[0] is command else None
-    prepared = []
-    if system is None:
-        with model.defs.as_of(command.definitions):
-            system = NumericSystem(
-                model, files, encoded, backend=backend, integrate=integrate_states,
-                implicit=(equations, unknowns) if kind == "ode" and equations else None,
-                solved=unknowns if kind in ("algebraic", "nonlinear") else (),
-                extra=_solver_expressions(model.defs, kind, equations, unknowns),
-                zero=command.zero if kind == "dynamics" else None,
-                hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
-                before_compiling=lambda s: prepared.append(inputs_of(s)), locked=locked)
-        systems()[key] = (command, system)      # after the build: it may form KANE
-    inputs, kinds, names, extra_constants = prepared[0] if prepared else inputs_of(system)
+    taken = []
+    system = _numeric_system(model, command, files, encoded, (equations, unknowns),
+                             backend, quirks, locked,
+                             before_compiling=lambda s: taken.append(_take_inputs(ask, s)))
+    inputs, kinds, names, extra_constants = taken[0] if taken else _take_inputs(ask, system)
     build_seconds = time.perf_counter() - build_start
     if system.hidden_in_outputs:
         warnings.warn(
@@ -315,6 +319,44 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
             + " (its output routine's counter `int i1` hides the model's i1); reproduced "
             "as it printed them (--no-quirks, or quirks=False, for the values meant)",
             stacklevel=3)
+    _set_specified(model, system, specified, warn_unassigned)
+    sweep = _sweep(model, command, inputs)
+    system.set_parameters(inputs.vector(system.params))
+    return Prepared(system, inputs, kinds, stem, files, encoded, unknowns, sweep,
+                    extra_constants, build_seconds)
+
+
+def _numeric_system(model, command, files, encoded, solving: tuple, backend: str,
+                    quirks: bool, locked, before_compiling) -> NumericSystem:
+    """The command's numeric system, built once per state of the model (repeated
+    simulate() calls with other inputs reuse its compiled functions)."""
+    kind = command.kind
+    equations, unknowns = solving
+
+    def systems():
+        state = (model.version, model.defs.user_version, id(model.kane_equations),
+                 len(model.outputs), len(model.encoded))
+        return model.derived.table("numeric systems", state)
+    key = (id(command), backend, quirks, tuple(locked))
+    # the command itself is kept with its system: an id() alone may be reused
+    entry = systems().get(key)
+    if entry is not None and entry[0] is command:
+        return entry[1]
+    with model.defs.as_of(command.definitions):
+        system = NumericSystem(
+            model, files, encoded, backend=backend, integrate=kind in ("dynamics", "ode"),
+            implicit=(equations, unknowns) if kind == "ode" and equations else None,
+            solved=unknowns if kind in ("algebraic", "nonlinear") else (),
+            extra=_solver_expressions(model.defs, kind, equations, unknowns),
+            zero=command.zero if kind == "dynamics" else None,
+            hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
+            before_compiling=before_compiling, locked=locked)
+    systems()[key] = (command, system)      # after the build: it may form KANE
+    return system
+
+
+def _set_specified(model, system, specified, warn_unassigned: bool) -> None:
+    """Give the system the user's functions of the specified quantities."""
     functions = {_find_symbol(model, k): v for k, v in (specified or {}).items()}
     unused = [sym for sym in functions if sym not in system.set_specified(functions)]
     if unused:
@@ -324,12 +366,7 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
     unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
     if unassigned and warn_unassigned:
         warnings.warn("specified quantities without a definition or a function, set to 0: "
-                      + ", ".join(map(str, unassigned)), stacklevel=3)
-    sweep = _sweep(model, command, inputs)
-
-    system.set_parameters(inputs.vector(system.params))
-    return Prepared(system, inputs, kinds, stem, files, encoded, unknowns, sweep,
-                    extra_constants, build_seconds)
+                      + ", ".join(map(str, unassigned)), stacklevel=4)
 
 
 def run_command(model, command, out_dir=None, method: str | None = None,
