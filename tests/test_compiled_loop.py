@@ -192,18 +192,18 @@ def test_cpython_entry_point_gives_the_ctypes_numbers():
     system = run(load("rolling_disc"), TFINAL=0.1).system
     loop = system.loop
     if python_include() is None:
-        assert loop._py is None                 # no headers: the ctypes route only
+        assert loop.python_entry is None                 # no headers: the ctypes route only
         return
-    assert loop._py is not None
+    assert loop.python_entry is not None
     rng = np.random.default_rng(3)
     for _ in range(5):
         x = rng.uniform(-1, 1, system.nstate)
         fast, status = loop.derivatives(0.2, x)
-        saved, loop._py = loop._py, None
+        saved, loop.python_entry = loop.python_entry, None
         try:
             slow, status2 = loop.derivatives(0.2, x)
         finally:
-            loop._py = saved
+            loop.python_entry = saved
         assert status == status2 == 0
         assert np.array_equal(fast, slow)
     # anything but a float64 state array is converted, not refused

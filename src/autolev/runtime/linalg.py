@@ -26,53 +26,72 @@ def solve_linear(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str = "") 
     only by their determinants (so they are right wherever they are regular); larger
     irreducible blocks by the elimination above."""
     n = a.rows
-    generic = NumericPoint(defs, seed=1)
-    probes = [NumericPoint(defs, zero_varying=True, seed=2),
-              NumericPoint(defs, varying=sm.pi / 2, seed=3)] + \
-        [NumericPoint(defs, varying="wide", seed=s) for s in (4, 5, 6, 7)]
-    scores: dict = {}
-
-    def score(e) -> tuple:
-        """Numbers first; then nonzero where the varying quantities are zero (where
-        models start and are linearised), then nonzero at more probes, then farthest
-        from zero relative to its size.  None: zero for generic values (unusable)."""
-        if e.is_number:
-            return (3,)
-        hit = scores.get(e, False)
-        if hit is False:
-            if _small(defs.numeric(e, generic)):
-                hit = None
-            else:
-                vals = [abs(defs.numeric(e, p)) for p in probes]
-                nonzero = [not _small(v) for v in vals]
-                top = max((v for v, ok in zip(vals, nonzero) if ok), default=0.0)
-                ratio = min(vals) / top if all(nonzero) and top > 0 else 0.0
-                hit = (1, int(nonzero[0]), sum(nonzero), ratio)
-            scores[e] = hit
-        return hit
-
     if a.cols != n or b.rows != n:
         raise AutolevModelError(f"cannot solve {what}: {a.rows} equations for {a.cols} "
                                 "unknowns")
     if n <= 3:
-        return _cramer(a, b, defs, what, generic)
+        return _cramer(a, b, defs, what, NumericPoint(defs, seed=1))
     blocks = _block_triangular(a)
     if blocks is not None and len(blocks) == 1 and n <= CRAMER_MAX:
-        return _cramer(a, b, defs, what, generic)
+        return _cramer(a, b, defs, what, NumericPoint(defs, seed=1))
     if blocks is not None and len(blocks) > 1:
-        # solved block by block, each given the unknowns of the blocks before it (a
-        # linkage's loops, a joint's pair of constraints); small blocks by Cramer's rule,
-        # so no pivot can vanish where a block is regular
-        x = [None] * n
-        for rows, cols in blocks:
-            rhs = []
-            for r in rows:
-                known = [a[r, c] * x[c] for c in range(n) if x[c] is not None and a[r, c] != 0]
-                rhs.append(defs.zify(b[r, 0] - sm.Add(*known)) if known else b[r, 0])
-            sub = solve_linear(a.extract(rows, cols), sm.Matrix(rhs), defs, what)
-            for c, v in zip(cols, sub):
-                x[c] = v
-        return x
+        return _solve_by_blocks(a, b, blocks, defs, what)
+    return _eliminate(a, b, defs, what)
+
+
+def _solve_by_blocks(a: sm.Matrix, b: sm.Matrix, blocks: list, defs: Definitions,
+                     what: str) -> list:
+    """Block by block, each given the unknowns of the blocks before it (a linkage's
+    loops, a joint's pair of constraints); small blocks by Cramer's rule, so no pivot
+    can vanish where a block is regular."""
+    n = a.rows
+    x = [None] * n
+    for rows, cols in blocks:
+        rhs = []
+        for r in rows:
+            known = [a[r, c] * x[c] for c in range(n) if x[c] is not None and a[r, c] != 0]
+            rhs.append(defs.zify(b[r, 0] - sm.Add(*known)) if known else b[r, 0])
+        sub = solve_linear(a.extract(rows, cols), sm.Matrix(rhs), defs, what)
+        for c, v in zip(cols, sub):
+            x[c] = v
+    return x
+
+
+class _PivotScore:
+    """Numbers first; then nonzero where the varying quantities are zero (where models
+    start and are linearised), then nonzero at more probes, then farthest from zero
+    relative to its size.  None: zero for generic values (unusable)."""
+
+    def __init__(self, defs: Definitions):
+        self.defs = defs
+        self.generic = NumericPoint(defs, seed=1)
+        self.probes = [NumericPoint(defs, zero_varying=True, seed=2),
+                       NumericPoint(defs, varying=sm.pi / 2, seed=3)] + \
+            [NumericPoint(defs, varying="wide", seed=s) for s in (4, 5, 6, 7)]
+        self.scores: dict = {}
+
+    def __call__(self, e) -> tuple | None:
+        if e.is_number:
+            return (3,)
+        hit = self.scores.get(e, False)
+        if hit is False:
+            if _small(self.defs.numeric(e, self.generic)):
+                hit = None
+            else:
+                vals = [abs(self.defs.numeric(e, p)) for p in self.probes]
+                nonzero = [not _small(v) for v in vals]
+                top = max((v for v, ok in zip(vals, nonzero) if ok), default=0.0)
+                ratio = min(vals) / top if all(nonzero) and top > 0 else 0.0
+                hit = (1, int(nonzero[0]), sum(nonzero), ratio)
+            self.scores[e] = hit
+        return hit
+
+
+def _eliminate(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str) -> list:
+    """Gaussian elimination with full pivoting (pivots chosen by _PivotScore), then
+    back substitution; every intermediate named by a Z."""
+    n = a.rows
+    score = _PivotScore(defs)
     m = [[a[i, j] for j in range(n)] + [b[i, 0]] for i in range(n)]
     cols = list(range(n))                 # cols[k]: the unknown in position k
     for k in range(n):

@@ -131,11 +131,11 @@ class CompiledLoop:
         fn.restype = ctypes.c_int
         self._integrate = fn
         self.context_address = ctypes.addressof(ctx)
-        self._py = None
+        self.python_entry = None
         if hasattr(lib, "PyInit__autolev_rhs"):
             module = _load_extension(lib._name)
             if module is not None:
-                self._py = module.rhs
+                self.python_entry = module.rhs
 
     def set_values(self, c: np.ndarray, s: np.ndarray) -> None:
         """The constants and specifieds the evaluations read (kept referenced here)."""
@@ -146,9 +146,9 @@ class CompiledLoop:
 
     def derivatives(self, t: float, x: np.ndarray) -> tuple[np.ndarray, int]:
         """(x', status): status 0, or SINGULAR (then self.yfail is x)."""
-        if self._py is not None:
+        if self.python_entry is not None:
             try:
-                xdot = self._py(self.context_address, t, x)
+                xdot = self.python_entry(self.context_address, t, x)
             except (TypeError, ValueError):
                 pass       # not a contiguous float64 array (scipy's Jacobian columns
                 #            are strided views): converted, as below

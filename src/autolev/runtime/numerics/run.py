@@ -741,6 +741,55 @@ class Conditioning:
                 f"there: {shown}", stacklevel=4)
 
 
+class _Rows:
+    """The print rows of a run as they come: written, kept (all, or only the last), and
+    the mass matrix's conditioning watched."""
+
+    def __init__(self, system, result, writer, keep_rows: bool):
+        self.system, self.result, self.writer, self.keep_rows = system, result, writer, keep_rows
+        self.times: list = []
+        self.states: list = []
+        self.rows: list = [[] for _ in system.files]
+        self.encoded: dict = {}
+        self.conditioning = Conditioning()
+
+    def __call__(self, t, y) -> None:
+        values = self.system.outputs(t, y)       # solves for the accelerations once
+        if not self.keep_rows and self.times:
+            self.times.clear()
+            self.states.clear()
+            for r in self.rows:
+                r.clear()
+        self.times.append(t)
+        self.states.append(np.array(y))
+        _split_outputs(self.system, values, self.rows, self.writer, self.encoded)
+        self.result.stats["rows"] = self.result.stats.get("rows", 0) + 1
+        mm = self.system.last_mass_matrix()
+        if mm is not None:
+            self.conditioning.add(t, self.states[-1], mm)
+
+    def finish(self) -> None:
+        result, system = self.result, self.system
+        result.t = np.array(self.times)
+        result.states = np.array(self.states).reshape(len(self.states), system.nstate)
+        result.outputs = _tables(system, self.rows, result.name)
+        result.encoded = self.encoded
+
+
+def _schedule(inputs, program: str) -> Schedule:
+    """The print schedule of the INPUT integration parameters, integrated the way
+    Autolev's program in that language integrated."""
+    sched = Schedule(inputs.internal("TINITIAL"), inputs.internal("TFINAL"),
+                     inputs.internal("INTEGSTP"), int(inputs.values["PRINTINT"].given),
+                     fresh_derivatives=program == "c",
+                     restart_each_step=program == "m")
+    try:
+        sched.check()
+    except ValueError as exc:
+        raise AutolevModelError(str(exc)) from None
+    return sched
+
+
 def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                   compiled: bool = True, constraints=None, extra_values=(),
                   program: str = "", keep_rows: bool = True) -> None:
@@ -751,40 +800,14 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
     y0 = np.array(inputs.vector(system.states))
-    sched = Schedule(inputs.internal("TINITIAL"), inputs.internal("TFINAL"),
-                     inputs.internal("INTEGSTP"), int(inputs.values["PRINTINT"].given),
-                     fresh_derivatives=program == "c",
-                     restart_each_step=program == "m")
-    try:
-        sched.check()
-    except ValueError as exc:
-        raise AutolevModelError(str(exc)) from None
-    # with keep_rows false only the last row is kept: the files have them all
-    times, states = [], []
-    rows = [[] for _ in system.files]
-    encoded: dict = {}
-    conditioning = Conditioning()
+    sched = _schedule(inputs, program)
+    on_row = _Rows(system, result, writer, keep_rows)
 
     def f(t, y):
         try:
             return system.derivatives(t, y)
         except SingularMassMatrix as exc:
             raise IntegrationFailure(str(exc), t, y) from None
-
-    def on_row(t, y):
-        values = system.outputs(t, y)       # solves for the accelerations once
-        if not keep_rows and times:
-            times.clear()
-            states.clear()
-            for r in rows:
-                r.clear()
-        times.append(t)
-        states.append(np.array(y))
-        _split_outputs(system, values, rows, writer, encoded)
-        result.stats["rows"] = result.stats.get("rows", 0) + 1
-        mm = system.last_mass_matrix()
-        if mm is not None:
-            conditioning.add(t, states[-1], mm)
 
     bar = Progress(sys.stderr if progress is None else progress, sched.tinitial,
                    sched.tfinal, enabled=progress is not False and progress is not None)
@@ -805,16 +828,8 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         _stiff_note(result.stats, method)
     except IntegrationFailure as exc:
         on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
-        state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, exc.y))
-        result.failure = (f"Numerical integration failed to converge: {exc}; the state "
-                          f"there: {state}"
-                          + (_zero_hint(zero_params) if result.stats["rows"] <= 1 else ""))
-        if "singular" in str(exc) or (result.stats["rows"] <= 1 and "not finite" in str(exc)):
-            problems = _inertia_problems(system, inputs)
-            if problems:
-                result.failure += "; " + "; ".join(problems)
-        if exc.cuts:
-            result.failure += "; " + _halving_verdict(f, exc, sched, abserr, relerr)
+        result.failure = _failure_message(exc, system, inputs, result, zero_params,
+                                          (f, sched, abserr, relerr))
         result.failure_time = exc.t
         if writer is not None:
             writer.note("Error: " + result.failure)
@@ -823,11 +838,24 @@ def _run_dynamics(system, inputs, result, writer, method, progress, zero_params,
     finally:
         bar.done()
         result.stats["seconds"] = time.perf_counter() - start
-        conditioning.report(result)
-    result.t = np.array(times)
-    result.states = np.array(states).reshape(len(states), system.nstate)
-    result.outputs = _tables(system, rows, result.name)
-    result.encoded = encoded
+        on_row.conditioning.report(result)
+    on_row.finish()
+
+
+def _failure_message(exc: IntegrationFailure, system, inputs, result, zero_params,
+                     integration: tuple) -> str:
+    """Autolev's message for a failed integration, with what we can tell of its cause."""
+    state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, exc.y))
+    message = (f"Numerical integration failed to converge: {exc}; the state there: {state}"
+               + (_zero_hint(zero_params) if result.stats["rows"] <= 1 else ""))
+    if "singular" in str(exc) or (result.stats["rows"] <= 1 and "not finite" in str(exc)):
+        problems = _inertia_problems(system, inputs)
+        if problems:
+            message += "; " + "; ".join(problems)
+    if exc.cuts:
+        f, sched, abserr, relerr = integration
+        message += "; " + _halving_verdict(f, exc, sched, abserr, relerr)
+    return message
 
 
 # h*|lambda| where Kutta-Merson stops being stable on the negative real axis

@@ -101,12 +101,46 @@ class NumericSystem:
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, implicit=None, solved=(), extra=None,
                  zero=None, hidden_in_outputs=(), before_compiling=None, locked=()):
-        self.model = m = model
+        self.model = model
         self._zero = zero
         self.backend = backend
-        defs = m.defs
+        self._fix_speeds(locked)
+        rates, unknowns, dyn = (self._integrated(implicit) if integrate else ({}, [], []))
+        self.states = alphabetical(rates)
+        self.nstate = len(self.states)
+        self.implicit_unknowns = unknowns          # derivatives solved from M a = f
+        self.solved = [s for s in solved if s not in unknowns]
+        self._n = len(unknowns)
+        solved_here = set(unknowns)     # their places are filled by the M a = f solve
+        rate_exprs = [sm.S.Zero if rates[x] in solved_here else rates[x]
+                      for x in self.states]
+        # rates (0 where solved), then M row by row, then F
+        self.rhs_exprs = rhs_exprs = rate_exprs + dyn
+        # functions compiled from this system later (a linearization's Jacobians), by key
+        self.derived: dict = {}
+        out_exprs, extra = self._output_expressions(outputs, encoded, extra)
+        # what is given: time, state, solved derivatives and unknowns, fixed speeds
+        accel_inputs = list(unknowns) + self.solved
+        given = set(self.states) | {S.TIME} | set(self.aux_fixed) | set(accel_inputs)
+        self.hidden_in_outputs = self._hidden(hidden_in_outputs)
+        if self.hidden_in_outputs:
+            out_exprs = self._as_output_routine(out_exprs, rhs_exprs, extra, given)
+        self.output_exprs = out_exprs
+        exprs = [sm.sympify(e) for e in rhs_exprs + out_exprs]
+        for v in extra.values():
+            exprs += v
+        self._find_inputs(exprs, given, integrate)
+        if before_compiling is not None:
+            before_compiling(self)
+        self._compile(extra, accel_inputs, integrate)
+        self.constant_values = None
+        self.specified_values = np.zeros(len(self.specified))
+        self.specified_functions: list = []
+
+    def _fix_speeds(self, locked) -> None:
+        """Auxiliary speeds and the speeds of locked coordinates: 0, as their rates."""
         self.aux_fixed = {}
-        for u in m.auxiliary_speeds:
+        for u in self.model.auxiliary_speeds:
             self.aux_fixed[u] = 0.0
             self.aux_fixed[S.derivative(u)] = 0.0
         self.locked = list(locked)
@@ -114,21 +148,10 @@ class NumericSystem:
         for u in self._locked_speeds:
             self.aux_fixed[u] = 0.0
             self.aux_fixed[S.derivative(u)] = 0.0
-        rates, unknowns, dyn = (self._integrated(implicit) if integrate else ({}, [], []))
-        self.states = alphabetical(rates)
-        self.implicit_unknowns = unknowns          # derivatives solved from M a = f
-        self.solved = [s for s in solved if s not in unknowns]
-        n = len(unknowns)
-        self._n = n
-        solved_here = set(unknowns)     # their places are filled by the M a = f solve
-        rate_exprs = [sm.S.Zero if rates[x] in solved_here else rates[x]
-                      for x in self.states]
-        rhs_exprs = rate_exprs + dyn
-        self.rhs_exprs = rhs_exprs      # rates (0 where solved), then M row by row, then F
-        # functions compiled from this system later (a linearization's Jacobians), by key
-        self.derived: dict = {}
 
-        # outputs: columns and ENCODE values (derivatives resolved through definitions)
+    def _output_expressions(self, outputs, encoded, extra) -> tuple[list, dict]:
+        """The OUTPUT columns' and ENCODE values' expressions (derivatives resolved
+        through definitions), and the `extra` ones."""
         self.files = [list(cols) for cols in outputs]
         self.degree_columns = [[units.is_degrees(c.unit) for c in cols]
                                for cols in self.files]
@@ -142,18 +165,12 @@ class NumericSystem:
             else:
                 self.encode_shapes.append((name, ()))
                 out_exprs.append(self._resolve(value))
-        extra = {k: [self._resolve(e) for e in v] for k, v in (extra or {}).items()}
+        return out_exprs, {k: [self._resolve(e) for e in v] for k, v in (extra or {}).items()}
 
-        # what is given: time, state, solved derivatives and unknowns, fixed speeds
-        accel_inputs = list(unknowns) + self.solved
-        given = set(self.states) | {S.TIME} | set(self.aux_fixed) | set(accel_inputs)
-        self.hidden_in_outputs = self._hidden(hidden_in_outputs)
-        if self.hidden_in_outputs:
-            out_exprs = self._as_output_routine(out_exprs, rhs_exprs, extra, given)
-        self.output_exprs = out_exprs
-        exprs = [sm.sympify(e) for e in rhs_exprs + out_exprs]
-        for v in extra.values():
-            exprs += v
+    def _find_inputs(self, exprs: list, given: set, integrate: bool) -> None:
+        """The specified quantities, the parameters (constants without a definition) and
+        the definitions of constants that the expressions need."""
+        defs = self.model.defs
         order, undefined = self.needed(exprs, given)
         self.specified = alphabetical(s for s in undefined if self.is_specified(s))
         params = [s for s in undefined if not self.is_specified(s)]
@@ -169,47 +186,43 @@ class NumericSystem:
             if s not in cset:
                 used |= defs.free(s)
         self.constant_defs = [s for s in const_defs if s in used]
-        c_syms = self.params + self.constant_defs
-        if before_compiling is not None:
-            before_compiling(self)
 
-        self.nstate = len(self.states)
-        inputs = {"t": [S.TIME], "x": self.states, "c": c_syms, "s": self.specified}
+    def _compile(self, extra: dict, accel_inputs: list, integrate: bool) -> None:
+        defs, backend = self.model.defs, self.backend
+        inputs = {"t": [S.TIME], "x": self.states, "c": self.params + self.constant_defs,
+                  "s": self.specified}
         fixed = dict(self.aux_fixed)
         # evaluated once per parameter set: Python (compiling C would cost more)
         self.constants_function = compile_program(
             codegen.Program({"p": self.params}, self.constant_defs, defs).build(),
             "python", "autolev_constants")
-        # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
-        out_backend = backend if integrate else "python"
         self.rhs_function = None
         self.loop = None
-        self.unknown_positions = [self.states.index(_lower(d)) for d in unknowns]
+        self.unknown_positions = [self.states.index(_lower(d))
+                                  for d in self.implicit_unknowns]
         if self.nstate:
             # the C right-hand side carries the integration loop (loop.c) with it
             loop_source, loop_flags = loop_extra_source()
             self.rhs_function = compile_program(
-                codegen.Program(inputs, rhs_exprs, defs, fixed).build(), backend,
+                codegen.Program(inputs, self.rhs_exprs, defs, fixed).build(), backend,
                 "autolev_rhs", extra_source=loop_source, extra_flags=loop_flags)
             if self.rhs_function.backend == "c":
                 call = self.rhs_function.call
                 self.loop = CompiledLoop(call.lib, self.nstate, self.unknown_positions,
-                                         call.work, len(rhs_exprs))
+                                         call.work, len(self.rhs_exprs))
         inputs_out = dict(inputs, a=accel_inputs)
+        # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
         self.output_function = compile_program(
-            codegen.Program(inputs_out, out_exprs, defs, fixed).build(), out_backend,
-            "autolev_outputs")
+            codegen.Program(inputs_out, self.output_exprs, defs, fixed).build(),
+            backend if integrate else "python", "autolev_outputs")
         self.extra_functions = {
             k: (compile_program(codegen.Program(inputs_out, v, defs, fixed).build(), backend,
                                 f"autolev_{k}"), len(v))
             for k, v in extra.items()}
-        self._rhs_out = np.empty(len(rhs_exprs))
+        self._rhs_out = np.empty(len(self.rhs_exprs))
         # the CPython entry point of the compiled right-hand side, when there is one
-        self._py = self.loop._py if self.loop is not None else None
+        self._py = self.loop.python_entry if self.loop is not None else None
         self._py_ctx = self.loop.context_address if self.loop is not None else None
-        self.constant_values = None
-        self.specified_values = np.zeros(len(self.specified))
-        self.specified_functions: list = []
 
     # -- structure ------------------------------------------------------------------------
     def _integrated(self, implicit) -> tuple[dict, list, list]:
