@@ -320,3 +320,11 @@ def test_kinematical_equations_written_for_the_speeds_are_inverted(m):
     assert abs(num(m, al.derivative(q1), vals) - 2.0) < 1e-12
     assert abs(num(m, al.derivative(q2), vals) - 1.0) < 1e-12
     assert u1 not in m.defs.rhs                             # the speeds stay free
+
+
+def test_realness_is_judged_relative_to_the_size_of_the_real_part():
+    from autolev.runtime.calculus import is_real_number
+    assert is_real_number(1e6 + 1e-7j)          # 1e-13 relative: rounding
+    assert not is_real_number(1.0 + 1e-9j)
+    assert is_real_number(1e-14j)               # next to 1: rounding
+    assert not is_real_number([1.0, 2.0 + 1e-6j])

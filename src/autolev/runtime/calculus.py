@@ -21,6 +21,7 @@ import math
 from collections.abc import Iterable, Mapping
 from contextlib import contextmanager
 
+import numpy as np
 import sympy as sm
 
 from ..errors import MAX_EXACT_DIGITS
@@ -39,6 +40,16 @@ def _order_key(s) -> tuple:
 def ordered(symbols) -> list:
     """Symbols in a fixed order: by name, Z's after the others in creation order."""
     return sorted(symbols, key=_order_key)
+
+
+# an imaginary part this small next to the real part (or 1) is rounding, not a value
+REAL_TOLERANCE = 1e-12
+
+
+def is_real_number(z) -> bool:
+    """Whether a complex number (or every entry of an array) is real up to rounding."""
+    z = np.asarray(z, dtype=complex)
+    return bool(np.all(np.abs(z.imag) <= REAL_TOLERANCE * np.maximum(1.0, np.abs(z.real))))
 
 
 class NumericPoint:

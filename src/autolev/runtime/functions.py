@@ -6,7 +6,7 @@ import math
 import numpy as np
 import sympy as sm
 
-from .calculus import refuse_huge_powers
+from .calculus import is_real_number, refuse_huge_powers
 from .printer import number_value
 from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
 
@@ -222,7 +222,7 @@ def eig(m, vectors: bool = False):
 
 
 def _number(z: complex):
-    if abs(z.imag) <= 1e-12 * max(1.0, abs(z.real)):
+    if is_real_number(z):
         return sm.Float(z.real)
     return sm.Float(z.real) + sm.I * sm.Float(z.imag)
 

@@ -22,6 +22,7 @@ from pathlib import Path
 import sympy as sm
 
 from .. import units
+from ..calculus import is_real_number
 from ..errors import AutolevModelError
 from ..io import INTEGRATION_PARAMETERS as INTEGRATION
 
@@ -105,7 +106,7 @@ class Inputs:
         for f in expr.free_symbols:
             subs[f] = self._symbol_value(f, cache, stack, defs)
         v = complex(sm.N(expr.xreplace(subs)) if subs else sm.N(expr))
-        if abs(v.imag) > 1e-12 * max(1.0, abs(v.real)):
+        if not is_real_number(v):
             raise AutolevModelError(f"INPUT {display_name(stack[-1])} is not a real number "
                                     f"({v})")
         return v.real

@@ -21,7 +21,7 @@ import sympy as sm
 
 from .. import symbols as S
 from .. import units
-from ..calculus import NumericPoint
+from ..calculus import NumericPoint, is_real_number
 from ..errors import AutolevModelError, MissingValues
 from ..vector import Vector
 from .files import RunFiles, dir_text, encoded_text, safe_stem, termination_cleans_up
@@ -584,7 +584,7 @@ def _inertia_problems(system, inputs, zero: bool = True) -> list[str]:
 
     def num(e):
         z = m.defs.numeric(sm.sympify(e), point)
-        return z.real if abs(z.imag) < 1e-12 else math.nan
+        return z.real if is_real_number(z) else math.nan
 
     out = []
     for p in m.particles_list:
