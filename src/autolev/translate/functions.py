@@ -10,13 +10,16 @@ import difflib
 import math
 
 from .. import ir
-from .core import ATOM, Translator, Typed
+from .core import ATOM, EXPRESSIONS, Translator, Typed
 from .emit import quote
 
 FUNCTIONS: dict = {}
 # beyond these, exact computation takes minutes or gigabytes for what a model never needs
 MAX_FACTORIAL = 450          # 450! has 1001 digits
 MAX_TAYLOR_ORDER = 30
+# functions nested deeper than this make sympy's automatic evaluation exponential (the
+# real-imaginary split of TANH(SINH(...)) 150 deep runs for hours); models nest three
+MAX_CALL_NESTING = 32
 
 
 def function(*names):
@@ -25,6 +28,19 @@ def function(*names):
             FUNCTIONS[n] = fn
         return fn
     return register
+
+
+@EXPRESSIONS.register(ir.Call)
+def call_expression(tr: Translator, e: ir.Call, want: str) -> Typed:
+    if tr.call_depth >= MAX_CALL_NESTING:
+        raise tr.error(f"functions nested more than {MAX_CALL_NESTING} deep; at most "
+                       f"{MAX_CALL_NESTING} are translated (name the inner parts)",
+                       e, "T004")
+    tr.call_depth += 1
+    try:
+        return call(tr, e)
+    finally:
+        tr.call_depth -= 1
 
 
 def call(tr: Translator, c: ir.Call) -> Typed:

@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .. import ir
-from .core import ATOM, Entry, Translator, Typed
+from .core import ATOM, EXPRESSIONS, Entry, Translator, Typed
 
 FRAMES = ("newtonian", "frame", "body")
 POINTS = ("point", "particle")
@@ -80,8 +80,9 @@ def _split(tr: Translator, text: str, kinds) -> list[Entry] | None:
     return go(pieces, kinds) if pieces and all(pieces) else None
 
 
-def vector_name(tr: Translator, v: ir.VectorName) -> Typed:
-    """The Python that reads a vector or dyadic name."""
+@EXPRESSIONS.register(ir.VectorName)
+def vector_name(tr: Translator, v: ir.VectorName, want: str = "value") -> Typed:
+    """The Python that reads a vector or dyadic name (the same whatever is wanted)."""
     sp = classify(tr, v)
     if sp is None:
         entry = tr.vectors.get(v.name.lower())

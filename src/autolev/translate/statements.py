@@ -5,19 +5,10 @@ import re
 import textwrap
 
 from .. import ir
-from .core import Entry, Translator, Typed
+from .core import STATEMENTS, Entry, Translator, Typed
 from .emit import comment, quote
+from .functions import FUNCTIONS
 from .special import assign_vector
-
-HANDLERS: dict = {}
-
-
-def handles(*types):
-    def register(fn):
-        for t in types:
-            HANDLERS[t] = fn
-        return fn
-    return register
 
 
 def _assign_names(tr: Translator, names: list[str], call: str) -> None:
@@ -51,7 +42,7 @@ _SCALAR_DECL = {"constants": "constant", "variables": "variable",
                 "imaginary": "imaginary"}
 
 
-@handles(ir.Declaration)
+@STATEMENTS.register(ir.Declaration)
 def declaration(tr: Translator, st: ir.Declaration) -> None:
     if st.what in _ENTITY_DECL:
         _declare_entities(tr, st)
@@ -172,7 +163,7 @@ def _implicit_constant(tr: Translator, e: ir.Expr) -> None:
             tr.emit(f"{entry.py} = model.constants({quote(e.name)})")
 
 
-@handles(ir.MassStatement)
+@STATEMENTS.register(ir.MassStatement)
 def mass(tr: Translator, st: ir.MassStatement) -> None:
     for item in st.items:
         target = tr.entities.get(item.target.lower())
@@ -187,7 +178,7 @@ def mass(tr: Translator, st: ir.MassStatement) -> None:
             tr.defined.add((item.value.name.lower(), 0))
 
 
-@handles(ir.InertiaStatement)
+@STATEMENTS.register(ir.InertiaStatement)
 def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
     body = tr.entities.get(st.body.lower())
     about = None
@@ -233,7 +224,7 @@ def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
 _COMPOUND = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}
 
 
-@handles(ir.Assignment)
+@STATEMENTS.register(ir.Assignment)
 def assignment(tr: Translator, st: ir.Assignment) -> None:
     assign(tr, st.target, st.op, st.value)
 
@@ -341,7 +332,7 @@ def command(*names):
     return register
 
 
-@handles(ir.Command)
+@STATEMENTS.register(ir.Command)
 def command_statement(tr: Translator, st: ir.Command) -> None:
     c = st.call
     name = c.name.upper()
@@ -352,7 +343,6 @@ def command_statement(tr: Translator, st: ir.Command) -> None:
     if name in IN_PLACE and c.args and isinstance(c.args[0], (ir.Name, ir.VectorName)):
         assign(tr, c.args[0], "=", c)
         return
-    from .functions import FUNCTIONS
     if name in FUNCTIONS:
         tr.expr(c)      # checked, and displayed by Autolev; nothing to keep
         tr.emit("# (displayed by Autolev; nothing to compute)")
@@ -360,7 +350,7 @@ def command_statement(tr: Translator, st: ir.Command) -> None:
     raise tr.error(f"unknown command {name}()", c, "T003")
 
 
-@handles(ir.Display)
+@STATEMENTS.register(ir.Display)
 def display(tr: Translator, st: ir.Display) -> None:
     tr.expr(st.expr)
     tr.emit("# (displayed by Autolev; nothing to compute)")
@@ -615,7 +605,7 @@ def _unit_arg(unit: ir.Unit | None) -> str:
     return "" if unit is None else f", {quote(unit.text)}"
 
 
-@handles(ir.Input)
+@STATEMENTS.register(ir.Input)
 def input_statement(tr: Translator, st: ir.Input) -> None:
     for item in st.items:
         target = item.target
@@ -641,7 +631,7 @@ def input_statement(tr: Translator, st: ir.Input) -> None:
         tr.emit(f"model.input({t}, {value}{_unit_arg(item.unit)})")
 
 
-@handles(ir.Output)
+@STATEMENTS.register(ir.Output)
 def output_statement(tr: Translator, st: ir.Output) -> None:
     items = []
     for item in st.items:
@@ -690,7 +680,7 @@ def _text_of(e: ir.Expr) -> str:
     return "?"
 
 
-@handles(ir.UnitsStatement)
+@STATEMENTS.register(ir.UnitsStatement)
 def units_statement(tr: Translator, st: ir.UnitsStatement) -> None:
     for item in st.items:
         for target in item.targets:
@@ -707,12 +697,12 @@ def units_statement(tr: Translator, st: ir.UnitsStatement) -> None:
             tr.emit(f"model.units({name}, {quote(item.unit.text)})")
 
 
-@handles(ir.UnitSystem)
+@STATEMENTS.register(ir.UnitSystem)
 def unit_system(tr: Translator, st: ir.UnitSystem) -> None:
     tr.emit(f"model.unit_system({', '.join(quote(u) for u in st.units)})")
 
 
-@handles(ir.Code)
+@STATEMENTS.register(ir.Code)
 def code_statement(tr: Translator, st: ir.Code) -> None:
     args = []
     for a in st.args:
@@ -735,7 +725,7 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
     tr.emit(f"model.code({quote(st.what)}, {quote(st.filename)}{opts})")
 
 
-@handles(ir.Encode)
+@STATEMENTS.register(ir.Encode)
 def encode(tr: Translator, st: ir.Encode) -> None:
     items = []
     for e in st.exprs:
@@ -744,28 +734,28 @@ def encode(tr: Translator, st: ir.Encode) -> None:
     _call_lines(tr, "model.encode(", items)
 
 
-@handles(ir.Save)
+@STATEMENTS.register(ir.Save)
 def save(tr: Translator, st: ir.Save) -> None:
     tr.emit(f"# (SAVE wrote Autolev's session transcript {comment(st.filename)})")
 
 
-@handles(ir.Run)
+@STATEMENTS.register(ir.Run)
 def run(tr: Translator, st: ir.Run) -> None:
     tr.emit(f"# (the statements of {comment(st.filename)} follow)")
 
 
-@handles(ir.MacroCall)
+@STATEMENTS.register(ir.MacroCall)
 def macro(tr: Translator, st: ir.MacroCall) -> None:
     tr.emit(f"# (macro {comment(st.name)}: its statements follow)")
 
 
-@handles(ir.Exit)
+@STATEMENTS.register(ir.Exit)
 def exit_statement(tr: Translator, st: ir.Exit) -> None:
     tr.emit("# (EXIT ends the Autolev session)")
     tr.exited = True
 
 
-@handles(ir.Setting)
+@STATEMENTS.register(ir.Setting)
 def setting(tr: Translator, st: ir.Setting) -> None:
     if st.name == "DEGREES":
         tr.degrees = st.value != "OFF"
