@@ -470,29 +470,25 @@ def _exprs_in(value):
 _WORD_ARGUMENTS = {"UNITS", "MOMENTUM", "GYROSTAT", "DIRCOS", "KINDIFFS", "ANGVEL"}
 
 
+# the sub-expressions whose names an expression reads: its children, except as below
+_READS: Dispatch[Callable[[ir.Expr], tuple[ir.Expr, ...]]] = \
+    Dispatch("names read", ir.no_children)
+_READS.register(ir.Expr)(ir.children)
+# a range's generated names are not reported one by one
+_READS.register(ir.NameRange)(ir.no_children)
+# the left side of x=v names what is substituted, not something read
+_READS.register(ir.Equation)(lambda e: (e.rhs,))
+
+
+@_READS.register(ir.Call)
+def _arguments_read(c: ir.Call) -> tuple[ir.Expr, ...]:
+    return () if c.name.upper() in _WORD_ARGUMENTS else c.args
+
+
 def _expression_names(e: ir.Expr):
     """The plain names read by an expression, in order (not the words some functions
     take as arguments, nor the left sides of x=v arguments)."""
-    stack = [e]
-    while stack:
-        node = stack.pop()
-        if isinstance(node, ir.Name):
-            yield node
-        elif isinstance(node, ir.Call):
-            if node.name.upper() not in _WORD_ARGUMENTS:
-                stack.extend(reversed(node.args))
-        elif isinstance(node, ir.Equation):
-            stack.append(node.rhs)
-        elif isinstance(node, ir.BinOp):
-            stack.extend((node.right, node.left))
-        elif isinstance(node, ir.Neg):
-            stack.append(node.operand)
-        elif isinstance(node, ir.Range):
-            stack.extend((node.hi, node.lo))
-        elif isinstance(node, ir.Matrix):
-            stack.extend(reversed([x for row in node.rows for x in row]))
-        elif isinstance(node, ir.Index):
-            stack.extend(reversed(node.indices))
+    return (node for node in ir.walk(e, _READS) if isinstance(node, ir.Name))
 
 
 def _split_into(pieces: list[str], count: int, accept) -> list | None:

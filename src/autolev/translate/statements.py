@@ -3,8 +3,10 @@ from __future__ import annotations
 
 import re
 import textwrap
+from typing import Callable
 
 from .. import ir
+from ..dispatch import Dispatch
 from .core import STATEMENTS, Entry, Translator, Typed
 from .emit import comment, quote
 from .functions import FUNCTIONS
@@ -663,21 +665,28 @@ def _label(e: ir.Expr) -> str:
 
 
 def _text_of(e: ir.Expr) -> str:
-    if isinstance(e, ir.Name):
-        return e.name + "'" * e.primes
-    if isinstance(e, ir.Number):
-        return e.text
-    if isinstance(e, ir.Index):
-        return f"{e.name}[{','.join(_text_of(i) for i in e.indices)}]"
-    if isinstance(e, ir.VectorName):
-        return e.text
-    if isinstance(e, ir.Call):
-        return f"{e.name}({','.join(_text_of(a) for a in e.args)})"
-    if isinstance(e, ir.BinOp):
-        return f"{_text_of(e.left)}{e.op}{_text_of(e.right)}"
-    if isinstance(e, ir.Neg):
-        return "-" + _text_of(e.operand)
+    return _TEXT.lookup(type(e))(e)
+
+
+def _no_text(e: ir.Expr) -> str:
     return "?"
+
+
+# an expression as written, for a heading ("?" where Autolev's heading is not known);
+# parts are looked up in place, not through _text_of: one Python frame per level
+_TEXT: Dispatch[Callable[[ir.Expr], str]] = Dispatch("expression text", _no_text)
+_TEXT.register(ir.Range, ir.Equation, ir.Matrix, ir.NameRange)(_no_text)
+_TEXT.register(ir.Number, ir.VectorName)(lambda e: e.text)
+_TEXT.register(ir.Name)(lambda e: e.name + "'" * e.primes)
+_TEXT.register(ir.Neg)(lambda e: "-" + _TEXT.lookup(type(e.operand))(e.operand))
+_TEXT.register(ir.BinOp)(lambda e: _TEXT.lookup(type(e.left))(e.left) + e.op
+                         + _TEXT.lookup(type(e.right))(e.right))
+_TEXT.register(ir.Index)(lambda e: f"{e.name}[{_texts(e.indices)}]")
+_TEXT.register(ir.Call)(lambda e: f"{e.name}({_texts(e.args)})")
+
+
+def _texts(exprs: tuple[ir.Expr, ...]) -> str:
+    return ",".join([_TEXT.lookup(type(x))(x) for x in exprs])
 
 
 @STATEMENTS.register(ir.UnitsStatement)
