@@ -38,7 +38,7 @@ ENTITY_KINDS = ("newtonian", "frame", "body", "point", "particle")
 class TranslationError(Exception):
     """Raised inside the translator to stop one statement with a diagnostic."""
 
-    def __init__(self, message: str, node=None, code: str = "T001"):
+    def __init__(self, message: str, node, code: str):
         super().__init__(message)
         self.node = node
         self.code = code
@@ -146,7 +146,9 @@ class Translator:
         for part in code.split("\n"):
             self.lines.append(Line(part, self._span))
 
-    def error(self, message: str, node=None, code: str = "T001") -> TranslationError:
+    def error(self, message: str, node, code: str) -> TranslationError:
+        """The exception that stops a statement with a diagnostic: `raise tr.error(...)`;
+        `code` is one of the T codes listed in docs/language.md."""
         return TranslationError(message, node, code)
 
     def warn(self, message: str, node=None, code: str = "W101") -> None:
@@ -168,7 +170,7 @@ class Translator:
         try:
             py = self.names.assign(space, name, kind)
         except UnsafeName:
-            raise self.error(f"'{name}' cannot be used as a name") from None
+            raise self.error(f"'{name}' cannot be used as a name", None, "T008") from None
         self.autolev_names.setdefault(name, py)
         public = _NAMESPACE.get(space)
         if public is not None:
@@ -347,7 +349,7 @@ class Translator:
     def scalar(self, e: ir.Expr) -> Typed:
         x = self.expr(e)
         if x.type not in ("scalar", "unknown"):
-            raise self.error(f"a scalar is needed here, not a {x.type}", e)
+            raise self.error(f"a scalar is needed here, not a {x.type}", e, "T001")
         return x
 
     def name(self, name: str, primes: int, node, want: str = "value") -> Typed:
@@ -368,7 +370,7 @@ class Translator:
             entry = self.values[key]
             if primes:
                 raise self.error(f"{name} is not a declared variable, so {name}"
-                                 f"{chr(39) * primes} has no meaning", node)
+                                 f"{chr(39) * primes} has no meaning", node, "T008")
             return Typed(entry.py, entry.type)
         if key in ("u_independent", "u_dependent", "u_auxiliary"):
             order = f", {primes}" if primes else ""
@@ -420,7 +422,7 @@ class Translator:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in ("frame", "newtonian", "body"):
                 return Typed(ent.py, "frame")
-        raise self.error("a frame or body is needed here", e)
+        raise self.error("a frame or body is needed here", e, "T008")
 
     def point(self, e: ir.Expr) -> Typed:
         """An expression that must name a point (or particle)."""
@@ -428,7 +430,7 @@ class Translator:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in ("point", "particle"):
                 return Typed(ent.py, "point")
-        raise self.error("a point or particle is needed here", e)
+        raise self.error("a point or particle is needed here", e, "T008")
 
     def entity(self, e: ir.Expr, kinds=ENTITY_KINDS) -> Entry:
         if isinstance(e, ir.Name) and not e.primes:
@@ -436,7 +438,7 @@ class Translator:
             if ent is not None and ent.kind in kinds:
                 return ent
         raise self.error("a " + " or ".join(sorted(set(kinds) - {"newtonian"})) +
-                         " is needed here", e)
+                         " is needed here", e, "T008")
 
 
 def _primes_used(program: ir.Program) -> set[tuple[str, int]]:

@@ -74,7 +74,7 @@ def _binary(tr: Translator, e: ir.BinOp, a: Typed, b: Typed) -> Typed:
         if "unknown" not in (ta, tb) and ta != tb:
             if not ({ta, tb} <= {"scalar", "matrix"}):
                 raise tr.error(f"cannot {'add' if op == '+' else 'subtract'} a {tb} "
-                               f"{'to' if op == '+' else 'from'} a {ta}", e)
+                               f"{'to' if op == '+' else 'from'} a {ta}", e, "T001")
         left = a.wrapped(ADD)
         right = b.wrapped(ADD + 1) if op == "-" else b.wrapped(ADD)
         return Typed(f"{left} {op} {right}", ta if ta != "unknown" else tb, ADD)
@@ -83,15 +83,15 @@ def _binary(tr: Translator, e: ir.BinOp, a: Typed, b: Typed) -> Typed:
             return Typed(f"al.outer({a.code}, {b.code})", "dyadic", ATOM)
         rtype = _product_type(ta, tb)
         if rtype is None:
-            raise tr.error(f"cannot multiply a {ta} by a {tb}", e)
+            raise tr.error(f"cannot multiply a {ta} by a {tb}", e, "T001")
         return Typed(f"{a.wrapped(MUL)}*{b.wrapped(MUL)}", rtype, MUL)
     if op == "/":
         if tb not in ("scalar", "unknown"):
-            raise tr.error(f"cannot divide by a {tb}", e)
+            raise tr.error(f"cannot divide by a {tb}", e, "T001")
         return Typed(f"{a.wrapped(MUL)}/{b.wrapped(MUL + 1)}", ta, MUL)
     # power
     if ta not in ("scalar", "matrix", "unknown") or tb not in ("scalar", "unknown"):
-        raise tr.error(f"cannot raise a {ta} to a power", e)
+        raise tr.error(f"cannot raise a {ta} to a power", e, "T001")
     if a.exact is not None and b.exact is not None and abs(a.exact) > 1 and \
             b.exact > 0 and _power_digits_log10(a.exact, b.exact) > \
             math.log10(MAX_EXACT_DIGITS):
@@ -114,7 +114,7 @@ def name(tr: Translator, e: ir.Name, want: str) -> Typed:
 def index(tr: Translator, e: ir.Index, want: str) -> Typed:
     key = e.name.lower()
     if e.primes:
-        raise tr.error("a prime on an indexed name is not supported", e)
+        raise tr.error("a prime on an indexed name is not supported", e, "T006")
     if key in tr.values or key in tr.scalars:
         base = tr.name(e.name, 0, e)
     else:
@@ -126,7 +126,7 @@ def index(tr: Translator, e: ir.Index, want: str) -> Typed:
         return Typed(f"{base.code}[{idx[0]}]", "scalar", ATOM)
     if len(idx) == 2:
         return Typed(f"{base.code}[{idx[0]}, {idx[1]}]", "scalar", ATOM)
-    raise tr.error("an index has one or two parts", e)
+    raise tr.error("an index has one or two parts", e, "T007")
 
 
 @EXPRESSIONS.register(ir.Matrix)
@@ -142,7 +142,7 @@ def matrix(tr: Translator, e: ir.Matrix, want: str) -> Typed:
         if kinds - {"vector", "dyadic", "unknown"} or \
                 not (len(typed) == 1 or all(len(r) == 1 for r in typed)):
             raise tr.error("a matrix of vectors must be one row or one column of "
-                           "vectors", e)
+                           "vectors", e, "T001")
         return Typed("al.VectorColumn([" + ", ".join(x.code for x in flat) + "])",
                      "vectors")
     for row, trow in zip(e.rows, typed):
@@ -151,7 +151,7 @@ def matrix(tr: Translator, e: ir.Matrix, want: str) -> Typed:
             if x.type == "matrix":
                 block = True
             elif x.type not in ("scalar", "unknown"):
-                raise tr.error(f"a matrix holds scalars, not a {x.type}", el)
+                raise tr.error(f"a matrix holds scalars, not a {x.type}", el, "T001")
             items.append(x.code)
         rows.append(items)
     if block:
@@ -171,12 +171,12 @@ def name_range(tr: Translator, e: ir.NameRange, want: str) -> Typed:
 
 @EXPRESSIONS.register(ir.Range)
 def range_(tr: Translator, e: ir.Range, want: str) -> Typed:
-    raise tr.error("a range n:m is only allowed in some function arguments", e)
+    raise tr.error("a range n:m is only allowed in some function arguments", e, "T009")
 
 
 @EXPRESSIONS.register(ir.Equation)
 def equation(tr: Translator, e: ir.Equation, want: str) -> Typed:
-    raise tr.error("'=' is only allowed in some function arguments", e)
+    raise tr.error("'=' is only allowed in some function arguments", e, "T009")
 
 
 def _fold(op: str, a: Fraction, b: Fraction) -> Fraction | None:
