@@ -121,6 +121,25 @@ def test_undefined_names_are_diagnosed_and_every_error_reported():
 def test_type_errors_are_diagnosed():
     errs = errors("NEWTONIAN N\nX = N1> + 1\nY = DOT(1, N1>)\nZ = SIN(N1>)")
     assert [d.line for d in errs] == [2, 3, 4]
+    assert {d.code for d in errs} == {"T001"}
+
+
+@pytest.mark.parametrize("text, code, message", [
+    ("CONSTANTS A\nX = A + 1\nX += Y", "T002", "'Y' is not declared or defined"),
+    ("CONSTANTS A\nX += A", "T002", "X has no value yet"),
+    ("X = MOMENTUM(FOO)", "T003", "MOMENTUM takes LINEAR or ANGULAR, not FOO"),
+    ("X = [1, 2]\nY = X'[1]", "T006", "a prime on an indexed name is not supported"),
+    ("CONSTANTS A\nX = SIN(A, A)", "T007", "SIN takes 1 argument, not 2"),
+    ("NEWTONIAN N, M", "T007", "NEWTONIAN declares one frame"),
+    ("CONSTANTS A\nX = A\nY = X'", "T008", "X is not a declared variable, so X' has no meaning"),
+    ("MASS Q = 1", "T008", "MASS is given to bodies and particles; 'Q' is not one"),
+    ("CONSTANTS A\nX = EVALUATE(A, A)", "T009", "expected name=value"),
+    ("X = SIN(1:2)", "T009", "a range n:m is only allowed in some function arguments"),
+    ("NEWTONIAN N\nN1> = N2>", "T010", "N1> cannot be assigned"),
+    ("BODIES B = 3", "T010", "BODIES names take no value, sign or prime")])
+def test_each_kind_of_translation_error_has_its_code(text, code, message):
+    (d,) = errors(text)
+    assert (d.code, d.message) == (code, message)
 
 
 def test_runtime_failure_points_at_the_autolev_statement(tmp_path):

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Iterator
+from typing import Callable, Iterator
 
+from .dispatch import Dispatch
 from .errors import Diagnostic, Span
 
 
@@ -134,34 +135,37 @@ class Neg(Expr):
     operand: Expr
 
 
-def walk(expr: Expr) -> Iterator[Expr]:
-    """Every node of an expression tree, parents first (in a loop: a sum of thousands of
-    terms is deeper than Python's recursion)."""
+def no_children(expr: Expr) -> tuple[Expr, ...]:
+    return ()
+
+
+# the sub-expressions of each node class, in the order they are written; a class
+# registered nowhere is walked as a leaf (the translator reports it as unsupported)
+CHILDREN: Dispatch[Callable[[Expr], tuple[Expr, ...]]] = Dispatch("children", no_children)
+CHILDREN.register(Number, Name, VectorName)(no_children)
+CHILDREN.register(BinOp)(lambda e: (e.left, e.right))
+CHILDREN.register(Neg)(lambda e: (e.operand,))
+CHILDREN.register(Range)(lambda e: (e.lo, e.hi))
+CHILDREN.register(Equation)(lambda e: (e.lhs, e.rhs))
+CHILDREN.register(Call)(lambda e: e.args)
+CHILDREN.register(Index)(lambda e: e.indices)
+CHILDREN.register(NameRange)(lambda e: e.names)
+CHILDREN.register(Matrix)(lambda e: tuple(x for row in e.rows for x in row))
+
+
+def children(expr: Expr) -> tuple[Expr, ...]:
+    return CHILDREN.lookup(type(expr))(expr)
+
+
+def walk(expr: Expr, table: Dispatch = CHILDREN) -> Iterator[Expr]:
+    """Every node of an expression tree, parents first, descending into what `table`
+    gives for each node (in a loop: a sum of thousands of terms is deeper than Python's
+    recursion)."""
     stack = [expr]
     while stack:
         node = stack.pop()
         yield node
-        stack.extend(reversed(_children(node)))
-
-
-def _children(expr: Expr) -> tuple[Expr, ...]:
-    if isinstance(expr, BinOp):
-        return expr.left, expr.right
-    if isinstance(expr, Neg):
-        return (expr.operand,)
-    if isinstance(expr, Range):
-        return expr.lo, expr.hi
-    if isinstance(expr, Equation):
-        return expr.lhs, expr.rhs
-    if isinstance(expr, Call):
-        return expr.args
-    if isinstance(expr, Index):
-        return expr.indices
-    if isinstance(expr, NameRange):
-        return expr.names
-    if isinstance(expr, Matrix):
-        return tuple(e for row in expr.rows for e in row)
-    return ()
+        stack.extend(reversed(table.lookup(type(node))(node)))
 
 
 # ---------------------------------------------------------------------------

@@ -11,12 +11,14 @@ import gc
 import itertools
 import os
 from pathlib import Path
+from typing import Any, Callable
 
 from antlr4 import Token
 from antlr4.tree.Tree import TerminalNode
 
 from . import ir
 from ._antlr.AutolevParser import AutolevParser as P
+from .dispatch import Dispatch
 from .errors import Diagnostic, Location, Span
 from .source import (MAX_INCLUDE_DEPTH, MappedText, RunRefused, SourceFile, expand_macro,
                      find_macro, is_within, mapped_source, placeholders, resolve_run)
@@ -142,9 +144,18 @@ class Builder:
         self._error(ctx_or_token, code, message, notes, severity="warning")
 
     # -- statements ------------------------------------------------------------
+    def _unbuilt(self, ctx) -> None:
+        """The fallback of the parse-tree tables: a construct the grammar reads and no
+        handler builds is an error at its place, never a crash."""
+        self._error(ctx, "E007", f"{_rule(ctx)}: read by the grammar but not supported yet")
+
+    # handler(builder, statement's context) -> the statement, or None when none is added
+    _STATEMENTS: Dispatch[Callable[[Builder, Any], ir.Statement | None]] = \
+        Dispatch("IR builder statements", _unbuilt)
+
     def _statement(self, ctx: P.StatementContext) -> None:
         node = ctx.getChild(0)
-        handler = self._HANDLERS[type(node)]
+        handler = self._STATEMENTS.lookup(type(node))
         try:
             result = handler(self, node)
         except RecursionError:
@@ -157,6 +168,7 @@ class Builder:
     def _common(self, ctx) -> dict:
         return {"span": self._span(ctx), "text": self._text(ctx)}
 
+    @_STATEMENTS.register(P.DeclarationContext)
     def _declaration(self, ctx: P.DeclarationContext) -> ir.Declaration:
         what = _DECLARATION_WORDS[ctx.declKeyword().start.type]
         kprimes = len(ctx.PRIME())
@@ -244,6 +256,7 @@ class Builder:
         names = ["".join(combo) for combo in itertools.product(*pieces)]
         return names, tuple(len(d) for d in dims)
 
+    @_STATEMENTS.register(P.MassStatementContext)
     def _mass(self, ctx: P.MassStatementContext) -> ir.MassStatement:
         items = []
         for it in ctx.massItem():
@@ -255,6 +268,7 @@ class Builder:
             items.append(ir.MassItem(it.name().getText(), value, chained, self._span(it)))
         return ir.MassStatement(items=tuple(items), **self._common(ctx))
 
+    @_STATEMENTS.register(P.InertiaStatementContext)
     def _inertia(self, ctx: P.InertiaStatementContext) -> ir.InertiaStatement:
         names = ctx.name()
         body = names[0].getText()
@@ -278,6 +292,7 @@ class Builder:
         return ir.InertiaStatement(body=body, frame=frame, values=tuple(values),
                                    definitions=tuple(definitions), **self._common(ctx))
 
+    @_STATEMENTS.register(P.AssignmentContext)
     def _assignment(self, ctx: P.AssignmentContext) -> ir.Assignment:
         t = ctx.target()
         if isinstance(t, P.VectorTargetContext):
@@ -292,6 +307,7 @@ class Builder:
         return ir.Assignment(target=target, op=ctx.assignOp().getText(),
                              value=self._expr(ctx.expr()), **self._common(ctx))
 
+    @_STATEMENTS.register(P.ExpressionStatementContext)
     def _expression_statement(self, ctx: P.ExpressionStatementContext) -> ir.Statement | None:
         expr = self._expr(ctx.expr())
         if isinstance(expr, ir.Call) and isinstance(ctx.expr().getChild(0), P.PrimaryContext):
@@ -304,6 +320,7 @@ class Builder:
             return None
         return ir.Display(expr=expr, **self._common(ctx))
 
+    @_STATEMENTS.register(P.InputStatementContext)
     def _input(self, ctx: P.InputStatementContext) -> ir.Input:
         items = []
         for it in ctx.inputItem():
@@ -318,11 +335,13 @@ class Builder:
                                       self._span(it)))
         return ir.Input(items=tuple(items), **self._common(ctx))
 
+    @_STATEMENTS.register(P.OutputStatementContext)
     def _output(self, ctx: P.OutputStatementContext) -> ir.Output:
         items = tuple(ir.OutputItem(self._expr(it.expr()), self._unit(it.unit()), self._span(it))
                       for it in ctx.outputItem())
         return ir.Output(items=items, **self._common(ctx))
 
+    @_STATEMENTS.register(P.UnitsStatementContext)
     def _units(self, ctx: P.UnitsStatementContext) -> ir.UnitsStatement:
         items = []
         for it in ctx.unitsItem():
@@ -337,9 +356,11 @@ class Builder:
             items.append(ir.UnitsItem(tuple(targets), self._unit(it.unit()), self._span(it)))
         return ir.UnitsStatement(items=tuple(items), **self._common(ctx))
 
+    @_STATEMENTS.register(P.UnitSystemStatementContext)
     def _unit_system(self, ctx: P.UnitSystemStatementContext) -> ir.UnitSystem:
         return ir.UnitSystem(units=tuple(n.getText() for n in ctx.name()), **self._common(ctx))
 
+    @_STATEMENTS.register(P.CodeStatementContext)
     def _code(self, ctx: P.CodeStatementContext) -> ir.Code | None:
         names = ctx.name()
         what = names[0].getText().lower()
@@ -371,15 +392,19 @@ class Builder:
                 break
         return self._text(ctx)
 
+    @_STATEMENTS.register(P.SaveStatementContext)
     def _save(self, ctx: P.SaveStatementContext) -> ir.Save:
         return ir.Save(filename=self._filename(ctx.fileName()), **self._common(ctx))
 
+    @_STATEMENTS.register(P.EncodeStatementContext)
     def _encode(self, ctx: P.EncodeStatementContext) -> ir.Encode:
         return ir.Encode(exprs=tuple(self._expr(e) for e in ctx.expr()), **self._common(ctx))
 
+    @_STATEMENTS.register(P.ExitStatementContext)
     def _exit(self, ctx: P.ExitStatementContext) -> ir.Exit:
         return ir.Exit(**self._common(ctx))
 
+    @_STATEMENTS.register(P.SettingContext)
     def _setting(self, ctx: P.SettingContext) -> ir.Setting:
         name = ctx.settingName().getText().upper()
         v = ctx.settingValue()
@@ -401,6 +426,7 @@ class Builder:
         return ir.Setting(name=name, value=value, **self._common(ctx))
 
     # -- RUN and macros ----------------------------------------------------------
+    @_STATEMENTS.register(P.RunStatementContext)
     def _run(self, ctx: P.RunStatementContext) -> None:
         name = self._filename(ctx.fileName())
         including = self._ctx.path
@@ -533,8 +559,9 @@ class Builder:
     # (ctx.expr(0), ctx.name(), ...) scan the children list on every call.
     def _expr(self, ctx: P.ExprContext) -> ir.Expr:
         kids = ctx.children
-        if len(kids) == 1:                      # primaryExpr
-            return self._primary(kids[0])
+        if len(kids) == 1:                      # primaryExpr: its primary's handler, called
+            primary = kids[0]                   # from here (one Python frame per level)
+            return self._PRIMARIES.lookup(type(primary))(self, primary)
         if len(kids) == 2:                      # unaryExpr
             operand = self._expr(kids[1])
             if kids[0].symbol.type == P.PLUS:
@@ -568,44 +595,66 @@ class Builder:
         dyadic = text.endswith(">>")
         return ir.VectorName(text.rstrip(">"), dyadic, span=self._span(ctx))
 
-    def _primary(self, ctx: P.PrimaryContext) -> ir.Expr:
-        span = self._span(ctx)
-        kids = ctx.children
-        kind = type(ctx)
-        if kind is P.NameAtomContext:
-            return ir.Name(kids[0].start.text, self._primes(kids[0], kids[1:]) if len(kids) > 1
-                           else 0, span=span)
-        if kind is P.NumberAtomContext:
-            text = ctx.start.text
-            if len(text) > MAX_NUMBER_DIGITS:
-                self._error(ctx, "E042", f"a number of {len(text)} characters; at most "
-                            f"{MAX_NUMBER_DIGITS} are read")
-                return ir.Number("0", span=span)
-            return ir.Number(text, span=span)
-        if kind is P.CallAtomContext:
-            arg_ctxs = kids[2].children[::2] if len(kids) == 4 else []
-            expanded = self._user_function(ctx, kids[0].start.text, arg_ctxs)
-            if expanded is not None:
-                return expanded
-            return ir.Call(kids[0].start.text, tuple(self._arg(a) for a in arg_ctxs),
-                           span=span)
-        if kind is P.VectorAtomContext:
-            return self._vector(ctx.start, ctx)
-        if kind is P.ParenAtomContext:
-            return self._expr(kids[1])
-        if kind is P.IndexAtomContext:
-            return ir.Index(kids[0].start.text, self._indices(kids[-2]),
-                            len(kids) - 4, span=span)
-        if kind is P.MatrixAtomContext:
-            rows = tuple(tuple(self._expr(e) for e in r.children[::2]) for r in kids[1:-1:2])
-            return ir.Matrix(rows, span=span)
-        if kind is P.EmptyMatrixAtomContext:
-            return ir.Matrix((), span=span)
-        if kind is P.RangeAtomContext:
-            return self._name_range(ctx, span)
-        raise AssertionError(f"unhandled primary {kind.__name__}")
+    def _unbuilt_primary(self, ctx) -> ir.Expr:
+        self._unbuilt(ctx)
+        return ir.Number("0", span=self._span(ctx))    # stands in: the error stops the model
 
-    def _name_range(self, ctx: P.RangeAtomContext, span: Span) -> ir.Expr:
+    # handler(builder, primary's context) -> the expression
+    _PRIMARIES: Dispatch[Callable[[Builder, Any], ir.Expr]] = \
+        Dispatch("IR builder primaries", _unbuilt_primary)
+
+    @_PRIMARIES.register(P.NameAtomContext)
+    def _name_atom(self, ctx: P.NameAtomContext) -> ir.Expr:
+        kids = ctx.children
+        return ir.Name(kids[0].start.text, self._primes(kids[0], kids[1:]) if len(kids) > 1
+                       else 0, span=self._span(ctx))
+
+    @_PRIMARIES.register(P.NumberAtomContext)
+    def _number_atom(self, ctx: P.NumberAtomContext) -> ir.Expr:
+        text = ctx.start.text
+        if len(text) > MAX_NUMBER_DIGITS:
+            self._error(ctx, "E042", f"a number of {len(text)} characters; at most "
+                        f"{MAX_NUMBER_DIGITS} are read")
+            return ir.Number("0", span=self._span(ctx))
+        return ir.Number(text, span=self._span(ctx))
+
+    @_PRIMARIES.register(P.CallAtomContext)
+    def _call_atom(self, ctx: P.CallAtomContext) -> ir.Expr:
+        kids = ctx.children
+        arg_ctxs = kids[2].children[::2] if len(kids) == 4 else []
+        expanded = self._user_function(ctx, kids[0].start.text, arg_ctxs)
+        if expanded is not None:
+            return expanded
+        return ir.Call(kids[0].start.text, tuple(self._arg(a) for a in arg_ctxs),
+                       span=self._span(ctx))
+
+    @_PRIMARIES.register(P.VectorAtomContext)
+    def _vector_atom(self, ctx: P.VectorAtomContext) -> ir.Expr:
+        return self._vector(ctx.start, ctx)
+
+    @_PRIMARIES.register(P.ParenAtomContext)
+    def _paren_atom(self, ctx: P.ParenAtomContext) -> ir.Expr:
+        return self._expr(ctx.children[1])
+
+    @_PRIMARIES.register(P.IndexAtomContext)
+    def _index_atom(self, ctx: P.IndexAtomContext) -> ir.Expr:
+        kids = ctx.children
+        return ir.Index(kids[0].start.text, self._indices(kids[-2]), len(kids) - 4,
+                        span=self._span(ctx))
+
+    @_PRIMARIES.register(P.MatrixAtomContext)
+    def _matrix_atom(self, ctx: P.MatrixAtomContext) -> ir.Expr:
+        rows = tuple(tuple(self._expr(e) for e in r.children[::2])
+                     for r in ctx.children[1:-1:2])
+        return ir.Matrix(rows, span=self._span(ctx))
+
+    @_PRIMARIES.register(P.EmptyMatrixAtomContext)
+    def _empty_matrix_atom(self, ctx: P.EmptyMatrixAtomContext) -> ir.Expr:
+        return ir.Matrix((), span=self._span(ctx))
+
+    @_PRIMARIES.register(P.RangeAtomContext)
+    def _name_range(self, ctx: P.RangeAtomContext) -> ir.Expr:
+        span = self._span(ctx)
         primes = len(ctx.PRIME())
         parts: list = [ctx.name().getText()]
         for child in list(ctx.getChildren())[1:]:
@@ -670,23 +719,11 @@ class Builder:
             factors.append((child.name().getText(), sign * power))
         return ir.Unit(self._text(ctx), tuple(factors), self._span(ctx))
 
-    _HANDLERS = {
-        P.DeclarationContext: _declaration,
-        P.MassStatementContext: _mass,
-        P.InertiaStatementContext: _inertia,
-        P.AssignmentContext: _assignment,
-        P.ExpressionStatementContext: _expression_statement,
-        P.InputStatementContext: _input,
-        P.OutputStatementContext: _output,
-        P.UnitsStatementContext: _units,
-        P.UnitSystemStatementContext: _unit_system,
-        P.CodeStatementContext: _code,
-        P.SaveStatementContext: _save,
-        P.EncodeStatementContext: _encode,
-        P.RunStatementContext: _run,
-        P.ExitStatementContext: _exit,
-        P.SettingContext: _setting,
-    }
+
+def _rule(ctx) -> str:
+    """The grammar rule or labelled alternative a parse-tree context stands for."""
+    name = type(ctx).__name__.removesuffix("Context")
+    return name[:1].lower() + name[1:]
 
 
 def sort_key(d: Diagnostic) -> tuple:

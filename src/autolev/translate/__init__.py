@@ -2,6 +2,9 @@
 from __future__ import annotations
 
 from .. import ir
+
+# the families register their handlers in core's tables when imported, before any use
+from . import expressions, functions, special, statements  # noqa: F401
 from .core import Translation, Translator
 
 __all__ = ["translate", "Translation"]

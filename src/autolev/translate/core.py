@@ -5,25 +5,22 @@ One `Translator` walks the program's statements in order, keeping what every nam
 writing a line or two of Python per statement, preceded by the Autolev line as a
 comment.  Expressions are written with their type (scalar, vector, dyadic, matrix,
 frame, point) so each construct can be checked and written the way its types need.
-Statement families and functions live in `statements.py` and `functions.py`.
+Expressions, functions, vector names and statements are written by handlers in
+`expressions.py`, `functions.py`, `special.py` and `statements.py`, registered in the
+tables `EXPRESSIONS` and `STATEMENTS` defined here (importing the package imports them).
 """
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass, field
 from fractions import Fraction
+from typing import Any, Callable
 
 from .. import ir
-from ..errors import MAX_EXACT_DIGITS, Diagnostic, Span
+from ..dispatch import Dispatch
+from ..errors import Diagnostic, Location, Span
 from .emit import comment, docstring, quote
 from .names import NameTable, UnsafeName
-
-# Python cannot compile a longer chain A + B + ... (its nesting limit is about 3000)
-MAX_CHAIN_TERMS = 2000
-# functions nested deeper than this make sympy's automatic evaluation exponential (the
-# real-imaginary split of TANH(SINH(...)) 150 deep runs for hours); models nest three
-MAX_CALL_NESTING = 32
 
 # precedence of the Python written for an expression
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
@@ -41,7 +38,7 @@ ENTITY_KINDS = ("newtonian", "frame", "body", "point", "particle")
 class TranslationError(Exception):
     """Raised inside the translator to stop one statement with a diagnostic."""
 
-    def __init__(self, message: str, node=None, code: str = "T001"):
+    def __init__(self, message: str, node, code: str):
         super().__init__(message)
         self.node = node
         self.code = code
@@ -85,6 +82,21 @@ class Translation:
     # "entity" (frames, bodies, points, particles), "vector" (vectors and dyadics),
     # each Autolev name -> Python name
     namespaces: dict[str, dict[str, str]] = field(default_factory=dict)
+
+
+def _unsupported_statement(tr: Translator, st: ir.Statement) -> None:
+    raise tr.error(f"{st.kind} statements are not supported yet", st, "T006")
+
+
+def _unsupported_expression(tr: Translator, e: ir.Expr, want: str) -> Typed:
+    raise tr.error(f"{type(e).__name__} expressions are not supported yet", e, "T006")
+
+
+# handler(translator, statement) and handler(translator, expression, want) -> Typed
+STATEMENTS: Dispatch[Callable[[Translator, Any], None]] = \
+    Dispatch("translator statements", _unsupported_statement)
+EXPRESSIONS: Dispatch[Callable[[Translator, Any, str], Typed]] = \
+    Dispatch("translator expressions", _unsupported_expression)
 
 
 class Translator:
@@ -134,7 +146,9 @@ class Translator:
         for part in code.split("\n"):
             self.lines.append(Line(part, self._span))
 
-    def error(self, message: str, node=None, code: str = "T001") -> TranslationError:
+    def error(self, message: str, node, code: str) -> TranslationError:
+        """The exception that stops a statement with a diagnostic: `raise tr.error(...)`;
+        `code` is one of the T codes listed in docs/language.md."""
         return TranslationError(message, node, code)
 
     def warn(self, message: str, node=None, code: str = "W101") -> None:
@@ -148,7 +162,6 @@ class Translator:
             lines = self.program.sources.get(loc.file)
             if lines and 1 <= loc.line <= len(lines):
                 source = lines[loc.line - 1]
-        from ..errors import Location
         return Diagnostic(loc or Location(self.program.filename, 1, 1), code, message,
                           severity, source)
 
@@ -157,7 +170,7 @@ class Translator:
         try:
             py = self.names.assign(space, name, kind)
         except UnsafeName:
-            raise self.error(f"'{name}' cannot be used as a name") from None
+            raise self.error(f"'{name}' cannot be used as a name", None, "T008") from None
         self.autolev_names.setdefault(name, py)
         public = _NAMESPACE.get(space)
         if public is not None:
@@ -193,7 +206,6 @@ class Translator:
 
     # -- driving -----------------------------------------------------------------------
     def translate(self) -> Translation:
-        from .statements import HANDLERS
         self._header()
         previous_end: dict[str, int] = {}
         statements = self.program.statements
@@ -204,11 +216,8 @@ class Translator:
                 break
             self._span = st.span
             self._comments_before(st, previous_end)
-            handler = HANDLERS.get(type(st))
             try:
-                if handler is None:
-                    raise self.error(f"{st.kind} statements are not supported yet", st)
-                handler(self, st)
+                STATEMENTS.lookup(type(st))(self, st)
             except RecursionError:
                 # unary signs or powers nested hundreds deep (a chain of sums is a loop)
                 self.diagnostics.append(self._diagnostic(
@@ -333,101 +342,15 @@ class Translator:
 
     # -- expressions ---------------------------------------------------------------------
     def expr(self, e: ir.Expr, want: str = "value") -> Typed:
-        method = getattr(self, "_x_" + type(e).__name__)
-        result = method(e, want)
+        result = EXPRESSIONS.lookup(type(e))(self, e, want)
         result.node = e
         return result
 
     def scalar(self, e: ir.Expr) -> Typed:
         x = self.expr(e)
         if x.type not in ("scalar", "unknown"):
-            raise self.error(f"a scalar is needed here, not a {x.type}", e)
+            raise self.error(f"a scalar is needed here, not a {x.type}", e, "T001")
         return x
-
-    def _x_Number(self, e: ir.Number, want) -> Typed:
-        if e.is_integer:
-            value = int(e.text)
-            return Typed(str(value), "scalar", ATOM, Fraction(value))    # 007 is 7
-        return Typed(e.text, "scalar", ATOM)
-
-    def _x_Neg(self, e: ir.Neg, want) -> Typed:
-        x = self.expr(e.operand)
-        exact = -x.exact if x.exact is not None else None
-        if exact is not None:
-            return _exact_typed(exact)
-        return Typed("-" + x.wrapped(MUL), x.type, UNARY)
-
-    def _x_BinOp(self, e: ir.BinOp, want) -> Typed:
-        # a left-associated chain (A + B - C + ..., A*B/C) is folded in a loop: responses
-        # pasted into models sum hundreds of terms, deeper than Python's recursion
-        group = "+-" if e.op in "+-" else "*/" if e.op in "*/" else None
-        chain = []
-        node: ir.Expr = e
-        while group and isinstance(node, ir.BinOp) and node.op in group:
-            chain.append(node)
-            node = node.left
-        if not chain:
-            chain, node = [e], e.left
-        if len(chain) >= MAX_CHAIN_TERMS:
-            what = "sum" if group == "+-" else "product"
-            raise self.error(f"a {what} of {len(chain) + 1} terms; at most {MAX_CHAIN_TERMS} "
-                             f"terms in one sum or product are translated (split it into "
-                             "several names)", e, "T004")
-        result = self.expr(node)
-        for level in reversed(chain):
-            result = self._binary(level, result, self.expr(level.right))
-            result.node = level
-        return result
-
-    def _binary(self, e: ir.BinOp, a: Typed, b: Typed) -> Typed:
-        op = e.op
-        if a.exact is not None and b.exact is not None:
-            v = _fold(op, a.exact, b.exact)
-            if v is not None:
-                digits = max(v.numerator.bit_length(), v.denominator.bit_length()) * 0.30103
-                if digits > MAX_EXACT_DIGITS:
-                    raise self.error(f"this exact number has about {digits:.0f} digits; "
-                                     f"exact numbers of more than {MAX_EXACT_DIGITS} digits "
-                                     "are refused (write a decimal number, 1E300, for a "
-                                     "floating-point one)", e, "T005")
-                return _exact_typed(v)
-        ta, tb = a.type, b.type
-        if op in "+-":
-            if "unknown" not in (ta, tb) and ta != tb:
-                if not ({ta, tb} <= {"scalar", "matrix"}):
-                    raise self.error(f"cannot {'add' if op == '+' else 'subtract'} a {tb} "
-                                     f"{'to' if op == '+' else 'from'} a {ta}", e)
-            left = a.wrapped(ADD)
-            right = b.wrapped(ADD + 1) if op == "-" else b.wrapped(ADD)
-            return Typed(f"{left} {op} {right}", ta if ta != "unknown" else tb, ADD)
-        if op == "*":
-            if ta in ("vector",) and tb in ("vector",):
-                return Typed(f"al.outer({a.code}, {b.code})", "dyadic", ATOM)
-            rtype = _product_type(ta, tb)
-            if rtype is None:
-                raise self.error(f"cannot multiply a {ta} by a {tb}", e)
-            return Typed(f"{a.wrapped(MUL)}*{b.wrapped(MUL)}", rtype, MUL)
-        if op == "/":
-            if tb not in ("scalar", "unknown"):
-                raise self.error(f"cannot divide by a {tb}", e)
-            return Typed(f"{a.wrapped(MUL)}/{b.wrapped(MUL + 1)}", ta, MUL)
-        # power
-        if ta not in ("scalar", "matrix", "unknown") or tb not in ("scalar", "unknown"):
-            raise self.error(f"cannot raise a {ta} to a power", e)
-        if a.exact is not None and b.exact is not None and abs(a.exact) > 1 and \
-                b.exact > 0 and _power_digits_log10(a.exact, b.exact) > \
-                math.log10(MAX_EXACT_DIGITS):
-            # sympy would compute the exact number (10^10^10 has 10^10 digits)
-            log_digits = _power_digits_log10(a.exact, b.exact)
-            # beyond a float's range (2^(10^400)), the digit count as a power of ten
-            digits = f"{10 ** log_digits:.3g}" if log_digits < 300 else f"10^{log_digits:.0f}"
-            raise self.error(f"this power has about {digits} digits; exact numbers of "
-                             f"more than {MAX_EXACT_DIGITS} digits are refused (write a "
-                             "decimal number, 1E300, for a floating-point one)", e, "T005")
-        return Typed(f"{a.wrapped(POW + 1)}**{b.wrapped(UNARY)}", ta, POW)
-
-    def _x_Name(self, e: ir.Name, want) -> Typed:
-        return self.name(e.name, e.primes, e, want)
 
     def name(self, name: str, primes: int, node, want: str = "value") -> Typed:
         key = name.lower()
@@ -447,7 +370,7 @@ class Translator:
             entry = self.values[key]
             if primes:
                 raise self.error(f"{name} is not a declared variable, so {name}"
-                                 f"{chr(39) * primes} has no meaning", node)
+                                 f"{chr(39) * primes} has no meaning", node, "T008")
             return Typed(entry.py, entry.type)
         if key in ("u_independent", "u_dependent", "u_auxiliary"):
             order = f", {primes}" if primes else ""
@@ -483,39 +406,6 @@ class Translator:
             return ent
         return None
 
-    def _x_VectorName(self, e: ir.VectorName, want) -> Typed:
-        from .special import vector_name
-        return vector_name(self, e)
-
-    def _x_Call(self, e: ir.Call, want) -> Typed:
-        from .functions import call
-        if self.call_depth >= MAX_CALL_NESTING:
-            raise self.error(f"functions nested more than {MAX_CALL_NESTING} deep; at most "
-                             f"{MAX_CALL_NESTING} are translated (name the inner parts)",
-                             e, "T004")
-        self.call_depth += 1
-        try:
-            return call(self, e)
-        finally:
-            self.call_depth -= 1
-
-    def _x_Index(self, e: ir.Index, want) -> Typed:
-        key = e.name.lower()
-        if e.primes:
-            raise self.error("a prime on an indexed name is not supported", e)
-        if key in self.values or key in self.scalars:
-            base = self.name(e.name, 0, e)
-        else:
-            base = self.dcm_name(e.name)
-            if base is None:
-                raise self.error(f"'{e.name}' is not defined", e, "T002")
-        idx = [self.index_code(i) for i in e.indices]
-        if len(idx) == 1:
-            return Typed(f"{base.code}[{idx[0]}]", "scalar", ATOM)
-        if len(idx) == 2:
-            return Typed(f"{base.code}[{idx[0]}, {idx[1]}]", "scalar", ATOM)
-        raise self.error("an index has one or two parts", e)
-
     def index_code(self, e: ir.Expr) -> str:
         """A 1-based Autolev index as a 0-based Python index."""
         if isinstance(e, ir.Range):
@@ -526,55 +416,13 @@ class Translator:
             return str(int(x.exact) - 1)
         return f"int({x.code}) - 1"
 
-    def _x_Matrix(self, e: ir.Matrix, want) -> Typed:
-        if not e.rows:
-            return Typed("sm.Matrix()", "matrix")
-        rows = []
-        block = False
-        typed = [[self.expr(el) for el in row] for row in e.rows]
-        kinds = {x.type for row in typed for x in row}
-        if kinds & {"vector", "dyadic"}:
-            flat = [x for row in typed for x in row]
-            if kinds - {"vector", "dyadic", "unknown"} or \
-                    not (len(typed) == 1 or all(len(r) == 1 for r in typed)):
-                raise self.error("a matrix of vectors must be one row or one column of "
-                                 "vectors", e)
-            return Typed("al.VectorColumn([" + ", ".join(x.code for x in flat) + "])",
-                         "vectors")
-        for row, trow in zip(e.rows, typed):
-            items = []
-            for el, x in zip(row, trow):
-                if x.type == "matrix":
-                    block = True
-                elif x.type not in ("scalar", "unknown"):
-                    raise self.error(f"a matrix holds scalars, not a {x.type}", el)
-                items.append(x.code)
-            rows.append(items)
-        if block:
-            inner = ", ".join("[" + ", ".join(r) + "]" for r in rows)
-            return Typed(f"al.block_matrix([{inner}])", "matrix")
-        if all(len(r) == 1 for r in rows):
-            return Typed("sm.Matrix([" + ", ".join(r[0] for r in rows) + "])", "matrix")
-        inner = ", ".join("[" + ", ".join(r) + "]" for r in rows)
-        return Typed(f"sm.Matrix([{inner}])", "matrix")
-
-    def _x_NameRange(self, e: ir.NameRange, want) -> Typed:
-        items = [self.expr(n) for n in e.names]
-        return Typed("[" + ", ".join(i.code for i in items) + "]", "list")
-
-    def _x_Range(self, e: ir.Range, want) -> Typed:
-        raise self.error("a range n:m is only allowed in some function arguments", e)
-
-    def _x_Equation(self, e: ir.Equation, want) -> Typed:
-        raise self.error("'=' is only allowed in some function arguments", e)
-
     def frame(self, e: ir.Expr) -> Typed:
         """An expression that must name a frame (or a body)."""
         if isinstance(e, ir.Name) and not e.primes:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in ("frame", "newtonian", "body"):
                 return Typed(ent.py, "frame")
-        raise self.error("a frame or body is needed here", e)
+        raise self.error("a frame or body is needed here", e, "T008")
 
     def point(self, e: ir.Expr) -> Typed:
         """An expression that must name a point (or particle)."""
@@ -582,7 +430,7 @@ class Translator:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in ("point", "particle"):
                 return Typed(ent.py, "point")
-        raise self.error("a point or particle is needed here", e)
+        raise self.error("a point or particle is needed here", e, "T008")
 
     def entity(self, e: ir.Expr, kinds=ENTITY_KINDS) -> Entry:
         if isinstance(e, ir.Name) and not e.primes:
@@ -590,7 +438,7 @@ class Translator:
             if ent is not None and ent.kind in kinds:
                 return ent
         raise self.error("a " + " or ".join(sorted(set(kinds) - {"newtonian"})) +
-                         " is needed here", e)
+                         " is needed here", e, "T008")
 
 
 def _primes_used(program: ir.Program) -> set[tuple[str, int]]:
@@ -624,29 +472,25 @@ def _exprs_in(value):
 _WORD_ARGUMENTS = {"UNITS", "MOMENTUM", "GYROSTAT", "DIRCOS", "KINDIFFS", "ANGVEL"}
 
 
+# the sub-expressions whose names an expression reads: its children, except as below
+_READS: Dispatch[Callable[[ir.Expr], tuple[ir.Expr, ...]]] = \
+    Dispatch("names read", ir.no_children)
+_READS.register(ir.Expr)(ir.children)
+# a range's generated names are not reported one by one
+_READS.register(ir.NameRange)(ir.no_children)
+# the left side of x=v names what is substituted, not something read
+_READS.register(ir.Equation)(lambda e: (e.rhs,))
+
+
+@_READS.register(ir.Call)
+def _arguments_read(c: ir.Call) -> tuple[ir.Expr, ...]:
+    return () if c.name.upper() in _WORD_ARGUMENTS else c.args
+
+
 def _expression_names(e: ir.Expr):
     """The plain names read by an expression, in order (not the words some functions
     take as arguments, nor the left sides of x=v arguments)."""
-    stack = [e]
-    while stack:
-        node = stack.pop()
-        if isinstance(node, ir.Name):
-            yield node
-        elif isinstance(node, ir.Call):
-            if node.name.upper() not in _WORD_ARGUMENTS:
-                stack.extend(reversed(node.args))
-        elif isinstance(node, ir.Equation):
-            stack.append(node.rhs)
-        elif isinstance(node, ir.BinOp):
-            stack.extend((node.right, node.left))
-        elif isinstance(node, ir.Neg):
-            stack.append(node.operand)
-        elif isinstance(node, ir.Range):
-            stack.extend((node.hi, node.lo))
-        elif isinstance(node, ir.Matrix):
-            stack.extend(reversed([x for row in node.rows for x in row]))
-        elif isinstance(node, ir.Index):
-            stack.extend(reversed(node.indices))
+    return (node for node in ir.walk(e, _READS) if isinstance(node, ir.Name))
 
 
 def _split_into(pieces: list[str], count: int, accept) -> list | None:
@@ -660,52 +504,6 @@ def _split_into(pieces: list[str], count: int, accept) -> list | None:
         rest = _split_into(pieces[i:], count - 1, accept)
         if rest is not None:
             return [head] + rest
-    return None
-
-
-def _fold(op: str, a: Fraction, b: Fraction) -> Fraction | None:
-    if op == "+":
-        return a + b
-    if op == "-":
-        return a - b
-    if op == "*":
-        return a * b
-    if op == "/":
-        return a / b if b != 0 else None
-    if op == "^" and b.denominator == 1 and not (a == 0 and b < 0) and \
-            (abs(b) <= 64 or _power_digits_log10(a, b) <= math.log10(MAX_EXACT_DIGITS)):
-        return a ** int(b)
-    return None
-
-
-def _log10(v: Fraction) -> float:
-    """log10 |v| of an exact number however large (float(v) would overflow)."""
-    return math.log10(abs(v.numerator)) - math.log10(v.denominator)
-
-
-def _power_digits_log10(a: Fraction, b: Fraction) -> float:
-    """log10 of the number of digits of a^b (-inf for 0, 1 and -1, or b = 0)."""
-    if a in (0, 1, -1) or b == 0:
-        return -math.inf
-    return _log10(b) + math.log10(abs(_log10(a)))
-
-
-def _exact_typed(v: Fraction) -> Typed:
-    if v.denominator == 1:
-        text = str(v.numerator)
-        return Typed(text, "scalar", ATOM if v >= 0 else UNARY, v)
-    return Typed(f"sm.Rational({v.numerator}, {v.denominator})", "scalar", ATOM, v)
-
-
-def _product_type(a: str, b: str) -> str | None:
-    if a == "unknown" or b == "unknown":
-        return a if b == "unknown" and a != "unknown" else b if a == "unknown" else "unknown"
-    if a == "scalar":
-        return b
-    if b == "scalar":
-        return a
-    if a == b == "matrix":
-        return "matrix"
     return None
 
 

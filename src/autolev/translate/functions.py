@@ -10,13 +10,16 @@ import difflib
 import math
 
 from .. import ir
-from .core import ATOM, Translator, Typed
+from .core import ATOM, EXPRESSIONS, Translator, Typed
 from .emit import quote
 
 FUNCTIONS: dict = {}
 # beyond these, exact computation takes minutes or gigabytes for what a model never needs
 MAX_FACTORIAL = 450          # 450! has 1001 digits
 MAX_TAYLOR_ORDER = 30
+# functions nested deeper than this make sympy's automatic evaluation exponential (the
+# real-imaginary split of TANH(SINH(...)) 150 deep runs for hours); models nest three
+MAX_CALL_NESTING = 32
 
 
 def function(*names):
@@ -25,6 +28,19 @@ def function(*names):
             FUNCTIONS[n] = fn
         return fn
     return register
+
+
+@EXPRESSIONS.register(ir.Call)
+def call_expression(tr: Translator, e: ir.Call, want: str) -> Typed:
+    if tr.call_depth >= MAX_CALL_NESTING:
+        raise tr.error(f"functions nested more than {MAX_CALL_NESTING} deep; at most "
+                       f"{MAX_CALL_NESTING} are translated (name the inner parts)",
+                       e, "T004")
+    tr.call_depth += 1
+    try:
+        return call(tr, e)
+    finally:
+        tr.call_depth -= 1
 
 
 def call(tr: Translator, c: ir.Call) -> Typed:
@@ -45,7 +61,7 @@ def nargs(tr: Translator, c: ir.Call, *counts: int) -> list:
     if len(c.args) not in counts:
         want = " or ".join(str(n) for n in counts)
         raise tr.error(f"{c.name.upper()} takes {want} argument"
-                       f"{'s' if counts != (1,) else ''}, not {len(c.args)}", c)
+                       f"{'s' if counts != (1,) else ''}, not {len(c.args)}", c, "T007")
     return list(c.args)
 
 
@@ -54,7 +70,7 @@ def _plain(tr: Translator, c: ir.Call):
         if isinstance(a, (ir.Range, ir.Equation)):
             sign = "=" if isinstance(a, ir.Equation) else ":"
             raise tr.error(f"{c.name.upper()} does not take '{sign}' "
-                           "arguments", a)
+                           "arguments", a, "T009")
 
 
 # -- elementary scalar functions ---------------------------------------------------
@@ -85,7 +101,7 @@ def _elementary(tr: Translator, c: ir.Call) -> Typed:
     if x.type == "matrix":
         return Typed(f"{x.wrapped(ATOM)}.applyfunc({fn})", "matrix")
     if x.type not in ("scalar", "unknown"):
-        raise tr.error(f"a scalar is needed here, not a {x.type}", a)
+        raise tr.error(f"a scalar is needed here, not a {x.type}", a, "T001")
     return Typed(f"{fn}({x.code})", "scalar", approx=_double_value(tr, c, name, x))
 
 
@@ -151,7 +167,7 @@ def _round(tr, c):
 def _maxmin(tr, c):
     _plain(tr, c)
     if not c.args:
-        raise tr.error(f"{c.name.upper()} needs arguments", c)
+        raise tr.error(f"{c.name.upper()} needs arguments", c, "T007")
     items = ", ".join(tr.scalar(a).code for a in c.args)
     return Typed(f"sm.{c.name.capitalize()}({items})", "scalar")
 
@@ -163,7 +179,7 @@ def _dot(tr, c):
     x, y = tr.expr(a), tr.expr(b)
     for v, node in ((x, a), (y, b)):
         if v.type not in ("vector", "dyadic", "vectors", "unknown"):
-            raise tr.error(f"DOT takes vectors or dyadics, not a {v.type}", node)
+            raise tr.error(f"DOT takes vectors or dyadics, not a {v.type}", node, "T001")
     rtype = "scalar" if x.type == y.type == "vector" else \
         "vector" if "vector" in (x.type, y.type) else "dyadic"
     if "vectors" in (x.type, y.type):
@@ -177,7 +193,7 @@ def _cross(tr, c):
     x, y = tr.expr(a), tr.expr(b)
     for v, node in ((x, a), (y, b)):
         if v.type not in ("vector", "dyadic", "unknown"):
-            raise tr.error(f"CROSS takes vectors, not a {v.type}", node)
+            raise tr.error(f"CROSS takes vectors, not a {v.type}", node, "T001")
     rtype = "dyadic" if "dyadic" in (x.type, y.type) else "vector"
     return Typed(f"al.cross({x.code}, {y.code})", rtype)
 
@@ -199,7 +215,7 @@ def _unitvec(tr, c):
 def _vector_arg(tr, a, what):
     x = tr.expr(a)
     if x.type not in ("vector", "unknown"):
-        raise tr.error(f"{what} takes a vector, not a {x.type}", a)
+        raise tr.error(f"{what} takes a vector, not a {x.type}", a, "T001")
     return x
 
 
@@ -209,7 +225,7 @@ def _express(tr, c):
     x = tr.expr(args[0])
     frames = [tr.frame(f).code for f in args[1:]]
     if x.type not in ("vector", "dyadic", "matrix", "unknown"):
-        raise tr.error(f"EXPRESS takes a vector or dyadic, not a {x.type}", args[0])
+        raise tr.error(f"EXPRESS takes a vector or dyadic, not a {x.type}", args[0], "T001")
     return Typed(f"al.express({x.code}, {', '.join(frames)})", x.type)
 
 
@@ -228,7 +244,7 @@ def _matrix(tr, c):
     frames = [tr.frame(args[0]).code] + [tr.frame(a).code for a in args[2:]]
     x = tr.expr(args[1])
     if x.type not in ("vector", "dyadic", "unknown"):
-        raise tr.error(f"MATRIX takes a vector or dyadic, not a {x.type}", args[1])
+        raise tr.error(f"MATRIX takes a vector or dyadic, not a {x.type}", args[1], "T001")
     return Typed(f"al.matrix({frames[0]}, {x.code}" + "".join(f", {f}" for f in frames[1:])
                  + ")", "matrix")
 
@@ -249,7 +265,7 @@ def _dt(tr, c):
     x = tr.expr(args[0])
     if x.type in ("vector", "dyadic"):
         if len(args) != 2:
-            raise tr.error("DT of a vector needs the frame: DT(V>, N)", c)
+            raise tr.error("DT of a vector needs the frame: DT(V>, N)", c, "T007")
         return Typed(f"model.dt({x.code}, {tr.frame(args[1]).code})", x.type)
     if len(args) == 2:
         tr.frame(args[1])       # a scalar's derivative is the same in every frame
@@ -263,10 +279,10 @@ def _d(tr, c):
     var = tr.expr(args[1])
     if x.type in ("vector", "dyadic"):
         if len(args) != 3:
-            raise tr.error("D of a vector needs the frame: D(V>, x, N)", c)
+            raise tr.error("D of a vector needs the frame: D(V>, x, N)", c, "T007")
         return Typed(f"model.d({x.code}, {var.code}, {tr.frame(args[2]).code})", x.type)
     if len(args) == 3:
-        raise tr.error("D of a scalar takes no frame", args[2])
+        raise tr.error("D of a scalar takes no frame", args[2], "T007")
     rtype = "matrix" if "matrix" in (x.type, var.type) else x.type
     return Typed(f"model.d({x.code}, {var.code})", rtype)
 
@@ -324,7 +340,7 @@ def _mass(tr, c):
 @function("CM")
 def _cm(tr, c):
     if not c.args:
-        raise tr.error("CM needs a point: CM(O) or CM(O, B, ...)", c)
+        raise tr.error("CM needs a point: CM(O) or CM(O, B, ...)", c, "T007")
     o = tr.point(c.args[0]).code
     rest = _things(tr, c.args[1:])
     return Typed(f"model.cm({', '.join([o] + rest)})", "vector")
@@ -333,7 +349,7 @@ def _cm(tr, c):
 @function("INERTIA")
 def _inertia(tr, c):
     if not c.args:
-        raise tr.error("INERTIA() needs a point: INERTIA(O) or INERTIA(O, B, ...)", c)
+        raise tr.error("INERTIA() needs a point: INERTIA(O) or INERTIA(O, B, ...)", c, "T007")
     o = tr.point(c.args[0]).code
     rest = _things(tr, c.args[1:])
     return Typed(f"model.inertia_of({', '.join([o] + rest)})", "dyadic")
@@ -342,24 +358,24 @@ def _inertia(tr, c):
 @function("MOMENTUM")
 def _momentum(tr, c):
     if not c.args or not isinstance(c.args[0], ir.Name):
-        raise tr.error("MOMENTUM(LINEAR) or MOMENTUM(ANGULAR, O)", c)
+        raise tr.error("MOMENTUM(LINEAR) or MOMENTUM(ANGULAR, O)", c, "T009")
     kind = c.args[0].name.upper()
     if kind == "LINEAR":
         rest = _things(tr, c.args[1:])
         return Typed(f"model.momentum('linear'{''.join(', ' + r for r in rest)})", "vector")
     if kind == "ANGULAR":
         if len(c.args) < 2:
-            raise tr.error("MOMENTUM(ANGULAR, O) needs the point O", c)
+            raise tr.error("MOMENTUM(ANGULAR, O) needs the point O", c, "T007")
         o = tr.point(c.args[1]).code
         rest = _things(tr, c.args[2:])
         return Typed(f"model.momentum('angular', {', '.join([o] + rest)})", "vector")
-    raise tr.error(f"MOMENTUM takes LINEAR or ANGULAR, not {c.args[0].name}", c.args[0])
+    raise tr.error(f"MOMENTUM takes LINEAR or ANGULAR, not {c.args[0].name}", c.args[0], "T003")
 
 
 @function("GYROSTAT")
 def _gyrostat(tr, c):
     if len(c.args) != 5 or not all(isinstance(a, ir.Name) for a in c.args[:2]):
-        raise tr.error("GYROSTAT(ANGMOM, CYLINDER, A, B, J)", c)
+        raise tr.error("GYROSTAT(ANGMOM, CYLINDER, A, B, J)", c, "T009")
     what, shape = c.args[0].name.upper(), c.args[1].name.upper()
     if what != "ANGMOM":
         raise tr.error(f"GYROSTAT({what}, ...) is not supported: only ANGMOM (angular "
@@ -375,10 +391,10 @@ def _gyrostat(tr, c):
 @function("PARTIALS")
 def _partials(tr, c):
     if not c.args:
-        raise tr.error("PARTIALS(V>, u1, ...)", c)
+        raise tr.error("PARTIALS(V>, u1, ...)", c, "T007")
     v = tr.expr(c.args[0])
     if v.type not in ("vector", "unknown"):
-        raise tr.error(f"PARTIALS takes a velocity vector, not a {v.type}", c.args[0])
+        raise tr.error(f"PARTIALS takes a velocity vector, not a {v.type}", c.args[0], "T001")
     speeds = [tr.scalar(a).code for a in c.args[1:]]
     if len(speeds) == 1:
         return Typed(f"model.partials({v.code}, {speeds[0]})[0]", "vector")
@@ -396,10 +412,10 @@ def _substitutions(tr, args) -> str:
     items = []
     for a in args:
         if not isinstance(a, ir.Equation):
-            raise tr.error("expected name=value", a)
+            raise tr.error("expected name=value", a, "T009")
         lhs = tr.expr(a.lhs)
         if isinstance(a.rhs, ir.Range):
-            raise tr.error("a:b is only allowed in TAYLOR", a.rhs)
+            raise tr.error("a:b is only allowed in TAYLOR", a.rhs, "T009")
         items.append(f"{lhs.code}: {tr.expr(a.rhs).code}")
     return "{" + ", ".join(items) + "}"
 
@@ -407,7 +423,7 @@ def _substitutions(tr, args) -> str:
 @function("EVALUATE")
 def _evaluate(tr, c):
     if not c.args:
-        raise tr.error("EVALUATE needs an expression", c)
+        raise tr.error("EVALUATE needs an expression", c, "T007")
     x = tr.expr(c.args[0])
     return Typed(f"model.evaluate({x.code}, {_substitutions(tr, c.args[1:])})", x.type)
 
@@ -415,7 +431,7 @@ def _evaluate(tr, c):
 @function("REPLACE")
 def _replace(tr, c):
     if not c.args:
-        raise tr.error("REPLACE needs an expression", c)
+        raise tr.error("REPLACE needs an expression", c, "T007")
     x = tr.expr(c.args[0])
     return Typed(f"al.replace({x.code}, {_substitutions(tr, c.args[1:])})", x.type)
 
@@ -475,7 +491,7 @@ def _arrange(tr, c):
 @function("TAYLOR")
 def _taylor(tr, c):
     if len(c.args) < 3:
-        raise tr.error("TAYLOR(E, n, x=a, ...) or TAYLOR(E, n:m, x=a, ...)", c)
+        raise tr.error("TAYLOR(E, n, x=a, ...) or TAYLOR(E, n:m, x=a, ...)", c, "T007")
     x = tr.expr(c.args[0])
     degrees = [tr.scalar(d) for d in ((c.args[1].lo, c.args[1].hi)
                                       if isinstance(c.args[1], ir.Range) else (c.args[1],))]
@@ -489,7 +505,7 @@ def _taylor(tr, c):
             points.append(f"({tr.expr(a).code}, 0, None)")
             continue
         if not isinstance(a, ir.Equation):
-            raise tr.error("expected x=a or x=a:dx", a)
+            raise tr.error("expected x=a or x=a:dx", a, "T009")
         var = tr.expr(a.lhs).code
         if isinstance(a.rhs, ir.Range):
             points.append(f"({var}, {tr.expr(a.rhs.lo).code}, {tr.expr(a.rhs.hi).code})")
@@ -524,7 +540,7 @@ def _epsilon(tr, c):
 def _matrix_arg(tr, a, what):
     x = tr.expr(a)
     if x.type not in ("matrix", "unknown"):
-        raise tr.error(f"{what} takes a matrix, not a {x.type}", a)
+        raise tr.error(f"{what} takes a matrix, not a {x.type}", a, "T001")
     return x
 
 
@@ -571,7 +587,7 @@ def _selection(tr, args) -> list[str]:
 @function("ROWS", "COLS")
 def _rows(tr, c):
     if not c.args:
-        raise tr.error(f"{c.name.upper()} needs a matrix", c)
+        raise tr.error(f"{c.name.upper()} needs a matrix", c, "T007")
     m = _matrix_arg(tr, c.args[0], c.name.upper())
     fn = "rows" if c.name.upper() == "ROWS" else "cols"
     if len(c.args) == 1:
@@ -604,7 +620,7 @@ def _units(tr, c):
     try:
         units_factor(ua, ub)              # unknown units and unlike kinds: diagnosed here
     except AutolevModelError as exc:
-        raise tr.error(str(exc), c) from None
+        raise tr.error(str(exc), c, "T003") from None
     return Typed(f"al.units_factor({quote(ua)}, {quote(ub)})", "scalar")
 
 
@@ -615,7 +631,7 @@ def _unit_text(tr, e) -> str:
         return f"{_unit_text(tr, e.left)}{e.op}{_unit_text(tr, e.right)}"
     if isinstance(e, ir.Number):
         return e.text
-    raise tr.error("UNITS takes unit names such as deg, rad, n*m, lbf*ft", e)
+    raise tr.error("UNITS takes unit names such as deg, rad, n*m, lbf*ft", e, "T009")
 
 
 @function("INPUT")

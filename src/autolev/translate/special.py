@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .. import ir
-from .core import ATOM, Entry, Translator, Typed
+from .core import ATOM, EXPRESSIONS, Entry, Translator, Typed
 
 FRAMES = ("newtonian", "frame", "body")
 POINTS = ("point", "particle")
@@ -80,8 +80,9 @@ def _split(tr: Translator, text: str, kinds) -> list[Entry] | None:
     return go(pieces, kinds) if pieces and all(pieces) else None
 
 
-def vector_name(tr: Translator, v: ir.VectorName) -> Typed:
-    """The Python that reads a vector or dyadic name."""
+@EXPRESSIONS.register(ir.VectorName)
+def vector_name(tr: Translator, v: ir.VectorName, want: str = "value") -> Typed:
+    """The Python that reads a vector or dyadic name (the same whatever is wanted)."""
     sp = classify(tr, v)
     if sp is None:
         entry = tr.vectors.get(v.name.lower())
@@ -111,14 +112,15 @@ def assign_vector(tr: Translator, target: ir.VectorName, op: str, value: Typed) 
     """Write `target op value` for a vector or dyadic name."""
     want = "dyadic" if target.dyadic else "vector"
     if value.type not in (want, "unknown") and not (value.exact == 0):
-        raise tr.error(f"{target.text} is a {want}; the right side is a {value.type}", target)
+        raise tr.error(f"{target.text} is a {want}; the right side is a {value.type}", target,
+                       "T001")
     sp = classify(tr, target)
     if sp is None:
         _user_vector(tr, target, op, value, want)
         return
     p = [e.py for e in sp.parts]
     if sp.kind in ("zero", "unit", "unit_dyadic"):
-        raise tr.error(f"{target.text} cannot be assigned", target)
+        raise tr.error(f"{target.text} cannot be assigned", target, "T010")
     if sp.kind in ("force", "torque"):
         what = "force" if sp.kind == "force" else "torque"
         if op in ("=", ":="):
@@ -128,7 +130,7 @@ def assign_vector(tr: Translator, target: ir.VectorName, op: str, value: Typed) 
         elif op == "-=":
             tr.emit(f"model.add_{what}({p[0]}, -{value.wrapped(6)})")
         else:
-            raise tr.error(f"{op} is not defined for {target.text}", target)
+            raise tr.error(f"{op} is not defined for {target.text}", target, "T010")
         return
     current = vector_name(tr, target).code
     rhs = _combine(tr, current, op, value, target)
@@ -148,7 +150,7 @@ def _user_vector(tr: Translator, target: ir.VectorName, op: str, value: Typed, w
     entry = tr.vectors.get(key)
     if entry is None:
         if op not in ("=", ":="):
-            raise tr.error(f"{target.text} has no value yet", target)
+            raise tr.error(f"{target.text} has no value yet", target, "T002")
         entry = Entry(tr.py_name("vector", target.name, want), "vector", want)
         tr.vectors[key] = entry
     rhs = _combine(tr, entry.py, op, value, target)
@@ -166,4 +168,4 @@ def _combine(tr: Translator, current: str, op: str, value: Typed, node) -> str:
         return f"{current}*{value.wrapped(6)}"
     if op == "/=":
         return f"{current}/{value.wrapped(7)}"
-    raise tr.error(f"{op} is not defined for vectors", node)
+    raise tr.error(f"{op} is not defined for vectors", node, "T010")

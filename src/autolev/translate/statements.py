@@ -3,21 +3,14 @@ from __future__ import annotations
 
 import re
 import textwrap
+from typing import Callable
 
 from .. import ir
-from .core import Entry, Translator, Typed
+from ..dispatch import Dispatch
+from .core import STATEMENTS, Entry, Translator, Typed
 from .emit import comment, quote
+from .functions import FUNCTIONS
 from .special import assign_vector
-
-HANDLERS: dict = {}
-
-
-def handles(*types):
-    def register(fn):
-        for t in types:
-            HANDLERS[t] = fn
-        return fn
-    return register
 
 
 def _assign_names(tr: Translator, names: list[str], call: str) -> None:
@@ -51,7 +44,7 @@ _SCALAR_DECL = {"constants": "constant", "variables": "variable",
                 "imaginary": "imaginary"}
 
 
-@handles(ir.Declaration)
+@STATEMENTS.register(ir.Declaration)
 def declaration(tr: Translator, st: ir.Declaration) -> None:
     if st.what in _ENTITY_DECL:
         _declare_entities(tr, st)
@@ -75,10 +68,10 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
     names = [n for item in st.items for n in item.names]
     for item in st.items:
         if item.value is not None or item.sign is not None or item.primes:
-            raise tr.error(f"{st.what.upper()} names take no value, sign or prime", item)
+            raise tr.error(f"{st.what.upper()} names take no value, sign or prime", item, "T010")
     if kind == "newtonian":
         if len(names) != 1:
-            raise tr.error("NEWTONIAN declares one frame", st)
+            raise tr.error("NEWTONIAN declares one frame", st, "T007")
         n = names[0]
         py = tr.py_name("entity", n, "frame")
         tr.entities[n.lower()] = Entry(py, "newtonian", "frame")
@@ -172,13 +165,13 @@ def _implicit_constant(tr: Translator, e: ir.Expr) -> None:
             tr.emit(f"{entry.py} = model.constants({quote(e.name)})")
 
 
-@handles(ir.MassStatement)
+@STATEMENTS.register(ir.MassStatement)
 def mass(tr: Translator, st: ir.MassStatement) -> None:
     for item in st.items:
         target = tr.entities.get(item.target.lower())
         if target is None or target.kind not in ("body", "particle"):
             raise tr.error(f"MASS is given to bodies and particles; '{item.target}' is not "
-                           "one", item)
+                           "one", item, "T008")
         _implicit_constant(tr, item.value)
         value = tr.scalar(item.value)
         tr.emit(f"{target.py}.mass = {value.code}")
@@ -187,7 +180,7 @@ def mass(tr: Translator, st: ir.MassStatement) -> None:
             tr.defined.add((item.value.name.lower(), 0))
 
 
-@handles(ir.InertiaStatement)
+@STATEMENTS.register(ir.InertiaStatement)
 def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
     body = tr.entities.get(st.body.lower())
     about = None
@@ -201,12 +194,12 @@ def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
                 body, about = b, p
                 break
         else:
-            raise tr.error(f"INERTIA is given to a body; '{st.body}' is not one", st)
+            raise tr.error(f"INERTIA is given to a body; '{st.body}' is not one", st, "T008")
     frame = None
     if st.frame is not None:
         frame = tr.entities.get(st.frame.lower())
         if frame is None or frame.kind not in ("frame", "newtonian", "body"):
-            raise tr.error(f"'{st.frame}' is not a frame", st)
+            raise tr.error(f"'{st.frame}' is not a frame", st, "T008")
     for name, value in st.definitions:
         v = tr.scalar(value)
         if name.lower() in tr.scalars:
@@ -233,7 +226,7 @@ def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
 _COMPOUND = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}
 
 
-@handles(ir.Assignment)
+@STATEMENTS.register(ir.Assignment)
 def assignment(tr: Translator, st: ir.Assignment) -> None:
     assign(tr, st.target, st.op, st.value)
 
@@ -246,7 +239,7 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
     finally:
         tr.redefining = None
     if value.type in ("frame", "point", "list"):
-        raise tr.error(f"a {value.type} cannot be assigned", value_expr)
+        raise tr.error(f"a {value.type} cannot be assigned", value_expr, "T001")
     if isinstance(target, ir.VectorName):
         assign_vector(tr, target, op, value)
         return
@@ -265,25 +258,25 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
         else:
             rhs = f"model.rhs({sym}) {_COMPOUND[op]} {value.wrapped(6)}"
         if value.type == "matrix":
-            raise tr.error(f"{name} is a scalar; the right side is a matrix", value_expr)
+            raise tr.error(f"{name} is a scalar; the right side is a matrix", value_expr, "T001")
         tr.emit(f"model.define({sym}, {rhs})")
         tr.defined.add((key, primes))
         return
     if primes:
         raise tr.error(f"{name}{chr(39) * primes} needs {name} declared (VARIABLES "
-                       f"{name}{chr(39) * primes})", target)
+                       f"{name}{chr(39) * primes})", target, "T002")
     if key not in tr.values:
         parts = tr.split_entities(name, ("frame", "newtonian", "body"), 2)
         if parts is not None:
             if op not in ("=", ":="):
-                raise tr.error(f"{op} is not defined for a direction cosine matrix", target)
+                raise tr.error(f"{op} is not defined for a direction cosine matrix", target, "T010")
             a, b = parts
             tr.emit(f"{b.py}.orient_dcm({a.py}, {value.code})")
             return
     entry = tr.values.get(key)
     if entry is None:
         if op not in ("=", ":="):
-            raise tr.error(f"{name} has no value yet", target)
+            raise tr.error(f"{name} has no value yet", target, "T002")
         entry = Entry(tr.py_name("value", name), "value", value.type)
         tr.values[key] = entry
         tr.emit(f"{entry.py} = {value.code}")
@@ -298,14 +291,14 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
 def _assign_element(tr: Translator, target: ir.Index, op: str, value: Typed) -> None:
     key = target.name.lower()
     if target.primes:
-        raise tr.error("a primed name cannot be indexed", target)
+        raise tr.error("a primed name cannot be indexed", target, "T010")
     if value.type not in ("scalar", "unknown"):
-        raise tr.error(f"a matrix element is a scalar, not a {value.type}", target)
+        raise tr.error(f"a matrix element is a scalar, not a {value.type}", target, "T001")
     idx = ", ".join(_one_based(tr, i) for i in target.indices)
     entry = tr.values.get(key)
     if entry is None:
         if key in tr.scalars:
-            raise tr.error(f"{target.name} is a declared scalar, not a matrix", target)
+            raise tr.error(f"{target.name} is a declared scalar, not a matrix", target, "T008")
         if op not in ("=", ":="):
             raise tr.error(f"{target.name} has no value yet ({op} needs one)", target,
                            "T002")
@@ -341,7 +334,7 @@ def command(*names):
     return register
 
 
-@handles(ir.Command)
+@STATEMENTS.register(ir.Command)
 def command_statement(tr: Translator, st: ir.Command) -> None:
     c = st.call
     name = c.name.upper()
@@ -352,7 +345,6 @@ def command_statement(tr: Translator, st: ir.Command) -> None:
     if name in IN_PLACE and c.args and isinstance(c.args[0], (ir.Name, ir.VectorName)):
         assign(tr, c.args[0], "=", c)
         return
-    from .functions import FUNCTIONS
     if name in FUNCTIONS:
         tr.expr(c)      # checked, and displayed by Autolev; nothing to keep
         tr.emit("# (displayed by Autolev; nothing to compute)")
@@ -360,7 +352,7 @@ def command_statement(tr: Translator, st: ir.Command) -> None:
     raise tr.error(f"unknown command {name}()", c, "T003")
 
 
-@handles(ir.Display)
+@STATEMENTS.register(ir.Display)
 def display(tr: Translator, st: ir.Display) -> None:
     tr.expr(st.expr)
     tr.emit("# (displayed by Autolev; nothing to compute)")
@@ -393,31 +385,31 @@ def _simprot(tr, c):
         axis_code = ("-" if k < 0 else "") + f"{a}.{'xyz'[abs(k) - 1]}"
     else:
         raise tr.error("SIMPROT's axis is 1, 2, 3 (negative for the other way) or a vector",
-                       axis)
+                       axis, "T009")
     tr.emit(f"{b}.orient_axis({a}, {axis_code}, {_angle(tr, args[3])})")
 
 
 @command("DIRCOS")
 def _dircos(tr, c):
     if len(c.args) < 4 or not isinstance(c.args[2], ir.Name):
-        raise tr.error("DIRCOS(A, B, BODYijk|SPACEijk|EULER, angles...)", c)
+        raise tr.error("DIRCOS(A, B, BODYijk|SPACEijk|EULER, angles...)", c, "T009")
     a, b = tr.frame(c.args[0]).code, tr.frame(c.args[1]).code
     kind = c.args[2].name.upper()
     angles = [_angle(tr, x) for x in c.args[3:]]
     if kind == "EULER":
         if len(angles) != 4:
-            raise tr.error("DIRCOS(A, B, EULER, e1, e2, e3, e4) takes 4 parameters", c)
+            raise tr.error("DIRCOS(A, B, EULER, e1, e2, e3, e4) takes 4 parameters", c, "T007")
         tr.emit(f"{b}.orient_euler_parameters({a}, {', '.join(angles)})")
         return
     if kind == "RODRIGUES":
         if len(angles) != 3:
-            raise tr.error("DIRCOS(A, B, RODRIGUES, g1, g2, g3) takes 3 parameters", c)
+            raise tr.error("DIRCOS(A, B, RODRIGUES, g1, g2, g3) takes 3 parameters", c, "T007")
         tr.emit(f"{b}.orient_rodrigues({a}, {', '.join(angles)})")
         return
     m = re.fullmatch(r"(BODY|SPACE)([123]{3})", kind)
     if not m or len(angles) != 3:
         raise tr.error(f"DIRCOS does not know {c.args[2].name}; expected BODYijk, SPACEijk "
-                       "or EULER", c.args[2])
+                       "or EULER", c.args[2], "T003")
     method = "orient_body_fixed" if m.group(1) == "BODY" else "orient_space_fixed"
     tr.emit(f"{b}.{method}({a}, ({', '.join(angles)}), {quote(m.group(2))})")
 
@@ -425,7 +417,7 @@ def _dircos(tr, c):
 @command("KINDIFFS")
 def _kindiffs(tr, c):
     if len(c.args) < 4 or not isinstance(c.args[2], ir.Name):
-        raise tr.error("KINDIFFS(A, B, BODYijk|SPACEijk|EULER, q...)", c)
+        raise tr.error("KINDIFFS(A, B, BODYijk|SPACEijk|EULER, q...)", c, "T009")
     a, b = tr.frame(c.args[0]).code, tr.frame(c.args[1]).code
     coords = [_symbol_code(tr, x) for x in c.args[3:]]
     tr.emit(f"model.kindiffs({a}, {b}, {quote(c.args[2].name.upper())}, {', '.join(coords)})")
@@ -446,7 +438,8 @@ def _angvel(tr, c):
         angles = [tr.scalar(x).code for x in c.args[3:]]
         tr.emit(f"model.angvel({a}, {b}, {quote(c.args[2].name.upper())}, {', '.join(angles)})")
         return
-    raise tr.error("ANGVEL(A, B) or ANGVEL(A, B, BODYijk|SPACEijk|RODRIGUES, a1, a2, a3)", c)
+    raise tr.error("ANGVEL(A, B) or ANGVEL(A, B, BODYijk|SPACEijk|RODRIGUES, a1, a2, a3)", c,
+                   "T009")
 
 
 def _theory(method):
@@ -467,21 +460,21 @@ COMMANDS["A1PT"] = _theory("a1pt_theory")
 def _n(tr, c, *counts):
     if len(c.args) not in counts:
         raise tr.error(f"{c.name.upper()} takes {' or '.join(map(str, counts))} arguments, "
-                       f"not {len(c.args)}", c)
+                       f"not {len(c.args)}", c, "T007")
     for a in c.args:
         if isinstance(a, (ir.Range, ir.Equation)):
             raise tr.error(f"unexpected '{'=' if isinstance(a, ir.Equation) else ':'}' in "
-                           f"{c.name.upper()}", a)
+                           f"{c.name.upper()}", a, "T009")
     return list(c.args)
 
 
 @command("GRAVITY")
 def _gravity(tr, c):
     if not c.args:
-        raise tr.error("GRAVITY(g>) or GRAVITY(g>, B, ...)", c)
+        raise tr.error("GRAVITY(g>) or GRAVITY(g>, B, ...)", c, "T007")
     g = tr.expr(c.args[0])
     if g.type not in ("vector", "unknown"):
-        raise tr.error(f"GRAVITY takes a vector, not a {g.type}", c.args[0])
+        raise tr.error(f"GRAVITY takes a vector, not a {g.type}", c.args[0], "T001")
     rest = [tr.entity(a, ("body", "particle")).py for a in c.args[1:]]
     tr.emit(f"model.gravity({', '.join([g.code] + rest)})")
 
@@ -499,7 +492,7 @@ def _force(tr, c):
     first, second = _pair(tr, a, ("point", "particle"))
     v = tr.expr(f)
     if v.type not in ("vector", "unknown"):
-        raise tr.error(f"FORCE takes a vector, not a {v.type}", f)
+        raise tr.error(f"FORCE takes a vector, not a {v.type}", f, "T001")
     if first is None:
         tr.emit(f"model.force({second.py}, {v.code})")
     else:
@@ -512,7 +505,7 @@ def _torque(tr, c):
     first, second = _pair(tr, a, ("frame", "newtonian", "body"))
     v = tr.expr(f)
     if v.type not in ("vector", "unknown"):
-        raise tr.error(f"TORQUE takes a vector, not a {v.type}", f)
+        raise tr.error(f"TORQUE takes a vector, not a {v.type}", f, "T001")
     if first is None:
         tr.emit(f"model.torque({second.py}, {v.code})")
     else:
@@ -522,14 +515,14 @@ def _torque(tr, c):
 @command("CONSTRAIN", "CONSTRAINT")
 def _constrain(tr, c):
     if not c.args:
-        raise tr.error("CONSTRAIN(DEPENDENT[u, ...]) or CONSTRAIN(AUXILIARY[u, ...])", c)
+        raise tr.error("CONSTRAIN(DEPENDENT[u, ...]) or CONSTRAIN(AUXILIARY[u, ...])", c, "T007")
     for a in c.args:
         if not isinstance(a, ir.Index):
-            raise tr.error("CONSTRAIN takes DEPENDENT[u, ...] or AUXILIARY[u, ...]", a)
+            raise tr.error("CONSTRAIN takes DEPENDENT[u, ...] or AUXILIARY[u, ...]", a, "T009")
         which = a.name.upper()
         eqs = tr.values.get(a.name.lower())
         if eqs is None:
-            raise tr.error(f"{a.name} has no equations yet ({a.name}[1] = ...)", a)
+            raise tr.error(f"{a.name} has no equations yet ({a.name}[1] = ...)", a, "T002")
         speeds = [_symbol_code(tr, i) for i in a.indices]
         method = "constrain_auxiliary" if which == "AUXILIARY" else "constrain"
         tr.emit(f"model.{method}({eqs.py}, [{', '.join(speeds)}])")
@@ -549,7 +542,7 @@ def _kane(tr, c):
 @command("SOLVE")
 def _solve(tr, c):
     if len(c.args) < 2:
-        raise tr.error("SOLVE(equations, x, ...)", c)
+        raise tr.error("SOLVE(equations, x, ...)", c, "T007")
     eqs = tr.expr(c.args[0])
     unknowns = []
     for a in c.args[1:]:
@@ -581,7 +574,7 @@ def _eig_command(tr, c):
         tr.emit("# (displayed by Autolev; nothing to compute)")
         return
     if len(c.args) != 3 or not all(isinstance(a, ir.Name) for a in c.args[1:]):
-        raise tr.error("EIG(M) or EIG(M, VALUES, VECTORS)", c)
+        raise tr.error("EIG(M) or EIG(M, VALUES, VECTORS)", c, "T009")
     m = tr.expr(c.args[0])
     names = []
     for a in c.args[1:]:
@@ -615,7 +608,7 @@ def _unit_arg(unit: ir.Unit | None) -> str:
     return "" if unit is None else f", {quote(unit.text)}"
 
 
-@handles(ir.Input)
+@STATEMENTS.register(ir.Input)
 def input_statement(tr: Translator, st: ir.Input) -> None:
     for item in st.items:
         target = item.target
@@ -641,13 +634,13 @@ def input_statement(tr: Translator, st: ir.Input) -> None:
         tr.emit(f"model.input({t}, {value}{_unit_arg(item.unit)})")
 
 
-@handles(ir.Output)
+@STATEMENTS.register(ir.Output)
 def output_statement(tr: Translator, st: ir.Output) -> None:
     items = []
     for item in st.items:
         x = tr.expr(item.expr)
         if x.type not in ("scalar", "matrix", "unknown"):
-            raise tr.error(f"OUTPUT writes scalars, not a {x.type}", item.expr)
+            raise tr.error(f"OUTPUT writes scalars, not a {x.type}", item.expr, "T001")
         label = _label(item.expr)
         items.append(f"({x.code}, {quote(label)}{_unit_arg(item.unit)})")
     _call_lines(tr, "model.output(", items)
@@ -673,24 +666,31 @@ def _label(e: ir.Expr) -> str:
 
 
 def _text_of(e: ir.Expr) -> str:
-    if isinstance(e, ir.Name):
-        return e.name + "'" * e.primes
-    if isinstance(e, ir.Number):
-        return e.text
-    if isinstance(e, ir.Index):
-        return f"{e.name}[{','.join(_text_of(i) for i in e.indices)}]"
-    if isinstance(e, ir.VectorName):
-        return e.text
-    if isinstance(e, ir.Call):
-        return f"{e.name}({','.join(_text_of(a) for a in e.args)})"
-    if isinstance(e, ir.BinOp):
-        return f"{_text_of(e.left)}{e.op}{_text_of(e.right)}"
-    if isinstance(e, ir.Neg):
-        return "-" + _text_of(e.operand)
+    return _TEXT.lookup(type(e))(e)
+
+
+def _no_text(e: ir.Expr) -> str:
     return "?"
 
 
-@handles(ir.UnitsStatement)
+# an expression as written, for a heading ("?" where Autolev's heading is not known);
+# parts are looked up in place, not through _text_of: one Python frame per level
+_TEXT: Dispatch[Callable[[ir.Expr], str]] = Dispatch("expression text", _no_text)
+_TEXT.register(ir.Range, ir.Equation, ir.Matrix, ir.NameRange)(_no_text)
+_TEXT.register(ir.Number, ir.VectorName)(lambda e: e.text)
+_TEXT.register(ir.Name)(lambda e: e.name + "'" * e.primes)
+_TEXT.register(ir.Neg)(lambda e: "-" + _TEXT.lookup(type(e.operand))(e.operand))
+_TEXT.register(ir.BinOp)(lambda e: _TEXT.lookup(type(e.left))(e.left) + e.op
+                         + _TEXT.lookup(type(e.right))(e.right))
+_TEXT.register(ir.Index)(lambda e: f"{e.name}[{_texts(e.indices)}]")
+_TEXT.register(ir.Call)(lambda e: f"{e.name}({_texts(e.args)})")
+
+
+def _texts(exprs: tuple[ir.Expr, ...]) -> str:
+    return ",".join([_TEXT.lookup(type(x))(x) for x in exprs])
+
+
+@STATEMENTS.register(ir.UnitsStatement)
 def units_statement(tr: Translator, st: ir.UnitsStatement) -> None:
     for item in st.items:
         for target in item.targets:
@@ -707,12 +707,12 @@ def units_statement(tr: Translator, st: ir.UnitsStatement) -> None:
             tr.emit(f"model.units({name}, {quote(item.unit.text)})")
 
 
-@handles(ir.UnitSystem)
+@STATEMENTS.register(ir.UnitSystem)
 def unit_system(tr: Translator, st: ir.UnitSystem) -> None:
     tr.emit(f"model.unit_system({', '.join(quote(u) for u in st.units)})")
 
 
-@handles(ir.Code)
+@STATEMENTS.register(ir.Code)
 def code_statement(tr: Translator, st: ir.Code) -> None:
     args = []
     for a in st.args:
@@ -735,7 +735,7 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
     tr.emit(f"model.code({quote(st.what)}, {quote(st.filename)}{opts})")
 
 
-@handles(ir.Encode)
+@STATEMENTS.register(ir.Encode)
 def encode(tr: Translator, st: ir.Encode) -> None:
     items = []
     for e in st.exprs:
@@ -744,28 +744,28 @@ def encode(tr: Translator, st: ir.Encode) -> None:
     _call_lines(tr, "model.encode(", items)
 
 
-@handles(ir.Save)
+@STATEMENTS.register(ir.Save)
 def save(tr: Translator, st: ir.Save) -> None:
     tr.emit(f"# (SAVE wrote Autolev's session transcript {comment(st.filename)})")
 
 
-@handles(ir.Run)
+@STATEMENTS.register(ir.Run)
 def run(tr: Translator, st: ir.Run) -> None:
     tr.emit(f"# (the statements of {comment(st.filename)} follow)")
 
 
-@handles(ir.MacroCall)
+@STATEMENTS.register(ir.MacroCall)
 def macro(tr: Translator, st: ir.MacroCall) -> None:
     tr.emit(f"# (macro {comment(st.name)}: its statements follow)")
 
 
-@handles(ir.Exit)
+@STATEMENTS.register(ir.Exit)
 def exit_statement(tr: Translator, st: ir.Exit) -> None:
     tr.emit("# (EXIT ends the Autolev session)")
     tr.exited = True
 
 
-@handles(ir.Setting)
+@STATEMENTS.register(ir.Setting)
 def setting(tr: Translator, st: ir.Setting) -> None:
     if st.name == "DEGREES":
         tr.degrees = st.value != "OFF"
