@@ -168,7 +168,7 @@ def test_an_unknown_ir_expression_or_statement_is_a_translation_diagnostic():
 
 @pytest.mark.parametrize("table, text", [("_STATEMENTS", "X = 1"), ("_PRIMARIES", "X = 1")])
 def test_an_unknown_parse_tree_context_is_a_syntax_diagnostic(monkeypatch, table, text):
-    from conftest import errors_of
+    from helpers import errors_of
 
     from autolev.irbuild import Builder
     fallback = getattr(Builder, table).fallback
