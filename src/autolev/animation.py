@@ -4,7 +4,8 @@ The figure is the model's points located from the Newtonian origin NO, drawn in 
 Newtonian frame's basis and joined wherever the model gave one point's position from
 another (`P_O_P> = ...`); mass centers are drawn larger.  It is written as a
 self-contained HTML page (a 3-D view to rotate with the mouse and a time slider, no
-network needed) and, with matplotlib, as a GIF (or an MP4 where ffmpeg is installed).
+network needed) and, with matplotlib, as a GIF (or an MP4 where ffmpeg is installed);
+matplotlib, optional, is imported only where the movie is drawn.
 """
 from __future__ import annotations
 
@@ -16,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .runtime.errors import AutolevModelError
+from .runtime.numerics.inputs import Inputs, display_name
 
 # frames drawn at most: more rows are sampled evenly (the page and the GIF stay small)
 MAX_FRAMES = 400
@@ -86,7 +88,6 @@ def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
 def _geometry_values(model, system, exprs) -> dict:
     """Values of the constants only the figure uses (a link length the equations do not
     need), from the model's INPUT statements."""
-    from .runtime.numerics.inputs import Inputs, display_name
     lacking = system.lacking(exprs)
     if not lacking:
         return {}

@@ -1,4 +1,5 @@
-"""Pictures of a run's output tables (matplotlib, an optional dependency).
+"""Pictures of a run's output tables (matplotlib, an optional dependency: each
+function imports it where it draws, so this module loads without it).
 
 One figure per output file: its columns against time (or, in a table without a T
 column, against its first column, which the figure says), one panel per unit so that

@@ -18,6 +18,7 @@ computed iteratively in dependency order (no recursion on the depth of the chain
 from __future__ import annotations
 
 import math
+import zlib
 from collections.abc import Iterable, Mapping
 from contextlib import contextmanager
 
@@ -74,7 +75,6 @@ class NumericPoint:
             return cache[sym]
         if sym in self.values:
             return self.values[sym]
-        import zlib
         h = zlib.crc32(f"{sym.name}/{self.seed}".encode()) / 2 ** 32
         if self.varying_value is not None and sym in self.defs.varying:
             if self.varying_value == "wide":

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import sympy as sm
@@ -419,7 +420,6 @@ _UNITS = {
 
 def _unit(text: str):
     """(value in SI, dimension) of a unit expression (`n*m`, `lbf*ft`, `rad/sec^2`)."""
-    import re
     tokens = re.findall(r"[A-Za-z_]+|\d+(?:\.\d*)?|[*/^.]", text)
     value, dim = sm.S.One, [0, 0, 0, 0]
     op = "*"

@@ -252,7 +252,7 @@ class _NumpyMath:
 
     def __getattr__(self, name):
         if name in ("gamma", "erf"):
-            import scipy.special
+            import scipy.special   # 0.1 s to import: only where math raised
             return getattr(scipy.special, name)
         return getattr(np, {"fabs": "abs", "atan2": "arctan2", "asin": "arcsin",
                             "acos": "arccos", "atan": "arctan", "asinh": "arcsinh",

@@ -10,12 +10,16 @@ integrate.py; the same steps are taken (tests compare the two).
 from __future__ import annotations
 
 import ctypes
+import importlib.machinery
+import importlib.util
 import math
 import os
+import sysconfig
 import time as _time
 from pathlib import Path
 
 import numpy as np
+from scipy.integrate._ivp import dop853_coefficients
 
 LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
 PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
@@ -24,7 +28,6 @@ PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
 def python_include() -> str | None:
     """The folder of Python.h when this Python has its headers, and numpy its own
     (then the library also carries a CPython entry point, pyext.c), else None."""
-    import sysconfig
     inc = sysconfig.get_paths().get("include")
     if inc and (Path(inc) / "Python.h").exists() and \
             (Path(np.get_include()) / "numpy" / "arrayobject.h").exists() and \
@@ -43,8 +46,6 @@ def extra_source() -> tuple[str, tuple]:
 
 def _load_extension(path: str):
     """The CPython module inside a library built with PYEXT_SOURCE, or None."""
-    import importlib.machinery
-    import importlib.util
     loader = importlib.machinery.ExtensionFileLoader("_autolev_rhs", path)
     spec = importlib.util.spec_from_file_location("_autolev_rhs", path, loader=loader)
     if spec is None:
@@ -78,7 +79,7 @@ class _Context(ctypes.Structure):
 def _dop853_table() -> np.ndarray:
     """The Dormand-Prince 8(5,3) tables (A 16x16, B, C, E3, E5, D 4x16) as one array,
     from scipy's published coefficients."""
-    from scipy.integrate._ivp import dop853_coefficients as k
+    k = dop853_coefficients
     n, ne = k.N_STAGES, k.N_STAGES_EXTENDED
     a = np.zeros((ne, ne))
     a[:, :] = k.A[:ne, :ne]

@@ -17,6 +17,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -322,7 +323,6 @@ def cache_dir() -> Path:
     if problem is None:
         return path
     if not _FALLBACK_CACHE:
-        import warnings
         warnings.warn(f"the build cache {path} {problem}; building in a private temporary "
                       "folder instead (set AUTOLEV_CACHE to a folder of your own, mode 700)",
                       stacklevel=3)
