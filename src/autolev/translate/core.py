@@ -5,9 +5,11 @@ One `Translator` walks the program's statements in order, keeping what every nam
 writing a line or two of Python per statement, preceded by the Autolev line as a
 comment.  Expressions are written with their type (scalar, vector, dyadic, matrix,
 frame, point) so each construct can be checked and written the way its types need.
-Expressions, functions, vector names and statements are written by handlers in
-`expressions.py`, `functions.py`, `special.py` and `statements.py`, registered in the
-tables `EXPRESSIONS` and `STATEMENTS` defined here (importing the package imports them).
+Expressions, functions and vector names are written by handlers in `expressions.py`,
+`functions.py` and `special.py`, statements by one module per family (`declarations.py`,
+`assignments.py`, `commands.py`, `kinematics.py`, `dynamics.py`, `io.py`, `session.py`),
+registered in the tables `EXPRESSIONS` and `STATEMENTS` defined here (importing the
+package imports them).
 """
 from __future__ import annotations
 
@@ -386,6 +388,13 @@ class Translator:
         if dcm is not None:
             return dcm
         raise self.error(f"'{name}' is not declared or defined", node, "T002")
+
+    def symbol(self, e: ir.Expr) -> str:
+        """A declared name as the symbol itself (never its RHS, whatever AUTORHS says)."""
+        if isinstance(e, ir.Name) and e.name.lower() in self.scalars:
+            return self.ensure_derivative(e.name, e.primes) if e.primes else \
+                self.scalars[e.name.lower()].py
+        return self.expr(e).code
 
     def dcm_name(self, name: str) -> Typed | None:
         """A_B: the direction cosine matrix of two frames (A_i . B_j)."""

@@ -1,0 +1,153 @@
+"""Declarations: CONSTANTS, VARIABLES, MOTIONVARIABLES, SPECIFIEDS, IMAGINARY and the
+NEWTONIAN, FRAMES, BODIES, PARTICLES, POINTS that name the model's entities."""
+from __future__ import annotations
+
+import re
+import textwrap
+
+from .. import ir
+from .core import STATEMENTS, Entry, Translator
+from .emit import quote
+
+
+def _assign_names(tr: Translator, names: list[str], call: str) -> None:
+    """`A, B = call`, the names wrapped in parentheses when the line is long."""
+    left = ", ".join(names)
+    line = f"{left} = {call}"
+    wrapped = textwrap.wrap(left, 80, break_long_words=False)
+    if len(line) <= 92 or len(wrapped) == 1:
+        tr.emit(line)
+        return
+    tr.emit("(" + wrapped[0])
+    for part in wrapped[1:-1]:
+        tr.emit(" " + part)
+    tr.emit(" " + wrapped[-1] + f") = {call}")
+
+
+def _quoted_names(names: list[str]) -> str:
+    text = " ".join(names)
+    if len(text) <= 70:
+        return quote(text)
+    parts = textwrap.wrap(text, 70, break_long_words=False)   # never split a name
+    return "(" + " ".join(quote(p + (" " if i < len(parts) - 1 else ""))
+                          for i, p in enumerate(parts)) + ")"
+
+
+# -- declarations ------------------------------------------------------------------
+_ENTITY_DECL = {"newtonian": "newtonian", "frames": "frame", "bodies": "body",
+                "particles": "particle", "points": "point"}
+_SCALAR_DECL = {"constants": "constant", "variables": "variable",
+                "motionvariables": "motionvariable", "specifieds": "specified",
+                "imaginary": "imaginary"}
+
+
+@STATEMENTS.register(ir.Declaration)
+def declaration(tr: Translator, st: ir.Declaration) -> None:
+    if st.what in _ENTITY_DECL:
+        _declare_entities(tr, st)
+    else:
+        _declare_scalars(tr, st)
+
+
+def _referenced(tr: Translator, name: str) -> bool:
+    cache = getattr(tr, "_words", None)
+    if cache is None:
+        cache = set()
+        for s in tr.program.statements:
+            cache.update(w.lower() for w in re.split(r"[^A-Za-z0-9]+", s.text) if w)
+            cache.update(w.lower() for w in re.split(r"[^A-Za-z0-9_]+", s.text) if w)
+        tr._words = cache
+    return name.lower() in cache
+
+
+def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
+    kind = _ENTITY_DECL[st.what]
+    names = [n for item in st.items for n in item.names]
+    for item in st.items:
+        if item.value is not None or item.sign is not None or item.primes:
+            raise tr.error(f"{st.what.upper()} names take no value, sign or prime", item, "T010")
+    if kind == "newtonian":
+        if len(names) != 1:
+            raise tr.error("NEWTONIAN declares one frame", st, "T007")
+        n = names[0]
+        py = tr.py_name("entity", n, "frame")
+        tr.entities[n.lower()] = Entry(py, "newtonian", "frame")
+        tr.emit(f"{py} = model.newtonian({quote(n)})")
+        _implicit_point(tr, n + "O", f"{py}.origin")
+        return
+    pys = []
+    for n in names:
+        if n.lower() in tr.entities:
+            tr.warn(f"'{n}' is declared again; the new {kind} replaces it", st)
+        py = tr.py_name("entity", n, kind)
+        tr.entities[n.lower()] = Entry(py, kind, "frame" if kind in ("frame", "body")
+                                       else "point")
+        pys.append(py)
+    method = {"frame": "frames", "body": "bodies", "particle": "particles",
+              "point": "points"}[kind]
+    _assign_names(tr, pys, f"model.{method}({_quoted_names(names)})")
+    if kind in ("body", "frame"):
+        # every frame has its origin AO, as NEWTONIAN N has NO and BODIES B has BO
+        attribute = "masscenter" if kind == "body" else "origin"
+        for n, py in zip(names, pys):
+            _implicit_point(tr, n + "O", f"{py}.{attribute}")
+
+
+def _implicit_point(tr: Translator, name: str, code: str) -> None:
+    if name.lower() in tr.entities:
+        return
+    if _referenced(tr, name):
+        py = tr.py_name("entity", name, "point")
+        tr.emit(f"{py} = {code}")
+    else:
+        py = code
+    tr.entities[name.lower()] = Entry(py, "point", "point")
+
+
+def _entry_key(tr: Translator, entry: Entry) -> str:
+    return next(k for k, e in tr.scalars.items() if e is entry)
+
+
+def _declare_scalars(tr: Translator, st: ir.Declaration) -> None:
+    kind = _SCALAR_DECL[st.what]
+    groups: dict[tuple, list[tuple[str, str]]] = {}
+    definitions = []
+    for item in st.items:
+        order = max(item.primes, st.keyword_primes)
+        for n in item.names:
+            key = n.lower()
+            if key in tr.scalars:
+                if item.value is None:
+                    tr.warn(f"'{n}' is declared again", item, "W102")
+                entry = tr.scalars[key]
+            else:
+                entry = tr.declare_scalar(n, kind, order)
+                groups.setdefault((order, item.sign), []).append((n, entry.py))
+            if item.value is not None:
+                definitions.append((entry, item.value, item))
+    for (order, sign), items in groups.items():
+        names = [n for n, _ in items]
+        pys = [p for _, p in items]
+        if kind == "imaginary":
+            for p in pys:
+                tr.emit(f"{p} = sm.I")
+            continue
+        method = {"constant": "constants", "variable": "variables",
+                  "motionvariable": "motion_variables", "specified": "specifieds"}[kind]
+        opts = ""
+        if order and kind != "constant":
+            opts += f", order={order}"
+        if sign:
+            opts += f", sign={quote(sign)}"
+        _assign_names(tr, pys, f"model.{method}({_quoted_names(names)}{opts})")
+        for k in range(1, order + 1):
+            used = [(n, p) for n, p in items if (n.lower(), k) in tr._used_primes]
+            if used:
+                ds = [tr.derivative_name(n, k) for n, _ in used]
+                base = ", ".join(p for _, p in used)
+                order_arg = f", order={k}" if k > 1 else ""
+                _assign_names(tr, ds, f"al.derivatives({base}{order_arg})")
+    for entry, value, item in definitions:
+        tr.emit(f"model.define({entry.py}, {tr.scalar(value).code})")
+        tr.defined.add((_entry_key(tr, entry), 0))
+
