@@ -3,34 +3,10 @@ NEWTONIAN, FRAMES, BODIES, PARTICLES, POINTS that name the model's entities."""
 from __future__ import annotations
 
 import re
-import textwrap
 
 from .. import ir
 from .core import STATEMENTS, Entry, Translator
-from .emit import quote
-
-
-def _assign_names(tr: Translator, names: list[str], call: str) -> None:
-    """`A, B = call`, the names wrapped in parentheses when the line is long."""
-    left = ", ".join(names)
-    line = f"{left} = {call}"
-    wrapped = textwrap.wrap(left, 80, break_long_words=False)
-    if len(line) <= 92 or len(wrapped) == 1:
-        tr.emit(line)
-        return
-    tr.emit("(" + wrapped[0])
-    for part in wrapped[1:-1]:
-        tr.emit(" " + part)
-    tr.emit(" " + wrapped[-1] + f") = {call}")
-
-
-def _quoted_names(names: list[str]) -> str:
-    text = " ".join(names)
-    if len(text) <= 70:
-        return quote(text)
-    parts = textwrap.wrap(text, 70, break_long_words=False)   # never split a name
-    return "(" + " ".join(quote(p + (" " if i < len(parts) - 1 else ""))
-                          for i, p in enumerate(parts)) + ")"
+from .emit import assign_names, quote, quoted_names
 
 
 # -- declarations ------------------------------------------------------------------
@@ -85,7 +61,7 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
         pys.append(py)
     method = {"frame": "frames", "body": "bodies", "particle": "particles",
               "point": "points"}[kind]
-    _assign_names(tr, pys, f"model.{method}({_quoted_names(names)})")
+    tr.emit(assign_names(pys, f"model.{method}({quoted_names(names)})"))
     if kind in ("body", "frame"):
         # every frame has its origin AO, as NEWTONIAN N has NO and BODIES B has BO
         attribute = "masscenter" if kind == "body" else "origin"
@@ -139,14 +115,14 @@ def _declare_scalars(tr: Translator, st: ir.Declaration) -> None:
             opts += f", order={order}"
         if sign:
             opts += f", sign={quote(sign)}"
-        _assign_names(tr, pys, f"model.{method}({_quoted_names(names)}{opts})")
+        tr.emit(assign_names(pys, f"model.{method}({quoted_names(names)}{opts})"))
         for k in range(1, order + 1):
             used = [(n, p) for n, p in items if (n.lower(), k) in tr._used_primes]
             if used:
                 ds = [tr.derivative_name(n, k) for n, _ in used]
                 base = ", ".join(p for _, p in used)
                 order_arg = f", order={k}" if k > 1 else ""
-                _assign_names(tr, ds, f"al.derivatives({base}{order_arg})")
+                tr.emit(assign_names(ds, f"al.derivatives({base}{order_arg})"))
     for entry, value, item in definitions:
         tr.emit(f"model.define({entry.py}, {tr.scalar(value).code})")
         tr.defined.add((_entry_key(tr, entry), 0))

@@ -6,7 +6,7 @@ from typing import Callable
 from .. import ir
 from ..dispatch import Dispatch
 from .core import STATEMENTS, Translator
-from .emit import comment, quote
+from .emit import call_lines, comment, quote
 
 
 _INTEGRATION = ("TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR")
@@ -59,19 +59,7 @@ def output_statement(tr: Translator, st: ir.Output) -> None:
             raise tr.error(f"OUTPUT writes scalars, not a {x.type}", item.expr, "T001")
         label = _label(item.expr)
         items.append(f"({x.code}, {quote(label)}{_unit_arg(item.unit)})")
-    _call_lines(tr, "model.output(", items)
-
-
-def _call_lines(tr: Translator, head: str, items: list[str]) -> None:
-    """head + items + ')' on one line, or one item per line when that is long."""
-    line = head + ", ".join(items) + ")"
-    if len(line) <= 92:
-        tr.emit(line)
-        return
-    tr.emit(head)
-    for it in items:
-        tr.emit(f"    {it},")
-    tr.emit(")")
+    tr.emit(call_lines("model.output(", items))
 
 
 def _label(e: ir.Expr) -> str:
@@ -157,7 +145,7 @@ def encode(tr: Translator, st: ir.Encode) -> None:
     for e in st.exprs:
         x = tr.expr(e)
         items.append(f"({quote(_text_of(e))}, {x.code})")
-    _call_lines(tr, "model.encode(", items)
+    tr.emit(call_lines("model.encode(", items))
 
 
 @STATEMENTS.register(ir.Save)
