@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from .. import ir
-from .core import STATEMENTS, Entry, Translator, Typed
+from .core import STATEMENTS, Entry, Translator, Typed, ValueType
 from .special import assign_vector
 
 # -- assignments ---------------------------------------------------------------------------
@@ -21,7 +21,7 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
         value = tr.expr(value_expr)
     finally:
         tr.redefining = None
-    if value.type in ("frame", "point", "list"):
+    if value.type in (ValueType.FRAME, ValueType.POINT, ValueType.LIST):
         raise tr.error(f"a {value.type} cannot be assigned", value_expr, "T001")
     if isinstance(target, ir.VectorName):
         assign_vector(tr, target, op, value)
@@ -40,7 +40,7 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
             rhs = value.code
         else:
             rhs = f"model.rhs({sym}) {_COMPOUND[op]} {value.wrapped(6)}"
-        if value.type == "matrix":
+        if value.type == ValueType.MATRIX:
             raise tr.error(f"{name} is a scalar; the right side is a matrix", value_expr, "T001")
         tr.emit(f"model.define({sym}, {rhs})")
         tr.defined.add((key, primes))
@@ -75,7 +75,7 @@ def _assign_element(tr: Translator, target: ir.Index, op: str, value: Typed) -> 
     key = target.name.lower()
     if target.primes:
         raise tr.error("a primed name cannot be indexed", target, "T010")
-    if value.type not in ("scalar", "unknown"):
+    if value.type not in (ValueType.SCALAR, ValueType.UNKNOWN):
         raise tr.error(f"a matrix element is a scalar, not a {value.type}", target, "T001")
     idx = ", ".join(_one_based(tr, i) for i in target.indices)
     entry = tr.values.get(key)
@@ -85,12 +85,12 @@ def _assign_element(tr: Translator, target: ir.Index, op: str, value: Typed) -> 
         if op not in ("=", ":="):
             raise tr.error(f"{target.name} has no value yet ({op} needs one)", target,
                            "T002")
-        entry = Entry(tr.py_name("value", target.name), "value", "matrix")
+        entry = Entry(tr.py_name("value", target.name), "value", ValueType.MATRIX)
         tr.values[key] = entry
         current = "None"
     else:
         current = entry.py
-        entry.type = "matrix"
+        entry.type = ValueType.MATRIX
     if op not in ("=", ":="):
         old = f"{entry.py}[{', '.join(tr.index_code(i) for i in target.indices)}]"
         rhs = f"{old} {_COMPOUND[op]} {value.wrapped(6)}"

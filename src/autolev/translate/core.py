@@ -14,6 +14,7 @@ package imports them).
 from __future__ import annotations
 
 import re
+from enum import Enum
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable
@@ -27,7 +28,6 @@ from .names import NameTable, UnsafeName
 # precedence of the Python written for an expression
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
 
-SCALAR_TYPES = ("scalar",)
 # the generated module imports sympy only when some line uses it
 _SYMPY_IMPORT = "import sympy as sm"
 _USES_SYMPY = re.compile(r"\bsm\.")
@@ -35,6 +35,26 @@ _USES_SYMPY = re.compile(r"\bsm\.")
 _NAMESPACE = {"scalar": "quantity", "value": "quantity", "entity": "entity",
               "vector": "vector"}
 ENTITY_KINDS = ("newtonian", "frame", "body", "point", "particle")
+
+
+class ValueType(str, Enum):
+    """What an expression is (`Typed.type`) and what a name holds (`Entry.type`)."""
+    SCALAR = "scalar"
+    VECTOR = "vector"
+    VECTORS = "vectors"      # a row or column of vectors (PARTIALS, [V1>, V2>])
+    DYADIC = "dyadic"
+    MATRIX = "matrix"
+    FRAME = "frame"
+    POINT = "point"
+    LIST = "list"
+    STRING = "string"
+    UNKNOWN = "unknown"      # after an error, or not known until run time
+
+    def __str__(self) -> str:       # messages say "a vector", on every Python version
+        return self.value
+
+    def __format__(self, spec: str) -> str:
+        return format(self.value, spec)
 
 
 class TranslationError(Exception):
@@ -49,7 +69,7 @@ class TranslationError(Exception):
 @dataclass
 class Typed:
     code: str
-    type: str            # scalar vector dyadic matrix frame point list string unknown
+    type: ValueType
     prec: int = ATOM
     exact: Fraction | None = None      # value of a pure integer/rational expression
     node: object = None
@@ -64,7 +84,7 @@ class Entry:
     py: str
     kind: str            # constant variable motionvariable specified imaginary value
     #                      newtonian frame body point particle vector
-    type: str            # scalar matrix vector dyadic frame point unknown
+    type: ValueType
     order: int = 0       # derivatives declared (scalars)
 
 
@@ -181,7 +201,7 @@ class Translator:
 
     def declare_scalar(self, name: str, kind: str, order: int) -> Entry:
         py = self.py_name("scalar", name)
-        e = Entry(py, kind, "scalar", order)
+        e = Entry(py, kind, ValueType.SCALAR, order)
         self.scalars[name.lower()] = e
         return e
 
@@ -272,11 +292,12 @@ class Translator:
         if isinstance(target, ir.VectorName):
             if target.name.lower() not in self.vectors:
                 self.vectors[target.name.lower()] = Entry(
-                    target.name, "vector", "dyadic" if target.dyadic else "vector")
+                    target.name, "vector",
+                    ValueType.DYADIC if target.dyadic else ValueType.VECTOR)
         elif isinstance(target, (ir.Name, ir.Index)) and not target.primes:
             key = target.name.lower()
             if key not in self.scalars and key not in self.values:
-                self.values[key] = Entry(target.name, "value", "unknown")
+                self.values[key] = Entry(target.name, "value", ValueType.UNKNOWN)
 
     def _comments_before(self, st: ir.Statement, previous_end: dict[str, int]) -> None:
         """The user's comment lines and the statement's own lines, as comments."""
@@ -350,7 +371,7 @@ class Translator:
 
     def scalar(self, e: ir.Expr) -> Typed:
         x = self.expr(e)
-        if x.type not in ("scalar", "unknown"):
+        if x.type not in (ValueType.SCALAR, ValueType.UNKNOWN):
             raise self.error(f"a scalar is needed here, not a {x.type}", e, "T001")
         return x
 
@@ -364,10 +385,10 @@ class Translator:
             code = self.ensure_derivative(name, primes) if primes else entry.py
             if (key, primes) == self.redefining:
                 # X = f(X): on the right, X stands for its previous definition
-                return Typed(f"model.previous({code})", "scalar")
+                return Typed(f"model.previous({code})", ValueType.SCALAR)
             if self.autorhs and (key, primes) in self.defined:
-                return Typed(f"model.rhs({code})", "scalar")
-            return Typed(code, "scalar")
+                return Typed(f"model.rhs({code})", ValueType.SCALAR)
+            return Typed(code, ValueType.SCALAR)
         if key in self.values:
             entry = self.values[key]
             if primes:
@@ -376,11 +397,11 @@ class Translator:
             return Typed(entry.py, entry.type)
         if key in ("u_independent", "u_dependent", "u_auxiliary"):
             order = f", {primes}" if primes else ""
-            return Typed(f"model.speed_column({key[2:]!r}{order})", "matrix")
+            return Typed(f"model.speed_column({key[2:]!r}{order})", ValueType.MATRIX)
         if key == "t" and not primes:
-            return Typed("t", "scalar")
+            return Typed("t", ValueType.SCALAR)
         if key == "pi" and not primes:
-            return Typed("sm.pi", "scalar")
+            return Typed("sm.pi", ValueType.SCALAR)
         if key in self.entities:
             ent = self.entities[key]
             return Typed(ent.py, ent.type)
@@ -402,7 +423,7 @@ class Translator:
         if parts is None:
             return None
         a, b = parts
-        return Typed(f"{a.py}.dcm({b.py})", "matrix", ATOM)
+        return Typed(f"{a.py}.dcm({b.py})", ValueType.MATRIX, ATOM)
 
     def split_entities(self, text: str, kinds, count: int) -> list[Entry] | None:
         """Split `text` at underscores into `count` entity names of the given kinds."""
@@ -430,7 +451,7 @@ class Translator:
         if isinstance(e, ir.Name) and not e.primes:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in ("frame", "newtonian", "body"):
-                return Typed(ent.py, "frame")
+                return Typed(ent.py, ValueType.FRAME)
         raise self.error("a frame or body is needed here", e, "T008")
 
     def point(self, e: ir.Expr) -> Typed:
@@ -438,7 +459,7 @@ class Translator:
         if isinstance(e, ir.Name) and not e.primes:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in ("point", "particle"):
-                return Typed(ent.py, "point")
+                return Typed(ent.py, ValueType.POINT)
         raise self.error("a point or particle is needed here", e, "T008")
 
     def entity(self, e: ir.Expr, kinds=ENTITY_KINDS) -> Entry:

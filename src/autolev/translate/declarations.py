@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from .. import ir
-from .core import STATEMENTS, Entry, Translator
+from .core import STATEMENTS, Entry, Translator, ValueType
 from .emit import assign_names, quote, quoted_names
 
 
@@ -47,7 +47,7 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
             raise tr.error("NEWTONIAN declares one frame", st, "T007")
         n = names[0]
         py = tr.py_name("entity", n, "frame")
-        tr.entities[n.lower()] = Entry(py, "newtonian", "frame")
+        tr.entities[n.lower()] = Entry(py, "newtonian", ValueType.FRAME)
         tr.emit(f"{py} = model.newtonian({quote(n)})")
         _implicit_point(tr, n + "O", f"{py}.origin")
         return
@@ -56,8 +56,8 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
         if n.lower() in tr.entities:
             tr.warn(f"'{n}' is declared again; the new {kind} replaces it", st)
         py = tr.py_name("entity", n, kind)
-        tr.entities[n.lower()] = Entry(py, kind, "frame" if kind in ("frame", "body")
-                                       else "point")
+        tr.entities[n.lower()] = Entry(py, kind, ValueType.FRAME if kind in ("frame", "body")
+                                       else ValueType.POINT)
         pys.append(py)
     method = {"frame": "frames", "body": "bodies", "particle": "particles",
               "point": "points"}[kind]
@@ -77,7 +77,7 @@ def _implicit_point(tr: Translator, name: str, code: str) -> None:
         tr.emit(f"{py} = {code}")
     else:
         py = code
-    tr.entities[name.lower()] = Entry(py, "point", "point")
+    tr.entities[name.lower()] = Entry(py, "point", ValueType.POINT)
 
 
 def _entry_key(tr: Translator, entry: Entry) -> str:

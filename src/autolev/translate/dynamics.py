@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from .. import ir
 from .commands import arguments, command
-from .core import STATEMENTS, Entry, Translator
+from .core import STATEMENTS, Entry, Translator, ValueType
 from .emit import quote
 
 
@@ -58,7 +58,7 @@ def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
             tr.defined.add((name.lower(), 0))
         else:
             py = tr.py_name("value", name)
-            tr.values[name.lower()] = Entry(py, "value", "scalar")
+            tr.values[name.lower()] = Entry(py, "value", ValueType.SCALAR)
             tr.emit(f"{py} = {v.code}")
     for v in st.values:
         _implicit_constant(tr, v)
@@ -79,7 +79,7 @@ def _gravity(tr, c):
     if not c.args:
         raise tr.error("GRAVITY(g>) or GRAVITY(g>, B, ...)", c, "T007")
     g = tr.expr(c.args[0])
-    if g.type not in ("vector", "unknown"):
+    if g.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"GRAVITY takes a vector, not a {g.type}", c.args[0], "T001")
     rest = [tr.entity(a, ("body", "particle")).py for a in c.args[1:]]
     tr.emit(f"model.gravity({', '.join([g.code] + rest)})")
@@ -97,7 +97,7 @@ def _force(tr, c):
     a, f = arguments(tr, c, 2)
     first, second = _pair(tr, a, ("point", "particle"))
     v = tr.expr(f)
-    if v.type not in ("vector", "unknown"):
+    if v.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"FORCE takes a vector, not a {v.type}", f, "T001")
     if first is None:
         tr.emit(f"model.force({second.py}, {v.code})")
@@ -110,7 +110,7 @@ def _torque(tr, c):
     a, f = arguments(tr, c, 2)
     first, second = _pair(tr, a, ("frame", "newtonian", "body"))
     v = tr.expr(f)
-    if v.type not in ("vector", "unknown"):
+    if v.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"TORQUE takes a vector, not a {v.type}", f, "T001")
     if first is None:
         tr.emit(f"model.torque({second.py}, {v.code})")

@@ -5,7 +5,7 @@ from typing import Callable
 
 from .. import ir
 from ..dispatch import Dispatch
-from .core import STATEMENTS, Translator
+from .core import STATEMENTS, Translator, ValueType
 from .emit import call_lines, comment, quote
 
 
@@ -55,7 +55,7 @@ def output_statement(tr: Translator, st: ir.Output) -> None:
     items = []
     for item in st.items:
         x = tr.expr(item.expr)
-        if x.type not in ("scalar", "matrix", "unknown"):
+        if x.type not in (ValueType.SCALAR, ValueType.MATRIX, ValueType.UNKNOWN):
             raise tr.error(f"OUTPUT writes scalars, not a {x.type}", item.expr, "T001")
         label = _label(item.expr)
         items.append(f"({x.code}, {quote(label)}{_unit_arg(item.unit)})")
@@ -121,7 +121,7 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
     args = []
     for a in st.args:
         x = tr.expr(a)
-        args.append(x.code if x.type != "list" else x.code[1:-1])
+        args.append(x.code if x.type != ValueType.LIST else x.code[1:-1])
     opts = ""
     if args:
         opts += f", [{', '.join(args)}]"
@@ -133,7 +133,7 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
     if st.options:
         opts += f", options=({''.join(quote(o) + ', ' for o in st.options)})"
     zero = tr.values.get("zero")
-    if tr.kane_called and zero is not None and zero.type == "matrix":
+    if tr.kane_called and zero is not None and zero.type == ValueType.MATRIX:
         opts += f", zero={zero.py}"
     tr.has_code = True
     tr.emit(f"model.code({quote(st.what)}, {quote(st.filename)}{opts})")

@@ -6,7 +6,7 @@ import re
 
 from .. import ir
 from .commands import COMMANDS, arguments, command
-from .core import Translator
+from .core import Translator, ValueType
 from .emit import comment, quote
 
 
@@ -30,7 +30,7 @@ def _simprot(tr, c):
     a, b = tr.frame(args[0]).code, tr.frame(args[1]).code
     axis = args[2]
     x = tr.expr(axis)
-    if x.type == "vector":
+    if x.type == ValueType.VECTOR:
         axis_code = x.code
     elif x.exact is not None and x.exact.denominator == 1 and abs(int(x.exact)) in (1, 2, 3):
         k = int(x.exact)

@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .. import ir
-from .core import ATOM, EXPRESSIONS, Entry, Translator, Typed
+from .core import ATOM, EXPRESSIONS, Entry, Translator, Typed, ValueType
 
 FRAMES = ("newtonian", "frame", "body")
 POINTS = ("point", "particle")
@@ -86,7 +86,7 @@ def vector_name(tr: Translator, v: ir.VectorName, want: str = "value") -> Typed:
     sp = classify(tr, v)
     if sp is None:
         entry = tr.vectors.get(v.name.lower())
-        if entry is None or (entry.type == "dyadic") != v.dyadic:
+        if entry is None or (entry.type == ValueType.DYADIC) != v.dyadic:
             raise tr.error(f"'{v.text}' is not defined (a vector must be assigned before "
                            "it is used)", v, "T002")
         return Typed(entry.py, entry.type)
@@ -105,13 +105,13 @@ def vector_name(tr: Translator, v: ir.VectorName, want: str = "value") -> Typed:
         "force": lambda: f"model.force_on({p[0]})",
         "torque": lambda: f"model.torque_on({p[0]})",
     }[sp.kind]()
-    return Typed(code, "dyadic" if v.dyadic else "vector", ATOM)
+    return Typed(code, ValueType.DYADIC if v.dyadic else ValueType.VECTOR, ATOM)
 
 
 def assign_vector(tr: Translator, target: ir.VectorName, op: str, value: Typed) -> None:
     """Write `target op value` for a vector or dyadic name."""
-    want = "dyadic" if target.dyadic else "vector"
-    if value.type not in (want, "unknown") and not (value.exact == 0):
+    want = ValueType.DYADIC if target.dyadic else ValueType.VECTOR
+    if value.type not in (want, ValueType.UNKNOWN) and not (value.exact == 0):
         raise tr.error(f"{target.text} is a {want}; the right side is a {value.type}", target,
                        "T001")
     sp = classify(tr, target)
@@ -151,7 +151,7 @@ def _user_vector(tr: Translator, target: ir.VectorName, op: str, value: Typed, w
     if entry is None:
         if op not in ("=", ":="):
             raise tr.error(f"{target.text} has no value yet", target, "T002")
-        entry = Entry(tr.py_name("vector", target.name, want), "vector", want)
+        entry = Entry(tr.py_name("vector", target.name, want.value), "vector", want)
         tr.vectors[key] = entry
     rhs = _combine(tr, entry.py, op, value, target)
     tr.emit(f"{entry.py} = {rhs}")
