@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from .. import ir
-from .core import STATEMENTS, Entry, Translator, Typed, ValueType
+from .core import FRAME_KINDS, STATEMENTS, Entry, NameKind, Translator, Typed, ValueType
 from .special import assign_vector
 
 # -- assignments ---------------------------------------------------------------------------
@@ -49,7 +49,7 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
         raise tr.error(f"{name}{chr(39) * primes} needs {name} declared (VARIABLES "
                        f"{name}{chr(39) * primes})", target, "T002")
     if key not in tr.values:
-        parts = tr.split_entities(name, ("frame", "newtonian", "body"), 2)
+        parts = tr.split_entities(name, FRAME_KINDS, 2)
         if parts is not None:
             if op not in ("=", ":="):
                 raise tr.error(f"{op} is not defined for a direction cosine matrix", target, "T010")
@@ -60,7 +60,7 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
     if entry is None:
         if op not in ("=", ":="):
             raise tr.error(f"{name} has no value yet", target, "T002")
-        entry = Entry(tr.py_name("value", name), "value", value.type)
+        entry = Entry(tr.py_name("value", name), NameKind.VALUE, value.type)
         tr.values[key] = entry
         tr.emit(f"{entry.py} = {value.code}")
         return
@@ -85,7 +85,7 @@ def _assign_element(tr: Translator, target: ir.Index, op: str, value: Typed) -> 
         if op not in ("=", ":="):
             raise tr.error(f"{target.name} has no value yet ({op} needs one)", target,
                            "T002")
-        entry = Entry(tr.py_name("value", target.name), "value", ValueType.MATRIX)
+        entry = Entry(tr.py_name("value", target.name), NameKind.VALUE, ValueType.MATRIX)
         tr.values[key] = entry
         current = "None"
     else:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from .. import ir
 from .assignments import assign
-from .core import STATEMENTS, Entry, Translator, ValueType
+from .core import STATEMENTS, Entry, NameKind, Translator, ValueType
 from .functions import FUNCTIONS
 
 
@@ -94,7 +94,7 @@ def _eig_command(tr, c):
         key = a.name.lower()
         entry = tr.values.get(key)
         if entry is None:
-            entry = Entry(tr.py_name("value", a.name), "value", ValueType.MATRIX)
+            entry = Entry(tr.py_name("value", a.name), NameKind.VALUE, ValueType.MATRIX)
             tr.values[key] = entry
         names.append(entry.py)
     tr.emit(f"{names[0]}, {names[1]} = al.eig(model.explicit({m.code}), vectors=True)")

@@ -34,7 +34,6 @@ _USES_SYMPY = re.compile(r"\bsm\.")
 # the NameTable's spaces as Autolev's namespaces (derivative names are not Autolev's)
 _NAMESPACE = {"scalar": "quantity", "value": "quantity", "entity": "entity",
               "vector": "vector"}
-ENTITY_KINDS = ("newtonian", "frame", "body", "point", "particle")
 
 
 class ValueType(str, Enum):
@@ -55,6 +54,34 @@ class ValueType(str, Enum):
 
     def __format__(self, spec: str) -> str:
         return format(self.value, spec)
+
+
+class NameKind(str, Enum):
+    """What a name of the model is (`Entry.kind`): a declared scalar, an assigned value,
+    an entity or a vector."""
+    CONSTANT = "constant"
+    VARIABLE = "variable"
+    MOTIONVARIABLE = "motionvariable"
+    SPECIFIED = "specified"
+    IMAGINARY = "imaginary"
+    VALUE = "value"
+    NEWTONIAN = "newtonian"
+    FRAME = "frame"
+    BODY = "body"
+    POINT = "point"
+    PARTICLE = "particle"
+    VECTOR = "vector"
+
+    def __str__(self) -> str:       # messages say "a body", on every Python version
+        return self.value
+
+    def __format__(self, spec: str) -> str:
+        return format(self.value, spec)
+
+
+FRAME_KINDS = (NameKind.NEWTONIAN, NameKind.FRAME, NameKind.BODY)
+POINT_KINDS = (NameKind.POINT, NameKind.PARTICLE)
+ENTITY_KINDS = FRAME_KINDS + POINT_KINDS
 
 
 class TranslationError(Exception):
@@ -82,8 +109,7 @@ class Typed:
 @dataclass
 class Entry:
     py: str
-    kind: str            # constant variable motionvariable specified imaginary value
-    #                      newtonian frame body point particle vector
+    kind: NameKind
     type: ValueType
     order: int = 0       # derivatives declared (scalars)
 
@@ -199,7 +225,7 @@ class Translator:
             self.namespaces.setdefault(public, {}).setdefault(name, py)
         return py
 
-    def declare_scalar(self, name: str, kind: str, order: int) -> Entry:
+    def declare_scalar(self, name: str, kind: NameKind, order: int) -> Entry:
         py = self.py_name("scalar", name)
         e = Entry(py, kind, ValueType.SCALAR, order)
         self.scalars[name.lower()] = e
@@ -280,7 +306,7 @@ class Translator:
         return (key in self.scalars or key in self.entities
                 or (key in self.values and not node.primes)
                 or key in ("t", "pi", "u_independent", "u_dependent", "u_auxiliary")
-                or self.split_entities(node.name, ("frame", "newtonian", "body"), 2)
+                or self.split_entities(node.name, FRAME_KINDS, 2)
                 is not None)
 
     def _known_after_failure(self, st: ir.Statement) -> None:
@@ -292,12 +318,12 @@ class Translator:
         if isinstance(target, ir.VectorName):
             if target.name.lower() not in self.vectors:
                 self.vectors[target.name.lower()] = Entry(
-                    target.name, "vector",
+                    target.name, NameKind.VECTOR,
                     ValueType.DYADIC if target.dyadic else ValueType.VECTOR)
         elif isinstance(target, (ir.Name, ir.Index)) and not target.primes:
             key = target.name.lower()
             if key not in self.scalars and key not in self.values:
-                self.values[key] = Entry(target.name, "value", ValueType.UNKNOWN)
+                self.values[key] = Entry(target.name, NameKind.VALUE, ValueType.UNKNOWN)
 
     def _comments_before(self, st: ir.Statement, previous_end: dict[str, int]) -> None:
         """The user's comment lines and the statement's own lines, as comments."""
@@ -419,7 +445,7 @@ class Translator:
 
     def dcm_name(self, name: str) -> Typed | None:
         """A_B: the direction cosine matrix of two frames (A_i . B_j)."""
-        parts = self.split_entities(name, ("frame", "newtonian", "body"), 2)
+        parts = self.split_entities(name, FRAME_KINDS, 2)
         if parts is None:
             return None
         a, b = parts
@@ -450,7 +476,7 @@ class Translator:
         """An expression that must name a frame (or a body)."""
         if isinstance(e, ir.Name) and not e.primes:
             ent = self.entities.get(e.name.lower())
-            if ent is not None and ent.kind in ("frame", "newtonian", "body"):
+            if ent is not None and ent.kind in FRAME_KINDS:
                 return Typed(ent.py, ValueType.FRAME)
         raise self.error("a frame or body is needed here", e, "T008")
 
@@ -458,7 +484,7 @@ class Translator:
         """An expression that must name a point (or particle)."""
         if isinstance(e, ir.Name) and not e.primes:
             ent = self.entities.get(e.name.lower())
-            if ent is not None and ent.kind in ("point", "particle"):
+            if ent is not None and ent.kind in (NameKind.POINT, NameKind.PARTICLE):
                 return Typed(ent.py, ValueType.POINT)
         raise self.error("a point or particle is needed here", e, "T008")
 
@@ -467,7 +493,7 @@ class Translator:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in kinds:
                 return ent
-        raise self.error("a " + " or ".join(sorted(set(kinds) - {"newtonian"})) +
+        raise self.error("a " + " or ".join(sorted(set(kinds) - {NameKind.NEWTONIAN})) +
                          " is needed here", e, "T008")
 
 

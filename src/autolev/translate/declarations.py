@@ -5,16 +5,17 @@ from __future__ import annotations
 import re
 
 from .. import ir
-from .core import STATEMENTS, Entry, Translator, ValueType
+from .core import STATEMENTS, Entry, NameKind, Translator, ValueType
 from .emit import assign_names, quote, quoted_names
 
 
 # -- declarations ------------------------------------------------------------------
-_ENTITY_DECL = {"newtonian": "newtonian", "frames": "frame", "bodies": "body",
-                "particles": "particle", "points": "point"}
-_SCALAR_DECL = {"constants": "constant", "variables": "variable",
-                "motionvariables": "motionvariable", "specifieds": "specified",
-                "imaginary": "imaginary"}
+_ENTITY_DECL = {"newtonian": NameKind.NEWTONIAN, "frames": NameKind.FRAME,
+                "bodies": NameKind.BODY, "particles": NameKind.PARTICLE,
+                "points": NameKind.POINT}
+_SCALAR_DECL = {"constants": NameKind.CONSTANT, "variables": NameKind.VARIABLE,
+                "motionvariables": NameKind.MOTIONVARIABLE,
+                "specifieds": NameKind.SPECIFIED, "imaginary": NameKind.IMAGINARY}
 
 
 @STATEMENTS.register(ir.Declaration)
@@ -42,12 +43,12 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
     for item in st.items:
         if item.value is not None or item.sign is not None or item.primes:
             raise tr.error(f"{st.what.upper()} names take no value, sign or prime", item, "T010")
-    if kind == "newtonian":
+    if kind == NameKind.NEWTONIAN:
         if len(names) != 1:
             raise tr.error("NEWTONIAN declares one frame", st, "T007")
         n = names[0]
         py = tr.py_name("entity", n, "frame")
-        tr.entities[n.lower()] = Entry(py, "newtonian", ValueType.FRAME)
+        tr.entities[n.lower()] = Entry(py, NameKind.NEWTONIAN, ValueType.FRAME)
         tr.emit(f"{py} = model.newtonian({quote(n)})")
         _implicit_point(tr, n + "O", f"{py}.origin")
         return
@@ -55,16 +56,16 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
     for n in names:
         if n.lower() in tr.entities:
             tr.warn(f"'{n}' is declared again; the new {kind} replaces it", st)
-        py = tr.py_name("entity", n, kind)
-        tr.entities[n.lower()] = Entry(py, kind, ValueType.FRAME if kind in ("frame", "body")
-                                       else ValueType.POINT)
+        py = tr.py_name("entity", n, kind.value)     # the name table keeps its own words
+        tr.entities[n.lower()] = Entry(py, kind, ValueType.FRAME if kind in
+                                       (NameKind.FRAME, NameKind.BODY) else ValueType.POINT)
         pys.append(py)
-    method = {"frame": "frames", "body": "bodies", "particle": "particles",
-              "point": "points"}[kind]
+    method = {NameKind.FRAME: "frames", NameKind.BODY: "bodies",
+              NameKind.PARTICLE: "particles", NameKind.POINT: "points"}[kind]
     tr.emit(assign_names(pys, f"model.{method}({quoted_names(names)})"))
-    if kind in ("body", "frame"):
+    if kind in (NameKind.BODY, NameKind.FRAME):
         # every frame has its origin AO, as NEWTONIAN N has NO and BODIES B has BO
-        attribute = "masscenter" if kind == "body" else "origin"
+        attribute = "masscenter" if kind == NameKind.BODY else "origin"
         for n, py in zip(names, pys):
             _implicit_point(tr, n + "O", f"{py}.{attribute}")
 
@@ -77,7 +78,7 @@ def _implicit_point(tr: Translator, name: str, code: str) -> None:
         tr.emit(f"{py} = {code}")
     else:
         py = code
-    tr.entities[name.lower()] = Entry(py, "point", ValueType.POINT)
+    tr.entities[name.lower()] = Entry(py, NameKind.POINT, ValueType.POINT)
 
 
 def _entry_key(tr: Translator, entry: Entry) -> str:
@@ -104,14 +105,15 @@ def _declare_scalars(tr: Translator, st: ir.Declaration) -> None:
     for (order, sign), items in groups.items():
         names = [n for n, _ in items]
         pys = [p for _, p in items]
-        if kind == "imaginary":
+        if kind == NameKind.IMAGINARY:
             for p in pys:
                 tr.emit(f"{p} = sm.I")
             continue
-        method = {"constant": "constants", "variable": "variables",
-                  "motionvariable": "motion_variables", "specified": "specifieds"}[kind]
+        method = {NameKind.CONSTANT: "constants", NameKind.VARIABLE: "variables",
+                  NameKind.MOTIONVARIABLE: "motion_variables",
+                  NameKind.SPECIFIED: "specifieds"}[kind]
         opts = ""
-        if order and kind != "constant":
+        if order and kind != NameKind.CONSTANT:
             opts += f", order={order}"
         if sign:
             opts += f", sign={quote(sign)}"

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from .. import ir
 from .commands import arguments, command
-from .core import STATEMENTS, Entry, Translator, ValueType
+from .core import FRAME_KINDS, STATEMENTS, Entry, NameKind, Translator, ValueType
 from .emit import quote
 
 
@@ -12,7 +12,7 @@ def _implicit_constant(tr: Translator, e: ir.Expr) -> None:
     if isinstance(e, ir.Name) and not e.primes:
         key = e.name.lower()
         if key not in tr.scalars and key not in tr.values and key not in ("t", "pi"):
-            entry = tr.declare_scalar(e.name, "constant", 0)
+            entry = tr.declare_scalar(e.name, NameKind.CONSTANT, 0)
             tr.emit(f"{entry.py} = model.constants({quote(e.name)})")
 
 
@@ -20,7 +20,7 @@ def _implicit_constant(tr: Translator, e: ir.Expr) -> None:
 def mass(tr: Translator, st: ir.MassStatement) -> None:
     for item in st.items:
         target = tr.entities.get(item.target.lower())
-        if target is None or target.kind not in ("body", "particle"):
+        if target is None or target.kind not in (NameKind.BODY, NameKind.PARTICLE):
             raise tr.error(f"MASS is given to bodies and particles; '{item.target}' is not "
                            "one", item, "T008")
         _implicit_constant(tr, item.value)
@@ -35,13 +35,13 @@ def mass(tr: Translator, st: ir.MassStatement) -> None:
 def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
     body = tr.entities.get(st.body.lower())
     about = None
-    if body is None or body.kind != "body":
+    if body is None or body.kind != NameKind.BODY:
         pieces = st.body.split("_")
         for i in range(1, len(pieces)):
             b = tr.entities.get("_".join(pieces[:i]).lower())
             p = tr.entities.get("_".join(pieces[i:]).lower())
-            if b is not None and b.kind == "body" and p is not None and \
-                    p.kind in ("point", "particle"):
+            if b is not None and b.kind == NameKind.BODY and p is not None and \
+                    p.kind in (NameKind.POINT, NameKind.PARTICLE):
                 body, about = b, p
                 break
         else:
@@ -49,7 +49,7 @@ def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
     frame = None
     if st.frame is not None:
         frame = tr.entities.get(st.frame.lower())
-        if frame is None or frame.kind not in ("frame", "newtonian", "body"):
+        if frame is None or frame.kind not in FRAME_KINDS:
             raise tr.error(f"'{st.frame}' is not a frame", st, "T008")
     for name, value in st.definitions:
         v = tr.scalar(value)
@@ -58,7 +58,7 @@ def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
             tr.defined.add((name.lower(), 0))
         else:
             py = tr.py_name("value", name)
-            tr.values[name.lower()] = Entry(py, "value", ValueType.SCALAR)
+            tr.values[name.lower()] = Entry(py, NameKind.VALUE, ValueType.SCALAR)
             tr.emit(f"{py} = {v.code}")
     for v in st.values:
         _implicit_constant(tr, v)
@@ -81,7 +81,7 @@ def _gravity(tr, c):
     g = tr.expr(c.args[0])
     if g.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"GRAVITY takes a vector, not a {g.type}", c.args[0], "T001")
-    rest = [tr.entity(a, ("body", "particle")).py for a in c.args[1:]]
+    rest = [tr.entity(a, (NameKind.BODY, NameKind.PARTICLE)).py for a in c.args[1:]]
     tr.emit(f"model.gravity({', '.join([g.code] + rest)})")
 
 
@@ -95,7 +95,7 @@ def _pair(tr, e, kinds):
 @command("FORCE")
 def _force(tr, c):
     a, f = arguments(tr, c, 2)
-    first, second = _pair(tr, a, ("point", "particle"))
+    first, second = _pair(tr, a, (NameKind.POINT, NameKind.PARTICLE))
     v = tr.expr(f)
     if v.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"FORCE takes a vector, not a {v.type}", f, "T001")
@@ -108,7 +108,7 @@ def _force(tr, c):
 @command("TORQUE")
 def _torque(tr, c):
     a, f = arguments(tr, c, 2)
-    first, second = _pair(tr, a, ("frame", "newtonian", "body"))
+    first, second = _pair(tr, a, FRAME_KINDS)
     v = tr.expr(f)
     if v.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"TORQUE takes a vector, not a {v.type}", f, "T001")

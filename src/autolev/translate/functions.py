@@ -10,7 +10,7 @@ import difflib
 import math
 
 from .. import ir
-from .core import ATOM, EXPRESSIONS, Translator, Typed, ValueType
+from .core import ATOM, EXPRESSIONS, NameKind, Translator, Typed, ValueType
 from .emit import quote
 
 FUNCTIONS: dict = {}
@@ -323,7 +323,7 @@ def _frstar(tr, c):
     return Typed("model.frstar()", ValueType.MATRIX)
 
 
-def _things(tr, args, kinds=("body", "particle")) -> list[str]:
+def _things(tr, args, kinds=(NameKind.BODY, NameKind.PARTICLE)) -> list[str]:
     return [tr.entity(a, kinds).py for a in args]
 
 
