@@ -66,12 +66,12 @@ def ir_classes(base):
 
 def ir_passes():
     from autolev import ir
-    from autolev.translate import core, statements
+    from autolev.translate import core, io
     return [("translator statements", core.STATEMENTS, ir.Statement),
             ("translator expressions", core.EXPRESSIONS, ir.Expr),
             ("ir.walk", ir.CHILDREN, ir.Expr),
             ("names read", core._READS, ir.Expr),
-            ("heading text", statements._TEXT, ir.Expr)]
+            ("heading text", io._TEXT, ir.Expr)]
 
 
 @pytest.mark.parametrize("what, table, base", ir_passes(), ids=lambda p: p if

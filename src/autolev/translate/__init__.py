@@ -4,7 +4,10 @@ from __future__ import annotations
 from .. import ir
 
 # the families register their handlers in core's tables when imported, before any use
-from . import expressions, functions, special, statements  # noqa: F401
+from . import (  # noqa: F401
+    assignments, commands, declarations, dynamics, expressions, functions, io, kinematics,
+    session, special,
+)
 from .core import Translation, Translator
 
 __all__ = ["translate", "Translation"]

@@ -5,13 +5,16 @@ One `Translator` walks the program's statements in order, keeping what every nam
 writing a line or two of Python per statement, preceded by the Autolev line as a
 comment.  Expressions are written with their type (scalar, vector, dyadic, matrix,
 frame, point) so each construct can be checked and written the way its types need.
-Expressions, functions, vector names and statements are written by handlers in
-`expressions.py`, `functions.py`, `special.py` and `statements.py`, registered in the
-tables `EXPRESSIONS` and `STATEMENTS` defined here (importing the package imports them).
+Expressions, functions and vector names are written by handlers in `expressions.py`,
+`functions.py` and `special.py`, statements by one module per family (`declarations.py`,
+`assignments.py`, `commands.py`, `kinematics.py`, `dynamics.py`, `io.py`, `session.py`),
+registered in the tables `EXPRESSIONS` and `STATEMENTS` defined here (importing the
+package imports them).
 """
 from __future__ import annotations
 
 import re
+from enum import Enum
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable
@@ -25,14 +28,60 @@ from .names import NameTable, UnsafeName
 # precedence of the Python written for an expression
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
 
-SCALAR_TYPES = ("scalar",)
 # the generated module imports sympy only when some line uses it
 _SYMPY_IMPORT = "import sympy as sm"
 _USES_SYMPY = re.compile(r"\bsm\.")
 # the NameTable's spaces as Autolev's namespaces (derivative names are not Autolev's)
 _NAMESPACE = {"scalar": "quantity", "value": "quantity", "entity": "entity",
               "vector": "vector"}
-ENTITY_KINDS = ("newtonian", "frame", "body", "point", "particle")
+
+
+class ValueType(str, Enum):
+    """What an expression is (`Typed.type`) and what a name holds (`Entry.type`)."""
+    SCALAR = "scalar"
+    VECTOR = "vector"
+    VECTORS = "vectors"      # a row or column of vectors (PARTIALS, [V1>, V2>])
+    DYADIC = "dyadic"
+    MATRIX = "matrix"
+    FRAME = "frame"
+    POINT = "point"
+    LIST = "list"
+    STRING = "string"
+    UNKNOWN = "unknown"      # after an error, or not known until run time
+
+    def __str__(self) -> str:       # messages say "a vector", on every Python version
+        return self.value
+
+    def __format__(self, spec: str) -> str:
+        return format(self.value, spec)
+
+
+class NameKind(str, Enum):
+    """What a name of the model is (`Entry.kind`): a declared scalar, an assigned value,
+    an entity or a vector."""
+    CONSTANT = "constant"
+    VARIABLE = "variable"
+    MOTIONVARIABLE = "motionvariable"
+    SPECIFIED = "specified"
+    IMAGINARY = "imaginary"
+    VALUE = "value"
+    NEWTONIAN = "newtonian"
+    FRAME = "frame"
+    BODY = "body"
+    POINT = "point"
+    PARTICLE = "particle"
+    VECTOR = "vector"
+
+    def __str__(self) -> str:       # messages say "a body", on every Python version
+        return self.value
+
+    def __format__(self, spec: str) -> str:
+        return format(self.value, spec)
+
+
+FRAME_KINDS = (NameKind.NEWTONIAN, NameKind.FRAME, NameKind.BODY)
+POINT_KINDS = (NameKind.POINT, NameKind.PARTICLE)
+ENTITY_KINDS = FRAME_KINDS + POINT_KINDS
 
 
 class TranslationError(Exception):
@@ -47,7 +96,7 @@ class TranslationError(Exception):
 @dataclass
 class Typed:
     code: str
-    type: str            # scalar vector dyadic matrix frame point list string unknown
+    type: ValueType
     prec: int = ATOM
     exact: Fraction | None = None      # value of a pure integer/rational expression
     node: object = None
@@ -60,9 +109,8 @@ class Typed:
 @dataclass
 class Entry:
     py: str
-    kind: str            # constant variable motionvariable specified imaginary value
-    #                      newtonian frame body point particle vector
-    type: str            # scalar matrix vector dyadic frame point unknown
+    kind: NameKind
+    type: ValueType
     order: int = 0       # derivatives declared (scalars)
 
 
@@ -177,9 +225,9 @@ class Translator:
             self.namespaces.setdefault(public, {}).setdefault(name, py)
         return py
 
-    def declare_scalar(self, name: str, kind: str, order: int) -> Entry:
+    def declare_scalar(self, name: str, kind: NameKind, order: int) -> Entry:
         py = self.py_name("scalar", name)
-        e = Entry(py, kind, "scalar", order)
+        e = Entry(py, kind, ValueType.SCALAR, order)
         self.scalars[name.lower()] = e
         return e
 
@@ -258,7 +306,7 @@ class Translator:
         return (key in self.scalars or key in self.entities
                 or (key in self.values and not node.primes)
                 or key in ("t", "pi", "u_independent", "u_dependent", "u_auxiliary")
-                or self.split_entities(node.name, ("frame", "newtonian", "body"), 2)
+                or self.split_entities(node.name, FRAME_KINDS, 2)
                 is not None)
 
     def _known_after_failure(self, st: ir.Statement) -> None:
@@ -270,11 +318,12 @@ class Translator:
         if isinstance(target, ir.VectorName):
             if target.name.lower() not in self.vectors:
                 self.vectors[target.name.lower()] = Entry(
-                    target.name, "vector", "dyadic" if target.dyadic else "vector")
+                    target.name, NameKind.VECTOR,
+                    ValueType.DYADIC if target.dyadic else ValueType.VECTOR)
         elif isinstance(target, (ir.Name, ir.Index)) and not target.primes:
             key = target.name.lower()
             if key not in self.scalars and key not in self.values:
-                self.values[key] = Entry(target.name, "value", "unknown")
+                self.values[key] = Entry(target.name, NameKind.VALUE, ValueType.UNKNOWN)
 
     def _comments_before(self, st: ir.Statement, previous_end: dict[str, int]) -> None:
         """The user's comment lines and the statement's own lines, as comments."""
@@ -348,7 +397,7 @@ class Translator:
 
     def scalar(self, e: ir.Expr) -> Typed:
         x = self.expr(e)
-        if x.type not in ("scalar", "unknown"):
+        if x.type not in (ValueType.SCALAR, ValueType.UNKNOWN):
             raise self.error(f"a scalar is needed here, not a {x.type}", e, "T001")
         return x
 
@@ -362,10 +411,10 @@ class Translator:
             code = self.ensure_derivative(name, primes) if primes else entry.py
             if (key, primes) == self.redefining:
                 # X = f(X): on the right, X stands for its previous definition
-                return Typed(f"model.previous({code})", "scalar")
+                return Typed(f"model.previous({code})", ValueType.SCALAR)
             if self.autorhs and (key, primes) in self.defined:
-                return Typed(f"model.rhs({code})", "scalar")
-            return Typed(code, "scalar")
+                return Typed(f"model.rhs({code})", ValueType.SCALAR)
+            return Typed(code, ValueType.SCALAR)
         if key in self.values:
             entry = self.values[key]
             if primes:
@@ -374,11 +423,11 @@ class Translator:
             return Typed(entry.py, entry.type)
         if key in ("u_independent", "u_dependent", "u_auxiliary"):
             order = f", {primes}" if primes else ""
-            return Typed(f"model.speed_column({key[2:]!r}{order})", "matrix")
+            return Typed(f"model.speed_column({key[2:]!r}{order})", ValueType.MATRIX)
         if key == "t" and not primes:
-            return Typed("t", "scalar")
+            return Typed("t", ValueType.SCALAR)
         if key == "pi" and not primes:
-            return Typed("sm.pi", "scalar")
+            return Typed("sm.pi", ValueType.SCALAR)
         if key in self.entities:
             ent = self.entities[key]
             return Typed(ent.py, ent.type)
@@ -387,13 +436,20 @@ class Translator:
             return dcm
         raise self.error(f"'{name}' is not declared or defined", node, "T002")
 
+    def symbol(self, e: ir.Expr) -> str:
+        """A declared name as the symbol itself (never its RHS, whatever AUTORHS says)."""
+        if isinstance(e, ir.Name) and e.name.lower() in self.scalars:
+            return self.ensure_derivative(e.name, e.primes) if e.primes else \
+                self.scalars[e.name.lower()].py
+        return self.expr(e).code
+
     def dcm_name(self, name: str) -> Typed | None:
         """A_B: the direction cosine matrix of two frames (A_i . B_j)."""
-        parts = self.split_entities(name, ("frame", "newtonian", "body"), 2)
+        parts = self.split_entities(name, FRAME_KINDS, 2)
         if parts is None:
             return None
         a, b = parts
-        return Typed(f"{a.py}.dcm({b.py})", "matrix", ATOM)
+        return Typed(f"{a.py}.dcm({b.py})", ValueType.MATRIX, ATOM)
 
     def split_entities(self, text: str, kinds, count: int) -> list[Entry] | None:
         """Split `text` at underscores into `count` entity names of the given kinds."""
@@ -420,16 +476,16 @@ class Translator:
         """An expression that must name a frame (or a body)."""
         if isinstance(e, ir.Name) and not e.primes:
             ent = self.entities.get(e.name.lower())
-            if ent is not None and ent.kind in ("frame", "newtonian", "body"):
-                return Typed(ent.py, "frame")
+            if ent is not None and ent.kind in FRAME_KINDS:
+                return Typed(ent.py, ValueType.FRAME)
         raise self.error("a frame or body is needed here", e, "T008")
 
     def point(self, e: ir.Expr) -> Typed:
         """An expression that must name a point (or particle)."""
         if isinstance(e, ir.Name) and not e.primes:
             ent = self.entities.get(e.name.lower())
-            if ent is not None and ent.kind in ("point", "particle"):
-                return Typed(ent.py, "point")
+            if ent is not None and ent.kind in (NameKind.POINT, NameKind.PARTICLE):
+                return Typed(ent.py, ValueType.POINT)
         raise self.error("a point or particle is needed here", e, "T008")
 
     def entity(self, e: ir.Expr, kinds=ENTITY_KINDS) -> Entry:
@@ -437,7 +493,7 @@ class Translator:
             ent = self.entities.get(e.name.lower())
             if ent is not None and ent.kind in kinds:
                 return ent
-        raise self.error("a " + " or ".join(sorted(set(kinds) - {"newtonian"})) +
+        raise self.error("a " + " or ".join(sorted(set(kinds) - {NameKind.NEWTONIAN})) +
                          " is needed here", e, "T008")
 
 

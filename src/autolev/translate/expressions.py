@@ -10,7 +10,7 @@ from fractions import Fraction
 
 from .. import ir
 from ..errors import MAX_EXACT_DIGITS
-from .core import ADD, ATOM, EXPRESSIONS, MUL, POW, UNARY, Translator, Typed
+from .core import ADD, ATOM, EXPRESSIONS, MUL, POW, UNARY, Translator, Typed, ValueType
 
 # Python cannot compile a longer chain A + B + ... (its nesting limit is about 3000)
 MAX_CHAIN_TERMS = 2000
@@ -20,8 +20,8 @@ MAX_CHAIN_TERMS = 2000
 def number(tr: Translator, e: ir.Number, want: str) -> Typed:
     if e.is_integer:
         value = int(e.text)
-        return Typed(str(value), "scalar", ATOM, Fraction(value))    # 007 is 7
-    return Typed(e.text, "scalar", ATOM)
+        return Typed(str(value), ValueType.SCALAR, ATOM, Fraction(value))    # 007 is 7
+    return Typed(e.text, ValueType.SCALAR, ATOM)
 
 
 @EXPRESSIONS.register(ir.Neg)
@@ -71,26 +71,27 @@ def _binary(tr: Translator, e: ir.BinOp, a: Typed, b: Typed) -> Typed:
             return _exact_typed(v)
     ta, tb = a.type, b.type
     if op in "+-":
-        if "unknown" not in (ta, tb) and ta != tb:
-            if not ({ta, tb} <= {"scalar", "matrix"}):
+        if ValueType.UNKNOWN not in (ta, tb) and ta != tb:
+            if not ({ta, tb} <= {ValueType.SCALAR, ValueType.MATRIX}):
                 raise tr.error(f"cannot {'add' if op == '+' else 'subtract'} a {tb} "
                                f"{'to' if op == '+' else 'from'} a {ta}", e, "T001")
         left = a.wrapped(ADD)
         right = b.wrapped(ADD + 1) if op == "-" else b.wrapped(ADD)
-        return Typed(f"{left} {op} {right}", ta if ta != "unknown" else tb, ADD)
+        return Typed(f"{left} {op} {right}", ta if ta != ValueType.UNKNOWN else tb, ADD)
     if op == "*":
-        if ta in ("vector",) and tb in ("vector",):
-            return Typed(f"al.outer({a.code}, {b.code})", "dyadic", ATOM)
+        if ta in (ValueType.VECTOR,) and tb in (ValueType.VECTOR,):
+            return Typed(f"al.outer({a.code}, {b.code})", ValueType.DYADIC, ATOM)
         rtype = _product_type(ta, tb)
         if rtype is None:
             raise tr.error(f"cannot multiply a {ta} by a {tb}", e, "T001")
         return Typed(f"{a.wrapped(MUL)}*{b.wrapped(MUL)}", rtype, MUL)
     if op == "/":
-        if tb not in ("scalar", "unknown"):
+        if tb not in (ValueType.SCALAR, ValueType.UNKNOWN):
             raise tr.error(f"cannot divide by a {tb}", e, "T001")
         return Typed(f"{a.wrapped(MUL)}/{b.wrapped(MUL + 1)}", ta, MUL)
     # power
-    if ta not in ("scalar", "matrix", "unknown") or tb not in ("scalar", "unknown"):
+    if ta not in (ValueType.SCALAR, ValueType.MATRIX, ValueType.UNKNOWN) or \
+            tb not in (ValueType.SCALAR, ValueType.UNKNOWN):
         raise tr.error(f"cannot raise a {ta} to a power", e, "T001")
     if a.exact is not None and b.exact is not None and abs(a.exact) > 1 and \
             b.exact > 0 and _power_digits_log10(a.exact, b.exact) > \
@@ -123,50 +124,50 @@ def index(tr: Translator, e: ir.Index, want: str) -> Typed:
             raise tr.error(f"'{e.name}' is not defined", e, "T002")
     idx = [tr.index_code(i) for i in e.indices]
     if len(idx) == 1:
-        return Typed(f"{base.code}[{idx[0]}]", "scalar", ATOM)
+        return Typed(f"{base.code}[{idx[0]}]", ValueType.SCALAR, ATOM)
     if len(idx) == 2:
-        return Typed(f"{base.code}[{idx[0]}, {idx[1]}]", "scalar", ATOM)
+        return Typed(f"{base.code}[{idx[0]}, {idx[1]}]", ValueType.SCALAR, ATOM)
     raise tr.error("an index has one or two parts", e, "T007")
 
 
 @EXPRESSIONS.register(ir.Matrix)
 def matrix(tr: Translator, e: ir.Matrix, want: str) -> Typed:
     if not e.rows:
-        return Typed("sm.Matrix()", "matrix")
+        return Typed("sm.Matrix()", ValueType.MATRIX)
     rows = []
     block = False
     typed = [[tr.expr(el) for el in row] for row in e.rows]
     kinds = {x.type for row in typed for x in row}
-    if kinds & {"vector", "dyadic"}:
+    if kinds & {ValueType.VECTOR, ValueType.DYADIC}:
         flat = [x for row in typed for x in row]
-        if kinds - {"vector", "dyadic", "unknown"} or \
+        if kinds - {ValueType.VECTOR, ValueType.DYADIC, ValueType.UNKNOWN} or \
                 not (len(typed) == 1 or all(len(r) == 1 for r in typed)):
             raise tr.error("a matrix of vectors must be one row or one column of "
                            "vectors", e, "T001")
         return Typed("al.VectorColumn([" + ", ".join(x.code for x in flat) + "])",
-                     "vectors")
+                     ValueType.VECTORS)
     for row, trow in zip(e.rows, typed):
         items = []
         for el, x in zip(row, trow):
-            if x.type == "matrix":
+            if x.type == ValueType.MATRIX:
                 block = True
-            elif x.type not in ("scalar", "unknown"):
+            elif x.type not in (ValueType.SCALAR, ValueType.UNKNOWN):
                 raise tr.error(f"a matrix holds scalars, not a {x.type}", el, "T001")
             items.append(x.code)
         rows.append(items)
     if block:
         inner = ", ".join("[" + ", ".join(r) + "]" for r in rows)
-        return Typed(f"al.block_matrix([{inner}])", "matrix")
+        return Typed(f"al.block_matrix([{inner}])", ValueType.MATRIX)
     if all(len(r) == 1 for r in rows):
-        return Typed("sm.Matrix([" + ", ".join(r[0] for r in rows) + "])", "matrix")
+        return Typed("sm.Matrix([" + ", ".join(r[0] for r in rows) + "])", ValueType.MATRIX)
     inner = ", ".join("[" + ", ".join(r) + "]" for r in rows)
-    return Typed(f"sm.Matrix([{inner}])", "matrix")
+    return Typed(f"sm.Matrix([{inner}])", ValueType.MATRIX)
 
 
 @EXPRESSIONS.register(ir.NameRange)
 def name_range(tr: Translator, e: ir.NameRange, want: str) -> Typed:
     items = [tr.expr(n) for n in e.names]
-    return Typed("[" + ", ".join(i.code for i in items) + "]", "list")
+    return Typed("[" + ", ".join(i.code for i in items) + "]", ValueType.LIST)
 
 
 @EXPRESSIONS.register(ir.Range)
@@ -209,17 +210,18 @@ def _power_digits_log10(a: Fraction, b: Fraction) -> float:
 def _exact_typed(v: Fraction) -> Typed:
     if v.denominator == 1:
         text = str(v.numerator)
-        return Typed(text, "scalar", ATOM if v >= 0 else UNARY, v)
-    return Typed(f"sm.Rational({v.numerator}, {v.denominator})", "scalar", ATOM, v)
+        return Typed(text, ValueType.SCALAR, ATOM if v >= 0 else UNARY, v)
+    return Typed(f"sm.Rational({v.numerator}, {v.denominator})", ValueType.SCALAR, ATOM, v)
 
 
-def _product_type(a: str, b: str) -> str | None:
-    if a == "unknown" or b == "unknown":
-        return a if b == "unknown" and a != "unknown" else b if a == "unknown" else "unknown"
-    if a == "scalar":
+def _product_type(a: ValueType, b: ValueType) -> ValueType | None:
+    if a == ValueType.UNKNOWN or b == ValueType.UNKNOWN:
+        return a if b == ValueType.UNKNOWN and a != ValueType.UNKNOWN else \
+            b if a == ValueType.UNKNOWN else ValueType.UNKNOWN
+    if a == ValueType.SCALAR:
         return b
-    if b == "scalar":
+    if b == ValueType.SCALAR:
         return a
-    if a == b == "matrix":
-        return "matrix"
+    if a == b == ValueType.MATRIX:
+        return ValueType.MATRIX
     return None

@@ -10,7 +10,7 @@ import difflib
 import math
 
 from .. import ir
-from .core import ATOM, EXPRESSIONS, Translator, Typed
+from .core import ATOM, EXPRESSIONS, NameKind, Translator, Typed, ValueType
 from .emit import quote
 
 FUNCTIONS: dict = {}
@@ -98,11 +98,11 @@ def _elementary(tr: Translator, c: ir.Call) -> Typed:
     if fn == "sm.factorial" and x.exact is not None and x.exact > MAX_FACTORIAL:
         raise tr.error(f"FACTORIAL({x.exact}) has more than a thousand digits; at most "
                        f"FACTORIAL({MAX_FACTORIAL}) is computed exactly", c, "T005")
-    if x.type == "matrix":
-        return Typed(f"{x.wrapped(ATOM)}.applyfunc({fn})", "matrix")
-    if x.type not in ("scalar", "unknown"):
+    if x.type == ValueType.MATRIX:
+        return Typed(f"{x.wrapped(ATOM)}.applyfunc({fn})", ValueType.MATRIX)
+    if x.type not in (ValueType.SCALAR, ValueType.UNKNOWN):
         raise tr.error(f"a scalar is needed here, not a {x.type}", a, "T001")
-    return Typed(f"{fn}({x.code})", "scalar", approx=_double_value(tr, c, name, x))
+    return Typed(f"{fn}({x.code})", ValueType.SCALAR, approx=_double_value(tr, c, name, x))
 
 
 def _double_value(tr: Translator, c: ir.Call, name: str, x: Typed) -> float | None:
@@ -136,31 +136,31 @@ for _n in _SYMPY:
 @function("ATAN2")
 def _atan2(tr, c):
     y, x = nargs(tr, c, 2)
-    return Typed(f"sm.atan2({tr.scalar(y).code}, {tr.scalar(x).code})", "scalar")
+    return Typed(f"sm.atan2({tr.scalar(y).code}, {tr.scalar(x).code})", ValueType.SCALAR)
 
 
 @function("LOG10")
 def _log10(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"sm.log({tr.scalar(a).code}, 10)", "scalar")
+    return Typed(f"sm.log({tr.scalar(a).code}, 10)", ValueType.SCALAR)
 
 
 @function("SQR")
 def _sqr(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"{tr.scalar(a).wrapped(8)}**2", "scalar", 7)
+    return Typed(f"{tr.scalar(a).wrapped(8)}**2", ValueType.SCALAR, 7)
 
 
 @function("INT")
 def _int(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"al.integer_part({tr.scalar(a).code})", "scalar")
+    return Typed(f"al.integer_part({tr.scalar(a).code})", ValueType.SCALAR)
 
 
 @function("ROUND")
 def _round(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"al.round_half_away({tr.scalar(a).code})", "scalar")
+    return Typed(f"al.round_half_away({tr.scalar(a).code})", ValueType.SCALAR)
 
 
 @function("MAX", "MIN")
@@ -169,7 +169,7 @@ def _maxmin(tr, c):
     if not c.args:
         raise tr.error(f"{c.name.upper()} needs arguments", c, "T007")
     items = ", ".join(tr.scalar(a).code for a in c.args)
-    return Typed(f"sm.{c.name.capitalize()}({items})", "scalar")
+    return Typed(f"sm.{c.name.capitalize()}({items})", ValueType.SCALAR)
 
 
 # -- vectors -----------------------------------------------------------------------
@@ -178,12 +178,12 @@ def _dot(tr, c):
     a, b = nargs(tr, c, 2)
     x, y = tr.expr(a), tr.expr(b)
     for v, node in ((x, a), (y, b)):
-        if v.type not in ("vector", "dyadic", "vectors", "unknown"):
+        if v.type not in (ValueType.VECTOR, ValueType.DYADIC, ValueType.VECTORS, ValueType.UNKNOWN):
             raise tr.error(f"DOT takes vectors or dyadics, not a {v.type}", node, "T001")
-    rtype = "scalar" if x.type == y.type == "vector" else \
-        "vector" if "vector" in (x.type, y.type) else "dyadic"
-    if "vectors" in (x.type, y.type):
-        rtype = "matrix"
+    rtype = ValueType.SCALAR if x.type == y.type == ValueType.VECTOR else \
+        ValueType.VECTOR if ValueType.VECTOR in (x.type, y.type) else ValueType.DYADIC
+    if ValueType.VECTORS in (x.type, y.type):
+        rtype = ValueType.MATRIX
     return Typed(f"al.dot({x.code}, {y.code})", rtype)
 
 
@@ -192,9 +192,9 @@ def _cross(tr, c):
     a, b = nargs(tr, c, 2)
     x, y = tr.expr(a), tr.expr(b)
     for v, node in ((x, a), (y, b)):
-        if v.type not in ("vector", "dyadic", "unknown"):
+        if v.type not in (ValueType.VECTOR, ValueType.DYADIC, ValueType.UNKNOWN):
             raise tr.error(f"CROSS takes vectors, not a {v.type}", node, "T001")
-    rtype = "dyadic" if "dyadic" in (x.type, y.type) else "vector"
+    rtype = ValueType.DYADIC if ValueType.DYADIC in (x.type, y.type) else ValueType.VECTOR
     return Typed(f"al.cross({x.code}, {y.code})", rtype)
 
 
@@ -202,19 +202,19 @@ def _cross(tr, c):
 def _mag(tr, c):
     (a,) = nargs(tr, c, 1)
     x = _vector_arg(tr, a, "MAG")
-    return Typed(f"al.mag({x.code})", "scalar")
+    return Typed(f"al.mag({x.code})", ValueType.SCALAR)
 
 
 @function("UNITVEC")
 def _unitvec(tr, c):
     (a,) = nargs(tr, c, 1)
     x = _vector_arg(tr, a, "UNITVEC")
-    return Typed(f"al.unitvec({x.code})", "vector")
+    return Typed(f"al.unitvec({x.code})", ValueType.VECTOR)
 
 
 def _vector_arg(tr, a, what):
     x = tr.expr(a)
-    if x.type not in ("vector", "unknown"):
+    if x.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"{what} takes a vector, not a {x.type}", a, "T001")
     return x
 
@@ -224,7 +224,7 @@ def _express(tr, c):
     args = nargs(tr, c, 2, 3)
     x = tr.expr(args[0])
     frames = [tr.frame(f).code for f in args[1:]]
-    if x.type not in ("vector", "dyadic", "matrix", "unknown"):
+    if x.type not in (ValueType.VECTOR, ValueType.DYADIC, ValueType.MATRIX, ValueType.UNKNOWN):
         raise tr.error(f"EXPRESS takes a vector or dyadic, not a {x.type}", args[0], "T001")
     return Typed(f"al.express({x.code}, {', '.join(frames)})", x.type)
 
@@ -234,7 +234,7 @@ def _vector(tr, c):
     args = nargs(tr, c, 2, 4)
     f = tr.frame(args[0]).code
     rest = [tr.expr(a) for a in args[1:]]
-    return Typed(f"al.vector({f}, {', '.join(r.code for r in rest)})", "vector")
+    return Typed(f"al.vector({f}, {', '.join(r.code for r in rest)})", ValueType.VECTOR)
 
 
 @function("MATRIX")
@@ -243,10 +243,10 @@ def _matrix(tr, c):
     args = nargs(tr, c, 2, 3)
     frames = [tr.frame(args[0]).code] + [tr.frame(a).code for a in args[2:]]
     x = tr.expr(args[1])
-    if x.type not in ("vector", "dyadic", "unknown"):
+    if x.type not in (ValueType.VECTOR, ValueType.DYADIC, ValueType.UNKNOWN):
         raise tr.error(f"MATRIX takes a vector or dyadic, not a {x.type}", args[1], "T001")
     return Typed(f"al.matrix({frames[0]}, {x.code}" + "".join(f", {f}" for f in frames[1:])
-                 + ")", "matrix")
+                 + ")", ValueType.MATRIX)
 
 
 @function("DYADIC")
@@ -255,7 +255,7 @@ def _dyadic(tr, c):
     frames = [tr.frame(a).code for a in [args[0]] + args[2:]]
     m = tr.expr(args[1])
     return Typed(f"al.dyadic({frames[0]}, {m.code}" +
-                 (f", {frames[1]})" if len(frames) > 1 else ")"), "dyadic")
+                 (f", {frames[1]})" if len(frames) > 1 else ")"), ValueType.DYADIC)
 
 
 # -- calculus -----------------------------------------------------------------------
@@ -263,7 +263,7 @@ def _dyadic(tr, c):
 def _dt(tr, c):
     args = nargs(tr, c, 1, 2)
     x = tr.expr(args[0])
-    if x.type in ("vector", "dyadic"):
+    if x.type in (ValueType.VECTOR, ValueType.DYADIC):
         if len(args) != 2:
             raise tr.error("DT of a vector needs the frame: DT(V>, N)", c, "T007")
         return Typed(f"model.dt({x.code}, {tr.frame(args[1]).code})", x.type)
@@ -277,13 +277,13 @@ def _d(tr, c):
     args = nargs(tr, c, 2, 3)
     x = tr.expr(args[0])
     var = tr.expr(args[1])
-    if x.type in ("vector", "dyadic"):
+    if x.type in (ValueType.VECTOR, ValueType.DYADIC):
         if len(args) != 3:
             raise tr.error("D of a vector needs the frame: D(V>, x, N)", c, "T007")
         return Typed(f"model.d({x.code}, {var.code}, {tr.frame(args[2]).code})", x.type)
     if len(args) == 3:
         raise tr.error("D of a scalar takes no frame", args[2], "T007")
-    rtype = "matrix" if "matrix" in (x.type, var.type) else x.type
+    rtype = ValueType.MATRIX if ValueType.MATRIX in (x.type, var.type) else x.type
     return Typed(f"model.d({x.code}, {var.code})", rtype)
 
 
@@ -314,27 +314,27 @@ def _zee(tr, c):
 @function("FR")
 def _fr(tr, c):
     nargs(tr, c, 0)
-    return Typed("model.fr()", "matrix")
+    return Typed("model.fr()", ValueType.MATRIX)
 
 
 @function("FRSTAR")
 def _frstar(tr, c):
     nargs(tr, c, 0)
-    return Typed("model.frstar()", "matrix")
+    return Typed("model.frstar()", ValueType.MATRIX)
 
 
-def _things(tr, args, kinds=("body", "particle")) -> list[str]:
+def _things(tr, args, kinds=(NameKind.BODY, NameKind.PARTICLE)) -> list[str]:
     return [tr.entity(a, kinds).py for a in args]
 
 
 @function("KE")
 def _ke(tr, c):
-    return Typed(f"model.ke({', '.join(_things(tr, c.args))})", "scalar")
+    return Typed(f"model.ke({', '.join(_things(tr, c.args))})", ValueType.SCALAR)
 
 
 @function("MASS")
 def _mass(tr, c):
-    return Typed(f"model.mass_of({', '.join(_things(tr, c.args))})", "scalar")
+    return Typed(f"model.mass_of({', '.join(_things(tr, c.args))})", ValueType.SCALAR)
 
 
 @function("CM")
@@ -343,7 +343,7 @@ def _cm(tr, c):
         raise tr.error("CM needs a point: CM(O) or CM(O, B, ...)", c, "T007")
     o = tr.point(c.args[0]).code
     rest = _things(tr, c.args[1:])
-    return Typed(f"model.cm({', '.join([o] + rest)})", "vector")
+    return Typed(f"model.cm({', '.join([o] + rest)})", ValueType.VECTOR)
 
 
 @function("INERTIA")
@@ -352,7 +352,7 @@ def _inertia(tr, c):
         raise tr.error("INERTIA() needs a point: INERTIA(O) or INERTIA(O, B, ...)", c, "T007")
     o = tr.point(c.args[0]).code
     rest = _things(tr, c.args[1:])
-    return Typed(f"model.inertia_of({', '.join([o] + rest)})", "dyadic")
+    return Typed(f"model.inertia_of({', '.join([o] + rest)})", ValueType.DYADIC)
 
 
 @function("MOMENTUM")
@@ -362,13 +362,13 @@ def _momentum(tr, c):
     kind = c.args[0].name.upper()
     if kind == "LINEAR":
         rest = _things(tr, c.args[1:])
-        return Typed(f"model.momentum('linear'{''.join(', ' + r for r in rest)})", "vector")
+        return Typed(f"model.momentum('linear'{''.join(', ' + r for r in rest)})", ValueType.VECTOR)
     if kind == "ANGULAR":
         if len(c.args) < 2:
             raise tr.error("MOMENTUM(ANGULAR, O) needs the point O", c, "T007")
         o = tr.point(c.args[1]).code
         rest = _things(tr, c.args[2:])
-        return Typed(f"model.momentum('angular', {', '.join([o] + rest)})", "vector")
+        return Typed(f"model.momentum('angular', {', '.join([o] + rest)})", ValueType.VECTOR)
     raise tr.error(f"MOMENTUM takes LINEAR or ANGULAR, not {c.args[0].name}", c.args[0], "T003")
 
 
@@ -385,7 +385,7 @@ def _gyrostat(tr, c):
                        "CYLINDER rotor", c.args[1], "T003")
     a, b = tr.frame(c.args[2]).code, tr.frame(c.args[3]).code
     j = tr.scalar(c.args[4]).code
-    return Typed(f"model.gyrostat_angmom({a}, {b}, {j})", "vector")
+    return Typed(f"model.gyrostat_angmom({a}, {b}, {j})", ValueType.VECTOR)
 
 
 @function("PARTIALS")
@@ -393,18 +393,18 @@ def _partials(tr, c):
     if not c.args:
         raise tr.error("PARTIALS(V>, u1, ...)", c, "T007")
     v = tr.expr(c.args[0])
-    if v.type not in ("vector", "unknown"):
+    if v.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"PARTIALS takes a velocity vector, not a {v.type}", c.args[0], "T001")
     speeds = [tr.scalar(a).code for a in c.args[1:]]
     if len(speeds) == 1:
-        return Typed(f"model.partials({v.code}, {speeds[0]})[0]", "vector")
-    return Typed(f"model.partials({', '.join([v.code] + speeds)})", "vectors")
+        return Typed(f"model.partials({v.code}, {speeds[0]})[0]", ValueType.VECTOR)
+    return Typed(f"model.partials({', '.join([v.code] + speeds)})", ValueType.VECTORS)
 
 
 @function("NICHECK")
 def _nicheck(tr, c):
     nargs(tr, c, 0)
-    return Typed("model.nicheck()", "scalar")
+    return Typed("model.nicheck()", ValueType.SCALAR)
 
 
 # -- algebra ----------------------------------------------------------------------------
@@ -469,7 +469,7 @@ def _simplify(tr, c):
 def _coef(tr, c):
     a, b = nargs(tr, c, 2)
     x, v = tr.expr(a), tr.expr(b)
-    rtype = "matrix" if "matrix" in (x.type, v.type) else x.type
+    rtype = ValueType.MATRIX if ValueType.MATRIX in (x.type, v.type) else x.type
     return Typed(f"model.coef({x.code}, {v.code})", rtype)
 
 
@@ -519,14 +519,14 @@ def _taylor(tr, c):
 def _polynomial(tr, c):
     args = nargs(tr, c, 2, 3)
     items = [tr.expr(a).code for a in args]
-    return Typed(f"al.polynomial({', '.join(items)})", "scalar")
+    return Typed(f"al.polynomial({', '.join(items)})", ValueType.SCALAR)
 
 
 @function("ROOTS")
 def _roots(tr, c):
     args = nargs(tr, c, 1, 3)
     items = [tr.expr(a).code for a in args]
-    return Typed(f"al.roots({', '.join(items)})", "matrix")
+    return Typed(f"al.roots({', '.join(items)})", ValueType.MATRIX)
 
 
 @function("EPSILON")
@@ -539,7 +539,7 @@ def _epsilon(tr, c):
 # -- matrices ------------------------------------------------------------------------
 def _matrix_arg(tr, a, what):
     x = tr.expr(a)
-    if x.type not in ("matrix", "unknown"):
+    if x.type not in (ValueType.MATRIX, ValueType.UNKNOWN):
         raise tr.error(f"{what} takes a matrix, not a {x.type}", a, "T001")
     return x
 
@@ -547,31 +547,31 @@ def _matrix_arg(tr, a, what):
 @function("TRANSPOSE")
 def _transpose(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"al.transpose({_matrix_arg(tr, a, 'TRANSPOSE').code})", "matrix")
+    return Typed(f"al.transpose({_matrix_arg(tr, a, 'TRANSPOSE').code})", ValueType.MATRIX)
 
 
 @function("INV", "INVERSE")
 def _inv(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"model.inv({_matrix_arg(tr, a, 'INV').code})", "matrix")
+    return Typed(f"model.inv({_matrix_arg(tr, a, 'INV').code})", ValueType.MATRIX)
 
 
 @function("DET")
 def _det(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"model.det({_matrix_arg(tr, a, 'DET').code})", "scalar")
+    return Typed(f"model.det({_matrix_arg(tr, a, 'DET').code})", ValueType.SCALAR)
 
 
 @function("TRACE")
 def _trace(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"al.trace({_matrix_arg(tr, a, 'TRACE').code})", "scalar")
+    return Typed(f"al.trace({_matrix_arg(tr, a, 'TRACE').code})", ValueType.SCALAR)
 
 
 @function("DIAGMAT")
 def _diagmat(tr, c):
     args = nargs(tr, c, 2, 3)
-    return Typed(f"al.diagmat({', '.join(tr.scalar(a).code for a in args)})", "matrix")
+    return Typed(f"al.diagmat({', '.join(tr.scalar(a).code for a in args)})", ValueType.MATRIX)
 
 
 def _selection(tr, args) -> list[str]:
@@ -591,9 +591,9 @@ def _rows(tr, c):
     m = _matrix_arg(tr, c.args[0], c.name.upper())
     fn = "rows" if c.name.upper() == "ROWS" else "cols"
     if len(c.args) == 1:
-        return Typed(f"al.{fn}({m.code})", "scalar")
+        return Typed(f"al.{fn}({m.code})", ValueType.SCALAR)
     sel = _selection(tr, c.args[1:])
-    return Typed(f"al.{fn}({m.code}, {', '.join(sel)})", "matrix")
+    return Typed(f"al.{fn}({m.code}, {', '.join(sel)})", ValueType.MATRIX)
 
 
 @function("ELEMENT")
@@ -601,13 +601,13 @@ def _element(tr, c):
     args = nargs(tr, c, 2, 3)
     m = _matrix_arg(tr, args[0], "ELEMENT")
     idx = [tr.index_code(a) for a in args[1:]]
-    return Typed(f"{m.wrapped(ATOM)}[{', '.join(idx)}]", "scalar")
+    return Typed(f"{m.wrapped(ATOM)}[{', '.join(idx)}]", ValueType.SCALAR)
 
 
 @function("EIG")
 def _eig(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"al.eig(model.explicit({_matrix_arg(tr, a, 'EIG').code}))", "matrix")
+    return Typed(f"al.eig(model.explicit({_matrix_arg(tr, a, 'EIG').code}))", ValueType.MATRIX)
 
 
 # -- units and inputs ------------------------------------------------------------------
@@ -621,7 +621,7 @@ def _units(tr, c):
         units_factor(ua, ub)              # unknown units and unlike kinds: diagnosed here
     except AutolevModelError as exc:
         raise tr.error(str(exc), c, "T003") from None
-    return Typed(f"al.units_factor({quote(ua)}, {quote(ub)})", "scalar")
+    return Typed(f"al.units_factor({quote(ua)}, {quote(ub)})", ValueType.SCALAR)
 
 
 def _unit_text(tr, e) -> str:
@@ -637,4 +637,4 @@ def _unit_text(tr, e) -> str:
 @function("INPUT")
 def _input(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"model.input_value({tr.expr(a).code})", "scalar")  # SI (radians)
+    return Typed(f"model.input_value({tr.expr(a).code})", ValueType.SCALAR)  # SI (radians)

@@ -18,10 +18,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .. import ir
-from .core import ATOM, EXPRESSIONS, Entry, Translator, Typed
+from .core import (
+    ATOM, EXPRESSIONS, FRAME_KINDS, POINT_KINDS, Entry, NameKind, Translator, Typed, ValueType,
+)
 
-FRAMES = ("newtonian", "frame", "body")
-POINTS = ("point", "particle")
 _AXES = {"1": "x", "2": "y", "3": "z"}
 
 
@@ -39,7 +39,7 @@ def classify(tr: Translator, v: ir.VectorName) -> Special | None:
         if name == "1":
             return Special("unit_dyadic")
         if upper.startswith("I_"):
-            parts = _split(tr, name[2:], (("body", "particle"), POINTS))
+            parts = _split(tr, name[2:], ((NameKind.BODY, NameKind.PARTICLE), POINT_KINDS))
             if parts:
                 return Special("inertia", tuple(parts))
         return None
@@ -47,12 +47,12 @@ def classify(tr: Translator, v: ir.VectorName) -> Special | None:
         return Special("zero")
     if name[-1] in _AXES:
         ent = tr.entities.get(name[:-1].lower())
-        if ent is not None and ent.kind in FRAMES:
+        if ent is not None and ent.kind in FRAME_KINDS:
             return Special("unit", (ent,), _AXES[name[-1]])
-    rules = (("ALF_", "angacc", (FRAMES, FRAMES)), ("FORCE_", "force", (POINTS,)),
-             ("TORQUE_", "torque", (FRAMES,)), ("P_", "pos", (POINTS, POINTS)),
-             ("V_", "vel", (POINTS, FRAMES)), ("A_", "acc", (POINTS, FRAMES)),
-             ("W_", "angvel", (FRAMES, FRAMES)))
+    rules = (("ALF_", "angacc", (FRAME_KINDS, FRAME_KINDS)), ("FORCE_", "force", (POINT_KINDS,)),
+             ("TORQUE_", "torque", (FRAME_KINDS,)), ("P_", "pos", (POINT_KINDS, POINT_KINDS)),
+             ("V_", "vel", (POINT_KINDS, FRAME_KINDS)), ("A_", "acc", (POINT_KINDS, FRAME_KINDS)),
+             ("W_", "angvel", (FRAME_KINDS, FRAME_KINDS)))
     for prefix, kind, kinds in rules:
         if upper.startswith(prefix):
             parts = _split(tr, name[len(prefix):], kinds)
@@ -86,7 +86,7 @@ def vector_name(tr: Translator, v: ir.VectorName, want: str = "value") -> Typed:
     sp = classify(tr, v)
     if sp is None:
         entry = tr.vectors.get(v.name.lower())
-        if entry is None or (entry.type == "dyadic") != v.dyadic:
+        if entry is None or (entry.type == ValueType.DYADIC) != v.dyadic:
             raise tr.error(f"'{v.text}' is not defined (a vector must be assigned before "
                            "it is used)", v, "T002")
         return Typed(entry.py, entry.type)
@@ -100,18 +100,18 @@ def vector_name(tr: Translator, v: ir.VectorName, want: str = "value") -> Typed:
         "acc": lambda: f"{p[0]}.acc({p[1]})",
         "angvel": lambda: f"{p[0]}.ang_vel_in({p[1]})",
         "angacc": lambda: f"{p[0]}.ang_acc_in({p[1]})",
-        "inertia": lambda: (f"{p[0]}.inertia_about({p[1]})" if sp.parts[0].kind == "body"
+        "inertia": lambda: (f"{p[0]}.inertia_about({p[1]})" if sp.parts[0].kind == NameKind.BODY
                             else f"model.particle_inertia({p[0]}, {p[1]})"),
         "force": lambda: f"model.force_on({p[0]})",
         "torque": lambda: f"model.torque_on({p[0]})",
     }[sp.kind]()
-    return Typed(code, "dyadic" if v.dyadic else "vector", ATOM)
+    return Typed(code, ValueType.DYADIC if v.dyadic else ValueType.VECTOR, ATOM)
 
 
 def assign_vector(tr: Translator, target: ir.VectorName, op: str, value: Typed) -> None:
     """Write `target op value` for a vector or dyadic name."""
-    want = "dyadic" if target.dyadic else "vector"
-    if value.type not in (want, "unknown") and not (value.exact == 0):
+    want = ValueType.DYADIC if target.dyadic else ValueType.VECTOR
+    if value.type not in (want, ValueType.UNKNOWN) and not (value.exact == 0):
         raise tr.error(f"{target.text} is a {want}; the right side is a {value.type}", target,
                        "T001")
     sp = classify(tr, target)
@@ -151,7 +151,7 @@ def _user_vector(tr: Translator, target: ir.VectorName, op: str, value: Typed, w
     if entry is None:
         if op not in ("=", ":="):
             raise tr.error(f"{target.text} has no value yet", target, "T002")
-        entry = Entry(tr.py_name("vector", target.name, want), "vector", want)
+        entry = Entry(tr.py_name("vector", target.name, want.value), NameKind.VECTOR, want)
         tr.vectors[key] = entry
     rhs = _combine(tr, entry.py, op, value, target)
     tr.emit(f"{entry.py} = {rhs}")
