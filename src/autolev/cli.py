@@ -102,13 +102,13 @@ def cmd_check(ns: argparse.Namespace) -> int:
 
 def cmd_convert(ns: argparse.Namespace) -> int:
     """Translate one model; write the module only when translation succeeded."""
-    import autolev
-    from autolev.irbuild import sort_key
+    from .irbuild import sort_key
+    from .pipeline import translation
 
     path = Path(ns.file)
     try:
-        result = autolev.translation(path)
-    except (AutolevSyntaxError, autolev.AutolevTranslationError) as exc:
+        result = translation(path)
+    except (AutolevSyntaxError, AutolevTranslationError) as exc:
         for d in sorted(exc.diagnostics, key=sort_key):
             print(d.format(), file=sys.stderr)
         n = sum(d.severity == "error" for d in exc.diagnostics)
@@ -134,17 +134,14 @@ def _print_warning(message, category, filename, lineno, file=None, line=None):
 
 def _load_for_run(path: Path):
     """The model, or None after printing its diagnostics."""
-    import autolev
-    from autolev.irbuild import sort_key
-
+    from .irbuild import sort_key
     from .loader import load_for_run, load_python
     try:
         if path.suffix.lower() == ".py":      # a converted model, as it now reads
             model, notes = load_python(path), []
         else:
             model, notes = load_for_run(path)
-    except (AutolevSyntaxError, autolev.AutolevTranslationError,
-            autolev.AutolevRuntimeError) as exc:
+    except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
         for d in sorted(exc.diagnostics, key=sort_key):
             print(d.format(), file=sys.stderr)
         return None

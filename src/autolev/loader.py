@@ -1,17 +1,21 @@
 """Executing a translated model, with failures reported at the Autolev statement."""
 from __future__ import annotations
 
-
+import dataclasses
 import textwrap
 import traceback
 import types
 from dataclasses import dataclass
+from pathlib import Path
 
 import sympy as sm
 from sympy.matrices.exceptions import NonInvertibleMatrixError
 
-from .errors import AutolevRuntimeError, Diagnostic, Location
-from .runtime.vector import AutolevModelError
+from .errors import (AutolevFileError, AutolevRuntimeError, AutolevTranslationError,
+                     Diagnostic, Location)
+from .pipeline import parse, translation
+from .runtime.errors import AutolevModelError
+from .translate import translate
 
 # what a model's own statements can raise when the model asks for something impossible
 # (a division by zero, a non-square matrix to invert, ...), besides our own error
@@ -23,6 +27,12 @@ _STATEMENT_FAILURES = (AutolevModelError, TypeError, ValueError, ZeroDivisionErr
 
 # what an edited converted module can raise besides what its statements can
 _EDITING_SLIPS = (NameError, ImportError, AssertionError)
+
+
+def load(path):
+    """Translate the model at `path`, execute it, and return its `Model`."""
+    p = Path(path)
+    return load_translation(translation(p), str(p))
 
 
 def load_translation(translation, filename: str):
@@ -94,12 +104,10 @@ def load_python(path) -> object:
     the file now reads (the user may have edited it): a statement that fails, or text
     that is not Python, is a diagnostic at its line, with the Autolev statement the
     comments above it quote."""
-    from pathlib import Path
     p = Path(path)
     try:
         text = p.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        from .errors import AutolevFileError
         raise AutolevFileError(p, f"cannot read: {getattr(exc, 'strerror', None) or exc}")
     return run_python(text, str(p))
 
@@ -154,8 +162,6 @@ class ModelSource:
         return run_python(self.content, self.filename)
 
 
-
-
 def _quoted_statement(lines: list[str], line: int) -> str | None:
     """The Autolev statement a converted module quotes in the comments just above the
     code at `line` (1-based)."""
@@ -169,27 +175,18 @@ def _quoted_statement(lines: list[str], line: int) -> str | None:
     return " ".join(q for q in quoted if q) or None
 
 
-__all__ = ["load_translation", "load_python", "run_python", "ModelSource"]
-
-
 def load_for_run(path) -> tuple[object, list]:
     """The model for `autolev run`: as `autolev.load`, except that when the only
     statements that fail come after the last CODE command, the model is built up to
     that command (Autolev's session rejected a bad statement and went on; the program
     CODE wrote did not depend on what followed).  Returns (model, notes)."""
-    import dataclasses
-    from pathlib import Path
-
-    import autolev
-    from .translate import translate
-
     p = Path(path)
     try:
-        result = autolev.translation(p)
+        result = translation(p)
         return load_translation(result, str(p)), []
-    except (autolev.AutolevTranslationError, AutolevRuntimeError) as exc:
+    except (AutolevTranslationError, AutolevRuntimeError) as exc:
         failure = exc
-    program = autolev.parse(p)
+    program = parse(p)
     codes = [i for i, st in enumerate(program.statements) if st.kind == "code"]
     if not codes or codes[-1] == len(program.statements) - 1:
         raise failure
@@ -205,3 +202,7 @@ def load_for_run(path) -> tuple[object, list]:
     notes = [f"statements after the last CODE command fail and are left out of the run "
              f"(first: {first.format(context=False).splitlines()[0]})"]
     return model, notes
+
+
+__all__ = ["load", "load_translation", "load_for_run", "load_python", "run_python",
+           "ModelSource"]

@@ -26,7 +26,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+from sympy import Symbol
 
+from .errors import AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError
+from .loader import load_translation
+from .pipeline import translation
+from .runtime.calculus import NumericPoint
+from .runtime.symbols import TIME, Z
+from .runtime.vector import Dyadic, Vector
 from .source import decode
 
 _INPUT = re.compile(r"^\s*\((\d+)\)\s?(.*)$")
@@ -318,7 +325,6 @@ def _capture_statement(k: int, lhs: str, prefix: str) -> tuple[str, str] | None:
 def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
     """Replay the responses recorded in an `.all` session (or the `% ->` comments of a
     `.al` file) against our translation; a Report of each response's outcome."""
-    from .runtime.symbols import Z
     p = Path(path)
     session = read_session(decode(p.read_bytes()), str(p))
     report = Report(str(p))
@@ -393,11 +399,6 @@ def _judge_z_responses(session: Session, report: Report) -> None:
 def _build(session: Session, p: Path):
     """Translate and run the model with the capture statements; drop the captures our
     translation cannot make (reported as not comparable) and retry."""
-    from . import AutolevTranslationError, translation
-    from .errors import AutolevRuntimeError
-    from .loader import load_translation
-    from .errors import AutolevSyntaxError
-
     lines = session.source.splitlines()
     capture = _capture_prefix(session.source)
     skipped: dict[int, str] = {}
@@ -505,12 +506,6 @@ def _names_of(model) -> dict:
 
 
 def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> Outcome:
-    from .runtime.calculus import NumericPoint
-    from sympy import Symbol
-
-    from .runtime.symbols import TIME, Z
-    from .runtime.vector import Dyadic, Vector
-
     defs = model.defs
     frames = {n.upper(): f for n, f in model.frames_by_name.items()}
     newton = model.newtonian_frame or next(iter(model.frames_by_name.values()), None)
