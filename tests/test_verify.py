@@ -140,3 +140,14 @@ def test_unreadable_responses_are_not_comparable_with_the_reason(tmp_path, respo
     f.write_text(f"CONSTANTS L\nX = L\n% -> X = {response}\n")
     (o,) = autolev.verify(f).outcomes
     assert o.status == "not comparable" and reason in o.detail
+
+
+def test_points_where_a_value_has_none_are_skipped(tmp_path):
+    # MIN of a complex number has no value: X has one only where K < 0, Y nowhere
+    f = tmp_path / "m.al"
+    f.write_text("CONSTANTS K\nX = MIN((-K)^(1/2), 1)\n% -> X = SQRT(-K)\n"
+                 "Y = MIN((-K - 2)^(1/2), 1)\n% -> Y = 1\n")
+    x, y = autolev.verify(f).outcomes
+    assert x.status == "match"
+    assert (y.status, y.detail) == ("not comparable", "cannot evaluate: no value at the "
+                                    "points tried")

@@ -621,6 +621,10 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
         elif len(complex_pairs) < points:
             complex_pairs.append((mine, theirs))
     if not ours_all:
+        if any(np.isnan(m).any() or np.isnan(t).any() for m, t in complex_pairs):
+            # no value anywhere (a function refusing its argument, MIN a complex number)
+            return Outcome(r, "not comparable", "cannot evaluate: no value at the points "
+                           "tried")
         ours_all = [m for m, _ in complex_pairs]
         theirs_all = [t for _, t in complex_pairs]
     a, b = np.array(ours_all), np.array(theirs_all)
