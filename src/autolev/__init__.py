@@ -6,21 +6,21 @@
 `parse` reads a model into the IR and raises `AutolevSyntaxError` (carrying every
 diagnostic) when it cannot.  `translation` and `transpile` translate it, `load` builds
 its `Model`, `verify` replays Autolev's recorded responses against it and `grid` makes
-the points of a parameter study.
+the points of a parameter study.  A bug in autolev itself is `AutolevInternalError`.
 """
 from __future__ import annotations
 
 import importlib
 
-from .errors import (AutolevError, AutolevFileError, AutolevRuntimeError, AutolevSyntaxError,
-                     AutolevTranslationError, Diagnostic, Location, Span)
+from .errors import (AutolevError, AutolevFileError, AutolevInternalError, AutolevRuntimeError,
+                     AutolevSyntaxError, AutolevTranslationError, Diagnostic, Location, Span)
 from .ir import Program
 
 __version__ = "0.1.0"
 __all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "Program",
            "AutolevError", "AutolevSyntaxError", "AutolevTranslationError",
-           "AutolevRuntimeError", "AutolevFileError", "Diagnostic", "Location", "Span",
-           "__version__"]
+           "AutolevRuntimeError", "AutolevFileError", "AutolevInternalError", "Diagnostic",
+           "Location", "Span", "__version__"]
 
 # the stages are imported on first use, so that `import autolev` stays cheap
 _LAZY = {"parse": ".pipeline", "translation": ".pipeline", "transpile": ".pipeline",

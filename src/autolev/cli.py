@@ -10,11 +10,21 @@ import sys
 from pathlib import Path
 
 from . import __version__
-from .errors import (AutolevError, AutolevFileError, AutolevRuntimeError, AutolevSyntaxError,
-                     AutolevTranslationError, Diagnostic)
+from .errors import (AutolevError, AutolevFileError, AutolevInternalError, AutolevRuntimeError,
+                     AutolevSyntaxError, AutolevTranslationError, Diagnostic)
 
 MODEL_SUFFIXES = (".al",)
 MACRO_SUFFIXES = (".a",)
+
+# the exit status of a bug in autolev (EX_SOFTWARE of sysexits.h)
+EXIT_INTERNAL = 70
+# set to 1: an internal error is shown with Python's traceback
+TRACEBACK_VARIABLE = "AUTOLEV_TRACEBACK"
+
+EPILOG = f"""exit status: 0 success; 1 the model has errors, or a command failed; 2 wrong use
+of the command line; {EXIT_INTERNAL} an internal error (a bug in autolev, not in the model:
+the message asks for a report; {TRACEBACK_VARIABLE}=1 in the environment shows its Python
+traceback); 130 interrupted."""
 
 
 def _model_files(args: list[str]) -> list[Path]:
@@ -571,7 +581,8 @@ def _run_options(parser) -> None:
 def build_parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="autolev",
-        description="Autolev 4.1 models in Python: check, translate and run .al files.")
+        description="Autolev 4.1 models in Python: check, translate and run .al files.",
+        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--version", action="version", version=f"autolev {__version__}")
     sub = ap.add_subparsers(dest="command", metavar="COMMAND")
 
@@ -724,6 +735,9 @@ def main(argv: list[str] | None = None) -> int:
     except AutolevSyntaxError as exc:
         print(exc, file=sys.stderr)
         return 1
+    except AutolevInternalError as exc:
+        _report_internal_error(exc)
+        return EXIT_INTERNAL
     except AutolevError as exc:
         print(f"autolev: error: {exc}", file=sys.stderr)
         return 1
@@ -733,6 +747,17 @@ def main(argv: list[str] | None = None) -> int:
         # output piped into `head` and the like: stop quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
+
+
+def _report_internal_error(exc: AutolevInternalError) -> None:
+    """The bug's message; its Python traceback only when asked for."""
+    print(exc, file=sys.stderr)
+    if os.environ.get(TRACEBACK_VARIABLE) == "1":
+        import traceback
+        traceback.print_exception(exc, file=sys.stderr)
+    else:
+        print(f"autolev: note: {TRACEBACK_VARIABLE}=1 shows where in autolev it happened",
+              file=sys.stderr)
 
 
 if __name__ == "__main__":
