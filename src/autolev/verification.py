@@ -28,7 +28,8 @@ from pathlib import Path
 import numpy as np
 from sympy import Symbol
 
-from .errors import AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError
+from .errors import (AutolevInternalError, AutolevRuntimeError, AutolevSyntaxError,
+                     AutolevTranslationError, Location)
 from .loader import load_translation
 from .pipeline import translation
 from .runtime.calculus import NumericPoint
@@ -156,7 +157,7 @@ class _Parser:
         v = self.product()
         while self.peek()[1] in ("+", "-"):
             op = self.take()[1]
-            w = self.product()
+            v, w = _operands(v, self.product())
             v = v + w if op == "+" else v - w
         return v
 
@@ -164,7 +165,7 @@ class _Parser:
         v = self.unary()
         while self.peek()[1] in ("*", "/"):
             op = self.take()[1]
-            w = self.unary()
+            v, w = _operands(v, self.unary())
             if op == "*":
                 v = _mul(v, w)
             else:
@@ -174,7 +175,7 @@ class _Parser:
     def unary(self):
         if self.peek()[1] == "-":
             self.take()
-            return -self.unary()
+            return -_operands(self.unary())[0]
         if self.peek()[1] == "+":
             self.take()
             return self.unary()
@@ -184,7 +185,9 @@ class _Parser:
         base = self.atom()
         if self.peek()[1] == "^":
             self.take()
-            return base ** self.unary()          # right-associative, binds -x tighter
+            # right-associative, binds -x tighter
+            base, exponent = _operands(base, self.unary())
+            return base ** exponent
         return base
 
     def atom(self):
@@ -206,12 +209,7 @@ class _Parser:
                 self.take()
                 args.append(self.sum())
             self.take(")")
-            if text.upper() == "ATAN2":
-                if len(args) != 2:
-                    raise NotComparable(f"ATAN2 takes two arguments, the response gives "
-                                        f"{len(args)}")
-                return complex(math.atan2(args[0].real, args[1].real))
-            return complex(_FUNCS[text.upper()](*args))
+            return _apply(text.upper(), args)
         if text.endswith(">"):
             return self.unit_vector(text)
         if self.peek()[1] == "[":              # an indexed name
@@ -234,12 +232,39 @@ class _Parser:
                 raise NotComparable("bad matrix in the response")
         if len({len(r) for r in rows}) != 1:
             raise NotComparable("ragged matrix in the response")
+        if not all(isinstance(x, complex) for r in rows for x in r):
+            raise NotComparable("a matrix of vectors or matrices in the response")
         return _Matrix(np.array(rows, dtype=complex))
 
 
 class _Matrix:
+    """A matrix the response writes out, `[a, b; c, d]`: a value, never an operand."""
+
     def __init__(self, a):
         self.a = a
+
+
+def _operands(*values) -> tuple:
+    """The values, which the response combines: none may be a written-out matrix."""
+    if any(isinstance(v, _Matrix) for v in values):
+        raise NotComparable("arithmetic on a matrix in the response")
+    return values
+
+
+def _apply(name: str, args: list) -> complex:
+    """A function of the response (SIN, ATAN2, ...) at scalar arguments."""
+    if not all(isinstance(a, complex) for a in args):
+        raise NotComparable(f"{name} of a vector or matrix in the response")
+    if name == "ATAN2":
+        if len(args) != 2:
+            raise NotComparable(f"ATAN2 takes two arguments, the response gives {len(args)}")
+        return complex(math.atan2(args[0].real, args[1].real))
+    if len(args) != 1:
+        raise NotComparable(f"{name} takes one argument, the response gives {len(args)}")
+    try:
+        return complex(_FUNCS[name](args[0]))
+    except ValueError as exc:     # cmath's domain error: LOG(0) at this point
+        raise NotComparable(f"cannot evaluate: {name}: {exc}") from None
 
 
 def _mul(v, w):
@@ -485,7 +510,9 @@ def _assigned_value(model, text: str):
     Autolev kept it as a name in later responses; its value is our value of it."""
     try:
         value = model.quantity(text)
-    except KeyError:
+    except KeyError as exc:
+        if exc.args != (text,):
+            raise                        # another key missing: a bug, not an unknown name
         raise NotComparable(f"{text} is not a name of our model") from None
     if not hasattr(value, "free_symbols") or hasattr(value, "shape"):
         raise NotComparable(f"{text} is not a scalar of our model")
@@ -609,10 +636,13 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
             mine, theirs = evaluate(NumericPoint(defs, seed=seed, span=span))
         except NotComparable as exc:
             return Outcome(r, "not comparable", str(exc))
-        except (ZeroDivisionError, OverflowError, ValueError, TypeError) as exc:
+        except (ZeroDivisionError, OverflowError) as exc:
             return Outcome(r, "not comparable", f"cannot evaluate: {exc}")
         except RecursionError:
             return Outcome(r, "not comparable", "the response is nested too deeply to read")
+        except Exception as exc:  # any other is autolev's bug: re-raised as one
+            raise AutolevInternalError(Location(session.path, r.line, 1), f"comparing "
+                                       f"response ({r.number}) {r.lhs}", exc) from exc
         if _is_real(mine) and _is_real(theirs):
             ours_all.append(mine)
             theirs_all.append(theirs)
