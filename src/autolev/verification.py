@@ -532,94 +532,31 @@ def _names_of(model) -> dict:
     return by_name
 
 
-def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> Outcome:
-    defs = model.defs
-    frames = {n.upper(): f for n, f in model.frames_by_name.items()}
-    newton = model.newtonian_frame or next(iter(model.frames_by_name.values()), None)
-    z_text = {}
-    for other in session.responses:
-        if re.fullmatch(r"Z\d+", other.lhs.upper()) and other.number < r.number:
-            z_text[other.lhs.upper()] = other.expr
+class _Comparison:
+    """One response against our value: what evaluating both needs at every point."""
 
-    def evaluate(point):
-        """(ours, Autolev's) at one point, as arrays of the same shape."""
-        for quaternion in model.unit_quaternions:
-            free = [e for e in quaternion if isinstance(e, Symbol) and e not in defs.rhs]
-            if len(free) == 4:
-                values = [float(point.value(e, {})) for e in free]
-                norm = math.sqrt(sum(v * v for v in values))
-                point.values.update({e: v / norm for e, v in zip(free, values)})
-        if known is not None:
+    def __init__(self, model, by_name: dict, r: Response, ours, known, session: Session):
+        self.model, self.defs, self.by_name = model, model.defs, by_name
+        self.response, self.ours, self.known = r, ours, known
+        self.frames = {n.upper(): f for n, f in model.frames_by_name.items()}
+        self.newton = model.newtonian_frame or next(iter(model.frames_by_name.values()),
+                                                    None)
+        self.z_text = {o.lhs.upper(): o.expr for o in session.responses
+                       if re.fullmatch(r"Z\d+", o.lhs.upper()) and o.number < r.number}
+
+    def values_at(self, point: NumericPoint):
+        """(ours, Autolev's) at one point, as complex arrays of the same shape."""
+        self._normalize_quaternions(point)
+        if self.known is not None:
             # names defined only after the response are free there (a later CONSTRAIN
             # defines the dependent speeds): they get values of their own.  Z's made
             # later name expressions, whatever is defined: they keep their values
-            for s in defs.rhs:
-                if s not in known and not isinstance(s, Z):
+            for s in self.defs.rhs:
+                if s not in self.known and not isinstance(s, Z):
                     point.cache[s] = point.value(s, {})
-        znum: dict = {}
-
-        def num(e):
-            return complex(defs.numeric(e, point))
-
-        def dcm(frame):
-            if newton is None or not newton.orientation_known(frame):
-                raise NotComparable(f"frame {frame.name} is not oriented in the Newtonian frame")
-            m = newton.dcm(frame)
-            return np.array([[num(m[i, j]) for j in range(3)] for i in range(3)])
-
-        def scalar(text):
-            key = text.upper()
-            if key == "PI":
-                return complex(math.pi)
-            if key in z_text:
-                if key not in znum:
-                    znum[key] = _Parser(z_text[key], scalar, unit_vector).parse()
-                return znum[key]
-            if key == "T":
-                return num(TIME)
-            sym = by_name.get(key)
-            if sym is not None:
-                return num(sym)
-            return num(_assigned_value(model, text))
-
-        def unit_vector(text):
-            body = text.rstrip(">")
-            if text == "0>":
-                return np.zeros(3, dtype=complex)
-            frame = frames.get(body[:-1].upper()) if body[-1:] in "123" else None
-            if frame is None:
-                raise NotComparable(f"{text} is not a unit vector of our model")
-            return dcm(frame)[:, int(body[-1]) - 1]
-
-        def vec_num(v: Vector):
-            out = np.zeros(3, dtype=complex)
-            for f, comps in v.terms.items():
-                out = out + dcm(f) @ np.array([num(c) for c in comps])
-            return out
-
-        def dyad_num(d: Dyadic):
-            out = np.zeros((3, 3), dtype=complex)
-            for (fa, fb), m in d.terms.items():
-                mm = np.array([[num(m[i, j]) for j in range(3)] for i in range(3)])
-                out = out + dcm(fa) @ mm @ dcm(fb).T
-            return out
-
-        if r.expr.strip() in ("0>", "0>>"):
-            theirs = np.zeros(3 if r.expr.strip() == "0>" else (3, 3), dtype=complex)
-        else:
-            theirs = _Parser(r.expr, scalar, unit_vector).parse()
-        if isinstance(theirs, _Matrix):
-            theirs = theirs.a
-        if isinstance(ours, Vector):
-            mine = vec_num(ours)
-        elif isinstance(ours, Dyadic):
-            mine = dyad_num(ours)
-        elif hasattr(ours, "shape") and not isinstance(ours, np.ndarray):
-            mine = np.array([[num(ours[i, j]) for j in range(ours.shape[1])]
-                             for i in range(ours.shape[0])])
-        else:
-            mine = num(ours)
-        mine, theirs = np.asarray(mine, dtype=complex), np.asarray(theirs, dtype=complex)
+        at = _AtPoint(self, point)
+        theirs = np.asarray(at.theirs(), dtype=complex)
+        mine = np.asarray(at.ours(), dtype=complex)
         if mine.shape != theirs.shape:
             if mine.size != theirs.size:
                 raise NotComparable(f"shapes differ: ours {mine.shape}, Autolev's "
@@ -627,13 +564,117 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
             mine = mine.reshape(theirs.shape)
         return mine, theirs
 
-    # points where both values are real: equal expressions may take different branches
-    # of a root or logarithm where they are complex (Euler parameters far from unit
-    # length make 1 - Z10^2 negative)
+    def _normalize_quaternions(self, point: NumericPoint) -> None:
+        """Euler parameters of unit length, as Autolev's responses assume."""
+        for quaternion in self.model.unit_quaternions:
+            free = [e for e in quaternion if isinstance(e, Symbol) and e not in self.defs.rhs]
+            if len(free) == 4:
+                values = [float(point.value(e, {})) for e in free]
+                norm = math.sqrt(sum(v * v for v in values))
+                point.values.update({e: v / norm for e, v in zip(free, values)})
+
+
+class _AtPoint:
+    """The numbers of one comparison at one point: our value, Autolev's response, and
+    the names, unit vectors and Z's the response uses."""
+
+    def __init__(self, comparison: _Comparison, point: NumericPoint):
+        self.c, self.point = comparison, point
+        self.znum: dict = {}
+
+    def num(self, e) -> complex:
+        return complex(self.c.defs.numeric(e, self.point))
+
+    def dcm(self, frame) -> np.ndarray:
+        newton = self.c.newton
+        if newton is None or not newton.orientation_known(frame):
+            raise NotComparable(f"frame {frame.name} is not oriented in the Newtonian frame")
+        m = newton.dcm(frame)
+        return np.array([[self.num(m[i, j]) for j in range(3)] for i in range(3)])
+
+    def scalar(self, text: str) -> complex:
+        key = text.upper()
+        if key == "PI":
+            return complex(math.pi)
+        if key in self.c.z_text:
+            if key not in self.znum:
+                self.znum[key] = self.parse(self.c.z_text[key])
+            return self.znum[key]
+        if key == "T":
+            return self.num(TIME)
+        sym = self.c.by_name.get(key)
+        if sym is not None:
+            return self.num(sym)
+        return self.num(_assigned_value(self.c.model, text))
+
+    def unit_vector(self, text: str) -> np.ndarray:
+        body = text.rstrip(">")
+        if text == "0>":
+            return np.zeros(3, dtype=complex)
+        frame = self.c.frames.get(body[:-1].upper()) if body[-1:] in "123" else None
+        if frame is None:
+            raise NotComparable(f"{text} is not a unit vector of our model")
+        return self.dcm(frame)[:, int(body[-1]) - 1]
+
+    def parse(self, text: str):
+        return _Parser(text, self.scalar, self.unit_vector).parse()
+
+    def theirs(self):
+        """Autolev's response, evaluated."""
+        text = self.c.response.expr.strip()
+        if text in ("0>", "0>>"):
+            return np.zeros(3 if text == "0>" else (3, 3), dtype=complex)
+        value = self.parse(text)
+        return value.a if isinstance(value, _Matrix) else value
+
+    def ours(self):
+        """Our value, in the Newtonian frame for a vector or dyadic."""
+        ours = self.c.ours
+        if isinstance(ours, Vector):
+            out = np.zeros(3, dtype=complex)
+            for f, comps in ours.terms.items():
+                out = out + self.dcm(f) @ np.array([self.num(c) for c in comps])
+            return out
+        if isinstance(ours, Dyadic):
+            out = np.zeros((3, 3), dtype=complex)
+            for (fa, fb), m in ours.terms.items():
+                mm = np.array([[self.num(m[i, j]) for j in range(3)] for i in range(3)])
+                out = out + self.dcm(fa) @ mm @ self.dcm(fb).T
+            return out
+        if hasattr(ours, "shape") and not isinstance(ours, np.ndarray):
+            return np.array([[self.num(ours[i, j]) for j in range(ours.shape[1])]
+                             for i in range(ours.shape[0])])
+        return self.num(ours)
+
+
+def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> Outcome:
+    """Our value against Autolev's response at sample points: match within `tol`,
+    mismatch, or not comparable."""
+    comparison = _Comparison(model, by_name, r, ours, known, session)
+    sampled = _sample(comparison, session.path, points)
+    if isinstance(sampled, Outcome):
+        return sampled
+    a, b = sampled
+    # values are O(1) at the sample points; a scale below 1e-6 is cancellation to zero
+    scale = max(float(np.abs(a).max(initial=0)), float(np.abs(b).max(initial=0)), 1e-6)
+    err = float(np.abs(a - b).max(initial=0)) / scale
+    if err <= tol:
+        return Outcome(r, "match", f"relative difference {err:.1e}", a[0], b[0])
+    return Outcome(r, "mismatch", f"relative difference {err:.1e} at {len(a)} points",
+                   a[0], b[0])
+
+
+def _sample(comparison: _Comparison, path: str, points: int):
+    """(ours, Autolev's) at up to `points` points, as arrays, or the Outcome of a
+    response that cannot be evaluated.  The points are those where both values are
+    real: equal expressions may take different branches of a root or logarithm where
+    they are complex (Euler parameters far from unit length make 1 - Z10^2 negative)."""
+    r = comparison.response
     ours_all, theirs_all, complex_pairs = [], [], []
     for seed, span in _POINTS:
         try:
-            mine, theirs = evaluate(NumericPoint(defs, seed=seed, span=span))
+            mine, theirs = comparison.values_at(NumericPoint(comparison.defs, seed=seed,
+                                                             span=span))
         except NotComparable as exc:
             return Outcome(r, "not comparable", str(exc))
         except (ZeroDivisionError, OverflowError) as exc:
@@ -641,8 +682,8 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
         except RecursionError:
             return Outcome(r, "not comparable", "the response is nested too deeply to read")
         except Exception as exc:  # any other is autolev's bug: re-raised as one
-            raise AutolevInternalError(Location(session.path, r.line, 1), f"comparing "
-                                       f"response ({r.number}) {r.lhs}", exc) from exc
+            raise AutolevInternalError(Location(path, r.line, 1), f"comparing response "
+                                       f"({r.number}) {r.lhs}", exc) from exc
         if _is_real(mine) and _is_real(theirs):
             ours_all.append(mine)
             theirs_all.append(theirs)
@@ -657,14 +698,7 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
                            "tried")
         ours_all = [m for m, _ in complex_pairs]
         theirs_all = [t for _, t in complex_pairs]
-    a, b = np.array(ours_all), np.array(theirs_all)
-    # values are O(1) at the sample points; a scale below 1e-6 is cancellation to zero
-    scale = max(float(np.abs(a).max(initial=0)), float(np.abs(b).max(initial=0)), 1e-6)
-    err = float(np.abs(a - b).max(initial=0)) / scale
-    if err <= tol:
-        return Outcome(r, "match", f"relative difference {err:.1e}", a[0], b[0])
-    return Outcome(r, "mismatch", f"relative difference {err:.1e} at {len(a)} points",
-                   a[0], b[0])
+    return np.array(ours_all), np.array(theirs_all)
 
 
 __all__ = ["verify", "read_session", "Report", "Outcome", "Session", "Response"]
