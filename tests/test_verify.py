@@ -134,9 +134,70 @@ def test_the_models_own_names_never_stand_for_the_captures(tmp_path):
 
 @pytest.mark.parametrize("response, reason", [
     ("(" * 5000 + "L" + ")" * 5000, "nested too deeply"),
-    ("ATAN2(L)", "ATAN2 takes two arguments")])
+    ("ATAN2(L)", "ATAN2 takes two arguments"),
+    ("SIN(L, L)", "SIN takes one argument, the response gives 2"),
+    ("LOG(L - L)", "cannot evaluate: LOG: math domain error"),
+    ("-[L, L]", "arithmetic on a matrix in the response"),
+    ("[L, 2] + 1", "arithmetic on a matrix in the response"),
+    ("[[L], 2]", "a matrix of vectors or matrices in the response"),
+    ("1/(L - L)", "cannot evaluate: complex division by zero")])
 def test_unreadable_responses_are_not_comparable_with_the_reason(tmp_path, response, reason):
     f = tmp_path / "m.al"
     f.write_text(f"CONSTANTS L\nX = L\n% -> X = {response}\n")
     (o,) = autolev.verify(f).outcomes
     assert o.status == "not comparable" and reason in o.detail
+
+
+def test_a_vector_given_to_a_function_of_a_response_is_not_comparable(tmp_path):
+    f = tmp_path / "m.al"
+    f.write_text("NEWTONIAN N\nCONSTANTS L\nX = L\n% -> X = SIN(N1>)\n")
+    (o,) = autolev.verify(f).outcomes
+    assert o.status == "not comparable" and o.detail == "SIN of a vector or matrix in the response"
+
+
+@pytest.fixture
+def broken_numeric(monkeypatch):
+    """A bug in the runtime: every numeric evaluation raises KeyError."""
+    from autolev.runtime.calculus import Definitions
+
+    def numeric(self, expr, point):
+        raise KeyError("bogus")
+    monkeypatch.setattr(Definitions, "numeric", numeric)
+
+
+def test_a_bug_while_comparing_is_an_internal_error_not_a_verdict(tmp_path, broken_numeric,
+                                                                    capsys):
+    f = tmp_path / "m.al"
+    f.write_text("CONSTANTS L\nX = L\n% -> X = 2*L\n")
+    with pytest.raises(autolev.AutolevInternalError) as info:
+        autolev.verify(f)
+    assert str(info.value).splitlines()[0] == (
+        f"{f}:3:1: internal error: a bug in autolev, not in the model, while comparing "
+        "response (1) X: KeyError: 'bogus'")
+    assert main(["verify", str(f)]) == 70
+    err = capsys.readouterr().err
+    assert "internal error" in err and "Traceback" not in err
+
+
+def test_a_lookup_failing_for_another_name_is_a_bug_not_an_unknown_name(tmp_path, monkeypatch):
+    from autolev.runtime.model import Model
+
+    def quantity(self, name):
+        raise KeyError("some other key")
+    monkeypatch.setattr(Model, "quantity", quantity)
+    f = tmp_path / "m.al"
+    f.write_text("CONSTANTS L\nX = L\n% -> X = 2*NOSUCH\n")
+    with pytest.raises(autolev.AutolevInternalError) as info:
+        autolev.verify(f)
+    assert info.value.error == "KeyError: 'some other key'"
+
+
+def test_points_where_a_value_has_none_are_skipped(tmp_path):
+    # MIN of a complex number has no value: X has one only where K < 0, Y nowhere
+    f = tmp_path / "m.al"
+    f.write_text("CONSTANTS K\nX = MIN((-K)^(1/2), 1)\n% -> X = SQRT(-K)\n"
+                 "Y = MIN((-K - 2)^(1/2), 1)\n% -> Y = 1\n")
+    x, y = autolev.verify(f).outcomes
+    assert x.status == "match"
+    assert (y.status, y.detail) == ("not comparable", "cannot evaluate: no value at the "
+                                    "points tried")

@@ -4,95 +4,32 @@
     program = autolev.parse(open("pendulum.al").read(), "pendulum.al")
 
 `parse` reads a model into the IR and raises `AutolevSyntaxError` (carrying every
-diagnostic) when it cannot.
+diagnostic) when it cannot.  `translation` and `transpile` translate it, `load` builds
+its `Model`, `verify` replays Autolev's recorded responses against it and `grid` makes
+the points of a parameter study.  A bug in autolev itself is `AutolevInternalError`.
 """
 from __future__ import annotations
 
-import os
-from pathlib import Path
+import importlib
 
-from .errors import (AutolevError, AutolevFileError, AutolevRuntimeError, AutolevSyntaxError,
-                     AutolevTranslationError, Diagnostic, Location, Span)
+from .errors import (AutolevError, AutolevFileError, AutolevInternalError, AutolevRuntimeError,
+                     AutolevSyntaxError, AutolevTranslationError, Diagnostic, Location, Span)
 from .ir import Program
 
 __version__ = "0.1.0"
-__all__ = ["parse", "transpile", "load", "verify", "grid", "Program", "AutolevError",
-           "AutolevSyntaxError", "AutolevTranslationError", "AutolevRuntimeError",
-           "AutolevFileError", "Diagnostic", "Location", "Span", "__version__"]
+__all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "Program",
+           "AutolevError", "AutolevSyntaxError", "AutolevTranslationError",
+           "AutolevRuntimeError", "AutolevFileError", "AutolevInternalError", "Diagnostic",
+           "Location", "Span", "__version__"]
+
+# the stages are imported on first use, so that `import autolev` stays cheap
+_LAZY = {"parse": ".pipeline", "translation": ".pipeline", "transpile": ".pipeline",
+         "load": ".loader", "verify": ".verification", "grid": ".runtime.studies"}
 
 
-def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
-    """Read Autolev source into a `Program`.
-
-    `source` is the text of a model, or a path to read: a `pathlib.Path`, or a string
-    of one line that names a file (or ends in .al, then a missing file is an error).
-    `filename` names the model in diagnostics; user macros (NAME.A) and `RUN` files are
-    looked up next to it.  Raises `AutolevSyntaxError` with all diagnostics when the
-    model cannot be read, `AutolevFileError` when its file cannot.
-    """
-    from .irbuild import Builder, sort_key
-    from .source import SourceFile
-
-    source = _as_path(source)
-    if isinstance(source, os.PathLike):
-        src = SourceFile.read(source, filename or os.fspath(source))
-        path: Path | None = Path(source)
-    else:
-        src = SourceFile(filename or "<string>", source)
-        path = Path(filename) if filename else None
-    builder = Builder(src.name, path)
-    builder.build_source(src)
-    if builder.errors:
-        raise AutolevSyntaxError(sorted(builder.diagnostics, key=sort_key))
-    program = builder.program()
-    program.diagnostics.sort(key=sort_key)
-    return program
-
-
-def _as_path(source):
-    """A string that is a file's name, as a Path; model text is left as it is."""
-    if not isinstance(source, str) or "\n" in source or "\r" in source:
-        return source
-    name = source.strip()
-    if name and (name.lower().endswith((".al", ".all")) or os.path.isfile(name)):
-        return Path(name)
-    return source
-
-
-def translation(source: str | os.PathLike, filename: str | None = None):
-    """Parse and translate; returns the `Translation` (code, line map, diagnostics).
-    Raises AutolevSyntaxError or AutolevTranslationError."""
-    from .translate import translate
-
-    program = source if isinstance(source, Program) else parse(source, filename)
-    result = translate(program)
-    errors = [d for d in result.diagnostics if d.severity == "error"]
-    if errors:
-        raise AutolevTranslationError(result.diagnostics)
-    return result
-
-
-def transpile(source: str | os.PathLike, filename: str | None = None) -> str:
-    """The Python module text of an Autolev model (text, or a path)."""
-    return translation(source, filename).code
-
-
-def verify(path: str | os.PathLike, points: int = 3):
-    """Replay the responses recorded in an .all session (or in % -> comments of a .al
-    file) against our translation: a Report (match / mismatch / not comparable each)."""
-    from .verification import verify as _verify
-    return _verify(path, points=points)
-
-
-def load(path: str | os.PathLike):
-    """Translate the model at `path`, execute it, and return its `Model`."""
-    from .loader import load_translation
-    p = Path(path)
-    return load_translation(translation(p), str(p))
-
-
-def grid(**axes) -> list:
-    """Every combination of the values given for each name, as points for
-    `Model.sweep`: grid(V=[3, 4, 5], M=[80, 85]) has 6 points."""
-    from .runtime.studies import grid as _grid
-    return _grid(**axes)
+def __getattr__(name: str):
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_LAZY[name], __name__), name)
+    globals()[name] = value
+    return value

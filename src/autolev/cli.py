@@ -10,11 +10,21 @@ import sys
 from pathlib import Path
 
 from . import __version__
-from .errors import (AutolevError, AutolevFileError, AutolevRuntimeError, AutolevSyntaxError,
-                     AutolevTranslationError, Diagnostic)
+from .errors import (AutolevError, AutolevFileError, AutolevInternalError, AutolevRuntimeError,
+                     AutolevSyntaxError, AutolevTranslationError, Diagnostic)
 
 MODEL_SUFFIXES = (".al",)
 MACRO_SUFFIXES = (".a",)
+
+# the exit status of a bug in autolev (EX_SOFTWARE of sysexits.h)
+EXIT_INTERNAL = 70
+# set to 1: an internal error is shown with Python's traceback
+TRACEBACK_VARIABLE = "AUTOLEV_TRACEBACK"
+
+EPILOG = f"""exit status: 0 success; 1 the model has errors, or a command failed; 2 wrong use
+of the command line; {EXIT_INTERNAL} an internal error (a bug in autolev, not in the model:
+the message asks for a report; {TRACEBACK_VARIABLE}=1 in the environment shows its Python
+traceback); 130 interrupted."""
 
 
 def _model_files(args: list[str]) -> list[Path]:
@@ -102,13 +112,13 @@ def cmd_check(ns: argparse.Namespace) -> int:
 
 def cmd_convert(ns: argparse.Namespace) -> int:
     """Translate one model; write the module only when translation succeeded."""
-    import autolev
-    from autolev.irbuild import sort_key
+    from .irbuild import sort_key
+    from .pipeline import translation
 
     path = Path(ns.file)
     try:
-        result = autolev.translation(path)
-    except (AutolevSyntaxError, autolev.AutolevTranslationError) as exc:
+        result = translation(path)
+    except (AutolevSyntaxError, AutolevTranslationError) as exc:
         for d in sorted(exc.diagnostics, key=sort_key):
             print(d.format(), file=sys.stderr)
         n = sum(d.severity == "error" for d in exc.diagnostics)
@@ -134,17 +144,14 @@ def _print_warning(message, category, filename, lineno, file=None, line=None):
 
 def _load_for_run(path: Path):
     """The model, or None after printing its diagnostics."""
-    import autolev
-    from autolev.irbuild import sort_key
-
+    from .irbuild import sort_key
     from .loader import load_for_run, load_python
     try:
         if path.suffix.lower() == ".py":      # a converted model, as it now reads
             model, notes = load_python(path), []
         else:
             model, notes = load_for_run(path)
-    except (AutolevSyntaxError, autolev.AutolevTranslationError,
-            autolev.AutolevRuntimeError) as exc:
+    except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
         for d in sorted(exc.diagnostics, key=sort_key):
             print(d.format(), file=sys.stderr)
         return None
@@ -590,7 +597,8 @@ def _run_options(parser) -> None:
 def build_parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="autolev",
-        description="Autolev 4.1 models in Python: check, translate and run .al files.")
+        description="Autolev 4.1 models in Python: check, translate and run .al files.",
+        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--version", action="version", version=f"autolev {__version__}")
     sub = ap.add_subparsers(dest="command", metavar="COMMAND")
 
@@ -743,6 +751,9 @@ def main(argv: list[str] | None = None) -> int:
     except AutolevSyntaxError as exc:
         print(exc, file=sys.stderr)
         return 1
+    except AutolevInternalError as exc:
+        _report_internal_error(exc)
+        return EXIT_INTERNAL
     except AutolevError as exc:
         print(f"autolev: error: {exc}", file=sys.stderr)
         return 1
@@ -752,6 +763,17 @@ def main(argv: list[str] | None = None) -> int:
         # output piped into `head` and the like: stop quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
+
+
+def _report_internal_error(exc: AutolevInternalError) -> None:
+    """The bug's message; its Python traceback only when asked for."""
+    print(exc, file=sys.stderr)
+    if os.environ.get(TRACEBACK_VARIABLE) == "1":
+        import traceback
+        traceback.print_exception(exc, file=sys.stderr)
+    else:
+        print(f"autolev: note: {TRACEBACK_VARIABLE}=1 shows where in autolev it happened",
+              file=sys.stderr)
 
 
 if __name__ == "__main__":

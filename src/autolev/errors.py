@@ -145,6 +145,25 @@ class AutolevError(Exception):
     """Base class of every error this package raises for a user's input."""
 
 
+# what an internal error asks of the user (there is no public issue tracker to name)
+REPORT_REQUEST = "please report it to the autolev developers, with the model and this message"
+
+
+class AutolevInternalError(Exception):
+    """A bug in autolev, not in the user's model: Python raised an exception autolev
+    did not expect while it `did` something at `location` (an `.al` statement, or a
+    recorded response).  Deliberately not an AutolevError: every `except AutolevError`
+    means "the input is at fault", and a bug must not be reported as that.  The
+    original exception is chained as `__cause__`."""
+
+    def __init__(self, location, did: str, exc: BaseException):
+        self.location = location
+        self.did = did
+        self.error = f"{type(exc).__name__}: {exc}"
+        super().__init__(f"{location}: internal error: a bug in autolev, not in the model, "
+                         f"while {did}: {self.error}\n{location}: note: {REPORT_REQUEST}")
+
+
 class AutolevSyntaxError(AutolevError):
     """The file could not be read as Autolev.  Carries *all* diagnostics found."""
 

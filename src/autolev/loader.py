@@ -1,28 +1,48 @@
-"""Executing a translated model, with failures reported at the Autolev statement."""
+"""Executing a translated model, with failures reported at the Autolev statement.
+
+What a model's statements may raise as the model's own fault is the runtime's
+AutolevModelError, the few arithmetic failures of the values they ask for, and sympy's
+refusal of what a statement's own line does with them; anything else raised while a
+translation runs is a bug in autolev (AutolevInternalError)."""
 from __future__ import annotations
 
-
+import dataclasses
+import os
 import textwrap
 import traceback
 import types
 from dataclasses import dataclass
+from pathlib import Path
 
-import sympy as sm
+import sympy
 from sympy.matrices.exceptions import NonInvertibleMatrixError
 
-from .errors import AutolevRuntimeError, Diagnostic, Location
-from .runtime.vector import AutolevModelError
+from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError,
+                     AutolevTranslationError, Diagnostic, Location)
+from .pipeline import parse, translation
+from .runtime.errors import AutolevModelError
+from .translate import translate
 
-# what a model's own statements can raise when the model asks for something impossible
-# (a division by zero, a non-square matrix to invert, ...), besides our own error
-_STATEMENT_FAILURES = (AutolevModelError, TypeError, ValueError, ZeroDivisionError,
-                       ArithmeticError, IndexError, KeyError, AttributeError,
-                       NotImplementedError, RecursionError, sm.SympifyError,
-                       NonInvertibleMatrixError)
+# the model's fault: what the runtime refuses, and arithmetic on the values it asks for
+# (a division by zero, an overflow, a singular matrix to invert)
+_MODEL_FAULTS = (AutolevModelError, ZeroDivisionError, OverflowError, NonInvertibleMatrixError)
+
+# sympy's refusals of the calls and operators a statement's own line applies to the
+# model's values (the translation writes matrix arithmetic, element access, int() of an
+# index and functions such as MIN as Python, which no runtime function checks first):
+# wrong shapes, an element outside the matrix, a symbol where a number is needed, MIN of
+# a value that is not real
+_OPERATOR_REFUSALS = (ValueError, IndexError, TypeError)
+
+# autolev's own code: an unexpected exception raised in it is autolev's bug
+_PACKAGE = os.path.dirname(os.path.abspath(__file__)) + os.sep
+_SYMPY = os.path.dirname(os.path.abspath(sympy.__file__)) + os.sep
 
 
-# what an edited converted module can raise besides what its statements can
-_EDITING_SLIPS = (NameError, ImportError, AssertionError)
+def load(path):
+    """Translate the model at `path`, execute it, and return its `Model`."""
+    p = Path(path)
+    return load_translation(translation(p), str(p))
 
 
 def load_translation(translation, filename: str):
@@ -36,10 +56,13 @@ def load_translation(translation, filename: str):
         if not _beyond_pythons_nesting(exc):
             raise
         raise AutolevRuntimeError(_too_deep(translation, module.__file__)) from None
+    lines = translation.code.splitlines()
     try:
         exec(code, module.__dict__)
-    except _STATEMENT_FAILURES as exc:
-        raise AutolevRuntimeError(_diagnostic(exc, translation, module.__file__)) from None
+    except Exception as exc:  # judged below; re-raised either way
+        failure = _translation_failure(exc, translation, lines, module.__file__)
+        # an internal error keeps autolev's traceback; the user's diagnostic needs none
+        raise failure from (exc if isinstance(failure, AutolevInternalError) else None)
     model = module.__dict__["model"]
     model.namespace = module.__dict__
     model.source = ModelSource("translation", translation, filename, model.revision())
@@ -47,7 +70,7 @@ def load_translation(translation, filename: str):
     model.namespaces = translation.namespaces
     # where each CODE statement is in the .al file (diagnostics of its run point there)
     model.code_locations = [translation.line_map.get(n)
-                            for n, text in enumerate(translation.code.splitlines(), 1)
+                            for n, text in enumerate(lines, 1)
                             if text.startswith("model.code(")]
     return model
 
@@ -77,16 +100,54 @@ def _too_deep(translation, pyfile: str) -> Diagnostic:
                       "compile", "error", None)
 
 
-def _diagnostic(exc: BaseException, translation, pyfile: str) -> Diagnostic:
-    line = None
+def _failed_in(exc: BaseException, filename: str) -> tuple[int | None, list[str]]:
+    """The line of `filename` the exception last passed through, and the files of the
+    frames below it (none when that line raised it itself)."""
+    line, below = None, []
     for frame, lineno in traceback.walk_tb(exc.__traceback__):
-        if frame.f_code.co_filename == pyfile:
-            line = lineno
+        name = frame.f_code.co_filename
+        if name == filename:
+            line, below = lineno, []
+        elif line is not None:
+            below.append(name)
+    return line, below
+
+
+def _models_fault(exc: BaseException, below: list[str]) -> bool:
+    """Whether exc, raised through the frames of files `below` a statement's line, is
+    the model's fault rather than autolev's."""
+    if isinstance(exc, (RecursionError, *_MODEL_FAULTS)):
+        return True
+    by_sympy = bool(below) and below[0].startswith(_SYMPY) and \
+        not any(f.startswith(_PACKAGE) for f in below)
+    return by_sympy and isinstance(exc, _OPERATOR_REFUSALS)
+
+
+def _translation_failure(exc: Exception, translation, lines: list[str], pyfile: str):
+    """The error of a generated module that raised exc: the model's R001 diagnostic at
+    the .al statement, or an internal error (a bug in autolev)."""
+    line, below = _failed_in(exc, pyfile)
     span = translation.line_map.get(line) if line is not None else None
-    message = str(exc) if isinstance(exc, AutolevModelError) else \
-        f"this statement failed: {type(exc).__name__}: {exc}"
-    loc = span.start if span is not None else Location(pyfile, line or 1, 1)
-    return Diagnostic(loc, "R001", message, "error", None)
+    location = span.start if span is not None else Location(pyfile, line or 1, 1)
+    quoted = _quoted_statement(lines, line) if line else None
+    if not _models_fault(exc, below):
+        return AutolevInternalError(location, _executing(quoted), exc)
+    return AutolevRuntimeError(_diagnostic(exc, location))
+
+
+def _executing(quoted: str | None) -> str:
+    return f"executing `{quoted}`" if quoted else "executing this statement"
+
+
+def _diagnostic(exc: BaseException, location: Location) -> Diagnostic:
+    """The R001 diagnostic of a statement that failed by the model's fault."""
+    if isinstance(exc, AutolevModelError):
+        message = str(exc)
+    elif isinstance(exc, RecursionError):
+        message = "this statement nests too deeply for Python to evaluate"
+    else:
+        message = f"this statement failed: {type(exc).__name__}: {exc}"
+    return Diagnostic(location, "R001", message, "error", None)
 
 
 def load_python(path) -> object:
@@ -94,18 +155,19 @@ def load_python(path) -> object:
     the file now reads (the user may have edited it): a statement that fails, or text
     that is not Python, is a diagnostic at its line, with the Autolev statement the
     comments above it quote."""
-    from pathlib import Path
     p = Path(path)
     try:
         text = p.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        from .errors import AutolevFileError
         raise AutolevFileError(p, f"cannot read: {getattr(exc, 'strerror', None) or exc}")
     return run_python(text, str(p))
 
 
 def run_python(text: str, filename: str) -> object:
-    """The model of a converted module's text (see load_python)."""
+    """The model of a converted module's text (see load_python).  The module is the
+    user's Python: what its own lines raise (a NameError of an edit, a sympy call that
+    fails) is the user's fault; an unexpected exception raised inside autolev, from a
+    call the module made, is autolev's bug."""
     module = types.ModuleType("autolev_model")
     module.__file__ = filename
     try:
@@ -116,18 +178,10 @@ def run_python(text: str, filename: str) -> object:
                                              None)) from None
     try:
         exec(code, module.__dict__)
-    except _STATEMENT_FAILURES + _EDITING_SLIPS as exc:
-        line = None
-        for frame, lineno in traceback.walk_tb(exc.__traceback__):
-            if frame.f_code.co_filename == filename:
-                line = lineno
-        message = str(exc) if isinstance(exc, AutolevModelError) else \
-            f"this statement failed: {type(exc).__name__}: {exc}"
-        quoted = _quoted_statement(text.splitlines(), line) if line else None
-        if quoted:
-            message += f" (Autolev: {quoted})"
-        raise AutolevRuntimeError(Diagnostic(Location(filename, line or 1, 1), "R001",
-                                             message, "error", None)) from None
+    except Exception as exc:  # judged below; re-raised either way
+        failure = _python_failure(exc, text, filename)
+        # an internal error keeps autolev's traceback; the user's diagnostic needs none
+        raise failure from (exc if isinstance(failure, AutolevInternalError) else None)
     model = module.__dict__.get("model")
     if model is None:
         raise AutolevRuntimeError(Diagnostic(Location(filename, 1, 1), "R003",
@@ -136,6 +190,22 @@ def run_python(text: str, filename: str) -> object:
     model.namespace = module.__dict__
     model.source = ModelSource("python", text, filename, model.revision())
     return model
+
+
+def _python_failure(exc: Exception, text: str, filename: str) -> Exception:
+    """The error of a converted module that raised exc: an internal error when autolev
+    raised it unexpectedly, else the user's R001 at the module's line."""
+    line, below = _failed_in(exc, filename)
+    quoted = _quoted_statement(text.splitlines(), line) if line else None
+    location = Location(filename, line or 1, 1)
+    # the user's own Python, or a library it called itself, raised it: the user's
+    called_autolev = bool(below) and below[0].startswith(_PACKAGE)
+    if called_autolev and not _models_fault(exc, below):
+        return AutolevInternalError(location, _executing(quoted), exc)
+    d = _diagnostic(exc, location)
+    if quoted:
+        d = dataclasses.replace(d, message=f"{d.message} (Autolev: {quoted})")
+    return AutolevRuntimeError(d)
 
 
 @dataclass(frozen=True)
@@ -154,8 +224,6 @@ class ModelSource:
         return run_python(self.content, self.filename)
 
 
-
-
 def _quoted_statement(lines: list[str], line: int) -> str | None:
     """The Autolev statement a converted module quotes in the comments just above the
     code at `line` (1-based)."""
@@ -169,27 +237,18 @@ def _quoted_statement(lines: list[str], line: int) -> str | None:
     return " ".join(q for q in quoted if q) or None
 
 
-__all__ = ["load_translation", "load_python", "run_python", "ModelSource"]
-
-
 def load_for_run(path) -> tuple[object, list]:
     """The model for `autolev run`: as `autolev.load`, except that when the only
     statements that fail come after the last CODE command, the model is built up to
     that command (Autolev's session rejected a bad statement and went on; the program
     CODE wrote did not depend on what followed).  Returns (model, notes)."""
-    import dataclasses
-    from pathlib import Path
-
-    import autolev
-    from .translate import translate
-
     p = Path(path)
     try:
-        result = autolev.translation(p)
+        result = translation(p)
         return load_translation(result, str(p)), []
-    except (autolev.AutolevTranslationError, AutolevRuntimeError) as exc:
+    except (AutolevTranslationError, AutolevRuntimeError) as exc:
         failure = exc
-    program = autolev.parse(p)
+    program = parse(p)
     codes = [i for i, st in enumerate(program.statements) if st.kind == "code"]
     if not codes or codes[-1] == len(program.statements) - 1:
         raise failure
@@ -205,3 +264,7 @@ def load_for_run(path) -> tuple[object, list]:
     notes = [f"statements after the last CODE command fail and are left out of the run "
              f"(first: {first.format(context=False).splitlines()[0]})"]
     return model, notes
+
+
+__all__ = ["load", "load_translation", "load_for_run", "load_python", "run_python",
+           "ModelSource"]

@@ -18,8 +18,12 @@ import sympy as sm
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
+from .errors import AutolevError
+from .pipeline import parse
 from .runtime.symbols import TIME, Z
 from .runtime.vector import Dyadic, Vector
+from .source import decode
+from .verification import Response, Session, _build
 
 
 class AutolevPrinter(StrPrinter):
@@ -121,10 +125,6 @@ def _z_used(value) -> list:
 
 def transcript(path) -> str:
     """The `.all` transcript of the model at `path` (raises as autolev.load does)."""
-    from . import parse
-    from .source import decode
-    from .verification import Response, Session, _build
-
     p = Path(path)
     text = decode(p.read_bytes())
     lines = text.splitlines()
@@ -145,7 +145,6 @@ def transcript(path) -> str:
     session = Session("\n".join(lines) + "\n", responses, str(p))
     model, captured, skipped = _build(session, p)
     if model is None:
-        from .errors import AutolevError
         raise AutolevError(skipped)
     after: dict[int, list[int]] = {}
     for k, r in enumerate(responses):

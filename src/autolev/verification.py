@@ -26,7 +26,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+from sympy import Symbol
 
+from .errors import (AutolevInternalError, AutolevRuntimeError, AutolevSyntaxError,
+                     AutolevTranslationError, Location)
+from .loader import load_translation
+from .pipeline import translation
+from .runtime.calculus import NumericPoint
+from .runtime.symbols import TIME, Z
+from .runtime.vector import Dyadic, Vector
 from .source import decode
 
 _INPUT = re.compile(r"^\s*\((\d+)\)\s?(.*)$")
@@ -149,7 +157,7 @@ class _Parser:
         v = self.product()
         while self.peek()[1] in ("+", "-"):
             op = self.take()[1]
-            w = self.product()
+            v, w = _operands(v, self.product())
             v = v + w if op == "+" else v - w
         return v
 
@@ -157,7 +165,7 @@ class _Parser:
         v = self.unary()
         while self.peek()[1] in ("*", "/"):
             op = self.take()[1]
-            w = self.unary()
+            v, w = _operands(v, self.unary())
             if op == "*":
                 v = _mul(v, w)
             else:
@@ -167,7 +175,7 @@ class _Parser:
     def unary(self):
         if self.peek()[1] == "-":
             self.take()
-            return -self.unary()
+            return -_operands(self.unary())[0]
         if self.peek()[1] == "+":
             self.take()
             return self.unary()
@@ -177,7 +185,9 @@ class _Parser:
         base = self.atom()
         if self.peek()[1] == "^":
             self.take()
-            return base ** self.unary()          # right-associative, binds -x tighter
+            # right-associative, binds -x tighter
+            base, exponent = _operands(base, self.unary())
+            return base ** exponent
         return base
 
     def atom(self):
@@ -199,12 +209,7 @@ class _Parser:
                 self.take()
                 args.append(self.sum())
             self.take(")")
-            if text.upper() == "ATAN2":
-                if len(args) != 2:
-                    raise NotComparable(f"ATAN2 takes two arguments, the response gives "
-                                        f"{len(args)}")
-                return complex(math.atan2(args[0].real, args[1].real))
-            return complex(_FUNCS[text.upper()](*args))
+            return _apply(text.upper(), args)
         if text.endswith(">"):
             return self.unit_vector(text)
         if self.peek()[1] == "[":              # an indexed name
@@ -227,12 +232,39 @@ class _Parser:
                 raise NotComparable("bad matrix in the response")
         if len({len(r) for r in rows}) != 1:
             raise NotComparable("ragged matrix in the response")
+        if not all(isinstance(x, complex) for r in rows for x in r):
+            raise NotComparable("a matrix of vectors or matrices in the response")
         return _Matrix(np.array(rows, dtype=complex))
 
 
 class _Matrix:
+    """A matrix the response writes out, `[a, b; c, d]`: a value, never an operand."""
+
     def __init__(self, a):
         self.a = a
+
+
+def _operands(*values) -> tuple:
+    """The values, which the response combines: none may be a written-out matrix."""
+    if any(isinstance(v, _Matrix) for v in values):
+        raise NotComparable("arithmetic on a matrix in the response")
+    return values
+
+
+def _apply(name: str, args: list) -> complex:
+    """A function of the response (SIN, ATAN2, ...) at scalar arguments."""
+    if not all(isinstance(a, complex) for a in args):
+        raise NotComparable(f"{name} of a vector or matrix in the response")
+    if name == "ATAN2":
+        if len(args) != 2:
+            raise NotComparable(f"ATAN2 takes two arguments, the response gives {len(args)}")
+        return complex(math.atan2(args[0].real, args[1].real))
+    if len(args) != 1:
+        raise NotComparable(f"{name} takes one argument, the response gives {len(args)}")
+    try:
+        return complex(_FUNCS[name](args[0]))
+    except ValueError as exc:     # cmath's domain error: LOG(0) at this point
+        raise NotComparable(f"cannot evaluate: {name}: {exc}") from None
 
 
 def _mul(v, w):
@@ -318,7 +350,6 @@ def _capture_statement(k: int, lhs: str, prefix: str) -> tuple[str, str] | None:
 def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
     """Replay the responses recorded in an `.all` session (or the `% ->` comments of a
     `.al` file) against our translation; a Report of each response's outcome."""
-    from .runtime.symbols import Z
     p = Path(path)
     session = read_session(decode(p.read_bytes()), str(p))
     report = Report(str(p))
@@ -393,11 +424,6 @@ def _judge_z_responses(session: Session, report: Report) -> None:
 def _build(session: Session, p: Path):
     """Translate and run the model with the capture statements; drop the captures our
     translation cannot make (reported as not comparable) and retry."""
-    from . import AutolevTranslationError, translation
-    from .errors import AutolevRuntimeError
-    from .loader import load_translation
-    from .errors import AutolevSyntaxError
-
     lines = session.source.splitlines()
     capture = _capture_prefix(session.source)
     skipped: dict[int, str] = {}
@@ -484,7 +510,9 @@ def _assigned_value(model, text: str):
     Autolev kept it as a name in later responses; its value is our value of it."""
     try:
         value = model.quantity(text)
-    except KeyError:
+    except KeyError as exc:
+        if exc.args != (text,):
+            raise                        # another key missing: a bug, not an unknown name
         raise NotComparable(f"{text} is not a name of our model") from None
     if not hasattr(value, "free_symbols") or hasattr(value, "shape"):
         raise NotComparable(f"{text} is not a scalar of our model")
@@ -504,100 +532,31 @@ def _names_of(model) -> dict:
     return by_name
 
 
-def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> Outcome:
-    from .runtime.calculus import NumericPoint
-    from sympy import Symbol
+class _Comparison:
+    """One response against our value: what evaluating both needs at every point."""
 
-    from .runtime.symbols import TIME, Z
-    from .runtime.vector import Dyadic, Vector
+    def __init__(self, model, by_name: dict, r: Response, ours, known, session: Session):
+        self.model, self.defs, self.by_name = model, model.defs, by_name
+        self.response, self.ours, self.known = r, ours, known
+        self.frames = {n.upper(): f for n, f in model.frames_by_name.items()}
+        self.newton = model.newtonian_frame or next(iter(model.frames_by_name.values()),
+                                                    None)
+        self.z_text = {o.lhs.upper(): o.expr for o in session.responses
+                       if re.fullmatch(r"Z\d+", o.lhs.upper()) and o.number < r.number}
 
-    defs = model.defs
-    frames = {n.upper(): f for n, f in model.frames_by_name.items()}
-    newton = model.newtonian_frame or next(iter(model.frames_by_name.values()), None)
-    z_text = {}
-    for other in session.responses:
-        if re.fullmatch(r"Z\d+", other.lhs.upper()) and other.number < r.number:
-            z_text[other.lhs.upper()] = other.expr
-
-    def evaluate(point):
-        """(ours, Autolev's) at one point, as arrays of the same shape."""
-        for quaternion in model.unit_quaternions:
-            free = [e for e in quaternion if isinstance(e, Symbol) and e not in defs.rhs]
-            if len(free) == 4:
-                values = [float(point.value(e, {})) for e in free]
-                norm = math.sqrt(sum(v * v for v in values))
-                point.values.update({e: v / norm for e, v in zip(free, values)})
-        if known is not None:
+    def values_at(self, point: NumericPoint):
+        """(ours, Autolev's) at one point, as complex arrays of the same shape."""
+        self._normalize_quaternions(point)
+        if self.known is not None:
             # names defined only after the response are free there (a later CONSTRAIN
             # defines the dependent speeds): they get values of their own.  Z's made
             # later name expressions, whatever is defined: they keep their values
-            for s in defs.rhs:
-                if s not in known and not isinstance(s, Z):
+            for s in self.defs.rhs:
+                if s not in self.known and not isinstance(s, Z):
                     point.cache[s] = point.value(s, {})
-        znum: dict = {}
-
-        def num(e):
-            return complex(defs.numeric(e, point))
-
-        def dcm(frame):
-            if newton is None or not newton.orientation_known(frame):
-                raise NotComparable(f"frame {frame.name} is not oriented in the Newtonian frame")
-            m = newton.dcm(frame)
-            return np.array([[num(m[i, j]) for j in range(3)] for i in range(3)])
-
-        def scalar(text):
-            key = text.upper()
-            if key == "PI":
-                return complex(math.pi)
-            if key in z_text:
-                if key not in znum:
-                    znum[key] = _Parser(z_text[key], scalar, unit_vector).parse()
-                return znum[key]
-            if key == "T":
-                return num(TIME)
-            sym = by_name.get(key)
-            if sym is not None:
-                return num(sym)
-            return num(_assigned_value(model, text))
-
-        def unit_vector(text):
-            body = text.rstrip(">")
-            if text == "0>":
-                return np.zeros(3, dtype=complex)
-            frame = frames.get(body[:-1].upper()) if body[-1:] in "123" else None
-            if frame is None:
-                raise NotComparable(f"{text} is not a unit vector of our model")
-            return dcm(frame)[:, int(body[-1]) - 1]
-
-        def vec_num(v: Vector):
-            out = np.zeros(3, dtype=complex)
-            for f, comps in v.terms.items():
-                out = out + dcm(f) @ np.array([num(c) for c in comps])
-            return out
-
-        def dyad_num(d: Dyadic):
-            out = np.zeros((3, 3), dtype=complex)
-            for (fa, fb), m in d.terms.items():
-                mm = np.array([[num(m[i, j]) for j in range(3)] for i in range(3)])
-                out = out + dcm(fa) @ mm @ dcm(fb).T
-            return out
-
-        if r.expr.strip() in ("0>", "0>>"):
-            theirs = np.zeros(3 if r.expr.strip() == "0>" else (3, 3), dtype=complex)
-        else:
-            theirs = _Parser(r.expr, scalar, unit_vector).parse()
-        if isinstance(theirs, _Matrix):
-            theirs = theirs.a
-        if isinstance(ours, Vector):
-            mine = vec_num(ours)
-        elif isinstance(ours, Dyadic):
-            mine = dyad_num(ours)
-        elif hasattr(ours, "shape") and not isinstance(ours, np.ndarray):
-            mine = np.array([[num(ours[i, j]) for j in range(ours.shape[1])]
-                             for i in range(ours.shape[0])])
-        else:
-            mine = num(ours)
-        mine, theirs = np.asarray(mine, dtype=complex), np.asarray(theirs, dtype=complex)
+        at = _AtPoint(self, point)
+        theirs = np.asarray(at.theirs(), dtype=complex)
+        mine = np.asarray(at.ours(), dtype=complex)
         if mine.shape != theirs.shape:
             if mine.size != theirs.size:
                 raise NotComparable(f"shapes differ: ours {mine.shape}, Autolev's "
@@ -605,19 +564,126 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
             mine = mine.reshape(theirs.shape)
         return mine, theirs
 
-    # points where both values are real: equal expressions may take different branches
-    # of a root or logarithm where they are complex (Euler parameters far from unit
-    # length make 1 - Z10^2 negative)
+    def _normalize_quaternions(self, point: NumericPoint) -> None:
+        """Euler parameters of unit length, as Autolev's responses assume."""
+        for quaternion in self.model.unit_quaternions:
+            free = [e for e in quaternion if isinstance(e, Symbol) and e not in self.defs.rhs]
+            if len(free) == 4:
+                values = [float(point.value(e, {})) for e in free]
+                norm = math.sqrt(sum(v * v for v in values))
+                point.values.update({e: v / norm for e, v in zip(free, values)})
+
+
+class _AtPoint:
+    """The numbers of one comparison at one point: our value, Autolev's response, and
+    the names, unit vectors and Z's the response uses."""
+
+    def __init__(self, comparison: _Comparison, point: NumericPoint):
+        self.c, self.point = comparison, point
+        self.znum: dict = {}
+
+    def num(self, e) -> complex:
+        return complex(self.c.defs.numeric(e, self.point))
+
+    def dcm(self, frame) -> np.ndarray:
+        newton = self.c.newton
+        if newton is None or not newton.orientation_known(frame):
+            raise NotComparable(f"frame {frame.name} is not oriented in the Newtonian frame")
+        m = newton.dcm(frame)
+        return np.array([[self.num(m[i, j]) for j in range(3)] for i in range(3)])
+
+    def scalar(self, text: str) -> complex:
+        key = text.upper()
+        if key == "PI":
+            return complex(math.pi)
+        if key in self.c.z_text:
+            if key not in self.znum:
+                self.znum[key] = self.parse(self.c.z_text[key])
+            return self.znum[key]
+        if key == "T":
+            return self.num(TIME)
+        sym = self.c.by_name.get(key)
+        if sym is not None:
+            return self.num(sym)
+        return self.num(_assigned_value(self.c.model, text))
+
+    def unit_vector(self, text: str) -> np.ndarray:
+        body = text.rstrip(">")
+        if text == "0>":
+            return np.zeros(3, dtype=complex)
+        frame = self.c.frames.get(body[:-1].upper()) if body[-1:] in "123" else None
+        if frame is None:
+            raise NotComparable(f"{text} is not a unit vector of our model")
+        return self.dcm(frame)[:, int(body[-1]) - 1]
+
+    def parse(self, text: str):
+        return _Parser(text, self.scalar, self.unit_vector).parse()
+
+    def theirs(self):
+        """Autolev's response, evaluated."""
+        text = self.c.response.expr.strip()
+        if text in ("0>", "0>>"):
+            return np.zeros(3 if text == "0>" else (3, 3), dtype=complex)
+        value = self.parse(text)
+        return value.a if isinstance(value, _Matrix) else value
+
+    def ours(self):
+        """Our value, in the Newtonian frame for a vector or dyadic."""
+        ours = self.c.ours
+        if isinstance(ours, Vector):
+            out = np.zeros(3, dtype=complex)
+            for f, comps in ours.terms.items():
+                out = out + self.dcm(f) @ np.array([self.num(c) for c in comps])
+            return out
+        if isinstance(ours, Dyadic):
+            out = np.zeros((3, 3), dtype=complex)
+            for (fa, fb), m in ours.terms.items():
+                mm = np.array([[self.num(m[i, j]) for j in range(3)] for i in range(3)])
+                out = out + self.dcm(fa) @ mm @ self.dcm(fb).T
+            return out
+        if hasattr(ours, "shape") and not isinstance(ours, np.ndarray):
+            return np.array([[self.num(ours[i, j]) for j in range(ours.shape[1])]
+                             for i in range(ours.shape[0])])
+        return self.num(ours)
+
+
+def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> Outcome:
+    """Our value against Autolev's response at sample points: match within `tol`,
+    mismatch, or not comparable."""
+    comparison = _Comparison(model, by_name, r, ours, known, session)
+    sampled = _sample(comparison, session.path, points)
+    if isinstance(sampled, Outcome):
+        return sampled
+    a, b = sampled
+    # values are O(1) at the sample points; a scale below 1e-6 is cancellation to zero
+    scale = max(float(np.abs(a).max(initial=0)), float(np.abs(b).max(initial=0)), 1e-6)
+    err = float(np.abs(a - b).max(initial=0)) / scale
+    if err <= tol:
+        return Outcome(r, "match", f"relative difference {err:.1e}", a[0], b[0])
+    return Outcome(r, "mismatch", f"relative difference {err:.1e} at {len(a)} points",
+                   a[0], b[0])
+
+
+def _sample(comparison: _Comparison, path: str, points: int):
+    """(ours, Autolev's) at up to `points` points, as arrays, or the Outcome of a
+    response that cannot be evaluated.  The points are those where both values are
+    real: equal expressions may take different branches of a root or logarithm where
+    they are complex (Euler parameters far from unit length make 1 - Z10^2 negative)."""
+    r = comparison.response
     ours_all, theirs_all, complex_pairs = [], [], []
     for seed, span in _POINTS:
         try:
-            mine, theirs = evaluate(NumericPoint(defs, seed=seed, span=span))
+            mine, theirs = comparison.values_at(NumericPoint(comparison.defs, seed=seed,
+                                                             span=span))
         except NotComparable as exc:
             return Outcome(r, "not comparable", str(exc))
-        except (ZeroDivisionError, OverflowError, ValueError, TypeError) as exc:
+        except (ZeroDivisionError, OverflowError) as exc:
             return Outcome(r, "not comparable", f"cannot evaluate: {exc}")
         except RecursionError:
             return Outcome(r, "not comparable", "the response is nested too deeply to read")
+        except Exception as exc:  # any other is autolev's bug: re-raised as one
+            raise AutolevInternalError(Location(path, r.line, 1), f"comparing response "
+                                       f"({r.number}) {r.lhs}", exc) from exc
         if _is_real(mine) and _is_real(theirs):
             ours_all.append(mine)
             theirs_all.append(theirs)
@@ -626,16 +692,13 @@ def _compare(model, by_name, r: Response, ours, known, session, points, tol) -> 
         elif len(complex_pairs) < points:
             complex_pairs.append((mine, theirs))
     if not ours_all:
+        if any(np.isnan(m).any() or np.isnan(t).any() for m, t in complex_pairs):
+            # no value anywhere (a function refusing its argument, MIN a complex number)
+            return Outcome(r, "not comparable", "cannot evaluate: no value at the points "
+                           "tried")
         ours_all = [m for m, _ in complex_pairs]
         theirs_all = [t for _, t in complex_pairs]
-    a, b = np.array(ours_all), np.array(theirs_all)
-    # values are O(1) at the sample points; a scale below 1e-6 is cancellation to zero
-    scale = max(float(np.abs(a).max(initial=0)), float(np.abs(b).max(initial=0)), 1e-6)
-    err = float(np.abs(a - b).max(initial=0)) / scale
-    if err <= tol:
-        return Outcome(r, "match", f"relative difference {err:.1e}", a[0], b[0])
-    return Outcome(r, "mismatch", f"relative difference {err:.1e} at {len(a)} points",
-                   a[0], b[0])
+    return np.array(ours_all), np.array(theirs_all)
 
 
 __all__ = ["verify", "read_session", "Report", "Outcome", "Session", "Response"]

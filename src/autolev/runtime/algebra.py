@@ -5,6 +5,7 @@ from __future__ import annotations
 import sympy as sm
 
 from . import symbols as S
+from .functions import scalar_values, whole_number
 from .linalg import coefficients, solve_linear
 from .vector import AutolevModelError, Vector, body_fixed, rodrigues, space_fixed
 
@@ -13,7 +14,7 @@ class AlgebraMixin:
     def evaluate(self, value, mapping: dict):
         """EVALUATE(E, x=v, ...): E with the values substituted, also inside the
         definitions E uses (names are kept where nothing changes)."""
-        mapping = {sm.sympify(k): sm.sympify(v) for k, v in mapping.items()}
+        mapping = scalar_values(mapping, "EVALUATE")
         return self.map_scalars(value, lambda e: self.defs.substitute(e, mapping))
 
     def coef(self, value, var):
@@ -77,7 +78,7 @@ class AlgebraMixin:
             return self.map_scalars(value, sm.expand)
         if hi is None:
             lo, hi = 0, lo
-        lo, hi = int(lo), int(hi)
+        lo, hi = whole_number(lo, "EXPAND's degree"), whole_number(hi, "EXPAND's degree")
 
         def varying(sym) -> bool:
             base = S.base_and_order(sym)[0]
@@ -100,8 +101,8 @@ class AlgebraMixin:
         (lo, hi)); with x=a:dx the expansion is in the increment dx (perturbation
         about a), otherwise in x-a.  Works through definitions, so expressions in Z
         form stay in Z form: term k is (D^k E)(a)/k! with D = sum_i d_i d/dx_i."""
-        lo, hi = (0, int(order)) if not isinstance(order, tuple) else (int(order[0]),
-                                                                         int(order[1]))
+        lo, hi = (0, order) if not isinstance(order, tuple) else order
+        lo, hi = whole_number(lo, "TAYLOR's order"), whole_number(hi, "TAYLOR's order")
         at, steps, increments = {}, [], {}
         for var, a, inc in points:
             a = sm.sympify(a)

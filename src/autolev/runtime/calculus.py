@@ -84,9 +84,11 @@ class NumericPoint:
         return sm.Float(lo + (hi - lo) * h)
 
 
-def _number(e):
+def _number_at(e, values: dict) -> complex:
+    """The value of e with numbers for its symbols; NaN where it has none there (a
+    symbol left, or a function refusing the argument it gets, as MIN a complex one)."""
     try:
-        return complex(e)
+        return complex(e.xreplace(values))
     except (TypeError, ValueError):
         return complex("nan")
 
@@ -118,6 +120,13 @@ def is_small(e: sm.Basic, limit: int = SMALL) -> bool:
             return False
         stack.extend(node.args)
     return True
+
+
+def refused_substitution(mapping: Mapping, exc: ValueError) -> AutolevModelError:
+    """The error of substituting values that a function then refuses (MAX of 1/0)."""
+    given = ", ".join(f"{k} = {v}" for k, v in mapping.items())
+    return AutolevModelError(f"substituting {given} leaves an expression without a value "
+                             f"({exc})")
 
 
 def _exact_number(v) -> bool:
@@ -183,8 +192,8 @@ class Definitions:
         """Record `sym := expr`.  A user definition drops derived caches (a new
         definition of X' changes what DT(X) is)."""
         expr = sm.sympify(expr)
-        if sym in expr.free_symbols or any(
-                sym in self.primitive_deps(f) for f in expr.free_symbols if f in self.rhs):
+        # through the definitions as they stand: a redefined sym is among them
+        if self.depends_on(expr, sym):
             raise AutolevModelError(f"{sym} cannot be defined in terms of itself: {sym} = "
                                     f"{expr}")
         if not isinstance(sym, Z):
@@ -334,7 +343,7 @@ class Definitions:
         """d expr / d x, through every definition (x itself is not expanded)."""
         expr = sm.sympify(expr)
         if not isinstance(x, sm.Symbol):
-            raise TypeError(f"can only differentiate with respect to a symbol, not {x}")
+            raise AutolevModelError(f"D differentiates with respect to a name, not {x}")
         relevant = [s for s in self._defined_in(expr) if s != x]
         if x in self.rhs:
             def depends(s):
@@ -496,7 +505,10 @@ class Definitions:
             return expr
         if any(_exact_number(v) for v in repl.values()):
             refuse_huge_powers(expr, repl)
-        return expr.xreplace(repl)
+        try:
+            return expr.xreplace(repl)
+        except ValueError as exc:    # sympy's refusal of a function's new argument
+            raise refused_substitution(mapping, exc) from None
 
     def explicit(self, expr, keep: Iterable[sm.Symbol] = ()) -> sm.Expr:
         """expr with every definition (and Z) expanded, except the symbols in `keep`."""
@@ -524,8 +536,8 @@ class Definitions:
         cache = point.cache
         for s in self._post_order(self._defined_in(expr), cache):
             rhs = self.rhs[s]
-            cache[s] = _number(rhs.xreplace({f: point.value(f, cache) for f in self.free(s)}))
-        return _number(expr.xreplace({f: point.value(f, cache) for f in expr.free_symbols}))
+            cache[s] = _number_at(rhs, {f: point.value(f, cache) for f in self.free(s)})
+        return _number_at(expr, {f: point.value(f, cache) for f in expr.free_symbols})
 
     def evaluation_order(self, roots: Iterable[sm.Symbol], given=()) -> list[sm.Symbol]:
         """Defined symbols needed to evaluate `roots`, dependencies first; symbols in

@@ -7,7 +7,7 @@ import re
 import numpy as np
 import sympy as sm
 
-from .calculus import is_real_number, refuse_huge_powers
+from .calculus import is_real_number, refuse_huge_powers, refused_substitution
 from .printer import number_value
 from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
 
@@ -128,6 +128,14 @@ def set_element(m, index: tuple, value) -> sm.Matrix:
     return m
 
 
+def whole_number(x, what: str) -> int:
+    """A count, order or index the model gives, as an int (a number's whole part)."""
+    try:
+        return int(x)
+    except TypeError:                # a symbol or expression: not a number
+        raise AutolevModelError(f"{what} must be a number, not {x}") from None
+
+
 def _index(i) -> int:
     try:
         k = int(i)
@@ -143,8 +151,12 @@ def block_matrix(rows) -> sm.Matrix:
     built = []
     for row in rows:
         parts = [x if isinstance(x, sm.MatrixBase) else sm.Matrix([[x]]) for x in row]
-        built.append(sm.Matrix.hstack(*parts))
-    return sm.Matrix.vstack(*built)
+        built.append(parts)
+    try:
+        return sm.Matrix.vstack(*[sm.Matrix.hstack(*parts) for parts in built])
+    except sm.ShapeError as exc:     # blocks whose rows or columns do not line up
+        raise AutolevModelError(f"the blocks of this matrix do not fit together: "
+                                f"{exc}") from None
 
 
 def transpose(m) -> sm.Matrix:
@@ -152,15 +164,19 @@ def transpose(m) -> sm.Matrix:
 
 
 def trace(m):
-    return sm.Matrix(m).trace()
+    m = sm.Matrix(m)
+    if not m.is_square:
+        raise AutolevModelError(f"TRACE needs a square matrix, not {m.rows}x{m.cols}")
+    return m.trace()
 
 
 def diagmat(n, *args) -> sm.Matrix:
     """DIAGMAT(n, x): x on the diagonal of n x n; DIAGMAT(n, m, x): of n x m."""
-    if len(args) == 1:
-        rows, cols, x = int(n), int(n), args[0]
-    else:
-        rows, cols, x = int(n), int(args[0]), args[1]
+    rows = whole_number(n, "DIAGMAT's number of rows")
+    cols = whole_number(args[0], "DIAGMAT's number of columns") if len(args) == 2 else rows
+    x = args[-1]
+    if rows < 0 or cols < 0:
+        raise AutolevModelError(f"DIAGMAT: a matrix cannot have {rows} x {cols} elements")
     if rows * cols > MAX_MATRIX_ELEMENTS:
         raise AutolevModelError(f"DIAGMAT: a {rows} x {cols} matrix has more than "
                                 f"{MAX_MATRIX_ELEMENTS} elements, the most that is built")
@@ -171,13 +187,13 @@ def _selection(items, count: int) -> list[int]:
     out = []
     for it in items:
         if isinstance(it, tuple):
-            lo, hi = int(it[0]), int(it[1])
+            lo, hi = whole_number(it[0], "an index"), whole_number(it[1], "an index")
             # the ends first: a range of millions outside the matrix is never listed
             if lo <= hi and not 1 <= lo <= hi <= count:
                 raise AutolevModelError(f"indices {lo}:{hi} are outside 1..{count}")
             out.extend(range(lo, hi + 1))
         else:
-            out.append(int(it))
+            out.append(whole_number(it, "an index"))
     for k in out:
         if not 1 <= k <= count:
             raise AutolevModelError(f"index {k} is outside 1..{count}")
@@ -237,13 +253,25 @@ def _map(x, fn):
     return fn(sm.sympify(x))
 
 
+def scalar_values(mapping: dict, what: str) -> dict:
+    """The substitutions of REPLACE or EVALUATE, sympified: each value is a scalar."""
+    for k, v in mapping.items():
+        if isinstance(v, (Vector, Dyadic, sm.MatrixBase)):
+            raise AutolevModelError(f"{what}: {k} is a scalar; it cannot be replaced by a "
+                                    f"{'matrix' if isinstance(v, sm.MatrixBase) else 'vector'}")
+    return {sm.sympify(k): sm.sympify(v) for k, v in mapping.items()}
+
+
 def replace(x, mapping: dict):
     """REPLACE(E, a=b, ...): substitute sub-expressions."""
-    mapping = {sm.sympify(k): sm.sympify(v) for k, v in mapping.items()}
+    mapping = scalar_values(mapping, "REPLACE")
 
     def substituted(e):
         refuse_huge_powers(e, mapping)
-        return e.subs(mapping)
+        try:
+            return e.subs(mapping)
+        except ValueError as exc:    # sympy's refusal of a function's new argument
+            raise refused_substitution(mapping, exc) from None
     return _map(x, substituted)
 
 
@@ -272,7 +300,7 @@ def polynomial(coeffs, var, degree=None):
     the coefficients of E in x, from x^n down to x^0 (the inverse)."""
     if degree is not None:
         e = sm.expand(sm.sympify(coeffs))
-        n = int(degree)
+        n = whole_number(degree, "POLYNOMIAL's degree")
         return sm.Matrix([[e.coeff(var, k) if k else e.subs(var, 0)
                            for k in range(n, -1, -1)]])
     if not isinstance(coeffs, (list, tuple, sm.MatrixBase)):
@@ -290,7 +318,10 @@ def roots(p, var=None, degree=None):
     if var is None:
         coeffs = list(sm.Matrix(p))
     else:
-        coeffs = sm.Poly(sm.expand(p), var).all_coeffs()
+        try:
+            coeffs = sm.Poly(sm.expand(p), var).all_coeffs()
+        except sm.PolynomialError:
+            raise AutolevModelError(f"ROOTS: {p} is not a polynomial in {var}") from None
     if all(sm.sympify(c).is_number for c in coeffs):
         r = np.roots([complex(sm.N(c)) for c in coeffs])
         order = sorted(range(len(r)), key=lambda i: (round(r[i].real, 12),
@@ -308,7 +339,10 @@ def roots(p, var=None, degree=None):
 
 def epsilon(x, tol):
     """EPSILON(E, tol): numbers smaller than tol in magnitude become 0."""
-    tol = float(tol)
+    try:
+        tol = float(tol)
+    except TypeError:                # a symbol or expression: not a number
+        raise AutolevModelError(f"EPSILON's tolerance must be a number, not {tol}") from None
 
     def clean(e):
         return e.xreplace({f: 0 for f in e.atoms(sm.Float) if abs(float(f)) < tol})

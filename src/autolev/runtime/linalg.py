@@ -1,6 +1,8 @@
 """Small symbolic linear algebra that keeps expressions small (Z-named entries)."""
 from __future__ import annotations
 
+import cmath
+
 import sympy as sm
 
 from .calculus import Definitions, NumericPoint
@@ -239,7 +241,13 @@ def _cramer(a: sm.Matrix, b: sm.Matrix, defs: Definitions, what: str, generic) -
     n = a.rows
     rows = [[a[i, j] for j in range(n)] for i in range(n)]
     det = _det(rows, defs)
-    if det == 0 or (not det.is_number and _small(defs.numeric(det, generic))):
+    value = 0j if det == 0 else None if det.is_number else defs.numeric(det, generic)
+    if value is not None and cmath.isnan(value):
+        raise AutolevModelError(f"cannot solve {what}: the determinant of its equations has "
+                                "no value for generic values of its names (it divides by "
+                                "zero there, or gives a function such as MIN a complex "
+                                "number)")
+    if value is not None and _small(value):
         raise AutolevModelError(f"cannot solve {what}: the equations are singular (their "
                                 "determinant is zero)")
     out = []

@@ -227,6 +227,8 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
             return
         if not isinstance(sym, sm.Symbol):
             raise AutolevModelError(f"only a declared name can be defined, not {sym}")
+        if isinstance(value, (Vector, Dyadic)):
+            raise AutolevModelError(f"{sym} is a scalar; it cannot be given a vector or dyadic")
         value = sm.sympify(value)
         if self._is_speed_definition(sym, value):
             # U = Q' (or a combination of rates): a kinematical equation written for

@@ -588,6 +588,8 @@ class Frame:
         """SIMPROT(parent, self, axis, angle): self is parent turned by angle about axis
         (1, 2, 3, negative for the opposite direction, or a vector)."""
         angle = _s(angle)
+        if angle.has(sm.zoo, sm.oo, sm.nan):
+            raise AutolevModelError(f"SIMPROT: the angle is infinite or undefined ({angle})")
         if isinstance(axis, Vector):
             comps = axis.components_in(parent)
             norm = sm.sqrt(sum(c ** 2 for c in comps))
