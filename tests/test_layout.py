@@ -29,6 +29,7 @@ def test_a_long_call_puts_one_item_per_line():
     assert call_lines("f(", ["a", "b"]) == "f(a, b)"
     items = [f"item{i}" for i in range(30)]
     assert call_lines("f(", items).split("\n") == ["f(", *(f"    {i}," for i in items), ")"]
+    assert call_lines("m([", items, "])").split("\n")[-1] == "])"
 
 
 def test_the_goldens_over_the_width_are_only_those_known():

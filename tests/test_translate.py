@@ -191,3 +191,23 @@ def test_the_module_imports_sympy_only_when_it_uses_it():
         namespace: dict = {}
         exec(compile(text, "<generated>", "exec"), namespace)
         assert namespace["model"] is not None
+
+
+def test_a_new_column_set_element_by_element_in_a_row_is_one_matrix():
+    code = translate("CONSTANTS A, B\nD[1] = A\nD[2] = B\nX = D[2]")
+    assert "D = sm.Matrix([A, B])" in code and "set_element" not in code
+    assert build("CONSTANTS A, B\nD[1] = A\nD[2] = B\nX = D[2]")["X"] == build(
+        "CONSTANTS A, B\nD[1] = A\nD[2] = B")["D"][1]
+
+
+@pytest.mark.parametrize("text", [
+    "CONSTANTS A, B\nD = [0; 0]\nD[1] = A\nD[2] = B",     # D has a value already
+    "CONSTANTS A, B\nD[1] = A\nD[2] = D[1] + B",          # an element reads D
+    "CONSTANTS A, B\nD[2] = A\nD[1] = B",                 # not in order 1..n
+    "CONSTANTS A, B\nD[1] = A\nD[1] = B",                 # an element set twice
+    "CONSTANTS A, B\nD[1] = A\nX = 1\nD[2] = B",          # not consecutive
+    "CONSTANTS A, B\nD[1] = A\nD[2] += B",
+])
+def test_a_run_that_is_not_plainly_a_new_column_is_set_element_by_element(text):
+    code = translate(text)
+    assert "sm.Matrix([A, B])" not in code and "D = al.set_element(" in code

@@ -2,6 +2,8 @@
 
 Importing this module builds the model; running it performs the model's
 CODE commands with its INPUT values."""
+import sympy as sm
+
 import autolev.runtime as al
 
 if __name__ == "__main__":
@@ -101,17 +103,15 @@ P5.v2pt_theory(P4, N, B4)
 
 # the free end of link 4 stays at NO; the auxiliary speeds let it move
 # DEPENDENT[1] = DOT(V_P5_N>, N1>) + UA1
-DEPENDENT = al.set_element(None, (1,), al.dot(P5.vel(N), N.x) + UA1)
 # DEPENDENT[2] = DOT(V_P5_N>, N2>) + UA2
-DEPENDENT = al.set_element(DEPENDENT, (2,), al.dot(P5.vel(N), N.y) + UA2)
+DEPENDENT = sm.Matrix([al.dot(P5.vel(N), N.x) + UA1, al.dot(P5.vel(N), N.y) + UA2])
 # CONSTRAIN(DEPENDENT[U2, U3])
 model.constrain(DEPENDENT, [U2, U3])
 # V_PA_N> = UA1*N1> + UA2*N2>
 PA.set_vel(N, UA1*N.x + UA2*N.y)
 # AUXILIARY[1] = UA1
-AUXILIARY = al.set_element(None, (1,), UA1)
 # AUXILIARY[2] = UA2
-AUXILIARY = al.set_element(AUXILIARY, (2,), UA2)
+AUXILIARY = sm.Matrix([UA1, UA2])
 # CONSTRAIN(AUXILIARY[UA1, UA2])
 model.constrain_auxiliary(AUXILIARY, [UA1, UA2])
 

@@ -2,6 +2,8 @@
 
 Importing this module builds the model; running it performs the model's
 CODE commands with its INPUT values."""
+import sympy as sm
+
 import autolev.runtime as al
 
 if __name__ == "__main__":
@@ -68,9 +70,8 @@ CN.v2pt_theory(CO, N, C)
 
 # rolling without slip: the contact point of the disc is at rest
 # DEPENDENT[1] = DOT(V_CN_N>, N1>)
-DEPENDENT = al.set_element(None, (1,), al.dot(CN.vel(N), N.x))
 # DEPENDENT[2] = DOT(V_CN_N>, N2>)
-DEPENDENT = al.set_element(DEPENDENT, (2,), al.dot(CN.vel(N), N.y))
+DEPENDENT = sm.Matrix([al.dot(CN.vel(N), N.x), al.dot(CN.vel(N), N.y)])
 # CONSTRAIN(DEPENDENT[U4, U5])
 model.constrain(DEPENDENT, [U4, U5])
 

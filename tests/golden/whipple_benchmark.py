@@ -138,15 +138,17 @@ FN.v2pt_theory(FO, N, F)
 
 # rolling without slip; the vertical velocity of FN keeps the front wheel on the ground
 # DEPENDENT[1] = DOT(V_DN_N>, N1>)
-DEPENDENT = al.set_element(None, (1,), al.dot(DN.vel(N), N.x))
 # DEPENDENT[2] = DOT(V_DN_N>, N2>)
-DEPENDENT = al.set_element(DEPENDENT, (2,), al.dot(DN.vel(N), N.y))
 # DEPENDENT[3] = DOT(V_FN_N>, N1>)
-DEPENDENT = al.set_element(DEPENDENT, (3,), al.dot(FN.vel(N), N.x))
 # DEPENDENT[4] = DOT(V_FN_N>, N2>)
-DEPENDENT = al.set_element(DEPENDENT, (4,), al.dot(FN.vel(N), N.y))
 # DEPENDENT[5] = DOT(V_FN_N>, N3>)
-DEPENDENT = al.set_element(DEPENDENT, (5,), al.dot(FN.vel(N), N.z))
+DEPENDENT = sm.Matrix([
+    al.dot(DN.vel(N), N.x),
+    al.dot(DN.vel(N), N.y),
+    al.dot(FN.vel(N), N.x),
+    al.dot(FN.vel(N), N.y),
+    al.dot(FN.vel(N), N.z),
+])
 # CONSTRAIN(DEPENDENT[U1, U2, U3, U5, U8])
 model.constrain(DEPENDENT, [U1, U2, U3, U5, U8])
 

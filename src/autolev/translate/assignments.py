@@ -1,8 +1,11 @@
 """Assignments: `X = ...`, `X += ...`, `M[i, j] = ...`, `V> = ...` and A_B = (a DCM)."""
 from __future__ import annotations
 
+import re
+
 from .. import ir
 from .core import FRAME_KINDS, STATEMENTS, Entry, NameKind, Translator, Typed, ValueType
+from .emit import call_lines
 from .special import assign_vector
 
 # -- assignments ---------------------------------------------------------------------------
@@ -11,7 +14,68 @@ _COMPOUND = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}
 
 @STATEMENTS.register(ir.Assignment)
 def assignment(tr: Translator, st: ir.Assignment) -> None:
-    assign(tr, st.target, st.op, st.value)
+    run = _column_runs(tr).get(id(st))
+    if run is None:
+        assign(tr, st.target, st.op, st.value)
+    elif st is run[-1]:
+        _assign_column(tr, run)
+    # an earlier element of a run is written with the run's last statement
+
+
+def _column_runs(tr: Translator) -> dict[int, list[ir.Assignment]]:
+    """The runs `X[1] = a`, `X[2] = b`, ... `X[n] = z` (n > 1, consecutive statements) of a
+    name X no earlier statement mentions, by the id of each of their statements."""
+    runs = getattr(tr, "_column_runs", None)
+    if runs is None:
+        runs, seen = {}, set()
+        statements = tr.program.statements
+        i = 0
+        while i < len(statements):
+            run = _run_at(statements, i)
+            if len(run) > 1 and run[0].target.name.lower() not in seen:
+                runs.update((id(s), run) for s in run)
+            for s in statements[i:i + max(len(run), 1)]:
+                seen.update(w.lower() for w in re.findall(r"\w+", s.text))
+            i += max(len(run), 1)
+        tr._column_runs = runs
+    return runs
+
+
+def _run_at(statements: list[ir.Statement], i: int) -> list[ir.Assignment]:
+    """The statements from i on that set elements 1, 2, ... of one name, none reading it."""
+    run: list[ir.Assignment] = []
+    for st in statements[i:]:
+        target = getattr(st, "target", None)
+        if not (isinstance(st, ir.Assignment) and st.op == "=" and isinstance(target, ir.Index)
+                and not target.primes and len(target.indices) == 1
+                and isinstance(target.indices[0], ir.Number)
+                and target.indices[0].text == str(len(run) + 1)):
+            break
+        key = target.name.lower()
+        if run and key != run[0].target.name.lower():
+            break
+        if any(isinstance(n, (ir.Name, ir.Index)) and n.name.lower() == key
+               for n in ir.walk(st.value)):
+            break
+        run.append(st)
+    return run
+
+
+def _assign_column(tr: Translator, run: list[ir.Assignment]) -> None:
+    """A new name's elements 1..n, set one by one in a row, as one column."""
+    codes = []
+    for st in run:
+        value = tr.expr(st.value)
+        if value.type in (ValueType.FRAME, ValueType.POINT, ValueType.LIST):
+            raise tr.error(f"a {value.type} cannot be assigned", st.value, "T001")
+        if value.type not in (ValueType.SCALAR, ValueType.UNKNOWN):
+            raise tr.error(f"a matrix element is a scalar, not a {value.type}", st.target,
+                           "T001")
+        codes.append(value.code)
+    name = run[0].target.name
+    entry = Entry(tr.py_name("value", name), NameKind.VALUE, ValueType.MATRIX)
+    tr.values[name.lower()] = entry
+    tr.emit(call_lines(f"{entry.py} = sm.Matrix([", codes, "])"))
 
 
 def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> None:

@@ -69,9 +69,9 @@ def quoted_names(names: list[str]) -> str:
                           for i, p in enumerate(parts)) + ")"
 
 
-def call_lines(head: str, items: list[str]) -> str:
-    """head + items + ')' on one line, or one item per line when that is long."""
-    line = head + ", ".join(items) + ")"
+def call_lines(head: str, items: list[str], close: str = ")") -> str:
+    """head + items + close on one line, or one item per line when that is long."""
+    line = head + ", ".join(items) + close
     if len(line) <= MAX_WIDTH:
         return line
-    return "\n".join([head, *(f"    {it}," for it in items), ")"])
+    return "\n".join([head, *(f"    {it}," for it in items), close])
