@@ -42,6 +42,16 @@ def test_a_runtime_bug_is_an_internal_error_at_the_statement(tiny, broken_dot):
     assert isinstance(exc.__cause__, AttributeError)      # the traceback is kept
 
 
+def test_running_out_of_memory_is_neither_the_models_fault_nor_a_bug(tiny, monkeypatch):
+    from autolev.runtime.vector import Vector
+
+    def dot(self, other):
+        raise MemoryError
+    monkeypatch.setattr(Vector, "dot", dot)
+    with pytest.raises(MemoryError):
+        autolev.load(tiny)
+
+
 @pytest.mark.parametrize("traceback_wanted", [False, True])
 def test_the_cli_reports_an_internal_error_with_its_own_exit_status(
         tiny, broken_dot, capsys, monkeypatch, traceback_wanted):

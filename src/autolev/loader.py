@@ -59,6 +59,8 @@ def load_translation(translation, filename: str):
     lines = translation.code.splitlines()
     try:
         exec(code, module.__dict__)
+    except MemoryError:
+        raise                     # the machine's limit, neither the model's nor a bug
     except Exception as exc:  # judged below; re-raised either way
         failure = _translation_failure(exc, translation, lines, module.__file__)
         # an internal error keeps autolev's traceback; the user's diagnostic needs none
@@ -178,6 +180,8 @@ def run_python(text: str, filename: str) -> object:
                                              None)) from None
     try:
         exec(code, module.__dict__)
+    except MemoryError:
+        raise                     # the machine's limit, neither the model's nor a bug
     except Exception as exc:  # judged below; re-raised either way
         failure = _python_failure(exc, text, filename)
         # an internal error keeps autolev's traceback; the user's diagnostic needs none

@@ -681,6 +681,8 @@ def _sample(comparison: _Comparison, path: str, points: int):
             return Outcome(r, "not comparable", f"cannot evaluate: {exc}")
         except RecursionError:
             return Outcome(r, "not comparable", "the response is nested too deeply to read")
+        except MemoryError:
+            raise                 # the machine's limit, neither the response's nor a bug
         except Exception as exc:  # any other is autolev's bug: re-raised as one
             raise AutolevInternalError(Location(path, r.line, 1), f"comparing response "
                                        f"({r.number}) {r.lhs}", exc) from exc
