@@ -87,3 +87,13 @@ def test_an_in_file_of_strangers_is_one_warning(stiff, tmp_path):
     assert "(50000 names) are not inputs of this model; ignored" in messages[0]
     # the values were read: the file says TFINAL = 0.1
     assert r.ok and len(r.t) == 2 and np.isclose(r["Y"][-1], math.exp(-0.1), atol=1e-6)
+
+
+def test_a_verbose_run_reports_the_failure_with_its_summary(tmp_path, capsys):
+    path = tmp_path / "blowup.al"
+    path.write_text("VARIABLES X'\nINPUT X = 1, TFINAL = 2, INTEGSTP = 0.1\nX' = X^2\n"
+                    "OUTPUT T, X\nCODE ODE() blowup.c\n")
+    [r] = autolev.load(path).run(out_dir=tmp_path / "out", verbose=True)
+    printed = capsys.readouterr().out
+    assert printed.startswith("CODE ODE blowup.c: ")
+    assert r.failure in printed and "wrote" in printed

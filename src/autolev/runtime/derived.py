@@ -16,6 +16,3 @@ class DerivedCache:
         if kept is None or kept[0] != state:
             kept = self._tables[kind] = (state, {})
         return kept[1]
-
-    def clear(self) -> None:
-        self._tables.clear()

@@ -47,7 +47,9 @@ class SimulationMixin:
                                       progress=sys.stderr if verbose else None, **options):
             results.append(done.result)
             if verbose:
-                print(done.summary() + "".join(f"\n  wrote {f}" for f in done.result.files))
+                print(done.summary()
+                      + (f"\n  {done.result.failure}" if done.result.failure else "")
+                      + "".join(f"\n  wrote {f}" for f in done.result.files))
         return results
 
     def commands_named(self, code=None) -> list[CodeCommand]:
