@@ -1,17 +1,16 @@
 """From parse trees to the IR: statements with spans, expressions, the symbol table.
 
-Also where `RUN file` and user macro calls are expanded: their text is read, parsed
-and built in place, with every span pointing into the file it came from and back to
-the statement that brought it in.
+The statements come from the include stage (`include.py`), with RUN files, macros
+and user functions already read and parsed; every span points into the file its
+text came from and back to the statement that brought it in.
 """
 from __future__ import annotations
 
 import contextlib
 import gc
 import itertools
-import os
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Iterable
 
 from antlr4 import Token
 from antlr4.tree.Tree import TerminalNode
@@ -20,9 +19,9 @@ from . import ir
 from ._antlr.AutolevParser import AutolevParser as P
 from .dispatch import Dispatch
 from .errors import Diagnostic, Location, Span
-from .source import (MAX_INCLUDE_DEPTH, MappedText, RunRefused, SourceFile, expand_macro,
-                     find_macro, is_within, mapped_source, placeholders, resolve_run)
-from .syntax import KNOWN_SETTINGS, Parser
+from .include import Includes, Origin, Piece
+from .source import SourceFile
+from .syntax import KNOWN_SETTINGS
 
 MAX_DECLARED_NAMES = 10000
 
@@ -66,61 +65,36 @@ def _gc_paused():
             gc.enable()
 
 
-class _Context:
-    """Where the statements being built come from."""
-
-    def __init__(self, mapped: MappedText, path: Path | None, display: str):
-        self.mapped = mapped
-        self.path = path
-        self.display = display
-
-
 class Builder:
     def __init__(self, filename: str, path: Path | None):
         self.filename = filename
-        self.root_path = path.resolve() if path is not None else None
-        self.model_root = self.root_path.parent if self.root_path is not None else None
-        self.parser = Parser()
+        self.includes = Includes(filename, path)
         self.symbols = ir.SymbolTable()
         self.statements: list[ir.Statement] = []
         self.diagnostics: list[Diagnostic] = []
-        self.files: list[str] = [filename]
-        self.sources: dict[str, list[str]] = {}
-        self._stack: list[Path] = [self.root_path] if self.root_path else []
-        self._ctx: _Context | None = None
-        self._function_files: dict[str, Path | None] = {}
+        self._ctx: Origin | None = None
+        self._piece: Piece | None = None
 
     # -- driving ---------------------------------------------------------------
     def build_source(self, src: SourceFile) -> None:
-        self.sources[src.name] = src.lines
-        with _gc_paused():
-            self._build(mapped_source(src), self.root_path, src.name)
+        self._build(self.includes.model(src))
 
     def build_macro_source(self, src: SourceFile) -> None:
         """Check a macro file on its own: each #k# stands for a name ARGk."""
-        used = placeholders(src)
-        args = [f"ARG{k}" for k in range(1, max(used, default=0) + 1)]
-        with _gc_paused():
-            self._build(expand_macro(src, args, None, ""), self.root_path, src.name)
+        self._build(self.includes.macro_file(src))
 
-    def _build(self, mapped: MappedText, path: Path | None, display: str) -> None:
-        outer = self._ctx
-        self._ctx = _Context(mapped, path, display)
-        parsed = self.parser.parse(mapped)
-        self.diagnostics.extend(parsed.diagnostics)
-        for line in parsed.lines:
-            body = line.tree.statementLine()
-            if body is None:
-                continue
-            for st in body.statement():
-                self._statement(st)
-        self._ctx = outer
+    def _build(self, pieces: Iterable[Piece]) -> None:
+        with _gc_paused():
+            for piece in pieces:
+                self._piece, self._ctx = piece, piece.origin
+                self._statement(piece.statement)
+        self._piece = self._ctx = None
+        self.diagnostics.extend(self.includes.diagnostics)
 
     def program(self) -> ir.Program:
-        prog = ir.Program(self.statements, self.symbols, self.filename,
-                          [d for d in self.diagnostics if d.severity != "error"], self.files,
-                          self.sources)
-        return prog
+        return ir.Program(self.statements, self.symbols, self.filename,
+                          [d for d in self.diagnostics if d.severity != "error"],
+                          self.includes.files, self.includes.sources)
 
     @property
     def errors(self) -> list[Diagnostic]:
@@ -309,11 +283,15 @@ class Builder:
 
     @_STATEMENTS.register(P.ExpressionStatementContext)
     def _expression_statement(self, ctx: P.ExpressionStatementContext) -> ir.Statement | None:
+        macro = self._piece.expansion
+        if macro is not None:         # a user macro's call: its statements follow
+            if macro.path is None:
+                return None
+            call = ctx.expr().primary()
+            return ir.MacroCall(name=macro.name, args=macro.args, path=str(macro.path),
+                                span=self._span(call), text=self._text(call))
         expr = self._expr(ctx.expr())
         if isinstance(expr, ir.Call) and isinstance(ctx.expr().getChild(0), P.PrimaryContext):
-            call_ctx = ctx.expr().primary()
-            if self._macro(call_ctx, expr):
-                return None
             return ir.Command(call=expr, **self._common(ctx))
         if isinstance(expr, ir.Name) and expr.name.upper() in STATEMENT_KEYWORDS:
             self._error(ctx, "E005", f"{expr.name.upper()} needs at least one item after it")
@@ -425,134 +403,15 @@ class Builder:
             self._error(v, "E014", f"{name} needs a whole number, not {v.getText()}")
         return ir.Setting(name=name, value=value, **self._common(ctx))
 
-    # -- RUN and macros ----------------------------------------------------------
+    # -- RUN ----------------------------------------------------------------------
     @_STATEMENTS.register(P.RunStatementContext)
-    def _run(self, ctx: P.RunStatementContext) -> None:
+    def _run(self, ctx: P.RunStatementContext) -> ir.Run | None:
+        """The included file's statements follow (the include stage read them)."""
         name = self._filename(ctx.fileName())
-        including = self._ctx.path
-        if including is None or self.model_root is None:
-            self._error(ctx.fileName(), "E020", f"RUN {name}: a model given as text has no "
-                        "folder to look in; parse the file itself, or pass filename=")
-            return
-        try:
-            found = resolve_run(name, including, self.model_root)
-        except RunRefused:
-            self._error(ctx.fileName(), "E021", f"RUN {name}: refused, the path leaves the "
-                        f"model's folder ({self.model_root})")
-            return
-        if found is None:
-            self._error(ctx.fileName(), "E022", f"RUN {name}: no such file next to the model "
-                        f"(looked in {including.parent} and the folders above it)")
-            return
-        found = found.resolve()
-        if found in self._stack:
-            self._error(ctx.fileName(), "E023", f"RUN {name}: the file includes itself")
-            return
-        if len(self._stack) >= MAX_INCLUDE_DEPTH:
-            self._error(ctx.fileName(), "E024", f"RUN {name}: files nested deeper than "
-                        f"{MAX_INCLUDE_DEPTH} levels")
-            return
-        display = self._display_name(found)
-        self.statements.append(ir.Run(filename=name, path=str(found), **self._common(ctx)))
-        where = self._ctx.mapped.locate(ctx.start.start)
-        src = SourceFile.read(found, display)
-        self.files.append(display)
-        self.sources[display] = src.lines
-        self._stack.append(found)
-        self._build(mapped_source(src, where, f"the file included by RUN {name}"), found, display)
-        self._stack.pop()
-
-    def _display_name(self, found: Path) -> str:
-        rel = os.path.relpath(found, self.model_root)
-        return os.path.join(os.path.dirname(self.filename), rel)
-
-    def _macro(self, ctx: P.CallAtomContext, call: ir.Call) -> bool:
-        """Expand `call` if it names a user macro NAME.A; False when it does not."""
-        if self.model_root is None:
-            return False
-        dirs = []
-        if self._ctx.path is not None:
-            dirs.append(self._ctx.path.parent)
-        dirs.append(self.model_root)
-        found = find_macro(call.name, dirs)
-        if found is None:
-            return False
-        args_ctx = ctx.argList().arg() if ctx.argList() else []
-        args = [self._text(a).strip() for a in args_ctx]
-        got = self._expansion_source(ctx, "macro", call.name, found, args)
-        if got is None:
-            return True
-        found, src, display = got
-        self.statements.append(ir.MacroCall(name=call.name, args=tuple(args), path=str(found),
-                                            span=self._span(ctx), text=self._text(ctx)))
-        where = self._ctx.mapped.locate(ctx.start.start)
-        what = f"macro {call.name}({', '.join(args)})"
-        self._stack.append(found)
-        self._build(expand_macro(src, args, where, what), found, display)
-        self._stack.pop()
-        return True
-
-    def _expansion_source(self, ctx, what: str, name: str, found: Path, args: list[str]):
-        """(path, source, display name) of the macro or function file `found` for a call
-        with `args`, read and registered; None, after its diagnostic, when the file
-        leads outside the model's folder, wants more arguments, or calls itself."""
-        found = found.resolve()
-        if not is_within(found, self.model_root):
-            self._error(ctx, "E025", f"{what} {name}: refused, its file leads outside "
-                        f"the model's folder ({self.model_root}), through a link")
+        included = self._piece.expansion
+        if included is None or included.path is None:
             return None
-        display = self._display_name(found)
-        src = SourceFile.read(found, display)
-        used = placeholders(src)
-        if used and max(used) > len(args):
-            self._error(ctx, "E030", f"{what} {name} ({display}) uses #{max(used)}# but "
-                        f"this call gives {len(args)} argument{'s' if len(args) != 1 else ''}")
-            return None
-        if found in self._stack or len(self._stack) >= MAX_INCLUDE_DEPTH:
-            self._error(ctx, "E031", f"{what} {name} calls itself (directly or through "
-                        f"other {what}s)")
-            return None
-        if display not in self.files:
-            self.files.append(display)
-            self.sources[display] = src.lines
-        return found, src, display
-
-    def _user_function(self, ctx, name: str, arg_ctxs) -> ir.Expr | None:
-        """NAME(args) in an expression, with a file NAME.R next to the model: Autolev's
-        user function, one expression with #k# standing for the k-th argument's text
-        (DAS3's sym_atan2.r); None when there is no such file."""
-        key = name.lower()
-        if key not in self._function_files:
-            dirs = ([self._ctx.path.parent] if self._ctx.path is not None else []) + \
-                ([self.model_root] if self.model_root is not None else [])
-            self._function_files[key] = find_macro(name, dirs, ".r")
-        if self._function_files[key] is None or self.model_root is None:
-            return None
-        args = [self._text(a).strip() for a in arg_ctxs]
-        got = self._expansion_source(ctx, "function", name, self._function_files[key], args)
-        if got is None:
-            return None
-        found, src, display = got
-        where = self._ctx.mapped.locate(ctx.start.start)
-        mapped = expand_macro(src, args, where, f"function {name}({', '.join(args)})")
-        parsed = self.parser.parse(mapped)
-        self.diagnostics.extend(parsed.diagnostics)
-        bodies = [st.getChild(0) for line in parsed.lines
-                  if line.tree.statementLine() is not None
-                  for st in line.tree.statementLine().statement()]
-        if len(bodies) != 1 or not isinstance(bodies[0], P.ExpressionStatementContext):
-            if not parsed.diagnostics:
-                self._error(ctx, "E032", f"function {name} ({display}) must hold one "
-                            f"expression, not {len(bodies)} statements")
-            return None
-        outer = self._ctx
-        self._ctx = _Context(mapped, found, display)
-        self._stack.append(found)
-        try:
-            return self._expr(bodies[0].expr())
-        finally:
-            self._stack.pop()
-            self._ctx = outer
+        return ir.Run(filename=name, path=str(included.path), **self._common(ctx))
 
     # -- expressions -------------------------------------------------------------
     # The hot path: children are read directly, since ANTLR's typed accessors
@@ -621,10 +480,14 @@ class Builder:
     @_PRIMARIES.register(P.CallAtomContext)
     def _call_atom(self, ctx: P.CallAtomContext) -> ir.Expr:
         kids = ctx.children
+        body = self._piece.functions.get(ctx) if self._piece.functions else None
+        if body is not None:          # a user function NAME.R: its expression, built here
+            outer, self._ctx = self._ctx, body.origin
+            try:
+                return self._expr(body.expr)
+            finally:
+                self._ctx = outer
         arg_ctxs = kids[2].children[::2] if len(kids) == 4 else []
-        expanded = self._user_function(ctx, kids[0].start.text, arg_ctxs)
-        if expanded is not None:
-            return expanded
         return ir.Call(kids[0].start.text, tuple(self._arg(a) for a in arg_ctxs),
                        span=self._span(ctx))
 

@@ -1,0 +1,103 @@
+"""The include stage: RUN files, macros (NAME.A) and user functions (NAME.R) are read
+and parsed before the IR is built, and the IR builder reads no file."""
+import ast
+from pathlib import Path
+
+import pytest
+
+import autolev
+from autolev import ir
+from autolev.include import Includes
+from autolev.source import SourceFile
+
+SRC = Path(autolev.__file__).parent
+
+
+def write(path, text):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    return path
+
+
+def pieces_of(path):
+    includes = Includes(str(path), path)
+    return includes, list(includes.model(SourceFile.read(path, str(path))))
+
+
+def errors(path):
+    with pytest.raises(autolev.AutolevSyntaxError) as info:
+        autolev.parse(path)
+    return [d for d in info.value.diagnostics if d.severity == "error"]
+
+
+def test_the_stream_follows_run_and_macro_in_place(tmp_path):
+    write(tmp_path / "kin.al", "NEWTONIAN N\n")
+    write(tmp_path / "twice.a", "X#1# = 2*#1#\n")
+    f = write(tmp_path / "m.al", "CONSTANTS A\nRUN kin.al\ntwice(A)\nY = 1\n")
+    includes, pieces = pieces_of(f)
+    texts = [p.origin.mapped.slice(p.statement.start.start, p.statement.stop.stop + 1)
+             for p in pieces]
+    assert texts == ["CONSTANTS A", "RUN kin.al", "NEWTONIAN N", "twice(A)", "XA = 2*A", "Y = 1"]
+    run, macro = pieces[1].expansion, pieces[3].expansion
+    assert run.path == (tmp_path / "kin.al").resolve() and run.name == "kin.al"
+    assert macro.name == "twice" and macro.args == ("A",)
+    assert [p.origin.display for p in pieces][2].endswith("kin.al")
+    assert len(includes.files) == 3 and not includes.diagnostics
+
+
+def test_a_refused_run_is_marked_and_brings_nothing(tmp_path):
+    f = write(tmp_path / "m.al", "RUN missing.al\nY = 1\n")
+    includes, pieces = pieces_of(f)
+    assert len(pieces) == 2 and pieces[0].expansion.path is None
+    assert [d.code for d in includes.diagnostics] == ["E022"]
+
+
+def test_a_user_function_stands_for_its_expression(tmp_path):
+    write(tmp_path / "sq.r", "#1#*#1# + 1\n")
+    f = write(tmp_path / "m.al", "CONSTANTS A\nX = 3*sq(A)\n")
+    value = autolev.parse(f).statements[-1].value
+    # 3*(A*A + 1): the body is one expression, kept together as a call's value is
+    assert value.left == ir.Number("3")
+    assert value.right == ir.BinOp("+", ir.BinOp("*", ir.Name("A"), ir.Name("A")),
+                                   ir.Number("1"))
+    assert value.right.span.file.endswith("sq.r")
+
+
+def test_user_functions_nest_through_their_arguments(tmp_path):
+    write(tmp_path / "inc.r", "#1# + 1\n")
+    write(tmp_path / "dbl.r", "2*#1#\n")
+    f = write(tmp_path / "m.al", "CONSTANTS A\nX = dbl(inc(A))\n")
+    value = autolev.parse(f).statements[-1].value
+    assert value == ir.BinOp("*", ir.Number("2"),
+                             ir.BinOp("+", ir.Name("A"), ir.Number("1")))
+
+
+def test_a_function_calling_itself_and_one_with_two_statements(tmp_path):
+    write(tmp_path / "loop.r", "loop(#1#)\n")
+    write(tmp_path / "two.r", "#1# + 1; #1# + 2\n")
+    f = write(tmp_path / "m.al", "CONSTANTS A\nX = loop(A)\nY = two(A)\n")
+    assert sorted(d.code for d in errors(f)) == ["E031", "E032"]
+
+
+def test_a_function_wins_over_a_macro_of_the_same_name(tmp_path):
+    write(tmp_path / "f.r", "#1# + 1\n")
+    write(tmp_path / "f.a", "Z = #1#\n")
+    f = write(tmp_path / "m.al", "CONSTANTS A\nf(A)\n")
+    (st,) = autolev.parse(f).statements[1:]
+    assert st.kind == "display"
+    assert st.expr == ir.BinOp("+", ir.Name("A"), ir.Number("1"))
+
+
+def test_a_call_with_no_file_is_a_command(tmp_path):
+    f = write(tmp_path / "m.al", "CONSTANTS A\nexplicit(A)\n")
+    assert autolev.parse(f).statements[-1].kind == "command"
+
+
+def test_the_ir_builder_reads_no_file():
+    tree = ast.parse((SRC / "irbuild.py").read_text())
+    imported = {alias.name for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)
+                and node.module == "source" for alias in node.names}
+    assert imported == {"SourceFile"}          # the type of what it is given, nothing more
+    calls = {node.func.attr for node in ast.walk(tree)
+             if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)}
+    assert not calls & {"read", "read_text", "read_bytes", "parse"}
