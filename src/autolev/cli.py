@@ -319,52 +319,20 @@ def _name_values(items, option: str) -> dict | None:
 
 def cmd_linearize(ns: argparse.Namespace) -> int:
     """Linearize a model's CODE DYNAMICS at an operating point; print the eigenvalues."""
-
     from .runtime.errors import AutolevModelError
-    from .runtime.numerics.files import safe_stem
-    from .runtime.numerics.linearize import eigenvalue_table
 
     path = Path(ns.file)
-    overrides = _name_values(ns.set, "--set")
-    at = _name_values(ns.at, "--at")
-    if overrides is None or at is None:
+    request = _linearize_request(ns)
+    if request is None:
         return 2
-    point = {}
-    for name, text in at.items():
-        try:
-            point[name] = float(text)
-        except ValueError:
-            point[name] = math.nan
-        if not math.isfinite(point[name]):
-            print(f"autolev linearize: --at {name}={text}: not a finite number",
-                  file=sys.stderr)
-            return 2
-    sweep = _sweep_range(ns.sweep) if ns.sweep else None
-    if ns.sweep and sweep is None:
-        return 2
-    if ns.plot:
-        if sweep is None:
-            print("autolev linearize: --plot draws a --sweep", file=sys.stderr)
-            return 2
-        try:
-            import matplotlib  # noqa: F401
-        except ImportError:
-            print("autolev linearize: --plot needs matplotlib (pip install 'autolev[plot]')",
-                  file=sys.stderr)
-            return 2
+    overrides, point, sweep = request
     model = _load_for_run(path)
     if model is None:
         print(f"{path}: not linearized", file=sys.stderr)
         return 1
-    constraints = []
-    for name in _listed(ns.constraint):
-        try:
-            value = model.quantity(name)
-        except KeyError:
-            print(f"autolev linearize: --constraint {name}: the model has no quantity "
-                  "of that name", file=sys.stderr)
-            return 2
-        constraints += list(value) if hasattr(value, "shape") else [value]
+    constraints = _constraint_values(model, ns.constraint)
+    if constraints is None:
+        return 2
 
     def at(extra):
         return model.linearize(dict(point, **extra),
@@ -382,6 +350,62 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
+    return _report_eigenvalues(path, lin, ns.out)
+
+
+def _linearize_request(ns: argparse.Namespace):
+    """(--set values, --at point, --sweep range or None) from the options, or None after
+    printing what is wrong with them."""
+    overrides = _name_values(ns.set, "--set")
+    at = _name_values(ns.at, "--at")
+    if overrides is None or at is None:
+        return None
+    point = {}
+    for name, text in at.items():
+        try:
+            point[name] = float(text)
+        except ValueError:
+            point[name] = math.nan
+        if not math.isfinite(point[name]):
+            print(f"autolev linearize: --at {name}={text}: not a finite number",
+                  file=sys.stderr)
+            return None
+    sweep = _sweep_range(ns.sweep) if ns.sweep else None
+    if ns.sweep and sweep is None:
+        return None
+    if ns.plot:
+        if sweep is None:
+            print("autolev linearize: --plot draws a --sweep", file=sys.stderr)
+            return None
+        try:
+            import matplotlib  # noqa: F401
+        except ImportError:
+            print("autolev linearize: --plot needs matplotlib (pip install 'autolev[plot]')",
+                  file=sys.stderr)
+            return None
+    return overrides, point, sweep
+
+
+def _constraint_values(model, names) -> list | None:
+    """The model's quantities named by --constraint, each matrix taken element by
+    element; None after printing a name the model does not have."""
+    constraints = []
+    for name in _listed(names):
+        try:
+            value = model.quantity(name)
+        except KeyError:
+            print(f"autolev linearize: --constraint {name}: the model has no quantity "
+                  "of that name", file=sys.stderr)
+            return None
+        constraints += list(value) if hasattr(value, "shape") else [value]
+    return constraints
+
+
+def _report_eigenvalues(path: Path, lin, out_dir: str | None) -> int:
+    """Print a linearization's eigenvalues (and write them into `out_dir`)."""
+    from .runtime.numerics.files import safe_stem
+    from .runtime.numerics.linearize import eigenvalue_table
+
     if not lin.steady:
         print(f"{path}: warning: not an equilibrium or a steady motion: the accelerations "
               f"are {', '.join(f'{a:.6g}' for a in lin.accelerations)} there "
@@ -390,8 +414,8 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
     print(f"{len(lin.states)} states ({', '.join(lin.states)}); inputs: "
           f"{', '.join(lin.inputs) or 'none'}")
     print(table, end="")
-    if ns.out:
-        out = Path(ns.out)
+    if out_dir:
+        out = Path(out_dir)
         try:
             out.mkdir(parents=True, exist_ok=True)
             target = out / f"{safe_stem(path.stem)}-eigenvalues.csv"
@@ -568,40 +592,39 @@ def _short(v) -> str:
     return np.array2string(a, precision=8, max_line_width=100)
 
 
+def _model_value_options(parser) -> None:
+    """The model and where its values come from, shared by `run`, `animate` and
+    `linearize`."""
+    parser.add_argument("file", metavar="FILE", help=".al model")
+    parser.add_argument("--set", action="append", metavar="NAME=VALUE",
+                        help="an input value, in the unit the model gives it (degrees for a "
+                        "DEG input); repeatable")
+    parser.add_argument("--in", dest="infile", metavar="FILE.in",
+                        help="read input values from an Autolev .in file")
+    parser.add_argument("--backend", default="auto", choices=("auto", "c", "python"),
+                        help="compiled C when a compiler is found (auto), or pure Python")
+    parser.add_argument("--zero-missing", action="store_true",
+                        help="give 0 to constants that have no value (INPUT, --in or --set) "
+                        "instead of stopping before the build")
+
+
 def _run_options(parser) -> None:
     """The options of a run, shared by `run` and `animate`."""
-    parser.add_argument("file", metavar="FILE", help=".al model")
+    _model_value_options(parser)
     parser.add_argument("--out", default=".", metavar="DIR",
                         help="folder for the output files (default: the current folder)")
     parser.add_argument("--method", default=None, metavar="M",
                         help="integrator: kutta-merson, rk45, dop853, radau, bdf, lsoda, "
                         "rk23 (default: the one of Autolev's program for each CODE file: "
                         "rk45 -- Matlab's ode45 -- for .m, else Kutta-Merson)")
-    parser.add_argument("--set", action="append", metavar="NAME=VALUE",
-                        help="an input value, in the unit the model gives it (degrees for a "
-                        "DEG input); repeatable")
     parser.add_argument("--tfinal", type=float, metavar="T", help="final time (TFINAL)")
-    parser.add_argument("--in", dest="infile", metavar="FILE.in",
-                        help="read input values from an Autolev .in file")
-    parser.add_argument("--backend", default="auto", choices=("auto", "c", "python"),
-                        help="compiled C when a compiler is found (auto), or pure Python")
     parser.add_argument("--no-quirks", dest="quirks", action="store_false",
                         help="compute the values meant where Autolev's programs computed "
                         "others (a quantity named i1 in a C program's outputs)")
-    parser.add_argument("--zero-missing", action="store_true",
-                        help="give 0 to constants that have no value (INPUT, --in or --set) "
-                        "instead of stopping before the build")
     parser.add_argument("-q", "--quiet", action="store_true")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    ap = argparse.ArgumentParser(
-        prog="autolev",
-        description="Autolev 4.1 models in Python: check, translate and run .al files.",
-        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--version", action="version", version=f"autolev {__version__}")
-    sub = ap.add_subparsers(dest="command", metavar="COMMAND")
-
+def _add_check(sub) -> None:
     check = sub.add_parser("check", help="report syntax errors in .al files",
                            description="Read each model (with its macros and RUN files) "
                            "and report every problem as file:line:col. Exit status 0 when "
@@ -615,6 +638,8 @@ def build_parser() -> argparse.ArgumentParser:
                        help="omit the source line and caret under each diagnostic")
     check.set_defaults(func=cmd_check)
 
+
+def _add_convert(sub) -> None:
     convert = sub.add_parser("convert", help="translate a model into a Python module",
                              description="Translate FILE into a Python module on "
                              "autolev.runtime; importing it builds the model, running it "
@@ -626,6 +651,8 @@ def build_parser() -> argparse.ArgumentParser:
     convert.add_argument("-q", "--quiet", action="store_true")
     convert.set_defaults(func=cmd_convert)
 
+
+def _add_run(sub) -> None:
     run = sub.add_parser("run", help="run a model's CODE commands (simulate)",
                          description="Translate and build FILE, then perform its CODE "
                          "commands with its INPUT values: DYNAMICS and ODE are integrated, "
@@ -642,20 +669,18 @@ def build_parser() -> argparse.ArgumentParser:
                      "its 0-based index); repeatable")
     run.set_defaults(func=cmd_run, formats=None, frames=None, first_dynamics=False)
 
+
+def _add_linearize(sub) -> None:
     lin = sub.add_parser("linearize", help="eigenvalues of a model at an operating point",
                          description="Linearize FILE's first CODE DYNAMICS (or --code) at "
                          "an operating point (--at, in SI units and radians; the rest from "
                          "INPUT, --in and --set; states and specified quantities otherwise "
                          "0) and print the eigenvalues (CSV: real, imaginary, frequency in "
                          "Hz, damping ratio).  Exact Jacobians through the Z's.")
-    lin.add_argument("file", metavar="FILE", help=".al model")
+    _model_value_options(lin)
     lin.add_argument("--at", action="append", metavar="NAME=VALUE",
                      help="the operating point: a constant, coordinate, speed or specified "
                      "quantity in SI units and radians; repeatable")
-    lin.add_argument("--set", action="append", metavar="NAME=VALUE",
-                     help="an input value, in the unit the model gives it; repeatable")
-    lin.add_argument("--in", dest="infile", metavar="FILE.in",
-                     help="read input values from an Autolev .in file")
     lin.add_argument("--inputs", metavar="NAMES",
                      help="the specified quantities that are inputs (B's columns), "
                      "comma-separated (default: all without a definition)")
@@ -679,11 +704,10 @@ def build_parser() -> argparse.ArgumentParser:
                      "against the swept quantity (needs matplotlib)")
     lin.add_argument("--out", metavar="DIR",
                      help="also write NAME-eigenvalues.csv (or NAME-sweep.csv) there")
-    lin.add_argument("--backend", default="auto", choices=("auto", "c", "python"))
-    lin.add_argument("--zero-missing", action="store_true",
-                     help="give 0 to constants that have no value")
     lin.set_defaults(func=cmd_linearize)
 
+
+def _add_animate(sub) -> None:
     anim = sub.add_parser("animate", help="run a model and write its motion as a picture",
                           description="Run FILE's first CODE DYNAMICS (or --code) and write "
                           "a stick figure of its points in the Newtonian frame over the run: "
@@ -701,6 +725,8 @@ def build_parser() -> argparse.ArgumentParser:
                       help="frames at most (default 400; the rows are sampled evenly)")
     anim.set_defaults(func=cmd_animate, plot=False, animate=True, first_dynamics=True)
 
+
+def _add_transcript(sub) -> None:
     tr = sub.add_parser("transcript", help="the responses Autolev displayed (.all)",
                         description="Print what Autolev displayed for FILE: every input "
                         "line numbered (n), and after each assignment the value it defined "
@@ -710,6 +736,8 @@ def build_parser() -> argparse.ArgumentParser:
     tr.add_argument("--out", metavar="DIR", help="write DIR/NAME.all instead of printing")
     tr.set_defaults(func=cmd_transcript)
 
+
+def _add_verify(sub) -> None:
     ver = sub.add_parser("verify", help="check a translation against Autolev's responses",
                          description="Replay the responses Autolev printed (an .all session "
                          "saved by SAVE, or a .al file with '% ->' response comments): each "
@@ -723,6 +751,21 @@ def build_parser() -> argparse.ArgumentParser:
     ver.add_argument("--points", type=int, default=3, metavar="N",
                      help="sample points per response (default 3)")
     ver.set_defaults(func=cmd_verify)
+
+
+COMMANDS = (_add_check, _add_convert, _add_run, _add_linearize, _add_animate,
+            _add_transcript, _add_verify)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(
+        prog="autolev",
+        description="Autolev 4.1 models in Python: check, translate and run .al files.",
+        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--version", action="version", version=f"autolev {__version__}")
+    sub = ap.add_subparsers(dest="command", metavar="COMMAND")
+    for add in COMMANDS:
+        add(sub)
     return ap
 
 
