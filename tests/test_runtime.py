@@ -328,3 +328,23 @@ def test_realness_is_judged_relative_to_the_size_of_the_real_part():
     assert not is_real_number(1.0 + 1e-9j)
     assert is_real_number(1e-14j)               # next to 1: rounding
     assert not is_real_number([1.0, 2.0 + 1e-6j])
+
+
+@pytest.mark.parametrize("sequence", ["123", "312", "131", "232"])
+def test_body_and_space_fixed_rotations_agree_with_sympys_frames(sequence):
+    """Direction cosines and angular velocity of both kinds of sequence, against
+    sympy.physics.vector's own orientation (a second derivation)."""
+    import sympy.physics.mechanics as me
+    from autolev.runtime.vector import body_fixed, space_fixed
+
+    q = me.dynamicsymbols("q1:4")
+    t = me.dynamicsymbols._t
+    for ours, orient, in_parent in ((body_fixed, "orient_body_fixed", False),
+                                    (space_fixed, "orient_space_fixed", True)):
+        n = me.ReferenceFrame("N")
+        b = me.ReferenceFrame("B")
+        getattr(b, orient)(n, q, sequence)
+        dcm, w = ours(q, sequence, lambda x: x.diff(t))
+        expected_w = b.ang_vel_in(n).to_matrix(n if in_parent else b)
+        assert sm.simplify(dcm - n.dcm(b)) == sm.zeros(3, 3)
+        assert sm.simplify(sm.Matrix(w) - expected_w) == sm.zeros(3, 1)

@@ -457,37 +457,42 @@ def _sequence(sequence) -> list[int]:
     return seq
 
 
+def _simple_rotations(angles, sequence, dt) -> tuple[list[sm.Matrix], list[sm.Matrix]]:
+    """The three simple rotation matrices of a sequence, and each angle's rate as a
+    column along its own axis."""
+    a = [_s(x) for x in angles]
+    seq = _sequence(sequence)
+    rates = []
+    for i in range(3):
+        rate = sm.zeros(3, 1)
+        rate[seq[i] - 1] = dt(a[i])
+        rates.append(rate)
+    return [rotation(seq[i], a[i]) for i in range(3)], rates
+
+
+def _product(mats) -> sm.Matrix:
+    result = sm.eye(3)
+    for m in mats:
+        result = result * m
+    return result
+
+
 def body_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
     """(parent.dcm(child), angular velocity measure numbers in child) of the
     body-fixed sequence: a about parent_i, b about the new j, c about the new k."""
-    a = [_s(x) for x in angles]
-    seq = _sequence(sequence)
-    mats = [rotation(seq[i], a[i]) for i in range(3)]
-    w = sm.zeros(3, 1)
-    for i in range(3):
-        e = sm.zeros(3, 1)
-        e[seq[i] - 1] = dt(a[i])
-        rot = sm.eye(3)
-        for m in mats[i + 1:]:
-            rot = rot * m
-        w += rot.T * e
+    mats, rates = _simple_rotations(angles, sequence, dt)
+    # rate i turns about an axis fixed in the i-th intermediate frame: carry it into
+    # the child through the later rotations
+    w = sum(((_product(mats[i + 1:]).T * rates[i]) for i in range(3)), sm.zeros(3, 1))
     return mats[0] * mats[1] * mats[2], tuple(w)
 
 
 def space_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
     """(parent.dcm(child), angular velocity measure numbers in parent) of the
     space-fixed sequence: a about parent_i, then b about parent_j, then c about parent_k."""
-    a = [_s(x) for x in angles]
-    seq = _sequence(sequence)
-    mats = [rotation(seq[i], a[i]) for i in range(3)]
-    w = sm.zeros(3, 1)
-    for i in range(3):
-        e = sm.zeros(3, 1)
-        e[seq[i] - 1] = dt(a[i])
-        rot = sm.eye(3)
-        for m in reversed(mats[i + 1:]):
-            rot = rot * m
-        w += rot * e
+    mats, rates = _simple_rotations(angles, sequence, dt)
+    # rate i turns about a parent axis, itself turned by the later rotations
+    w = sum(((_product(mats[:i:-1]) * rates[i]) for i in range(3)), sm.zeros(3, 1))
     return mats[2] * mats[1] * mats[0], tuple(w)
 
 

@@ -94,28 +94,25 @@ def _pair(tr, e, kinds):
 
 @command("FORCE")
 def _force(tr, c):
-    a, f = arguments(tr, c, 2)
-    first, second = _pair(tr, a, (NameKind.POINT, NameKind.PARTICLE))
-    v = tr.expr(f)
-    if v.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
-        raise tr.error(f"FORCE takes a vector, not a {v.type}", f, "T001")
-    if first is None:
-        tr.emit(f"model.force({second.py}, {v.code})")
-    else:
-        tr.emit(f"model.force_pair({first.py}, {second.py}, {v.code})")
+    _load(tr, c, "force", (NameKind.POINT, NameKind.PARTICLE))
 
 
 @command("TORQUE")
 def _torque(tr, c):
+    _load(tr, c, "torque", FRAME_KINDS)
+
+
+def _load(tr, c, what: str, kinds) -> None:
+    """FORCE(P, F>) / TORQUE(A, T>) on one, or FORCE(A/B, F>) on a pair (+ on B, - on A)."""
     a, f = arguments(tr, c, 2)
-    first, second = _pair(tr, a, FRAME_KINDS)
+    first, second = _pair(tr, a, kinds)
     v = tr.expr(f)
     if v.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
-        raise tr.error(f"TORQUE takes a vector, not a {v.type}", f, "T001")
+        raise tr.error(f"{what.upper()} takes a vector, not a {v.type}", f, "T001")
     if first is None:
-        tr.emit(f"model.torque({second.py}, {v.code})")
+        tr.emit(f"model.{what}({second.py}, {v.code})")
     else:
-        tr.emit(f"model.torque_pair({first.py}, {second.py}, {v.code})")
+        tr.emit(f"model.{what}_pair({first.py}, {second.py}, {v.code})")
 
 
 @command("CONSTRAIN", "CONSTRAINT")
