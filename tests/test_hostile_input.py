@@ -1,5 +1,7 @@
 """Input that once ended in a Python traceback is a diagnostic at its line now (issue 15,
 item 5, the cases fixed so far)."""
+import math
+
 import pytest
 
 import autolev
@@ -207,7 +209,9 @@ def test_a_statement_the_parser_reads_but_nested_too_deeply_to_build(tmp_path):
 
 
 @pytest.mark.parametrize("text", ["X = EXP(1000000)", "X = COS(SINH(FACTORIAL(11)))",
-                                  "X = EXP(EXP(20))", "X = COSH(-10^400)"])
+                                  "X = EXP(EXP(20))", "X = COSH(-10^400)",
+                                  "X = SINH(COSH(34.1))", "X = EXP(2.0*COSH(17.0 + 17.1))",
+                                  "X = EXP(1.0E3^2)", "X = TANH(EXP(1E3)/2)"])
 def test_functions_of_numbers_beyond_a_double_are_refused(tmp_path, text):
     (d,) = diagnostics_of(tmp_path, text + "\n")
     assert d.code == "T005" and "beyond double precision" in d.message
@@ -219,6 +223,29 @@ def test_functions_of_numbers_within_a_double_stay_exact(tmp_path):
     import sympy as sm
     x = autolev.load(path)["X"]
     assert x == sm.exp(700) + sm.sin(sm.Integer(10) ** 400) + sm.exp(-10 ** 6)
+
+
+def test_functions_of_decimal_numbers_within_a_double_keep_their_value(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("X = EXP(2.5)*SIN(1.5) + COS(-1.0E3^2) + EXP(709.0 - 0.5)\n")
+    x = float(autolev.load(path)["X"])
+    expected = math.exp(2.5) * math.sin(1.5) + math.cos(-1.0e6) + math.exp(708.5)
+    assert x == pytest.approx(expected, rel=1e-14)
+
+
+@pytest.mark.parametrize("text", ["X = MIN(1, ATAN2(1E3, ASIN(2)))", "X = MAX(2, SQRT(-2.0))"])
+def test_the_extreme_of_a_complex_number_is_an_error(tmp_path, text):
+    d = load_error(tmp_path, text + "\n")
+    assert d.code == "R001" and "complex numbers have no order" in d.message
+    assert d.message.startswith(("MIN's argument 2", "MAX's argument 2"))
+
+
+def test_the_extreme_of_real_closed_forms_stays_exact(tmp_path):
+    path = tmp_path / "m.al"
+    path.write_text("X = MAX(PI, 3, SQRT(2))\nY = MIN(EXP(1), 2.5)\n")
+    import sympy as sm
+    model = autolev.load(path)
+    assert model["X"] == sm.pi and model["Y"] == 2.5
 
 
 @pytest.mark.parametrize("text", ["VARIABLES X'\nE = EVALUATE(X^4294967297, X = 2)",

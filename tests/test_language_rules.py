@@ -538,3 +538,22 @@ def test_a_name_that_is_a_body_and_a_matrix(tmp_path):
     assert str(m["VEC>"]) == "K*N1>" and m["N"] is m.entity("N")
     with pytest.raises(KeyError):
         m["NOSUCH"]
+
+
+@pytest.mark.parametrize("line", ["E = [A1] + B1", "E = B1 - [A1, B1]", "E = [A1; B1] + A1"])
+def test_a_matrix_and_a_scalar_do_not_add(line):
+    with pytest.raises(autolev.AutolevTranslationError) as info:
+        autolev.transpile(f"CONSTANTS A1, B1\n{line}\n")
+    (d,) = [d for d in info.value.diagnostics if d.severity == "error"]
+    assert d.code == "T001" and (d.line, d.col) == (2, 5)
+    assert "1x1 matrix is not a scalar" in d.message
+
+
+def test_matrices_of_one_size_still_add():
+    code = autolev.transpile("CONSTANTS A1, B1\nE = [A1] + [B1]\nF = 2*[A1, B1] - [B1, A1]\n")
+    namespace = {}
+    exec(compile(code, "m.py", "exec"), namespace)
+    a1, b1 = namespace["A1"], namespace["B1"]
+    assert namespace["E"] == sm.Matrix([[a1 + b1]])
+    assert sm.expand(namespace["F"] - sm.Matrix([[2 * a1 - b1, 2 * b1 - a1]])) == \
+        sm.zeros(1, 2)

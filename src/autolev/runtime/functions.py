@@ -128,6 +128,36 @@ def set_element(m, index: tuple, value) -> sm.Matrix:
     return m
 
 
+def maximum(*args):
+    """MAX(a, b, ...)."""
+    return sm.Max(*_comparable("MAX", args))
+
+
+def minimum(*args):
+    """MIN(a, b, ...)."""
+    return sm.Min(*_comparable("MIN", args))
+
+
+def _comparable(what: str, args) -> list:
+    """The arguments, after refusing any that is a number but not a real one: there is
+    no order among complex numbers (and sympy's attempt to find one may never end)."""
+    out = [sm.sympify(a) for a in args]
+    for k, a in enumerate(out, 1):
+        if not a.is_number:
+            if a.is_extended_real is False:
+                raise AutolevModelError(f"{what}'s argument {k}, {a}, is not real: complex "
+                                        "numbers have no order")
+            continue
+        z = complex(a) if a.is_Number else complex(sm.N(a))
+        if math.isnan(z.real) or math.isnan(z.imag):
+            why = "a division by zero" if a == sm.zoo else "not a number"
+            raise AutolevModelError(f"{what}'s argument {k} is undefined ({why})")
+        if not is_real_number(z):
+            raise AutolevModelError(f"{what}'s argument {k} is the complex number "
+                                    f"{z.real:.6g}{z.imag:+.6g}i: complex numbers have no order")
+    return out
+
+
 def whole_number(x, what: str) -> int:
     """A count, order or index the model gives, as an int (a number's whole part)."""
     try:
@@ -498,10 +528,9 @@ def units_factor(a: str, b: str):
     return va / vb
 
 
-__all__ = ["ZERO", "VectorColumn", "dot", "cross", "mag", "unitvec", "express", "vector", "matrix",
-           "dyadic",
-           "outer", "set_element", "block_matrix", "transpose", "trace", "diagmat", "rows",
-           "cols", "eig", "replace", "expand", "factor", "simplify", "arrange", "polynomial",
-           "roots", "epsilon", "integer_part", "round_half_away", "Int", "Round",
-           "degrees_to_radians",
-           "unit_value", "units_factor"]
+__all__ = ["ZERO", "VectorColumn", "dot", "cross", "mag", "unitvec", "express", "vector",
+           "matrix", "dyadic", "outer", "set_element", "block_matrix", "transpose", "trace",
+           "diagmat", "rows", "cols", "eig", "replace", "expand", "factor", "simplify",
+           "arrange", "polynomial", "roots", "epsilon", "maximum", "minimum", "integer_part",
+           "round_half_away", "Int", "Round", "degrees_to_radians", "unit_value",
+           "units_factor"]

@@ -13,6 +13,7 @@ package imports them).
 """
 from __future__ import annotations
 
+import math
 import re
 from enum import Enum
 from dataclasses import dataclass, field
@@ -104,6 +105,15 @@ class Typed:
 
     def wrapped(self, below: int) -> str:
         return f"({self.code})" if self.prec < below else self.code
+
+    @property
+    def double(self) -> float | None:
+        """The value in double precision when it is a number (inf beyond a double)."""
+        if self.approx is not None or self.exact is None:
+            return self.approx
+        if abs(self.exact) >= 10 ** 308:
+            return math.inf if self.exact > 0 else -math.inf
+        return float(self.exact)
 
 
 @dataclass

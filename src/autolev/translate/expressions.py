@@ -21,7 +21,7 @@ def number(tr: Translator, e: ir.Number, want: str) -> Typed:
     if e.is_integer:
         value = int(e.text)
         return Typed(str(value), ValueType.SCALAR, ATOM, Fraction(value))    # 007 is 7
-    return Typed(e.text, ValueType.SCALAR, ATOM)
+    return Typed(e.text, ValueType.SCALAR, ATOM, approx=float(e.text))
 
 
 @EXPRESSIONS.register(ir.Neg)
@@ -30,7 +30,8 @@ def negation(tr: Translator, e: ir.Neg, want: str) -> Typed:
     exact = -x.exact if x.exact is not None else None
     if exact is not None:
         return _exact_typed(exact)
-    return Typed("-" + x.wrapped(MUL), x.type, UNARY)
+    approx = -x.approx if x.approx is not None else None
+    return Typed("-" + x.wrapped(MUL), x.type, UNARY, approx=approx)
 
 
 @EXPRESSIONS.register(ir.BinOp)
@@ -69,12 +70,43 @@ def _binary(tr: Translator, e: ir.BinOp, a: Typed, b: Typed) -> Typed:
                                "are refused (write a decimal number, 1E300, for a "
                                "floating-point one)", e, "T005")
             return _exact_typed(v)
+    result = _typed_binary(tr, e, a, b)
+    result.approx = _double_of(op, a, b)
+    return result
+
+
+def _double_of(op: str, a: Typed, b: Typed) -> float | None:
+    """The double value of a binary operation on numbers (not both exact), as Autolev
+    computed it: inf where it overflows, None where it has none."""
+    x, y = a.double, b.double
+    if x is None or y is None:
+        return None
+    try:
+        if op == "+":
+            return x + y
+        if op == "-":
+            return x - y
+        if op == "*":
+            return x * y
+        if op == "/":
+            return x / y
+        return math.pow(x, y)
+    except OverflowError:
+        return math.inf
+    except (ZeroDivisionError, ValueError):
+        return None
+
+
+def _typed_binary(tr: Translator, e: ir.BinOp, a: Typed, b: Typed) -> Typed:
+    op = e.op
     ta, tb = a.type, b.type
     if op in "+-":
         if ValueType.UNKNOWN not in (ta, tb) and ta != tb:
-            if not ({ta, tb} <= {ValueType.SCALAR, ValueType.MATRIX}):
-                raise tr.error(f"cannot {'add' if op == '+' else 'subtract'} a {tb} "
-                               f"{'to' if op == '+' else 'from'} a {ta}", e, "T001")
+            # matrices add to matrices only, even a 1x1 one to a scalar (docs/language.md)
+            hint = ("; a 1x1 matrix is not a scalar (its element is M[1,1])"
+                    if {ta, tb} == {ValueType.SCALAR, ValueType.MATRIX} else "")
+            raise tr.error(f"cannot {'add' if op == '+' else 'subtract'} a {tb} "
+                           f"{'to' if op == '+' else 'from'} a {ta}{hint}", e, "T001")
         left = a.wrapped(ADD)
         right = b.wrapped(ADD + 1) if op == "-" else b.wrapped(ADD)
         return Typed(f"{left} {op} {right}", ta if ta != ValueType.UNKNOWN else tb, ADD)

@@ -111,11 +111,8 @@ def _double_value(tr: Translator, c: ir.Call, name: str, x: Typed) -> float | No
     of it takes millions of digits)."""
     if name not in _DOUBLE:
         return None
-    if x.approx is not None:
-        v = x.approx
-    elif x.exact is not None:
-        v = float(x.exact) if abs(x.exact) < 10 ** 308 else (math.inf if x.exact > 0 else -math.inf)
-    else:
+    v = x.double
+    if v is None:
         return None
     try:
         r = _DOUBLE[name](v)
@@ -169,7 +166,8 @@ def _maxmin(tr, c):
     if not c.args:
         raise tr.error(f"{c.name.upper()} needs arguments", c, "T007")
     items = ", ".join(tr.scalar(a).code for a in c.args)
-    return Typed(f"sm.{c.name.capitalize()}({items})", ValueType.SCALAR)
+    function = "maximum" if c.name.upper() == "MAX" else "minimum"
+    return Typed(f"al.{function}({items})", ValueType.SCALAR)
 
 
 # -- vectors -----------------------------------------------------------------------
