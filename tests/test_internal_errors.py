@@ -97,3 +97,28 @@ def test_a_converted_modules_own_python_that_fails_is_the_users(tiny, tmp_path, 
     assert (f"{converted}:{line}:1: error: this statement failed: AttributeError: 'Vector' "
             "object has no attribute 'bogus' (Autolev: X = DOT(A1>, N1>)) [R001]") in err
     assert "internal error" not in err
+
+
+def test_a_bug_outside_any_statement_is_still_an_internal_error(tiny, monkeypatch, capsys):
+    import autolev.cli
+
+    def load_for_run(path):
+        raise RuntimeError("boom")
+    monkeypatch.setattr(autolev.cli, "_load_for_run", load_for_run)
+    monkeypatch.delenv("AUTOLEV_TRACEBACK", raising=False)
+    assert main(["run", str(tiny), "--out", str(tiny.parent)]) == EXIT_INTERNAL
+    err = capsys.readouterr().err
+    assert err.startswith(f"{tiny}: internal error: a bug in autolev, not in the model, "
+                          "while running `autolev run`: RuntimeError: boom")
+    assert "Traceback" not in err
+
+
+def test_the_cli_says_out_of_memory_without_a_traceback(tiny, monkeypatch, capsys):
+    import autolev.cli
+
+    def load_for_run(path):
+        raise MemoryError
+    monkeypatch.setattr(autolev.cli, "_load_for_run", load_for_run)
+    assert main(["run", str(tiny), "--out", str(tiny.parent)]) == 1
+    err = capsys.readouterr().err
+    assert "out of memory" in err and "Traceback" not in err and "internal error" not in err

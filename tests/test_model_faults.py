@@ -46,6 +46,11 @@ MODEL_FAULTS = [
      "substituting X = 0 leaves an expression without a value"),
     ("VARIABLES X\nE = REPLACE(MAX(1/X, 2), X = 0)", 2,
      "substituting X = 0 leaves an expression without a value"),
+    # SOLVE of a nonlinear equation was reported as a definition in terms of itself
+    ("VARIABLES X\nCONSTANTS A\nE = X^2 - A\nSOLVE(E, X)", 4,
+     "SOLVE solves equations linear in their unknowns; these are not linear in X"),
+    ("VARIABLES X, Y\nCONSTANTS A\nE = [X + Y - 1; X*Y - A]\nSOLVE(E, X, Y)", 4,
+     "SOLVE solves equations linear in their unknowns; these are not linear in X, Y"),
     # sympy refusing what the statement's own Python does with the model's values
     ("M = [1, 2] + [1; 2]", 1, "this statement failed: ShapeError: Matrix size mismatch"),
     ("M = [1, 2; 3, 4]\nE = ELEMENT(M, 3, 3)", 2, "this statement failed: IndexError"),

@@ -802,10 +802,20 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     except KeyboardInterrupt:
         return 130
+    except MemoryError:
+        print("autolev: error: out of memory (the machine's limit, not a fault of the model)",
+              file=sys.stderr)
+        return 1
     except BrokenPipeError:
         # output piped into `head` and the like: stop quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
+    except Exception as exc:  # noqa: BLE001 -- what escapes every stage is autolev's bug
+        internal = AutolevInternalError(getattr(ns, "file", None) or "autolev",
+                                        f"running `autolev {ns.command}`", exc)
+        internal.__cause__ = exc
+        _report_internal_error(internal)
+        return EXIT_INTERNAL
 
 
 def _report_internal_error(exc: AutolevInternalError) -> None:

@@ -141,6 +141,11 @@ class AlgebraMixin:
                 raise AutolevModelError(f"SOLVE's unknowns are names, not {u}")
         a, r = coefficients(eqs, unknowns, self.defs)
         solution = solve_linear(a, -r, self.defs, "SOLVE")
+        # a coefficient that holds an unknown leaves it in the solution
+        left = [u for u in unknowns if any(self.defs.depends_on(v, u) for v in solution)]
+        if left:
+            raise AutolevModelError(f"SOLVE solves equations linear in their unknowns; "
+                                    f"these are not linear in {', '.join(map(str, left))}")
         self._keep_speeds(unknowns)
         for u, v in zip(unknowns, solution):
             self.define(u, v)
