@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Regenerate tests/golden/NAME.py from autolev_examples/NAME.al, showing the diff.
+"""Regenerate tests/golden/NAME.py from autolev_examples/NAME.al, and the Python of
+every case of tests/fixtures/constructs.txt, showing the diff.
 
     python tools/update_goldens.py            # write the changes, print the diff
     python tools/update_goldens.py --check    # only report which goldens differ
@@ -15,8 +16,10 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "src"))
+sys.path.insert(0, str(ROOT / "tests"))
 
 import autolev  # noqa: E402
+from helpers import constructs  # noqa: E402
 
 EXAMPLES = ROOT / "autolev_examples"
 GOLDEN = ROOT / "tests" / "golden"
@@ -32,10 +35,13 @@ def main() -> int:
     ns = ap.parse_args()
     GOLDEN.mkdir(parents=True, exist_ok=True)
     changed = 0
-    for model in sorted(EXAMPLES.glob("*.al")):
-        target = GOLDEN / (model.stem + ".py")
-        new = golden_text(model)
-        old = target.read_text() if target.exists() else ""
+    goldens = [(GOLDEN / (model.stem + ".py"), model) for model in sorted(EXAMPLES.glob("*.al"))]
+    for target, model in goldens + [(constructs.FIXTURE, None)]:
+        if model is None:
+            old, new = constructs.updated()
+        else:
+            new = golden_text(model)
+            old = target.read_text() if target.exists() else ""
         if new == old:
             continue
         changed += 1
