@@ -1,9 +1,15 @@
 """Fixtures; the helpers tests import live in tests/helpers."""
+import os
 from pathlib import Path
 
 import pytest
 
 from helpers import CORPUS
+
+# Tests build their models afresh (several replace a runtime function to see what a
+# build does); tests/test_model_cache.py turns the cache of built models on where it
+# tests it, and AUTOLEV_NO_MODEL_CACHE=0 runs the whole suite with it.
+os.environ.setdefault("AUTOLEV_NO_MODEL_CACHE", "1")
 
 
 @pytest.fixture(scope="session")

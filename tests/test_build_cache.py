@@ -5,6 +5,7 @@ import stat
 import subprocess
 import pytest
 
+from autolev.runtime import diskcache
 from autolev.runtime.numerics import codegen
 from helpers import EXAMPLES
 
@@ -21,9 +22,9 @@ def cache(tmp_path, monkeypatch):
 RUN = f"""
 import json, warnings
 import autolev
-model = autolev.load({str(EXAMPLES / "double_pendulum.al")!r})
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always")
+    model = autolev.load({str(EXAMPLES / "double_pendulum.al")!r})
     r = model.simulate(TFINAL=0.2)
 print(json.dumps({{"ok": r.ok, "backend": r.system.rhs_function.backend,
                   "states": r.states.tolist(), "said": [str(w.message) for w in caught]}}))
@@ -65,7 +66,7 @@ def test_a_damaged_cached_library_is_rebuilt(cache, damage):
     again = simulate()
     assert again["states"] == first["states"]
     for lib in libraries(cache):
-        assert codegen._verified(lib)
+        assert diskcache.verified(lib)
 
 
 def _planted_library(path, marker):
@@ -84,7 +85,7 @@ def _plant(cache, marker) -> list:
     planted = libraries(cache)
     for lib in planted:
         _planted_library(lib, marker)
-        codegen._install(lib, lib)
+        diskcache.install(lib.read_bytes(), lib)
     return planted
 
 
@@ -158,7 +159,7 @@ def test_a_second_user_cannot_make_our_runs_load_their_code(shared_tmp, monkeypa
     subprocess.run([codegen.compiler(), "-c", "-fPIC", "-o", str(planted / "obj.o"),
                     str(src)], check=True)
     for kind in ("lib.so", "obj.o"):
-        codegen._install(planted / kind, planted / ("x" + kind))
+        diskcache.install((planted / kind).read_bytes(), planted / ("x" + kind))
         os.chmod(planted / ("x" + kind), 0o755)
     copies = " && ".join(
         f"cp {planted}/x{'lib.so' if n.endswith('.so') else 'obj.o'} DIR/{n} && "

@@ -585,6 +585,28 @@ def cmd_verify(ns: argparse.Namespace) -> int:
     return 0 if report.ok else 1
 
 
+def cmd_cache(ns: argparse.Namespace) -> int:
+    """What the cache holds (built models, compiled code), or empty it."""
+    from . import modelcache
+
+    if ns.action == "clear":
+        count, size = modelcache.clear()
+        print(f"removed {count} entr{'y' if count == 1 else 'ies'} ({_megabytes(size)})")
+        return 0
+    s = modelcache.summary()
+    print(f"cache: {s.folder}")
+    print(f"  built models:  {s.models:5d}  {_megabytes(s.model_bytes)}")
+    print(f"  compiled code: {s.compiled:5d}  {_megabytes(s.compiled_bytes)}")
+    print(f"  limit: {_megabytes(s.limit)} (the oldest entries leave first)")
+    if not modelcache.enabled():
+        print(f"  built models are not kept: {modelcache.DISABLE_VARIABLE} is set")
+    return 0
+
+
+def _megabytes(size: int) -> str:
+    return f"{size / 2 ** 20:.1f} MB"
+
+
 def _short(v) -> str:
     import numpy as np
     a = np.asarray(v, dtype=complex)
@@ -753,8 +775,21 @@ def _add_verify(sub) -> None:
     ver.set_defaults(func=cmd_verify)
 
 
+def _add_cache(sub) -> None:
+    cache = sub.add_parser("cache", help="what the cache holds, or empty it",
+                           description="autolev keeps the models it built (read back when "
+                           "the model, autolev and its libraries are unchanged) and the "
+                           "code it compiled, in $AUTOLEV_CACHE (default "
+                           "~/.cache/autolev/build), private to you and kept under "
+                           "$AUTOLEV_CACHE_LIMIT_MB (default 2048).  "
+                           "AUTOLEV_NO_MODEL_CACHE=1 builds every model afresh.")
+    cache.add_argument("action", choices=("info", "clear"), nargs="?", default="info",
+                       help="info (default): entries and sizes; clear: remove them all")
+    cache.set_defaults(func=cmd_cache)
+
+
 COMMANDS = (_add_check, _add_convert, _add_run, _add_linearize, _add_animate,
-            _add_transcript, _add_verify)
+            _add_transcript, _add_verify, _add_cache)
 
 
 def build_parser() -> argparse.ArgumentParser:

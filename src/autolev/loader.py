@@ -11,12 +11,14 @@ import os
 import textwrap
 import traceback
 import types
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
 import sympy
 from sympy.matrices.exceptions import NonInvertibleMatrixError
 
+from . import modelcache
 from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError,
                      AutolevTranslationError, Diagnostic, Location)
 from .pipeline import parse, translation
@@ -46,7 +48,47 @@ def load(path):
 
 
 def load_translation(translation, filename: str):
-    """Run the generated module; return its model, with `namespace` and `names`."""
+    """Run the generated module (or read the model it built from the cache of built
+    models); return its model, with `namespace` and `names`."""
+    key = modelcache.key(translation.code, filename)
+    built = modelcache.read(key)
+    if built is None:
+        built = _build(translation, filename)
+        modelcache.write(key, built)
+    built.warn_again()
+    model = built.model
+    lines = translation.code.splitlines()
+    model.source = ModelSource("translation", translation, filename, model.revision())
+    model.names = translation.names
+    model.namespaces = translation.namespaces
+    # where each CODE statement is in the .al file (diagnostics of its run point there)
+    model.code_locations = [translation.line_map.get(n)
+                            for n, text in enumerate(lines, 1)
+                            if text.startswith("model.code(")]
+    return model
+
+
+def _build(translation, filename: str) -> modelcache.Built:
+    """Execute the module, keeping the warnings its statements give (each once) to be
+    given again whenever the model is read back from the cache."""
+    caught: list = []
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            model = _execute(translation, filename)
+    except BaseException:
+        modelcache.Built(None, _distinct(caught)).warn_again()
+        raise
+    return modelcache.Built(model, _distinct(caught))
+
+
+def _distinct(caught) -> list:
+    return list(dict.fromkeys((str(w.message), w.category, w.filename, w.lineno)
+                              for w in caught))
+
+
+def _execute(translation, filename: str):
+    """The model the generated module builds, with the module's namespace."""
     name = "autolev_model"
     module = types.ModuleType(name)
     module.__file__ = filename + ".py"
@@ -67,13 +109,6 @@ def load_translation(translation, filename: str):
         raise failure from (exc if isinstance(failure, AutolevInternalError) else None)
     model = module.__dict__["model"]
     model.namespace = module.__dict__
-    model.source = ModelSource("translation", translation, filename, model.revision())
-    model.names = translation.names
-    model.namespaces = translation.namespaces
-    # where each CODE statement is in the .al file (diagnostics of its run point there)
-    model.code_locations = [translation.line_map.get(n)
-                            for n, text in enumerate(lines, 1)
-                            if text.startswith("model.code(")]
     return model
 
 

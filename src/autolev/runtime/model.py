@@ -6,6 +6,9 @@ the constraints, and forms Kane's equations with Autolev's conventions.
 """
 from __future__ import annotations
 
+import importlib
+import types
+
 import sympy as sm
 
 from . import symbols as S
@@ -61,6 +64,26 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
 
     def __repr__(self) -> str:
         return f"<autolev Model {self.name}>"
+
+    # -- pickling (the cache of built models) --------------------------------------
+    def __getstate__(self) -> dict:
+        """The model as its statements left it: what numerics derived from it (compiled
+        libraries) is left out, and the modules its namespace holds go by name."""
+        state = dict(self.__dict__)
+        state["derived"] = DerivedCache()
+        if "namespace" in state:
+            state["namespace"] = {
+                k: (_ModuleName(v.__name__) if isinstance(v, types.ModuleType) else v)
+                for k, v in state["namespace"].items() if k != "__builtins__"}
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        namespace = state.get("namespace")
+        if namespace is not None:
+            for k, v in namespace.items():
+                if isinstance(v, _ModuleName):
+                    namespace[k] = importlib.import_module(v.name)
+        self.__dict__.update(state)
 
     def __getitem__(self, name: str):
         """What the model calls `name` (any case), following Autolev's namespaces: a
@@ -765,3 +788,9 @@ def _solve_small(a: sm.Matrix, b: sm.Matrix) -> list:
     sol = a.LUsolve(b)
     return [sm.trigsimp(sm.cancel(sm.together(e))) for e in sol]
 
+
+class _ModuleName:
+    """A module in a pickled model's namespace, imported again when it is read."""
+
+    def __init__(self, name: str):
+        self.name = name

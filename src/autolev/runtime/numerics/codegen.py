@@ -9,7 +9,6 @@ the same numbers: the same operations in the same order, in double precision.
 """
 from __future__ import annotations
 
-import atexit
 import ctypes
 import hashlib
 import os
@@ -17,7 +16,6 @@ import shutil
 import subprocess
 import sys
 import tempfile
-import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -25,6 +23,7 @@ import numpy as np
 import sympy as sm
 
 from ..calculus import Definitions
+from ..diskcache import cache_dir, install, verified
 from ..errors import AutolevModelError
 from ..printer import MATH_ERRORS, CodePrinter, fast_namespace, safe_namespace
 
@@ -303,89 +302,6 @@ def compiler() -> str | None:
     return None
 
 
-# a private build folder of this process, when the user's cache cannot be trusted
-_FALLBACK_CACHE: list = []
-
-
-def cache_dir() -> Path:
-    """The build cache: $AUTOLEV_CACHE, else $XDG_CACHE_HOME/autolev/build (created
-    0700).  A folder that is not the user's own or that others may write is not used
-    (anyone who can put a library there could run code in our process): the build then
-    goes to a private temporary folder, with a warning."""
-    base = os.environ.get("AUTOLEV_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME", os.path.expanduser("~/.cache")), "autolev", "build")
-    path = Path(base)
-    try:
-        _make_private_dirs(path)
-        problem = _not_private(path)
-    except OSError as exc:
-        problem = f"cannot be created ({exc.strerror})"
-    if problem is None:
-        return path
-    if not _FALLBACK_CACHE:
-        warnings.warn(f"the build cache {path} {problem}; building in a private temporary "
-                      "folder instead (set AUTOLEV_CACHE to a folder of your own, mode 700)",
-                      stacklevel=3)
-        folder = tempfile.mkdtemp(prefix="autolev-build-")
-        atexit.register(shutil.rmtree, folder, ignore_errors=True)   # nothing left in /tmp
-        _FALLBACK_CACHE.append(Path(folder))
-    return _FALLBACK_CACHE[0]
-
-
-def _make_private_dirs(path: Path) -> None:
-    """mkdir -p with mode 700 for every folder made (whatever the umask)."""
-    missing = []
-    p = path
-    while not p.exists():
-        missing.append(p)
-        p = p.parent
-    for d in reversed(missing):
-        try:
-            d.mkdir(mode=0o700)
-        except FileExistsError:
-            continue
-        os.chmod(d, 0o700)
-
-
-def _not_private(path: Path) -> str | None:
-    """Why a file or folder may hold someone else's code, or None."""
-    st = path.stat()
-    if hasattr(os, "getuid") and st.st_uid != os.getuid():
-        return f"belongs to another user (uid {st.st_uid})"
-    if st.st_mode & 0o022:
-        return f"is writable by others (mode {st.st_mode & 0o777:o})"
-    return None
-
-
-def _digest_file(artifact: Path) -> Path:
-    return artifact.with_name(artifact.name + ".sha256")
-
-
-def _verified(artifact: Path) -> bool:
-    """A cached build product that is ours, private, and exactly what we built (its
-    SHA-256 recorded beside it): a truncated, garbage or planted file is not."""
-    try:
-        if _not_private(artifact) is not None:
-            return False
-        expected = _digest_file(artifact).read_text().strip()
-        return hashlib.sha256(artifact.read_bytes()).hexdigest() == expected
-    except OSError:
-        return False
-
-
-def _install(built: Path, target: Path) -> None:
-    """Put a build product into the cache atomically, with its digest."""
-    data = built.read_bytes()
-    tmp = target.with_name(target.name + f".{os.getpid()}.tmp")
-    tmp.write_bytes(data)
-    os.chmod(tmp, 0o700)
-    os.replace(tmp, target)                  # atomic: concurrent builds never see half
-    side = _digest_file(target)
-    tmp_side = side.with_name(side.name + f".{os.getpid()}.tmp")
-    tmp_side.write_text(hashlib.sha256(data).hexdigest() + "\n")
-    os.replace(tmp_side, side)
-
-
 class CompileError(Exception):
     pass
 
@@ -398,7 +314,7 @@ def build_object(source: str, flags: tuple) -> Path:
         raise CompileError("no C compiler")
     digest = hashlib.sha256((source + "\0" + " ".join(flags) + "\0" + cc).encode()).hexdigest()
     obj = cache_dir() / f"al_{digest[:24]}.o"
-    if _verified(obj):
+    if verified(obj):
         return obj
     with tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / "shared.c"
@@ -408,7 +324,7 @@ def build_object(source: str, flags: tuple) -> Path:
                            capture_output=True, text=True)
         if r.returncode != 0:
             raise CompileError(r.stderr.strip()[-2000:])
-        _install(out, obj)
+        install(out.read_bytes(), obj)
     return obj
 
 
@@ -426,7 +342,7 @@ def build_shared_library(source: str, flags: tuple | None = None,
     digest = hashlib.sha256((source + "\0" + shared_source + "\0" + " ".join(flags) + "\0"
                              + cc).encode()).hexdigest()
     lib = cache_dir() / f"al_{digest[:24]}{'.dll' if sys.platform == 'win32' else '.so'}"
-    if _verified(lib):
+    if verified(lib):
         return lib
     # `shared_source`: compiled once for all models (its own cached object), linked in
     # at -O3: compiled once, and its loops (the LU solve, the stages) gain from it
@@ -454,7 +370,7 @@ def build_shared_library(source: str, flags: tuple | None = None,
                            capture_output=True, text=True)
         if r.returncode != 0:
             raise CompileError(r.stderr.strip()[-2000:])
-        _install(out, lib)
+        install(out.read_bytes(), lib)
     return lib
 
 

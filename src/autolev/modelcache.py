@@ -1,0 +1,140 @@
+"""The cache of built models: a model whose generated module, autolev's own code and
+the versions of what it runs on are unchanged is not built again; the `Model` its
+module built (Kane's equations, the definitions and Z's, every D() and TAYLOR of the
+model) is read back from the cache instead.
+
+The key is the SHA-256 of the module's Python text (which holds every RUN file and
+macro the model reads, expanded), the model's file name, and a digest of autolev's
+source files and of the versions of Python, sympy and numpy: a change to any of them is
+another key.  Entries live in the private cache folder of `runtime.diskcache`, verified
+by their digest before they are read.  The warnings a model's statements gave while it
+was built are kept with it and given again when it is read back.
+
+$AUTOLEV_NO_MODEL_CACHE=1 turns the cache off (the build cache of compiled code stays).
+"""
+from __future__ import annotations
+
+import functools
+import hashlib
+import os
+import pickle
+import platform
+import sys
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+
+from .runtime import diskcache
+
+DISABLE_VARIABLE = "AUTOLEV_NO_MODEL_CACHE"
+FORMAT = 1
+PREFIX = "model_"
+_PACKAGE = Path(__file__).resolve().parent
+
+
+@dataclass
+class Built:
+    """What building a model left: the model, and the warnings its statements gave
+    (message, category, file, line)."""
+
+    model: object
+    warnings: list[tuple[str, type, str, int]]
+
+    def warn_again(self) -> None:
+        for message, category, filename, lineno in self.warnings:
+            warnings.warn_explicit(message, category, filename, lineno)
+
+
+def enabled() -> bool:
+    return os.environ.get(DISABLE_VARIABLE, "") in ("", "0")
+
+
+@functools.cache
+def _code_digest() -> str:
+    """autolev's own source and the versions it runs on."""
+    import numpy
+    import sympy
+    h = hashlib.sha256(f"{FORMAT}\0{platform.python_version()}\0{sympy.__version__}\0"
+                       f"{numpy.__version__}\0".encode())
+    for path in sorted(_PACKAGE.rglob("*")):
+        if path.suffix in (".py", ".c", ".g4") and "__pycache__" not in path.parts:
+            h.update(str(path.relative_to(_PACKAGE)).encode() + b"\0" + path.read_bytes())
+    return h.hexdigest()
+
+
+def key(code: str, filename: str) -> str:
+    text = f"{_code_digest()}\0{filename}\0{code}"
+    return hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()
+
+
+def _entry(key_: str) -> Path:
+    return diskcache.cache_dir() / f"{PREFIX}{key_[:40]}.pickle"
+
+
+def read(key_: str) -> Built | None:
+    """The built model of `key_`, or None when there is none (or it is not intact)."""
+    if not enabled():
+        return None
+    entry = _entry(key_)
+    if not diskcache.verified(entry):
+        return None
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, _RECURSION))
+    try:
+        built = pickle.loads(entry.read_bytes())
+    finally:
+        sys.setrecursionlimit(limit)
+    return built if isinstance(built, Built) else None
+
+
+# sympy expressions nest deeply: pickling walks them recursively
+_RECURSION = 20000
+
+
+def write(key_: str, built: Built) -> bool:
+    """Keep a built model; False when it cannot be kept (it holds something that does
+    not pickle, or nests deeper than pickling can walk): it is then built every time."""
+    if not enabled():
+        return False
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, _RECURSION))
+    try:
+        data = pickle.dumps(built, protocol=pickle.HIGHEST_PROTOCOL)
+    except (pickle.PicklingError, TypeError, AttributeError, RecursionError):
+        return False
+    finally:
+        sys.setrecursionlimit(limit)
+    try:
+        diskcache.install(data, _entry(key_))
+    except OSError as exc:          # a full or read-only disk: the model is still built
+        warnings.warn(f"the built model could not be cached: {exc.strerror or exc}",
+                      stacklevel=2)
+        return False
+    return True
+
+
+@dataclass(frozen=True)
+class Summary:
+    folder: Path
+    models: int
+    model_bytes: int
+    compiled: int
+    compiled_bytes: int
+    limit: int
+
+
+def summary() -> Summary:
+    folder = diskcache.cache_dir()
+    found = diskcache.entries(folder)
+    models = [e for e in found if e.path.name.startswith(PREFIX)]
+    compiled = [e for e in found if not e.path.name.startswith(PREFIX)]
+    return Summary(folder, len(models), sum(e.size for e in models), len(compiled),
+                   sum(e.size for e in compiled), diskcache.limit_bytes())
+
+
+def clear() -> tuple[int, int]:
+    """Remove every entry (models and compiled code); (entries, bytes) removed."""
+    found = diskcache.entries(diskcache.cache_dir())
+    for e in found:
+        diskcache.remove(e.path)
+    return len(found), sum(e.size for e in found)

@@ -1,0 +1,154 @@
+"""The cache of built models: an unchanged model is read back, not built again, and
+gives the same rows; anything changed, damaged or turned off builds it afresh."""
+import os
+import subprocess
+import sys
+import warnings
+
+import pytest
+
+import autolev
+from autolev import loader, modelcache
+from autolev.cli import main
+from autolev.runtime import diskcache
+from autolev.runtime.model import Model
+from helpers import EXAMPLES
+
+PENDULUM = EXAMPLES / "double_pendulum.al"
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    """A fresh cache folder, with built models kept."""
+    folder = tmp_path / "cache"
+    monkeypatch.setenv("AUTOLEV_CACHE", str(folder))
+    monkeypatch.delenv(modelcache.DISABLE_VARIABLE, raising=False)
+    return folder
+
+
+def models_in(folder):
+    return sorted(p.name for p in folder.glob(modelcache.PREFIX + "*.pickle"))
+
+
+def run_in_a_new_process(model, out, env, refuse_building=False):
+    """`autolev run` in a fresh Python (no state shared with the building process);
+    with refuse_building, building the model (executing its module) is an error."""
+    code = ("import sys\nfrom autolev import loader\n"
+            + ("def refuse(*a):\n    raise SystemExit('the module was executed')\n"
+               "loader._execute = refuse\n" if refuse_building else "")
+            + "from autolev.cli import main\n"
+            f"sys.exit(main(['run', {str(model)!r}, '--out', {str(out)!r}, '-q']))\n")
+    return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                          text=True, timeout=300)
+
+
+def test_a_model_read_back_gives_the_rows_of_one_built_afresh(cache, tmp_path):
+    env = dict(os.environ)
+    cold = run_in_a_new_process(PENDULUM, tmp_path / "cold", env)
+    assert cold.returncode == 0, cold.stderr
+    assert len(models_in(cache)) == 1
+    warm = run_in_a_new_process(PENDULUM, tmp_path / "warm", env, refuse_building=True)
+    assert warm.returncode == 0, warm.stderr
+    files = sorted(p.name for p in (tmp_path / "cold").iterdir())
+    assert files and files == sorted(p.name for p in (tmp_path / "warm").iterdir())
+    for name in files:
+        assert (tmp_path / "cold" / name).read_bytes() == (tmp_path / "warm" / name).read_bytes()
+
+
+def test_a_changed_model_is_another_entry(cache, tmp_path):
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nX = A^2\n")
+    assert autolev.load(model)["X"] == autolev.load(model)["X"]
+    assert len(models_in(cache)) == 1
+    model.write_text("CONSTANTS A\nX = A^3\n")
+    x = autolev.load(model)["X"]
+    assert str(x) == "A**3" and len(models_in(cache)) == 2
+
+
+def test_a_damaged_entry_is_built_again(cache, tmp_path, monkeypatch):
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nX = A^2\n")
+    autolev.load(model)
+    (entry,) = cache.glob(modelcache.PREFIX + "*.pickle")
+    entry.write_bytes(b"not a pickle")
+    built = []
+    original = loader._execute
+    monkeypatch.setattr(loader, "_execute", lambda *a: built.append(1) or original(*a))
+    assert str(autolev.load(model)["X"]) == "A**2"
+    assert built == [1] and diskcache.verified(entry)        # and written again
+
+
+def test_turned_off_nothing_is_kept(cache, tmp_path, monkeypatch):
+    monkeypatch.setenv(modelcache.DISABLE_VARIABLE, "1")
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nX = A^2\n")
+    autolev.load(model)
+    assert not cache.exists() or models_in(cache) == []
+
+
+def test_the_warnings_of_building_are_given_again(cache, tmp_path, monkeypatch):
+    original = Model.constants
+
+    def constants(self, *args, **kwargs):
+        warnings.warn("a warning while building")
+        return original(self, *args, **kwargs)
+    monkeypatch.setattr(Model, "constants", constants)
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nX = A^2\n")
+    for _ in range(2):                        # built, then read back
+        with pytest.warns(UserWarning, match="a warning while building"):
+            autolev.load(model)
+    assert len(models_in(cache)) == 1
+
+
+def test_the_cache_keeps_under_its_limit_oldest_first(tmp_path):
+    folder = tmp_path / "c"
+    folder.mkdir(mode=0o700)
+    for n in range(5):
+        (folder / f"e{n}").write_bytes(b"x" * 1000)
+        os.utime(folder / f"e{n}", (n, n))
+    assert diskcache.trim(folder, limit=2500) == 3
+    assert sorted(p.name for p in folder.iterdir()) == ["e3", "e4"]
+
+
+def test_cache_info_and_clear(cache, tmp_path, capsys):
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nX = A^2\n")
+    autolev.load(model)
+    assert main(["cache", "info"]) == 0
+    out = capsys.readouterr().out
+    assert f"cache: {cache}" in out and "built models:      1" in out
+    assert main(["cache", "clear"]) == 0
+    assert capsys.readouterr().out.startswith("removed 1 entry")
+    assert models_in(cache) == []
+
+
+class _Planted:
+    """A pickle that runs code when it is read."""
+
+    def __init__(self, marker):
+        self.marker = str(marker)
+
+    def __reduce__(self):
+        return (open, (self.marker, "w"))
+
+
+def test_a_model_planted_in_a_cache_others_can_write_is_not_read(cache, tmp_path):
+    import hashlib
+    import pickle
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nX = A^2\n")
+    autolev.load(model)
+    (entry,) = cache.glob(modelcache.PREFIX + "*.pickle")
+    marker = tmp_path / "PLANTED-CODE-RAN"
+    data = pickle.dumps(_Planted(marker))
+    entry.write_bytes(data)                 # whoever can write the folder can write both
+    diskcache.digest_file(entry).write_text(hashlib.sha256(data).hexdigest() + "\n")
+    os.chmod(cache, 0o777)
+    env = dict(os.environ, TMPDIR=str(tmp_path))
+    code = f"import autolev; print(autolev.load({str(model)!r})['X'])"
+    done = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "A**2" and not marker.exists()
+    assert "writable by others" in done.stderr
