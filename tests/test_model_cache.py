@@ -152,3 +152,20 @@ def test_a_model_planted_in_a_cache_others_can_write_is_not_read(cache, tmp_path
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "A**2" and not marker.exists()
     assert "writable by others" in done.stderr
+
+
+def test_expressions_read_back_are_the_same_trees(cache):
+    import sympy as sm
+    from autolev.pipeline import translation
+    built = loader.load_translation(translation(PENDULUM), str(PENDULUM))
+    read = modelcache.read(modelcache.key(translation(PENDULUM).code, str(PENDULUM)))
+    assert read is not None and len(read.model.defs.rhs) == len(built.defs.rhs) >= 10
+    for symbol, value in built.defs.rhs.items():
+        again = read.model.defs.rhs[symbol]
+        # the same tree, term for term in the same order (not just equal after sorting)
+        assert sm.srepr(again) == sm.srepr(value) and hash(again) == hash(value)
+    x, y = sm.symbols("x y", real=True)
+    unevaluated = sm.Mul(2, sm.Add(x, y, evaluate=False), sm.Pow(x, 2, evaluate=False),
+                         evaluate=False)
+    modelcache.write("k" * 64, modelcache.Built(unevaluated, []))
+    assert sm.srepr(modelcache.read("k" * 64).model) == sm.srepr(unevaluated)

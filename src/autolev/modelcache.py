@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import functools
 import hashlib
+import io
 import os
 import pickle
 import platform
@@ -23,6 +24,8 @@ import sys
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
+
+import sympy as sm
 
 from .runtime import diskcache
 
@@ -99,7 +102,9 @@ def write(key_: str, built: Built) -> bool:
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(max(limit, _RECURSION))
     try:
-        data = pickle.dumps(built, protocol=pickle.HIGHEST_PROTOCOL)
+        buffer = io.BytesIO()
+        _ExpressionPickler(buffer, protocol=pickle.HIGHEST_PROTOCOL).dump(built)
+        data = buffer.getvalue()
     except (pickle.PicklingError, TypeError, AttributeError, RecursionError):
         return False
     finally:
@@ -111,6 +116,28 @@ def write(key_: str, built: Built) -> bool:
                       stacklevel=2)
         return False
     return True
+
+
+class _ExpressionPickler(pickle.Pickler):
+    """Sums, products and powers are written as their parts, to be put together again
+    as they were (sympy's own pickling rebuilds them through their constructors, which
+    sort and combine the terms anew: 2.7 times slower to read on the 3-D gait model)."""
+
+    def reducer_override(self, obj):
+        kind = type(obj)
+        if kind is sm.Add or kind is sm.Mul:
+            return _joined, (kind, obj.args, obj.is_commutative)
+        if kind is sm.Pow:
+            return _power, obj.args
+        return NotImplemented
+
+
+def _joined(kind, args, commutative):
+    return kind._from_args(args, commutative)
+
+
+def _power(base, exponent):
+    return sm.Pow(base, exponent, evaluate=False)
 
 
 @dataclass(frozen=True)
