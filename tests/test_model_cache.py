@@ -32,10 +32,13 @@ def models_in(folder):
 
 def run_in_a_new_process(model, out, env, refuse_building=False):
     """`autolev run` in a fresh Python (no state shared with the building process);
-    with refuse_building, building the model (executing its module) is an error."""
+    with refuse_building, building the model (executing its module) or its numeric
+    system (generating its code) is an error."""
     code = ("import sys\nfrom autolev import loader\n"
-            + ("def refuse(*a):\n    raise SystemExit('the module was executed')\n"
-               "loader._execute = refuse\n" if refuse_building else "")
+            "from autolev.runtime.numerics.system import NumericSystem\n"
+            + ("def refuse(*a, **k):\n    raise SystemExit('built again')\n"
+               "loader._execute = refuse\nNumericSystem.__init__ = refuse\n"
+               if refuse_building else "")
             + "from autolev.cli import main\n"
             f"sys.exit(main(['run', {str(model)!r}, '--out', {str(out)!r}, '-q']))\n")
     return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,

@@ -7,6 +7,7 @@ translation runs is a bug in autolev (AutolevInternalError)."""
 from __future__ import annotations
 
 import dataclasses
+import functools
 import os
 import textwrap
 import traceback
@@ -57,6 +58,8 @@ def load_translation(translation, filename: str):
         modelcache.write(key, built)
     built.warn_again()
     model = built.model
+    # the numeric systems its runs build are kept with it too
+    model.cache_writer = functools.partial(_keep_again, key, built.warnings)
     lines = translation.code.splitlines()
     model.source = ModelSource("translation", translation, filename, model.revision())
     model.names = translation.names
@@ -66,6 +69,10 @@ def load_translation(translation, filename: str):
                             for n, text in enumerate(lines, 1)
                             if text.startswith("model.code(")]
     return model
+
+
+def _keep_again(key: str, warnings_: list, model) -> None:
+    modelcache.write(key, modelcache.Built(model, warnings_))
 
 
 def _build(translation, filename: str) -> modelcache.Built:

@@ -16,3 +16,14 @@ class DerivedCache:
         if kept is None or kept[0] != state:
             kept = self._tables[kind] = (state, {})
         return kept[1]
+
+    def kept_with_the_model(self) -> "DerivedCache":
+        """The tables a pickled model keeps: its commands' numeric systems (rebuilt from
+        their generated code when read back), not the rest (sympy frames, Jacobians)."""
+        copy = DerivedCache()
+        copy._tables = {kind: kept for kind, kept in self._tables.items()
+                        if kind in PICKLED_TABLES}
+        return copy
+
+
+PICKLED_TABLES = ("numeric systems", "plain dynamics")

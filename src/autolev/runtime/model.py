@@ -47,6 +47,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         self.solved_speeds: set[sm.Symbol] = set()
         self.auxiliary_speeds: list[sm.Symbol] = []
         self.kane_equations: KaneEquations | None = None
+        self.kane_calls = 0             # KANE() statements so far (what numerics are keyed by)
         self._version = 0
         self._formed: tuple[int, KaneEquations] | None = None
         self.settings: dict[str, object] = {}
@@ -67,10 +68,12 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
 
     # -- pickling (the cache of built models) --------------------------------------
     def __getstate__(self) -> dict:
-        """The model as its statements left it: what numerics derived from it (compiled
-        libraries) is left out, and the modules its namespace holds go by name."""
+        """The model as its statements left it, with the numeric systems built for its
+        CODE commands (their compiled code is found again by its digest); the modules
+        its namespace holds go by name."""
         state = dict(self.__dict__)
-        state["derived"] = DerivedCache()
+        state["derived"] = self.derived.kept_with_the_model()
+        state.pop("cache_writer", None)
         if "namespace" in state:
             state["namespace"] = {
                 k: (_ModuleName(v.__name__) if isinstance(v, types.ModuleType) else v)
@@ -562,6 +565,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
             for sym, val in zip(eqs.unknowns, solution):
                 self.define(sym, val)
         self.kane_equations = eqs
+        self.kane_calls += 1
         return eqs
 
     # the equations, in the forms sympy users know ---------------------------------------

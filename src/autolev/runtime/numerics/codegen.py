@@ -188,12 +188,17 @@ def compile_python(prog: Program, name: str = "compute"):
     (division by zero, a domain error, a complex power) the same code evaluated with
     numpy scalars, which gives inf or nan like compiled C."""
     source = python_source(prog, name)
+    recipe = (name, len(prog.inputs))
+    return python_function(source, *recipe), source, recipe
+
+
+def python_function(source: str, name: str, n_in: int):
+    """The callable of `compile_python` from its source."""
     code = compile(source, f"<autolev generated {name}>", "exec")
     fast_ns, safe_ns = fast_namespace(), safe_namespace()
     exec(code, fast_ns)
     exec(code, safe_ns)
     fast, safe = fast_ns[name], safe_ns[name]
-    n_in = len(prog.inputs)
 
     def call(*arrays):
         try:
@@ -202,7 +207,7 @@ def compile_python(prog: Program, name: str = "compute"):
             with np.errstate(all="ignore"):
                 args = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
                 return safe(*args, arrays[n_in])
-    return call, source
+    return call
 
 
 # -- C ---------------------------------------------------------------------------------
@@ -381,13 +386,19 @@ def compile_c(prog: Program, name: str = "compute", extra_source: str = "",
     compiled once into a cached object and linked into the same library (reachable as
     `call.lib`)."""
     source = c_source(prog, name)
+    recipe = (name, len(prog.inputs), len(prog.assignments), extra_source, tuple(extra_flags))
+    return c_function(source, *recipe), source, recipe
+
+
+def c_function(source: str, name: str, n_in: int, n_work: int, extra_source: str = "",
+               extra_flags: tuple = ()):
+    """The callable of `compile_c` from its source (compiled, or found in the cache)."""
     lib = ctypes.CDLL(str(build_shared_library(source, C_FLAGS + tuple(extra_flags),
                                                shared_source=extra_source)))
     fn = getattr(lib, name)
-    n_in = len(prog.inputs)
     fn.argtypes = [ctypes.c_void_p] * (n_in + 2)
     fn.restype = None
-    work = np.zeros(max(1, len(prog.assignments)))
+    work = np.zeros(max(1, n_work))
     work_addr = work.ctypes.data
     empty = np.zeros(1)
 
@@ -415,4 +426,4 @@ def compile_c(prog: Program, name: str = "compute", extra_source: str = "",
         return out
     call.lib = lib
     call.work = work
-    return call, source
+    return call

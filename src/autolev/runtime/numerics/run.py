@@ -334,10 +334,13 @@ def _numeric_system(model, command, files, encoded, solving: tuple, backend: str
     equations, unknowns = solving
 
     def systems():
-        state = (model.version, model.defs.user_version, id(model.kane_equations),
+        state = (model.version, model.defs.user_version, model.kane_calls,
                  len(model.outputs), len(model.encoded))
         return model.derived.table("numeric systems", state)
-    key = (id(command), backend, quirks, tuple(locked))
+    # by the command's place in the model (which a model read back from the cache keeps)
+    place = next((k for k, c in enumerate(model.code_commands) if c is command),
+                 "plain" if command is model.plain_dynamics() else id(command))
+    key = (place, backend, quirks, tuple(locked))
     # the command itself is kept with its system: an id() alone may be reused
     entry = systems().get(key)
     if entry is not None and entry[0] is command:
@@ -352,6 +355,9 @@ def _numeric_system(model, command, files, encoded, solving: tuple, backend: str
             hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
             before_compiling=before_compiling, locked=locked)
     systems()[key] = (command, system)      # after the build: it may form KANE
+    keep = getattr(model, "cache_writer", None)
+    if keep is not None:                     # the cache of built models keeps it
+        keep(model)
     return system
 
 

@@ -44,27 +44,37 @@ def _derivative_order_then_name(syms) -> list:
 
 @dataclass
 class Function:
-    """A compiled numeric function with its backend and source."""
+    """A compiled numeric function with its backend and source; pickled as its source,
+    compiled again (or found in the build cache) when it is read back."""
 
     call: object
     backend: str            # "c" or "python"
     source: str
+    recipe: tuple = ()      # the rest of what builds `call` from `source`
+
+    def __getstate__(self) -> dict:
+        return {"backend": self.backend, "source": self.source, "recipe": self.recipe}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        build = codegen.c_function if self.backend == "c" else codegen.python_function
+        self.call = build(self.source, *self.recipe)
 
 
 def compile_program(prog: codegen.Program, backend: str, name: str,
                     extra_source: str = "", extra_flags: tuple = ()) -> Function:
     if backend in ("auto", "c") and codegen.compiler() is not None:
         try:
-            fn, src = codegen.compile_c(prog, name, extra_source, extra_flags)
-            return Function(fn, "c", src)
+            call, source, recipe = codegen.compile_c(prog, name, extra_source, extra_flags)
+            return Function(call, "c", source, recipe)
         except codegen.CompileError as exc:
             if backend == "c":
                 raise AutolevModelError(f"the C compiler failed: {exc}") from None
             warnings.warn(f"compiling {name} failed; using Python ({exc})")
     elif backend == "c":
         raise AutolevModelError("no C compiler found (set CC, or use backend='python')")
-    fn, src = codegen.compile_python(prog, name)
-    return Function(fn, "python", src)
+    call, source, recipe = codegen.compile_python(prog, name)
+    return Function(call, "python", source, recipe)
 
 
 class SingularMassMatrix(ArithmeticError):
@@ -197,7 +207,6 @@ class NumericSystem:
             codegen.Program({"p": self.params}, self.constant_defs, defs).build(),
             "python", "autolev_constants")
         self.rhs_function = None
-        self.loop = None
         self.unknown_positions = [self.states.index(_lower(d))
                                   for d in self.implicit_unknowns]
         if self.nstate:
@@ -206,10 +215,6 @@ class NumericSystem:
             self.rhs_function = compile_program(
                 codegen.Program(inputs, self.rhs_exprs, defs, fixed).build(), backend,
                 "autolev_rhs", extra_source=loop_source, extra_flags=loop_flags)
-            if self.rhs_function.backend == "c":
-                call = self.rhs_function.call
-                self.loop = CompiledLoop(call.lib, self.nstate, self.unknown_positions,
-                                         call.work, len(self.rhs_exprs))
         inputs_out = dict(inputs, a=accel_inputs)
         # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
         self.output_function = compile_program(
@@ -219,10 +224,33 @@ class NumericSystem:
             k: (compile_program(codegen.Program(inputs_out, v, defs, fixed).build(), backend,
                                 f"autolev_{k}"), len(v))
             for k, v in extra.items()}
+        self._bind_loop()
+
+    def _bind_loop(self) -> None:
+        """The compiled integration loop and the CPython entry point of the right-hand
+        side, when it is C."""
+        self.loop = None
+        if self.rhs_function is not None and self.rhs_function.backend == "c":
+            call = self.rhs_function.call
+            self.loop = CompiledLoop(call.lib, self.nstate, self.unknown_positions,
+                                     call.work, len(self.rhs_exprs))
         self._rhs_out = np.empty(len(self.rhs_exprs))
-        # the CPython entry point of the compiled right-hand side, when there is one
         self._py = self.loop.python_entry if self.loop is not None else None
         self._py_ctx = self.loop.context_address if self.loop is not None else None
+
+    # -- pickling (with the model, in the cache of built models) ------------------------
+    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions", "derived")
+
+    def __getstate__(self) -> dict:
+        """What rebuilds the system: its expressions and its functions' sources; not
+        the loaded libraries, a run's specified functions, nor Jacobians derived later."""
+        return {k: v for k, v in self.__dict__.items() if k not in self._UNPICKLED}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self.specified_functions = []
+        self.derived = {}
+        self._bind_loop()
 
     # -- structure ------------------------------------------------------------------------
     def _integrated(self, implicit) -> tuple[dict, list, list]:
