@@ -11,7 +11,6 @@ from . import studies
 from .errors import AutolevModelError
 from .io import CodeCommand
 from .numerics.files import safe_stem
-from .numerics.linearize import MAX_SYMBOLIC_STATES, linearize, linearize_symbolic
 from .numerics.run import Result, run_command
 
 
@@ -168,6 +167,8 @@ class SimulationMixin:
         """A and B as sympy matrices in the model's symbols, with `point` ({name:
         value}) substituted; refused above `max_states` states (default 12: beyond,
         the expressions outgrow reading).  See Model.linearize for the rest."""
+        # imported here: scipy.linalg costs 0.15 s of every start, and only this needs it
+        from .numerics.linearize import MAX_SYMBOLIC_STATES, linearize_symbolic
         return linearize_symbolic(self, self.command_to_linearize(code), point, inputs,
                                   locked, max_states or MAX_SYMBOLIC_STATES)
 
@@ -195,6 +196,7 @@ class SimulationMixin:
         coordinates (`dependent`: the names of those they fix; default: chosen).
         `locked`: names of coordinates held at their values (with Q' = U: U = U' = 0,
         U's row of Kane's equations dropped), as a rigid joint would."""
+        from .numerics.linearize import linearize   # scipy.linalg: see linearize_symbolic
         return linearize(self, self.command_to_linearize(code), operating_point, inputs,
                          backend=backend, infile=infile, missing_values=missing_values,
                          overrides=overrides, constraints=constraints, dependent=dependent,

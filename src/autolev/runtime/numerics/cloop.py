@@ -19,7 +19,6 @@ import time as _time
 from pathlib import Path
 
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients
 
 LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
 PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
@@ -79,7 +78,8 @@ class _Context(ctypes.Structure):
 def _dop853_table() -> np.ndarray:
     """The Dormand-Prince 8(5,3) tables (A 16x16, B, C, E3, E5, D 4x16) as one array,
     from scipy's published coefficients."""
-    k = dop853_coefficients
+    # imported here: a run whose compiled loop is cached never generates its C
+    from scipy.integrate._ivp import dop853_coefficients as k
     n, ne = k.N_STAGES, k.N_STAGES_EXTENDED
     a = np.zeros((ne, ne))
     a[:, :] = k.A[:ne, :ne]

@@ -27,7 +27,6 @@ import time as _time
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.integrate
 
 from . import cloop
 
@@ -339,11 +338,16 @@ def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progres
                        schedule, abserr, relerr, on_row, progress, stats)
 
 
+def _scipy_method(name: str):
+    import scipy.integrate   # 0.14 s to import: only runs with a scipy method pay it
+    return scipy.integrate._ivp.ivp.METHODS[name]
+
+
 def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
                      stats) -> dict:
     """A scipy solver started afresh from (T, y) to T + INTEGSTP, step after step."""
     for t_next, printed in schedule.steps():
-        solver = scipy.integrate._ivp.ivp.METHODS[name](
+        solver = _scipy_method(name)(
             f, t, y, t_next, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
         try:
             while solver.status == "running":
@@ -379,7 +383,7 @@ def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, 
     end once, at the start)."""
     if t_end == t:
         return stats
-    solver = scipy.integrate._ivp.ivp.METHODS[name](
+    solver = _scipy_method(name)(
         f, t, y, t_end, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
     direction = 1 if t_end >= t else -1
     for times in blocks:

@@ -16,7 +16,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-import scipy.linalg
 import sympy as sm
 
 from .. import symbols as S
@@ -954,6 +953,7 @@ def _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_p
 
 
 def _linear_solve(a, b, zero_params):
+    import scipy.linalg      # 0.1 s to import: only CODE ALGEBRAIC's solves pay it
     try:
         lu, piv = scipy.linalg.lu_factor(a, check_finite=True)
     except (ValueError, np.linalg.LinAlgError):
