@@ -192,9 +192,11 @@ def compile_python(prog: Program, name: str = "compute"):
     return python_function(source, *recipe), source, recipe
 
 
-def python_function(source: str, name: str, n_in: int):
-    """The callable of `compile_python` from its source."""
-    code = compile(source, f"<autolev generated {name}>", "exec")
+def python_function(source: str, name: str, n_in: int, code=None):
+    """The callable of `compile_python` from its source (or from its compiled `code`,
+    kept as `call.code`: compiling a large program is most of the cost)."""
+    if code is None:
+        code = compile(source, f"<autolev generated {name}>", "exec")
     fast_ns, safe_ns = fast_namespace(), safe_namespace()
     exec(code, fast_ns)
     exec(code, safe_ns)
@@ -207,6 +209,7 @@ def python_function(source: str, name: str, n_in: int):
             with np.errstate(all="ignore"):
                 args = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
                 return safe(*args, arrays[n_in])
+    call.code = code
     return call
 
 

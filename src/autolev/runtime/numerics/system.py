@@ -17,6 +17,7 @@ ENCODE values, evaluated at print times only, with the accelerations found there
 from __future__ import annotations
 
 import inspect
+import marshal
 import warnings
 from dataclasses import dataclass
 
@@ -53,12 +54,19 @@ class Function:
     recipe: tuple = ()      # the rest of what builds `call` from `source`
 
     def __getstate__(self) -> dict:
-        return {"backend": self.backend, "source": self.source, "recipe": self.recipe}
+        state = {"backend": self.backend, "source": self.source, "recipe": self.recipe}
+        if self.backend == "python":       # Python's compiled code: faster to read back
+            state["code"] = marshal.dumps(self.call.code)
+        return state
 
     def __setstate__(self, state: dict) -> None:
+        code = state.pop("code", None)
         self.__dict__.update(state)
-        build = codegen.c_function if self.backend == "c" else codegen.python_function
-        self.call = build(self.source, *self.recipe)
+        if self.backend == "c":
+            self.call = codegen.c_function(self.source, *self.recipe)
+        else:
+            self.call = codegen.python_function(
+                self.source, *self.recipe, code=marshal.loads(code) if code else None)
 
 
 def compile_program(prog: codegen.Program, backend: str, name: str,
