@@ -172,3 +172,11 @@ def test_expressions_read_back_are_the_same_trees(cache):
                          evaluate=False)
     modelcache.write("k" * 64, modelcache.Built(unevaluated, []))
     assert sm.srepr(modelcache.read("k" * 64).model) == sm.srepr(unevaluated)
+
+
+def test_a_model_changed_after_loading_is_not_written_back(cache, tmp_path):
+    model = autolev.load(PENDULUM)
+    model.output((model["Q1"], "Q1 again"))          # changed by its user
+    model.simulate(TFINAL=0.1, out_dir=tmp_path)      # builds a numeric system
+    again = autolev.load(PENDULUM)
+    assert len(again.outputs) == len(model.outputs) - 1

@@ -58,8 +58,9 @@ def load_translation(translation, filename: str):
         modelcache.write(key, built)
     built.warn_again()
     model = built.model
-    # the numeric systems its runs build are kept with it too
-    model.cache_writer = functools.partial(_keep_again, key, built.warnings)
+    # the numeric systems its runs build are kept with it too, while it is as built
+    model.cache_writer = functools.partial(_keep_again, key, built.warnings,
+                                           _as_built(model))
     lines = translation.code.splitlines()
     model.source = ModelSource("translation", translation, filename, model.revision())
     model.names = translation.names
@@ -71,8 +72,16 @@ def load_translation(translation, filename: str):
     return model
 
 
-def _keep_again(key: str, warnings_: list, model) -> None:
-    modelcache.write(key, modelcache.Built(model, warnings_))
+def _as_built(model) -> tuple:
+    """What a caller may change in a model after loading it (statements, definitions,
+    inputs, outputs, settings): a model changed since is not what its module built."""
+    return (model.revision(), len(model.outputs), len(model.encoded),
+            tuple(model.settings.items()), tuple(model.unit_of.items()))
+
+
+def _keep_again(key: str, warnings_: list, as_built: tuple, model) -> None:
+    if _as_built(model) == as_built:
+        modelcache.write(key, modelcache.Built(model, warnings_))
 
 
 def _build(translation, filename: str) -> modelcache.Built:
