@@ -121,8 +121,9 @@ def test_cache_info_and_clear(cache, tmp_path, capsys):
     assert main(["cache", "info"]) == 0
     out = capsys.readouterr().out
     assert f"cache: {cache}" in out and "built models:      1" in out
+    assert "translations:      1" in out
     assert main(["cache", "clear"]) == 0
-    assert capsys.readouterr().out.startswith("removed 1 entry")
+    assert capsys.readouterr().out.startswith("removed 2 entries")
     assert models_in(cache) == []
 
 
@@ -180,3 +181,35 @@ def test_a_model_changed_after_loading_is_not_written_back(cache, tmp_path):
     model.simulate(TFINAL=0.1, out_dir=tmp_path)      # builds a numeric system
     again = autolev.load(PENDULUM)
     assert len(again.outputs) == len(model.outputs) - 1
+
+
+def test_a_translation_is_read_back_until_a_file_it_read_or_a_folder_changes(
+        cache, tmp_path, monkeypatch):
+    folder = tmp_path / "m"
+    folder.mkdir()
+    (folder / "kin.al").write_text("CONSTANTS A\n")
+    model = folder / "m.al"
+    model.write_text("RUN kin.al\nX = sq(A)\n")
+    translated = []
+    real = loader.translation
+    monkeypatch.setattr(loader, "translation", lambda p: translated.append(p) or real(p))
+    with pytest.raises(autolev.AutolevTranslationError):
+        autolev.load(model)                     # sq is not a function: nothing kept
+    (folder / "sq.r").write_text("#1#^2\n")     # a folder it looked in changed
+    assert str(autolev.load(model)["X"]) == "A**2"
+    assert str(autolev.load(model)["X"]) == "A**2"
+    assert len(translated) == 2                 # the third load read it back
+    (folder / "kin.al").write_text("CONSTANTS A, B\n")   # a file it read changed
+    assert autolev.load(model).quantity("B") is not None
+    assert len(translated) == 3
+    (folder / "sq.r").write_text("#1#^3\n")     # and the function's file
+    assert str(autolev.load(model)["X"]) == "A**3"
+    assert len(translated) == 4
+
+
+def test_a_file_added_where_the_translation_looked_is_seen(cache, tmp_path):
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nsin(A)\n")
+    autolev.load(model)                         # a statement showing SIN(A): kept
+    (tmp_path / "sin.a").write_text("Z = 2*#1#\n")          # now a macro call
+    assert str(autolev.load(model)["Z"]) == "2*A"

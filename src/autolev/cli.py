@@ -595,8 +595,9 @@ def cmd_cache(ns: argparse.Namespace) -> int:
         return 0
     s = modelcache.summary()
     print(f"cache: {s.folder}")
-    print(f"  built models:  {s.models:5d}  {_megabytes(s.model_bytes)}")
-    print(f"  compiled code: {s.compiled:5d}  {_megabytes(s.compiled_bytes)}")
+    for label, (count, size) in (("built models", s.models), ("translations", s.translations),
+                                 ("compiled code", s.compiled)):
+        print(f"  {label + ':':14s} {count:5d}  {_megabytes(size)}")
     print(f"  limit: {_megabytes(s.limit)} (the oldest entries leave first)")
     if not modelcache.enabled():
         print(f"  built models are not kept: {modelcache.DISABLE_VARIABLE} is set")

@@ -45,7 +45,13 @@ _SYMPY = os.path.dirname(os.path.abspath(sympy.__file__)) + os.sep
 def load(path):
     """Translate the model at `path`, execute it, and return its `Model`."""
     p = Path(path)
-    return load_translation(translation(p), str(p))
+    return load_translation(_translation(p), str(p))
+
+
+def _translation(path: Path):
+    """The model file's translation (read back from the cache while nothing it read
+    changed)."""
+    return modelcache.translation(path, lambda: translation(path))
 
 
 def load_translation(translation, filename: str):
@@ -299,7 +305,7 @@ def load_for_run(path) -> tuple[object, list]:
     CODE wrote did not depend on what followed).  Returns (model, notes)."""
     p = Path(path)
     try:
-        result = translation(p)
+        result = _translation(p)
         return load_translation(result, str(p)), []
     except (AutolevTranslationError, AutolevRuntimeError) as exc:
         failure = exc

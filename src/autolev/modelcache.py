@@ -32,6 +32,7 @@ from .runtime import diskcache
 DISABLE_VARIABLE = "AUTOLEV_NO_MODEL_CACHE"
 FORMAT = 1
 PREFIX = "model_"
+TRANSLATION_PREFIX = "translation_"
 _PACKAGE = Path(__file__).resolve().parent
 
 
@@ -118,6 +119,70 @@ def write(key_: str, built: Built) -> bool:
     return True
 
 
+# -- translations -------------------------------------------------------------------
+@dataclass
+class _KeptTranslation:
+    translation: object
+    manifest: tuple
+
+
+def translation(path: Path, make):
+    """The translation of the model file at `path`: read back while the file, every
+    file its translation read (RUN files, macros, functions) and the folders where it
+    looked for them are unchanged (a NAME.R added next to the model changes what
+    NAME(x) means); else `make()`, kept when it succeeds."""
+    if not enabled():
+        return make()
+    try:
+        raw = path.read_bytes()
+    except OSError:
+        return make()                  # the translation reports the unreadable file
+    key_ = hashlib.sha256(_code_digest().encode() + b"\0translation\0"
+                          + str(path).encode("utf-8", "surrogatepass") + b"\0" + raw)
+    entry = diskcache.cache_dir() / f"{TRANSLATION_PREFIX}{key_.hexdigest()[:40]}.pickle"
+    if diskcache.verified(entry):
+        kept = pickle.loads(entry.read_bytes())
+        if isinstance(kept, _KeptTranslation) and kept.manifest == _manifest(
+                path, kept.translation.files):
+            return kept.translation
+    result = make()
+    try:
+        data = pickle.dumps(_KeptTranslation(result, _manifest(path, result.files)),
+                            protocol=pickle.HIGHEST_PROTOCOL)
+    except (pickle.PicklingError, TypeError, AttributeError, RecursionError):
+        return result
+    try:
+        diskcache.install(data, entry)
+    except OSError as exc:
+        warnings.warn(f"the translation could not be cached: {exc.strerror or exc}",
+                      stacklevel=2)
+    return result
+
+
+def _manifest(root: Path, files: list[str]) -> tuple:
+    """The digest of every file read and the names in every folder looked in (each
+    read file's folder and those up to the model's own)."""
+    base = root.parent.resolve()
+    digests, folders = [], {base}
+    for name in files:
+        path = Path(name)
+        try:
+            digests.append((name, hashlib.sha256(path.read_bytes()).hexdigest()))
+        except OSError:
+            digests.append((name, None))
+        folder = path.parent.resolve()
+        while folder not in folders and base in folder.parents:
+            folders.add(folder)
+            folder = folder.parent
+    listings = []
+    for folder in sorted(folders):
+        try:
+            listings.append((str(folder), tuple(sorted(os.listdir(folder)))))
+        except OSError:
+            listings.append((str(folder), None))
+    return tuple(digests), tuple(listings)
+
+
 class _ExpressionPickler(pickle.Pickler):
     """Sums, products and powers are written as their parts, to be put together again
     as they were (sympy's own pickling rebuilds them through their constructors, which
@@ -142,21 +207,23 @@ def _power(base, exponent):
 
 @dataclass(frozen=True)
 class Summary:
+    """(entries, bytes) of each kind of entry."""
+
     folder: Path
-    models: int
-    model_bytes: int
-    compiled: int
-    compiled_bytes: int
+    models: tuple[int, int]
+    translations: tuple[int, int]
+    compiled: tuple[int, int]
     limit: int
 
 
 def summary() -> Summary:
     folder = diskcache.cache_dir()
     found = diskcache.entries(folder)
-    models = [e for e in found if e.path.name.startswith(PREFIX)]
-    compiled = [e for e in found if not e.path.name.startswith(PREFIX)]
-    return Summary(folder, len(models), sum(e.size for e in models), len(compiled),
-                   sum(e.size for e in compiled), diskcache.limit_bytes())
+    kinds: dict[str, list] = {PREFIX: [], TRANSLATION_PREFIX: [], "": []}
+    for e in found:
+        kinds[next(k for k in kinds if e.path.name.startswith(k))].append(e)
+    return Summary(folder, *[(len(v), sum(e.size for e in v)) for v in kinds.values()],
+                   diskcache.limit_bytes())
 
 
 def clear() -> tuple[int, int]:

@@ -140,6 +140,7 @@ class Translation:
     # "entity" (frames, bodies, points, particles), "vector" (vectors and dyadics),
     # each Autolev name -> Python name
     namespaces: dict[str, dict[str, str]] = field(default_factory=dict)
+    files: list[str] = field(default_factory=list)    # every file read, the model's first
 
 
 def _unsupported_statement(tr: Translator, st: ir.Statement) -> None:
@@ -291,7 +292,8 @@ class Translator:
         self._span = None
         code, line_map = self._render()
         return Translation(code, line_map, self.diagnostics, dict(self.autolev_names),
-                           {k: dict(v) for k, v in self.namespaces.items()})
+                           {k: dict(v) for k, v in self.namespaces.items()},
+                           list(self.program.files))
 
     def _report_other_undeclared(self, st: ir.Statement, first) -> None:
         """The names after the first undeclared one in the statement that are not
