@@ -115,7 +115,7 @@ class Includes:
                 if isinstance(node, P.RunStatementContext):
                     yield from self._run(piece, node)
                 elif (macro := self._macro_call(node, path, piece)) is not None:
-                    yield from self._macro(piece, macro)
+                    yield from self._macro(piece, *macro)
                 else:
                     yield piece
 
@@ -178,20 +178,21 @@ class Includes:
         return found
 
     # -- macros --------------------------------------------------------------------
-    def _macro_call(self, node, path: Path | None, piece: Piece) -> P.CallAtomContext | None:
-        """The call of a statement that is only NAME(args) with a NAME.A to expand."""
+    def _macro_call(self, node, path: Path | None,
+                    piece: Piece) -> tuple[P.CallAtomContext, Path] | None:
+        """The call of a statement that is only NAME(args), and the NAME.A it expands."""
         if self.model_root is None or not isinstance(node, P.ExpressionStatementContext):
             return None
         primary = node.expr().getChild(0)
         if not isinstance(primary, P.CallAtomContext) or primary in piece.functions:
             return None
-        return primary if find_macro(primary.start.text, self._search_dirs(path)) else None
+        found = find_macro(primary.start.text, self._search_dirs(path))
+        return (primary, found) if found is not None else None
 
-    def _macro(self, piece: Piece, call: P.CallAtomContext) -> Iterator[Piece]:
+    def _macro(self, piece: Piece, call: P.CallAtomContext, found: Path) -> Iterator[Piece]:
         origin = piece.origin
         name = call.start.text
         args = self._args(call, origin)
-        found = find_macro(name, self._search_dirs(origin.path))
         got = self._expansion_source(origin, call, "macro", name, found, args)
         piece.expansion = Expansion(name, tuple(args), got[0] if got else None)
         yield piece

@@ -79,42 +79,48 @@ def read(key_: str) -> Built | None:
     """The built model of `key_`, or None when there is none (or it is not intact)."""
     if not enabled():
         return None
-    entry = _entry(key_)
-    if not diskcache.verified(entry):
-        return None
-    limit = sys.getrecursionlimit()
-    sys.setrecursionlimit(max(limit, _RECURSION))
-    try:
-        built = pickle.loads(entry.read_bytes())
-    finally:
-        sys.setrecursionlimit(limit)
+    built = _load(_entry(key_))
     return built if isinstance(built, Built) else None
+
+
+def write(key_: str, built: Built) -> bool:
+    """Keep a built model; False when it cannot be kept (it holds something that does
+    not pickle, or nests deeper than pickling can walk): it is then built every time."""
+    return enabled() and _keep(_entry(key_), built, "the built model")
 
 
 # sympy expressions nest deeply: pickling walks them recursively
 _RECURSION = 20000
 
 
-def write(key_: str, built: Built) -> bool:
-    """Keep a built model; False when it cannot be kept (it holds something that does
-    not pickle, or nests deeper than pickling can walk): it is then built every time."""
-    if not enabled():
-        return False
+def _load(entry: Path):
+    """What a verified entry holds, or None."""
+    data = diskcache.read_verified(entry)
+    if data is None:
+        return None
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, _RECURSION))
+    try:
+        return pickle.loads(data)
+    finally:
+        sys.setrecursionlimit(limit)
+
+
+def _keep(entry: Path, obj, what: str) -> bool:
+    """Write `obj` as the entry; False when it does not pickle or the disk refuses."""
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(max(limit, _RECURSION))
     try:
         buffer = io.BytesIO()
-        _ExpressionPickler(buffer, protocol=pickle.HIGHEST_PROTOCOL).dump(built)
-        data = buffer.getvalue()
+        _ExpressionPickler(buffer, protocol=pickle.HIGHEST_PROTOCOL).dump(obj)
     except (pickle.PicklingError, TypeError, AttributeError, RecursionError):
         return False
     finally:
         sys.setrecursionlimit(limit)
     try:
-        diskcache.install(data, _entry(key_))
-    except OSError as exc:          # a full or read-only disk: the model is still built
-        warnings.warn(f"the built model could not be cached: {exc.strerror or exc}",
-                      stacklevel=2)
+        diskcache.install(buffer.getvalue(), entry)
+    except OSError as exc:          # a full or read-only disk: it is built again next time
+        warnings.warn(f"{what} could not be cached: {exc.strerror or exc}", stacklevel=3)
         return False
     return True
 
@@ -140,22 +146,12 @@ def translation(path: Path, make):
     key_ = hashlib.sha256(_code_digest().encode() + b"\0translation\0"
                           + str(path).encode("utf-8", "surrogatepass") + b"\0" + raw)
     entry = diskcache.cache_dir() / f"{TRANSLATION_PREFIX}{key_.hexdigest()[:40]}.pickle"
-    if diskcache.verified(entry):
-        kept = pickle.loads(entry.read_bytes())
-        if isinstance(kept, _KeptTranslation) and kept.manifest == _manifest(
-                path, kept.translation.files):
-            return kept.translation
+    kept = _load(entry)
+    if isinstance(kept, _KeptTranslation) and \
+            kept.manifest == _manifest(path, kept.translation.files):
+        return kept.translation
     result = make()
-    try:
-        data = pickle.dumps(_KeptTranslation(result, _manifest(path, result.files)),
-                            protocol=pickle.HIGHEST_PROTOCOL)
-    except (pickle.PicklingError, TypeError, AttributeError, RecursionError):
-        return result
-    try:
-        diskcache.install(data, entry)
-    except OSError as exc:
-        warnings.warn(f"the translation could not be cached: {exc.strerror or exc}",
-                      stacklevel=2)
+    _keep(entry, _KeptTranslation(result, _manifest(path, result.files)), "the translation")
     return result
 
 

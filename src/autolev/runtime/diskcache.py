@@ -84,13 +84,19 @@ def digest_file(entry: Path) -> Path:
 def verified(entry: Path) -> bool:
     """An entry that is ours, private, and exactly what was written (its SHA-256
     recorded beside it)."""
+    return read_verified(entry) is not None
+
+
+def read_verified(entry: Path) -> bytes | None:
+    """The bytes of a verified entry (read once, checked as read), or None."""
     try:
         if not_private(entry) is not None:
-            return False
+            return None
         expected = digest_file(entry).read_text().strip()
-        return hashlib.sha256(entry.read_bytes()).hexdigest() == expected
+        data = entry.read_bytes()
     except OSError:
-        return False
+        return None
+    return data if hashlib.sha256(data).hexdigest() == expected else None
 
 
 def install(data: bytes, target: Path) -> None:

@@ -6,6 +6,7 @@ Each handler is registered in `core.EXPRESSIONS` for its IR class and called thr
 from __future__ import annotations
 
 import math
+import operator
 from fractions import Fraction
 
 from .. import ir
@@ -82,15 +83,7 @@ def _double_of(op: str, a: Typed, b: Typed) -> float | None:
     if x is None or y is None:
         return None
     try:
-        if op == "+":
-            return x + y
-        if op == "-":
-            return x - y
-        if op == "*":
-            return x * y
-        if op == "/":
-            return x / y
-        return math.pow(x, y)
+        return _ARITHMETIC.get(op, math.pow)(x, y)
     except OverflowError:
         return math.inf
     except (ZeroDivisionError, ValueError):
@@ -212,15 +205,13 @@ def equation(tr: Translator, e: ir.Equation, want: str) -> Typed:
     raise tr.error("'=' is only allowed in some function arguments", e, "T009")
 
 
+# + - * / of two numbers, exact or double (a division by zero raises ZeroDivisionError)
+_ARITHMETIC = {"+": operator.add, "-": operator.sub, "*": operator.mul, "/": operator.truediv}
+
+
 def _fold(op: str, a: Fraction, b: Fraction) -> Fraction | None:
-    if op == "+":
-        return a + b
-    if op == "-":
-        return a - b
-    if op == "*":
-        return a * b
-    if op == "/":
-        return a / b if b != 0 else None
+    if op in _ARITHMETIC:
+        return _ARITHMETIC[op](a, b) if op != "/" or b != 0 else None
     if op == "^" and b.denominator == 1 and not (a == 0 and b < 0) and \
             (abs(b) <= 64 or _power_digits_log10(a, b) <= math.log10(MAX_EXACT_DIGITS)):
         return a ** int(b)
