@@ -213,3 +213,44 @@ def test_a_file_added_where_the_translation_looked_is_seen(cache, tmp_path):
     autolev.load(model)                         # a statement showing SIN(A): kept
     (tmp_path / "sin.a").write_text("Z = 2*#1#\n")          # now a macro call
     assert str(autolev.load(model)["Z"]) == "2*A"
+
+
+TWO_PROGRAMS = """\
+NEWTONIAN N
+BODIES A
+POINTS O
+VARIABLES Q', U'
+CONSTANTS G, L, M, K
+MASS A = M
+INERTIA A, 0, 0, M*L^2/12
+SIMPROT(N, A, 3, Q)
+Q' = U
+P_O_AO> = L/2*A1>
+W_A_N> = U*N3>
+V_AO_N> = DT(P_O_AO>, N)
+GRAVITY(G*N1>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT G = 9.81, L = 1, M = 2, K = 3, Q = 30 DEG, U = 0
+INPUT TFINAL = 0.5, INTEGSTP = 0.1
+OUTPUT Q, U
+CODE DYNAMICS() swing.c
+ENERGY = M*G*L/2*COS(Q) + K
+OUTPUT ENERGY
+CODE ALGEBRAIC() energy.c
+"""
+
+
+def test_a_cold_run_writes_its_entry_once_with_every_program(cache, tmp_path, monkeypatch):
+    model = tmp_path / "two.al"
+    model.write_text(TWO_PROGRAMS)
+    writes = []
+    real = modelcache.write
+    monkeypatch.setattr(modelcache, "write", lambda k, b: writes.append(k) or real(k, b))
+    assert main(["run", str(model), "--out", str(tmp_path / "cold"), "-q"]) == 0
+    assert len(writes) == 1 and len(models_in(cache)) == 1
+    # both CODE commands' numeric systems are in that one entry: nothing is built warm
+    warm = run_in_a_new_process(model, tmp_path / "warm", dict(os.environ),
+                                refuse_building=True)
+    assert warm.returncode == 0, warm.stderr
+    assert {p.name for p in (tmp_path / "warm").iterdir()} >= {"swing.1", "energy.1"}

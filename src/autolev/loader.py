@@ -7,7 +7,6 @@ translation runs is a bug in autolev (AutolevInternalError)."""
 from __future__ import annotations
 
 import dataclasses
-import functools
 import os
 import textwrap
 import traceback
@@ -54,19 +53,23 @@ def _translation(path: Path):
     return modelcache.translation(path, lambda: translation(path))
 
 
-def load_translation(translation, filename: str):
+def load_translation(translation, filename: str, write_later: bool = False):
     """Run the generated module (or read the model it built from the cache of built
-    models); return its model, with `namespace` and `names`."""
+    models); return its model, with `namespace` and `names`.  `write_later`: a model
+    built now goes into the cache when its first runs end (see ModelKeeper), with the
+    numeric systems they built, instead of now and again then."""
     key = modelcache.key(translation.code, filename)
     built = modelcache.read(key)
+    keeper = None
     if built is None:
         built = _build(translation, filename)
-        modelcache.write(key, built)
+        keeper = ModelKeeper(key, built.warnings, _as_built(built.model))
+        if not write_later:
+            keeper.flush(built.model)
     built.warn_again()
     model = built.model
     # the numeric systems its runs build are kept with it too, while it is as built
-    model.cache_writer = functools.partial(_keep_again, key, built.warnings,
-                                           _as_built(model))
+    model.cache_writer = keeper or ModelKeeper(key, built.warnings, _as_built(model), False)
     lines = translation.code.splitlines()
     model.source = ModelSource("translation", translation, filename, model.revision())
     model.names = translation.names
@@ -85,9 +88,22 @@ def _as_built(model) -> tuple:
             tuple(model.settings.items()), tuple(model.unit_of.items()))
 
 
-def _keep_again(key: str, warnings_: list, as_built: tuple, model) -> None:
-    if _as_built(model) == as_built:
-        modelcache.write(key, modelcache.Built(model, warnings_))
+class ModelKeeper:
+    """Writes a loaded model back to the cache of built models, with the numeric
+    systems its runs built (`added`), once the work that builds them is done (`flush`:
+    the end of run_commands, simulate and linearize) and only while the model is as
+    its module built it: one write of the whole entry instead of one per system."""
+
+    def __init__(self, key: str, warnings_: list, as_built: tuple, pending: bool = True):
+        self.key, self.warnings, self.as_built, self.pending = key, warnings_, as_built, pending
+
+    def added(self) -> None:
+        self.pending = True
+
+    def flush(self, model) -> None:
+        if self.pending and _as_built(model) == self.as_built:
+            modelcache.write(self.key, modelcache.Built(model, self.warnings))
+        self.pending = False
 
 
 def _build(translation, filename: str) -> modelcache.Built:
@@ -302,11 +318,13 @@ def load_for_run(path) -> tuple[object, list]:
     """The model for `autolev run`: as `autolev.load`, except that when the only
     statements that fail come after the last CODE command, the model is built up to
     that command (Autolev's session rejected a bad statement and went on; the program
-    CODE wrote did not depend on what followed).  Returns (model, notes)."""
+    CODE wrote did not depend on what followed).  A model built now goes into the
+    cache of built models when its first run or linearization ends.  Returns (model,
+    notes)."""
     p = Path(path)
     try:
         result = _translation(p)
-        return load_translation(result, str(p)), []
+        return load_translation(result, str(p), write_later=True), []
     except (AutolevTranslationError, AutolevRuntimeError) as exc:
         failure = exc
     program = parse(p)
@@ -318,7 +336,7 @@ def load_for_run(path) -> tuple[object, list]:
     if any(d.severity == "error" for d in result.diagnostics):
         raise failure
     try:
-        model = load_translation(result, str(p))
+        model = load_translation(result, str(p), write_later=True)
     except AutolevRuntimeError:
         raise failure from None
     first = next(d for d in failure.diagnostics if d.severity == "error")

@@ -11,7 +11,7 @@ from . import studies
 from .errors import AutolevModelError
 from .io import CodeCommand
 from .numerics.files import safe_stem
-from .numerics.run import Result, run_command
+from .numerics.run import Result, keep_built, run_command
 
 
 @dataclass
@@ -66,19 +66,22 @@ class SimulationMixin:
         `python model.py`): one CommandRun per command as it finishes.  A command the
         model cannot run stops the rest, or with `keep_going` is reported in its
         CommandRun's `error`."""
-        for command in commands:
-            start = time.monotonic()
-            try:
-                result = run_command(self, command, out_dir=out_dir, **options)
-            except AutolevModelError as exc:
-                if not keep_going:
-                    raise
-                text = str(exc)
-                if not text.startswith("CODE"):
-                    text = f"CODE {command.kind.upper()}: {text}"
-                yield CommandRun(command, None, text, time.monotonic() - start)
-                continue
-            yield CommandRun(command, result, None, time.monotonic() - start)
+        try:
+            for command in commands:
+                start = time.monotonic()
+                try:
+                    result = run_command(self, command, out_dir=out_dir, **options)
+                except AutolevModelError as exc:
+                    if not keep_going:
+                        raise
+                    text = str(exc)
+                    if not text.startswith("CODE"):
+                        text = f"CODE {command.kind.upper()}: {text}"
+                    yield CommandRun(command, None, text, time.monotonic() - start)
+                    continue
+                yield CommandRun(command, result, None, time.monotonic() - start)
+        finally:
+            keep_built(self)
 
     def code_command(self, which):
         """A CODE command by its file name (any case, the extension optional: "bike.c",
@@ -122,11 +125,14 @@ class SimulationMixin:
         warning) instead of stopping the run before it is compiled (MissingValues).
         `code`: which CODE command to run (see code_command).
         Returns a Result (times, states and outputs as numpy arrays)."""
-        return run_command(self, self.command_to_run(code), out_dir=out_dir, method=method,
-                           backend=backend, infile=infile, specified=specified, progress=progress,
-                           overrides=overrides, compiled=compiled,
-                           constraints=constraints, quirks=quirks, keep_rows=keep_rows,
-                           missing_values=missing_values)
+        try:
+            return run_command(
+                self, self.command_to_run(code), out_dir=out_dir, method=method,
+                backend=backend, infile=infile, specified=specified, progress=progress,
+                overrides=overrides, compiled=compiled, constraints=constraints,
+                quirks=quirks, keep_rows=keep_rows, missing_values=missing_values)
+        finally:
+            keep_built(self)
 
 
     def command_to_run(self, code=None) -> CodeCommand:
@@ -197,7 +203,10 @@ class SimulationMixin:
         `locked`: names of coordinates held at their values (with Q' = U: U = U' = 0,
         U's row of Kane's equations dropped), as a rigid joint would."""
         from .numerics.linearize import linearize   # scipy.linalg: see linearize_symbolic
-        return linearize(self, self.command_to_linearize(code), operating_point, inputs,
-                         backend=backend, infile=infile, missing_values=missing_values,
-                         overrides=overrides, constraints=constraints, dependent=dependent,
-                         locked=locked)
+        try:
+            return linearize(self, self.command_to_linearize(code), operating_point,
+                             inputs, backend=backend, infile=infile,
+                             missing_values=missing_values, overrides=overrides,
+                             constraints=constraints, dependent=dependent, locked=locked)
+        finally:
+            keep_built(self)

@@ -77,8 +77,10 @@ class Program:
     # assignment and as the identifier everywhere after (see CodePrinter.bind)
     bound: dict = field(default_factory=dict)
 
-    def build(self) -> "Program":
-        """Order the definitions the outputs need and name everything."""
+    def build(self, factored: bool = True) -> "Program":
+        """Order the definitions the outputs need and name everything; `factored`:
+        take common factors out of sums (worth it for a program evaluated many times,
+        not for one evaluated once per parameter set or solution)."""
         for arg, syms in self.inputs.items():
             for i, s in enumerate(syms):
                 self.names[s] = f"{arg}_{i}"
@@ -94,11 +96,13 @@ class Program:
         for n, s in enumerate(needed):
             self.names[s] = f"w{n}"
             self.assignments.append((self.names[s], self.defs.rhs[s]))
-        self._pull_common_factors()
+        if factored:
+            self._pull_common_factors()
         self._hoist_calls()
-        missing = set()
-        for e in [a[1] for a in self.assignments] + self.outputs:
-            missing |= {f for f in e.free_symbols if f not in self.names}
+        missing = {s for node in _post_order([a[1] for a in self.assignments]
+                                             + self.outputs, set())
+                   for s in node.args if s.is_Symbol and s not in self.names}
+        missing |= {e for e in self.outputs if e.is_Symbol and e not in self.names}
         if missing:
             raise AutolevModelError("no value for " + ", ".join(sorted(map(str, missing))))
         return self
@@ -131,31 +135,17 @@ class Program:
         (cos(q1) in every entry of a mass matrix: small expressions stay inline in the
         definitions) is computed once, into its own variable assigned just before its
         first use."""
-        def calls(e):
-            out, stack = [], [e]
-            while stack:
-                node = stack.pop()
-                if isinstance(node, _HOISTED):
-                    out.append(node)
-                stack.extend(node.args)
-            return out
-        counts: dict = {}
-        for e in [a[1] for a in self.assignments] + self.outputs:
-            for c in calls(e):
-                counts[c] = counts.get(c, 0) + 1
-        shared = {c for c, k in counts.items() if k > 1}
+        shared = _repeated_calls([a[1] for a in self.assignments] + self.outputs)
         if not shared:
             return
         done: set = set()
         new: list = []
 
-        def hoist(e):
-            # the calls of e get variables before e: calls() lists a call before the
-            # calls inside it, so reversed it gives the inner ones first
-            for c in reversed(calls(e)):
-                if c in shared and c not in done:
-                    ident = f"h{len(done)}"
-                    done.add(c)
+        def hoist(expr):
+            # inner calls first; a subtree met before has its calls assigned already
+            for c in _post_order([expr], done):
+                if c in shared:
+                    ident = f"h{len(self.bound)}"
                     new.append((ident, c))
                     self.bound[ident] = c
         for ident, expr in self.assignments:
@@ -164,6 +154,39 @@ class Program:
         for e in self.outputs:
             hoist(e)
         self.assignments = new
+
+
+def _post_order(roots: list, seen: set) -> list:
+    """The distinct compound nodes under `roots` not in `seen`, each after its
+    arguments (walked once as a DAG: the trees share most of their subexpressions);
+    adds them to `seen`."""
+    out: list = []
+    stack = [(r, False) for r in reversed(roots)]
+    while stack:
+        node, expanded = stack.pop()
+        if expanded:
+            out.append(node)
+        elif not node.is_Atom and node not in seen:
+            seen.add(node)
+            stack.append((node, True))
+            stack.extend((a, False) for a in reversed(node.args))
+    return out
+
+
+def _repeated_calls(roots: list) -> set:
+    """The elementary function calls that occur more than once in the trees of
+    `roots`: occurrences flow from each node to its arguments in topological order
+    (counted up to 2), so shared subtrees are not walked again."""
+    count: dict = {}
+    for r in roots:
+        count[r] = min(2, count.get(r, 0) + 1)
+    for node in reversed(_post_order(roots, set())):
+        k = count[node]
+        for a in node.args:
+            if not a.is_Atom:
+                count[a] = min(2, count.get(a, 0) + k)
+    return {n for n, k in count.items() if k > 1 and isinstance(n, _HOISTED)}
+
 
 # -- Python ---------------------------------------------------------------------------
 def python_source(prog: Program, name: str = "compute") -> str:

@@ -354,10 +354,18 @@ def _numeric_system(model, command, files, encoded, solving: tuple, backend: str
             hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
             before_compiling=before_compiling, locked=locked)
     systems()[key] = (command, system)      # after the build: it may form KANE
-    keep = getattr(model, "cache_writer", None)
-    if keep is not None:                     # the cache of built models keeps it
-        keep(model)
+    keeper = getattr(model, "cache_writer", None)
+    if keeper is not None:          # the cache of built models keeps it (keep_built)
+        keeper.added()
     return system
+
+
+def keep_built(model) -> None:
+    """The numeric systems built so far go to the cache of built models (loader's
+    ModelKeeper), once the work that built them is done."""
+    keeper = getattr(model, "cache_writer", None)
+    if keeper is not None:
+        keeper.flush(model)
 
 
 def _set_specified(model, system, specified, warn_unassigned: bool) -> None:

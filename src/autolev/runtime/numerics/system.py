@@ -212,7 +212,7 @@ class NumericSystem:
         fixed = dict(self.aux_fixed)
         # evaluated once per parameter set: Python (compiling C would cost more)
         self.constants_function = compile_program(
-            codegen.Program({"p": self.params}, self.constant_defs, defs).build(),
+            codegen.Program({"p": self.params}, self.constant_defs, defs).build(False),
             "python", "autolev_constants")
         self.rhs_function = None
         self.unknown_positions = [self.states.index(_lower(d))
@@ -226,7 +226,7 @@ class NumericSystem:
         inputs_out = dict(inputs, a=accel_inputs)
         # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
         self.output_function = compile_program(
-            codegen.Program(inputs_out, self.output_exprs, defs, fixed).build(),
+            codegen.Program(inputs_out, self.output_exprs, defs, fixed).build(integrate),
             backend if integrate else "python", "autolev_outputs")
         self.extra_functions = {
             k: (compile_program(codegen.Program(inputs_out, v, defs, fixed).build(), backend,
