@@ -291,6 +291,50 @@ def test_int_and_round_in_generated_code_truncate_and_round_halves_away(backend)
         assert tuple(out) == want
 
 
+def test_a_call_met_twice_anywhere_is_computed_once_and_a_call_met_once_inline():
+    import sympy as sm
+    from autolev.runtime.calculus import Definitions
+    a, b, c, q, r = sm.symbols("a b c q r")
+    shared = a + sm.cos(q)        # one object under two outputs: cos(q) occurs twice
+    outputs = [shared * b, shared * c, sm.sin(r) + a, sm.sin(sm.cos(r)) * sm.cos(r)]
+    prog = codegen.Program({"v": [a, b, c, q, r]}, outputs, Definitions()).build()
+    held = sorted(map(str, prog.bound.values()))
+    assert held == ["cos(q)", "cos(r)"]          # sin(r) and sin(cos(r)) occur once
+    # each held call is assigned before the first statement that uses it
+    source = codegen.python_source(prog)
+    assert source.count("math.cos(v_3)") == 1 and source.count("math.cos(v_4)") == 1
+    fn = codegen.compile_python(prog)[0]
+    values = np.array([0.3, 1.1, -0.7, 0.4, 2.0])
+    out = np.zeros(4)
+    fn(values, out)
+    va, vb, vc, vq, vr = values
+    want = [(va + math.cos(vq)) * vb, (va + math.cos(vq)) * vc, math.sin(vr) + va,
+            math.sin(math.cos(vr)) * math.cos(vr)]
+    assert np.allclose(out, want, rtol=1e-15, atol=0)
+
+
+def test_parts_in_constants_alone_are_lifted_out_once_and_give_the_same_values():
+    import sympy as sm
+    from autolev.runtime.calculus import Definitions
+    a, b, x, y = sm.symbols("a b x y")
+    outputs = [a * b * x + a**2 + 3 * b + sm.cos(a) * y, sm.sin(x + a * b)]
+    prog = codegen.Program({"x": [x, y], "c": [a, b]}, outputs, Definitions())
+    prog = prog.build(lift_into="c")
+    lifted = {str(e): s for s, e in prog.lifted}
+    # a*b serves both outputs and is lifted once; x and y stay in the program
+    assert sorted(lifted) == ["a**2 + 3*b", "a*b", "cos(a)"]
+    assert prog.inputs["c"] == [a, b] + [s for s, _ in prog.lifted]
+    va, vb, vx, vy = 0.7, -1.3, 0.4, 2.5
+    # by hand, the lifted values appended to the constants in their order
+    by_hand = {"a*b": va * vb, "a**2 + 3*b": va**2 + 3 * vb, "cos(a)": math.cos(va)}
+    c = np.array([va, vb] + [by_hand[str(e)] for _, e in prog.lifted])
+    out = np.zeros(2)
+    codegen.compile_python(prog)[0](np.array([vx, vy]), c, out)
+    want = [va * vb * vx + va**2 + 3 * vb + math.cos(va) * vy, math.sin(vx + va * vb)]
+    assert np.allclose(out, want, rtol=1e-14, atol=0)
+    assert "math.cos" not in codegen.python_source(prog)
+
+
 def test_generated_code_does_not_depend_on_the_hash_seed():
     code = ("import autolev, warnings; warnings.simplefilter('ignore');"
             f"m = autolev.load({str(EXAMPLES / 'nlink_pendulum.al')!r});"

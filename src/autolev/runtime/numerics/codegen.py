@@ -76,11 +76,17 @@ class Program:
     # identifier -> the function call it holds: printed as that call at its own
     # assignment and as the identifier everywhere after (see CodePrinter.bind)
     bound: dict = field(default_factory=dict)
+    # (symbol, expression) of the parts lifted out (see build's lift_into)
+    lifted: list = field(default_factory=list)
 
-    def build(self, factored: bool = True) -> "Program":
+    def build(self, factored: bool = True, lift_into: str | None = None) -> "Program":
         """Order the definitions the outputs need and name everything; `factored`:
         take common factors out of sums (worth it for a program evaluated many times,
-        not for one evaluated once per parameter set or solution)."""
+        not for one evaluated once per parameter set or solution).  `lift_into`: the
+        input holding the values fixed for a parameter set; every part of the program
+        computed from those alone is lifted out (`lifted`), to be evaluated once per
+        parameter set and passed in as new entries appended to that input."""
+        self.inputs = {arg: list(syms) for arg, syms in self.inputs.items()}
         for arg, syms in self.inputs.items():
             for i, s in enumerate(syms):
                 self.names[s] = f"{arg}_{i}"
@@ -98,6 +104,8 @@ class Program:
             self.assignments.append((self.names[s], self.defs.rhs[s]))
         if factored:
             self._pull_common_factors()
+        if lift_into is not None:
+            self._lift_constant_parts(lift_into)
         self._hoist_calls()
         missing = {s for node in _post_order([a[1] for a in self.assignments]
                                              + self.outputs, set())
@@ -129,6 +137,54 @@ class Program:
             return r
         self.assignments = [(ident, pull(expr)) for ident, expr in self.assignments]
         self.outputs = [pull(e) for e in self.outputs]
+
+    def _lift_constant_parts(self, arg: str) -> None:
+        """Subexpressions of the inputs in `arg` and numbers alone (a sum's constant
+        terms, a product's constant factors, cos of an angle constant) become new
+        inputs of `arg`, as Autolev's programs evaluate such Z's once with the
+        constants."""
+        constant = set(self.inputs[arg])
+        memo: dict = {}
+        lifted: dict = {}
+
+        def lift(e):
+            symbol = lifted.get(e)
+            if symbol is None:
+                symbol = lifted[e] = sm.Dummy(f"k{len(lifted)}")
+                self.lifted.append((symbol, e))
+            return symbol
+
+        def fixed(e) -> bool:
+            return e.is_number or e in constant
+
+        def walk(e):
+            """(e with its constant parts lifted, whether e is constant itself)"""
+            if e.is_Atom:
+                return e, fixed(e)
+            kept = memo.get(e)
+            if kept is not None:
+                return kept
+            parts = [walk(a) for a in e.args]
+            if all(c for _, c in parts):
+                kept = (e, True)
+            elif (e.is_Add or e.is_Mul) and sum(c for _, c in parts) > 1:
+                const = e.func(*[a for a, c in parts if c])
+                kept = (e.func(lift(const), *[a for a, c in parts if not c]), False)
+            else:
+                args = [lift(a) if c and not a.is_Atom else a for a, c in parts]
+                same = all(a is b for a, b in zip(args, e.args))
+                kept = (e if same else e.func(*args), False)
+            memo[e] = kept
+            return kept
+
+        def top(e):
+            e, const = walk(e)
+            return lift(e) if const and not e.is_Atom else e
+        self.assignments = [(ident, top(expr)) for ident, expr in self.assignments]
+        self.outputs = [top(e) for e in self.outputs]
+        for n, (symbol, _) in enumerate(self.lifted, len(self.inputs[arg])):
+            self.names[symbol] = f"{arg}_{n}"
+        self.inputs[arg] += [symbol for symbol, _ in self.lifted]
 
     def _hoist_calls(self) -> None:
         """Every elementary function call that occurs more than once in the program
@@ -265,8 +321,10 @@ def c_source(prog: Program, name: str = "compute") -> str:
         if ident in prog.bound:
             c.bind(expr, f"w[{k}]")
     statements += [f"out[{k}] = {c(e)};" for k, e in enumerate(prog.outputs)]
-    params = ", ".join(f"const double *{a}" for a in prog.inputs)
-    params = (params + ", " if params else "") + "double *w, double *out"
+    # restrict: no array is another, so gcc may keep what it read in registers across
+    # the stores to w (else every store could change an input and forces reloads)
+    params = ", ".join(f"const double *restrict {a}" for a in prog.inputs)
+    params = (params + ", " if params else "") + "double *restrict w, double *restrict out"
     call_args = ", ".join(list(prog.inputs) + ["w", "out"])
     header = ["#include <math.h>", "#ifndef M_PI", "#define M_PI 3.14159265358979323846",
               "#endif", "#ifndef M_E", "#define M_E 2.71828182845904523536", "#endif", ""]

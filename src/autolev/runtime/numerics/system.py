@@ -210,19 +210,27 @@ class NumericSystem:
         inputs = {"t": [S.TIME], "x": self.states, "c": self.params + self.constant_defs,
                   "s": self.specified}
         fixed = dict(self.aux_fixed)
-        # evaluated once per parameter set: Python (compiling C would cost more)
-        self.constants_function = compile_program(
-            codegen.Program({"p": self.params}, self.constant_defs, defs).build(False),
-            "python", "autolev_constants")
         self.rhs_function = None
         self.unknown_positions = [self.states.index(_lower(d))
                                   for d in self.implicit_unknowns]
+        lifted = []
+        if self.nstate:
+            # the parts of the right-hand side in constants alone join the constants
+            rhs = codegen.Program(inputs, self.rhs_exprs, defs, fixed).build(lift_into="c")
+            lifted = rhs.lifted
+            inputs["c"] = rhs.inputs["c"]
+        # evaluated once per parameter set: Python (compiling C would cost more)
+        self.constants_function = compile_program(
+            codegen.Program({"p": self.params}, self.constant_defs + [e for _, e in lifted],
+                            defs).build(False),
+            "python", "autolev_constants")
+        self.constant_defs = self.constant_defs + [s for s, _ in lifted]
         if self.nstate:
             # the C right-hand side carries the integration loop (loop.c) with it
             loop_source, loop_flags = loop_extra_source()
             self.rhs_function = compile_program(
-                codegen.Program(inputs, self.rhs_exprs, defs, fixed).build(), backend,
-                "autolev_rhs", extra_source=loop_source, extra_flags=loop_flags)
+                rhs, backend, "autolev_rhs", extra_source=loop_source,
+                extra_flags=loop_flags)
         inputs_out = dict(inputs, a=accel_inputs)
         # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
         self.output_function = compile_program(
