@@ -5,8 +5,9 @@
 
 `parse` reads a model into the IR and raises `AutolevSyntaxError` (carrying every
 diagnostic) when it cannot.  `translation` and `transpile` translate it, `load` builds
-its `Model`, `verify` replays Autolev's recorded responses against it and `grid` makes
-the points of a parameter study.  A bug in autolev itself is `AutolevInternalError`.
+its `Model`, `verify` replays Autolev's recorded responses against it, `grid` makes
+the points of a parameter study and `write_programs` writes a model's CODE programs in
+Autolev's layout.  A bug in autolev itself is `AutolevInternalError`.
 """
 from __future__ import annotations
 
@@ -17,14 +18,16 @@ from .errors import (AutolevError, AutolevFileError, AutolevInternalError, Autol
 from .ir import Program
 
 __version__ = "0.1.0"
-__all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "Program",
+__all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "write_programs",
+           "Program",
            "AutolevError", "AutolevSyntaxError", "AutolevTranslationError",
            "AutolevRuntimeError", "AutolevFileError", "AutolevInternalError", "Diagnostic",
            "Location", "Span", "__version__"]
 
 # the stages are imported on first use, so that `import autolev` stays cheap
 _LAZY = {"parse": ".pipeline", "translation": ".pipeline", "transpile": ".pipeline",
-         "load": ".loader", "verify": ".verification", "grid": ".runtime.studies"}
+         "load": ".loader", "verify": ".verification", "grid": ".runtime.studies",
+         "write_programs": ".programs"}
 
 
 def __getattr__(name: str):

@@ -585,6 +585,35 @@ def cmd_verify(ns: argparse.Namespace) -> int:
     return 0 if report.ok else 1
 
 
+def cmd_code(ns: argparse.Namespace) -> int:
+    """Write the programs a model's CODE commands name, in Autolev's layout."""
+    from .programs import write_programs
+
+    path = Path(ns.file)
+    model = _load_for_run(path)
+    if model is None:
+        print(f"{path}: no program written", file=sys.stderr)
+        return 1
+    if not model.code_commands:
+        print(f"{path}: the model has no CODE command: no program to write",
+              file=sys.stderr)
+        return 1
+    out = Path(ns.out)
+    try:
+        done = write_programs(model, out)
+    except OSError as exc:
+        print(f"autolev code: cannot write into {out}: {exc.strerror or exc}",
+              file=sys.stderr)
+        return 1
+    refused = [w for w in done if w.refused]
+    for w in done:
+        if w.refused:
+            print(f"{path}: {w.refused}", file=sys.stderr)
+        elif not ns.quiet:
+            print("\n".join(f"wrote {f}" for f in w.files))
+    return 1 if refused else 0
+
+
 def cmd_cache(ns: argparse.Namespace) -> int:
     """What the cache holds (built models, compiled code), or empty it."""
     from . import modelcache
@@ -789,7 +818,23 @@ def _add_cache(sub) -> None:
     cache.set_defaults(func=cmd_cache)
 
 
-COMMANDS = (_add_check, _add_convert, _add_run, _add_linearize, _add_animate,
+def _add_code(sub) -> None:
+    code = sub.add_parser(
+        "code", help="write the C programs of a model's CODE commands",
+        description="Write, for every CODE command of FILE, the program it names, in the "
+        "layout of the programs Autolev 4.1 wrote (the same global names, functions and "
+        "section comments, reading the same .in file), and the .in file itself.  Written "
+        "now: CODE ALGEBRAIC() into .c files; other kinds and languages are reported and "
+        "not written.  Folders in a CODE file name are kept under --out; a name that "
+        "would leave it is refused.")
+    code.add_argument("file", metavar="FILE", help=".al model")
+    code.add_argument("--out", metavar="DIR", default=".",
+                      help="folder for the programs (default: the current folder)")
+    code.add_argument("-q", "--quiet", action="store_true")
+    code.set_defaults(func=cmd_code)
+
+
+COMMANDS = (_add_check, _add_convert, _add_run, _add_code, _add_linearize, _add_animate,
             _add_transcript, _add_verify, _add_cache)
 
 

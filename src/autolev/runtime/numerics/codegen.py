@@ -79,13 +79,18 @@ class Program:
     # (symbol, expression) of the parts lifted out (see build's lift_into)
     lifted: list = field(default_factory=list)
 
-    def build(self, factored: bool = True, lift_into: str | None = None) -> "Program":
+    def build(self, factored: bool = True, lift_into: str | None = None,
+              shared: str = "calls") -> "Program":
         """Order the definitions the outputs need and name everything; `factored`:
         take common factors out of sums (worth it for a program evaluated many times,
         not for one evaluated once per parameter set or solution).  `lift_into`: the
         input holding the values fixed for a parameter set; every part of the program
         computed from those alone is lifted out (`lifted`), to be evaluated once per
-        parameter set and passed in as new entries appended to that input."""
+        parameter set and passed in as new entries appended to that input.  `shared`:
+        what occurs more than once gets a variable of its own: "calls" (elementary
+        function calls; gcc finds the rest in the functions it compiles) or "all"
+        (sums and products too: a program for a user's compiler, in one function)."""
+        self._shared = shared
         self.inputs = {arg: list(syms) for arg, syms in self.inputs.items()}
         for arg, syms in self.inputs.items():
             for i, s in enumerate(syms):
@@ -107,7 +112,7 @@ class Program:
         if lift_into is not None:
             self._lift_constant_parts(lift_into)
         self._hoist_calls()
-        missing = {s for node in _post_order([a[1] for a in self.assignments]
+        missing = {s for node in post_order([a[1] for a in self.assignments]
                                              + self.outputs, set())
                    for s in node.args if s.is_Symbol and s not in self.names}
         missing |= {e for e in self.outputs if e.is_Symbol and e not in self.names}
@@ -187,11 +192,13 @@ class Program:
         self.inputs[arg] += [symbol for symbol, _ in self.lifted]
 
     def _hoist_calls(self) -> None:
-        """Every elementary function call that occurs more than once in the program
-        (cos(q1) in every entry of a mass matrix: small expressions stay inline in the
-        definitions) is computed once, into its own variable assigned just before its
-        first use."""
-        shared = _repeated_calls([a[1] for a in self.assignments] + self.outputs)
+        """Every elementary function call (with shared="all": every subexpression
+        worth it) that occurs more than once in the program (cos(q1) in every entry of
+        a mass matrix: small expressions stay inline in the definitions) is computed
+        once, into its own variable assigned just before its first use."""
+        shared = _repeated([a[1] for a in self.assignments] + self.outputs,
+                                 _worth_a_variable if self._shared == "all" else
+                                 lambda n: isinstance(n, _HOISTED))
         if not shared:
             return
         done: set = set()
@@ -199,7 +206,7 @@ class Program:
 
         def hoist(expr):
             # inner calls first; a subtree met before has its calls assigned already
-            for c in _post_order([expr], done):
+            for c in post_order([expr], done):
                 if c in shared:
                     ident = f"h{len(self.bound)}"
                     new.append((ident, c))
@@ -212,7 +219,7 @@ class Program:
         self.assignments = new
 
 
-def _post_order(roots: list, seen: set) -> list:
+def post_order(roots: list, seen: set) -> list:
     """The distinct compound nodes under `roots` not in `seen`, each after its
     arguments (walked once as a DAG: the trees share most of their subexpressions);
     adds them to `seen`."""
@@ -229,19 +236,28 @@ def _post_order(roots: list, seen: set) -> list:
     return out
 
 
-def _repeated_calls(roots: list) -> set:
+def _worth_a_variable(node) -> bool:
+    """A call, or a sum or product of more than a number and one factor."""
+    if isinstance(node, _HOISTED) or node.is_Add:
+        return True
+    if node.is_Mul:
+        return not (len(node.args) == 2 and node.args[0].is_Number)
+    return node.is_Pow or node.is_Function
+
+
+def _repeated(roots: list, wanted=lambda n: isinstance(n, _HOISTED)) -> set:
     """The elementary function calls that occur more than once in the trees of
     `roots`: occurrences flow from each node to its arguments in topological order
     (counted up to 2), so shared subtrees are not walked again."""
     count: dict = {}
     for r in roots:
         count[r] = min(2, count.get(r, 0) + 1)
-    for node in reversed(_post_order(roots, set())):
+    for node in reversed(post_order(roots, set())):
         k = count[node]
         for a in node.args:
             if not a.is_Atom:
                 count[a] = min(2, count.get(a, 0) + k)
-    return {n for n, k in count.items() if k > 1 and isinstance(n, _HOISTED)}
+    return {n for n, k in count.items() if k > 1 and wanted(n)}
 
 
 # -- Python ---------------------------------------------------------------------------

@@ -106,7 +106,7 @@ class Result:
 
 
 # -- building -------------------------------------------------------------------------------
-def _columns(model, command) -> list[list[Column]]:
+def output_columns(model, command) -> list[list[Column]]:
     files = []
     for cols in model.outputs[:command.n_outputs]:
         out = []
@@ -130,7 +130,7 @@ def _columns(model, command) -> list[list[Column]]:
     return files
 
 
-def _encoded(model, command) -> list:
+def encoded_values(model, command) -> list:
     out = []
     for name, value in model.encoded[:command.n_encoded]:
         if isinstance(value, Vector):
@@ -141,7 +141,7 @@ def _encoded(model, command) -> list:
     return out
 
 
-def _unknowns(args, what: str) -> tuple[list, list]:
+def equations_and_unknowns(args, what: str) -> tuple[list, list]:
     """(equations, unknowns) of CODE ALGEBRAIC/NONLINEAR/ODE(EQ, x, y, ...)."""
     if not args:
         return [], []
@@ -292,9 +292,9 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
         raise ValueError(f"missing_values: 'refuse' or 'zero', not {missing_values!r}")
     kind = command.kind
     stem = safe_stem(command.filename)
-    files = _columns(model, command)
-    encoded = _encoded(model, command)
-    equations, unknowns = _unknowns(command.args, kind.upper())
+    files = output_columns(model, command)
+    encoded = encoded_values(model, command)
+    equations, unknowns = equations_and_unknowns(command.args, kind.upper())
     if unknowns and not files and kind in ("algebraic", "nonlinear"):
         # no OUTPUT: the solution is what the program is for -- write the unknowns
         files = [[Column(u, u.name, (command.inputs.get(u) or (None, None))[1]

@@ -37,10 +37,14 @@ def alphabetical(syms) -> list:
     return sorted(syms, key=lambda s: (s.name.lower(), s.name))
 
 
-def _derivative_order_then_name(syms) -> list:
-    """Constants, then variables, then their first derivatives, ... (the order of the
-    inputs of Autolev's ALGEBRAIC programs), each group alphabetical."""
-    return sorted(syms, key=lambda s: (S.base_and_order(s)[1], s.name.lower(), s.name))
+def read_order(syms, model) -> list:
+    """Constants, then variables, then their first derivatives, ... (the order in which
+    Autolev's ALGEBRAIC programs read their inputs), each group sorted by name ignoring
+    case."""
+    def key(s):
+        base, order = S.base_and_order(s)
+        return (order, model.kind_of(base) != "constant", base.name.lower(), base.name)
+    return sorted(syms, key=key)
 
 
 @dataclass
@@ -114,11 +118,14 @@ class NumericSystem:
     ALGEBRAIC/NONLINEAR); `extra`: {name: [expressions]}
     compiled with the outputs' inputs.  `before_compiling(system)`: called once the
     states, parameters and specified quantities are known, before anything is
-    compiled (a run checks its inputs there: a refusal then costs no compilation)."""
+    compiled (a run checks its inputs there: a refusal then costs no compilation).
+    `compile_functions=False`: the analysis alone (states, inputs, expressions), for a
+    writer of programs in another language."""
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, implicit=None, solved=(), extra=None,
-                 zero=None, hidden_in_outputs=(), before_compiling=None, locked=()):
+                 zero=None, hidden_in_outputs=(), before_compiling=None, locked=(),
+                 compile_functions: bool = True):
         self.model = model
         self._zero = zero
         self.backend = backend
@@ -150,7 +157,9 @@ class NumericSystem:
         self._find_inputs(exprs, given, integrate)
         if before_compiling is not None:
             before_compiling(self)
-        self._compile(extra, accel_inputs, integrate)
+        self.accel_inputs = accel_inputs
+        if compile_functions:
+            self._compile(extra, accel_inputs, integrate)
         self.constant_values = None
         self.specified_values = np.zeros(len(self.specified))
         self.specified_functions: list = []
@@ -193,7 +202,7 @@ class NumericSystem:
         self.specified = alphabetical(s for s in undefined if self.is_specified(s))
         params = [s for s in undefined if not self.is_specified(s)]
         self.params = (alphabetical(params) if integrate
-                       else _derivative_order_then_name(params))
+                       else read_order(params, self.model))
         pset = set(self.params)
         const_defs = [s for s in order if defs.primitive_deps(s) <= pset]
         cset = set(const_defs)

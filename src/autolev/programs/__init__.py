@@ -1,0 +1,89 @@
+"""The programs a model's CODE commands name, written in the layout of the programs
+Autolev wrote (`autolev code`), so that toolchains built on them rebuild unchanged."""
+from __future__ import annotations
+
+import os
+import secrets
+from dataclasses import dataclass
+from pathlib import Path, PureWindowsPath
+
+from ..runtime.errors import AutolevModelError
+from .c import write_c
+from .plan import input_file_name, plan_algebraic
+
+# (kind, extension) -> (plan, writer); anything else is reported as not written
+WRITERS = {
+    ("algebraic", ".c"): (plan_algebraic, write_c),
+}
+
+
+@dataclass
+class Written:
+    """What `write_programs` did for one CODE command: the files, or why none."""
+
+    command: object
+    files: list
+    refused: str | None = None
+
+
+def relative_path(filename: str) -> Path:
+    """The CODE command's file name as a path inside the output folder (its folders
+    kept, as Autolev wrote them relative to where it ran); a name that would leave the
+    folder is refused."""
+    parts = PureWindowsPath(filename.replace("/", "\\")).parts
+    if not parts or PureWindowsPath(filename.replace("/", "\\")).anchor:
+        raise AutolevModelError(f"unusable file name in CODE: {filename!r}")
+    for part in parts:
+        if part.strip() in ("", ".", "..") or any(c in part for c in '<>:"|?*\0'):
+            raise AutolevModelError(f"unusable file name in CODE: {filename!r}")
+    return Path(*parts)
+
+
+def program_texts(model, command) -> dict:
+    """{relative path: text} of one CODE command's program and its .in file."""
+    extension = os.path.splitext(command.filename)[1].lower()
+    found = WRITERS.get((command.kind, extension))
+    if found is None:
+        raise AutolevModelError(
+            f"CODE {command.kind.upper()} {command.filename}: programs of this kind in "
+            f"{extension or 'a file without extension'} are not written yet (autolev "
+            "code writes CODE ALGEBRAIC() .c programs)")
+    plan_of, write = found
+    plan = plan_of(model, command)
+    return {relative_path(command.filename): write(plan),
+            relative_path(input_file_name(command.filename)): plan.input_text}
+
+
+def write_programs(model, out_dir, commands=None) -> list[Written]:
+    """Write each CODE command's program (default: all of the model's) and the .in
+    file it reads into `out_dir`.  Every text is made before any file is written, and
+    each file appears whole (written aside, then renamed)."""
+    out = Path(out_dir)
+    done = []
+    texts = {}
+    for command in (model.code_commands if commands is None else commands):
+        try:
+            made = program_texts(model, command)
+        except AutolevModelError as exc:
+            done.append(Written(command, [], str(exc)))
+            continue
+        texts.update(made)
+        done.append(Written(command, [out / p for p in made]))
+    for rel, text in texts.items():
+        path = out / rel
+        path.parent.mkdir(parents=True, exist_ok=True)
+        # created as any file of the user's (mode 0666 less the umask), under a name
+        # of its own until it is whole
+        tmp = path.parent / f".{path.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp"
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        try:
+            with os.fdopen(fd, "w", newline="\n") as f:
+                f.write(text)
+            os.replace(tmp, path)
+        except BaseException:          # a full disk, an interrupt: no half file left
+            tmp.unlink(missing_ok=True)
+            raise
+    return done
+
+
+__all__ = ["write_programs", "program_texts", "Written", "relative_path"]

@@ -1,0 +1,310 @@
+"""A CODE command's program in C, section for section in the layout of Autolev 4.1's
+programs: the global names, the section comments that downstream scripts search for
+(autolevclean.py, BioMAC's clean_*.c), main / eqns1 / output / readf / pgets / writef,
+and the NAME.in file main() reads."""
+from __future__ import annotations
+
+import re
+
+from .. import __version__
+from ..runtime import units
+from ..runtime.numerics.files import header as output_header
+from ..runtime.printer import CodePrinter
+from .plan import Plan, assign_slots, c_name, check_names, input_file_name, program_name
+
+# C's keywords, the standard names the program calls, and the program's own names
+RESERVED = frozenset("""
+auto break case char const continue default do double else enum extern float for goto
+if inline int long register restrict return short signed sizeof static struct switch
+typedef union unsigned void volatile while main eqns1 output readf pgets writef z encode
+pi degtorad radtodeg fptr iloop file null errno sin cos tan asin acos atan atan2 sinh
+cosh tanh exp log log10 pow sqrt fabs floor ceil fmod trunc round printf fprintf sprintf
+puts fopen fclose fgets strtod strlen strcpy exit isspace va_list va_start va_arg va_end
+_nan t
+""".split())
+
+LINE = 78            # continuation lines start with two spaces; lines stay well under 100
+_TOKEN = re.compile(r"\s*([A-Za-z_][A-Za-z_0-9]*(?:\[[0-9]+\])*|[0-9.]+(?:[eE][-+]?[0-9]+)?"
+                    r"|&[A-Za-z_][A-Za-z_0-9]*|.)")
+
+
+def wrap(head: str, text: str, tail: str = ";") -> list[str]:
+    """`head + text + tail` as lines of at most LINE characters where it can be:
+    broken before a name or number, never inside one (a cleaner that rewrites par__
+    names line by line must see each name whole)."""
+    lines, line = [], head
+    for m in _TOKEN.finditer(text):
+        token = m.group(1)
+        spaced = m.group(0)
+        if len(line) + len(spaced) > LINE and line.strip() and \
+                (token[0].isalnum() or token[0] in "_&("):
+            lines.append(line.rstrip())
+            line = "  " + token
+        else:
+            line += spaced
+    lines.append(line + tail)
+    return lines
+
+
+def c_string(text: str, fmt: bool = False) -> str:
+    """`text` as the body of a C string literal; `fmt`: of a printf format (that
+    prints `text` as it is)."""
+    out = []
+    for ch in text:
+        if ch == "%" and fmt:
+            out.append("%%")
+        elif ch in '"\\':
+            out.append("\\" + ch)
+        elif ch == "\n":
+            out.append("\\n")
+        elif " " <= ch <= "~":
+            out.append(ch)
+        else:
+            out.append("".join(f"\\{b:03o}" for b in ch.encode("utf-8")))
+    return "".join(out)
+
+
+def _number_list(names: list[str], head: str) -> list[str]:
+    return wrap(head, ",".join(names))
+
+
+class CProgram:
+    """The text of one plan's C program."""
+
+    def __init__(self, plan: Plan):
+        check_names(plan, RESERVED, "C")
+        self.plan = plan
+        self.name = program_name(plan.filename)
+        self.stem = self.name.rpartition(".")[0] or self.name
+        self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named}
+        self.printer = CodePrinter("c", self.where)
+        self.nfiles = len(plan.files)
+
+    def text(self) -> str:
+        computed, written = self._computation()
+        lines = (self._top() + self._main() + ["", ""] + self._eqns1(computed) + ["", ""]
+                 + self._output(written) + ["", ""] + _READING_AND_WRITING)
+        return "\n".join(lines) + "\n"
+
+    # -- the computation ----------------------------------------------------------------
+    def _computation(self) -> tuple[list, list]:
+        """(eqns1's statements, output()'s) as lines.  Printed first with a mark
+        `@k@` for the value of statement k, so that what each text reads is what the
+        printer wrote (it reuses the text of a subexpression printed before, and of a
+        negated term); then each mark becomes the z slot that statement's value has."""
+        statements = self.plan.statements
+        assigned = []
+        for k, st in enumerate(statements):
+            text = self.printer(st.expr)
+            if st.target is None:
+                mark = f"@{k}@"
+                if st.defines is not None:         # later statements read it from there
+                    self.where[st.defines] = mark
+                if st.holds_call:                  # a repeated subexpression, once
+                    self.printer.bind(st.expr, mark)
+                assigned.append((mark, text))
+            else:
+                assigned.append((c_name(st.target), text))
+        written = self._written()
+        reads = [_marks(text) for _, text in assigned]
+        reads.append(set().union(*(_marks(text) for _, _, text in written)))
+        slots = assign_slots(reads, [st.target is None for st in statements])
+        self.z_size = max(slots.values(), default=0)
+
+        def slot(text):
+            return _MARK.sub(lambda m: f"z[{slots[int(m.group(1))]}]", text)
+        computed = []
+        for target, text in assigned:
+            computed += wrap(f"  {slot(target)} = ", slot(text))
+        lines = []
+        for head, tail, text in written:
+            lines += wrap(head, slot(text), tail) if text != "0" else [head + "0" + tail]
+        return computed, lines
+
+    def _written(self) -> list[tuple[str, str, str]]:
+        """(head, tail, value text) of output()'s lines: the OUTPUT files' rows, then
+        the elements of the ENCODE arrays."""
+        p = self.plan
+        out = []
+        for k, cols in enumerate(p.files, 1):
+            values = []
+            for expr, _, unit in cols:
+                text = self.printer(expr)
+                values.append(f"({text})*RADtoDEG" if units.is_degrees(unit) else text)
+            for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
+                out.append((f'  writef({target}, " %- 14.6E", ', ",_NAN);", ",".join(values)))
+        for e in p.encoded:
+            for index, value in zip(_indices(e.shape), e.elements):
+                target = e.name + "".join(f"[{i}]" for i in index)
+                out.append((f"  {target} = ", ";", "0" if value == 0 else self.printer(value)))
+        return out
+
+    # -- sections ---------------------------------------------------------------------
+    def _top(self) -> list[str]:
+        p = self.plan
+        lines = [f"/* The name of this program is {self.name} */",
+                 f"/* Created by autolev {__version__} in the layout of Autolev 4.1's "
+                 "programs */", "",
+                 "#include <ctype.h>", "#include <math.h>", "#include <stdarg.h>",
+                 "#include <stdio.h>", "#include <stdlib.h>", "#include <string.h>",
+                 "#define  _NAN      9.99999999999999E+305", "",
+                 "void     eqns1     (void);",
+                 "void     output    (FILE *Fptr[] );",
+                 "void     readf     (FILE *Fp, double *next, ...);",
+                 "void     pgets     (FILE *Fp, double *x);",
+                 "void     writef    (FILE *Fp, char format[], ...);", ""]
+        # the inputs in read order; the others sorted by name ignoring case
+        for group in (p.inputs, _by_name(p.specified), _by_name(p.named)):
+            if group:
+                lines += _number_list([c_name(s) for s in group], "double   ")
+        arrays = [f"z[{self.z_size + 1}]"]
+        for e in p.encoded:
+            arrays.append(e.name + "".join(f"[{d}]" for d in e.shape))
+        arrays.append(f"Encode[{max(1, len(p.encoded))}]")
+        # BioMAC's cleaners read the size of z from this line's first 32 characters
+        lines += wrap("double   Pi,DEGtoRAD,RADtoDEG,", ",".join(arrays))
+        return lines + [""]
+
+    def _main(self) -> list[str]:
+        p = self.plan
+        infile = input_file_name(p.filename)
+        lines = ["/* ................................ MAIN ............................. */",
+                 "int      main         (void)", "{",
+                 f"FILE     *Fptr[{self.nfiles + 1}];", "int      iloop;", "",
+                 "/* Open input and output files */",
+                 f"for(iloop = 0; iloop <= {self.nfiles}; iloop++)", "  {",
+                 "  char fileName[256];",
+                 f'  if( iloop == 0 ) strcpy(fileName, "{c_string(infile)}");',
+                 f'  else sprintf(fileName, "{c_string(self.stem, fmt=True)}.%d", iloop);',
+                 '  Fptr[iloop] = fopen(fileName, iloop ? "w" : "r");',
+                 "  if( Fptr[iloop] == NULL )",
+                 '    {printf("Error: unable to open file %s\\n", fileName);  exit(0);}',
+                 "  }", "",
+                 "/* Read top of input file */",
+                 "for(iloop = 0; iloop < 6; iloop++) pgets(Fptr[0], NULL);", "",
+                 "/* Read values of constants from input file */"]
+        if p.inputs:
+            lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in p.inputs),
+                          ",NULL);")
+        lines += ["", "/* Write heading(s) to output file(s) */"]
+        for k, cols in enumerate(p.files, 1):
+            head = output_header(f"{self.stem}.{k}", [c[1] for c in cols],
+                                 [c[2] for c in cols])
+            targets = ["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]
+            for target in targets:
+                lines.append(f'fprintf({target}, "{c_string(head, fmt=True)}");')
+        lines += ["", "/* Unit conversions */",
+                  "  Pi       = 3.141592653589793;",
+                  "  DEGtoRAD = Pi/180.0;",
+                  "  RADtoDEG = 180.0/Pi;"]
+        lines += [f"  {c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
+        lines += ["", "/* Evaluate output quantities */", "eqns1();", "output( Fptr );",
+                  "", "/* Inform user of input and output filename(s) */",
+                  f'puts( "\\n Input is in the file {c_string(infile)}" );']
+        if self.nfiles:
+            what = (f"file {self.stem}.1" if self.nfiles == 1 else
+                    f"files {self.stem}.i  (i=1,...,{self.nfiles})")
+            lines.append(f'puts( "\\n Output is in the {c_string(what)}" );')
+        for k in range(1, self.nfiles + 1):
+            lines.append(f"fclose(Fptr[{k}]);")
+        return lines + ["fclose(Fptr[0]);", "return 0;", "}"]
+
+    def _eqns1(self, computed: list) -> list[str]:
+        lines = ["/* ................................ EQNS1 ............................. */",
+                 "void     eqns1        (void)", "{", "",
+                 "/* Evaluate constants */"]
+        # quantities to be specified: 0, as in Autolev's programs
+        lines += [f"  {c_name(s)} = 0;" for s in self.plan.specified]
+        return lines + computed + ["", "", "/* Evaluate output quantities */", "}"]
+
+    def _output(self, written: list) -> list[str]:
+        lines = ["/* ................................ OUTPUT ............................. */",
+                 "void     output (FILE *Fptr[] )", "{"]
+        if not self.plan.files:
+            lines.append("(void)Fptr;                  /* no OUTPUT file to write */")
+        lines += ["", "/* Write output to screen and to output file(s) */"] + written + [""]
+        lines += [f"  Encode[{k}] = 0.0;" for k in range(len(self.plan.encoded))]
+        return lines + ["", "}"]
+
+
+_MARK = re.compile(r"@(\d+)@")
+
+
+def _marks(text: str) -> set:
+    return {int(k) for k in _MARK.findall(text)}
+
+
+def _by_name(symbols: list) -> list:
+    return sorted(symbols, key=lambda s: (c_name(s).lower(), c_name(s)))
+
+
+def _indices(shape: tuple) -> list[tuple]:
+    if not shape:
+        return [()]
+    if len(shape) == 1:
+        return [(i,) for i in range(shape[0])]
+    return [(i, j) for i in range(shape[0]) for j in range(shape[1])]
+
+
+# the functions every program carries: Autolev's names and behaviour (the value of a
+# line of the .in file starts in its 60th character), written for autolev
+_READING_AND_WRITING = r"""
+/*................................... READF ................................*/
+void  readf( FILE *Fp, double *next, ... )
+{
+va_list  args;
+va_start(args, next);
+while( next != NULL )
+  {
+  pgets(Fp, next);
+  next = va_arg(args, double *);
+  }
+va_end(args);
+pgets(Fp, NULL);                       /* the line that closes the group of values */
+}
+
+
+/*................................... PGETS ................................*/
+void  pgets( FILE *Fp, double *x )
+{
+static long  lineNumber = 0;
+char         line[256];
+char         *end;
+
+lineNumber++;
+if( fgets(line, sizeof line, Fp) == NULL )
+  {
+  printf("\n The input file ends before line %ld.\n", lineNumber);
+  exit(0);
+  }
+if( x == NULL ) return;
+if( strlen(line) >= 60 )
+  {
+  *x = strtod(line + 59, &end);
+  while( isspace((unsigned char)*end) ) end++;
+  if( *end == '\0' ) return;
+  }
+printf("\n Line %ld of the input file should hold one number, starting in its"
+       "\n 60th character:\n\n%s\n", lineNumber, line);
+exit(0);
+}
+
+
+/* .................................. WRITEF .............................. */
+void  writef( FILE *Fp, char format[], ... )
+{
+va_list  args;
+double   value;
+va_start(args, format);
+for( value = va_arg(args, double);  value != _NAN;  value = va_arg(args, double) )
+  fprintf(Fp, format, value);
+va_end(args);
+fprintf(Fp, "\n");
+}""".splitlines()[1:]
+
+
+def write_c(plan: Plan) -> str:
+    return CProgram(plan).text()
+
+
+__all__ = ["write_c", "wrap", "c_string"]

@@ -1,0 +1,110 @@
+"""Compile and run a C program in Autolev's layout, ours or Autolev's own, and read the
+values it leaves in its ENCODE arrays (its main() renamed, called by a small driver
+that prints every element with %.17g)."""
+import hashlib
+import math
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+from autolev.runtime.numerics import codegen
+
+
+def compiler():
+    return codegen.compiler()
+
+
+def value_for(name: str, draw: int) -> float:
+    """A value in [-1, 1) (away from 0) fixed by the quantity's name and the draw."""
+    digest = hashlib.sha256(f"{draw}:{name.lower()}".encode()).digest()
+    x = int.from_bytes(digest[:6], "big") / 2.0 ** 48
+    return (0.2 + 0.8 * x) * (1 if digest[6] & 1 else -1)
+
+
+def filled_in(template: str, draw: int) -> str:
+    """An Autolev .in text with each row's value (from column 60) drawn by name."""
+    out = []
+    for line in template.splitlines():
+        if len(line) >= 60 and line[58] == "|" and not set(line[:58]) <= {"-", " "}:
+            name = line[21:42].strip()
+            if name and name.lower() != "quantity":
+                line = line[:59] + f"{value_for(name, draw):.17g}"
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def driver(arrays: list[tuple[str, tuple]]) -> str:
+    """C that runs the program's main() and prints its ENCODE arrays."""
+    lines = ["#include <stdio.h>", "int autolev_main(void);"]
+    for name, shape in arrays:
+        lines.append(f"extern double {name}" + "".join(f"[{d}]" for d in shape) + ";")
+    lines += ["int main(void)", "{", "    autolev_main();"]
+    for name, shape in arrays:
+        if not shape:
+            lines.append(f'    printf("{name} %.17g\\n", {name});')
+        elif len(shape) == 1:
+            lines.append(f"    for (int i = 0; i < {shape[0]}; i++) "
+                         f'printf("{name}[%d] %.17g\\n", i, {name}[i]);')
+        else:
+            lines.append(f"    for (int i = 0; i < {shape[0]}; i++) "
+                         f"for (int j = 0; j < {shape[1]}; j++) "
+                         f'printf("{name}[%d][%d] %.17g\\n", i, j, {name}[i][j]);')
+    return "\n".join(lines + ["    return 0;", "}"]) + "\n"
+
+
+def encoded_values(program: Path, in_text: str, in_name: str, arrays, work: Path,
+                   flags=("-O0",)) -> dict:
+    """{element: value} the program computes from `in_text` (placed where it opens
+    its .in file, `in_name`, relative to the folder it runs in)."""
+    work.mkdir(parents=True, exist_ok=True)
+    shutil.copy(program, work / "program.c")
+    (work / "driver.c").write_text(driver(arrays))
+    target = work / in_name
+    target.parent.mkdir(parents=True, exist_ok=True)
+    target.write_text(in_text)
+    cc = compiler()
+    subprocess.run([cc, *flags, "-w", "-Dmain=autolev_main", "-c", "program.c"], cwd=work,
+                   check=True, capture_output=True)
+    subprocess.run([cc, *flags, "-o", "run", "driver.c", "program.o", "-lm"], cwd=work,
+                   check=True, capture_output=True)
+    out = subprocess.run([str(work / "run")], cwd=work, capture_output=True, text=True,
+                         check=True).stdout
+    values = {}
+    for line in out.splitlines():
+        m = re.match(r"^(\w+(?:\[\d+\])*) (\S+)$", line)
+        if m:
+            values[m.group(1)] = float(m.group(2))
+    if not values:
+        raise AssertionError(f"{program.name} printed no values:\n{out[-500:]}")
+    return values
+
+
+def input_name(program_text: str) -> str:
+    """The .in file a program in Autolev's C layout opens."""
+    m = re.search(r'strcpy\(fileName, "([^"]+)"\)', program_text)
+    if m is None:
+        raise AssertionError("no input file name in the program")
+    return m.group(1)
+
+
+def largest_difference(ours: dict, theirs: dict) -> tuple[float, str]:
+    """The largest difference of two programs' values relative to the array it is in
+    (its largest magnitude), and which array: element by element, a value that
+    cancels to almost nothing (1e-19 among values of 1e-3, or Autolev's 4/3 printed
+    with 16 digits under a sqrt) differs by rounding alone.  A NaN on one side only
+    is an infinite difference."""
+    arrays: dict = {}
+    for key, b in theirs.items():
+        a = ours[key]
+        if math.isnan(a) != math.isnan(b):
+            return math.inf, key
+        if math.isnan(a):
+            continue
+        big, diff = arrays.get(key.split("[")[0], (0.0, 0.0))
+        arrays[key.split("[")[0]] = (max(big, abs(a), abs(b)), max(diff, abs(a - b)))
+    worst, where = 0.0, ""
+    for name, (big, diff) in arrays.items():
+        if diff and diff / big > worst:
+            worst, where = diff / big, name
+    return worst, where
