@@ -20,6 +20,9 @@ from helpers import CORPUS
 from helpers import programs as P
 
 needs_cc = pytest.mark.skipif(P.compiler() is None, reason="no C compiler on this machine")
+needs_octave = pytest.mark.skipif(
+    P.octave() is None, reason="GNU Octave runs the Matlab programs; it is not installed "
+    "(Debian: apt install octave)")
 
 ARM = """\
 CONSTANTS L1, L2
@@ -189,11 +192,11 @@ def test_a_file_name_leaving_the_output_folder_writes_nothing(tmp_path, capsys):
 
 def test_kinds_not_written_yet_are_reported_and_the_others_written(tmp_path, capsys):
     path = tmp_path / "arm.al"
-    path.write_text(ARM + "CODE ALGEBRAIC() arm_raw.m\n")
+    path.write_text(ARM + "CODE ALGEBRAIC() arm_raw.f\n")
     assert main(["code", str(path), "--out", str(tmp_path / "out")]) == 1
     captured = capsys.readouterr()
     assert "wrote" in captured.out and "arm_raw.c" in captured.out
-    assert "CODE ALGEBRAIC arm_raw.m: programs of this kind in .m are not written yet" \
+    assert "CODE ALGEBRAIC arm_raw.f: programs of this kind in .f are not written yet" \
         in captured.err
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["arm_raw.c", "arm_raw.in"]
 
@@ -331,3 +334,53 @@ def test_gait2d_rebuilds_with_its_own_cleaning_script(tmp_path):
     assert out.returncode == 0, out.stdout
     # qdd, GRF, Stick: the largest difference relative to each vector's largest value
     assert all(float(v) <= 1e-12 for v in out.stdout.split()), out.stdout
+
+
+# -- Matlab --------------------------------------------------------------------------
+@needs_octave
+def test_a_matlab_program_gives_the_values_derived_by_hand(tmp_path):
+    model = model_from(tmp_path, ARM.replace("arm_raw.c", "arm_raw.m"))
+    text = next(iter(program_texts(model, model.code_commands[0]).values()))
+    rows = {"L1": 0.7, "L2": 0.4, "Q1": 0.3, "Q2": -1.1}
+    text = "\n".join(re.sub(r"^(\w+)(\s*=\s*)[^;]*;", lambda m: m.group(1) + m.group(2)
+                            + repr(rows[m.group(1)]) + ";", line)
+                     if re.match(r"^(L1|L2|Q1|Q2)\s+=", line) else line
+                     for line in text.splitlines())
+    got = P.octave_encoded(Path("arm_raw.m"), text, ["TIP", "JAC"], tmp_path / "run")
+    l1, l2, q1, q2 = 0.7, 0.4, 0.3, -1.1
+    # by hand; Matlab's arrays are read column by column
+    want = {"TIP[1]": l1 * math.cos(q1) + l2 * math.cos(q1 + q2),
+            "TIP[2]": l1 * math.sin(q1) + l2 * math.sin(q1 + q2),
+            "JAC[1]": -l1 * math.sin(q1) - l2 * math.sin(q1 + q2),
+            "JAC[2]": l1 * math.cos(q1) + l2 * math.cos(q1 + q2),
+            "JAC[3]": -l2 * math.sin(q1 + q2),
+            "JAC[4]": l2 * math.cos(q1 + q2)}
+    assert set(got) == set(want)
+    for key, value in want.items():
+        assert got[key] == pytest.approx(value, rel=1e-14, abs=1e-15), key
+
+
+RIDER = CORPUS / "moorepants+RiderModel" / "autolev"
+
+
+@pytest.mark.corpus
+@needs_octave
+@pytest.mark.parametrize("stem", ["WhipplePlusRiderLean"])
+def test_matlab_encode_values_equal_those_of_autolevs_own_program(stem, tmp_path):
+    model_path = RIDER / f"{stem}.AL"
+    if not model_path.exists():
+        pytest.skip(f"not in the corpus: {model_path}")
+    model = autolev.load(model_path)
+    command = model.code_commands[-1]
+    ours = next(iter(program_texts(model, command).values()))
+    theirs = (RIDER / f"{stem}.m").read_text(errors="replace")
+    arrays = [e.name for e in plan_algebraic(model, command).encoded]
+    program = Path(f"{stem}.m")
+    for draw in range(2):
+        a = P.octave_encoded(program, P.matlab_with_values(ours, draw), arrays,
+                             tmp_path / f"ours{draw}")
+        b = P.octave_encoded(program, P.matlab_with_values(theirs, draw), arrays,
+                             tmp_path / f"theirs{draw}")
+        assert set(a) == set(b)
+        worst, where = P.largest_difference(a, b)
+        assert worst <= 1e-12, f"draw {draw}: {where} differs by {worst:.3g}"

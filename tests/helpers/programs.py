@@ -108,3 +108,44 @@ def largest_difference(ours: dict, theirs: dict) -> tuple[float, str]:
         if diff and diff / big > worst:
             worst, where = diff / big, name
     return worst, where
+
+
+def octave():
+    return shutil.which("octave")
+
+
+def matlab_with_values(text: str, draw: int) -> str:
+    """A Matlab program in Autolev's layout with each row of its ReadUserInput table
+    (`NAME   =  value;   % ...`) given a value drawn by name."""
+    out, in_table = [], False
+    for line in text.splitlines():
+        if line.startswith("function ReadUserInput"):
+            in_table = True
+        elif line.startswith("% Unit conversions"):
+            in_table = False
+        m = re.match(r"^([A-Za-z]\w*)(\s*=\s*)[^;%]*;(.*)$", line) if in_table else None
+        if m:
+            line = f"{m.group(1)}{m.group(2)}{value_for(m.group(1), draw)!r};{m.group(3)}"
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def octave_encoded(program: Path, text: str, arrays: list[str], work: Path) -> dict:
+    """{element: value} of the ENCODE arrays after Octave ran the program `text`
+    (saved under the program's own file name in `work`)."""
+    work.mkdir(parents=True, exist_ok=True)
+    (work / program.name).write_text(text)
+    show = "".join(f"x = {a}; for k = 1:numel(x) printf('{a}[%d] %.17g\\n', k, x(k)); end; "
+                   for a in arrays)
+    script = f"global {' '.join(arrays)}; {program.stem}; {show}"
+    out = subprocess.run([octave(), "--no-gui", "--quiet", "--no-window-system", "--eval",
+                          script], cwd=work, capture_output=True, text=True, timeout=600)
+    values = {}
+    for line in out.stdout.splitlines():
+        m = re.match(r"^(\w+\[\d+\]) (\S+)$", line)
+        if m:
+            values[m.group(1)] = float(m.group(2))
+    if not values:
+        raise AssertionError(f"Octave printed no values for {program.name}:\n"
+                             f"{out.stdout[-500:]}{out.stderr[-800:]}")
+    return values

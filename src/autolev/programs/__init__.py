@@ -9,11 +9,13 @@ from pathlib import Path, PureWindowsPath
 
 from ..runtime.errors import AutolevModelError
 from .c import write_c
-from .plan import input_file_name, plan_algebraic
+from .m import write_m
+from .plan import plan_algebraic
 
 # (kind, extension) -> (plan, writer); anything else is reported as not written
 WRITERS = {
     ("algebraic", ".c"): (plan_algebraic, write_c),
+    ("algebraic", ".m"): (plan_algebraic, write_m),
 }
 
 
@@ -47,11 +49,9 @@ def program_texts(model, command) -> dict:
         raise AutolevModelError(
             f"CODE {command.kind.upper()} {command.filename}: programs of this kind in "
             f"{extension or 'a file without extension'} are not written yet (autolev "
-            "code writes CODE ALGEBRAIC() .c programs)")
+            "code writes CODE ALGEBRAIC() programs in .c and .m)")
     plan_of, write = found
-    plan = plan_of(model, command)
-    return {relative_path(command.filename): write(plan),
-            relative_path(input_file_name(command.filename)): plan.input_text}
+    return {relative_path(name): text for name, text in write(plan_of(model, command)).items()}
 
 
 def write_programs(model, out_dir, commands=None) -> list[Written]:

@@ -10,7 +10,8 @@ from .. import __version__
 from ..runtime import units
 from ..runtime.numerics.files import header as output_header
 from ..runtime.printer import CodePrinter
-from .plan import Plan, assign_slots, c_name, check_names, input_file_name, program_name
+from .plan import (Plan, c_name, check_names, element_indices, input_file_name,
+                   marked_statements, program_name, slots_of, unmarked)
 
 # C's keywords, the standard names the program calls, and the program's own names
 RESERVED = frozenset("""
@@ -88,31 +89,14 @@ class CProgram:
 
     # -- the computation ----------------------------------------------------------------
     def _computation(self) -> tuple[list, list]:
-        """(eqns1's statements, output()'s) as lines.  Printed first with a mark
-        `@k@` for the value of statement k, so that what each text reads is what the
-        printer wrote (it reuses the text of a subexpression printed before, and of a
-        negated term); then each mark becomes the z slot that statement's value has."""
-        statements = self.plan.statements
-        assigned = []
-        for k, st in enumerate(statements):
-            text = self.printer(st.expr)
-            if st.target is None:
-                mark = f"@{k}@"
-                if st.defines is not None:         # later statements read it from there
-                    self.where[st.defines] = mark
-                if st.holds_call:                  # a repeated subexpression, once
-                    self.printer.bind(st.expr, mark)
-                assigned.append((mark, text))
-            else:
-                assigned.append((c_name(st.target), text))
+        """(eqns1's statements, output()'s) as lines, intermediates in z slots."""
+        assigned = marked_statements(self.plan, self.printer, self.where, c_name)
         written = self._written()
-        reads = [_marks(text) for _, text in assigned]
-        reads.append(set().union(*(_marks(text) for _, _, text in written)))
-        slots = assign_slots(reads, [st.target is None for st in statements])
+        slots = slots_of(self.plan, assigned, [text for _, _, text in written])
         self.z_size = max(slots.values(), default=0)
 
         def slot(text):
-            return _MARK.sub(lambda m: f"z[{slots[int(m.group(1))]}]", text)
+            return unmarked(text, slots, lambda k: f"z[{k}]")
         computed = []
         for target, text in assigned:
             computed += wrap(f"  {slot(target)} = ", slot(text))
@@ -134,7 +118,7 @@ class CProgram:
             for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
                 out.append((f'  writef({target}, " %- 14.6E", ', ",_NAN);", ",".join(values)))
         for e in p.encoded:
-            for index, value in zip(_indices(e.shape), e.elements):
+            for index, value in zip(element_indices(e.shape), e.elements):
                 target = e.name + "".join(f"[{i}]" for i in index)
                 out.append((f"  {target} = ", ";", "0" if value == 0 else self.printer(value)))
         return out
@@ -227,23 +211,8 @@ class CProgram:
         return lines + ["", "}"]
 
 
-_MARK = re.compile(r"@(\d+)@")
-
-
-def _marks(text: str) -> set:
-    return {int(k) for k in _MARK.findall(text)}
-
-
 def _by_name(symbols: list) -> list:
     return sorted(symbols, key=lambda s: (c_name(s).lower(), c_name(s)))
-
-
-def _indices(shape: tuple) -> list[tuple]:
-    if not shape:
-        return [()]
-    if len(shape) == 1:
-        return [(i,) for i in range(shape[0])]
-    return [(i, j) for i in range(shape[0]) for j in range(shape[1])]
 
 
 # the functions every program carries: Autolev's names and behaviour (the value of a
@@ -303,8 +272,10 @@ fprintf(Fp, "\n");
 }""".splitlines()[1:]
 
 
-def write_c(plan: Plan) -> str:
-    return CProgram(plan).text()
+def write_c(plan: Plan) -> dict:
+    """{file name: text}: the program and the .in file it reads."""
+    return {plan.filename: CProgram(plan).text(),
+            input_file_name(plan.filename): plan.input_text}
 
 
 __all__ = ["write_c", "wrap", "c_string"]

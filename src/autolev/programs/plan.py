@@ -9,6 +9,7 @@ derivatives, z[] slots for intermediates, ENCODE arrays in ENCODE order.
 from __future__ import annotations
 
 import heapq
+import re
 from dataclasses import dataclass, field
 
 import sympy as sm
@@ -58,6 +59,7 @@ class Plan:
     encoded: list               # Encoded, in ENCODE order
     files: list                 # per OUTPUT file: [(expression, label, unit)]
     degree_inputs: list = field(default_factory=list)
+    values: dict = field(default_factory=dict)     # input -> its Value (given, unit)
 
 
 def program_name(filename: str) -> str:
@@ -115,7 +117,8 @@ def plan_algebraic(model, command) -> Plan:
                             {s: "Constant" for s in inputs})
     degrees = [s for s in inputs if units.is_degrees(values.unit_of(s))]
     return Plan("algebraic", command.filename, inputs, text, list(system.specified),
-                named, statements, encoded_plan, out_files, degrees)
+                named, statements, encoded_plan, out_files, degrees,
+                {s: values.values[s] for s in inputs})
 
 
 def _free(exprs, model) -> set:
@@ -172,6 +175,60 @@ def assign_slots(reads: list, intermediate: list) -> dict:
         for j in frees_after.get(k, ()):
             heapq.heappush(free, slots[j])
     return slots
+
+
+# -- printing a plan's computation (any language) ----------------------------------------
+_MARK = re.compile(r"@(\d+)@")
+
+
+def marked_statements(plan: Plan, printer, where: dict, name_of) -> list[tuple[str, str]]:
+    """(target, text) of each statement, printed with the mark `@k@` for the value of
+    statement k wherever a later text reads it (through its symbol, or through the
+    text of a repeated subexpression the printer reuses, negated terms included), so
+    that what each text reads is what was written.  `where` is the printer's names."""
+    out = []
+    for k, st in enumerate(plan.statements):
+        text = printer(st.expr)
+        if st.target is None:
+            mark = f"@{k}@"
+            if st.defines is not None:          # later statements read it from there
+                where[st.defines] = mark
+            if st.holds_call:                   # a repeated subexpression, computed once
+                printer.bind(st.expr, mark)
+            out.append((mark, text))
+        else:
+            out.append((name_of(st.target), text))
+    return out
+
+
+def slots_of(plan: Plan, statements: list, later: list, order=None) -> dict:
+    """The z slot of each intermediate statement, from the marked texts of the
+    statements and of what is printed after them; `order`: the order in which the
+    program runs the statements (default: as planned)."""
+    order = list(range(len(statements))) if order is None else list(order)
+    place = {k: i for i, k in enumerate(order)}
+    reads = [{place[j] for j in _marks(statements[k][1])} for k in order]
+    reads.append({place[j] for text in later for j in _marks(text)})
+    slots = assign_slots(reads, [plan.statements[k].target is None for k in order])
+    return {order[i]: slot for i, slot in slots.items()}
+
+
+def unmarked(text: str, slots: dict, slot_text) -> str:
+    """`text` with each mark replaced by slot_text(its slot)."""
+    return _MARK.sub(lambda m: slot_text(slots[int(m.group(1))]), text)
+
+
+def _marks(text: str) -> set:
+    return {int(k) for k in _MARK.findall(text)}
+
+
+def element_indices(shape: tuple) -> list[tuple]:
+    """The 0-based indices of an ENCODE quantity's elements, row by row."""
+    if not shape:
+        return [()]
+    if len(shape) == 1:
+        return [(i,) for i in range(shape[0])]
+    return [(i, j) for i in range(shape[0]) for j in range(shape[1])]
 
 
 def c_name(sym) -> str:

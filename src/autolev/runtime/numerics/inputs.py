@@ -294,10 +294,10 @@ class Inputs:
             if key in INTEGRATION:
                 unit = {"PRINTINT": "Positive Integer", "ABSERR": "",
                         "RELERR": ""}.get(key, (self.unit_of("T") or "UNITS").upper())
-                text = f" {int(v.given)}" if key == "PRINTINT" else _format(v.given)
+                text = f" {int(v.given)}" if key == "PRINTINT" else format_value(v.given)
             else:
                 unit = (v.unit or "UNITS").upper()
-                text = _format(v.given)
+                text = format_value(v.given)
             name = display_name(key)
             lines.append(f"{kind:<21}{name:<21}{unit[:16]:<16}|{text}")
         lines.append("-" * 58 + "+" + "-" * 18)
@@ -324,7 +324,8 @@ def _parse_number(text: str):
     return v if math.isfinite(v) else None
 
 
-def _format(v: float) -> str:
+def format_value(v: float) -> str:
+    """A value as Autolev's .in files and Matlab tables show it (' 0.0', '-9.81')."""
     if v == int(v) and abs(v) < 1e15:
         s = f"{v:.1f}"
     else:

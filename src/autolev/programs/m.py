@@ -1,0 +1,275 @@
+"""A CODE command's program in Matlab (GNU Octave runs it too), section for section in
+the layout of Autolev 4.1's Matlab programs: one function file whose subfunctions
+ReadUserInput (the input values as a table, the unit conversions, "Evaluate
+constants"), DoCalculations ("Quantities to be specified" and what depends on them),
+PrintUserOutput (the OUTPUT rows and the ENCODE arrays) share their quantities as
+globals."""
+from __future__ import annotations
+
+import re
+
+import sympy as sm
+
+from .. import __version__
+from ..runtime import units
+from ..runtime.errors import AutolevModelError
+from ..runtime.numerics import codegen
+from ..runtime.numerics.files import header as output_header
+from ..runtime.numerics.inputs import format_value
+from ..runtime.printer import _ATOM, _POW, CodePrinter
+from .plan import (Plan, c_name, check_names, element_indices, marked_statements,
+                   program_name, slots_of, unmarked)
+
+RESERVED = frozenset("""
+break case catch classdef continue else elseif end for function global if otherwise
+parfor persistent return spmd switch try while z encode pi degtorad radtodeg output
+fileidentifier readuserinput docalculations printuseroutput writeoutput
+closeoutputfilesandterminate openoutputfilesandwriteheadings sin cos tan asin acos atan
+atan2 sinh cosh tanh asinh acosh atanh exp log sqrt abs floor ceil fix round max min
+sign gamma erf zeros fopen fclose fprintf error disp ans nan inf eps i j
+""".split())
+
+_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
+          "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
+          "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "exp": "exp",
+          "log": "log", "floor": "floor", "ceiling": "ceil", "Abs": "abs",
+          "atan2": "atan2", "erf": "erf", "gamma": "gamma", "Int": "fix",
+          "Round": "round", "sign": "sign"}
+_RULE = "%" + "-" * 31 + "+" + "-" * 26 + "+" + "-" * 19 + "+" + "-" * 17
+
+
+class MatlabPrinter(CodePrinter):
+    """The C printer's walk, with Matlab's power operator, function names and
+    constants."""
+
+    def __init__(self, names: dict):
+        super().__init__("c", names)
+        self.funcs = _FUNCS
+
+    def _constant(self, e):
+        if e is sm.pi:
+            return "pi", _ATOM
+        if e is sm.E:
+            return "exp(1)", _ATOM
+        return self._number(sm.Float(e))
+
+    def _number(self, e):
+        if e is sm.nan or e is sm.zoo:
+            return "NaN", _ATOM
+        if e in (sm.oo, -sm.oo):
+            return ("Inf" if e is sm.oo else "(-Inf)"), _ATOM
+        return super()._number(e)
+
+    def _pow(self, e):
+        base, exp = e.base, e.exp
+        if exp == sm.Rational(1, 2):
+            return f"sqrt({self._p(base)[0]})", _ATOM
+        if exp == -1:
+            return f"1.0/{self._wrap(base, _POW)}", 2
+        return f"{self._wrap(base, _ATOM)}^{self._wrap(exp, _ATOM)}", _POW
+
+    def _function(self, e):
+        name = type(e).__name__
+        if name in ("Max", "Min"):
+            args = [self._p(a)[0] for a in e.args]
+            text = args[0]
+            for a in args[1:]:
+                text = f"{name.lower()}({text}, {a})"
+            return text, _ATOM
+        if name == "Heaviside":
+            raise AutolevModelError("Heaviside has no Matlab function to print it as")
+        if name == "factorial":
+            return f"gamma({self._p(e.args[0])[0]} + 1.0)", _ATOM
+        return super()._function(e)
+
+    def _piecewise(self, e):
+        raise AutolevModelError("a piecewise quantity has no expression form in Matlab: "
+                                "write the program in C")
+
+    def _relational(self, e):
+        op = {"!=": "~="}.get(e.rel_op, e.rel_op)
+        return f"({self._p(e.lhs)[0]} {op} {self._p(e.rhs)[0]})", _ATOM
+
+
+def m_string(text: str, fmt: bool = False) -> str:
+    """`text` inside a Matlab single-quoted string; `fmt`: of an fprintf format that
+    prints `text` as it is."""
+    if fmt:
+        text = text.replace("\\", "\\\\").replace("%", "%%").replace("\n", "\\n")
+    # outside text (labels, units, file names): printable ASCII only, quotes doubled
+    return "".join(ch if " " <= ch <= "~" else "?" for ch in text.replace("'", "''"))
+
+
+class MProgram:
+    """The text of one plan's Matlab program."""
+
+    def __init__(self, plan: Plan):
+        check_names(plan, RESERVED, "Matlab")
+        self.plan = plan
+        self.name = program_name(plan.filename)
+        self.function = re.split(r"[\\/]", self.name)[-1].rpartition(".")[0]
+        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,62}", self.function):
+            raise AutolevModelError(
+                f"{plan.filename}: {self.function!r} cannot name a Matlab function (a "
+                "letter, then letters, digits or _): rename the CODE file")
+        self.stem = self.name.rpartition(".")[0]
+        self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named}
+        self.printer = MatlabPrinter(self.where)
+
+    def text(self) -> str:
+        p = self.plan
+        assigned = marked_statements(p, self.printer, self.where, c_name)
+        outputs, encoded = self._written()
+        # ReadUserInput computes what does not depend on the specified quantities,
+        # DoCalculations the rest: the slots follow that order
+        later = self._depending_on_specified(assigned)
+        order = [k for k in range(len(assigned)) if not later[k]] + \
+            [k for k in range(len(assigned)) if later[k]]
+        slots = slots_of(p, assigned, [t for _, t in outputs + encoded], order)
+        size = max(slots.values(), default=0)
+
+        def slot(text):
+            return unmarked(text, slots, lambda k: f"z({k})")
+        constants = [f"{slot(t)} = {slot(x)};" for k, (t, x) in enumerate(assigned)
+                     if not later[k]]
+        calculations = [f"{slot(t)} = {slot(x)};" for k, (t, x) in enumerate(assigned)
+                        if later[k]]
+        globals_ = self._globals()
+        lines = [f"function {self.function}",
+                 f"% File  {self.name}  created by autolev {__version__} in the layout "
+                 "of Autolev 4.1's programs", ""] + globals_ + [""]
+        if p.files:
+            lines.append("OpenOutputFilesAndWriteHeadings;")
+        lines += ["ReadUserInput;", "DoCalculations;", "PrintUserOutput;",
+                  "CloseOutputFilesAndTerminate;"]
+        lines += self._function("ReadUserInput", globals_, self._table() + [
+            "", "% Unit conversions", "Pi       = 3.141592653589793;",
+            "DEGtoRAD = Pi/180.0;", "RADtoDEG = 180.0/Pi;"]
+            + [f"{c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
+            + ["", "% Reserve space and initialize matrices", f"z = zeros({size},1);",
+               "", "% Evaluate constants"] + constants)
+        lines += self._function("DoCalculations", globals_, [
+            "% Quantities to be specified"] + [f"{c_name(s)} = 0;" for s in p.specified]
+            + [""] + calculations)
+        lines += self._function("Output = PrintUserOutput", globals_, self._printing(
+            [f"{h}{slot(t)};" for h, t in outputs], [f"{h}{slot(t)};" for h, t in encoded]))
+        lines += self._function("WriteOutput( fileIdentifier, Output )", [], [
+            "numberOfOutputQuantities = length( Output );",
+            "if( numberOfOutputQuantities > 0 )",
+            "  for( i = 1 : numberOfOutputQuantities )",
+            "    fprintf( fileIdentifier, ' %- 14.6E', Output(i) );",
+            "  end",
+            "  fprintf( fileIdentifier, '\\n' );",
+            "end"])
+        if p.files:
+            lines += self._function("OpenOutputFilesAndWriteHeadings", [],
+                                    self._headings())
+        lines += self._function("CloseOutputFilesAndTerminate", globals_, self._closing())
+        return "\n".join(lines) + "\n"
+
+    # -- pieces ---------------------------------------------------------------------
+    def _globals(self) -> list[str]:
+        p = self.plan
+        groups = [[c_name(s) for s in p.inputs], [c_name(s) for s in p.specified],
+                  sorted((c_name(s) for s in p.named), key=lambda n: (n.lower(), n))]
+        groups.append(["DEGtoRAD", "RADtoDEG", "z"] + [e.name for e in p.encoded]
+                      + ["Encode"])
+        return [f"global   {' '.join(g)};" for g in groups if g]
+
+    @staticmethod
+    def _function(head: str, globals_: list, body: list) -> list[str]:
+        return ["", "", "", "%" + "=" * 75, f"function {head}"] + globals_ + [""] + body
+
+    def _table(self) -> list[str]:
+        rows = [_RULE,
+                f"% {'Quantity':<30}| {'Value':<25}| {'Units':<18}| Description",
+                _RULE.replace("+", "|")]
+        for s in self.plan.inputs:
+            value = self.plan.values[s]
+            unit = value.unit or "UNITS"
+            rows.append(f"{c_name(s):<32}= {format_value(value.given) + ';':<25}"
+                        f"% {unit:<20}Constant")
+        return rows + [_RULE]
+
+    def _written(self) -> tuple[list, list]:
+        """([(head, text)] of the OUTPUT values, [(head, text)] of the ENCODE
+        elements)."""
+        p = self.plan
+        outputs, n = [], 0
+        for cols in p.files:
+            for expr, _, unit in cols:
+                n += 1
+                text = self.printer(expr)
+                outputs.append((f"Output({n}) = ",
+                                f"({text})*RADtoDEG" if units.is_degrees(unit) else text))
+        encoded = []
+        for e in p.encoded:
+            for index, value in zip(element_indices(e.shape), e.elements):
+                target = e.name + ("(" + ",".join(str(i + 1) for i in index) + ")"
+                                   if index else "")
+                encoded.append((f"{target} = ", "0" if value == 0 else self.printer(value)))
+        return outputs, encoded
+
+    def _printing(self, outputs: list, encoded: list) -> list[str]:
+        p = self.plan
+        lines = list(outputs) or ["Output = [];"]
+        if p.files:
+            lines += ["", "FileIdentifier = fopen('all');"]
+            first = 1
+            for k, cols in enumerate(p.files, 1):
+                span = f"Output({first}:{first + len(cols) - 1})"
+                if k == 1:
+                    lines.append(f"WriteOutput( 1, {span} );")
+                lines.append(f"WriteOutput( FileIdentifier({k}), {span} );")
+                first += len(cols)
+        lines += [""] + encoded + [""]
+        return lines + [f"Encode({k}) = 0.0;" for k in range(1, len(p.encoded) + 1)]
+
+    def _headings(self) -> list[str]:
+        lines = []
+        for k, cols in enumerate(self.plan.files, 1):
+            file = f"{self.stem}.{k}"
+            head = output_header(file, [c[1] for c in cols], [c[2] for c in cols])
+            lines.append(f"FileIdentifier = fopen('{m_string(file)}', 'wt');   "
+                         "if( FileIdentifier == -1 ) error('Error: unable to open file "
+                         f"{m_string(file)}'); end")
+            if k == 1:
+                names_and_units = head.split("\n", 2)[2]
+                lines.append(f"fprintf( 1, '{m_string(names_and_units, fmt=True)}' );")
+            lines.append(f"fprintf( FileIdentifier, '{m_string(head, fmt=True)}' );")
+        return lines
+
+    def _closing(self) -> list[str]:
+        n = len(self.plan.files)
+        if not n:
+            return []
+        what = (f"file {self.stem}.1" if n == 1 else f"files {self.stem}.i  (i=1,...,{n})")
+        return ["fclose( 'all' );",
+                f"fprintf( 1, '\\n Output is in the {m_string(what, fmt=True)}\\n' );"]
+
+    def _depending_on_specified(self, assigned: list) -> list[bool]:
+        """Which statements depend on a specified quantity (DoCalculations computes
+        them, after the quantities are specified)."""
+        plan = self.plan
+        specified = set(plan.specified)
+        named_at = {st.target: k for k, st in enumerate(plan.statements)
+                    if st.target is not None}
+        depends = []
+        for k, st in enumerate(plan.statements):
+            symbols = {a for node in codegen.post_order([st.expr], set())
+                       for a in node.args if a.is_Symbol}
+            if st.expr.is_Symbol:
+                symbols.add(st.expr)
+            reads = {int(m) for m in re.findall(r"@(\d+)@", assigned[k][1])}
+            reads |= {named_at[s] for s in symbols if s in named_at}
+            depends.append(bool(symbols & specified) or any(depends[j] for j in reads
+                                                             if j < k))
+        return depends
+
+
+def write_m(plan: Plan) -> dict:
+    """{file name: text}: the program (a Matlab program holds its input values)."""
+    return {plan.filename: MProgram(plan).text()}
+
+
+__all__ = ["write_m", "m_string", "MatlabPrinter"]
