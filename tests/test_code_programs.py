@@ -16,7 +16,7 @@ from autolev.cli import main
 from autolev.runtime.errors import AutolevModelError
 from autolev.programs import program_texts, write_programs
 from autolev.programs.plan import input_file_name, plan_algebraic
-from helpers import CORPUS
+from helpers import CORPUS, EXAMPLES
 from helpers import programs as P
 
 needs_cc = pytest.mark.skipif(P.compiler() is None, reason="no C compiler on this machine")
@@ -384,3 +384,46 @@ def test_matlab_encode_values_equal_those_of_autolevs_own_program(stem, tmp_path
         assert set(a) == set(b)
         worst, where = P.largest_difference(a, b)
         assert worst <= 1e-12, f"draw {draw}: {where} differs by {worst:.3g}"
+
+
+# -- CODE DYNAMICS in C -----------------------------------------------------------------
+@needs_cc
+@pytest.mark.parametrize("example", ["double_pendulum", "whipple_benchmark", "rolling_disc",
+                                     "nlink_pendulum", "cart_pendulum",
+                                     "euler_parameters_body"])
+def test_a_dynamics_program_writes_the_files_autolev_run_writes(example, tmp_path):
+    """The program integrates with the Kutta-Merson of Autolev's C programs, which
+    `autolev run` reproduces (to the digit for the double pendulum's own Autolev
+    program, docs/language.md): compiled with -Wall and run from the .in file it
+    comes with, it writes the same files byte for byte."""
+    model = EXAMPLES / f"{example}.al"
+    assert main(["code", str(model), "--out", str(tmp_path / "prog"), "-q"]) == 0
+    program = next((tmp_path / "prog").glob("*.c"))
+    built = subprocess.run([P.compiler(), "-Wall", "-Wextra", "-O2", "-o", "run",
+                            program.name, "-lm"], cwd=tmp_path / "prog",
+                           capture_output=True, text=True)
+    assert built.returncode == 0 and built.stderr == "", built.stderr
+    ran = subprocess.run(["./run"], cwd=tmp_path / "prog", capture_output=True, text=True)
+    assert ran.returncode == 0, ran.stdout
+    assert main(["run", str(model), "--out", str(tmp_path / "run"), "-q"]) == 0
+    ours = sorted(p.name for p in (tmp_path / "run").glob(f"{program.stem}.[0-9]*"))
+    assert ours
+    for name in ours:
+        written = (tmp_path / "prog" / name).read_bytes()
+        assert written == (tmp_path / "run" / name).read_bytes(), name
+
+
+def test_a_dynamics_program_reads_constants_initial_values_and_integration_parameters(
+        tmp_path):
+    model = EXAMPLES / "double_pendulum.al"
+    texts = program_texts(autolev.load(model), autolev.load(model).code_commands[0])
+    text = next(t for p, t in texts.items() if p.suffix == ".c")
+    groups = re.findall(r"/\* Read ([^*]+) \*/\n(readf\([^;]*;)", text)
+    assert [g[0].strip() for g in groups] == [
+        "values of constants from input file",
+        "the initial value of each variable from input file",
+        "integration parameters from input file"]
+    assert "&TINITIAL,&TFINAL,&INTEGSTP,&_printint,&abserr,&relerr" in groups[2][1]
+    infile = next(t for p, t in texts.items() if p.suffix == ".in")
+    # each group ends with the line readf consumes after it (a blank line, then dashes)
+    assert infile.count("\n\n") >= 2

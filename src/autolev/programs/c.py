@@ -90,9 +90,9 @@ class CProgram:
     # -- the computation ----------------------------------------------------------------
     def _computation(self) -> tuple[list, list]:
         """(eqns1's statements, output()'s) as lines, intermediates in z slots."""
-        assigned = marked_statements(self.plan, self.printer, self.where, c_name)
+        assigned = marked_statements(self.plan.statements, self.printer, self.where, c_name)
         written = self._written()
-        slots = slots_of(self.plan, assigned, [text for _, _, text in written])
+        slots = slots_of(self.plan.statements, assigned, [text for _, _, text in written])
         self.z_size = max(slots.values(), default=0)
 
         def slot(text):

@@ -118,14 +118,14 @@ class MProgram:
 
     def text(self) -> str:
         p = self.plan
-        assigned = marked_statements(p, self.printer, self.where, c_name)
+        assigned = marked_statements(p.statements, self.printer, self.where, c_name)
         outputs, encoded = self._written()
         # ReadUserInput computes what does not depend on the specified quantities,
         # DoCalculations the rest: the slots follow that order
         later = self._depending_on_specified(assigned)
         order = [k for k in range(len(assigned)) if not later[k]] + \
             [k for k in range(len(assigned)) if later[k]]
-        slots = slots_of(p, assigned, [t for _, t in outputs + encoded], order)
+        slots = slots_of(p.statements, assigned, [t for _, t in outputs + encoded], order)
         size = max(slots.values(), default=0)
 
         def slot(text):

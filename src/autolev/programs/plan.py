@@ -121,6 +121,95 @@ def plan_algebraic(model, command) -> Plan:
                 {s: values.values[s] for s in inputs})
 
 
+@dataclass
+class DynamicsPlan:
+    """A CODE DYNAMICS() program: main evaluates the constants once and integrates
+    the states with Kutta-Merson; eqns1 gives the states' derivatives (the unknown
+    ones from M x = F), output the OUTPUT and ENCODE quantities at print times."""
+
+    kind: str
+    filename: str
+    constants: list             # read first, sorted
+    states: list                # VAR[] order (sorted), read as initial values
+    input_text: str
+    values: dict                # input -> Value
+    specified: list             # without a definition: 0
+    constant_statements: list   # main's "Evaluate constants"
+    defined_constants: list     # the symbols they define, as eqns1 and output read them
+    rhs_statements: list        # eqns1
+    rates: list                 # per state: its derivative's expression (None: solved)
+    mass: list                  # m x m, row by row (M x = F)
+    forcing: list
+    unknowns: list              # the derivatives x solves for, in M's column order
+    output_statements: list
+    files: list
+    encoded: list
+    named: list
+    degree_inputs: list
+
+
+def plan_dynamics(model, command) -> DynamicsPlan:
+    """The plan of a CODE DYNAMICS() program."""
+    if command.args:
+        raise AutolevModelError("CODE DYNAMICS with arguments is not written as a "
+                                "program yet")
+    files = output_columns(model, command)
+    encoded = encoded_values(model, command)
+    defs = model.defs
+    with defs.as_of(command.definitions):
+        system = NumericSystem(model, files, encoded, integrate=True, zero=command.zero,
+                               compile_functions=False)
+        if system.locked or system.implicit_unknowns and not system.nstate:
+            raise AutolevModelError("CODE DYNAMICS: nothing to integrate")
+        fixed = dict(system.aux_fixed)
+        constants_prog = codegen.Program({"c": list(system.params)},
+                                         list(system.constant_defs), defs).build(
+                                             factored=False, shared="all")
+        c_inputs = list(system.params) + list(system.constant_defs)
+        inputs = {"t": [S.TIME], "x": list(system.states), "c": c_inputs,
+                  "s": list(system.specified)}
+        rhs_prog = codegen.Program(inputs, list(system.rhs_exprs), defs, fixed).build(
+            shared="all")
+        out_prog = codegen.Program(dict(inputs, a=list(system.accel_inputs)),
+                                   list(system.output_exprs), defs, fixed).build(
+                                       shared="all")
+    const_statements, const_named = statements_of(constants_prog)
+    rhs_statements, rhs_named = statements_of(rhs_prog)
+    out_statements, out_named = statements_of(out_prog)
+    n, unknowns = system.nstate, list(system.implicit_unknowns)
+    solved = {_one_lower(d) for d in unknowns}
+    rhs = list(rhs_prog.outputs)
+    rates = [None if x in solved else rhs[k] for k, x in enumerate(system.states)]
+    m = len(unknowns)
+    mass, forcing = rhs[n:n + m * m], rhs[n + m * m:n + m * m + m]
+    outputs = list(out_prog.outputs)
+    out_files = [[(outputs.pop(0), c.label, c.unit) for c in cols] for cols in system.files]
+    encoded_plan = []
+    for name, shape in system.encode_shapes:
+        size = shape[0] * shape[1] if len(shape) == 2 else 1
+        elements = [outputs.pop(0) for _ in range(size)]
+        if len(shape) == 2 and shape[1] == 1:
+            shape = (shape[0],)
+        encoded_plan.append(Encoded(name, shape, elements))
+    constants, states = list(system.params), list(system.states)
+    values = Inputs(model, constants + states, given=command.inputs,
+                    unit_table={**model.unit_of, **command.units})
+    values.fill_missing(constants + states, "0 (no INPUT)")
+    kinds = {**{c: "Constant" for c in constants}, **{x: "Initial Value" for x in states}}
+    text = values.file_text(input_file_name(command.filename), kinds)
+    degrees = [q for q in constants + states if units.is_degrees(values.unit_of(q))]
+    named = list(dict.fromkeys(const_named + rhs_named + out_named))
+    return DynamicsPlan("dynamics", command.filename, constants, states, text,
+                        dict(values.values), list(system.specified), const_statements,
+                        list(system.constant_defs), rhs_statements, rates, mass, forcing,
+                        unknowns, out_statements, out_files, encoded_plan, named, degrees)
+
+
+def _one_lower(d):
+    base, k = S.base_and_order(d)
+    return S.derivative(base, k - 1)
+
+
 def _free(exprs, model) -> set:
     found: set = set()
     for e in exprs:
@@ -181,13 +270,14 @@ def assign_slots(reads: list, intermediate: list) -> dict:
 _MARK = re.compile(r"@(\d+)@")
 
 
-def marked_statements(plan: Plan, printer, where: dict, name_of) -> list[tuple[str, str]]:
+def marked_statements(statements: list, printer, where: dict,
+                      name_of) -> list[tuple[str, str]]:
     """(target, text) of each statement, printed with the mark `@k@` for the value of
     statement k wherever a later text reads it (through its symbol, or through the
     text of a repeated subexpression the printer reuses, negated terms included), so
     that what each text reads is what was written.  `where` is the printer's names."""
     out = []
-    for k, st in enumerate(plan.statements):
+    for k, st in enumerate(statements):
         text = printer(st.expr)
         if st.target is None:
             mark = f"@{k}@"
@@ -201,15 +291,15 @@ def marked_statements(plan: Plan, printer, where: dict, name_of) -> list[tuple[s
     return out
 
 
-def slots_of(plan: Plan, statements: list, later: list, order=None) -> dict:
-    """The z slot of each intermediate statement, from the marked texts of the
-    statements and of what is printed after them; `order`: the order in which the
-    program runs the statements (default: as planned)."""
+def slots_of(planned: list, statements: list, later: list, order=None) -> dict:
+    """The z slot of each intermediate statement of `planned`, from the marked texts
+    of the statements and of what is printed after them; `order`: the order in which
+    the program runs the statements (default: as planned)."""
     order = list(range(len(statements))) if order is None else list(order)
     place = {k: i for i, k in enumerate(order)}
     reads = [{place[j] for j in _marks(statements[k][1])} for k in order]
     reads.append({place[j] for text in later for j in _marks(text)})
-    slots = assign_slots(reads, [plan.statements[k].target is None for k in order])
+    slots = assign_slots(reads, [planned[k].target is None for k in order])
     return {order[i]: slot for i, slot in slots.items()}
 
 
@@ -237,11 +327,12 @@ def c_name(sym) -> str:
     return base.name + "p" * order
 
 
-def check_names(plan: Plan, reserved: frozenset, language: str) -> None:
+def check_names(plan, reserved: frozenset, language: str) -> None:
     """Autolev printed the user's names as they are: a name the program's own text
     uses (or the language reserves) would change its meaning, so it is refused."""
-    clashes = sorted({c_name(s) for s in plan.inputs + plan.named + plan.specified
-                      if c_name(s).lower() in reserved}
+    symbols = [s for group in ("inputs", "constants", "states", "named", "specified")
+               for s in getattr(plan, group, [])]
+    clashes = sorted({c_name(s) for s in symbols if c_name(s).lower() in reserved}
                      | {e.name for e in plan.encoded if e.name.lower() in reserved})
     if clashes:
         raise AutolevModelError(

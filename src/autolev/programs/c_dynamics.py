@@ -1,0 +1,369 @@
+"""A CODE DYNAMICS() program in C, in the layout of Autolev 4.1's: main reads the
+constants, the initial values and the integration parameters (three groups of the .in
+file), evaluates the constants once and integrates with Kutta-Merson, calling
+output() every PRINTINT steps; eqns1 gives the derivatives (the unknown ones from
+M x = F, solved at each call); kutta, solve, readf, pgets and writef follow."""
+from __future__ import annotations
+
+from .. import __version__
+from ..runtime import symbols as S
+from ..runtime import units
+from ..runtime.numerics.files import header as output_header
+from ..runtime.printer import CodePrinter
+from .c import _READING_AND_WRITING, RESERVED, _by_name, c_string, wrap
+from .plan import (DynamicsPlan, c_name, check_names, element_indices, input_file_name,
+                   marked_statements, program_name, slots_of, unmarked)
+
+_DYNAMICS_RESERVED = RESERVED | frozenset(
+    "var varp boundary kutta solve coef rhs sol iprint printint tinitial tfinal "
+    "integstp abserr relerr _printint".split())
+
+
+class CDynamicsProgram:
+    """The text of one DynamicsPlan's C program."""
+
+    def __init__(self, plan: DynamicsPlan):
+        check_names(plan, _DYNAMICS_RESERVED, "C")
+        self.plan = plan
+        self.name = program_name(plan.filename)
+        self.stem = self.name.rpartition(".")[0] or self.name
+        self.nfiles = len(plan.files)
+        self.n, self.m = len(plan.states), len(plan.unknowns)
+        self.names = {s: c_name(s) for s in plan.constants + plan.states + plan.specified
+                      + plan.named + list(plan.unknowns)}
+        self.names[S.TIME] = "T"
+        for x in plan.states:
+            self.names[S.derivative(x)] = c_name(S.derivative(x))
+        self.z_size = 0
+        self.constant_slots = 0
+        self._kept: dict = {}
+
+    def text(self) -> str:
+        p = self.plan
+        constants, _ = self._section(p.constant_statements, [], 0, persistent=True)
+        for sym, text in self._kept.items():       # eqns1 and output read them there
+            self.names.setdefault(sym, text)
+        rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
+        equations = self._section(p.rhs_statements, rhs, self.constant_slots)
+        shown = [e for cols in p.files for e, _, _ in cols] + \
+            [x for e in p.encoded for x in e.elements]
+        outputs = self._section(p.output_statements, shown, self.constant_slots)
+        lines = (self._top() + self._main(constants) + ["", ""] + self._eqns1(equations)
+                 + ["", ""] + self._output(outputs) + ["", ""] + _KUTTA + ["", ""]
+                 + _SOLVE + ["", ""] + _READING_AND_WRITING)
+        return "\n".join(lines) + "\n"
+
+    # -- the computation in three parts, each with its own z slots ---------------------
+    def _section(self, statements: list, values: list, offset: int,
+                 persistent: bool = False) -> tuple[list, list]:
+        """(statement lines, value texts) of a part of the program: its statements'
+        intermediates take z slots from offset+1 (kept for the whole run when
+        `persistent`: main's constants), then `values` are printed after them ("0" for
+        an exact zero)."""
+        where = dict(self.names)
+        printer = CodePrinter("c", where)
+        assigned = marked_statements(statements, printer, where, c_name)
+        texts = ["0" if v == 0 else printer(v) for v in values]
+        later = list(texts)
+        if persistent:      # every value stays readable: nothing is freed
+            later.append(" ".join(f"@{k}@" for k in range(len(statements))))
+        slots = slots_of(statements, assigned, later)
+        top = max(slots.values(), default=0)
+
+        def slot(text):
+            return unmarked(text, slots, lambda k: f"z[{k + offset}]")
+        lines = []
+        for target, text in assigned:
+            lines += wrap(f"  {slot(target)} = ", slot(text))
+        if persistent:
+            self.constant_slots = top
+            self._kept = {st.defines: (c_name(st.target) if st.target is not None
+                                       else f"z[{slots[k] + offset}]")
+                          for k, st in enumerate(statements) if st.defines is not None}
+        self.z_size = max(self.z_size, top + offset)
+        return lines, [slot(t) for t in texts]
+
+    # -- text -----------------------------------------------------------------------
+    def _top(self) -> list[str]:
+        p = self.plan
+        lines = [f"/* The name of this program is {self.name} */",
+                 f"/* Created by autolev {__version__} in the layout of Autolev 4.1's "
+                 "programs */", "",
+                 "#include <ctype.h>", "#include <math.h>", "#include <stdarg.h>",
+                 "#include <stdio.h>", "#include <stdlib.h>", "#include <string.h>",
+                 "#define  _NAN      9.99999999999999E+305", "",
+                 "void     eqns1     (double T, double VAR[], double VARp[], char boundary);",
+                 "void     output    (FILE *Fptr[], double T);",
+                 "int      kutta     (void(*eqns)(double, double*, double*, char),",
+                 "                    int numy, double y[], double *t, double integstp,",
+                 "                    double abserr, double relerr, char com);",
+                 "int      solve     (int n, double *coef, double *rhs, double *x);",
+                 "void     readf     (FILE *Fp, double *next, ...);",
+                 "void     pgets     (FILE *Fp, double *x);",
+                 "void     writef    (FILE *Fp, char format[], ...);", ""]
+        derivatives = [S.derivative(x) for x in p.states]
+        algebraic = derivatives + [s for s in _by_name(p.named) if s not in derivatives]
+        for group in (p.constants, _by_name(p.specified), p.states, algebraic):
+            if group:
+                lines += wrap("double   ", ",".join(c_name(s) for s in group))
+        arrays = [f"z[{self.z_size + 1}]"]
+        for e in p.encoded:
+            arrays.append(e.name + "".join(f"[{d}]" for d in e.shape))
+        arrays.append(f"Encode[{max(1, len(p.encoded))}]")
+        if self.m > 1:
+            arrays += [f"COEF[{self.m}][{self.m}]", f"RHS[{self.m}]", f"SOL[{self.m}]"]
+        lines += wrap("double   Pi,DEGtoRAD,RADtoDEG,", ",".join(arrays))
+        return lines + [""]
+
+    def _main(self, statements: list) -> list[str]:
+        p = self.plan
+        infile = input_file_name(p.filename)
+        lines = ["/* ................................ MAIN ............................. */",
+                 "int      main         (void)", "{",
+                 f"FILE     *Fptr[{self.nfiles + 1}];",
+                 "int      iprint, printint, iloop;",
+                 "double   T,TINITIAL,TFINAL,INTEGSTP,abserr,relerr,_printint;",
+                 f"double   VAR[{self.n}];", "",
+                 "/* Open input and output files */",
+                 f"for(iloop = 0; iloop <= {self.nfiles}; iloop++)", "  {",
+                 "  char fileName[256];",
+                 f'  if( iloop == 0 ) strcpy(fileName, "{c_string(infile)}");',
+                 f'  else sprintf(fileName, "{c_string(self.stem, fmt=True)}.%d", iloop);',
+                 '  Fptr[iloop] = fopen(fileName, iloop ? "w" : "r");',
+                 "  if( Fptr[iloop] == NULL )",
+                 '    {printf("Error: unable to open file %s\\n", fileName);  exit(0);}',
+                 "  }", "",
+                 "/* Read top of input file */",
+                 "for(iloop = 0; iloop < 6; iloop++) pgets(Fptr[0], NULL);", "",
+                 "/* Read values of constants from input file */"]
+        if p.constants:
+            lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in p.constants),
+                          ",NULL);")
+        else:
+            lines.append("pgets(Fptr[0], NULL);")
+        lines += ["", "/* Read the initial value of each variable from input file */"]
+        lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in p.states),
+                      ",NULL);")
+        lines += ["", "/* Read integration parameters from input file */",
+                  "readf(Fptr[0],&TINITIAL,&TFINAL,&INTEGSTP,&_printint,&abserr,&relerr,"
+                  "NULL);",
+                  "printint = (int)_printint;", "",
+                  "/* Write heading(s) to output file(s) */"]
+        for k, cols in enumerate(p.files, 1):
+            head = output_header(f"{self.stem}.{k}", [c[1] for c in cols],
+                                 [c[2] for c in cols])
+            for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
+                lines.append(f'fprintf({target}, "{c_string(head, fmt=True)}");')
+        lines += ["", "/* Unit conversions */", "  Pi       = 3.141592653589793;",
+                  "  DEGtoRAD = Pi/180.0;", "  RADtoDEG = 180.0/Pi;"]
+        lines += [f"  {c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
+        lines += ["", "/* Evaluate constants */"] + statements
+        lines += ["", "/* Initialize time, print counter, variables array for integrator */",
+                  "  T      = TINITIAL;", "  iprint = 0;"]
+        lines += [f"  VAR[{k}] = {c_name(x)};" for k, x in enumerate(p.states)]
+        lines += ["", "/* Initalize numerical integrator, with call to eqns1 at T=TINITIAL */",
+                  f"kutta(eqns1, {self.n}, VAR, &T, INTEGSTP, abserr, relerr, 0);", "",
+                  "/* Numerically integrate; print results */",
+                  "while(1)", "  {",
+                  "  if( TFINAL >= TINITIAL && T + 0.01*INTEGSTP >= TFINAL ) iprint = -7;",
+                  "  if( TFINAL <= TINITIAL && T + 0.01*INTEGSTP <= TFINAL ) iprint = -7;",
+                  "  if( iprint <= 0 )", "    {",
+                  "    output(Fptr, T);",
+                  "    if( iprint == -7 ) break;",
+                  "    iprint = printint;", "    }",
+                  f"  if( !kutta(eqns1, {self.n}, VAR, &T, INTEGSTP, abserr, relerr, 2) )",
+                  "    {",
+                  "    output(Fptr, T);",
+                  f"    for(iloop = 0; iloop <= {self.nfiles}; iloop++)",
+                  '      fputs("\\n\\tError: Numerical integration failed to converge\\n",'
+                  " iloop ? Fptr[iloop] : stdout);",
+                  "    break;", "    }",
+                  "  iprint--;", "  }", "",
+                  "/* Inform user of input and output filename(s) */",
+                  f'puts( "\\n Input is in the file {c_string(infile)}" );']
+        if self.nfiles:
+            what = (f"file {self.stem}.1" if self.nfiles == 1 else
+                    f"files {self.stem}.i  (i=1,...,{self.nfiles})")
+            lines.append(f'puts( "\\n Output is in the {c_string(what)}" );')
+        lines += [f"fclose(Fptr[{k}]);" for k in range(self.nfiles + 1)]
+        return lines + ["return 0;", "}"]
+
+    def _eqns1(self, equations) -> list[str]:
+        p = self.plan
+        statements, values = equations
+        lines = ["/* ................................ EQNS1 ............................. */",
+                 "void     eqns1        (double T, double VAR[], double VARp[], char "
+                 "boundary)", "{", "(void)T; (void)boundary;", "",
+                 "/* Update variables after integration step */"]
+        lines += [f"  {c_name(x)} = VAR[{k}];" for k, x in enumerate(p.states)]
+        if p.specified:
+            lines += ["", "/* Quantities to be specified */"]
+            lines += [f"  {c_name(s)} = 0;" for s in p.specified]
+        lines += [""] + statements
+        values = list(values)
+        for x, rate in zip(p.states, p.rates):
+            if rate is not None:
+                lines += wrap(f"  {c_name(S.derivative(x))} = ", values.pop(0))
+        mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
+        if self.m == 1:
+            lines += wrap(f"  {c_name(p.unknowns[0])} = ", f"({forcing[0]})/({mass[0]})")
+        elif self.m > 1:
+            for i in range(self.m):
+                for j in range(self.m):
+                    lines += wrap(f"  COEF[{i}][{j}] = ", mass[i * self.m + j])
+                lines += wrap(f"  RHS[{i}] = ", forcing[i])
+            lines += [f"  if( solve({self.m}, COEF[0], RHS, SOL) )",
+                      '    {printf("\\n The mass matrix is singular at T = %g\\n", T);'
+                      "  exit(1);}"]
+            lines += [f"  {c_name(u)} = SOL[{i}];" for i, u in enumerate(p.unknowns)]
+        lines += ["", "/* Update derivative array prior to integration step */"]
+        lines += [f"  VARp[{k}] = {c_name(S.derivative(x))};"
+                  for k, x in enumerate(p.states)]
+        return lines + ["}"]
+
+    def _output(self, outputs) -> list[str]:
+        p = self.plan
+        statements, values = outputs
+        values = list(values)
+        lines = ["/* ................................ OUTPUT ............................. */",
+                 "void     output (FILE *Fptr[], double T)", "{", "(void)T;"]
+        if not p.files:
+            lines.append("(void)Fptr;")
+        lines += ["", "/* Evaluate output quantities */"] + statements
+        lines += ["", "/* Write output to screen and to output file(s) */"]
+        for k, cols in enumerate(p.files, 1):
+            row = []
+            for _, _, unit in cols:
+                text = values.pop(0)
+                row.append(f"({text})*RADtoDEG" if units.is_degrees(unit) else text)
+            for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
+                lines += wrap(f'  writef({target}, " %- 14.6E", ', ",".join(row), ",_NAN);")
+        for e in p.encoded:
+            for index in element_indices(e.shape):
+                text = values.pop(0)
+                target = e.name + "".join(f"[{i}]" for i in index)
+                lines += [f"  {target} = 0;"] if text == "0" else wrap(f"  {target} = ", text)
+        lines.append("")
+        lines += [f"  Encode[{k}] = 0.0;" for k in range(len(p.encoded))]
+        return lines + ["", "}"]
+
+
+# Autolev's integrator (Kutta-Merson, the error test and step control of its programs:
+# docs/language.md), written for autolev
+_KUTTA = r"""
+/* ................................ KUTTA ............................. */
+/* Kutta-Merson with a variable step (L. Fox, 1962): advances *t by integstp.  com 0:
+ * evaluate the derivatives at the start; 2: a step, the derivatives recomputed at the
+ * start of every internal step.  A step is halved while, for some y, the error
+ * estimate is at least both relerr*|y| and abserr (at most 20 times: then it fails
+ * and returns 0), and doubled when the estimate is 64 times smaller. */
+int      kutta (void(*eqns)(double, double*, double*, char), int numy, double y[],
+                double *t, double integstp, double abserr, double relerr, char com)
+{
+static double f0[100], f1[100], f2[100], y1[100], y2[100];
+static int    numcuts = 20;
+static double hc = 0;
+double        h, h2, h3, h6, h8, tt, tfinal;
+int           i, bad, twice;
+
+if( numy > 100 )
+  {printf("\n kutta: at most 100 states\n");  return 0;}
+if( com == 0 ) { eqns(*t, y, f0, 1);  return 1; }
+if( integstp == 0 ) { printf("\n kutta: the integration step is 0\n");  return 0; }
+if( hc * integstp < 0 ) hc = -hc;
+if( hc == 0 ) hc = integstp;
+h      = hc;
+tt     = *t + h;
+tfinal = *t + integstp;
+*t     = tfinal;
+eqns(tt - h, y, f0, 1);
+while( tt + h != tt )
+  {
+  h2 = h * 0.5;  h3 = h / 3.0;  h6 = h / 6.0;  h8 = h * 0.125;
+  for( i = 0; i < numy; i++ ) y1[i] = y[i] + h3 * f0[i];
+  eqns(tt - 2.0 * h3, y1, f1, 0);
+  for( i = 0; i < numy; i++ ) y1[i] = y[i] + h6 * (f0[i] + f1[i]);
+  eqns(tt - 2.0 * h3, y1, f1, 0);
+  for( i = 0; i < numy; i++ ) y1[i] = y[i] + h8 * (f0[i] + 3.0 * f1[i]);
+  eqns(tt - h2, y1, f2, 0);
+  for( i = 0; i < numy; i++ ) y1[i] = y[i] + h2 * (f0[i] - 3.0 * f1[i] + 4.0 * f2[i]);
+  eqns(tt, y1, f1, 0);
+  for( i = 0; i < numy; i++ ) y2[i] = y[i] + h6 * (f0[i] + 4.0 * f2[i] + f1[i]);
+  bad = 0;  twice = 1;
+  for( i = 0; i < numy; i++ )
+    {
+    double error = fabs(y1[i] - y2[i]) * 0.2, test = fabs(y1[i]) * relerr;
+    if( error >= test && error >= abserr ) bad = 1;
+    if( 64.0 * error > test && 64.0 * error > abserr ) twice = 0;
+    }
+  if( bad )
+    {
+    hc = h = h2;
+    tt -= h2;
+    if( --numcuts >= 0 ) continue;
+    printf("\n THE STEPSIZE HAS BEEN HALVED TOO MANY TIMES; T = %15.8E\n", tt - h);
+    *t = tt - h;
+    eqns(*t, y, f0, 0);
+    return 0;
+    }
+  for( i = 0; i < numy; i++ ) y[i] = y2[i];
+  if( twice && fabs(h + h) <= fabs(integstp) && fabs(tt + h + h) <= fabs(tfinal) )
+    { hc = h = h + h;  numcuts++; }
+  if( tt == tfinal ) { eqns(tfinal, y, f0, 2);  return 1; }
+  tt += h;
+  if( (h > 0 && tt > tfinal - 0.1 * h) || (h < 0 && tt < tfinal - 0.1 * h) )
+    { h = tfinal - (tt - h);  tt = tfinal; }
+  eqns(tt - h, y, f0, 1);
+  }
+printf("\n THE STEPSIZE OF %15.7E IS TOO SMALL RELATIVE TO THE TERMINAL TIME OF\n"
+       " %15.7E.  INTEGRATION HALTED.\n", h, tt);
+return 0;
+}""".splitlines()[1:]
+
+_SOLVE = r"""
+/* ................................ SOLVE ............................. */
+/* coef x = rhs (n by n, row by row) by Gaussian elimination with partial pivoting
+ * (each pivot inverted once); 1 when a pivot is exactly zero.  coef and rhs are
+ * overwritten. */
+int      solve (int n, double *coef, double *rhs, double *x)
+{
+int      i, j, k, p;
+for( k = 0; k < n; k++ )
+  {
+  double big = fabs(coef[k * n + k]), r;
+  p = k;
+  for( i = k + 1; i < n; i++ )
+    if( fabs(coef[i * n + k]) > big ) { big = fabs(coef[i * n + k]);  p = i; }
+  if( big == 0.0 ) return 1;
+  if( p != k )
+    {
+    for( j = 0; j < n; j++ )
+      { double s = coef[k * n + j];  coef[k * n + j] = coef[p * n + j];  coef[p * n + j] = s; }
+    { double s = rhs[k];  rhs[k] = rhs[p];  rhs[p] = s; }
+    }
+  r = 1.0 / coef[k * n + k];
+  x[k] = r;
+  for( i = k + 1; i < n; i++ )
+    {
+    double l = coef[i * n + k] * r;
+    if( l != 0.0 )
+      {
+      for( j = k + 1; j < n; j++ ) coef[i * n + j] -= l * coef[k * n + j];
+      rhs[i] -= l * rhs[k];
+      }
+    }
+  }
+for( i = n - 1; i >= 0; i-- )
+  {
+  double acc = rhs[i], r = x[i];
+  for( j = i + 1; j < n; j++ ) acc -= coef[i * n + j] * x[j];
+  x[i] = acc * r;
+  }
+return 0;
+}""".splitlines()[1:]
+
+
+def write_c_dynamics(plan: DynamicsPlan) -> dict:
+    """{file name: text}: the program and the .in file it reads."""
+    return {plan.filename: CDynamicsProgram(plan).text(),
+            input_file_name(plan.filename): plan.input_text}
