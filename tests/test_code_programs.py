@@ -14,9 +14,10 @@ import pytest
 import autolev
 from autolev.cli import main
 from autolev.runtime.errors import AutolevModelError
+from autolev.loader import load_for_run
 from autolev.programs import program_texts, write_programs
 from autolev.programs.plan import input_file_name, plan_algebraic
-from helpers import CORPUS, EXAMPLES
+from helpers import CORPUS, EXAMPLES, ROOT, SHARED
 from helpers import programs as P
 
 needs_cc = pytest.mark.skipif(P.compiler() is None, reason="no C compiler on this machine")
@@ -427,3 +428,82 @@ def test_a_dynamics_program_reads_constants_initial_values_and_integration_param
     infile = next(t for p, t in texts.items() if p.suffix == ".in")
     # each group ends with the line readf consumes after it (a blank line, then dashes)
     assert infile.count("\n\n") >= 2
+
+
+# -- CODE DYNAMICS in Matlab, against the reference runs of Autolev's programs ------------
+def _truth_matlab_runs():
+    import csv
+    index = SHARED / "truth" / "index.tsv"
+    if not index.exists():
+        return []
+    return [(r["id"], r["run"]) for r in csv.DictReader(open(index), delimiter="\t")
+            if r["kind"] == "m" and r["status"].startswith("ok") and r["run"] != "-"
+            and (SHARED / "truth" / r["id"] / r["run"] / "inputs.txt").exists()]
+
+
+def _table_values(text: str, values: dict) -> str:
+    """The program with the rows of its ReadUserInput table set to `values` (text)."""
+    out, in_table = [], False
+    for line in text.splitlines():
+        if line.startswith("function VAR = ReadUserInput"):
+            in_table = True
+        elif line.startswith("% Unit conversions"):
+            in_table = False
+        m = re.match(r"^(\w+)(\s*=\s*)[^;%]*;(.*)$", line) if in_table else None
+        if m and m.group(1) in values:
+            line = f"{m.group(1)}{m.group(2)}{values[m.group(1)]};{m.group(3)}"
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def _rows(path: Path):
+    return [[float(v) for v in line.split()] for line in path.read_text().splitlines()
+            if line.strip() and not line.startswith("%")]
+
+
+@pytest.mark.corpus
+@needs_octave
+@pytest.mark.parametrize("ident, run", _truth_matlab_runs())
+def test_a_matlab_dynamics_program_writes_the_reference_runs_files(ident, run, tmp_path):
+    """Our .m program, given the input values of the reference run, run under GNU
+    Octave (as the reference runs of Autolev's own programs were) writes their files:
+    the same rows to the printed digits."""
+    sys.path.insert(0, str(ROOT / "bench"))
+    from corpus import corpus_models
+    path = dict(corpus_models(CORPUS)).get(ident)
+    if path is None:
+        pytest.skip(f"{ident}: not in the corpus")
+    model, _ = load_for_run(path)      # statements after the CODE do not matter to it
+    commands = [c for c in model.code_commands
+                if c.kind == "dynamics" and c.filename.lower().endswith(".m")]
+    if not commands:
+        pytest.skip(f"{ident}: no CODE DYNAMICS into a .m file")
+    text = next(iter(program_texts(model, commands[0]).values()))
+    reference = SHARED / "truth" / ident / run
+    values = dict(re.findall(r"^(\w+) = (.*?)\s+%", (reference / "inputs.txt").read_text(),
+                             re.M))
+    stem = Path(commands[0].filename).stem
+    (tmp_path / f"{stem}.m").write_text(_table_values(text, values))
+    done = subprocess.run([P.octave(), "--no-gui", "--quiet", "--no-window-system",
+                           "--eval", stem], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=900)
+    compared = 0
+    written = {p.name.lower(): p for p in tmp_path.glob(f"{stem}.[0-9]*")}
+    # the reference programs' files carry their repository's spelling of the name
+    for ref in sorted(p for p in reference.iterdir() if p.name.lower().startswith(
+            stem.lower() + ".") and p.suffix[1:].isdigit()):
+        ours = written.get(ref.name.lower())
+        assert ours is not None, done.stdout[-500:] + done.stderr[-500:]
+        a, b = _rows(ours), _rows(ref)
+        if len(b[0]) != len(a[0]):
+            continue          # Autolev wrote no columns for an OUTPUT matrix (README)
+        assert len(a) == len(b), ref.name
+        # each column to the printed digits of its largest value, or of a millionth of
+        # the file's largest for a column that is zero up to round-off (bench/truth.py)
+        whole = max(abs(v) for row in b for v in row)
+        for col in range(len(b[0])):
+            scale = max(max(abs(row[col]) for row in b), 1e-6 * whole) or 1.0
+            worst = max(abs(x[col] - y[col]) for x, y in zip(a, b))
+            assert worst <= 1e-6 * scale, f"{ref.name} column {col + 1}: {worst:.3g}"
+        compared += 1
+    assert compared, f"no file compared: {sorted(p.name for p in tmp_path.iterdir())}"

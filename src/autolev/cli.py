@@ -824,7 +824,7 @@ def _add_code(sub) -> None:
         description="Write, for every CODE command of FILE, the program it names, in the "
         "layout of the programs Autolev 4.1 wrote (the same global names, functions and "
         "section comments, reading the same .in file), and the .in file itself.  Written "
-        "now: CODE ALGEBRAIC() into .c and .m files, CODE DYNAMICS() into .c; the others are "
+        "now: CODE ALGEBRAIC() and CODE DYNAMICS() into .c and .m files; the others are "
         "reported and not written.  Folders in a CODE file name are kept under --out; a name "
         "that would leave it is refused.")
     code.add_argument("file", metavar="FILE", help=".al model")

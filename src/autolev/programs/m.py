@@ -11,6 +11,7 @@ import re
 import sympy as sm
 
 from .. import __version__
+from ..runtime import symbols as S
 from ..runtime import units
 from ..runtime.errors import AutolevModelError
 from ..runtime.numerics import codegen
@@ -272,4 +273,230 @@ def write_m(plan: Plan) -> dict:
     return {plan.filename: MProgram(plan).text()}
 
 
-__all__ = ["write_m", "m_string", "MatlabPrinter"]
+
+_DYNAMICS_RESERVED = RESERVED | frozenset(
+    "var varp sys t u coef rhs solutiontoaxequalsb printcounter odematlaboptions "
+    "timeodearray varodearray timeatendofarray tinitial tfinal integstp printint abserr "
+    "relerr mdlderivatives mdloutputs mdlterminate sfunction mdlinitializesizes "
+    "solveordinarydifferentialequations ode45 odeset warning length".split())
+
+_INTEGRATION_ROWS = (("TINITIAL", "Initial Time"), ("TFINAL", "Final Time"),
+                     ("INTEGSTP", "Integration Step"), ("PRINTINT", "Print-Integer"),
+                     ("ABSERR", "Absolute Error"), ("RELERR", "Relative Error"))
+
+
+class MDynamicsProgram(MProgram):
+    """The text of one DynamicsPlan's Matlab program: Autolev's driver loop calling
+    ode45 over every INTEGSTP (as `autolev run` integrates a .m CODE file)."""
+
+    def __init__(self, plan):
+        check_names(plan, _DYNAMICS_RESERVED, "Matlab")
+        self.plan = plan
+        self.name = program_name(plan.filename)
+        self.function = re.split(r"[\\/]", self.name)[-1].rpartition(".")[0]
+        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,62}", self.function):
+            raise AutolevModelError(
+                f"{plan.filename}: {self.function!r} cannot name a Matlab function (a "
+                "letter, then letters, digits or _): rename the CODE file")
+        self.stem = self.name.rpartition(".")[0]
+        self.n, self.m = len(plan.states), len(plan.unknowns)
+        self.names = {s: c_name(s) for s in plan.constants + plan.states + plan.specified
+                      + plan.named + list(plan.unknowns)}
+        self.names[S.TIME] = "T"
+        for x in plan.states:
+            self.names[S.derivative(x)] = c_name(S.derivative(x))
+        self.z_size = 0
+
+    def text(self) -> str:
+        p = self.plan
+        constants, _, kept, offset = self._section(p.constant_statements, [], 0, True)
+        for sym, text in kept.items():
+            self.names.setdefault(sym, text)
+        rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
+        derivatives, values, _, _ = self._section(p.rhs_statements, rhs, offset)
+        shown = [e for cols in p.files for e, _, _ in cols] + \
+            [x for e in p.encoded for x in e.elements]
+        outputs, written, _, _ = self._section(p.output_statements, shown, offset)
+        g = self._globals()
+        lines = [f"function {self.function}", "SolveOrdinaryDifferentialEquations",
+                 f"% File  {self.name}  created by autolev {__version__} in the layout "
+                 "of Autolev 4.1's programs"]
+        lines += self._function("VAR = ReadUserInput", g, self._table() + [
+            "", "% Unit conversions", "Pi       = 3.141592653589793;",
+            "DEGtoRAD = Pi/180.0;", "RADtoDEG = 180.0/Pi;"]
+            + [f"{c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
+            + ["", "% Reserve space and initialize matrices", f"z = zeros({self.z_size},1);",
+               "", "% Evaluate constants"] + constants
+            + ["", "% Set the initial values of the states"]
+            + [f"VAR({k}) = {c_name(x)};" for k, x in enumerate(p.states, 1)])
+        if p.files:
+            lines += self._function("OpenOutputFilesAndWriteHeadings", [], self._headings())
+        lines += ["", "", "", "%" + "=" * 75,
+                  "% Main driver loop for numerical integration of differential equations"]
+        lines += self._function("SolveOrdinaryDifferentialEquations", g, (
+            ["OpenOutputFilesAndWriteHeadings"] if p.files else []) + [
+            "VAR = ReadUserInput;",
+            "OdeMatlabOptions = odeset( 'RelTol',RELERR, 'AbsTol',ABSERR, "
+            "'MaxStep',INTEGSTP );",
+            "T = TINITIAL;", "PrintCounter = 0;", "mdlDerivatives(T,VAR,0);",
+            "while 1,",
+            "  if( TFINAL>=TINITIAL & T+0.01*INTEGSTP>=TFINAL ) PrintCounter = -1; end",
+            "  if( TFINAL<=TINITIAL & T+0.01*INTEGSTP<=TFINAL ) PrintCounter = -1; end",
+            "  if( PrintCounter <= 0.01 ),",
+            "     mdlOutputs(T,VAR,0);",
+            "     if( PrintCounter == -1 ) break; end",
+            "     PrintCounter = PRINTINT;", "  end",
+            "  [TimeOdeArray,VarOdeArray] = ode45( @mdlDerivatives, [T T+INTEGSTP], VAR, "
+            "OdeMatlabOptions, 0 );",
+            "  TimeAtEndOfArray = TimeOdeArray( length(TimeOdeArray) );",
+            "  if( abs(TimeAtEndOfArray - (T+INTEGSTP) ) >= abs(0.001*INTEGSTP) ) "
+            "warning('numerical integration failed'); break;  end",
+            "  T = TimeAtEndOfArray;",
+            "  VAR = VarOdeArray( length(TimeOdeArray), : );",
+            "  PrintCounter = PrintCounter - 1;", "end", "mdlTerminate(T,VAR,0);"])
+        lines += ["", "", "", "%" + "=" * 75,
+                  "% mdlDerivatives: Calculates and returns the derivatives of the "
+                  "continuous states"]
+        lines += self._function("sys = mdlDerivatives(T,VAR,u)", g,
+                                self._derivatives(derivatives, values))
+        lines += ["", "", "", "%" + "=" * 75, "% mdlOutputs: Calculates and return the outputs"]
+        lines += self._function("Output = mdlOutputs(T,VAR,u)", g,
+                                ["% Evaluate output quantities"] + outputs
+                                + self._dynamics_printing(written))
+        lines += self._function("WriteOutput( fileIdentifier, Output )", [], _WRITE_OUTPUT)
+        lines += ["", "", "", "%" + "=" * 75,
+                  "% mdlTerminate: Perform end of simulation tasks and set sys=[]"]
+        lines += self._function("sys = mdlTerminate(T,VAR,u)", [],
+                                self._closing() + ["sys = [];"])
+        return "\n".join(lines) + "\n"
+
+    def _section(self, statements, values, offset, persistent=False):
+        """(statement lines, value texts, {symbol: where its value is}, slots used up
+        to) of one part of the program, its intermediates in z slots from offset+1."""
+        where = dict(self.names)
+        printer = MatlabPrinter(where)
+        assigned = marked_statements(statements, printer, where, c_name)
+        texts = ["0" if v == 0 else printer(v) for v in values]
+        later = list(texts)
+        if persistent:      # main's constants: read by every later part
+            later.append(" ".join(f"@{k}@" for k in range(len(statements))))
+        slots = slots_of(statements, assigned, later)
+        top = max(slots.values(), default=0) + offset
+        self.z_size = max(self.z_size, top)
+
+        def slot(text):
+            return unmarked(text, slots, lambda k: f"z({k + offset})")
+        lines = [f"{slot(t)} = {slot(x)};" for t, x in assigned]
+        kept = {st.defines: (c_name(st.target) if st.target is not None
+                             else f"z({slots[k] + offset})")
+                for k, st in enumerate(statements) if st.defines is not None}
+        return lines, [slot(t) for t in texts], kept, top
+
+    def _globals(self) -> list[str]:
+        p = self.plan
+        derivatives = [S.derivative(x) for x in p.states]
+        algebraic = derivatives + sorted((s for s in p.named if s not in derivatives),
+                                         key=lambda s: (c_name(s).lower(), c_name(s)))
+        groups = [p.constants, p.specified, p.states, algebraic]
+        lines = [f"global   {' '.join(c_name(s) for s in g)};" for g in groups if g]
+        misc = ["DEGtoRAD", "RADtoDEG", "z"] + [e.name for e in p.encoded] + \
+            (["Encode"] if p.encoded else [])
+        return lines + [f"global   {' '.join(misc)};",
+                        "global   TINITIAL TFINAL INTEGSTP PRINTINT ABSERR RELERR;"]
+
+    def _table(self) -> list[str]:
+        p = self.plan
+        rows = [_RULE, f"% {'Quantity':<30}| {'Value':<25}| {'Units':<18}| Description",
+                _RULE.replace("+", "|")]
+        for group, what in ((p.constants, "Constant"), (p.states, "Initial Value")):
+            for s in group:
+                value = p.values[s]
+                rows.append(f"{c_name(s):<32}= {format_value(value.given) + ';':<25}"
+                            f"% {value.unit or 'UNITS':<20}{what}")
+            rows.append("")
+        time_unit = p.time_unit or "UNITS"
+        for key, what in _INTEGRATION_ROWS:
+            given = p.values[key].given
+            text = f" {int(given)}" if key == "PRINTINT" else format_value(given)
+            unit = {"PRINTINT": "Positive Integer", "ABSERR": "", "RELERR": ""}.get(
+                key, time_unit)
+            rows.append(f"{key:<32}= {text + ';':<25}% {unit:<20}{what}")
+        return rows + [_RULE]
+
+    def _derivatives(self, statements, values) -> list[str]:
+        p = self.plan
+        lines = ["% Update variables after integration step"]
+        lines += [f"{c_name(x)} = VAR({k});" for k, x in enumerate(p.states, 1)]
+        if p.specified:
+            lines += ["", "% Quantities to be specified"]
+            lines += [f"{c_name(s)} = 0;" for s in p.specified]
+        lines += [""] + statements
+        values = list(values)
+        for x, rate in zip(p.states, p.rates):
+            if rate is not None:
+                lines.append(f"{c_name(S.derivative(x))} = {values.pop(0)};")
+        mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
+        if self.m:
+            lines.append(f"COEF = zeros({self.m},{self.m});")
+            for i in range(self.m):
+                lines += [f"COEF({i + 1},{j + 1}) = {mass[i * self.m + j]};"
+                          for j in range(self.m)]
+            lines += [f"RHS({i + 1}) = {forcing[i]};" for i in range(self.m)]
+            lines.append("SolutionToAxEqualsB = COEF\\RHS';")
+            lines += ["", "% Update variables after uncoupling equations"]
+            lines += [f"{c_name(u)} = SolutionToAxEqualsB({i});"
+                      for i, u in enumerate(p.unknowns, 1)]
+        lines += ["", "% Update derivative array prior to integration step"]
+        lines += [f"VARp({k}) = {c_name(S.derivative(x))};"
+                  for k, x in enumerate(p.states, 1)]
+        return lines + ["", "sys = VARp';"]
+
+    def _dynamics_printing(self, written: list) -> list[str]:
+        p = self.plan
+        values = list(written)
+        lines, n = [], 0
+        for cols in p.files:
+            row = []
+            for _, _, unit in cols:
+                n += 1
+                text = values.pop(0)
+                text = f"({text})*RADtoDEG" if units.is_degrees(unit) else text
+                row.append(f"Output({n})={text};")
+            lines.append("  ".join(row))
+        if p.files:
+            lines.append("FileIdentifier = fopen('all');")
+            first = 1
+            for k, cols in enumerate(p.files, 1):
+                span = f"Output({first}:{first + len(cols) - 1})"
+                if k == 1:
+                    lines.append(f"WriteOutput( 1,                 {span} );")
+                lines.append(f"WriteOutput( FileIdentifier({k}), {span} );")
+                first += len(cols)
+        else:
+            lines.append("Output = [];")
+        for e in p.encoded:
+            for index in element_indices(e.shape):
+                target = e.name + ("(" + ",".join(str(i + 1) for i in index) + ")"
+                                   if index else "")
+                lines.append(f"{target} = {values.pop(0)};")
+        if p.encoded:
+            lines += [""] + [f"Encode({k}) = 0.0;" for k in range(1, len(p.encoded) + 1)]
+        return lines
+
+
+_WRITE_OUTPUT = [
+    "numberOfOutputQuantities = length( Output );",
+    "if( numberOfOutputQuantities > 0 )",
+    "  for( i = 1 : numberOfOutputQuantities )",
+    "    fprintf( fileIdentifier, ' %- 14.6E', Output(i) );",
+    "  end",
+    "  fprintf( fileIdentifier, '\\n' );",
+    "end"]
+
+
+def write_m_dynamics(plan) -> dict:
+    """{file name: text}: the program (its input values are in its ReadUserInput)."""
+    return {plan.filename: MDynamicsProgram(plan).text()}
+
+
+__all__ = ["write_m", "write_m_dynamics", "m_string", "MatlabPrinter"]

@@ -146,6 +146,7 @@ class DynamicsPlan:
     encoded: list
     named: list
     degree_inputs: list
+    time_unit: str | None = None
 
 
 def plan_dynamics(model, command) -> DynamicsPlan:
@@ -202,7 +203,8 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     return DynamicsPlan("dynamics", command.filename, constants, states, text,
                         dict(values.values), list(system.specified), const_statements,
                         list(system.constant_defs), rhs_statements, rates, mass, forcing,
-                        unknowns, out_statements, out_files, encoded_plan, named, degrees)
+                        unknowns, out_statements, out_files, encoded_plan, named, degrees,
+                        values.unit_of("T"))
 
 
 def _one_lower(d):
