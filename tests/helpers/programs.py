@@ -56,19 +56,34 @@ def driver(arrays: list[tuple[str, tuple]]) -> str:
 def encoded_values(program: Path, in_text: str, in_name: str, arrays, work: Path,
                    flags=("-O0",)) -> dict:
     """{element: value} the program computes from `in_text` (placed where it opens
-    its .in file, `in_name`, relative to the folder it runs in)."""
+    its .in file, `in_name`, relative to the folder it runs in).  The program is
+    compiled once per folder `work` and run in a folder of its own per input."""
+    run = built(program, arrays, work, flags)
+    return run_for(run, in_text, in_name, work / f"run{len(list(work.glob('run*')))}")
+
+
+def built(program: Path, arrays, work: Path, flags=("-O0",)) -> Path:
+    """The program compiled with a driver printing its ENCODE arrays (once)."""
+    exe = work / "program"
+    if exe.exists():
+        return exe
     work.mkdir(parents=True, exist_ok=True)
     shutil.copy(program, work / "program.c")
     (work / "driver.c").write_text(driver(arrays))
-    target = work / in_name
-    target.parent.mkdir(parents=True, exist_ok=True)
-    target.write_text(in_text)
     cc = compiler()
     subprocess.run([cc, *flags, "-w", "-Dmain=autolev_main", "-c", "program.c"], cwd=work,
                    check=True, capture_output=True)
-    subprocess.run([cc, *flags, "-o", "run", "driver.c", "program.o", "-lm"], cwd=work,
-                   check=True, capture_output=True)
-    out = subprocess.run([str(work / "run")], cwd=work, capture_output=True, text=True,
+    subprocess.run([cc, *flags, "-o", "program", "driver.c", "program.o", "-lm"],
+                   cwd=work, check=True, capture_output=True)
+    return exe
+
+
+def run_for(exe: Path, in_text: str, in_name: str, folder: Path) -> dict:
+    """{element: value} printed by the compiled program run in `folder` with its .in."""
+    target = folder / in_name
+    target.parent.mkdir(parents=True, exist_ok=True)
+    target.write_text(in_text)
+    out = subprocess.run([str(exe)], cwd=folder, capture_output=True, text=True,
                          check=True).stdout
     values = {}
     for line in out.splitlines():
@@ -76,7 +91,7 @@ def encoded_values(program: Path, in_text: str, in_name: str, arrays, work: Path
         if m:
             values[m.group(1)] = float(m.group(2))
     if not values:
-        raise AssertionError(f"{program.name} printed no values:\n{out[-500:]}")
+        raise AssertionError(f"{exe} printed no values:\n{out[-500:]}")
     return values
 
 

@@ -84,7 +84,7 @@ class CProgram:
     def text(self) -> str:
         computed, written = self._computation()
         lines = (self._top() + self._main() + ["", ""] + self._eqns1(computed) + ["", ""]
-                 + self._output(written) + ["", ""] + _READING_AND_WRITING)
+                 + self._output(written) + ["", ""] + READING_AND_WRITING)
         return "\n".join(lines) + "\n"
 
     # -- the computation ----------------------------------------------------------------
@@ -126,72 +126,29 @@ class CProgram:
     # -- sections ---------------------------------------------------------------------
     def _top(self) -> list[str]:
         p = self.plan
-        lines = [f"/* The name of this program is {self.name} */",
-                 f"/* Created by autolev {__version__} in the layout of Autolev 4.1's "
-                 "programs */", "",
-                 "#include <ctype.h>", "#include <math.h>", "#include <stdarg.h>",
-                 "#include <stdio.h>", "#include <stdlib.h>", "#include <string.h>",
-                 "#define  _NAN      9.99999999999999E+305", "",
-                 "void     eqns1     (void);",
-                 "void     output    (FILE *Fptr[] );",
-                 "void     readf     (FILE *Fp, double *next, ...);",
-                 "void     pgets     (FILE *Fp, double *x);",
-                 "void     writef    (FILE *Fp, char format[], ...);", ""]
+        lines = banner(self.name) + ["void     eqns1     (void);",
+                                     "void     output    (FILE *Fptr[] );"]
+        lines += READING_PROTOTYPES
         # the inputs in read order; the others sorted by name ignoring case
-        for group in (p.inputs, _by_name(p.specified), _by_name(p.named)):
+        for group in (p.inputs, by_name(p.specified), by_name(p.named)):
             if group:
                 lines += _number_list([c_name(s) for s in group], "double   ")
-        arrays = [f"z[{self.z_size + 1}]"]
-        for e in p.encoded:
-            arrays.append(e.name + "".join(f"[{d}]" for d in e.shape))
-        arrays.append(f"Encode[{max(1, len(p.encoded))}]")
-        # BioMAC's cleaners read the size of z from this line's first 32 characters
-        lines += wrap("double   Pi,DEGtoRAD,RADtoDEG,", ",".join(arrays))
-        return lines + [""]
+        return lines + encoded_declarations(p.encoded, self.z_size) + [""]
 
     def _main(self) -> list[str]:
         p = self.plan
         infile = input_file_name(p.filename)
         lines = ["/* ................................ MAIN ............................. */",
                  "int      main         (void)", "{",
-                 f"FILE     *Fptr[{self.nfiles + 1}];", "int      iloop;", "",
-                 "/* Open input and output files */",
-                 f"for(iloop = 0; iloop <= {self.nfiles}; iloop++)", "  {",
-                 "  char fileName[256];",
-                 f'  if( iloop == 0 ) strcpy(fileName, "{c_string(infile)}");',
-                 f'  else sprintf(fileName, "{c_string(self.stem, fmt=True)}.%d", iloop);',
-                 '  Fptr[iloop] = fopen(fileName, iloop ? "w" : "r");',
-                 "  if( Fptr[iloop] == NULL )",
-                 '    {printf("Error: unable to open file %s\\n", fileName);  exit(0);}',
-                 "  }", "",
-                 "/* Read top of input file */",
-                 "for(iloop = 0; iloop < 6; iloop++) pgets(Fptr[0], NULL);", "",
-                 "/* Read values of constants from input file */"]
+                 f"FILE     *Fptr[{self.nfiles + 1}];", "int      iloop;", ""]
+        lines += opening(infile, self.stem, self.nfiles)
+        lines.append("/* Read values of constants from input file */")
         if p.inputs:
             lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in p.inputs),
                           ",NULL);")
-        lines += ["", "/* Write heading(s) to output file(s) */"]
-        for k, cols in enumerate(p.files, 1):
-            head = output_header(f"{self.stem}.{k}", [c[1] for c in cols],
-                                 [c[2] for c in cols])
-            targets = ["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]
-            for target in targets:
-                lines.append(f'fprintf({target}, "{c_string(head, fmt=True)}");')
-        lines += ["", "/* Unit conversions */",
-                  "  Pi       = 3.141592653589793;",
-                  "  DEGtoRAD = Pi/180.0;",
-                  "  RADtoDEG = 180.0/Pi;"]
-        lines += [f"  {c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
-        lines += ["", "/* Evaluate output quantities */", "eqns1();", "output( Fptr );",
-                  "", "/* Inform user of input and output filename(s) */",
-                  f'puts( "\\n Input is in the file {c_string(infile)}" );']
-        if self.nfiles:
-            what = (f"file {self.stem}.1" if self.nfiles == 1 else
-                    f"files {self.stem}.i  (i=1,...,{self.nfiles})")
-            lines.append(f'puts( "\\n Output is in the {c_string(what)}" );')
-        for k in range(1, self.nfiles + 1):
-            lines.append(f"fclose(Fptr[{k}]);")
-        return lines + ["fclose(Fptr[0]);", "return 0;", "}"]
+        lines += [""] + headings_and_units(self.stem, p.files, p.degree_inputs)
+        lines += ["", "/* Evaluate output quantities */", "eqns1();", "output( Fptr );", ""]
+        return lines + farewell(infile, self.stem, self.nfiles)
 
     def _eqns1(self, computed: list) -> list[str]:
         lines = ["/* ................................ EQNS1 ............................. */",
@@ -211,13 +168,78 @@ class CProgram:
         return lines + ["", "}"]
 
 
-def _by_name(symbols: list) -> list:
+# -- pieces every C program has --------------------------------------------------------
+def banner(name: str) -> list[str]:
+    """The program's first lines: its name, who made it, the headers, _NAN."""
+    return [f"/* The name of this program is {name} */",
+            f"/* Created by autolev {__version__} in the layout of Autolev 4.1's "
+            "programs */", "",
+            "#include <ctype.h>", "#include <math.h>", "#include <stdarg.h>",
+            "#include <stdio.h>", "#include <stdlib.h>", "#include <string.h>",
+            "#define  _NAN      9.99999999999999E+305", ""]
+
+
+READING_PROTOTYPES = ["void     readf     (FILE *Fp, double *next, ...);",
+                      "void     pgets     (FILE *Fp, double *x);",
+                      "void     writef    (FILE *Fp, char format[], ...);", ""]
+
+
+def opening(infile: str, stem: str, nfiles: int) -> list[str]:
+    """main's opening of NAME.in and NAME.1 ... NAME.nfiles, and of the .in file's six
+    heading lines."""
+    return ["/* Open input and output files */",
+            f"for(iloop = 0; iloop <= {nfiles}; iloop++)", "  {",
+            "  char fileName[256];",
+            f'  if( iloop == 0 ) strcpy(fileName, "{c_string(infile)}");',
+            f'  else sprintf(fileName, "{c_string(stem, fmt=True)}.%d", iloop);',
+            '  Fptr[iloop] = fopen(fileName, iloop ? "w" : "r");',
+            "  if( Fptr[iloop] == NULL )",
+            '    {printf("Error: unable to open file %s\\n", fileName);  exit(0);}',
+            "  }", "",
+            "/* Read top of input file */",
+            "for(iloop = 0; iloop < 6; iloop++) pgets(Fptr[0], NULL);", ""]
+
+
+def headings_and_units(stem: str, files: list, degree_inputs: list) -> list[str]:
+    """The headings of the output files (file 1's also on the screen), then the unit
+    conversions of the inputs."""
+    lines = ["/* Write heading(s) to output file(s) */"]
+    for k, cols in enumerate(files, 1):
+        head = output_header(f"{stem}.{k}", [c[1] for c in cols], [c[2] for c in cols])
+        for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
+            lines.append(f'fprintf({target}, "{c_string(head, fmt=True)}");')
+    lines += ["", "/* Unit conversions */", "  Pi       = 3.141592653589793;",
+              "  DEGtoRAD = Pi/180.0;", "  RADtoDEG = 180.0/Pi;"]
+    return lines + [f"  {c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in degree_inputs]
+
+
+def farewell(infile: str, stem: str, nfiles: int) -> list[str]:
+    """main's last lines: where the input and output are, the files closed."""
+    lines = ["/* Inform user of input and output filename(s) */",
+             f'puts( "\\n Input is in the file {c_string(infile)}" );']
+    if nfiles:
+        what = (f"file {stem}.1" if nfiles == 1 else f"files {stem}.i  (i=1,...,{nfiles})")
+        lines.append(f'puts( "\\n Output is in the {c_string(what)}" );')
+    lines += [f"fclose(Fptr[{k}]);" for k in range(nfiles + 1)]
+    return lines + ["return 0;", "}"]
+
+
+def encoded_declarations(encoded: list, z_size: int, extra=()) -> list[str]:
+    """The line of z, the ENCODE arrays and Encode (BioMAC's cleaners read z's size
+    from its first 32 characters)."""
+    arrays = [f"z[{z_size + 1}]"] + [e.name + "".join(f"[{d}]" for d in e.shape)
+                                     for e in encoded]
+    arrays += [f"Encode[{max(1, len(encoded))}]", *extra]
+    return wrap("double   Pi,DEGtoRAD,RADtoDEG,", ",".join(arrays))
+
+
+def by_name(symbols: list) -> list:
     return sorted(symbols, key=lambda s: (c_name(s).lower(), c_name(s)))
 
 
 # the functions every program carries: Autolev's names and behaviour (the value of a
 # line of the .in file starts in its 60th character), written for autolev
-_READING_AND_WRITING = r"""
+READING_AND_WRITING = r"""
 /*................................... READF ................................*/
 void  readf( FILE *Fp, double *next, ... )
 {

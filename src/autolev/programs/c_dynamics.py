@@ -5,12 +5,11 @@ output() every PRINTINT steps; eqns1 gives the derivatives (the unknown ones fro
 M x = F, solved at each call); kutta, solve, readf, pgets and writef follow."""
 from __future__ import annotations
 
-from .. import __version__
 from ..runtime import symbols as S
 from ..runtime import units
-from ..runtime.numerics.files import header as output_header
 from ..runtime.printer import CodePrinter
-from .c import _READING_AND_WRITING, RESERVED, _by_name, c_string, wrap
+from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, by_name, banner,
+                encoded_declarations, farewell, headings_and_units, opening, wrap)
 from .plan import (DynamicsPlan, c_name, check_names, element_indices, input_file_name,
                    marked_statements, program_name, slots_of, unmarked)
 
@@ -50,7 +49,7 @@ class CDynamicsProgram:
         outputs = self._section(p.output_statements, shown, self.constant_slots)
         lines = (self._top() + self._main(constants) + ["", ""] + self._eqns1(equations)
                  + ["", ""] + self._output(outputs) + ["", ""] + _KUTTA + ["", ""]
-                 + _SOLVE + ["", ""] + _READING_AND_WRITING)
+                 + _SOLVE + ["", ""] + READING_AND_WRITING)
         return "\n".join(lines) + "\n"
 
     # -- the computation in three parts, each with its own z slots ---------------------
@@ -86,34 +85,22 @@ class CDynamicsProgram:
     # -- text -----------------------------------------------------------------------
     def _top(self) -> list[str]:
         p = self.plan
-        lines = [f"/* The name of this program is {self.name} */",
-                 f"/* Created by autolev {__version__} in the layout of Autolev 4.1's "
-                 "programs */", "",
-                 "#include <ctype.h>", "#include <math.h>", "#include <stdarg.h>",
-                 "#include <stdio.h>", "#include <stdlib.h>", "#include <string.h>",
-                 "#define  _NAN      9.99999999999999E+305", "",
-                 "void     eqns1     (double T, double VAR[], double VARp[], char boundary);",
-                 "void     output    (FILE *Fptr[], double T);",
-                 "int      kutta     (void(*eqns)(double, double*, double*, char),",
-                 "                    int numy, double y[], double *t, double integstp,",
-                 "                    double abserr, double relerr, char com);",
-                 "int      solve     (int n, double *coef, double *rhs, double *x);",
-                 "void     readf     (FILE *Fp, double *next, ...);",
-                 "void     pgets     (FILE *Fp, double *x);",
-                 "void     writef    (FILE *Fp, char format[], ...);", ""]
+        lines = banner(self.name) + [
+            "void     eqns1     (double T, double VAR[], double VARp[], char boundary);",
+            "void     output    (FILE *Fptr[], double T);",
+            "int      kutta     (void(*eqns)(double, double*, double*, char),",
+            "                    int numy, double y[], double *t, double integstp,",
+            "                    double abserr, double relerr, char com);",
+            "int      solve     (int n, double *coef, double *rhs, double *x);"]
+        lines += READING_PROTOTYPES
         derivatives = [S.derivative(x) for x in p.states]
-        algebraic = derivatives + [s for s in _by_name(p.named) if s not in derivatives]
-        for group in (p.constants, _by_name(p.specified), p.states, algebraic):
+        algebraic = derivatives + [s for s in by_name(p.named) if s not in derivatives]
+        for group in (p.constants, by_name(p.specified), p.states, algebraic):
             if group:
                 lines += wrap("double   ", ",".join(c_name(s) for s in group))
-        arrays = [f"z[{self.z_size + 1}]"]
-        for e in p.encoded:
-            arrays.append(e.name + "".join(f"[{d}]" for d in e.shape))
-        arrays.append(f"Encode[{max(1, len(p.encoded))}]")
-        if self.m > 1:
-            arrays += [f"COEF[{self.m}][{self.m}]", f"RHS[{self.m}]", f"SOL[{self.m}]"]
-        lines += wrap("double   Pi,DEGtoRAD,RADtoDEG,", ",".join(arrays))
-        return lines + [""]
+        solving = ([f"COEF[{self.m}][{self.m}]", f"RHS[{self.m}]", f"SOL[{self.m}]"]
+                   if self.m > 1 else [])
+        return lines + encoded_declarations(p.encoded, self.z_size, solving) + [""]
 
     def _main(self, statements: list) -> list[str]:
         p = self.plan
@@ -123,19 +110,9 @@ class CDynamicsProgram:
                  f"FILE     *Fptr[{self.nfiles + 1}];",
                  "int      iprint, printint, iloop;",
                  "double   T,TINITIAL,TFINAL,INTEGSTP,abserr,relerr,_printint;",
-                 f"double   VAR[{self.n}];", "",
-                 "/* Open input and output files */",
-                 f"for(iloop = 0; iloop <= {self.nfiles}; iloop++)", "  {",
-                 "  char fileName[256];",
-                 f'  if( iloop == 0 ) strcpy(fileName, "{c_string(infile)}");',
-                 f'  else sprintf(fileName, "{c_string(self.stem, fmt=True)}.%d", iloop);',
-                 '  Fptr[iloop] = fopen(fileName, iloop ? "w" : "r");',
-                 "  if( Fptr[iloop] == NULL )",
-                 '    {printf("Error: unable to open file %s\\n", fileName);  exit(0);}',
-                 "  }", "",
-                 "/* Read top of input file */",
-                 "for(iloop = 0; iloop < 6; iloop++) pgets(Fptr[0], NULL);", "",
-                 "/* Read values of constants from input file */"]
+                 f"double   VAR[{self.n}];", ""]
+        lines += opening(infile, self.stem, self.nfiles)
+        lines.append("/* Read values of constants from input file */")
         if p.constants:
             lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in p.constants),
                           ",NULL);")
@@ -147,16 +124,8 @@ class CDynamicsProgram:
         lines += ["", "/* Read integration parameters from input file */",
                   "readf(Fptr[0],&TINITIAL,&TFINAL,&INTEGSTP,&_printint,&abserr,&relerr,"
                   "NULL);",
-                  "printint = (int)_printint;", "",
-                  "/* Write heading(s) to output file(s) */"]
-        for k, cols in enumerate(p.files, 1):
-            head = output_header(f"{self.stem}.{k}", [c[1] for c in cols],
-                                 [c[2] for c in cols])
-            for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
-                lines.append(f'fprintf({target}, "{c_string(head, fmt=True)}");')
-        lines += ["", "/* Unit conversions */", "  Pi       = 3.141592653589793;",
-                  "  DEGtoRAD = Pi/180.0;", "  RADtoDEG = 180.0/Pi;"]
-        lines += [f"  {c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
+                  "printint = (int)_printint;", ""]
+        lines += headings_and_units(self.stem, p.files, p.degree_inputs)
         lines += ["", "/* Evaluate constants */"] + statements
         lines += ["", "/* Initialize time, print counter, variables array for integrator */",
                   "  T      = TINITIAL;", "  iprint = 0;"]
@@ -178,15 +147,8 @@ class CDynamicsProgram:
                   '      fputs("\\n\\tError: Numerical integration failed to converge\\n",'
                   " iloop ? Fptr[iloop] : stdout);",
                   "    break;", "    }",
-                  "  iprint--;", "  }", "",
-                  "/* Inform user of input and output filename(s) */",
-                  f'puts( "\\n Input is in the file {c_string(infile)}" );']
-        if self.nfiles:
-            what = (f"file {self.stem}.1" if self.nfiles == 1 else
-                    f"files {self.stem}.i  (i=1,...,{self.nfiles})")
-            lines.append(f'puts( "\\n Output is in the {c_string(what)}" );')
-        lines += [f"fclose(Fptr[{k}]);" for k in range(self.nfiles + 1)]
-        return lines + ["return 0;", "}"]
+                  "  iprint--;", "  }", ""]
+        return lines + farewell(infile, self.stem, self.nfiles)
 
     def _eqns1(self, equations) -> list[str]:
         p = self.plan

@@ -101,6 +101,17 @@ def m_string(text: str, fmt: bool = False) -> str:
     return "".join(ch if " " <= ch <= "~" else "?" for ch in text.replace("'", "''"))
 
 
+def function_name(filename: str) -> str:
+    """The Matlab function a program file defines: its base name, which must be an
+    identifier (Matlab finds the function by the file's name)."""
+    name = re.split(r"[\\/]", program_name(filename))[-1].rpartition(".")[0]
+    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,62}", name):
+        raise AutolevModelError(
+            f"{filename}: {name!r} cannot name a Matlab function (a letter, then "
+            "letters, digits or _): rename the CODE file")
+    return name
+
+
 class MProgram:
     """The text of one plan's Matlab program."""
 
@@ -108,11 +119,7 @@ class MProgram:
         check_names(plan, RESERVED, "Matlab")
         self.plan = plan
         self.name = program_name(plan.filename)
-        self.function = re.split(r"[\\/]", self.name)[-1].rpartition(".")[0]
-        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,62}", self.function):
-            raise AutolevModelError(
-                f"{plan.filename}: {self.function!r} cannot name a Matlab function (a "
-                "letter, then letters, digits or _): rename the CODE file")
+        self.function = function_name(plan.filename)
         self.stem = self.name.rpartition(".")[0]
         self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named}
         self.printer = MatlabPrinter(self.where)
@@ -293,11 +300,7 @@ class MDynamicsProgram(MProgram):
         check_names(plan, _DYNAMICS_RESERVED, "Matlab")
         self.plan = plan
         self.name = program_name(plan.filename)
-        self.function = re.split(r"[\\/]", self.name)[-1].rpartition(".")[0]
-        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,62}", self.function):
-            raise AutolevModelError(
-                f"{plan.filename}: {self.function!r} cannot name a Matlab function (a "
-                "letter, then letters, digits or _): rename the CODE file")
+        self.function = function_name(plan.filename)
         self.stem = self.name.rpartition(".")[0]
         self.n, self.m = len(plan.states), len(plan.unknowns)
         self.names = {s: c_name(s) for s in plan.constants + plan.states + plan.specified
