@@ -335,6 +335,20 @@ def test_parts_in_constants_alone_are_lifted_out_once_and_give_the_same_values()
     assert "math.cos" not in codegen.python_source(prog)
 
 
+def test_python_programs_give_nan_and_inf_as_c_does_without_a_warning_per_line():
+    import sympy as sm
+    from autolev.runtime.calculus import Definitions
+    x, y = sm.symbols("x y")
+    outputs = [x / y, 1 / y, sm.sqrt(x - 1), x + y]
+    prog = codegen.Program({"v": [x, y]}, outputs, Definitions()).build()
+    fn = codegen.compile_python(prog)[0]
+    out = np.zeros(4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")          # numpy's "invalid value" would raise
+        fn(np.array([0.0, 0.0]), out)
+    assert np.isnan(out[0]) and out[1] == np.inf and np.isnan(out[2]) and out[3] == 0.0
+
+
 def test_generated_code_does_not_depend_on_the_hash_seed():
     code = ("import autolev, warnings; warnings.simplefilter('ignore');"
             f"m = autolev.load({str(EXAMPLES / 'nlink_pendulum.al')!r});"

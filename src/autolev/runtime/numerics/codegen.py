@@ -299,7 +299,10 @@ def python_function(source: str, name: str, n_in: int, code=None):
 
     def call(*arrays):
         try:
-            return fast(*arrays)
+            # Python floats: a division by zero or a domain error raises (numpy
+            # scalars would warn once per line of the program and go on)
+            return fast(*[a.tolist() if isinstance(a, np.ndarray) else a
+                          for a in arrays[:n_in]], arrays[n_in])
         except MATH_ERRORS:
             with np.errstate(all="ignore"):
                 args = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
