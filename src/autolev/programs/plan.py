@@ -213,11 +213,12 @@ def _one_lower(d):
 
 
 def _free(exprs, model) -> set:
-    found: set = set()
-    for e in exprs:
-        found |= sm.sympify(e).free_symbols
-    order = model.defs.evaluation_order(found, set())
-    for s in order:
+    """The symbols the expressions need, through the definitions (walked as a DAG)."""
+    exprs = [sm.sympify(e) for e in exprs]
+    roots = {a for node in codegen.post_order(exprs, set()) for a in node.args
+             if a.is_Symbol} | {e for e in exprs if e.is_Symbol}
+    found = set(roots)
+    for s in model.defs.evaluation_order(roots, set()):
         found |= model.defs.free(s)
     return found
 
