@@ -513,3 +513,11 @@ def test_a_matlab_dynamics_program_writes_the_reference_runs_files(ident, run, t
             assert worst <= 1e-6 * scale, f"{ref.name} column {col + 1}: {worst:.3g}"
         compared += 1
     assert compared, f"no file compared: {sorted(p.name for p in tmp_path.iterdir())}"
+
+
+def test_a_dynamics_program_of_a_model_without_states_is_refused(tmp_path, capsys):
+    path = tmp_path / "arm.al"
+    path.write_text(ARM.replace("CODE ALGEBRAIC() arm_raw.c", "CODE DYNAMICS() arm.c"))
+    assert main(["code", str(path), "--out", str(tmp_path / "out")]) == 1
+    assert "the model has no state to integrate" in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()

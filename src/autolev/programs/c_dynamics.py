@@ -47,8 +47,9 @@ class CDynamicsProgram:
         shown = [e for cols in p.files for e, _, _ in cols] + \
             [x for e in p.encoded for x in e.elements]
         outputs = self._section(p.output_statements, shown, self.constant_slots)
+        kutta = [f"#define  NUMY      {self.n}        /* the states kutta integrates */"]
         lines = (self._top() + self._main(constants) + ["", ""] + self._eqns1(equations)
-                 + ["", ""] + self._output(outputs) + ["", ""] + _KUTTA + ["", ""]
+                 + ["", ""] + self._output(outputs) + ["", ""] + kutta + _KUTTA + ["", ""]
                  + _SOLVE + ["", ""] + READING_AND_WRITING)
         return "\n".join(lines) + "\n"
 
@@ -222,14 +223,14 @@ _KUTTA = r"""
 int      kutta (void(*eqns)(double, double*, double*, char), int numy, double y[],
                 double *t, double integstp, double abserr, double relerr, char com)
 {
-static double f0[100], f1[100], f2[100], y1[100], y2[100];
+static double f0[NUMY], f1[NUMY], f2[NUMY], y1[NUMY], y2[NUMY];
 static int    numcuts = 20;
 static double hc = 0;
 double        h, h2, h3, h6, h8, tt, tfinal;
 int           i, bad, twice;
 
-if( numy > 100 )
-  {printf("\n kutta: at most 100 states\n");  return 0;}
+if( numy > NUMY )
+  {printf("\n kutta: at most %d states\n", NUMY);  return 0;}
 if( com == 0 ) { eqns(*t, y, f0, 1);  return 1; }
 if( integstp == 0 ) { printf("\n kutta: the integration step is 0\n");  return 0; }
 if( hc * integstp < 0 ) hc = -hc;

@@ -160,8 +160,9 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     with defs.as_of(command.definitions):
         system = NumericSystem(model, files, encoded, integrate=True, zero=command.zero,
                                compile_functions=False)
-        if system.locked or system.implicit_unknowns and not system.nstate:
-            raise AutolevModelError("CODE DYNAMICS: nothing to integrate")
+        if not system.nstate:
+            raise AutolevModelError("CODE DYNAMICS: the model has no state to integrate "
+                                    "(no speeds or variables with derivatives)")
         fixed = dict(system.aux_fixed)
         constants_prog = codegen.Program({"c": list(system.params)},
                                          list(system.constant_defs), defs).build(
