@@ -137,17 +137,23 @@ print(json.dumps({
 """
 
 
-def run_child(path: Path, infile, cache: str, limit: float) -> dict | str:
+def _child(code: str, args: list, cache: str, limit: float) -> dict | str:
+    """The JSON a fresh Python running `code` prints last, with the model cache on
+    and its folder `cache`; or why there is none."""
     env = dict(os.environ, AUTOLEV_CACHE=cache, PYTHONPATH=str(ROOT / "src"))
     env.pop("AUTOLEV_NO_MODEL_CACHE", None)
     try:
-        r = subprocess.run([sys.executable, "-c", RUN_CHILD, str(path), str(infile or "")],
+        r = subprocess.run([sys.executable, "-c", code, *map(str, args)],
                            capture_output=True, text=True, timeout=limit, env=env)
     except subprocess.TimeoutExpired:
         return f"> {limit:.0f} s"
     if r.returncode != 0:
         return "failed: " + (r.stderr.strip().splitlines() or ["?"])[-1][:70]
     return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+def run_child(path: Path, infile, cache: str, limit: float) -> dict | str:
+    return _child(RUN_CHILD, [path, infile or ""], cache, limit)
 
 
 # -- the values both programs read ---------------------------------------------------
@@ -242,16 +248,7 @@ print(json.dumps({"us": us_per_call(whole_call, a), "us_state": us_per_call(stat
 
 
 def ours_per_eval(path: Path, infile, cache: str, limit: float) -> dict | str:
-    env = dict(os.environ, AUTOLEV_CACHE=cache, PYTHONPATH=str(ROOT / "src"))
-    try:
-        r = subprocess.run([sys.executable, "-c", PER_EVAL_CHILD, str(path),
-                            str(infile or ""), str(ROOT / "bench")],
-                           capture_output=True, text=True, timeout=limit, env=env)
-    except subprocess.TimeoutExpired:
-        return f"> {limit:.0f} s"
-    if r.returncode != 0:
-        return "failed: " + (r.stderr.strip().splitlines() or ["?"])[-1][:70]
-    return json.loads(r.stdout.strip().splitlines()[-1])
+    return _child(PER_EVAL_CHILD, [path, infile or "", ROOT / "bench"], cache, limit)
 
 
 # -- Autolev's ------------------------------------------------------------------------

@@ -343,10 +343,7 @@ def test_a_matlab_program_gives_the_values_derived_by_hand(tmp_path):
     model = model_from(tmp_path, ARM.replace("arm_raw.c", "arm_raw.m"))
     text = next(iter(program_texts(model, model.code_commands[0]).values()))
     rows = {"L1": 0.7, "L2": 0.4, "Q1": 0.3, "Q2": -1.1}
-    text = "\n".join(re.sub(r"^(\w+)(\s*=\s*)[^;]*;", lambda m: m.group(1) + m.group(2)
-                            + repr(rows[m.group(1)]) + ";", line)
-                     if re.match(r"^(L1|L2|Q1|Q2)\s+=", line) else line
-                     for line in text.splitlines())
+    text = P.with_table_values(text, lambda name: repr(rows[name]) if name in rows else None)
     got = P.octave_encoded(Path("arm_raw.m"), text, ["TIP", "JAC"], tmp_path / "run")
     l1, l2, q1, q2 = 0.7, 0.4, 0.3, -1.1
     # by hand; Matlab's arrays are read column by column
@@ -447,21 +444,6 @@ def _truth_matlab_runs():
             and (SHARED / "truth" / r["id"] / r["run"] / "inputs.txt").exists()]
 
 
-def _table_values(text: str, values: dict) -> str:
-    """The program with the rows of its ReadUserInput table set to `values` (text)."""
-    out, in_table = [], False
-    for line in text.splitlines():
-        if line.startswith("function VAR = ReadUserInput"):
-            in_table = True
-        elif line.startswith("% Unit conversions"):
-            in_table = False
-        m = re.match(r"^(\w+)(\s*=\s*)[^;%]*;(.*)$", line) if in_table else None
-        if m and m.group(1) in values:
-            line = f"{m.group(1)}{m.group(2)}{values[m.group(1)]};{m.group(3)}"
-        out.append(line)
-    return "\n".join(out) + "\n"
-
-
 def _rows(path: Path):
     return [[float(v) for v in line.split()] for line in path.read_text().splitlines()
             if line.strip() and not line.startswith("%")]
@@ -489,7 +471,7 @@ def test_a_matlab_dynamics_program_writes_the_reference_runs_files(ident, run, t
     values = dict(re.findall(r"^(\w+) = (.*?)\s+%", (reference / "inputs.txt").read_text(),
                              re.M))
     stem = Path(commands[0].filename).stem
-    (tmp_path / f"{stem}.m").write_text(_table_values(text, values))
+    (tmp_path / f"{stem}.m").write_text(P.with_table_values(text, values.get))
     done = subprocess.run([P.octave(), "--no-gui", "--quiet", "--no-window-system",
                            "--eval", stem], cwd=tmp_path, capture_output=True, text=True,
                           timeout=900)
@@ -521,3 +503,21 @@ def test_a_dynamics_program_of_a_model_without_states_is_refused(tmp_path, capsy
     assert main(["code", str(path), "--out", str(tmp_path / "out")]) == 1
     assert "the model has no state to integrate" in capsys.readouterr().err
     assert not (tmp_path / "out").exists()
+
+
+def test_an_output_column_that_is_exactly_zero_is_passed_to_writef_as_a_double():
+    from autolev.programs.c import output_lines
+    lines = output_lines([[(0, "NOTHING", None), (1, "ONE", None)]], [], ["0", "1.0"])
+    assert lines == ['  writef(stdout, " %- 14.6E", 0.0,1.0,_NAN);',
+                     '  writef(Fptr[1], " %- 14.6E", 0.0,1.0,_NAN);']
+
+
+def test_a_model_autolev_code_built_is_kept_in_the_cache_of_built_models(tmp_path,
+                                                                         monkeypatch):
+    from autolev import modelcache
+    monkeypatch.setenv("AUTOLEV_CACHE", str(tmp_path / "cache"))
+    monkeypatch.delenv(modelcache.DISABLE_VARIABLE, raising=False)
+    path = tmp_path / "arm.al"
+    path.write_text(ARM)
+    assert main(["code", str(path), "--out", str(tmp_path / "out"), "-q"]) == 0
+    assert len(list((tmp_path / "cache").glob(modelcache.PREFIX + "*.pickle"))) == 1

@@ -588,6 +588,7 @@ def cmd_verify(ns: argparse.Namespace) -> int:
 def cmd_code(ns: argparse.Namespace) -> int:
     """Write the programs a model's CODE commands name, in Autolev's layout."""
     from .programs import write_programs
+    from .runtime.numerics.run import keep_built
 
     path = Path(ns.file)
     model = _load_for_run(path)
@@ -605,6 +606,8 @@ def cmd_code(ns: argparse.Namespace) -> int:
         print(f"autolev code: cannot write into {out}: {exc.strerror or exc}",
               file=sys.stderr)
         return 1
+    finally:
+        keep_built(model)        # loaded as for a run: it goes into the cache now
     refused = [w for w in done if w.refused]
     for w in done:
         if w.refused:

@@ -129,20 +129,26 @@ def octave():
     return shutil.which("octave")
 
 
-def matlab_with_values(text: str, draw: int) -> str:
+def with_table_values(text: str, value_of) -> str:
     """A Matlab program in Autolev's layout with each row of its ReadUserInput table
-    (`NAME   =  value;   % ...`) given a value drawn by name."""
+    (`NAME   =  value;   % ...`) given the text value_of(NAME) (None: kept)."""
     out, in_table = [], False
     for line in text.splitlines():
-        if line.startswith("function ReadUserInput"):
+        if line.startswith("function") and "ReadUserInput" in line:
             in_table = True
         elif line.startswith("% Unit conversions"):
             in_table = False
         m = re.match(r"^([A-Za-z]\w*)(\s*=\s*)[^;%]*;(.*)$", line) if in_table else None
-        if m:
-            line = f"{m.group(1)}{m.group(2)}{value_for(m.group(1), draw)!r};{m.group(3)}"
+        value = value_of(m.group(1)) if m else None
+        if value is not None:
+            line = f"{m.group(1)}{m.group(2)}{value};{m.group(3)}"
         out.append(line)
     return "\n".join(out) + "\n"
+
+
+def matlab_with_values(text: str, draw: int) -> str:
+    """The program with every table row given a value drawn by name."""
+    return with_table_values(text, lambda name: repr(value_for(name, draw)))
 
 
 def octave_encoded(program: Path, text: str, arrays: list[str], work: Path) -> dict:

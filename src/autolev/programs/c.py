@@ -10,8 +10,8 @@ from .. import __version__
 from ..runtime import units
 from ..runtime.numerics.files import header as output_header
 from ..runtime.printer import CodePrinter
-from .plan import (Plan, c_name, check_names, element_indices, input_file_name,
-                   marked_statements, program_name, slots_of, unmarked)
+from .plan import (Plan, c_name, check_names, element_indices, input_file_name, printed,
+                   program_name, shown_values)
 
 # C's keywords, the standard names the program calls, and the program's own names
 RESERVED = frozenset("""
@@ -65,10 +65,6 @@ def c_string(text: str, fmt: bool = False) -> str:
     return "".join(out)
 
 
-def _number_list(names: list[str], head: str) -> list[str]:
-    return wrap(head, ",".join(names))
-
-
 class CProgram:
     """The text of one plan's C program."""
 
@@ -78,7 +74,6 @@ class CProgram:
         self.name = program_name(plan.filename)
         self.stem = self.name.rpartition(".")[0] or self.name
         self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named}
-        self.printer = CodePrinter("c", self.where)
         self.nfiles = len(plan.files)
 
     def text(self) -> str:
@@ -90,38 +85,13 @@ class CProgram:
     # -- the computation ----------------------------------------------------------------
     def _computation(self) -> tuple[list, list]:
         """(eqns1's statements, output()'s) as lines, intermediates in z slots."""
-        assigned = marked_statements(self.plan.statements, self.printer, self.where, c_name)
-        written = self._written()
-        slots = slots_of(self.plan.statements, assigned, [text for _, _, text in written])
-        self.z_size = max(slots.values(), default=0)
-
-        def slot(text):
-            return unmarked(text, slots, lambda k: f"z[{k}]")
-        computed = []
-        for target, text in assigned:
-            computed += wrap(f"  {slot(target)} = ", slot(text))
-        lines = []
-        for head, tail, text in written:
-            lines += wrap(head, slot(text), tail) if text != "0" else [head + "0" + tail]
-        return computed, lines
-
-    def _written(self) -> list[tuple[str, str, str]]:
-        """(head, tail, value text) of output()'s lines: the OUTPUT files' rows, then
-        the elements of the ENCODE arrays."""
         p = self.plan
-        out = []
-        for k, cols in enumerate(p.files, 1):
-            values = []
-            for expr, _, unit in cols:
-                text = self.printer(expr)
-                values.append(f"({text})*RADtoDEG" if units.is_degrees(unit) else text)
-            for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
-                out.append((f'  writef({target}, " %- 14.6E", ', ",_NAN);", ",".join(values)))
-        for e in p.encoded:
-            for index, value in zip(element_indices(e.shape), e.elements):
-                target = e.name + "".join(f"[{i}]" for i in index)
-                out.append((f"  {target} = ", ";", "0" if value == 0 else self.printer(value)))
-        return out
+        part = printed(p.statements, shown_values(p), self.where,
+                       lambda where: CodePrinter("c", where), lambda k: f"z[{k}]")
+        self.z_size = part.top
+        computed = [line for target, text in part.statements
+                    for line in wrap(f"  {target} = ", text)]
+        return computed, output_lines(p.files, p.encoded, part.values)
 
     # -- sections ---------------------------------------------------------------------
     def _top(self) -> list[str]:
@@ -132,7 +102,7 @@ class CProgram:
         # the inputs in read order; the others sorted by name ignoring case
         for group in (p.inputs, by_name(p.specified), by_name(p.named)):
             if group:
-                lines += _number_list([c_name(s) for s in group], "double   ")
+                lines += wrap("double   ", ",".join(c_name(s) for s in group))
         return lines + encoded_declarations(p.encoded, self.z_size) + [""]
 
     def _main(self) -> list[str]:
@@ -222,6 +192,28 @@ def farewell(infile: str, stem: str, nfiles: int) -> list[str]:
         lines.append(f'puts( "\\n Output is in the {c_string(what)}" );')
     lines += [f"fclose(Fptr[{k}]);" for k in range(nfiles + 1)]
     return lines + ["return 0;", "}"]
+
+
+def output_lines(files: list, encoded: list, texts: list) -> list[str]:
+    """output()'s lines from the printed texts of shown_values: a writef per OUTPUT
+    file (file 1 also to the screen; DEG columns converted), then the ENCODE elements
+    (an exact zero written `= 0;`, as BioMAC's cleaners count them)."""
+    texts = list(texts)
+    lines = []
+    for k, cols in enumerate(files, 1):
+        row = []
+        for _, _, unit in cols:
+            text = texts.pop(0)
+            text = "0.0" if text == "0" else text      # writef reads doubles
+            row.append(f"({text})*RADtoDEG" if units.is_degrees(unit) else text)
+        for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
+            lines += wrap(f'  writef({target}, " %- 14.6E", ', ",".join(row), ",_NAN);")
+    for e in encoded:
+        for index in element_indices(e.shape):
+            text = texts.pop(0)
+            target = e.name + "".join(f"[{i}]" for i in index)
+            lines += [f"  {target} = 0;"] if text == "0" else wrap(f"  {target} = ", text)
+    return lines
 
 
 def encoded_declarations(encoded: list, z_size: int, extra=()) -> list[str]:

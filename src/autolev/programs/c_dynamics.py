@@ -6,12 +6,12 @@ M x = F, solved at each call); kutta, solve, readf, pgets and writef follow."""
 from __future__ import annotations
 
 from ..runtime import symbols as S
-from ..runtime import units
 from ..runtime.printer import CodePrinter
-from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, by_name, banner,
-                encoded_declarations, farewell, headings_and_units, opening, wrap)
-from .plan import (DynamicsPlan, c_name, check_names, element_indices, input_file_name,
-                   marked_statements, program_name, slots_of, unmarked)
+from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, banner, by_name,
+                encoded_declarations, farewell, headings_and_units, opening, output_lines,
+                wrap)
+from .plan import (DynamicsPlan, c_name, check_names, dynamics_names, input_file_name,
+                   printed, program_name, shown_values)
 
 _DYNAMICS_RESERVED = RESERVED | frozenset(
     "var varp boundary kutta solve coef rhs sol iprint printint tinitial tfinal "
@@ -28,60 +28,37 @@ class CDynamicsProgram:
         self.stem = self.name.rpartition(".")[0] or self.name
         self.nfiles = len(plan.files)
         self.n, self.m = len(plan.states), len(plan.unknowns)
-        self.names = {s: c_name(s) for s in plan.constants + plan.states + plan.specified
-                      + plan.named + list(plan.unknowns)}
-        self.names[S.TIME] = "T"
-        for x in plan.states:
-            self.names[S.derivative(x)] = c_name(S.derivative(x))
+        self.names = dynamics_names(plan)
         self.z_size = 0
-        self.constant_slots = 0
-        self._kept: dict = {}
 
     def text(self) -> str:
         p = self.plan
-        constants, _ = self._section(p.constant_statements, [], 0, persistent=True)
-        for sym, text in self._kept.items():       # eqns1 and output read them there
+        constants = self._part(p.constant_statements, [], 0, persistent=True)
+        for sym, text in constants.kept.items():   # eqns1 and output read them there
             self.names.setdefault(sym, text)
         rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
-        equations = self._section(p.rhs_statements, rhs, self.constant_slots)
-        shown = [e for cols in p.files for e, _, _ in cols] + \
-            [x for e in p.encoded for x in e.elements]
-        outputs = self._section(p.output_statements, shown, self.constant_slots)
+        equations = self._part(p.rhs_statements, rhs, constants.top)
+        outputs = self._part(p.output_statements, shown_values(p), constants.top)
         kutta = [f"#define  NUMY      {self.n}        /* the states kutta integrates */"]
-        lines = (self._top() + self._main(constants) + ["", ""] + self._eqns1(equations)
-                 + ["", ""] + self._output(outputs) + ["", ""] + kutta + _KUTTA + ["", ""]
-                 + _SOLVE + ["", ""] + READING_AND_WRITING)
+        lines = (self._top() + self._main(self._lines(constants)) + ["", ""]
+                 + self._eqns1(self._lines(equations), equations.values) + ["", ""]
+                 + self._output(self._lines(outputs), outputs.values) + ["", ""] + kutta
+                 + _KUTTA + ["", ""] + _SOLVE + ["", ""] + READING_AND_WRITING)
         return "\n".join(lines) + "\n"
 
     # -- the computation in three parts, each with its own z slots ---------------------
-    def _section(self, statements: list, values: list, offset: int,
-                 persistent: bool = False) -> tuple[list, list]:
-        """(statement lines, value texts) of a part of the program: its statements'
-        intermediates take z slots from offset+1 (kept for the whole run when
-        `persistent`: main's constants), then `values` are printed after them ("0" for
-        an exact zero)."""
-        where = dict(self.names)
-        printer = CodePrinter("c", where)
-        assigned = marked_statements(statements, printer, where, c_name)
-        texts = ["0" if v == 0 else printer(v) for v in values]
-        later = list(texts)
-        if persistent:      # every value stays readable: nothing is freed
-            later.append(" ".join(f"@{k}@" for k in range(len(statements))))
-        slots = slots_of(statements, assigned, later)
-        top = max(slots.values(), default=0)
+    def _part(self, statements: list, values: list, offset: int, persistent: bool = False):
+        """A part of the program printed, its intermediates in z slots from
+        offset+1 (kept for the whole run when `persistent`: main's constants)."""
+        part = printed(statements, values, self.names, lambda where: CodePrinter("c", where),
+                       lambda k: f"z[{k}]", offset, persistent)
+        self.z_size = max(self.z_size, part.top)
+        return part
 
-        def slot(text):
-            return unmarked(text, slots, lambda k: f"z[{k + offset}]")
-        lines = []
-        for target, text in assigned:
-            lines += wrap(f"  {slot(target)} = ", slot(text))
-        if persistent:
-            self.constant_slots = top
-            self._kept = {st.defines: (c_name(st.target) if st.target is not None
-                                       else f"z[{slots[k] + offset}]")
-                          for k, st in enumerate(statements) if st.defines is not None}
-        self.z_size = max(self.z_size, top + offset)
-        return lines, [slot(t) for t in texts]
+    @staticmethod
+    def _lines(part) -> list[str]:
+        return [line for target, text in part.statements
+                for line in wrap(f"  {target} = ", text)]
 
     # -- text -----------------------------------------------------------------------
     def _top(self) -> list[str]:
@@ -151,9 +128,8 @@ class CDynamicsProgram:
                   "  iprint--;", "  }", ""]
         return lines + farewell(infile, self.stem, self.nfiles)
 
-    def _eqns1(self, equations) -> list[str]:
+    def _eqns1(self, statements: list, values: list) -> list[str]:
         p = self.plan
-        statements, values = equations
         lines = ["/* ................................ EQNS1 ............................. */",
                  "void     eqns1        (double T, double VAR[], double VARp[], char "
                  "boundary)", "{", "(void)T; (void)boundary;", "",
@@ -184,29 +160,15 @@ class CDynamicsProgram:
                   for k, x in enumerate(p.states)]
         return lines + ["}"]
 
-    def _output(self, outputs) -> list[str]:
+    def _output(self, statements: list, values: list) -> list[str]:
         p = self.plan
-        statements, values = outputs
-        values = list(values)
         lines = ["/* ................................ OUTPUT ............................. */",
                  "void     output (FILE *Fptr[], double T)", "{", "(void)T;"]
         if not p.files:
             lines.append("(void)Fptr;")
         lines += ["", "/* Evaluate output quantities */"] + statements
         lines += ["", "/* Write output to screen and to output file(s) */"]
-        for k, cols in enumerate(p.files, 1):
-            row = []
-            for _, _, unit in cols:
-                text = values.pop(0)
-                row.append(f"({text})*RADtoDEG" if units.is_degrees(unit) else text)
-            for target in (["stdout", f"Fptr[{k}]"] if k == 1 else [f"Fptr[{k}]"]):
-                lines += wrap(f'  writef({target}, " %- 14.6E", ', ",".join(row), ",_NAN);")
-        for e in p.encoded:
-            for index in element_indices(e.shape):
-                text = values.pop(0)
-                target = e.name + "".join(f"[{i}]" for i in index)
-                lines += [f"  {target} = 0;"] if text == "0" else wrap(f"  {target} = ", text)
-        lines.append("")
+        lines += output_lines(p.files, p.encoded, values) + [""]
         lines += [f"  Encode[{k}] = 0.0;" for k in range(len(p.encoded))]
         return lines + ["", "}"]
 

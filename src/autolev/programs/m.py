@@ -18,8 +18,8 @@ from ..runtime.numerics import codegen
 from ..runtime.numerics.files import header as output_header
 from ..runtime.numerics.inputs import format_value
 from ..runtime.printer import _ATOM, _POW, CodePrinter
-from .plan import (Plan, c_name, check_names, element_indices, marked_statements,
-                   program_name, slots_of, unmarked)
+from .plan import (Plan, c_name, check_names, dynamics_names, element_indices, printed,
+                   program_name, shown_values)
 
 RESERVED = frozenset("""
 break case catch classdef continue else elseif end for function global if otherwise
@@ -112,6 +112,72 @@ def function_name(filename: str) -> str:
     return name
 
 
+_WRITE_OUTPUT = [
+    "numberOfOutputQuantities = length( Output );",
+    "if( numberOfOutputQuantities > 0 )",
+    "  for( i = 1 : numberOfOutputQuantities )",
+    "    fprintf( fileIdentifier, ' %- 14.6E', Output(i) );",
+    "  end",
+    "  fprintf( fileIdentifier, '\\n' );",
+    "end"]
+
+
+def _showing(plan, texts: list, blank_line: bool = False) -> list[str]:
+    """The lines that show the quantities (`texts`: the printed shown_values): one
+    line of Output(n)=...; per OUTPUT file, the WriteOutput calls (file 1 also to the
+    screen), then the ENCODE elements (from 1) and the Encode block."""
+    texts = list(texts)
+    lines, n = [], 0
+    for cols in plan.files:
+        row = []
+        for _, _, unit in cols:
+            n += 1
+            text = texts.pop(0)
+            row.append(f"Output({n})="
+                       + (f"({text})*RADtoDEG" if units.is_degrees(unit) else text) + ";")
+        lines.append("  ".join(row))
+    if plan.files:
+        lines.append("FileIdentifier = fopen('all');")
+        first = 1
+        for k, cols in enumerate(plan.files, 1):
+            span = f"Output({first}:{first + len(cols) - 1})"
+            if k == 1:
+                lines.append(f"WriteOutput( 1,                 {span} );")
+            lines.append(f"WriteOutput( FileIdentifier({k}), {span} );")
+            first += len(cols)
+    else:
+        lines.append("Output = [];")
+    if blank_line:
+        lines.append("")
+    for e in plan.encoded:
+        for index in element_indices(e.shape):
+            target = e.name + ("(" + ",".join(str(i + 1) for i in index) + ")"
+                               if index else "")
+            lines.append(f"{target} = {texts.pop(0)};")
+    if plan.encoded:
+        lines += [""] + [f"Encode({k}) = 0.0;" for k in range(1, len(plan.encoded) + 1)]
+    return lines
+
+
+def _depending_on(statements: list, specified: set) -> list[bool]:
+    """Which statements depend on a specified quantity, through the symbols and
+    repeated subexpressions they read (DoCalculations computes those, after the
+    quantities are specified)."""
+    defined_at = {st.defines: k for k, st in enumerate(statements) if st.defines is not None}
+    bound_at = {st.expr: k for k, st in enumerate(statements) if st.holds_call}
+    depends: list = []
+    for k, st in enumerate(statements):
+        nodes = codegen.post_order([st.expr], set())
+        symbols = {a for node in nodes for a in node.args if a.is_Symbol}
+        if st.expr.is_Symbol:
+            symbols.add(st.expr)
+        reads = {defined_at[s] for s in symbols if s in defined_at} | \
+            {bound_at[node] for node in nodes if node in bound_at}
+        depends.append(bool(symbols & specified)
+                       or any(depends[j] for j in reads if j < k))
+    return depends
+
+
 class MProgram:
     """The text of one plan's Matlab program."""
 
@@ -122,25 +188,20 @@ class MProgram:
         self.function = function_name(plan.filename)
         self.stem = self.name.rpartition(".")[0]
         self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named}
-        self.printer = MatlabPrinter(self.where)
 
     def text(self) -> str:
         p = self.plan
-        assigned = marked_statements(p.statements, self.printer, self.where, c_name)
-        outputs, encoded = self._written()
         # ReadUserInput computes what does not depend on the specified quantities,
         # DoCalculations the rest: the slots follow that order
-        later = self._depending_on_specified(assigned)
-        order = [k for k in range(len(assigned)) if not later[k]] + \
-            [k for k in range(len(assigned)) if later[k]]
-        slots = slots_of(p.statements, assigned, [t for _, t in outputs + encoded], order)
-        size = max(slots.values(), default=0)
-
-        def slot(text):
-            return unmarked(text, slots, lambda k: f"z({k})")
-        constants = [f"{slot(t)} = {slot(x)};" for k, (t, x) in enumerate(assigned)
+        later = _depending_on(p.statements, set(p.specified))
+        order = [k for k in range(len(later)) if not later[k]] + \
+            [k for k in range(len(later)) if later[k]]
+        part = printed(p.statements, shown_values(p), self.where, MatlabPrinter,
+                       lambda k: f"z({k})", order=order)
+        size = part.top
+        constants = [f"{t} = {x};" for k, (t, x) in enumerate(part.statements)
                      if not later[k]]
-        calculations = [f"{slot(t)} = {slot(x)};" for k, (t, x) in enumerate(assigned)
+        calculations = [f"{t} = {x};" for k, (t, x) in enumerate(part.statements)
                         if later[k]]
         globals_ = self._globals()
         lines = [f"function {self.function}",
@@ -159,16 +220,9 @@ class MProgram:
         lines += self._function("DoCalculations", globals_, [
             "% Quantities to be specified"] + [f"{c_name(s)} = 0;" for s in p.specified]
             + [""] + calculations)
-        lines += self._function("Output = PrintUserOutput", globals_, self._printing(
-            [f"{h}{slot(t)};" for h, t in outputs], [f"{h}{slot(t)};" for h, t in encoded]))
-        lines += self._function("WriteOutput( fileIdentifier, Output )", [], [
-            "numberOfOutputQuantities = length( Output );",
-            "if( numberOfOutputQuantities > 0 )",
-            "  for( i = 1 : numberOfOutputQuantities )",
-            "    fprintf( fileIdentifier, ' %- 14.6E', Output(i) );",
-            "  end",
-            "  fprintf( fileIdentifier, '\\n' );",
-            "end"])
+        lines += self._function("Output = PrintUserOutput", globals_,
+                                _showing(p, part.values, blank_line=True))
+        lines += self._function("WriteOutput( fileIdentifier, Output )", [], _WRITE_OUTPUT)
         if p.files:
             lines += self._function("OpenOutputFilesAndWriteHeadings", [],
                                     self._headings())
@@ -199,40 +253,6 @@ class MProgram:
                         f"% {unit:<20}Constant")
         return rows + [_RULE]
 
-    def _written(self) -> tuple[list, list]:
-        """([(head, text)] of the OUTPUT values, [(head, text)] of the ENCODE
-        elements)."""
-        p = self.plan
-        outputs, n = [], 0
-        for cols in p.files:
-            for expr, _, unit in cols:
-                n += 1
-                text = self.printer(expr)
-                outputs.append((f"Output({n}) = ",
-                                f"({text})*RADtoDEG" if units.is_degrees(unit) else text))
-        encoded = []
-        for e in p.encoded:
-            for index, value in zip(element_indices(e.shape), e.elements):
-                target = e.name + ("(" + ",".join(str(i + 1) for i in index) + ")"
-                                   if index else "")
-                encoded.append((f"{target} = ", "0" if value == 0 else self.printer(value)))
-        return outputs, encoded
-
-    def _printing(self, outputs: list, encoded: list) -> list[str]:
-        p = self.plan
-        lines = list(outputs) or ["Output = [];"]
-        if p.files:
-            lines += ["", "FileIdentifier = fopen('all');"]
-            first = 1
-            for k, cols in enumerate(p.files, 1):
-                span = f"Output({first}:{first + len(cols) - 1})"
-                if k == 1:
-                    lines.append(f"WriteOutput( 1, {span} );")
-                lines.append(f"WriteOutput( FileIdentifier({k}), {span} );")
-                first += len(cols)
-        lines += [""] + encoded + [""]
-        return lines + [f"Encode({k}) = 0.0;" for k in range(1, len(p.encoded) + 1)]
-
     def _headings(self) -> list[str]:
         lines = []
         for k, cols in enumerate(self.plan.files, 1):
@@ -254,25 +274,6 @@ class MProgram:
         what = (f"file {self.stem}.1" if n == 1 else f"files {self.stem}.i  (i=1,...,{n})")
         return ["fclose( 'all' );",
                 f"fprintf( 1, '\\n Output is in the {m_string(what, fmt=True)}\\n' );"]
-
-    def _depending_on_specified(self, assigned: list) -> list[bool]:
-        """Which statements depend on a specified quantity (DoCalculations computes
-        them, after the quantities are specified)."""
-        plan = self.plan
-        specified = set(plan.specified)
-        named_at = {st.target: k for k, st in enumerate(plan.statements)
-                    if st.target is not None}
-        depends = []
-        for k, st in enumerate(plan.statements):
-            symbols = {a for node in codegen.post_order([st.expr], set())
-                       for a in node.args if a.is_Symbol}
-            if st.expr.is_Symbol:
-                symbols.add(st.expr)
-            reads = {int(m) for m in re.findall(r"@(\d+)@", assigned[k][1])}
-            reads |= {named_at[s] for s in symbols if s in named_at}
-            depends.append(bool(symbols & specified) or any(depends[j] for j in reads
-                                                             if j < k))
-        return depends
 
 
 def write_m(plan: Plan) -> dict:
@@ -303,23 +304,17 @@ class MDynamicsProgram(MProgram):
         self.function = function_name(plan.filename)
         self.stem = self.name.rpartition(".")[0]
         self.n, self.m = len(plan.states), len(plan.unknowns)
-        self.names = {s: c_name(s) for s in plan.constants + plan.states + plan.specified
-                      + plan.named + list(plan.unknowns)}
-        self.names[S.TIME] = "T"
-        for x in plan.states:
-            self.names[S.derivative(x)] = c_name(S.derivative(x))
+        self.names = dynamics_names(plan)
         self.z_size = 0
 
     def text(self) -> str:
         p = self.plan
-        constants, _, kept, offset = self._section(p.constant_statements, [], 0, True)
-        for sym, text in kept.items():
+        constants = self._part(p.constant_statements, [], 0, persistent=True)
+        for sym, text in constants.kept.items():   # mdlDerivatives, mdlOutputs read them
             self.names.setdefault(sym, text)
         rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
-        derivatives, values, _, _ = self._section(p.rhs_statements, rhs, offset)
-        shown = [e for cols in p.files for e, _, _ in cols] + \
-            [x for e in p.encoded for x in e.elements]
-        outputs, written, _, _ = self._section(p.output_statements, shown, offset)
+        equations = self._part(p.rhs_statements, rhs, constants.top)
+        outputs = self._part(p.output_statements, shown_values(p), constants.top)
         g = self._globals()
         lines = [f"function {self.function}", "SolveOrdinaryDifferentialEquations",
                  f"% File  {self.name}  created by autolev {__version__} in the layout "
@@ -329,7 +324,7 @@ class MDynamicsProgram(MProgram):
             "DEGtoRAD = Pi/180.0;", "RADtoDEG = 180.0/Pi;"]
             + [f"{c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
             + ["", "% Reserve space and initialize matrices", f"z = zeros({self.z_size},1);",
-               "", "% Evaluate constants"] + constants
+               "", "% Evaluate constants"] + self._lines(constants)
             + ["", "% Set the initial values of the states"]
             + [f"VAR({k}) = {c_name(x)};" for k, x in enumerate(p.states, 1)])
         if p.files:
@@ -361,11 +356,11 @@ class MDynamicsProgram(MProgram):
                   "% mdlDerivatives: Calculates and returns the derivatives of the "
                   "continuous states"]
         lines += self._function("sys = mdlDerivatives(T,VAR,u)", g,
-                                self._derivatives(derivatives, values))
+                                self._derivatives(self._lines(equations), equations.values))
         lines += ["", "", "", "%" + "=" * 75, "% mdlOutputs: Calculates and return the outputs"]
         lines += self._function("Output = mdlOutputs(T,VAR,u)", g,
-                                ["% Evaluate output quantities"] + outputs
-                                + self._dynamics_printing(written))
+                                ["% Evaluate output quantities"] + self._lines(outputs)
+                                + _showing(p, outputs.values))
         lines += self._function("WriteOutput( fileIdentifier, Output )", [], _WRITE_OUTPUT)
         lines += ["", "", "", "%" + "=" * 75,
                   "% mdlTerminate: Perform end of simulation tasks and set sys=[]"]
@@ -373,27 +368,17 @@ class MDynamicsProgram(MProgram):
                                 self._closing() + ["sys = [];"])
         return "\n".join(lines) + "\n"
 
-    def _section(self, statements, values, offset, persistent=False):
-        """(statement lines, value texts, {symbol: where its value is}, slots used up
-        to) of one part of the program, its intermediates in z slots from offset+1."""
-        where = dict(self.names)
-        printer = MatlabPrinter(where)
-        assigned = marked_statements(statements, printer, where, c_name)
-        texts = ["0" if v == 0 else printer(v) for v in values]
-        later = list(texts)
-        if persistent:      # main's constants: read by every later part
-            later.append(" ".join(f"@{k}@" for k in range(len(statements))))
-        slots = slots_of(statements, assigned, later)
-        top = max(slots.values(), default=0) + offset
-        self.z_size = max(self.z_size, top)
+    def _part(self, statements: list, values: list, offset: int, persistent: bool = False):
+        """A part of the program printed, its intermediates in z slots from
+        offset+1 (kept for the whole run when `persistent`: the constants)."""
+        part = printed(statements, values, self.names, MatlabPrinter, lambda k: f"z({k})",
+                       offset, persistent)
+        self.z_size = max(self.z_size, part.top)
+        return part
 
-        def slot(text):
-            return unmarked(text, slots, lambda k: f"z({k + offset})")
-        lines = [f"{slot(t)} = {slot(x)};" for t, x in assigned]
-        kept = {st.defines: (c_name(st.target) if st.target is not None
-                             else f"z({slots[k] + offset})")
-                for k, st in enumerate(statements) if st.defines is not None}
-        return lines, [slot(t) for t in texts], kept, top
+    @staticmethod
+    def _lines(part) -> list[str]:
+        return [f"{target} = {text};" for target, text in part.statements]
 
     def _globals(self) -> list[str]:
         p = self.plan
@@ -453,48 +438,6 @@ class MDynamicsProgram(MProgram):
         lines += [f"VARp({k}) = {c_name(S.derivative(x))};"
                   for k, x in enumerate(p.states, 1)]
         return lines + ["", "sys = VARp';"]
-
-    def _dynamics_printing(self, written: list) -> list[str]:
-        p = self.plan
-        values = list(written)
-        lines, n = [], 0
-        for cols in p.files:
-            row = []
-            for _, _, unit in cols:
-                n += 1
-                text = values.pop(0)
-                text = f"({text})*RADtoDEG" if units.is_degrees(unit) else text
-                row.append(f"Output({n})={text};")
-            lines.append("  ".join(row))
-        if p.files:
-            lines.append("FileIdentifier = fopen('all');")
-            first = 1
-            for k, cols in enumerate(p.files, 1):
-                span = f"Output({first}:{first + len(cols) - 1})"
-                if k == 1:
-                    lines.append(f"WriteOutput( 1,                 {span} );")
-                lines.append(f"WriteOutput( FileIdentifier({k}), {span} );")
-                first += len(cols)
-        else:
-            lines.append("Output = [];")
-        for e in p.encoded:
-            for index in element_indices(e.shape):
-                target = e.name + ("(" + ",".join(str(i + 1) for i in index) + ")"
-                                   if index else "")
-                lines.append(f"{target} = {values.pop(0)};")
-        if p.encoded:
-            lines += [""] + [f"Encode({k}) = 0.0;" for k in range(1, len(p.encoded) + 1)]
-        return lines
-
-
-_WRITE_OUTPUT = [
-    "numberOfOutputQuantities = length( Output );",
-    "if( numberOfOutputQuantities > 0 )",
-    "  for( i = 1 : numberOfOutputQuantities )",
-    "    fprintf( fileIdentifier, ' %- 14.6E', Output(i) );",
-    "  end",
-    "  fprintf( fileIdentifier, '\\n' );",
-    "end"]
 
 
 def write_m_dynamics(plan) -> dict:

@@ -20,7 +20,7 @@ from ..runtime.errors import AutolevModelError
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs
 from ..runtime.numerics.run import encoded_values, equations_and_unknowns, output_columns
-from ..runtime.numerics.system import NumericSystem, read_order
+from ..runtime.numerics.system import NumericSystem, lower_derivative, read_order
 
 
 @dataclass
@@ -97,19 +97,7 @@ def plan_algebraic(model, command) -> Plan:
                                system.output_exprs, model.defs,
                                dict(system.aux_fixed)).build(shared="all")
     statements, named = statements_of(prog)
-    outputs = list(prog.outputs)
-    out_files = []
-    for cols in system.files:
-        out_files.append([(outputs.pop(0), c.label, c.unit) for c in cols])
-    encoded_plan = []
-    for name, shape in system.encode_shapes:
-        size = 1
-        for d in shape:
-            size *= d
-        elements = [outputs.pop(0) for _ in range(size)]
-        if len(shape) == 2 and shape[1] == 1:
-            shape = (shape[0],)
-        encoded_plan.append(Encoded(name, shape, elements))
+    out_files, encoded_plan = _shown(system, prog.outputs)
     values = Inputs(model, inputs, integration=(), given=command.inputs,
                     unit_table={**model.unit_of, **command.units})
     values.fill_missing(inputs, "0 (no INPUT)")
@@ -179,20 +167,12 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     rhs_statements, rhs_named = statements_of(rhs_prog)
     out_statements, out_named = statements_of(out_prog)
     n, unknowns = system.nstate, list(system.implicit_unknowns)
-    solved = {_one_lower(d) for d in unknowns}
+    solved = {lower_derivative(d) for d in unknowns}
     rhs = list(rhs_prog.outputs)
     rates = [None if x in solved else rhs[k] for k, x in enumerate(system.states)]
     m = len(unknowns)
     mass, forcing = rhs[n:n + m * m], rhs[n + m * m:n + m * m + m]
-    outputs = list(out_prog.outputs)
-    out_files = [[(outputs.pop(0), c.label, c.unit) for c in cols] for cols in system.files]
-    encoded_plan = []
-    for name, shape in system.encode_shapes:
-        size = shape[0] * shape[1] if len(shape) == 2 else 1
-        elements = [outputs.pop(0) for _ in range(size)]
-        if len(shape) == 2 and shape[1] == 1:
-            shape = (shape[0],)
-        encoded_plan.append(Encoded(name, shape, elements))
+    out_files, encoded_plan = _shown(system, out_prog.outputs)
     constants, states = list(system.params), list(system.states)
     values = Inputs(model, constants + states, given=command.inputs,
                     unit_table={**model.unit_of, **command.units})
@@ -208,9 +188,17 @@ def plan_dynamics(model, command) -> DynamicsPlan:
                         values.unit_of("T"))
 
 
-def _one_lower(d):
-    base, k = S.base_and_order(d)
-    return S.derivative(base, k - 1)
+def _shown(system, outputs: list) -> tuple[list, list]:
+    """(per OUTPUT file [(expression, label, unit)], [Encoded]) from a program's
+    outputs, in the order the numeric system lists them (files, then ENCODE)."""
+    outputs = list(outputs)
+    files = [[(outputs.pop(0), c.label, c.unit) for c in cols] for cols in system.files]
+    encoded = []
+    for name, shape in system.encode_shapes:
+        size = shape[0] * shape[1] if len(shape) == 2 else 1
+        elements = [outputs.pop(0) for _ in range(size)]
+        encoded.append(Encoded(name, (shape[0],) if shape[1:] == (1,) else shape, elements))
+    return files, encoded
 
 
 def _free(exprs, model) -> set:
@@ -310,6 +298,61 @@ def slots_of(planned: list, statements: list, later: list, order=None) -> dict:
 def unmarked(text: str, slots: dict, slot_text) -> str:
     """`text` with each mark replaced by slot_text(its slot)."""
     return _MARK.sub(lambda m: slot_text(slots[int(m.group(1))]), text)
+
+
+@dataclass
+class Printed:
+    """One part of a program, printed: its statements as (target, text), the texts of
+    the values printed after them, where each symbol it defines is kept, and the
+    highest z slot it uses."""
+
+    statements: list
+    values: list
+    kept: dict
+    top: int
+
+
+def printed(statements: list, values: list, names: dict, printer_of, slot_text,
+            offset: int = 0, persistent: bool = False, order=None) -> Printed:
+    """`statements` and then `values` (expressions; "0" for an exact zero) printed by
+    printer_of(names), the intermediates in z slots from offset+1 written by
+    slot_text(slot); `persistent`: every value stays readable by later parts (main's
+    constants); `order`: the order the program runs the statements in."""
+    where = dict(names)
+    printer = printer_of(where)
+    assigned = marked_statements(statements, printer, where, c_name)
+    texts = ["0" if v == 0 else printer(v) for v in values]
+    later = list(texts)
+    if persistent:
+        later.append(" ".join(f"@{k}@" for k in range(len(statements))))
+    slots = slots_of(statements, assigned, later, order)
+
+    def put(text):
+        return unmarked(text, slots, lambda k: slot_text(k + offset))
+    kept = {st.defines: (c_name(st.target) if st.target is not None
+                         else slot_text(slots[k] + offset))
+            for k, st in enumerate(statements) if st.defines is not None}
+    return Printed([(put(t), put(x)) for t, x in assigned], [put(t) for t in texts], kept,
+                   max(slots.values(), default=0) + offset)
+
+
+def shown_values(plan) -> list:
+    """The expressions output() shows: the OUTPUT columns, file by file, then the
+    elements of the ENCODE arrays."""
+    return [e for cols in plan.files for e, _, _ in cols] + \
+        [x for e in plan.encoded for x in e.elements]
+
+
+def dynamics_names(plan) -> dict:
+    """{symbol: name} of what a DYNAMICS program keeps in named variables: constants,
+    states and their derivatives, specified quantities, named definitions, the
+    unknowns of M x = F, and T."""
+    names = {s: c_name(s) for s in plan.constants + plan.states + plan.specified
+             + plan.named + list(plan.unknowns)}
+    names[S.TIME] = "T"
+    for x in plan.states:
+        names[S.derivative(x)] = c_name(S.derivative(x))
+    return names
 
 
 def _marks(text: str) -> set:

@@ -220,7 +220,7 @@ class NumericSystem:
                   "s": self.specified}
         fixed = dict(self.aux_fixed)
         self.rhs_function = None
-        self.unknown_positions = [self.states.index(_lower(d))
+        self.unknown_positions = [self.states.index(lower_derivative(d))
                                   for d in self.implicit_unknowns]
         lifted = []
         if self.nstate:
@@ -327,7 +327,7 @@ class NumericSystem:
                 dyn = list(mm) + list(f)
         rates: dict = {}
         for d in unknowns:
-            rates[_lower(d)] = d
+            rates[lower_derivative(d)] = d
         changed = True
         while changed:
             changed = False
@@ -593,7 +593,7 @@ def scaled_condition(mm: np.ndarray) -> np.ndarray | float:
     return float(out[0]) if single else out
 
 
-def _lower(d):
+def lower_derivative(d):
     """Q' for Q'' (the symbol one derivative lower)."""
     base, k = S.base_and_order(d)
     if k == 0:
