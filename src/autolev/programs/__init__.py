@@ -10,6 +10,7 @@ from pathlib import Path, PureWindowsPath
 from ..runtime.errors import AutolevModelError
 from .c import write_c
 from .c_dynamics import write_c_dynamics
+from .f import write_f_dynamics
 from .m import write_m, write_m_dynamics
 from .plan import plan_algebraic, plan_dynamics
 
@@ -19,6 +20,8 @@ WRITERS = {
     ("algebraic", ".m"): (plan_algebraic, write_m),
     ("dynamics", ".c"): (plan_dynamics, write_c_dynamics),
     ("dynamics", ".m"): (plan_dynamics, write_m_dynamics),
+    ("dynamics", ".f"): (plan_dynamics, write_f_dynamics),
+    ("dynamics", ".for"): (plan_dynamics, write_f_dynamics),
 }
 
 
@@ -52,7 +55,8 @@ def program_texts(model, command) -> dict:
         raise AutolevModelError(
             f"CODE {command.kind.upper()} {command.filename}: programs of this kind in "
             f"{extension or 'a file without extension'} are not written yet (autolev "
-            "code writes CODE ALGEBRAIC() programs in .c and .m, CODE DYNAMICS() in .c and .m)")
+            "code writes CODE ALGEBRAIC() programs in .c and .m, CODE DYNAMICS() in .c, .m "
+            "and Fortran .f/.for)")
     plan_of, write = found
     return {relative_path(name): text for name, text in write(plan_of(model, command)).items()}
 

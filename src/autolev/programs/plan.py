@@ -74,6 +74,11 @@ def input_file_name(filename: str) -> str:
     return (stem if dot else name) + ".in"
 
 
+def is_fortran(filename: str) -> bool:
+    """A CODE file Autolev wrote in Fortran (its .in file has the Fortran layout)."""
+    return filename.lower().endswith((".f", ".for"))
+
+
 def plan_algebraic(model, command) -> Plan:
     """The plan of a CODE ALGEBRAIC() program: every ENCODE and OUTPUT quantity
     evaluated once from the values its .in file gives."""
@@ -135,6 +140,7 @@ class DynamicsPlan:
     named: list
     degree_inputs: list
     time_unit: str | None = None
+    options: tuple = ()         # SUBS / NOSUBS
 
 
 def plan_dynamics(model, command) -> DynamicsPlan:
@@ -145,6 +151,9 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     files = output_columns(model, command)
     encoded = encoded_values(model, command)
     defs = model.defs
+    # Autolev 3.2 wrote its Fortran programs' file names in lower case
+    filename = command.filename.lower() if is_fortran(command.filename) else \
+        command.filename
     with defs.as_of(command.definitions):
         system = NumericSystem(model, files, encoded, integrate=True, zero=command.zero,
                                compile_functions=False)
@@ -178,14 +187,15 @@ def plan_dynamics(model, command) -> DynamicsPlan:
                     unit_table={**model.unit_of, **command.units})
     values.fill_missing(constants + states, "0 (no INPUT)")
     kinds = {**{c: "Constant" for c in constants}, **{x: "Initial Value" for x in states}}
-    text = values.file_text(input_file_name(command.filename), kinds)
+    text = values.file_text(input_file_name(filename), kinds,
+                            fortran=is_fortran(filename))
     degrees = [q for q in constants + states if units.is_degrees(values.unit_of(q))]
     named = list(dict.fromkeys(const_named + rhs_named + out_named))
-    return DynamicsPlan("dynamics", command.filename, constants, states, text,
+    return DynamicsPlan("dynamics", filename, constants, states, text,
                         dict(values.values), list(system.specified), const_statements,
                         list(system.constant_defs), rhs_statements, rates, mass, forcing,
                         unknowns, out_statements, out_files, encoded_plan, named, degrees,
-                        values.unit_of("T"))
+                        values.unit_of("T"), tuple(command.options))
 
 
 def _shown(system, outputs: list) -> tuple[list, list]:
@@ -313,14 +323,17 @@ class Printed:
 
 
 def printed(statements: list, values: list, names: dict, printer_of, slot_text,
-            offset: int = 0, persistent: bool = False, order=None) -> Printed:
+            offset: int = 0, persistent: bool = False, order=None,
+            name_of=None) -> Printed:
     """`statements` and then `values` (expressions; "0" for an exact zero) printed by
     printer_of(names), the intermediates in z slots from offset+1 written by
-    slot_text(slot); `persistent`: every value stays readable by later parts (main's
-    constants); `order`: the order the program runs the statements in."""
+    slot_text(slot), the named ones as name_of(symbol); `persistent`: every value
+    stays readable by later parts (main's constants); `order`: the order the program
+    runs the statements in."""
+    name_of = name_of or c_name
     where = dict(names)
     printer = printer_of(where)
-    assigned = marked_statements(statements, printer, where, c_name)
+    assigned = marked_statements(statements, printer, where, name_of)
     texts = ["0" if v == 0 else printer(v) for v in values]
     later = list(texts)
     if persistent:
@@ -329,7 +342,7 @@ def printed(statements: list, values: list, names: dict, printer_of, slot_text,
 
     def put(text):
         return unmarked(text, slots, lambda k: slot_text(k + offset))
-    kept = {st.defines: (c_name(st.target) if st.target is not None
+    kept = {st.defines: (name_of(st.target) if st.target is not None
                          else slot_text(slots[k] + offset))
             for k, st in enumerate(statements) if st.defines is not None}
     return Printed([(put(t), put(x)) for t, x in assigned], [put(t) for t in texts], kept,

@@ -85,10 +85,10 @@ class CodePrinter:
             return self._mul(e)
         if e.is_Pow:
             return self._pow(e)
+        if isinstance(e, sm.Piecewise):          # a Function too, of (value, condition)s
+            return self._piecewise(e)
         if e.is_Function:
             return self._function(e)
-        if isinstance(e, sm.Piecewise):
-            return self._piecewise(e)
         if e.is_Relational:
             return self._relational(e)
         if isinstance(e, (sm.And, sm.Or)):

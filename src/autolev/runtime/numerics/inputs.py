@@ -274,11 +274,14 @@ class Inputs:
                     del self.values[k]
         return notes
 
-    def file_text(self, title: str, kinds: dict) -> str:
-        """The `.in` file of these values, in Autolev's layout; kinds: key -> description
-        ("Constant", ...)."""
+    def file_text(self, title: str, kinds: dict, fortran: bool = False) -> str:
+        """The `.in` file of these values, in Autolev 4.1's layout; kinds: key ->
+        description ("Constant", ...).  `fortran`: in the layout of Autolev 3.2's Fortran
+        programs, whose third line is the message they copy into every output file
+        and whose descriptions end in a colon."""
         lines = [f"File: {title}",
                  "-" * 77,
+                 FORTRAN_MESSAGE if fortran else
                  "Note: Use spaces not tabs while editing this file.",
                  "-" * 58 + "+" + "-" * 18,
                  f"{'Description':<21}{'Quantity':<21}{'Units':<16}| Value",
@@ -299,13 +302,23 @@ class Inputs:
                 unit = (v.unit or "UNITS").upper()
                 text = format_value(v.given)
             name = display_name(key)
+            if fortran:
+                kind, text = kind + ":", " " + text
             lines.append(f"{kind:<21}{name:<21}{unit[:16]:<16}|{text}")
         lines.append("-" * 58 + "+" + "-" * 18)
+        if fortran:
+            lines += ["", "Note: Use spaces not tabs while editing this file; the message "
+                      "line above", "      is printed at the top of every output file."]
         if "INTEGSTP" in self.integration:
             lines += ["", "  INTEGSTP*PRINTINT is the time-interval for writing of output.",
                       "  ABSERR and RELERR are the absolute and relative error tolerances of "
                       "the integrator."]
         return "\n".join(lines) + "\n"
+
+
+# the third line of the .in file of Autolev 3.2's Fortran programs, which they read
+# as a message (99 characters) and print at the top of every output file
+FORTRAN_MESSAGE = "Replace this line with a message to appear on all output files."
 
 
 def some_names(names, shown: int = 8) -> str:

@@ -1,0 +1,639 @@
+"""A CODE DYNAMICS() program in Fortran 77, in the layout of the programs Autolev 3.2
+wrote (the Fortran of the corpus: TomRottier's sprinting and dogtail models): fixed
+form cut at column 72, the quantities shared through COMMON blocks (CONSTNTS, VARIBLES,
+ALGBRAIC, MISCLLNS), a main program that reads the .in file with FORMATs 7000/7010/7011
+and integrates with KUTTA, EQNS1 for the derivatives (COEF x = RHS solved by SOLVE), IO
+for the output rows (1PE14.6E3), and KUTTA and SOLVE themselves unless NOSUBS."""
+from __future__ import annotations
+
+import re
+
+import sympy as sm
+
+from .. import __version__
+from ..runtime import symbols as S
+from ..runtime import units
+from ..runtime.errors import AutolevModelError
+from ..runtime.numerics.files import dir_text
+from ..runtime.printer import _ADD, _ATOM, _MUL, _POW, _UNARY, CodePrinter
+from .plan import (DynamicsPlan, check_names, input_file_name, printed, program_name,
+                   shown_values)
+
+# the names the program itself uses, and the intrinsic functions it may call
+RESERVED = frozenset("""
+t var varp boundary iloop iprint printint message eqns1 io kutta solve pi degtorad
+radtodeg z coef rhs tinitial tfinal integstp abserr relerr sin cos tan asin acos atan
+atan2 sinh cosh tanh asinh acosh atanh exp log sqrt abs aint anint dble floor ceiling
+max min merge sign gamma erf
+""".split())
+
+LONGEST_NAME = 63        # what gfortran accepts (Fortran 77 itself allowed 6)
+FIRST_UNIT = 21          # NAME.1 is unit 21, NAME.2 unit 22, ...; the .in file is 20
+
+_FUNCS = {"sin": "SIN", "cos": "COS", "tan": "TAN", "asin": "ASIN", "acos": "ACOS",
+          "atan": "ATAN", "sinh": "SINH", "cosh": "COSH", "tanh": "TANH",
+          "asinh": "ASINH", "acosh": "ACOSH", "atanh": "ATANH", "exp": "EXP",
+          "log": "LOG", "Abs": "ABS", "atan2": "ATAN2", "erf": "ERF", "gamma": "GAMMA",
+          "Int": "AINT", "Round": "ANINT"}
+_RELATIONS = {"<": ".LT.", "<=": ".LE.", ">": ".GT.", ">=": ".GE.", "==": ".EQ.",
+              "!=": ".NE."}
+
+
+def f_name(sym) -> str:
+    """A quantity's name in Autolev 3.2's Fortran: upper case, X' is Xp, X'' is Xpp."""
+    base, order = S.base_and_order(sym)
+    return base.name.upper() + "p" * order
+
+
+def double(value: float) -> str:
+    """A double precision literal (`0.5D0`, `1.0D-8`): the shortest decimal that reads
+    back as the same double."""
+    text = repr(float(value))
+    mantissa, _, exponent = text.partition("e")
+    if "." not in mantissa:
+        mantissa += ".0"
+    return f"{mantissa}D{int(exponent) if exponent else 0}"
+
+
+class FortranPrinter(CodePrinter):
+    """The C printer's walk, in Fortran: `**`, upper-case intrinsics, D exponents, and
+    a unary minus only where Fortran allows one (never right after an operator)."""
+
+    def __init__(self, names: dict):
+        super().__init__("c", names)
+        self.funcs = _FUNCS
+
+    def _atom(self, e):
+        if e is sm.true or e is sm.false:
+            return (".TRUE." if e is sm.true else ".FALSE."), _ATOM
+        return _binary(*super()._atom(e))
+
+    def _compound(self, e):
+        if isinstance(e, (sm.And, sm.Or)):
+            op = " .AND. " if isinstance(e, sm.And) else " .OR. "
+            return "(" + op.join(self._p(a)[0] for a in e.args) + ")", _ATOM
+        if isinstance(e, sm.Not):
+            return f"(.NOT. {self._p(e.args[0])[0]})", _ATOM
+        return _binary(*super()._compound(e))
+
+    def _number(self, e):
+        if e is sm.nan or e is sm.zoo or e in (sm.oo, -sm.oo):
+            raise AutolevModelError(f"{e} has no literal in Fortran 77: write the "
+                                    "program in C")
+        # integers as Autolev printed them (2*X, X**2) while they fit an INTEGER
+        if e.is_Integer and abs(int(e)) < 2 ** 31:
+            return str(int(e)), (_ADD if e < 0 else _ATOM)
+        return double(float(e)), (_ADD if e < 0 else _ATOM)
+
+    def _real(self, e) -> str:
+        """`e` where Fortran needs a DOUBLE PRECISION value (an intrinsic's argument)."""
+        if e.is_Integer:
+            return double(float(e))
+        return self._p(e)[0]
+
+    def _constant(self, e):
+        if e is sm.E:
+            return "EXP(1.0D0)", _ATOM
+        return double(float(e)), _ATOM
+
+    def _mul(self, e):
+        text, prec = super()._mul(e)
+        return ("1/" + text[4:] if text.startswith("1.0/") else text), prec
+
+    def _pow(self, e):
+        base, exp = e.base, e.exp
+        if exp == sm.Rational(1, 2):
+            return f"SQRT({self._real(base)})", _ATOM
+        if exp == -1:
+            return f"1/{self._wrap(base, _POW)}", _MUL
+        if exp == sm.Rational(-1, 2):
+            return f"1/SQRT({self._real(base)})", _MUL
+        return f"{self._wrap(base, _ATOM)}**{self._wrap(exp, _ATOM)}", _POW
+
+    def _function(self, e):
+        name = type(e).__name__
+        args = [self._real(a) for a in e.args]
+        if name in self.funcs:
+            if name == "log" and len(args) == 2:
+                return f"(LOG({args[0]})/LOG({args[1]}))", _ATOM
+            return f"{self.funcs[name]}({', '.join(args)})", _ATOM
+        if name in ("floor", "ceiling"):     # an INTEGER*8 result, as a double again
+            return f"DBLE({name.upper()}({args[0]}, 8))", _ATOM
+        if name in ("Max", "Min"):
+            return f"{name.upper()}({', '.join(args)})", _ATOM
+        if name == "sign":
+            a = args[0]
+            return (f"(MERGE(1.0D0, 0.0D0, {a} .GT. 0) - MERGE(1.0D0, 0.0D0, {a} .LT. 0))",
+                    _ATOM)
+        if name == "Heaviside":
+            a = args[0]
+            return (f"MERGE(1.0D0, MERGE(0.0D0, 0.5D0, {a} .LT. 0), {a} .GT. 0)", _ATOM)
+        if name == "factorial":
+            return f"GAMMA({args[0]} + 1)", _ATOM
+        if name in ("sec", "csc", "cot"):
+            inner = {"sec": "COS", "csc": "SIN", "cot": "TAN"}[name]
+            return f"(1/{inner}({args[0]}))", _ATOM
+        raise AutolevModelError(f"cannot generate Fortran for the function {name}")
+
+    def _piecewise(self, e):
+        pieces = list(e.args)
+        if pieces[-1][1] is not sm.true:
+            raise AutolevModelError("a piecewise quantity without a value for every case "
+                                    "has no Fortran 77 form: write the program in C")
+        text = self._real(pieces[-1][0])
+        for value, cond in reversed(pieces[:-1]):
+            text = f"MERGE({self._real(value)}, {text}, {self._p(cond)[0]})"
+        return text, _ATOM
+
+    def _relational(self, e):
+        return (f"({self._p(e.lhs)[0]} {_RELATIONS[e.rel_op]} {self._p(e.rhs)[0]})",
+                _ATOM)
+
+
+def _binary(text: str, prec: int) -> tuple[str, int]:
+    # Fortran has no unary minus after an operator (A*-B): a negated term is
+    # parenthesised wherever a sum would be
+    return text, (_ADD if prec == _UNARY else prec)
+
+
+# -- fixed form ---------------------------------------------------------------------------
+def statement(text: str, label: str | int = "") -> list[str]:
+    """A statement in fixed form: its label in columns 1-5, its text from column 7,
+    cut at column 72 (anywhere, as Autolev cut them) and continued on lines with `&`
+    in column 6."""
+    line = f"{str(label):<6}{text}"
+    lines = [line[:72]]
+    for start in range(72, len(line), 66):
+        lines.append("     &" + line[start:start + 66])
+    return lines
+
+
+def comment(text: str) -> list[str]:
+    return ["C**   " + text]
+
+
+def f_string(text: str) -> str:
+    """`text` as a Fortran character constant: quoted, quotes doubled, printable ASCII."""
+    return "'" + "".join(ch if " " <= ch <= "~" else "?" for ch in text).replace(
+        "'", "''") + "'"
+
+
+def _centred(labels: list[str]) -> list[str]:
+    """FORMAT items that print the labels centred in 15-character columns (the first
+    after a blank), as the headings of Autolev's output files."""
+    items, column = [], 0
+    for k, label in enumerate(labels):
+        start = max(column, 1 + 15 * k + max(0, -(-(14 - len(label)) // 2)))
+        if column and start == column:
+            start += 1
+        if start > column:
+            items.append(f"{start - column}X")
+        items.append(f_string(label))
+        column = start + len(label)
+    return items
+
+
+class FortranDynamicsProgram:
+    """The text of one DynamicsPlan's Fortran program."""
+
+    def __init__(self, plan: DynamicsPlan, subroutines: bool):
+        check_names(plan, RESERVED, "Fortran")
+        self.plan = plan
+        self.subroutines = subroutines
+        self.name = program_name(plan.filename)
+        self.stem = self.name.rpartition(".")[0] or self.name
+        self.infile = input_file_name(plan.filename)
+        self.n, self.m = len(plan.states), len(plan.unknowns)
+        if plan.encoded:
+            raise AutolevModelError(
+                f"{plan.filename}: ENCODE in a Fortran program: no program Autolev wrote "
+                "in Fortran with ENCODE is known; write it in C or Matlab")
+        if len(plan.files) > 99 - FIRST_UNIT:
+            raise AutolevModelError(f"{plan.filename}: at most {99 - FIRST_UNIT} OUTPUT "
+                                    "files in a Fortran program (units 21 to 99)")
+        self.names = {s: f_name(s) for s in plan.constants + plan.states + plan.specified
+                      + plan.named + list(plan.unknowns)}
+        for x in plan.states:
+            self.names[S.derivative(x)] = f_name(S.derivative(x))
+        self._check_names()
+        self.names[S.TIME] = "T"
+        self.z_size = 0
+
+    def _check_names(self) -> None:
+        seen: dict = {}
+        for name in self.names.values():
+            if len(name) > LONGEST_NAME:
+                raise AutolevModelError(f"{self.plan.filename}: the name {name} is longer "
+                                        f"than Fortran allows ({LONGEST_NAME} characters)")
+            other = seen.setdefault(name.upper(), name)
+            if other != name:
+                raise AutolevModelError(f"{self.plan.filename}: {other} and {name} are one "
+                                        "name in Fortran, which ignores case")
+
+    def text(self) -> str:
+        p = self.plan
+        constants = self._part(p.constant_statements, [], 0, persistent=True)
+        for sym, text in constants.kept.items():      # EQNS1 and IO read them there
+            self.names.setdefault(sym, text)
+        rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
+        equations = self._part(p.rhs_statements, rhs, constants.top)
+        outputs = self._part(p.output_statements, shown_values(p), constants.top)
+        lines = (self._main(self._lines(constants)) + _BETWEEN
+                 + self._eqns1(self._lines(equations), equations.values) + _BETWEEN
+                 + self._io(self._lines(outputs), outputs.values))
+        if self.subroutines:
+            lines += _BETWEEN + kutta_and_solve(self.n)
+        return "\n".join(lines) + "\n"
+
+    def _part(self, statements: list, values: list, offset: int, persistent: bool = False):
+        part = printed(statements, values, self.names, FortranPrinter, lambda k: f"Z({k})",
+                       offset, persistent, name_of=f_name)
+        self.z_size = max(self.z_size, part.top)
+        return part
+
+    @staticmethod
+    def _lines(part) -> list[str]:
+        return [line for target, text in part.statements
+                for line in statement(f"{target} = {text}")]
+
+    # -- declarations, the same in every program unit -------------------------------------
+    def _commons(self) -> list[str]:
+        p = self.plan
+        # a second-order variable's X' is a state already (in VARIBLES)
+        derivatives = [S.derivative(x) for x in p.states if S.derivative(x) not in p.states]
+        others = sorted((s for s in set(p.named) | set(p.specified) if s not in derivatives),
+                        key=lambda s: f_name(s).upper())
+        # as Autolev's: the quantities, the states' derivatives, other derivatives
+        plain = [s for s in others if not S.base_and_order(s)[1]]
+        higher = [s for s in others if S.base_and_order(s)[1]]
+        misc = ["PI", "DEGtoRAD", "RADtoDEG"]
+        if self.z_size:
+            misc.append(f"Z({self.z_size})")
+        if self.m > 1:
+            misc += [f"COEF({self.m},{self.m})", f"RHS({self.m})"]
+        lines = []
+        for block, group in (("CONSTNTS", [f_name(s) for s in p.constants]),
+                             ("VARIBLES", [f_name(s) for s in p.states]),
+                             ("ALGBRAIC", [f_name(s) for s in plain + derivatives
+                                           + higher]),
+                             ("MISCLLNS", misc)):
+            if group:
+                lines += statement(f"COMMON/{block}/ " + ",".join(group))
+        return lines
+
+    # -- the program units -----------------------------------------------------------------
+    def _main(self, constants: list) -> list[str]:
+        p, nfiles = self.plan, len(self.plan.files)
+        lines = [f"C**   The name of this program is {self.name}",
+                 f"C**   Created by autolev {__version__} in the layout of Autolev 3.2's "
+                 "programs", ""]
+        lines += statement("IMPLICIT         DOUBLE PRECISION (A - Z)")
+        lines += statement("INTEGER          ILOOP, IPRINT, PRINTINT")
+        lines += statement("CHARACTER        MESSAGE(99)")
+        lines += statement("EXTERNAL         EQNS1")
+        lines += statement(f"DIMENSION        VAR({self.n})")
+        lines += self._commons() + [""] + comment("Open input and output files")
+        lines += statement(f"OPEN(UNIT=20, FILE={f_string(self.infile)}, STATUS='OLD')")
+        for k in range(1, nfiles + 1):
+            lines += statement(f"OPEN(UNIT={FIRST_UNIT + k - 1}, "
+                               f"FILE={f_string(f'{self.stem}.{k}')},  STATUS='UNKNOWN')")
+        lines += [""] + comment("Read message from input file")
+        lines += statement("READ(20,7000,END=7100,ERR=7101) (MESSAGE(ILOOP),ILOOP = 1,99)")
+        for what, group, fmt in (("values of constants", p.constants, 7010),
+                                 ("the initial value of each variable", p.states, 7010)):
+            if group:
+                lines += [""] + comment(f"Read {what} from input file")
+                lines += statement(f"READ(20,{fmt},END=7100,ERR=7101) "
+                                   + ",".join(f_name(s) for s in group))
+        lines += [""] + comment("Read integration parameters from input file")
+        lines += statement("READ(20,7011,END=7100,ERR=7101) TINITIAL,TFINAL,INTEGSTP,"
+                           "PRINTINT,ABSERR,RELERR")
+        if nfiles:
+            lines += [""] + comment("Write heading(s) to output file(s)")
+            for k in range(1, nfiles + 1):
+                for unit in (["*, ", f"{FIRST_UNIT},"] if k == 1
+                             else [f"{FIRST_UNIT + k - 1},"]):
+                    lines += statement(f"WRITE({unit}{6020 + k}) (MESSAGE(ILOOP), "
+                                       "ILOOP = 1,99)")
+        lines += [""] + comment("Degree to radian conversion")
+        lines += ["      PI       = 4*ATAN(1.0D0)", "      DEGtoRAD = PI/180.0D0",
+                  "      RADtoDEG = 180.0D0/PI"]
+        for s in p.degree_inputs:
+            lines += statement(f"{f_name(s)} = {f_name(s)}*DEGtoRAD")
+        if constants:
+            lines += [""] + comment("Evaluate constants") + constants
+        lines += [""] + comment("Initialize time, print counter, variables array for "
+                                "integrator")
+        lines += ["      T      = TINITIAL", "      IPRINT = 0"]
+        lines += [f"      VAR({k}) = {f_name(x)}" for k, x in enumerate(p.states, 1)]
+        call = f"CALL KUTTA(EQNS1, {self.n}, VAR, T, INTEGSTP, ABSERR, RELERR, {{}}, *5920)"
+        lines += [""] + comment("Initalize numerical integrator with call to EQNS1 at "
+                                "T=TINITIAL")
+        lines += statement(call.format(0))
+        lines += [""] + comment("Numerically integrate; print results")
+        lines += statement("IF( TFINAL.GE.TINITIAL .AND. T+.01D0*INTEGSTP.GE.TFINAL) "
+                           "IPRINT=-7", 5900)
+        lines += statement("IF( TFINAL.LE.TINITIAL .AND. T+.01D0*INTEGSTP.LE.TFINAL) "
+                           "IPRINT=-7")
+        lines += ["      IF( IPRINT .LE. 0 ) THEN", "        CALL IO(T)",
+                  "        IF( IPRINT .EQ. -7 ) GOTO 5930", "        IPRINT = PRINTINT",
+                  "      ENDIF"]
+        lines += statement(call.format(1))
+        lines += ["      IPRINT = IPRINT - 1", "      GOTO 5900", ""]
+        lines += comment("Print message if numerical integration fails to converge")
+        lines += statement("CALL IO(T)", 5920)
+        lines += [f"      WRITE({u},6997)" for u in
+                  ["*"] + [str(FIRST_UNIT + k) for k in range(nfiles)]]
+        lines += [""] + comment("Inform user of input and output filename(s)")
+        lines += statement("WRITE(*,6999)", 5930) + [""]
+        lines += self._formats()
+        lines += ["      STOP"]
+        lines += statement(f"WRITE(*,*) 'Premature end of file while reading "
+                           f"{f_string(self.infile)[1:-1]}'", 7100)
+        lines += ["      STOP"]
+        lines += statement(f"WRITE(*,*) 'Error while reading a number from "
+                           f"{f_string(self.infile)[1:-1]}'", 7101)
+        return lines + ["      STOP", "      END"]
+
+    def _formats(self) -> list[str]:
+        p, lines = self.plan, []
+        for k, cols in enumerate(p.files, 1):
+            labels = [label[:14].upper() for _, label, _ in cols]
+            brackets = [f"({(unit or 'UNITS').upper()})" for _, _, unit in cols]
+            items = ([f"1X,{f_string(f'FILE: {self.stem}.{k} ')}", "//1X", "'*** '",
+                      "99A1", "///"] + _centred(labels) + ["/"] + _centred(brackets)
+                     + ["/"])
+            lines += statement(f"FORMAT({','.join(items)})", 6020 + k)
+        lines += statement("FORMAT(/7X,'Error: Numerical integration failed to converge',/)",
+                           6997)
+        told = [f"//1X,{f_string('Input is in the file ' + self.infile)}"]
+        if p.files:
+            what = (f"file {self.stem}.1" if len(p.files) == 1
+                    else f"files {self.stem}.i  (i=1,...,{len(p.files)})")
+            told += [f"//1X,{f_string('Output is in the ' + what)}",
+                     "//1X," + f_string("The output quantities and associated files are "
+                                        f"listed in file {self.stem}.dir")]
+        lines += statement(f"FORMAT({','.join(told)},/)", 6999)
+        lines += statement("FORMAT(//,99A1,///)", 7000)
+        lines += statement("FORMAT( 1000(59X,E30.0,/) )", 7010)
+        lines += statement("FORMAT( 3(59X,E30.0,/), 1(59X,I30,/), 2(59X,E30.0,/) )", 7011)
+        return lines
+
+    def _head(self, signature: str, integers: str = "") -> list[str]:
+        lines = ["C" + "*" * 70] + statement(f"SUBROUTINE       {signature}")
+        lines += statement("IMPLICIT         DOUBLE PRECISION (A - Z)")
+        if integers:
+            lines += statement(f"INTEGER          {integers}")
+        return lines
+
+    def _eqns1(self, statements: list, values: list) -> list[str]:
+        p = self.plan
+        lines = self._head("EQNS1(T, VAR, VARp, BOUNDARY)", "BOUNDARY")
+        lines += statement("DIMENSION        VAR(*), VARp(*)") + self._commons() + [""]
+        lines += comment("Update variables after integration step")
+        lines += [f"      {f_name(x)} = VAR({k})" for k, x in enumerate(p.states, 1)]
+        if p.specified:
+            lines += [""] + comment("Quantities which were specified")
+            lines += [f"      {f_name(s)} = 0" for s in p.specified]
+        lines += [""] + statements
+        values = list(values)
+        for x, rate in zip(p.states, p.rates):
+            if rate is not None:
+                lines += statement(f"{f_name(S.derivative(x))} = {values.pop(0)}")
+        mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
+        if self.m == 1:
+            lines += statement(f"{f_name(p.unknowns[0])} = ({forcing[0]})/({mass[0]})")
+        elif self.m > 1:
+            lines.append("")
+            for i in range(self.m):
+                for j in range(self.m):
+                    lines += statement(f"COEF({i + 1},{j + 1}) = {mass[i * self.m + j]}")
+            for i in range(self.m):
+                lines += statement(f"RHS({i + 1}) = {forcing[i]}")
+            lines += statement(f"CALL SOLVE({self.m},COEF,RHS,VARp)")
+            lines += [""] + comment("Update variables after uncoupling equations")
+            lines += [f"      {f_name(u)} = VARp({i})" for i, u in enumerate(p.unknowns, 1)]
+        lines += [""] + comment("Update derivative array prior to integration step")
+        lines += [f"      VARp({k}) = {f_name(S.derivative(x))}"
+                  for k, x in enumerate(p.states, 1)]
+        return lines + ["", "      RETURN", "      END"]
+
+    def _io(self, statements: list, values: list) -> list[str]:
+        p = self.plan
+        lines = self._head("IO(T)") + self._commons() + [""]
+        lines += comment("Evaluate output quantities") + statements
+        if p.files:
+            lines += [""] + comment("Write output to screen and to output file(s)")
+            values = list(values)
+            widest = 99
+            for k, cols in enumerate(p.files, 1):
+                row = []
+                for _, _, unit in cols:
+                    text = values.pop(0)
+                    if re.fullmatch(r"-?[0-9]+", text):    # the WRITE's format is real
+                        text = double(int(text))
+                    row.append(f"({text})*RADtoDEG" if units.is_degrees(unit) else text)
+                widest = max(widest, len(row))
+                for unit in (["*, ", str(FIRST_UNIT) + ","] if k == 1
+                             else [f"{FIRST_UNIT + k - 1},"]):
+                    lines += statement(f"WRITE({unit}6020) " + ",".join(row))
+            lines += [""] + statement(f"FORMAT( {widest}(1X, 1PE14.6E3) )", 6020)
+        return lines + ["", "      RETURN", "      END"]
+
+
+_BETWEEN = ["", ""]
+
+
+def kutta_and_solve(numy: int) -> list[str]:
+    """KUTTA and SOLVE as the program calls them, KUTTA's work arrays sized for `numy`
+    states (a program written with NOSUBS leaves them out; its user links their own)."""
+    return (["C" + "*" * 70] + [line.replace("@NUMY@", str(numy)) for line in _KUTTA]
+            + _BETWEEN + ["C" + "*" * 70] + _SOLVE)
+
+
+# Autolev's integrator as its Fortran programs call it (docs/language.md), written for
+# autolev: COM 1 uses the derivatives of the last stage again at the start of the next
+# internal step, where the C programs evaluate them afresh
+_KUTTA = r"""
+      SUBROUTINE       KUTTA(EQNS, NUMY, Y, T, INTEGSTP, ABSERR, RELERR,
+     &COM, *)
+C**   Kutta-Merson with a variable step (L. Fox, 1962): advances T by
+C**   INTEGSTP.  COM 0: the derivatives at the start only; 1: a step,
+C**   the derivatives of the last stage used at the start of the next
+C**   internal step.  A step is halved while, for some Y, the error
+C**   estimate is at least both RELERR*|Y| and ABSERR (20 times at most,
+C**   then RETURN 1), and doubled when the estimate is 64 times smaller.
+      IMPLICIT         DOUBLE PRECISION (A - Z)
+      INTEGER          NUMY, COM, NUMCUTS, I, MAXY
+      LOGICAL          BAD, TWICE
+      EXTERNAL         EQNS
+      PARAMETER        (MAXY = @NUMY@)
+      DIMENSION        Y(NUMY), F0(MAXY), F1(MAXY), F2(MAXY), Y1(MAXY),
+     &Y2(MAXY)
+      SAVE             HC, NUMCUTS
+      DATA             HC, NUMCUTS / 0.0D0, 20 /
+
+      IF( NUMY .GT. MAXY ) THEN
+        WRITE(*,*) 'KUTTA: at most', MAXY, ' states'
+        RETURN 1
+      ENDIF
+      IF( COM .EQ. 0 ) THEN
+        CALL EQNS(T, Y, F0, 1)
+        RETURN
+      ENDIF
+      IF( INTEGSTP .EQ. 0 ) THEN
+        WRITE(*,*) 'KUTTA: the integration step is 0'
+        RETURN 1
+      ENDIF
+      IF( HC*INTEGSTP .LT. 0 ) HC = -HC
+      IF( HC .EQ. 0 ) HC = INTEGSTP
+      H      = HC
+      TT     = T + H
+      TFINAL = T + INTEGSTP
+      T      = TFINAL
+      CALL EQNS(TT - H, Y, F0, 1)
+
+100   IF( TT + H .EQ. TT ) GOTO 300
+      H2 = H*0.5D0
+      H3 = H/3.0D0
+      H6 = H/6.0D0
+      H8 = H*0.125D0
+      DO 110 I = 1, NUMY
+        Y1(I) = Y(I) + H3*F0(I)
+110   CONTINUE
+      CALL EQNS(TT - 2.0D0*H3, Y1, F1, 0)
+      DO 120 I = 1, NUMY
+        Y1(I) = Y(I) + H6*(F0(I) + F1(I))
+120   CONTINUE
+      CALL EQNS(TT - 2.0D0*H3, Y1, F1, 0)
+      DO 130 I = 1, NUMY
+        Y1(I) = Y(I) + H8*(F0(I) + 3.0D0*F1(I))
+130   CONTINUE
+      CALL EQNS(TT - H2, Y1, F2, 0)
+      DO 140 I = 1, NUMY
+        Y1(I) = Y(I) + H2*(F0(I) - 3.0D0*F1(I) + 4.0D0*F2(I))
+140   CONTINUE
+      CALL EQNS(TT, Y1, F1, 0)
+      BAD   = .FALSE.
+      TWICE = .TRUE.
+      DO 150 I = 1, NUMY
+        Y2(I) = Y(I) + H6*(F0(I) + 4.0D0*F2(I) + F1(I))
+        ERROR = ABS(Y1(I) - Y2(I))*0.2D0
+        TEST  = ABS(Y1(I))*RELERR
+        IF( ERROR .GE. TEST .AND. ERROR .GE. ABSERR ) BAD = .TRUE.
+        IF( 64.0D0*ERROR .GT. TEST .AND. 64.0D0*ERROR .GT. ABSERR )
+     &    TWICE = .FALSE.
+150   CONTINUE
+      IF( BAD ) THEN
+        H  = H2
+        HC = H
+        TT = TT - H2
+        NUMCUTS = NUMCUTS - 1
+        IF( NUMCUTS .GE. 0 ) GOTO 100
+        T = TT - H
+        WRITE(*,2000) T
+        CALL EQNS(T, Y, F0, 0)
+        RETURN 1
+      ENDIF
+      DO 160 I = 1, NUMY
+        Y(I) = Y2(I)
+160   CONTINUE
+      IF( TWICE .AND. ABS(H+H) .LE. ABS(INTEGSTP) .AND.
+     &    ABS(TT+H+H) .LE. ABS(TFINAL) ) THEN
+        H  = H + H
+        HC = H
+        NUMCUTS = NUMCUTS + 1
+      ENDIF
+      IF( TT .EQ. TFINAL ) THEN
+        CALL EQNS(TFINAL, Y, F0, 2)
+        RETURN
+      ENDIF
+      TT = TT + H
+      IF( (H .GT. 0 .AND. TT .GT. TFINAL - 0.1D0*H) .OR.
+     &    (H .LT. 0 .AND. TT .LT. TFINAL - 0.1D0*H) ) THEN
+        H  = TFINAL - (TT - H)
+        TT = TFINAL
+      ENDIF
+      DO 170 I = 1, NUMY
+        F0(I) = F1(I)
+170   CONTINUE
+      GOTO 100
+
+300   WRITE(*,2010) H, TT
+      RETURN 1
+2000  FORMAT(/1X,'THE STEPSIZE HAS BEEN HALVED TOO MANY TIMES; T = ',
+     &1PE15.8)
+2010  FORMAT(/1X,'THE STEPSIZE OF ',1PE15.7,' IS TOO SMALL RELATIVE',
+     &' TO THE TERMINAL TIME OF',/1X,1PE15.7,'.  INTEGRATION HALTED.')
+      END""".splitlines()[1:]
+
+_SOLVE = r"""
+      SUBROUTINE       SOLVE(N, A, B, X)
+C**   A X = B (N by N) by Gaussian elimination with partial pivoting,
+C**   each pivot inverted once; it stops when a pivot is exactly zero.
+C**   A and B are overwritten.
+      IMPLICIT         DOUBLE PRECISION (A - Z)
+      INTEGER          N, I, J, K, P
+      DIMENSION        A(N,N), B(N), X(N)
+
+      DO 140 K = 1, N
+        BIG = ABS(A(K,K))
+        P = K
+        DO 110 I = K+1, N
+          IF( ABS(A(I,K)) .GT. BIG ) THEN
+            BIG = ABS(A(I,K))
+            P = I
+          ENDIF
+110     CONTINUE
+        IF( BIG .EQ. 0 ) THEN
+          WRITE(*,*) 'SOLVE: the coefficient matrix is singular'
+          STOP
+        ENDIF
+        IF( P .NE. K ) THEN
+          DO 120 J = 1, N
+            S      = A(K,J)
+            A(K,J) = A(P,J)
+            A(P,J) = S
+120       CONTINUE
+          S    = B(K)
+          B(K) = B(P)
+          B(P) = S
+        ENDIF
+        R    = 1/A(K,K)
+        X(K) = R
+        DO 130 I = K+1, N
+          FACTOR = A(I,K)*R
+          IF( FACTOR .NE. 0 ) THEN
+            DO 125 J = K+1, N
+              A(I,J) = A(I,J) - FACTOR*A(K,J)
+125         CONTINUE
+            B(I) = B(I) - FACTOR*B(K)
+          ENDIF
+130     CONTINUE
+140   CONTINUE
+      DO 160 I = N, 1, -1
+        ACC = B(I)
+        R   = X(I)
+        DO 150 J = I+1, N
+          ACC = ACC - A(I,J)*X(J)
+150     CONTINUE
+        X(I) = ACC*R
+160   CONTINUE
+      RETURN
+      END""".splitlines()[1:]
+
+
+def dir_file_name(filename: str) -> str:
+    return input_file_name(filename)[:-3] + ".dir"
+
+
+def write_f_dynamics(plan: DynamicsPlan) -> dict:
+    """{file name: text}: the program, the .in file it reads and the .dir file that
+    lists its output files (Autolev wrote it with the program)."""
+    nosubs = "NOSUBS" in {o.upper() for o in plan.options}
+    program = FortranDynamicsProgram(plan, subroutines=not nosubs)
+    text = program.text()
+    labels = [[label[:14].upper() for _, label, _ in cols] for cols in plan.files]
+    stem = program.stem
+    return {plan.filename: text, input_file_name(plan.filename): plan.input_text,
+            dir_file_name(plan.filename): dir_text(stem, program.name, labels)}
