@@ -18,10 +18,17 @@ from .plan import plan_algebraic, plan_dynamics
 WRITERS = {
     ("algebraic", ".c"): (plan_algebraic, write_c),
     ("algebraic", ".m"): (plan_algebraic, write_m),
+    ("nonlinear", ".c"): (plan_algebraic, write_c),
+    ("nonlinear", ".m"): (plan_algebraic, write_m),
     ("dynamics", ".c"): (plan_dynamics, write_c_dynamics),
     ("dynamics", ".m"): (plan_dynamics, write_m_dynamics),
     ("dynamics", ".f"): (plan_dynamics, write_f_dynamics),
     ("dynamics", ".for"): (plan_dynamics, write_f_dynamics),
+    # CODE ODE(EQ, x'', ...): the DYNAMICS program, its derivatives from the equations
+    ("ode", ".c"): (plan_dynamics, write_c_dynamics),
+    ("ode", ".m"): (plan_dynamics, write_m_dynamics),
+    ("ode", ".f"): (plan_dynamics, write_f_dynamics),
+    ("ode", ".for"): (plan_dynamics, write_f_dynamics),
 }
 
 
@@ -55,8 +62,8 @@ def program_texts(model, command) -> dict:
         raise AutolevModelError(
             f"CODE {command.kind.upper()} {command.filename}: programs of this kind in "
             f"{extension or 'a file without extension'} are not written yet (autolev "
-            "code writes CODE ALGEBRAIC() programs in .c and .m, CODE DYNAMICS() in .c, .m "
-            "and Fortran .f/.for)")
+            "code writes CODE ALGEBRAIC and NONLINEAR programs in .c and .m, CODE DYNAMICS "
+            "and ODE in .c, .m and Fortran .f/.for)")
     plan_of, write = found
     return {relative_path(name): text for name, text in write(plan_of(model, command)).items()}
 

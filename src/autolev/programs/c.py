@@ -65,22 +65,36 @@ def c_string(text: str, fmt: bool = False) -> str:
     return "".join(out)
 
 
+# names a program that solves equations or sweeps an input uses besides
+SOLVING_RESERVED = frozenset("coef rhs sol solve abserr relerr iter ipoint converged "
+                             "fmax".split())
+
+
 class CProgram:
     """The text of one plan's C program."""
 
     def __init__(self, plan: Plan):
-        check_names(plan, RESERVED, "C")
+        solving = plan.solving is not None or plan.sweep is not None
+        check_names(plan, RESERVED | (SOLVING_RESERVED if solving else frozenset()), "C")
         self.plan = plan
         self.name = program_name(plan.filename)
         self.stem = self.name.rpartition(".")[0] or self.name
-        self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named}
+        self.unknowns = list(plan.solving.unknowns) if plan.solving else []
+        # the linear equations' unknowns are computed, the nonlinear ones' read as guesses
+        self.computed = [u for u in self.unknowns if u not in plan.inputs]
+        if plan.sweep is not None and plan.sweep.target is not None:
+            self.computed.append(plan.sweep.target)      # set by main's loop
+        self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named
+                      + self.computed}
         self.nfiles = len(plan.files)
 
     def text(self) -> str:
         computed, written = self._computation()
         lines = (self._top() + self._main() + ["", ""] + self._eqns1(computed) + ["", ""]
-                 + self._output(written) + ["", ""] + READING_AND_WRITING)
-        return "\n".join(lines) + "\n"
+                 + self._output(written) + ["", ""])
+        if self.unknowns:
+            lines += SOLVE + ["", ""]
+        return "\n".join(lines + READING_AND_WRITING) + "\n"
 
     # -- the computation ----------------------------------------------------------------
     def _computation(self) -> tuple[list, list]:
@@ -89,41 +103,109 @@ class CProgram:
         part = printed(p.statements, shown_values(p), self.where,
                        lambda where: CodePrinter("c", where), lambda k: f"z[{k}]")
         self.z_size = part.top
-        computed = [line for target, text in part.statements
-                    for line in wrap(f"  {target} = ", text)]
+        computed = _lines(part)
+        if p.solving is not None:
+            computed = self._solution() + [""] + computed
         return computed, output_lines(p.files, p.encoded, part.values)
+
+    def _solution(self) -> list[str]:
+        """eqns1's solution of the equations for the unknowns, before the outputs."""
+        solving, n = self.plan.solving, len(self.unknowns)
+        part = printed(solving.statements, solving.matrix + solving.right, self.where,
+                       lambda where: CodePrinter("c", where), lambda k: f"z[{k}]")
+        self.z_size = max(self.z_size, part.top)
+        matrix, right = part.values[:n * n], part.values[n * n:]
+        body = _lines(part)
+        for i in range(n):
+            for j in range(n):
+                body += wrap(f"  COEF[{i}][{j}] = ", matrix[i * n + j])
+            body += wrap(f"  RHS[{i}] = ", f"-({right[i]})")
+        names = [c_name(u) for u in self.unknowns]
+        if solving.method == "linear":
+            return (["/* Solve the linear equations for " + ", ".join(names) + " */"]
+                    + body + [f"  if( solve({n}, COEF[0], RHS, SOL) )",
+                              '    {printf("\\n The equations are singular for these '
+                              'inputs\\n");  exit(1);}']
+                    + [f"  {name} = SOL[{i}];" for i, name in enumerate(names)])
+        # Newton's method from the guesses, as autolev run (docs/language.md)
+        lines = ["/* Solve the nonlinear equations for " + ", ".join(names)
+                 + " (Newton's method from the guesses) */",
+                 "for(iter = 1; ; iter++)", "  {"]
+        lines += ["  " + line for line in body]
+        lines += [f"    if( solve({n}, COEF[0], RHS, SOL) )",
+                  '      {printf("\\n The Jacobian is singular\\n");  exit(1);}',
+                  "    converged = 1;"]
+        for i, name in enumerate(names):
+            lines += [f"    {name} += SOL[{i}];",
+                      f"    if( !(fabs(SOL[{i}]) <= fmax(abserr, relerr*fabs({name}))) ) "
+                      "converged = 0;"]
+        lines += ["    if( converged ) break;",
+                  f"    if( iter == {solving.ITERATIONS} )",
+                  f'      {{printf("\\n Newton\'s method did not converge in '
+                  f'{solving.ITERATIONS} iterations\\n");  exit(1);}}',
+                  "  }"]
+        return lines
 
     # -- sections ---------------------------------------------------------------------
     def _top(self) -> list[str]:
         p = self.plan
         lines = banner(self.name) + ["void     eqns1     (void);",
                                      "void     output    (FILE *Fptr[] );"]
+        if self.unknowns:
+            lines.append("int      solve     (int n, double *coef, double *rhs, "
+                         "double *x);")
         lines += READING_PROTOTYPES
         # the inputs in read order; the others sorted by name ignoring case
-        for group in (p.inputs, by_name(p.specified), by_name(p.named)):
+        for group in (p.inputs, by_name(self.computed), by_name(p.specified),
+                      by_name(p.named)):
             if group:
                 lines += wrap("double   ", ",".join(c_name(s) for s in group))
-        return lines + encoded_declarations(p.encoded, self.z_size) + [""]
+        n = len(self.unknowns)
+        solving = [f"COEF[{n}][{n}]", f"RHS[{n}]", f"SOL[{n}]"] if n else []
+        if p.solving is not None and p.solving.method == "newton":
+            solving += ["abserr", "relerr"]
+        return lines + encoded_declarations(p.encoded, self.z_size, solving) + [""]
 
     def _main(self) -> list[str]:
         p = self.plan
         infile = input_file_name(p.filename)
         lines = ["/* ................................ MAIN ............................. */",
                  "int      main         (void)", "{",
-                 f"FILE     *Fptr[{self.nfiles + 1}];", "int      iloop;", ""]
+                 f"FILE     *Fptr[{self.nfiles + 1}];",
+                 "int      iloop, ipoint;" if p.sweep else "int      iloop;", ""]
         lines += opening(infile, self.stem, self.nfiles)
-        lines.append("/* Read values of constants from input file */")
-        if p.inputs:
-            lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in p.inputs),
-                          ",NULL);")
+        guesses = [s for s in p.inputs if s in self.unknowns]
+        constants = [s for s in p.inputs if s not in guesses]
+        for what, group in (("values of constants", constants),
+                            ("the guess of each unknown", guesses)):
+            if group:
+                lines.append(f"/* Read {what} from input file */")
+                lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in group),
+                              ",NULL);")
+        if guesses:
+            lines += ["/* Read the tolerances of Newton's method from input file */",
+                      "readf(Fptr[0],&abserr,&relerr,NULL);"]
         lines += [""] + headings_and_units(self.stem, p.files, p.degree_inputs)
-        lines += ["", "/* Evaluate output quantities */", "eqns1();", "output( Fptr );", ""]
+        lines += ["", "/* Evaluate output quantities */"]
+        sweep = p.sweep
+        if sweep is None:
+            lines += ["eqns1();", "output( Fptr );", ""]
+        else:
+            name = c_name(sweep.target) if sweep.target is not None else None
+            lines += [f"for(ipoint = 0; ipoint < {sweep.count}; ipoint++)", "  {"]
+            if name is not None:
+                lines.append(f"  {name} = {sweep.start!r} + {sweep.step!r}*ipoint;")
+                if sweep.degrees:
+                    lines.append(f"  {name} = {name}*DEGtoRAD;")
+            lines += ["  eqns1();", "  output( Fptr );", "  }", ""]
         return lines + farewell(infile, self.stem, self.nfiles)
 
     def _eqns1(self, computed: list) -> list[str]:
         lines = ["/* ................................ EQNS1 ............................. */",
-                 "void     eqns1        (void)", "{", "",
-                 "/* Evaluate constants */"]
+                 "void     eqns1        (void)", "{"]
+        if self.plan.solving is not None and self.plan.solving.method == "newton":
+            lines.append("int      iter, converged;")
+        lines += ["", "/* Evaluate constants */"]
         # quantities to be specified: 0, as in Autolev's programs
         lines += [f"  {c_name(s)} = 0;" for s in self.plan.specified]
         return lines + computed + ["", "", "/* Evaluate output quantities */", "}"]
@@ -136,6 +218,10 @@ class CProgram:
         lines += ["", "/* Write output to screen and to output file(s) */"] + written + [""]
         lines += [f"  Encode[{k}] = 0.0;" for k in range(len(self.plan.encoded))]
         return lines + ["", "}"]
+
+
+def _lines(part) -> list[str]:
+    return [line for target, text in part.statements for line in wrap(f"  {target} = ", text)]
 
 
 # -- pieces every C program has --------------------------------------------------------
@@ -283,6 +369,51 @@ for( value = va_arg(args, double);  value != _NAN;  value = va_arg(args, double)
   fprintf(Fp, format, value);
 va_end(args);
 fprintf(Fp, "\n");
+}""".splitlines()[1:]
+
+
+# coef x = rhs, for the mass matrix of a DYNAMICS program and the equations of an
+# ALGEBRAIC or NONLINEAR one, written for autolev
+SOLVE = r"""
+/* ................................ SOLVE ............................. */
+/* coef x = rhs (n by n, row by row) by Gaussian elimination with partial pivoting
+ * (each pivot inverted once); 1 when a pivot is exactly zero.  coef and rhs are
+ * overwritten. */
+int      solve (int n, double *coef, double *rhs, double *x)
+{
+int      i, j, k, p;
+for( k = 0; k < n; k++ )
+  {
+  double big = fabs(coef[k * n + k]), r;
+  p = k;
+  for( i = k + 1; i < n; i++ )
+    if( fabs(coef[i * n + k]) > big ) { big = fabs(coef[i * n + k]);  p = i; }
+  if( big == 0.0 ) return 1;
+  if( p != k )
+    {
+    for( j = 0; j < n; j++ )
+      { double s = coef[k * n + j];  coef[k * n + j] = coef[p * n + j];  coef[p * n + j] = s; }
+    { double s = rhs[k];  rhs[k] = rhs[p];  rhs[p] = s; }
+    }
+  r = 1.0 / coef[k * n + k];
+  x[k] = r;
+  for( i = k + 1; i < n; i++ )
+    {
+    double l = coef[i * n + k] * r;
+    if( l != 0.0 )
+      {
+      for( j = k + 1; j < n; j++ ) coef[i * n + j] -= l * coef[k * n + j];
+      rhs[i] -= l * rhs[k];
+      }
+    }
+  }
+for( i = n - 1; i >= 0; i-- )
+  {
+  double acc = rhs[i], r = x[i];
+  for( j = i + 1; j < n; j++ ) acc -= coef[i * n + j] * x[j];
+  x[i] = acc * r;
+  }
+return 0;
 }""".splitlines()[1:]
 
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from ..runtime import symbols as S
 from ..runtime.printer import CodePrinter
-from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, banner, by_name,
+from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, SOLVE, banner, by_name,
                 encoded_declarations, farewell, headings_and_units, opening, output_lines,
                 wrap)
 from .plan import (DynamicsPlan, c_name, check_names, dynamics_names, input_file_name,
@@ -43,7 +43,7 @@ class CDynamicsProgram:
         lines = (self._top() + self._main(self._lines(constants)) + ["", ""]
                  + self._eqns1(self._lines(equations), equations.values) + ["", ""]
                  + self._output(self._lines(outputs), outputs.values) + ["", ""] + kutta
-                 + _KUTTA + ["", ""] + _SOLVE + ["", ""] + READING_AND_WRITING)
+                 + _KUTTA + ["", ""] + SOLVE + ["", ""] + READING_AND_WRITING)
         return "\n".join(lines) + "\n"
 
     # -- the computation in three parts, each with its own z slots ---------------------
@@ -141,8 +141,9 @@ class CDynamicsProgram:
         lines += [""] + statements
         values = list(values)
         for x, rate in zip(p.states, p.rates):
-            if rate is not None:
-                lines += wrap(f"  {c_name(S.derivative(x))} = ", values.pop(0))
+            text = values.pop(0) if rate is not None else None
+            if text is not None and text != c_name(S.derivative(x)):  # X' a state itself
+                lines += wrap(f"  {c_name(S.derivative(x))} = ", text)
         mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
         if self.m == 1:
             lines += wrap(f"  {c_name(p.unknowns[0])} = ", f"({forcing[0]})/({mass[0]})")
@@ -242,48 +243,6 @@ while( tt + h != tt )
   }
 printf("\n THE STEPSIZE OF %15.7E IS TOO SMALL RELATIVE TO THE TERMINAL TIME OF\n"
        " %15.7E.  INTEGRATION HALTED.\n", h, tt);
-return 0;
-}""".splitlines()[1:]
-
-_SOLVE = r"""
-/* ................................ SOLVE ............................. */
-/* coef x = rhs (n by n, row by row) by Gaussian elimination with partial pivoting
- * (each pivot inverted once); 1 when a pivot is exactly zero.  coef and rhs are
- * overwritten. */
-int      solve (int n, double *coef, double *rhs, double *x)
-{
-int      i, j, k, p;
-for( k = 0; k < n; k++ )
-  {
-  double big = fabs(coef[k * n + k]), r;
-  p = k;
-  for( i = k + 1; i < n; i++ )
-    if( fabs(coef[i * n + k]) > big ) { big = fabs(coef[i * n + k]);  p = i; }
-  if( big == 0.0 ) return 1;
-  if( p != k )
-    {
-    for( j = 0; j < n; j++ )
-      { double s = coef[k * n + j];  coef[k * n + j] = coef[p * n + j];  coef[p * n + j] = s; }
-    { double s = rhs[k];  rhs[k] = rhs[p];  rhs[p] = s; }
-    }
-  r = 1.0 / coef[k * n + k];
-  x[k] = r;
-  for( i = k + 1; i < n; i++ )
-    {
-    double l = coef[i * n + k] * r;
-    if( l != 0.0 )
-      {
-      for( j = k + 1; j < n; j++ ) coef[i * n + j] -= l * coef[k * n + j];
-      rhs[i] -= l * rhs[k];
-      }
-    }
-  }
-for( i = n - 1; i >= 0; i-- )
-  {
-  double acc = rhs[i], r = x[i];
-  for( j = i + 1; j < n; j++ ) acc -= coef[i * n + j] * x[j];
-  x[i] = acc * r;
-  }
 return 0;
 }""".splitlines()[1:]
 

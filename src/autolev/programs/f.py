@@ -398,8 +398,9 @@ class FortranDynamicsProgram:
         lines += [""] + statements
         values = list(values)
         for x, rate in zip(p.states, p.rates):
-            if rate is not None:
-                lines += statement(f"{f_name(S.derivative(x))} = {values.pop(0)}")
+            text = values.pop(0) if rate is not None else None
+            if text is not None and text != f_name(S.derivative(x)):  # X' a state itself
+                lines += statement(f"{f_name(S.derivative(x))} = {text}")
         mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
         if self.m == 1:
             lines += statement(f"{f_name(p.unknowns[0])} = ({forcing[0]})/({mass[0]})")

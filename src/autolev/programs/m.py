@@ -30,6 +30,10 @@ atan2 sinh cosh tanh asinh acosh atanh exp log sqrt abs floor ceil fix round max
 sign gamma erf zeros fopen fclose fprintf error disp ans nan inf eps i j
 """.split())
 
+# names a program that solves equations or sweeps an input uses besides
+_SOLVING_RESERVED = frozenset("coef rhs solutiontoaxequalsb abserr relerr iter ipoint "
+                              "all".split())
+
 _FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
           "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
           "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "exp": "exp",
@@ -182,23 +186,36 @@ class MProgram:
     """The text of one plan's Matlab program."""
 
     def __init__(self, plan: Plan):
-        check_names(plan, RESERVED, "Matlab")
+        solving = plan.solving is not None or plan.sweep is not None
+        check_names(plan, RESERVED | (_SOLVING_RESERVED if solving else frozenset()),
+                    "Matlab")
         self.plan = plan
         self.name = program_name(plan.filename)
         self.function = function_name(plan.filename)
         self.stem = self.name.rpartition(".")[0]
-        self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named}
+        self.unknowns = list(plan.solving.unknowns) if plan.solving else []
+        # the linear equations' unknowns are computed, the nonlinear ones' read as
+        # guesses; a swept input is set by the main function's loop
+        self.computed = [u for u in self.unknowns if u not in plan.inputs]
+        if plan.sweep is not None and plan.sweep.target is not None:
+            self.computed.append(plan.sweep.target)
+        self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named
+                      + self.computed}
 
     def text(self) -> str:
         p = self.plan
-        # ReadUserInput computes what does not depend on the specified quantities,
-        # DoCalculations the rest: the slots follow that order
-        later = _depending_on(p.statements, set(p.specified))
+        # ReadUserInput computes what depends on none of the specified quantities,
+        # unknowns and swept input; DoCalculations the rest: the slots follow that order
+        later = _depending_on(p.statements, set(p.specified) | set(self.unknowns)
+                              | set(self.computed))
         order = [k for k in range(len(later)) if not later[k]] + \
             [k for k in range(len(later)) if later[k]]
         part = printed(p.statements, shown_values(p), self.where, MatlabPrinter,
                        lambda k: f"z({k})", order=order)
         size = part.top
+        solution = []
+        if p.solving is not None:
+            solution, size = self._solution(size)
         constants = [f"{t} = {x};" for k, (t, x) in enumerate(part.statements)
                      if not later[k]]
         calculations = [f"{t} = {x};" for k, (t, x) in enumerate(part.statements)
@@ -209,8 +226,12 @@ class MProgram:
                  "of Autolev 4.1's programs", ""] + globals_ + [""]
         if p.files:
             lines.append("OpenOutputFilesAndWriteHeadings;")
-        lines += ["ReadUserInput;", "DoCalculations;", "PrintUserOutput;",
-                  "CloseOutputFilesAndTerminate;"]
+        lines.append("ReadUserInput;")
+        if p.sweep is None:
+            lines += ["DoCalculations;", "PrintUserOutput;"]
+        else:
+            lines += self._sweeping()
+        lines.append("CloseOutputFilesAndTerminate;")
         lines += self._function("ReadUserInput", globals_, self._table() + [
             "", "% Unit conversions", "Pi       = 3.141592653589793;",
             "DEGtoRAD = Pi/180.0;", "RADtoDEG = 180.0/Pi;"]
@@ -219,7 +240,7 @@ class MProgram:
                "", "% Evaluate constants"] + constants)
         lines += self._function("DoCalculations", globals_, [
             "% Quantities to be specified"] + [f"{c_name(s)} = 0;" for s in p.specified]
-            + [""] + calculations)
+            + [""] + solution + calculations)
         lines += self._function("Output = PrintUserOutput", globals_,
                                 _showing(p, part.values, blank_line=True))
         lines += self._function("WriteOutput( fileIdentifier, Output )", [], _WRITE_OUTPUT)
@@ -229,13 +250,58 @@ class MProgram:
         lines += self._function("CloseOutputFilesAndTerminate", globals_, self._closing())
         return "\n".join(lines) + "\n"
 
+    def _sweeping(self) -> list[str]:
+        """The main function's loop over the swept input's values."""
+        sweep = self.plan.sweep
+        lines = [f"for ipoint = 0:{sweep.count - 1}"]
+        if sweep.target is not None:
+            name = c_name(sweep.target)
+            lines.append(f"  {name} = {sweep.start!r} + {sweep.step!r}*ipoint;")
+            if sweep.degrees:
+                lines.append(f"  {name} = {name}*DEGtoRAD;")
+        return lines + ["  DoCalculations;", "  PrintUserOutput;", "end"]
+
+    def _solution(self, offset: int) -> tuple[list, int]:
+        """DoCalculations' solution of the equations for the unknowns (its z slots
+        above `offset`, the constants' being kept), and the highest slot."""
+        solving, n = self.plan.solving, len(self.unknowns)
+        part = printed(solving.statements, solving.matrix + solving.right, self.where,
+                       MatlabPrinter, lambda k: f"z({k})", offset)
+        matrix, right = part.values[:n * n], part.values[n * n:]
+        body = [f"{t} = {x};" for t, x in part.statements]
+        body += [f"COEF = zeros({n},{n});"]
+        body += [f"COEF({i + 1},{j + 1}) = {matrix[i * n + j]};"
+                 for i in range(n) for j in range(n)]
+        body += [f"RHS = zeros(1,{n});"] + [f"RHS({i + 1}) = -({right[i]});"
+                                            for i in range(n)]
+        body.append("SolutionToAxEqualsB = COEF\\RHS';")
+        names = [c_name(u) for u in self.unknowns]
+        if solving.method == "linear":
+            lines = [f"% Solve the linear equations for {', '.join(names)}"] + body
+            lines += [f"{name} = SolutionToAxEqualsB({i});" for i, name in enumerate(names, 1)]
+            return lines + [""], part.top
+        # Newton's method from the guesses, as autolev run (docs/language.md)
+        lines = [f"% Solve the nonlinear equations for {', '.join(names)} (Newton's "
+                 "method from the guesses)", f"for iter = 1:{solving.ITERATIONS}"]
+        lines += ["  " + line for line in body]
+        lines += [f"  {name} = {name} + SolutionToAxEqualsB({i});"
+                  for i, name in enumerate(names, 1)]
+        lines += [f"  if( all(abs(SolutionToAxEqualsB) <= max(ABSERR, RELERR*abs(["
+                  f"{'; '.join(names)}]))) ) break; end",
+                  f"  if( iter == {solving.ITERATIONS} ) error('Newton''s method did not "
+                  f"converge in {solving.ITERATIONS} iterations'); end", "end", ""]
+        return lines, part.top
+
     # -- pieces ---------------------------------------------------------------------
     def _globals(self) -> list[str]:
         p = self.plan
         groups = [[c_name(s) for s in p.inputs], [c_name(s) for s in p.specified],
-                  sorted((c_name(s) for s in p.named), key=lambda n: (n.lower(), n))]
-        groups.append(["DEGtoRAD", "RADtoDEG", "z"] + [e.name for e in p.encoded]
-                      + ["Encode"])
+                  sorted((c_name(s) for s in p.named + self.computed),
+                         key=lambda n: (n.lower(), n))]
+        misc = ["DEGtoRAD", "RADtoDEG", "z"] + [e.name for e in p.encoded] + ["Encode"]
+        if p.solving is not None and p.solving.method == "newton":
+            misc = ["ABSERR", "RELERR"] + misc
+        groups.append(misc)
         return [f"global   {' '.join(g)};" for g in groups if g]
 
     @staticmethod
@@ -246,11 +312,17 @@ class MProgram:
         rows = [_RULE,
                 f"% {'Quantity':<30}| {'Value':<25}| {'Units':<18}| Description",
                 _RULE.replace("+", "|")]
+        unknowns = set(self.unknowns)
         for s in self.plan.inputs:
             value = self.plan.values[s]
             unit = value.unit or "UNITS"
             rows.append(f"{c_name(s):<32}= {format_value(value.given) + ';':<25}"
-                        f"% {unit:<20}Constant")
+                        f"% {unit:<20}{'Initial Guess' if s in unknowns else 'Constant'}")
+        if self.plan.solving is not None and self.plan.solving.method == "newton":
+            rows.append("")
+            for key, what in (("ABSERR", "Absolute Error"), ("RELERR", "Relative Error")):
+                value = format_value(self.plan.values[key].given)
+                rows.append(f"{key:<32}= {value + ';':<25}% {'':<20}{what}")
         return rows + [_RULE]
 
     def _headings(self) -> list[str]:
@@ -421,8 +493,9 @@ class MDynamicsProgram(MProgram):
         lines += [""] + statements
         values = list(values)
         for x, rate in zip(p.states, p.rates):
-            if rate is not None:
-                lines.append(f"{c_name(S.derivative(x))} = {values.pop(0)};")
+            text = values.pop(0) if rate is not None else None
+            if text is not None and text != c_name(S.derivative(x)):  # X' a state itself
+                lines.append(f"{c_name(S.derivative(x))} = {text};")
         mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
         if self.m:
             lines.append(f"COEF = zeros({self.m},{self.m});")

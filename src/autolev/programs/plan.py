@@ -9,6 +9,7 @@ derivatives, z[] slots for intermediates, ENCODE arrays in ENCODE order.
 from __future__ import annotations
 
 import heapq
+import math
 import re
 from dataclasses import dataclass, field
 
@@ -19,7 +20,8 @@ from ..runtime import units
 from ..runtime.errors import AutolevModelError
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs
-from ..runtime.numerics.run import encoded_values, equations_and_unknowns, output_columns
+from ..runtime.numerics.run import (encoded_values, equations_and_unknowns, output_columns,
+                                     solution_columns, solver_expressions)
 from ..runtime.numerics.system import NumericSystem, lower_derivative, read_order
 
 
@@ -60,6 +62,38 @@ class Plan:
     files: list                 # per OUTPUT file: [(expression, label, unit)]
     degree_inputs: list = field(default_factory=list)
     values: dict = field(default_factory=dict)     # input -> its Value (given, unit)
+    solving: "Solving | None" = None
+    sweep: "Sweep | None" = None
+
+
+@dataclass
+class Solving:
+    """The equations a CODE ALGEBRAIC(EQ, x, ...) or NONLINEAR(EQ, x, ...) program
+    solves before its outputs: `statements` compute the `matrix` (n x n, row by row)
+    and `right` (n): the coefficients and constant terms of the linear equations
+    (A x + b = 0), or the Jacobian and the residuals at the current unknowns (Newton's
+    method from the guesses read, steps until each is within max(ABSERR,
+    RELERR*|x|), as `autolev run`)."""
+
+    method: str                 # "linear" or "newton"
+    unknowns: list
+    statements: list
+    matrix: list
+    right: list
+
+    ITERATIONS = 50             # Newton's steps at most (autolev run's)
+
+
+@dataclass
+class Sweep:
+    """CODE ALGEBRAIC() [Q UNIT = start, stop, step]: the program writes a row per
+    value of Q, start + step*k for k = 0 .. count-1."""
+
+    target: object              # the swept input (None: it enters no output)
+    start: float
+    step: float
+    count: int
+    degrees: bool
 
 
 def program_name(filename: str) -> str:
@@ -80,38 +114,73 @@ def is_fortran(filename: str) -> bool:
 
 
 def plan_algebraic(model, command) -> Plan:
-    """The plan of a CODE ALGEBRAIC() program: every ENCODE and OUTPUT quantity
-    evaluated once from the values its .in file gives."""
-    equations, unknowns = equations_and_unknowns(command.args, "ALGEBRAIC")
-    if equations:
-        raise AutolevModelError("CODE ALGEBRAIC with equations to solve is not written "
-                                "as a program yet (only CODE ALGEBRAIC() file)")
-    if command.sweep:
-        raise AutolevModelError("CODE ALGEBRAIC over a range of an input: no program "
-                                "Autolev wrote for one is known, so its layout is not")
-    files = output_columns(model, command)
+    """The plan of a CODE ALGEBRAIC() program (every ENCODE and OUTPUT quantity
+    evaluated once from the values its .in file gives, or once per value of a swept
+    input), of a CODE ALGEBRAIC(EQ, x, ...) one (the linear equations solved first) and
+    of a CODE NONLINEAR(EQ, x, ...) one (Newton's method from the guesses read)."""
+    kind = command.kind
+    equations, unknowns = equations_and_unknowns(command.args, kind.upper())
+    files = solution_columns(command, output_columns(model, command), unknowns)
     encoded = encoded_values(model, command)
-    with model.defs.as_of(command.definitions):
-        system = NumericSystem(model, files, encoded, integrate=False,
+    defs = model.defs
+    with defs.as_of(command.definitions):
+        system = NumericSystem(model, files, encoded, integrate=False, solved=unknowns,
+                               extra=solver_expressions(defs, kind, equations, unknowns),
                                compile_functions=False)
-        if S.TIME in _free(system.output_exprs, model):
-            raise AutolevModelError("CODE ALGEBRAIC: its quantities depend on T, which "
-                                    "a CODE ALGEBRAIC program has no value for")
+        extra = system.extra_exprs
+        if S.TIME in _free(system.output_exprs + [e for v in extra.values() for e in v],
+                           model):
+            raise AutolevModelError(f"CODE {kind.upper()}: its quantities depend on T, "
+                                    "which such a program has no value for")
+        fixed = dict(system.aux_fixed)
         inputs = read_order(system.params, model)
-        prog = codegen.Program({"in": inputs, "s": list(system.specified)},
-                               system.output_exprs, model.defs,
-                               dict(system.aux_fixed)).build(shared="all")
+        given = {"in": inputs, "s": list(system.specified), "u": list(system.solved)}
+        prog = codegen.Program(given, system.output_exprs, defs, fixed).build(shared="all")
+        solving = None
+        if extra:
+            solver = codegen.Program(given, [e for v in extra.values() for e in v], defs,
+                                     fixed).build(shared="all")
+            n = len(unknowns)
+            solver_statements, solver_named = statements_of(solver)
+            solving = Solving("newton" if kind == "nonlinear" else "linear", list(unknowns),
+                              solver_statements, list(solver.outputs[:n * n]) if
+                              kind == "algebraic" else list(solver.outputs[n:n + n * n]),
+                              list(solver.outputs[n * n:]) if kind == "algebraic" else
+                              list(solver.outputs[:n]))
     statements, named = statements_of(prog)
+    if solving is not None:
+        named = list(dict.fromkeys(solver_named + named))
     out_files, encoded_plan = _shown(system, prog.outputs)
-    values = Inputs(model, inputs, integration=(), given=command.inputs,
-                    unit_table={**model.unit_of, **command.units})
-    values.fill_missing(inputs, "0 (no INPUT)")
+    read = [s for s in inputs if command.sweep is None or s != command.sweep[0]]
+    guesses = list(unknowns) if kind == "nonlinear" else []
+    values = Inputs(model, read + guesses,
+                    integration=("ABSERR", "RELERR") if guesses else (),
+                    given=command.inputs, unit_table={**model.unit_of, **command.units})
+    values.fill_missing(read + guesses, "0 (no INPUT)")
     text = values.file_text(input_file_name(command.filename),
-                            {s: "Constant" for s in inputs})
-    degrees = [s for s in inputs if units.is_degrees(values.unit_of(s))]
-    return Plan("algebraic", command.filename, inputs, text, list(system.specified),
+                            {**{s: "Constant" for s in read},
+                             **{u: "Initial Guess" for u in guesses}})
+    degrees = [s for s in read + guesses if units.is_degrees(values.unit_of(s))]
+    sweep = _sweep_of(command, inputs, values)
+    return Plan(kind, command.filename, read + guesses, text, list(system.specified),
                 named, statements, encoded_plan, out_files, degrees,
-                {s: values.values[s] for s in inputs})
+                {s: values.values[s] for s in values.names}, solving, sweep)
+
+
+def _sweep_of(command, inputs: list, values: Inputs) -> Sweep | None:
+    """The sweep of CODE ALGEBRAIC() [Q = start, stop, step] (its points as
+    `autolev run` takes them)."""
+    if command.sweep is None:
+        return None
+    target, start, stop, step = command.sweep[:4]
+    unit = command.sweep[4] if len(command.sweep) > 4 else values.unit_of(target)
+    start, stop, step = float(start), float(stop), float(step)
+    if step == 0 or (stop - start) * step < 0:
+        raise AutolevModelError(f"the sweep of {target}: step {step:g} does not lead from "
+                                f"{start:g} to {stop:g}")
+    count = int(math.floor((stop - start) / step + 1e-9)) + 1
+    return Sweep(target if target in inputs else None, start, step, count,
+                 units.is_degrees(unit))
 
 
 @dataclass
@@ -144,10 +213,15 @@ class DynamicsPlan:
 
 
 def plan_dynamics(model, command) -> DynamicsPlan:
-    """The plan of a CODE DYNAMICS() program."""
-    if command.args:
+    """The plan of a CODE DYNAMICS() program, or of a CODE ODE(EQ, x'', ...) one: the
+    same program, the unknown derivatives solved from the equations in place of
+    Kane's (as `autolev run` integrates it)."""
+    what = command.kind.upper()
+    equations, unknowns = equations_and_unknowns(command.args, what)
+    if command.kind == "dynamics" and command.args:
         raise AutolevModelError("CODE DYNAMICS with arguments is not written as a "
                                 "program yet")
+    implicit = (equations, unknowns) if command.kind == "ode" and equations else None
     files = output_columns(model, command)
     encoded = encoded_values(model, command)
     defs = model.defs
@@ -155,10 +229,11 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     filename = command.filename.lower() if is_fortran(command.filename) else \
         command.filename
     with defs.as_of(command.definitions):
-        system = NumericSystem(model, files, encoded, integrate=True, zero=command.zero,
+        system = NumericSystem(model, files, encoded, integrate=True, implicit=implicit,
+                               zero=command.zero if command.kind == "dynamics" else None,
                                compile_functions=False)
         if not system.nstate:
-            raise AutolevModelError("CODE DYNAMICS: the model has no state to integrate "
+            raise AutolevModelError(f"CODE {what}: the model has no state to integrate "
                                     "(no speeds or variables with derivatives)")
         fixed = dict(system.aux_fixed)
         constants_prog = codegen.Program({"c": list(system.params)},
@@ -191,7 +266,7 @@ def plan_dynamics(model, command) -> DynamicsPlan:
                             fortran=is_fortran(filename))
     degrees = [q for q in constants + states if units.is_degrees(values.unit_of(q))]
     named = list(dict.fromkeys(const_named + rhs_named + out_named))
-    return DynamicsPlan("dynamics", filename, constants, states, text,
+    return DynamicsPlan(command.kind, filename, constants, states, text,
                         dict(values.values), list(system.specified), const_statements,
                         list(system.constant_defs), rhs_statements, rates, mass, forcing,
                         unknowns, out_statements, out_files, encoded_plan, named, degrees,

@@ -258,6 +258,10 @@ def _take_inputs(ask: _InputsWanted, system):
                      f"CODE {ask.command.kind.upper()} {ask.command.filename}: ignored there")
     for note in notes:
         warnings.warn(note, stacklevel=5)
+    swept = ask.command.sweep[0] if ask.command.sweep is not None else None
+    if swept in constants and inputs.missing([swept]):
+        # CODE ALGEBRAIC() [Q = a, b, c]: the sweep gives Q its values
+        inputs.set_internal(display_name(swept), 0.0, "the sweep")
     missing = inputs.missing(constants)
     if missing and ask.missing_values == "refuse":
         raise MissingValues(_missing_message(ask.model, missing, inputs, kinds, ask.out_dir,
@@ -295,13 +299,7 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
     files = output_columns(model, command)
     encoded = encoded_values(model, command)
     equations, unknowns = equations_and_unknowns(command.args, kind.upper())
-    if unknowns and not files and kind in ("algebraic", "nonlinear"):
-        # no OUTPUT: the solution is what the program is for -- write the unknowns
-        files = [[Column(u, u.name, (command.inputs.get(u) or (None, None))[1]
-                         or command.units.get(u)) for u in unknowns]]
-    if kind == "nonlinear" and not equations:
-        raise AutolevModelError("CODE NONLINEAR needs equations and unknowns: "
-                                "CODE NONLINEAR(EQ, x, y) file")
+    files = solution_columns(command, files, unknowns)
     ask = _InputsWanted(model, command, stem, unknowns, infile, overrides, internal_values,
                         constraints, missing_values, out_dir)
     build_start = time.perf_counter()
@@ -323,6 +321,18 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
     system.set_parameters(inputs.vector(system.params))
     return Prepared(system, inputs, kinds, stem, files, encoded, unknowns, sweep,
                     extra_constants, build_seconds)
+
+
+def solution_columns(command, files: list, unknowns: list) -> list:
+    """The OUTPUT files of a CODE ALGEBRAIC/NONLINEAR that solves for `unknowns`: with
+    no OUTPUT, the solution is what the program is for, so one file of the unknowns."""
+    if command.kind == "nonlinear" and not unknowns:
+        raise AutolevModelError("CODE NONLINEAR needs equations and unknowns: "
+                                "CODE NONLINEAR(EQ, x, y) file")
+    if unknowns and not files and command.kind in ("algebraic", "nonlinear"):
+        return [[Column(u, u.name, (command.inputs.get(u) or (None, None))[1]
+                        or command.units.get(u)) for u in unknowns]]
+    return files
 
 
 def _numeric_system(model, command, files, encoded, solving: tuple, backend: str,
@@ -349,7 +359,7 @@ def _numeric_system(model, command, files, encoded, solving: tuple, backend: str
             model, files, encoded, backend=backend, integrate=kind in ("dynamics", "ode"),
             implicit=(equations, unknowns) if kind == "ode" and equations else None,
             solved=unknowns if kind in ("algebraic", "nonlinear") else (),
-            extra=_solver_expressions(model.defs, kind, equations, unknowns),
+            extra=solver_expressions(model.defs, kind, equations, unknowns),
             zero=command.zero if kind == "dynamics" else None,
             hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
             before_compiling=before_compiling, locked=locked)
@@ -508,7 +518,7 @@ def _hidden_in_outputs(command) -> tuple:
     return ("i1",) if program_language(command.filename) == "c" else ()
 
 
-def _solver_expressions(defs, kind: str, equations: list, unknowns: list) -> dict | None:
+def solver_expressions(defs, kind: str, equations: list, unknowns: list) -> dict | None:
     """What CODE ALGEBRAIC (the linear system's matrix and right side) and CODE
     NONLINEAR (residuals and their Jacobian) evaluate besides the outputs."""
     if kind == "algebraic" and equations:

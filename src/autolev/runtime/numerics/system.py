@@ -144,6 +144,7 @@ class NumericSystem:
         # functions compiled from this system later (a linearization's Jacobians), by key
         self.derived: dict = {}
         out_exprs, extra = self._output_expressions(outputs, encoded, extra)
+        self.extra_exprs = extra
         # what is given: time, state, solved derivatives and unknowns, fixed speeds
         accel_inputs = list(unknowns) + self.solved
         given = set(self.states) | {S.TIME} | set(self.aux_fixed) | set(accel_inputs)
