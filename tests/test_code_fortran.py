@@ -158,6 +158,11 @@ def test_encode_and_names_fortran_cannot_tell_apart_are_refused(tmp_path):
         _texts(tmp_path, PENDULUM.replace("OUTPUT T, Q, U", "OUTPUT T, Q, U\nENCODE U"))
     with pytest.raises(AutolevModelError, match="cannot be a name in the Fortran"):
         _texts(tmp_path, PENDULUM.replace("IZ", "KUTTA"))
+    # Fortran has no reserved words: a quantity may be named as an intrinsic function
+    # the program does not call (the sprinting model's EX' is EXp), not as one it calls
+    assert "pendulum.f" in _texts(tmp_path, PENDULUM.replace("IZ", "EXP"))
+    with pytest.raises(AutolevModelError, match="calls the intrinsic function"):
+        _texts(tmp_path, PENDULUM.replace("IZ", "SIN"))
 
 
 @needs_gfortran
@@ -264,3 +269,21 @@ def test_a_fortran_program_writes_the_reference_runs_files(ident, run, tmp_path)
         assert errors.max() <= 1e-6, f"{ref.name}: {errors.max():.3g} (t <= {window})"
         compared += 1
     assert compared
+
+
+@needs_gfortran
+def test_an_ode_program_in_fortran_integrates_the_equations_given(tmp_path):
+    """CODE ODE(EQ, X''): M X'' + K X = 0 from X = 1 is X = cos(2t) for K/M = 4; the
+    program's rows are those and `autolev run`'s."""
+    from test_code_solving import ODE
+    model = tmp_path / "ode.al"
+    model.write_text(ODE.format(name="ode.f"))
+    assert main(["code", str(model), "--out", str(tmp_path / "prog"), "-q"]) == 0
+    ran = compile_and_run(tmp_path / "prog", "ode.f")
+    assert ran.returncode == 0, ran.stdout[-500:]
+    assert main(["run", str(model), "--out", str(tmp_path / "run"), "-q"]) == 0
+    ours = rows(tmp_path / "prog" / "ode.1")
+    assert ours == rows(tmp_path / "run" / "ode.1") and len(ours) == 31
+    for t, x, xp in ours:
+        assert x == pytest.approx(math.cos(2 * t), abs=2e-6)
+        assert xp == pytest.approx(-2 * math.sin(2 * t), abs=4e-6)

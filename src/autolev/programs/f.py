@@ -19,13 +19,13 @@ from ..runtime.printer import _ADD, _ATOM, _MUL, _POW, _UNARY, CodePrinter
 from .plan import (DynamicsPlan, check_names, input_file_name, printed, program_name,
                    shown_values)
 
-# the names the program itself uses, and the intrinsic functions it may call
+# the names the program itself uses (an intrinsic function's name is refused only
+# where the program calls that function: Fortran has no reserved words)
 RESERVED = frozenset("""
 t var varp boundary iloop iprint printint message eqns1 io kutta solve pi degtorad
-radtodeg z coef rhs tinitial tfinal integstp abserr relerr sin cos tan asin acos atan
-atan2 sinh cosh tanh asinh acosh atanh exp log sqrt abs aint anint dble floor ceiling
-max min merge sign gamma erf
+radtodeg z coef rhs tinitial tfinal integstp abserr relerr
 """.split())
+_CALL = re.compile(r"(?<![A-Za-z0-9_])([A-Za-z][A-Za-z0-9_]*)\(")
 
 LONGEST_NAME = 63        # what gfortran accepts (Fortran 77 itself allowed 6)
 FIRST_UNIT = 21          # NAME.1 is unit 21, NAME.2 unit 22, ...; the .in file is 20
@@ -230,6 +230,20 @@ class FortranDynamicsProgram:
                 raise AutolevModelError(f"{self.plan.filename}: {other} and {name} are one "
                                         "name in Fortran, which ignores case")
 
+    def _check_calls(self, parts: list) -> None:
+        """A quantity named as an intrinsic function the program calls (EXP, with the
+        model's EXP(X)) would make the call an array reference: refused."""
+        texts = ["ATAN(1.0D0)"] + [t for part in parts for pair in part.statements
+                                   for t in pair] + [v for part in parts for v in part.values]
+        called = {m.group(1).upper() for text in texts for m in _CALL.finditer(text)}
+        clashes = sorted(name for name in set(self.names.values())
+                         if name.upper() in called)
+        if clashes:
+            raise AutolevModelError(
+                f"{self.plan.filename}: {', '.join(clashes)} cannot be a name in the "
+                "Fortran program, which calls the intrinsic function of that name; "
+                "rename it in the model")
+
     def text(self) -> str:
         p = self.plan
         constants = self._part(p.constant_statements, [], 0, persistent=True)
@@ -238,6 +252,7 @@ class FortranDynamicsProgram:
         rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
         equations = self._part(p.rhs_statements, rhs, constants.top)
         outputs = self._part(p.output_statements, shown_values(p), constants.top)
+        self._check_calls([constants, equations, outputs])
         lines = (self._main(self._lines(constants)) + _BETWEEN
                  + self._eqns1(self._lines(equations), equations.values) + _BETWEEN
                  + self._io(self._lines(outputs), outputs.values))
