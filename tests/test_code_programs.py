@@ -521,3 +521,18 @@ def test_a_model_autolev_code_built_is_kept_in_the_cache_of_built_models(tmp_pat
     path.write_text(ARM)
     assert main(["code", str(path), "--out", str(tmp_path / "out"), "-q"]) == 0
     assert len(list((tmp_path / "cache").glob(modelcache.PREFIX + "*.pickle"))) == 1
+
+
+def test_each_named_quantity_says_which_statement_of_the_model_defines_it(tmp_path):
+    model = tmp_path / "double_pendulum.al"
+    model.write_text((EXAMPLES / "double_pendulum.al").read_text().replace(
+        "Q2' = U2", "Q2' = U2  % a */ b"))
+    assert main(["code", str(model), "--out", str(tmp_path / "out"), "-q"]) == 0
+    lines = (tmp_path / "out" / "double_pendulum.c").read_text().splitlines()
+    at = lines.index("/* double_pendulum.al:20: Q1' = U1 */")
+    assert lines[at + 1] == "  Q1p = U1;"
+    # the statement without its comment; text from outside never ends the C comment
+    at = lines.index("/* double_pendulum.al:21: Q2' = U2 */")
+    assert lines[at + 1] == "  Q2p = U2;"
+    from autolev.programs.c import c_comment
+    assert c_comment("X = 1 */ Y \u00e9") == "/* X = 1 * / Y ? */"

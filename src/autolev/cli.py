@@ -601,7 +601,8 @@ def cmd_code(ns: argparse.Namespace) -> int:
         return 1
     out = Path(ns.out)
     try:
-        done = write_programs(model, out)
+        done = write_programs(model, out,
+                              source=path if path.suffix.lower() != ".py" else None)
     except OSError as exc:
         print(f"autolev code: cannot write into {out}: {exc.strerror or exc}",
               file=sys.stderr)

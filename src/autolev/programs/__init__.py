@@ -12,7 +12,7 @@ from .c import write_c
 from .c_dynamics import write_c_dynamics
 from .f import write_f_dynamics
 from .m import write_m, write_m_dynamics
-from .plan import plan_algebraic, plan_dynamics
+from .plan import plan_algebraic, plan_dynamics, statement_sources
 
 # (kind, extension) -> (plan, writer); anything else is reported as not written
 WRITERS = {
@@ -54,8 +54,10 @@ def relative_path(filename: str) -> Path:
     return Path(*parts)
 
 
-def program_texts(model, command) -> dict:
-    """{relative path: text} of one CODE command's program and its .in file."""
+def program_texts(model, command, sources=None) -> dict:
+    """{relative path: text} of one CODE command's program and its .in file;
+    `sources`: statement_sources() of the model's file, for comments that say which
+    statement defines each named quantity."""
     extension = os.path.splitext(command.filename)[1].lower()
     found = WRITERS.get((command.kind, extension))
     if found is None:
@@ -65,19 +67,23 @@ def program_texts(model, command) -> dict:
             "code writes CODE ALGEBRAIC and NONLINEAR programs in .c and .m, CODE DYNAMICS "
             "and ODE in .c, .m and Fortran .f/.for)")
     plan_of, write = found
-    return {relative_path(name): text for name, text in write(plan_of(model, command)).items()}
+    plan = plan_of(model, command)
+    plan.sources = dict(sources or {})
+    return {relative_path(name): text for name, text in write(plan).items()}
 
 
-def write_programs(model, out_dir, commands=None) -> list[Written]:
+def write_programs(model, out_dir, commands=None, source=None) -> list[Written]:
     """Write each CODE command's program (default: all of the model's) and the .in
-    file it reads into `out_dir`.  Every text is made before any file is written, and
+    file it reads into `out_dir`; `source`: the model's .al file, whose statements the
+    programs name in comments.  Every text is made before any file is written, and
     each file appears whole (written aside, then renamed)."""
+    sources = statement_sources(source) if source is not None else {}
     out = Path(out_dir)
     done = []
     texts = {}
     for command in (model.code_commands if commands is None else commands):
         try:
-            made = program_texts(model, command)
+            made = program_texts(model, command, sources)
         except AutolevModelError as exc:
             done.append(Written(command, [], str(exc)))
             continue

@@ -11,7 +11,7 @@ from ..runtime import units
 from ..runtime.numerics.files import header as output_header
 from ..runtime.printer import CodePrinter
 from .plan import (Plan, c_name, check_names, element_indices, input_file_name, printed,
-                   program_name, shown_values)
+                   program_name, shown_values, with_sources)
 
 # C's keywords, the standard names the program calls, and the program's own names
 RESERVED = frozenset("""
@@ -103,7 +103,7 @@ class CProgram:
         part = printed(p.statements, shown_values(p), self.where,
                        lambda where: CodePrinter("c", where), lambda k: f"z[{k}]")
         self.z_size = part.top
-        computed = _lines(part)
+        computed = _lines(part, p.sources)
         if p.solving is not None:
             computed = self._solution() + [""] + computed
         return computed, output_lines(p.files, p.encoded, part.values)
@@ -115,7 +115,7 @@ class CProgram:
                        lambda where: CodePrinter("c", where), lambda k: f"z[{k}]")
         self.z_size = max(self.z_size, part.top)
         matrix, right = part.values[:n * n], part.values[n * n:]
-        body = _lines(part)
+        body = _lines(part, self.plan.sources)
         for i in range(n):
             for j in range(n):
                 body += wrap(f"  COEF[{i}][{j}] = ", matrix[i * n + j])
@@ -220,8 +220,15 @@ class CProgram:
         return lines + ["", "}"]
 
 
-def _lines(part) -> list[str]:
-    return [line for target, text in part.statements for line in wrap(f"  {target} = ", text)]
+def _lines(part, sources: dict) -> list[str]:
+    return with_sources(part.statements, sources, c_comment,
+                        lambda target, text: wrap(f"  {target} = ", text))
+
+
+def c_comment(text: str) -> str:
+    """A comment line of the model's own text (which cannot end the comment)."""
+    safe = "".join(ch if " " <= ch <= "~" else "?" for ch in text).replace("*/", "* /")
+    return f"/* {safe} */"
 
 
 # -- pieces every C program has --------------------------------------------------------

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 from ..runtime import symbols as S
 from ..runtime.printer import CodePrinter
-from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, SOLVE, banner, by_name,
+from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, SOLVE, _lines, banner,
+                by_name,
                 encoded_declarations, farewell, headings_and_units, opening, output_lines,
                 wrap)
 from .plan import (DynamicsPlan, c_name, check_names, dynamics_names, input_file_name,
@@ -40,9 +41,9 @@ class CDynamicsProgram:
         equations = self._part(p.rhs_statements, rhs, constants.top)
         outputs = self._part(p.output_statements, shown_values(p), constants.top)
         kutta = [f"#define  NUMY      {self.n}        /* the states kutta integrates */"]
-        lines = (self._top() + self._main(self._lines(constants)) + ["", ""]
-                 + self._eqns1(self._lines(equations), equations.values) + ["", ""]
-                 + self._output(self._lines(outputs), outputs.values) + ["", ""] + kutta
+        lines = (self._top() + self._main(_lines(constants, p.sources)) + ["", ""]
+                 + self._eqns1(_lines(equations, p.sources), equations.values) + ["", ""]
+                 + self._output(_lines(outputs, p.sources), outputs.values) + ["", ""] + kutta
                  + _KUTTA + ["", ""] + SOLVE + ["", ""] + READING_AND_WRITING)
         return "\n".join(lines) + "\n"
 
@@ -55,10 +56,6 @@ class CDynamicsProgram:
         self.z_size = max(self.z_size, part.top)
         return part
 
-    @staticmethod
-    def _lines(part) -> list[str]:
-        return [line for target, text in part.statements
-                for line in wrap(f"  {target} = ", text)]
 
     # -- text -----------------------------------------------------------------------
     def _top(self) -> list[str]:

@@ -17,7 +17,7 @@ from ..runtime.errors import AutolevModelError
 from ..runtime.numerics.files import dir_text
 from ..runtime.printer import _ADD, _ATOM, _MUL, _POW, _UNARY, CodePrinter
 from .plan import (DynamicsPlan, check_names, input_file_name, printed, program_name,
-                   shown_values)
+                   shown_values, with_sources)
 
 # the names the program itself uses (an intrinsic function's name is refused only
 # where the program calls that function: Fortran has no reserved words)
@@ -266,10 +266,11 @@ class FortranDynamicsProgram:
         self.z_size = max(self.z_size, part.top)
         return part
 
-    @staticmethod
-    def _lines(part) -> list[str]:
-        return [line for target, text in part.statements
-                for line in statement(f"{target} = {text}")]
+    def _lines(self, part) -> list[str]:
+        return with_sources(part.statements, self.plan.sources,
+                            lambda source: "C**   " + "".join(
+                                ch if " " <= ch <= "~" else "?" for ch in source)[:66],
+                            lambda target, text: statement(f"{target} = {text}"))
 
     # -- declarations, the same in every program unit -------------------------------------
     def _commons(self) -> list[str]:

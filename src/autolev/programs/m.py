@@ -19,7 +19,7 @@ from ..runtime.numerics.files import header as output_header
 from ..runtime.numerics.inputs import format_value
 from ..runtime.printer import _ATOM, _POW, CodePrinter
 from .plan import (Plan, c_name, check_names, dynamics_names, element_indices, printed,
-                   program_name, shown_values)
+                   program_name, shown_values, with_sources)
 
 RESERVED = frozenset("""
 break case catch classdef continue else elseif end for function global if otherwise
@@ -126,6 +126,13 @@ _WRITE_OUTPUT = [
     "end"]
 
 
+def _m_lines(pairs: list, sources: dict) -> list[str]:
+    return with_sources(pairs, sources,
+                        lambda source: "% " + "".join(ch if " " <= ch <= "~" else "?"
+                                                      for ch in source),
+                        lambda target, text: [f"{target} = {text};"])
+
+
 def _showing(plan, texts: list, blank_line: bool = False) -> list[str]:
     """The lines that show the quantities (`texts`: the printed shown_values): one
     line of Output(n)=...; per OUTPUT file, the WriteOutput calls (file 1 also to the
@@ -216,10 +223,10 @@ class MProgram:
         solution = []
         if p.solving is not None:
             solution, size = self._solution(size)
-        constants = [f"{t} = {x};" for k, (t, x) in enumerate(part.statements)
-                     if not later[k]]
-        calculations = [f"{t} = {x};" for k, (t, x) in enumerate(part.statements)
-                        if later[k]]
+        constants = _m_lines([pair for k, pair in enumerate(part.statements)
+                              if not later[k]], p.sources)
+        calculations = _m_lines([pair for k, pair in enumerate(part.statements)
+                                 if later[k]], p.sources)
         globals_ = self._globals()
         lines = [f"function {self.function}",
                  f"% File  {self.name}  created by autolev {__version__} in the layout "
@@ -268,7 +275,7 @@ class MProgram:
         part = printed(solving.statements, solving.matrix + solving.right, self.where,
                        MatlabPrinter, lambda k: f"z({k})", offset)
         matrix, right = part.values[:n * n], part.values[n * n:]
-        body = [f"{t} = {x};" for t, x in part.statements]
+        body = _m_lines(part.statements, self.plan.sources)
         body += [f"COEF = zeros({n},{n});"]
         body += [f"COEF({i + 1},{j + 1}) = {matrix[i * n + j]};"
                  for i in range(n) for j in range(n)]
@@ -448,9 +455,8 @@ class MDynamicsProgram(MProgram):
         self.z_size = max(self.z_size, part.top)
         return part
 
-    @staticmethod
-    def _lines(part) -> list[str]:
-        return [f"{target} = {text};" for target, text in part.statements]
+    def _lines(self, part) -> list[str]:
+        return _m_lines(part.statements, self.plan.sources)
 
     def _globals(self) -> list[str]:
         p = self.plan

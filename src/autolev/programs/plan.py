@@ -64,6 +64,8 @@ class Plan:
     values: dict = field(default_factory=dict)     # input -> its Value (given, unit)
     solving: "Solving | None" = None
     sweep: "Sweep | None" = None
+    # {NAME (upper case, as the program spells it): "file:line: statement"}
+    sources: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -94,6 +96,37 @@ class Sweep:
     step: float
     count: int
     degrees: bool
+
+
+def statement_sources(path) -> dict:
+    """{NAME: "file:line: statement"}: the Autolev statement that defines each scalar
+    quantity of the model at `path` (the last one, when it is defined again; NAME as
+    the programs spell it, X' as XP, in upper case), for the comment before its line
+    in a program."""
+    from ..pipeline import parse
+    from pathlib import Path
+    sources = {}
+    for st in parse(path).statements:
+        target = getattr(st, "target", None)
+        if type(st).__name__ != "Assignment" or not hasattr(target, "primes"):
+            continue
+        text = " ".join((st.text or "").split())
+        text = text if len(text) <= 70 else text[:67] + "..."
+        sources[(target.name + "P" * target.primes).upper()] = \
+            f"{Path(st.span.file).name}:{st.span.line}: {text}"
+    return sources
+
+
+def with_sources(pairs, sources: dict, comment, line) -> list[str]:
+    """The lines of (target, text) assignments, each named one after a comment that
+    says which statement of the model defines it."""
+    out = []
+    for target, text in pairs:
+        source = sources.get(target.upper())
+        if source is not None:
+            out.append(comment(source))
+        out += line(target, text)
+    return out
 
 
 def program_name(filename: str) -> str:
@@ -210,6 +243,7 @@ class DynamicsPlan:
     degree_inputs: list
     time_unit: str | None = None
     options: tuple = ()         # SUBS / NOSUBS
+    sources: dict = field(default_factory=dict)     # as Plan's
 
 
 def plan_dynamics(model, command) -> DynamicsPlan:
