@@ -12,7 +12,7 @@ from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, SOLVE, _lines
                 encoded_declarations, farewell, headings_and_units, opening, output_lines,
                 wrap)
 from .plan import (DynamicsPlan, c_name, check_names, dynamics_names, input_file_name,
-                   printed, program_name, shown_values)
+                   print_dynamics, program_name)
 
 _DYNAMICS_RESERVED = RESERVED | frozenset(
     "var varp boundary kutta solve coef rhs sol iprint printint tinitial tfinal "
@@ -34,28 +34,16 @@ class CDynamicsProgram:
 
     def text(self) -> str:
         p = self.plan
-        constants = self._part(p.constant_statements, [], 0, persistent=True)
-        for sym, text in constants.kept.items():   # eqns1 and output read them there
-            self.names.setdefault(sym, text)
-        rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
-        equations = self._part(p.rhs_statements, rhs, constants.top)
-        outputs = self._part(p.output_statements, shown_values(p), constants.top)
+        parts = print_dynamics(p, self.names, lambda where: CodePrinter("c", where),
+                               lambda k: f"z[{k}]")
+        self.z_size = parts.z_size
         kutta = [f"#define  NUMY      {self.n}        /* the states kutta integrates */"]
-        lines = (self._top() + self._main(_lines(constants, p.sources)) + ["", ""]
-                 + self._eqns1(_lines(equations, p.sources), equations.values) + ["", ""]
-                 + self._output(_lines(outputs, p.sources), outputs.values) + ["", ""] + kutta
-                 + _KUTTA + ["", ""] + SOLVE + ["", ""] + READING_AND_WRITING)
+        lines = (self._top() + self._main(_lines(parts.constants, p.sources)) + ["", ""]
+                 + self._eqns1(_lines(parts.equations, p.sources), parts) + ["", ""]
+                 + self._output(_lines(parts.outputs, p.sources), parts.outputs.values)
+                 + ["", ""] + kutta + _KUTTA + ["", ""] + SOLVE + ["", ""]
+                 + READING_AND_WRITING)
         return "\n".join(lines) + "\n"
-
-    # -- the computation in three parts, each with its own z slots ---------------------
-    def _part(self, statements: list, values: list, offset: int, persistent: bool = False):
-        """A part of the program printed, its intermediates in z slots from
-        offset+1 (kept for the whole run when `persistent`: main's constants)."""
-        part = printed(statements, values, self.names, lambda where: CodePrinter("c", where),
-                       lambda k: f"z[{k}]", offset, persistent)
-        self.z_size = max(self.z_size, part.top)
-        return part
-
 
     # -- text -----------------------------------------------------------------------
     def _top(self) -> list[str]:
@@ -125,7 +113,7 @@ class CDynamicsProgram:
                   "  iprint--;", "  }", ""]
         return lines + farewell(infile, self.stem, self.nfiles)
 
-    def _eqns1(self, statements: list, values: list) -> list[str]:
+    def _eqns1(self, statements: list, parts) -> list[str]:
         p = self.plan
         lines = ["/* ................................ EQNS1 ............................. */",
                  "void     eqns1        (double T, double VAR[], double VARp[], char "
@@ -136,12 +124,9 @@ class CDynamicsProgram:
             lines += ["", "/* Quantities to be specified */"]
             lines += [f"  {c_name(s)} = 0;" for s in p.specified]
         lines += [""] + statements
-        values = list(values)
-        for x, rate in zip(p.states, p.rates):
-            text = values.pop(0) if rate is not None else None
-            if text is not None and text != c_name(S.derivative(x)):  # X' a state itself
-                lines += wrap(f"  {c_name(S.derivative(x))} = ", text)
-        mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
+        for target, text in parts.rates:
+            lines += wrap(f"  {target} = ", text)
+        mass, forcing = parts.mass, parts.forcing
         if self.m == 1:
             lines += wrap(f"  {c_name(p.unknowns[0])} = ", f"({forcing[0]})/({mass[0]})")
         elif self.m > 1:

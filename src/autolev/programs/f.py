@@ -16,8 +16,8 @@ from ..runtime import units
 from ..runtime.errors import AutolevModelError
 from ..runtime.numerics.files import dir_text
 from ..runtime.printer import _ADD, _ATOM, _MUL, _POW, _UNARY, CodePrinter
-from .plan import (DynamicsPlan, check_names, input_file_name, printed, program_name,
-                   shown_values, with_sources)
+from .plan import (DynamicsPlan, check_names, dynamics_names, input_file_name, print_dynamics,
+                   program_name, with_sources)
 
 # the names the program itself uses (an intrinsic function's name is refused only
 # where the program calls that function: Fortran has no reserved words)
@@ -211,12 +211,8 @@ class FortranDynamicsProgram:
         if len(plan.files) > 99 - FIRST_UNIT:
             raise AutolevModelError(f"{plan.filename}: at most {99 - FIRST_UNIT} OUTPUT "
                                     "files in a Fortran program (units 21 to 99)")
-        self.names = {s: f_name(s) for s in plan.constants + plan.states + plan.specified
-                      + plan.named + list(plan.unknowns)}
-        for x in plan.states:
-            self.names[S.derivative(x)] = f_name(S.derivative(x))
+        self.names = dynamics_names(plan, f_name)
         self._check_names()
-        self.names[S.TIME] = "T"
         self.z_size = 0
 
     def _check_names(self) -> None:
@@ -245,26 +241,16 @@ class FortranDynamicsProgram:
                 "rename it in the model")
 
     def text(self) -> str:
-        p = self.plan
-        constants = self._part(p.constant_statements, [], 0, persistent=True)
-        for sym, text in constants.kept.items():      # EQNS1 and IO read them there
-            self.names.setdefault(sym, text)
-        rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
-        equations = self._part(p.rhs_statements, rhs, constants.top)
-        outputs = self._part(p.output_statements, shown_values(p), constants.top)
-        self._check_calls([constants, equations, outputs])
-        lines = (self._main(self._lines(constants)) + _BETWEEN
-                 + self._eqns1(self._lines(equations), equations.values) + _BETWEEN
-                 + self._io(self._lines(outputs), outputs.values))
+        parts = print_dynamics(self.plan, self.names, FortranPrinter, lambda k: f"Z({k})",
+                               name_of=f_name)
+        self.z_size = parts.z_size
+        self._check_calls([parts.constants, parts.equations, parts.outputs])
+        lines = (self._main(self._lines(parts.constants)) + _BETWEEN
+                 + self._eqns1(self._lines(parts.equations), parts) + _BETWEEN
+                 + self._io(self._lines(parts.outputs), parts.outputs.values))
         if self.subroutines:
             lines += _BETWEEN + kutta_and_solve(self.n)
         return "\n".join(lines) + "\n"
-
-    def _part(self, statements: list, values: list, offset: int, persistent: bool = False):
-        part = printed(statements, values, self.names, FortranPrinter, lambda k: f"Z({k})",
-                       offset, persistent, name_of=f_name)
-        self.z_size = max(self.z_size, part.top)
-        return part
 
     def _lines(self, part) -> list[str]:
         return with_sources(part.statements, self.plan.sources,
@@ -402,7 +388,7 @@ class FortranDynamicsProgram:
             lines += statement(f"INTEGER          {integers}")
         return lines
 
-    def _eqns1(self, statements: list, values: list) -> list[str]:
+    def _eqns1(self, statements: list, parts) -> list[str]:
         p = self.plan
         lines = self._head("EQNS1(T, VAR, VARp, BOUNDARY)", "BOUNDARY")
         lines += statement("DIMENSION        VAR(*), VARp(*)") + self._commons() + [""]
@@ -412,12 +398,9 @@ class FortranDynamicsProgram:
             lines += [""] + comment("Quantities which were specified")
             lines += [f"      {f_name(s)} = 0" for s in p.specified]
         lines += [""] + statements
-        values = list(values)
-        for x, rate in zip(p.states, p.rates):
-            text = values.pop(0) if rate is not None else None
-            if text is not None and text != f_name(S.derivative(x)):  # X' a state itself
-                lines += statement(f"{f_name(S.derivative(x))} = {text}")
-        mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
+        for target, text in parts.rates:
+            lines += statement(f"{target} = {text}")
+        mass, forcing = parts.mass, parts.forcing
         if self.m == 1:
             lines += statement(f"{f_name(p.unknowns[0])} = ({forcing[0]})/({mass[0]})")
         elif self.m > 1:

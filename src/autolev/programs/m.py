@@ -18,8 +18,8 @@ from ..runtime.numerics import codegen
 from ..runtime.numerics.files import header as output_header
 from ..runtime.numerics.inputs import format_value
 from ..runtime.printer import _ATOM, _POW, CodePrinter
-from .plan import (Plan, c_name, check_names, dynamics_names, element_indices, printed,
-                   program_name, shown_values, with_sources)
+from .plan import (Plan, c_name, check_names, dynamics_names, element_indices,
+                   print_dynamics, printed, program_name, shown_values, with_sources)
 
 RESERVED = frozenset("""
 break case catch classdef continue else elseif end for function global if otherwise
@@ -388,12 +388,9 @@ class MDynamicsProgram(MProgram):
 
     def text(self) -> str:
         p = self.plan
-        constants = self._part(p.constant_statements, [], 0, persistent=True)
-        for sym, text in constants.kept.items():   # mdlDerivatives, mdlOutputs read them
-            self.names.setdefault(sym, text)
-        rhs = [r for r in p.rates if r is not None] + list(p.mass) + list(p.forcing)
-        equations = self._part(p.rhs_statements, rhs, constants.top)
-        outputs = self._part(p.output_statements, shown_values(p), constants.top)
+        parts = print_dynamics(p, self.names, MatlabPrinter, lambda k: f"z({k})")
+        constants, outputs = parts.constants, parts.outputs
+        self.z_size = parts.z_size
         g = self._globals()
         lines = [f"function {self.function}", "SolveOrdinaryDifferentialEquations",
                  f"% File  {self.name}  created by autolev {__version__} in the layout "
@@ -435,7 +432,7 @@ class MDynamicsProgram(MProgram):
                   "% mdlDerivatives: Calculates and returns the derivatives of the "
                   "continuous states"]
         lines += self._function("sys = mdlDerivatives(T,VAR,u)", g,
-                                self._derivatives(self._lines(equations), equations.values))
+                                self._derivatives(self._lines(parts.equations), parts))
         lines += ["", "", "", "%" + "=" * 75, "% mdlOutputs: Calculates and return the outputs"]
         lines += self._function("Output = mdlOutputs(T,VAR,u)", g,
                                 ["% Evaluate output quantities"] + self._lines(outputs)
@@ -446,14 +443,6 @@ class MDynamicsProgram(MProgram):
         lines += self._function("sys = mdlTerminate(T,VAR,u)", [],
                                 self._closing() + ["sys = [];"])
         return "\n".join(lines) + "\n"
-
-    def _part(self, statements: list, values: list, offset: int, persistent: bool = False):
-        """A part of the program printed, its intermediates in z slots from
-        offset+1 (kept for the whole run when `persistent`: the constants)."""
-        part = printed(statements, values, self.names, MatlabPrinter, lambda k: f"z({k})",
-                       offset, persistent)
-        self.z_size = max(self.z_size, part.top)
-        return part
 
     def _lines(self, part) -> list[str]:
         return _m_lines(part.statements, self.plan.sources)
@@ -489,7 +478,7 @@ class MDynamicsProgram(MProgram):
             rows.append(f"{key:<32}= {text + ';':<25}% {unit:<20}{what}")
         return rows + [_RULE]
 
-    def _derivatives(self, statements, values) -> list[str]:
+    def _derivatives(self, statements, parts) -> list[str]:
         p = self.plan
         lines = ["% Update variables after integration step"]
         lines += [f"{c_name(x)} = VAR({k});" for k, x in enumerate(p.states, 1)]
@@ -497,12 +486,8 @@ class MDynamicsProgram(MProgram):
             lines += ["", "% Quantities to be specified"]
             lines += [f"{c_name(s)} = 0;" for s in p.specified]
         lines += [""] + statements
-        values = list(values)
-        for x, rate in zip(p.states, p.rates):
-            text = values.pop(0) if rate is not None else None
-            if text is not None and text != c_name(S.derivative(x)):  # X' a state itself
-                lines.append(f"{c_name(S.derivative(x))} = {text};")
-        mass, forcing = values[:self.m * self.m], values[self.m * self.m:]
+        lines += [f"{target} = {text};" for target, text in parts.rates]
+        mass, forcing = parts.mass, parts.forcing
         if self.m:
             lines.append(f"COEF = zeros({self.m},{self.m});")
             for i in range(self.m):

@@ -458,6 +458,46 @@ def printed(statements: list, values: list, names: dict, printer_of, slot_text,
                    max(slots.values(), default=0) + offset)
 
 
+@dataclass
+class DynamicsParts:
+    """A DYNAMICS program's computation, printed in its three parts: the constants
+    (evaluated once, their z slots kept for the whole run), the derivatives and the
+    outputs (their slots above the constants'); the states' derivatives that have an
+    expression as (name, text), and the texts of M and F (M x = F)."""
+
+    constants: Printed
+    equations: Printed
+    outputs: Printed
+    rates: list
+    mass: list
+    forcing: list
+    z_size: int
+
+
+def print_dynamics(plan, names: dict, printer_of, slot_text, name_of=None) -> DynamicsParts:
+    """The plan's computation printed by printer_of(names) (`names` gets where each
+    constant is kept, as the derivatives and outputs read it)."""
+    name_of = name_of or c_name
+    constants = printed(plan.constant_statements, [], names, printer_of, slot_text, 0,
+                        persistent=True, name_of=name_of)
+    for sym, text in constants.kept.items():
+        names.setdefault(sym, text)
+    rhs = [r for r in plan.rates if r is not None] + list(plan.mass) + list(plan.forcing)
+    equations = printed(plan.rhs_statements, rhs, names, printer_of, slot_text,
+                        constants.top, name_of=name_of)
+    outputs = printed(plan.output_statements, shown_values(plan), names, printer_of,
+                      slot_text, constants.top, name_of=name_of)
+    values, rates = list(equations.values), []
+    for x, rate in zip(plan.states, plan.rates):
+        if rate is not None:
+            target, text = name_of(S.derivative(x)), values.pop(0)
+            if text != target:              # X' of a second-order X is a state itself
+                rates.append((target, text))
+    m = len(plan.unknowns)
+    return DynamicsParts(constants, equations, outputs, rates, values[:m * m],
+                         values[m * m:], max(equations.top, outputs.top, constants.top))
+
+
 def shown_values(plan) -> list:
     """The expressions output() shows: the OUTPUT columns, file by file, then the
     elements of the ENCODE arrays."""
@@ -465,15 +505,16 @@ def shown_values(plan) -> list:
         [x for e in plan.encoded for x in e.elements]
 
 
-def dynamics_names(plan) -> dict:
-    """{symbol: name} of what a DYNAMICS program keeps in named variables: constants,
-    states and their derivatives, specified quantities, named definitions, the
-    unknowns of M x = F, and T."""
-    names = {s: c_name(s) for s in plan.constants + plan.states + plan.specified
+def dynamics_names(plan, name_of=None) -> dict:
+    """{symbol: name_of(symbol)} (default c_name) of what a DYNAMICS program keeps in
+    named variables: constants, states and their derivatives, specified quantities,
+    named definitions, the unknowns of M x = F; and T."""
+    name_of = name_of or c_name
+    names = {s: name_of(s) for s in plan.constants + plan.states + plan.specified
              + plan.named + list(plan.unknowns)}
     names[S.TIME] = "T"
     for x in plan.states:
-        names[S.derivative(x)] = c_name(S.derivative(x))
+        names[S.derivative(x)] = name_of(S.derivative(x))
     return names
 
 
