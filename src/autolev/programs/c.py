@@ -74,16 +74,12 @@ class CProgram:
     """The text of one plan's C program."""
 
     def __init__(self, plan: Plan):
-        solving = plan.solving is not None or plan.sweep is not None
-        check_names(plan, RESERVED | (SOLVING_RESERVED if solving else frozenset()), "C")
+        check_names(plan, RESERVED | (SOLVING_RESERVED if plan.solves_or_sweeps()
+                                      else frozenset()), "C")
         self.plan = plan
         self.name = program_name(plan.filename)
         self.stem = self.name.rpartition(".")[0] or self.name
-        self.unknowns = list(plan.solving.unknowns) if plan.solving else []
-        # the linear equations' unknowns are computed, the nonlinear ones' read as guesses
-        self.computed = [u for u in self.unknowns if u not in plan.inputs]
-        if plan.sweep is not None and plan.sweep.target is not None:
-            self.computed.append(plan.sweep.target)      # set by main's loop
+        self.unknowns, self.computed = plan.unknowns, plan.computed
         self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named
                       + self.computed}
         self.nfiles = len(plan.files)

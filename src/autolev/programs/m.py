@@ -193,19 +193,13 @@ class MProgram:
     """The text of one plan's Matlab program."""
 
     def __init__(self, plan: Plan):
-        solving = plan.solving is not None or plan.sweep is not None
-        check_names(plan, RESERVED | (_SOLVING_RESERVED if solving else frozenset()),
-                    "Matlab")
+        check_names(plan, RESERVED | (_SOLVING_RESERVED if plan.solves_or_sweeps()
+                                      else frozenset()), "Matlab")
         self.plan = plan
         self.name = program_name(plan.filename)
         self.function = function_name(plan.filename)
         self.stem = self.name.rpartition(".")[0]
-        self.unknowns = list(plan.solving.unknowns) if plan.solving else []
-        # the linear equations' unknowns are computed, the nonlinear ones' read as
-        # guesses; a swept input is set by the main function's loop
-        self.computed = [u for u in self.unknowns if u not in plan.inputs]
-        if plan.sweep is not None and plan.sweep.target is not None:
-            self.computed.append(plan.sweep.target)
+        self.unknowns, self.computed = plan.unknowns, plan.computed
         self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named
                       + self.computed}
 

@@ -9,7 +9,6 @@ derivatives, z[] slots for intermediates, ENCODE arrays in ENCODE order.
 from __future__ import annotations
 
 import heapq
-import math
 import re
 from dataclasses import dataclass, field
 
@@ -21,7 +20,7 @@ from ..runtime.errors import AutolevModelError
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs
 from ..runtime.numerics.run import (encoded_values, equations_and_unknowns, output_columns,
-                                     solution_columns, solver_expressions)
+                                     solution_columns, solver_expressions, sweep_of)
 from ..runtime.numerics.system import NumericSystem, lower_derivative, read_order
 
 
@@ -66,6 +65,24 @@ class Plan:
     sweep: "Sweep | None" = None
     # {NAME (upper case, as the program spells it): "file:line: statement"}
     sources: dict = field(default_factory=dict)
+
+    @property
+    def unknowns(self) -> list:
+        """What the program solves for (empty unless it solves equations)."""
+        return list(self.solving.unknowns) if self.solving is not None else []
+
+    @property
+    def computed(self) -> list:
+        """What the program sets that it neither reads nor defines by name: the linear
+        equations' unknowns (the nonlinear ones' guesses are read) and a swept input
+        (set by main's loop)."""
+        found = [u for u in self.unknowns if u not in self.inputs]
+        if self.sweep is not None and self.sweep.target is not None:
+            found.append(self.sweep.target)
+        return found
+
+    def solves_or_sweeps(self) -> bool:
+        return self.solving is not None or self.sweep is not None
 
 
 @dataclass
@@ -169,20 +186,21 @@ def plan_algebraic(model, command) -> Plan:
         inputs = read_order(system.params, model)
         given = {"in": inputs, "s": list(system.specified), "u": list(system.solved)}
         prog = codegen.Program(given, system.output_exprs, defs, fixed).build(shared="all")
-        solving = None
+        solving, solver_named = None, []
         if extra:
+            n = len(unknowns)
             solver = codegen.Program(given, [e for v in extra.values() for e in v], defs,
                                      fixed).build(shared="all")
-            n = len(unknowns)
             solver_statements, solver_named = statements_of(solver)
-            solving = Solving("newton" if kind == "nonlinear" else "linear", list(unknowns),
-                              solver_statements, list(solver.outputs[:n * n]) if
-                              kind == "algebraic" else list(solver.outputs[n:n + n * n]),
-                              list(solver.outputs[n * n:]) if kind == "algebraic" else
-                              list(solver.outputs[:n]))
+            found = list(solver.outputs)
+            if "linear" in extra:       # the coefficients, then the constant terms
+                solving = Solving("linear", list(unknowns), solver_statements,
+                                  found[:n * n], found[n * n:])
+            else:                       # the residuals, then their Jacobian
+                solving = Solving("newton", list(unknowns), solver_statements, found[n:],
+                                  found[:n])
     statements, named = statements_of(prog)
-    if solving is not None:
-        named = list(dict.fromkeys(solver_named + named))
+    named = list(dict.fromkeys(solver_named + named))
     out_files, encoded_plan = _shown(system, prog.outputs)
     read = [s for s in inputs if command.sweep is None or s != command.sweep[0]]
     guesses = list(unknowns) if kind == "nonlinear" else []
@@ -201,17 +219,12 @@ def plan_algebraic(model, command) -> Plan:
 
 
 def _sweep_of(command, inputs: list, values: Inputs) -> Sweep | None:
-    """The sweep of CODE ALGEBRAIC() [Q = start, stop, step] (its points as
+    """The sweep of CODE ALGEBRAIC() [Q = start, stop, step] (its values as
     `autolev run` takes them)."""
-    if command.sweep is None:
+    found = sweep_of(command, values)
+    if found is None:
         return None
-    target, start, stop, step = command.sweep[:4]
-    unit = command.sweep[4] if len(command.sweep) > 4 else values.unit_of(target)
-    start, stop, step = float(start), float(stop), float(step)
-    if step == 0 or (stop - start) * step < 0:
-        raise AutolevModelError(f"the sweep of {target}: step {step:g} does not lead from "
-                                f"{start:g} to {stop:g}")
-    count = int(math.floor((stop - start) / step + 1e-9)) + 1
+    target, start, step, count, unit = found
     return Sweep(target if target in inputs else None, start, step, count,
                  units.is_degrees(unit))
 

@@ -569,8 +569,9 @@ def _find_symbol(model, name):
     raise AutolevModelError(f"specified: no quantity named {name!r}")
 
 
-def _sweep(model, command, inputs):
-    """[q deg = start, stop, step] of CODE ALGEBRAIC: (key, internal values, given)."""
+def sweep_of(command, inputs) -> tuple | None:
+    """[q deg = start, stop, step] of CODE ALGEBRAIC: (key, start, step, the number of
+    values, unit); the values are start + step*k, k = 0 ... count-1."""
     if command.sweep is None:
         return None
     target, start, stop, step = command.sweep[:4]
@@ -579,7 +580,15 @@ def _sweep(model, command, inputs):
     if step == 0 or (stop - start) * step < 0:
         raise AutolevModelError(f"the sweep of {target}: step {step:g} does not lead from "
                                 f"{start:g} to {stop:g}")
-    count = int(np.floor((stop - start) / step + 1e-9)) + 1
+    return target, start, step, int(np.floor((stop - start) / step + 1e-9)) + 1, unit
+
+
+def _sweep(model, command, inputs):
+    """[q deg = start, stop, step] of CODE ALGEBRAIC: (key, internal values, given)."""
+    found = sweep_of(command, inputs)
+    if found is None:
+        return None
+    target, start, step, count, unit = found
     given = start + step * np.arange(count)
     internal = np.array([units.to_internal(v, unit) for v in given])
     return target, internal, given
