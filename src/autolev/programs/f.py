@@ -15,7 +15,7 @@ from ..runtime import symbols as S
 from ..runtime import units
 from ..runtime.errors import AutolevModelError
 from ..runtime.numerics.files import dir_text
-from ..runtime.printer import _ADD, _ATOM, _MUL, _POW, _UNARY, CodePrinter
+from ..runtime.printer import _ADD, _ATOM, _POW, _UNARY, CodePrinter
 from .plan import (DynamicsPlan, check_names, dynamics_names, input_file_name, print_dynamics,
                    program_name, with_sources)
 
@@ -59,6 +59,8 @@ class FortranPrinter(CodePrinter):
     """The C printer's walk, in Fortran: `**`, upper-case intrinsics, D exponents, and
     a unary minus only where Fortran allows one (never right after an operator)."""
 
+    ONE = "1"               # an INTEGER numerator: X is DOUBLE PRECISION in 1/X
+
     def __init__(self, names: dict):
         super().__init__("c", names)
         self.funcs = _FUNCS
@@ -96,18 +98,10 @@ class FortranPrinter(CodePrinter):
             return "EXP(1.0D0)", _ATOM
         return double(float(e)), _ATOM
 
-    def _mul(self, e):
-        text, prec = super()._mul(e)
-        return ("1/" + text[4:] if text.startswith("1.0/") else text), prec
+    def _sqrt(self, base) -> str:
+        return f"SQRT({self._real(base)})"
 
-    def _pow(self, e):
-        base, exp = e.base, e.exp
-        if exp == sm.Rational(1, 2):
-            return f"SQRT({self._real(base)})", _ATOM
-        if exp == -1:
-            return f"1/{self._wrap(base, _POW)}", _MUL
-        if exp == sm.Rational(-1, 2):
-            return f"1/SQRT({self._real(base)})", _MUL
+    def _power(self, base, exp):
         return f"{self._wrap(base, _ATOM)}**{self._wrap(exp, _ATOM)}", _POW
 
     def _function(self, e):

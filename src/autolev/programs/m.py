@@ -66,11 +66,11 @@ class MatlabPrinter(CodePrinter):
         return super()._number(e)
 
     def _pow(self, e):
-        base, exp = e.base, e.exp
-        if exp == sm.Rational(1, 2):
-            return f"sqrt({self._p(base)[0]})", _ATOM
-        if exp == -1:
-            return f"1.0/{self._wrap(base, _POW)}", 2
+        if e.exp == sm.Rational(-1, 2):     # x^-0.5: Matlab's power, not 1.0/sqrt(x)
+            return self._power(e.base, e.exp)
+        return super()._pow(e)
+
+    def _power(self, base, exp):
         return f"{self._wrap(base, _ATOM)}^{self._wrap(exp, _ATOM)}", _POW
 
     def _function(self, e):

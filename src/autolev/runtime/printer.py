@@ -39,6 +39,8 @@ _ADD, _MUL, _UNARY, _POW, _ATOM = 1, 2, 3, 4, 5
 class CodePrinter:
     """Expressions as C or Python source; `names` maps symbols to their code."""
 
+    ONE = "1.0"             # the numerator of a reciprocal
+
     def __init__(self, language: str, names: dict):
         if language not in ("c", "python"):
             raise ValueError(language)
@@ -150,7 +152,7 @@ class CodePrinter:
                 num.append(f)
         if not den:
             return "*".join(self._wrap(f, _MUL) for f in num), _MUL
-        top = "*".join(self._wrap(f, _MUL) for f in num) if num else "1.0"
+        top = "*".join(self._wrap(f, _MUL) for f in num) if num else self.ONE
         if len(den) == 1:
             bottom = self._wrap(den[0], _POW)
         else:
@@ -160,11 +162,18 @@ class CodePrinter:
     def _pow(self, e):
         base, exp = e.base, e.exp
         if exp == sm.Rational(1, 2):
-            return f"{'sqrt' if self.c else 'math.sqrt'}({self._p(base)[0]})", _ATOM
+            return self._sqrt(base), _ATOM
         if exp == -1:
-            return f"1.0/{self._wrap(base, _POW)}", _MUL
+            return f"{self.ONE}/{self._wrap(base, _POW)}", _MUL
         if exp == sm.Rational(-1, 2):
-            return f"1.0/{'sqrt' if self.c else 'math.sqrt'}({self._p(base)[0]})", _MUL
+            return f"{self.ONE}/{self._sqrt(base)}", _MUL
+        return self._power(base, exp)
+
+    def _sqrt(self, base) -> str:
+        return f"{'sqrt' if self.c else 'math.sqrt'}({self._p(base)[0]})"
+
+    def _power(self, base, exp):
+        """base**exp for an exponent other than 1/2, -1 and -1/2."""
         if self.c:
             return f"pow({self._p(base)[0]}, {self._p(exp)[0]})", _ATOM
         if exp.is_Integer:
