@@ -20,10 +20,7 @@ from autolev.programs.plan import input_file_name, plan_algebraic
 from helpers import CORPUS, EXAMPLES, ROOT, SHARED
 from helpers import programs as P
 
-needs_cc = pytest.mark.skipif(P.compiler() is None, reason="no C compiler on this machine")
-needs_octave = pytest.mark.skipif(
-    P.octave() is None, reason="GNU Octave runs the Matlab programs; it is not installed "
-    "(Debian: apt install octave)")
+needs_cc, needs_octave = P.needs_cc, P.needs_octave
 
 ARM = """\
 CONSTANTS L1, L2
@@ -444,11 +441,6 @@ def _truth_matlab_runs():
             and (SHARED / "truth" / r["id"] / r["run"] / "inputs.txt").exists()]
 
 
-def _rows(path: Path):
-    return [[float(v) for v in line.split()] for line in path.read_text().splitlines()
-            if line.strip() and not line.startswith("%")]
-
-
 @pytest.mark.corpus
 @needs_octave
 @pytest.mark.parametrize("ident, run", _truth_matlab_runs())
@@ -472,9 +464,7 @@ def test_a_matlab_dynamics_program_writes_the_reference_runs_files(ident, run, t
                              re.M))
     stem = Path(commands[0].filename).stem
     (tmp_path / f"{stem}.m").write_text(P.with_table_values(text, values.get))
-    done = subprocess.run([P.octave(), "--no-gui", "--quiet", "--no-window-system",
-                           "--eval", stem], cwd=tmp_path, capture_output=True, text=True,
-                          timeout=900)
+    done = P.run_octave(stem, tmp_path)
     compared = 0
     written = {p.name.lower(): p for p in tmp_path.glob(f"{stem}.[0-9]*")}
     # the reference programs' files carry their repository's spelling of the name
@@ -482,7 +472,7 @@ def test_a_matlab_dynamics_program_writes_the_reference_runs_files(ident, run, t
             stem.lower() + ".") and p.suffix[1:].isdigit()):
         ours = written.get(ref.name.lower())
         assert ours is not None, done.stdout[-500:] + done.stderr[-500:]
-        a, b = _rows(ours), _rows(ref)
+        a, b = P.table_rows(ours), P.table_rows(ref)
         if len(b[0]) != len(a[0]):
             continue          # Autolev wrote no columns for an OUTPUT matrix (README)
         assert len(a) == len(b), ref.name

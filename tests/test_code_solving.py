@@ -4,7 +4,6 @@ over a swept input, and ODE(EQ, x'', y'') -- in C and in Matlab, checked against
 derived by hand and against `autolev run`."""
 import math
 import shutil
-import subprocess
 
 import pytest
 
@@ -12,10 +11,8 @@ from autolev.cli import main
 from helpers import CORPUS
 from helpers import programs as P
 
-needs_cc = pytest.mark.skipif(P.compiler() is None, reason="no C compiler on this machine")
-needs_octave = pytest.mark.skipif(
-    P.octave() is None, reason="GNU Octave runs the Matlab programs; it is not installed "
-    "(Debian: apt install octave)")
+needs_cc, needs_octave = P.needs_cc, P.needs_octave
+rows = P.table_rows
 
 LINEAR = """\
 VARIABLES X, Y
@@ -61,32 +58,15 @@ CODE ODE(EQ, X'') {name}
 """
 
 
-def rows(path):
-    out = []
-    for line in path.read_text().splitlines():
-        if line.startswith("%") or not line.strip():
-            continue
-        out.append([float(v) for v in line.split()])
-    return out
-
-
 def program_rows(tmp_path, text: str, name: str):
     """The model's program written, compiled (C) or run under Octave (Matlab), and the
     rows of its first output file; and the rows `autolev run` writes for the model."""
     model = tmp_path / "model.al"
     model.write_text(text.format(name=name))
     assert main(["code", str(model), "--out", str(tmp_path / "prog"), "-q"]) == 0
-    stem, _, ext = name.rpartition(".")
+    stem = name.rpartition(".")[0]
     folder = tmp_path / "prog"
-    if ext == "c":
-        built = subprocess.run([P.compiler(), "-Wall", "-Wextra", "-O2", "-o", "prog",
-                                name, "-lm"], cwd=folder, capture_output=True, text=True)
-        assert built.returncode == 0 and built.stderr == "", built.stderr
-        ran = subprocess.run(["./prog"], cwd=folder, capture_output=True, text=True)
-    else:
-        ran = subprocess.run([P.octave(), "--no-gui", "--quiet", "--no-window-system",
-                              "--eval", stem], cwd=folder, capture_output=True, text=True,
-                             timeout=600)
+    ran = P.run_program(folder / name, flags=("-Wall", "-Wextra", "-O2"))
     assert ran.returncode == 0, ran.stdout + ran.stderr
     assert main(["run", str(model), "--out", str(tmp_path / "run"), "-q"]) == 0
     return rows(folder / f"{stem}.1"), rows(tmp_path / "run" / f"{stem}.1")
@@ -172,17 +152,9 @@ def test_the_autolev_tutorials_programs_write_what_autolev_run_writes(example, t
     shutil.copy(source, model)
     assert main(["code", str(model), "--out", str(tmp_path / "prog"), "-q"]) == 0
     program = next(p for p in (tmp_path / "prog").iterdir() if p.suffix in (".c", ".m"))
-    if program.suffix == ".c":
-        built = subprocess.run([P.compiler(), "-O2", "-o", "prog", program.name, "-lm"],
-                               cwd=program.parent, capture_output=True, text=True)
-        assert built.returncode == 0, built.stderr
-        ran = subprocess.run(["./prog"], cwd=program.parent, capture_output=True, text=True)
-    elif P.octave() is None:
+    if program.suffix == ".m" and P.octave() is None:
         pytest.skip("GNU Octave is not installed")
-    else:
-        ran = subprocess.run([P.octave(), "--no-gui", "--quiet", "--no-window-system",
-                              "--eval", program.stem], cwd=program.parent,
-                             capture_output=True, text=True, timeout=600)
+    ran = P.run_program(program)
     assert ran.returncode == 0, ran.stdout + ran.stderr
     assert main(["run", str(model), "--out", str(tmp_path / "run"), "-q"]) == 0
     written = sorted((tmp_path / "run").glob(f"{program.stem}.[0-9]*"))

@@ -8,6 +8,8 @@ import shutil
 import subprocess
 from pathlib import Path
 
+import pytest
+
 from autolev.runtime.numerics import codegen
 
 
@@ -129,6 +131,37 @@ def octave():
     return shutil.which("octave")
 
 
+needs_cc = pytest.mark.skipif(compiler() is None, reason="no C compiler on this machine")
+needs_octave = pytest.mark.skipif(
+    octave() is None, reason="GNU Octave runs the Matlab programs; it is not installed "
+    "(Debian: apt install octave)")
+
+
+def run_octave(script: str, folder: Path, timeout: int = 900):
+    """Octave, without a window, running `script` (a program's name) in `folder`."""
+    return subprocess.run([octave(), "--no-gui", "--quiet", "--no-window-system", "--eval",
+                           script], cwd=folder, capture_output=True, text=True,
+                          timeout=timeout)
+
+
+def run_program(program: Path, flags=("-O2",)):
+    """A written program run in its folder: a .c one compiled with `flags` (and no
+    warning allowed), a .m one under Octave."""
+    folder = program.parent
+    if program.suffix == ".m":
+        return run_octave(program.stem, folder)
+    built = subprocess.run([compiler(), *flags, "-o", "prog", program.name, "-lm"],
+                           cwd=folder, capture_output=True, text=True)
+    assert built.returncode == 0 and built.stderr == "", built.stderr
+    return subprocess.run(["./prog"], cwd=folder, capture_output=True, text=True)
+
+
+def table_rows(path: Path) -> list:
+    """The rows of an output file in the C and Matlab programs' layout."""
+    return [[float(v) for v in line.split()] for line in path.read_text().splitlines()
+            if line.strip() and not line.startswith("%")]
+
+
 def with_table_values(text: str, value_of) -> str:
     """A Matlab program in Autolev's layout with each row of its ReadUserInput table
     (`NAME   =  value;   % ...`) given the text value_of(NAME) (None: kept)."""
@@ -159,8 +192,7 @@ def octave_encoded(program: Path, text: str, arrays: list[str], work: Path) -> d
     show = "".join(f"x = {a}; for k = 1:numel(x) printf('{a}[%d] %.17g\\n', k, x(k)); end; "
                    for a in arrays)
     script = f"global {' '.join(arrays)}; {program.stem}; {show}"
-    out = subprocess.run([octave(), "--no-gui", "--quiet", "--no-window-system", "--eval",
-                          script], cwd=work, capture_output=True, text=True, timeout=600)
+    out = run_octave(script, work, timeout=600)
     values = {}
     for line in out.stdout.splitlines():
         m = re.match(r"^(\w+\[\d+\]) (\S+)$", line)
