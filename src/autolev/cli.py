@@ -189,7 +189,25 @@ def cmd_run(ns: argparse.Namespace) -> int:
     commands = _commands_to_run(model, ns, path)
     if isinstance(commands, int):
         return commands
-    return _run_and_report(model, commands, overrides, ns, path)
+    specified = _specified_values(model, ns, "run")
+    if specified is None:
+        return 2
+    return _run_and_report(model, commands, overrides, specified, ns, path)
+
+
+def _specified_values(model, ns: argparse.Namespace, command: str) -> dict | None:
+    """--specified NAME=EXPR as {symbol: expression}, or None after printing what is
+    wrong with one."""
+    from .specified import SpecifiedValueError, specified_definitions
+    items = _name_values(ns.specified, "--specified")
+    if items is None:
+        return None
+    try:
+        return specified_definitions(model, items, "--specified")
+    except SpecifiedValueError as exc:
+        for d in exc.diagnostics:
+            print(f"autolev {command}: {d.format()}", file=sys.stderr)
+        return None
 
 
 def _run_overrides(ns: argparse.Namespace) -> dict | None:
@@ -242,8 +260,8 @@ def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list | int:
     return list(model.code_commands)
 
 
-def _run_and_report(model, commands: list, overrides: dict, ns: argparse.Namespace,
-                    path: Path) -> int:
+def _run_and_report(model, commands: list, overrides: dict, specified: dict,
+                    ns: argparse.Namespace, path: Path) -> int:
     from .runtime.numerics.files import safe_stem
     where = {id(c): w for c, w in zip(model.code_commands,
                                       getattr(model, "code_locations", []))}
@@ -265,7 +283,7 @@ def _run_and_report(model, commands: list, overrides: dict, ns: argparse.Namespa
     runs = model.run_commands(
         commands, out_dir, keep_going=True, method=ns.method, backend=ns.backend,
         infile=ns.infile, progress=None if ns.quiet else sys.stderr, overrides=overrides,
-        quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate),
+        specified=specified, quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate),
         missing_values="zero" if ns.zero_missing else "refuse")
     for done in runs:
         if done.error is not None:
@@ -331,7 +349,8 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
         print(f"{path}: not linearized", file=sys.stderr)
         return 1
     constraints = _constraint_values(model, ns.constraint)
-    if constraints is None:
+    specified = _specified_values(model, ns, "linearize")
+    if constraints is None or specified is None:
         return 2
 
     def at(extra):
@@ -342,7 +361,7 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
                                missing_values="zero" if ns.zero_missing else "refuse",
                                constraints=constraints or None,
                                dependent=_listed(ns.dependent) or None,
-                               locked=_listed(ns.lock) or None)
+                               locked=_listed(ns.lock) or None, specified=specified)
     try:
         if sweep is not None:
             return _linearize_sweep(path, sweep, at, ns.out, ns.plot)
@@ -657,6 +676,11 @@ def _model_value_options(parser) -> None:
                         "DEG input); repeatable")
     parser.add_argument("--in", dest="infile", metavar="FILE.in",
                         help="read input values from an Autolev .in file")
+    parser.add_argument("--specified", action="append", metavar="NAME=EXPR",
+                        help="a SPECIFIED quantity the model leaves undefined, as an "
+                        "Autolev expression of T, the model's constants and variables "
+                        "(e.g. 'F=3*SIN(2*PI*T)'); --set NAME=VALUE gives it a constant "
+                        "value; repeatable")
     parser.add_argument("--backend", default="auto", choices=("auto", "c", "python"),
                         help="compiled C when a compiler is found (auto), or pure Python")
     parser.add_argument("--zero-missing", action="store_true",

@@ -108,10 +108,14 @@ class SimulationMixin:
                  **overrides):
         """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
         CODE command, else a plain simulation) with INPUT values, `overrides`
-        (NAME=value in the quantity's unit, TFINAL=..., ...) and `specified` functions
-        ({name: f(t) or f(t, x)}).  Files are written only when out_dir is given.
-        `method`: the integrator (default: the one of the program Autolev wrote for the
-        CODE file: ode45, i.e. "rk45", for a .m file, else its Kutta-Merson).
+        (NAME=value in the quantity's unit, TFINAL=..., ...; a number for a specified
+        quantity the model leaves undefined is its value) and `specified` values for
+        those ({name: f(t) or f(t, x)}, called at every evaluation, or a number or a
+        sympy expression in the model's symbols, compiled into the equations as if the
+        model had defined it before its CODE command).  Files are written only when
+        out_dir is given.  `method`: the integrator (default: the one of the program
+        Autolev wrote for the CODE file: ode45, i.e. "rk45", for a .m file, else its
+        Kutta-Merson).
         `compiled=False` keeps the integration loop in Python even when the right-hand
         side is compiled C (Kutta-Merson and DOP853 otherwise run wholly in C).
         `constraints`: configuration constraints g(q) (sympy expressions in the model's
@@ -187,7 +191,8 @@ class SimulationMixin:
 
     def linearize(self, operating_point=None, inputs=None, *, code=None,
                   backend: str = "auto", infile=None, missing_values: str = "refuse",
-                  overrides=None, constraints=None, dependent=None, locked=None):
+                  overrides=None, constraints=None, dependent=None, locked=None,
+                  specified=None):
         """The equations of motion linearized at `operating_point` ({name: value} for
         constants, coordinates, speeds and specified quantities, in SI units and
         radians; the rest from INPUT, the .in file, or 0 for states and specified
@@ -201,12 +206,15 @@ class SimulationMixin:
         `simulate`): the point is put on them and the state reduced to the independent
         coordinates (`dependent`: the names of those they fix; default: chosen).
         `locked`: names of coordinates held at their values (with Q' = U: U = U' = 0,
-        U's row of Kane's equations dropped), as a rigid joint would."""
+        U's row of Kane's equations dropped), as a rigid joint would.  `specified`:
+        {name: number or sympy expression in the model's symbols} defining specified
+        quantities the model leaves undefined, as simulate's values for them."""
         from .numerics.linearize import linearize   # scipy.linalg: see linearize_symbolic
         try:
             return linearize(self, self.command_to_linearize(code), operating_point,
                              inputs, backend=backend, infile=infile,
                              missing_values=missing_values, overrides=overrides,
-                             constraints=constraints, dependent=dependent, locked=locked)
+                             constraints=constraints, dependent=dependent, locked=locked,
+                             specified=specified)
         finally:
             keep_built(self)

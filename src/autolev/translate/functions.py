@@ -74,12 +74,13 @@ def _plain(tr: Translator, c: ir.Call):
 
 
 # -- elementary scalar functions ---------------------------------------------------
-_SYMPY = {"SIN": "sm.sin", "COS": "sm.cos", "TAN": "sm.tan", "ASIN": "sm.asin",
-          "ACOS": "sm.acos", "ATAN": "sm.atan", "SINH": "sm.sinh", "COSH": "sm.cosh",
-          "TANH": "sm.tanh", "EXP": "sm.exp", "LOG": "sm.log", "SQRT": "sm.sqrt",
-          "ABS": "sm.Abs", "SIGN": "sm.sign", "FACTORIAL": "sm.factorial",
-          "CEIL": "sm.ceiling", "FLOOR": "sm.floor", "SEC": "sm.sec", "CSC": "sm.csc",
-          "COT": "sm.cot", "ASINH": "sm.asinh", "ACOSH": "sm.acosh", "ATANH": "sm.atanh"}
+# the elementary functions by the name of their sympy function (sm.<name>)
+ELEMENTARY = {"SIN": "sin", "COS": "cos", "TAN": "tan", "ASIN": "asin", "ACOS": "acos",
+              "ATAN": "atan", "SINH": "sinh", "COSH": "cosh", "TANH": "tanh", "EXP": "exp",
+              "LOG": "log", "SQRT": "sqrt", "ABS": "Abs", "SIGN": "sign",
+              "FACTORIAL": "factorial", "CEIL": "ceiling", "FLOOR": "floor", "SEC": "sec",
+              "CSC": "csc", "COT": "cot", "ASINH": "asinh", "ACOSH": "acosh",
+              "ATANH": "atanh"}
 
 
 # the same functions in double precision, to catch a number beyond a double's range
@@ -94,7 +95,7 @@ def _elementary(tr: Translator, c: ir.Call) -> Typed:
     (a,) = nargs(tr, c, 1)
     x = tr.expr(a)              # once: translating an argument twice is exponential
     name = c.name.upper()
-    fn = _SYMPY[name]
+    fn = "sm." + ELEMENTARY[name]
     if fn == "sm.factorial" and x.exact is not None and x.exact > MAX_FACTORIAL:
         raise tr.error(f"FACTORIAL({x.exact}) has more than a thousand digits; at most "
                        f"FACTORIAL({MAX_FACTORIAL}) is computed exactly", c, "T005")
@@ -126,7 +127,7 @@ def _double_value(tr: Translator, c: ir.Call, name: str, x: Typed) -> float | No
     return r
 
 
-for _n in _SYMPY:
+for _n in ELEMENTARY:
     FUNCTIONS[_n] = _elementary
 
 

@@ -154,7 +154,7 @@ class Inputs:
             known = ", ".join(display_name(k) for k in self.names)
             raise AutolevModelError(f"no input named {name!r} (inputs: {known})")
         if isinstance(value, str):
-            number = _parse_number(value)
+            number = parse_number(value)
             if number is None:
                 raise AutolevModelError(f"{name}={value}: not a number")
             value = number
@@ -211,7 +211,7 @@ class Inputs:
             raw = line[59:].strip()
             if not name or name.lower() == "quantity" or set(line[:58]) <= {"-", " "}:
                 continue
-            value = _parse_number(raw)
+            value = parse_number(raw)
             if value is None:
                 raise InputFileError(f"{path}:{lineno}:60: expected a number for {name}, "
                                      f"found {raw!r}")
@@ -328,7 +328,7 @@ def some_names(names, shown: int = 8) -> str:
     return ", ".join(names[:shown]) + (f", ... and {more} more" if more > 0 else "")
 
 
-def _parse_number(text: str):
+def parse_number(text: str):
     t = text.strip().replace("D", "E").replace("d", "e")
     try:
         v = float(t)

@@ -31,7 +31,7 @@ from ..errors import AutolevModelError
 from . import codegen
 from .inputs import display_name
 from .projection import Projector
-from .run import prepare_command
+from .run import given_specified, prepare_command
 from .system import NumericSystem, compile_program
 
 
@@ -74,7 +74,8 @@ class Linearization:
 
 def linearize(model, command, operating_point=None, inputs=None, backend: str = "auto",
               infile=None, missing_values: str = "refuse", overrides=None,
-              constraints=None, dependent=None, locked=None) -> Linearization:
+              constraints=None, dependent=None, locked=None,
+              specified=None) -> Linearization:
     """The linearization of `command` (a CODE DYNAMICS) at `operating_point`: {name:
     value} for the model's constants, coordinates, speeds and specified quantities, in
     SI units and radians.  Names it leaves out take their INPUT (or .in) values;
@@ -86,8 +87,15 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     symbols, g = 0 on the motion); `dependent`: the names of the coordinates they fix
     (default: chosen where G is best conditioned).  `locked`: names of coordinates held
     at their values (a rigid joint: Q' = U, with U and U' then 0 and U's row of Kane's
-    equations dropped); the state leaves them out."""
+    equations dropped); the state leaves them out.  `specified`: {name: number or sympy
+    expression} defining specified quantities (see run.given_specified); they are then
+    no inputs."""
     command, held = _program_to_linearize(model, command, locked)
+    command, functions, overrides = given_specified(model, command, specified, overrides)
+    if functions:
+        raise AutolevModelError("specified: a linearization takes values or expressions "
+                                "for specified quantities, not Python functions: "
+                                + ", ".join(map(display_name, functions)))
     point = dict(operating_point or {})
     for q in held:                # a locked coordinate without a value is held at 0
         if q not in command.inputs and not any(

@@ -12,7 +12,7 @@ import sys
 import time
 import warnings
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -24,7 +24,7 @@ from ..calculus import NumericPoint, is_real_number
 from ..errors import AutolevModelError, MissingValues
 from ..vector import Vector
 from .files import RunFiles, dir_text, encoded_text, safe_stem, termination_cleans_up
-from .inputs import INTEGRATION, Inputs, display_name, some_names
+from .inputs import INTEGRATION, Inputs, display_name, parse_number, some_names
 from .integrate import IntegrationFailure, Progress, Schedule, integrate
 from .projection import Projector, constants_needed, integrate_projected
 from .system import Column, NumericSystem, SingularMassMatrix, scaled_condition
@@ -294,6 +294,7 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
     `locked`: coordinates held fixed (see NumericSystem)."""
     if missing_values not in ("refuse", "zero"):
         raise ValueError(f"missing_values: 'refuse' or 'zero', not {missing_values!r}")
+    command, specified, overrides = given_specified(model, command, specified, overrides)
     kind = command.kind
     stem = safe_stem(command.filename)
     files = output_columns(model, command)
@@ -321,6 +322,61 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
     system.set_parameters(inputs.vector(system.params))
     return Prepared(system, inputs, kinds, stem, files, encoded, unknowns, sweep,
                     extra_constants, build_seconds)
+
+
+def given_specified(model, command, specified, overrides):
+    """`command` as if the model had defined, before it, the SPECIFIED quantities it
+    leaves undefined and that are given a value -- a number or a sympy expression in
+    the model's symbols in `specified`, or a number among the `overrides` (in the
+    quantity's unit) -- as Autolev's user edited the program's "Quantities to be
+    specified"; with the functions of `specified` (callables f(t) or f(t, x)) and the
+    overrides that are left."""
+    given, functions, rest = {}, {}, {}
+    for name, value in (specified or {}).items():
+        sym = _find_symbol(model, name)
+        if callable(value) and not isinstance(value, sm.Basic):
+            functions[sym] = value
+        else:
+            given[sym] = sm.sympify(value)
+    for name, value in (overrides or {}).items():
+        sym = _undefined_specified(model, name)
+        if sym is None:
+            rest[name] = value
+            continue
+        number = _override_number(name, value)
+        given[sym] = sm.Float(units.to_internal(number, command.units.get(sym)
+                                                 or model.unit_of.get(sym)))
+    if not given:
+        return command, functions, rest
+    kept = model.derived.table("commands with specified quantities given")
+    key = (id(command), tuple(sorted((str(k), sm.srepr(v)) for k, v in given.items())))
+    entry = kept.get(key)
+    if entry is None or entry[0] is not command:
+        definitions = (model.defs.user_definitions() if command.definitions is None
+                       else command.definitions)
+        entry = kept[key] = (command, replace(command, definitions={**definitions,
+                                                                   **given}))
+    return entry[1], functions, rest
+
+
+def _undefined_specified(model, name: str):
+    """The SPECIFIED quantity `name` (Q1', Q1P) names when the model leaves it undefined."""
+    if not isinstance(name, str) or not names_a_quantity(model, name) \
+            or name.strip().upper() in INTEGRATION:
+        return None
+    try:
+        sym = _find_symbol(model, name)
+    except AutolevModelError:
+        return None
+    base = S.base_and_order(sym)[0]
+    return sym if model.kind_of(base) == "specified" and sym not in model.defs.rhs else None
+
+
+def _override_number(name: str, value) -> float:
+    number = parse_number(value) if isinstance(value, str) else float(value)
+    if number is None:
+        raise AutolevModelError(f"{name}={value}: not a number")
+    return number
 
 
 def solution_columns(command, files: list, unknowns: list) -> list:
@@ -608,49 +664,73 @@ def _degree_rates_note(inputs, names) -> None:
 
 def _inertia_problems(system, inputs, zero: bool = True) -> list[str]:
     """Bodies and particles whose mass (or a principal inertia) is negative or not a
-    number (and, with `zero`, zero) with these inputs: what makes a mass matrix
-    singular or meaningless."""
+    number (and, with `zero`, zero) as the run uses them: a constant its equations do
+    not contain (a planar model's I11 or I12) counts as 0 and never had a value chosen
+    for it, and a mass or inertia holding one is not called zero or singular."""
     m = system.model
     values = {p: inputs.internal(p) for p in system.params}
-    point = NumericPoint(m.defs, values)
+    unused = set()
+
+    def primitives(e):
+        out = set()
+        for f in sm.sympify(e).free_symbols:
+            out |= m.defs.primitive_deps(f) if f in m.defs.rhs else {f}
+        return out
+
+    def unused_in(e) -> bool:
+        found = {f for f in primitives(e)
+                 if f not in values and f not in m.defs.varying and f != S.TIME}
+        unused.update(found)
+        return bool(found)
+
+    masses = [(f"particle {p.name}", p.mass, None) for p in m.particles_list
+              if p.mass is not None]
+    for b in m.bodies_list:
+        if b.mass is not None:
+            try:
+                inertia = b.central_inertia.to_matrix(b)
+            except AutolevModelError:
+                inertia = None
+            masses.append((f"body {b.name}", b.mass, inertia))
+    # every entry looked at (no short cut): each unused constant must get its 0
+    partial = {name: (unused_in(mass), inertia is not None
+                      and any([unused_in(e) for e in inertia]))
+               for name, mass, inertia in masses}
+    point = NumericPoint(m.defs, {**values, **{f: 0.0 for f in unused}})
 
     def num(e):
         z = m.defs.numeric(sm.sympify(e), point)
         return z.real if is_real_number(z) else math.nan
 
     out = []
-    for p in m.particles_list:
-        if p.mass is not None:
-            v = num(p.mass)
-            if not v > 0 and (zero or v != 0):
-                out.append(f"particle {p.name} has mass {v:g}")
-    for b in m.bodies_list:
-        if b.mass is None:
-            continue
-        mass = num(b.mass)
-        try:
-            inertia = b.central_inertia.to_matrix(b)
-        except AutolevModelError:
-            inertia = None
-        principal = []
-        if inertia is not None:
-            numbers = np.array([[num(inertia[i, j]) for j in range(3)] for i in range(3)])
-            if np.all(np.isfinite(numbers)):
-                principal = list(np.linalg.eigvalsh((numbers + numbers.T) / 2))
-            else:
-                principal = [math.nan]
-        if not mass > 0 and (zero or mass != 0):
-            what = f"body {b.name} has mass {mass:g}"
+    for name, mass_expr, inertia in masses:
+        mass_partial, inertia_partial = partial[name]
+        mass = num(mass_expr)
+        principal = [] if inertia is None else _principal(
+            np.array([[num(inertia[i, j]) for j in range(3)] for i in range(3)]))
+        zero_mass = zero and not mass_partial
+        if not mass > 0 and (zero_mass or mass != 0):
+            what = f"{name} has mass {mass:g}"
             if principal and not any(d > 0 for d in principal):
                 what += " and no inertia"
             out.append(what)
-        elif principal and any(not d >= -1e-12 * max(map(abs, principal)) for d in principal):
-            out.append(f"body {b.name} has principal inertias "
+        elif principal and any(d < 0 or math.isnan(d) for d in principal):
+            out.append(f"{name} has principal inertias "
                        + ", ".join(f"{d:.6g}" for d in principal))
-        elif zero and len(principal) == 3 and min(principal) <= 1e-12 * max(principal):
-            out.append(f"body {b.name} has a singular central inertia (principal inertias "
-                       + ", ".join(f"{max(d, 0.0):.6g}" for d in principal) + ")")
+        elif zero and not inertia_partial and len(principal) == 3 and min(principal) == 0:
+            out.append(f"{name} has a singular central inertia (principal inertias "
+                       + ", ".join(f"{d:.6g}" for d in principal) + ")")
     return out
+
+
+def _principal(numbers) -> list[float]:
+    """The principal inertias of a numeric inertia matrix, those within rounding of
+    0 (1e-12 of the largest) shown as 0; [nan] when an entry is not a number."""
+    if not np.all(np.isfinite(numbers)):
+        return [math.nan]
+    principal = np.linalg.eigvalsh((numbers + numbers.T) / 2)
+    scale = max(float(np.abs(principal).max()), 0.0)
+    return [0.0 if abs(d) <= 1e-12 * scale else float(d) for d in principal]
 
 
 def _zero_hint(zero_params) -> str:

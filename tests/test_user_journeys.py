@@ -1,0 +1,172 @@
+"""The first steps users took off the tested paths (issue 29): each test a rule the
+commands keep on models of every kind, with values derived independently."""
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import autolev
+
+# a compound pendulum in the plane N1-N2 whose body keeps a full 3-D INERTIA statement:
+# its planar equations read only I33 of the six
+PLANAR_FULL_INERTIA = """NEWTONIAN N
+BODIES A
+MOTIONVARIABLES' Q', U'
+CONSTANTS L, M, G, I11, I22, I33, I12, I23, I31
+SIMPROT(N, A, 3, Q)
+Q' = U
+W_A_N> = U*N3>
+P_NO_AO> = L*A1>
+V_AO_N> = DT(P_NO_AO>, N)
+MASS A = M
+INERTIA A, I11, I22, I33, I12, I23, I31
+GRAVITY(G*N1>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT L=1.5, M=2, G=9.81, I33=0.3, Q=40 DEG, U=0, TFINAL=2, INTEGSTP=0.05
+OUTPUT T, Q, U
+CODE DYNAMICS() planar.c
+"""
+
+
+def cli(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "autolev", *map(str, args)],
+                          capture_output=True, text=True, cwd=cwd)
+
+
+def compound_pendulum(t_end, q0, m=2.0, length=1.5, g=9.81, i33=0.3):
+    """Q(t), U(t) of (I33 + M L^2) Q'' = -M G L sin Q, integrated by scipy alone."""
+    k = m * g * length / (i33 + m * length ** 2)
+    sol = solve_ivp(lambda t, y: [y[1], -k * math.sin(y[0])], (0, t_end), [q0, 0.0],
+                    rtol=1e-11, atol=1e-12, dense_output=True)
+    return sol.sol
+
+
+@pytest.fixture
+def planar(tmp_path):
+    path = tmp_path / "planar.al"
+    path.write_text(PLANAR_FULL_INERTIA)
+    return path
+
+
+def test_a_planar_model_with_a_full_inertia_runs_without_the_constants_it_never_reads(
+        planar, tmp_path):
+    # I11, I22, I12, I23, I31 have no value anywhere: the run reads none of them, so
+    # the check of the inertia must not judge values it would have to invent
+    r = cli("run", planar, "--out", tmp_path / "out")
+    assert r.returncode == 0, r.stderr
+    rows = np.loadtxt(tmp_path / "out" / "planar.1", comments="%")
+    exact = compound_pendulum(2.0, math.radians(40))
+    assert np.allclose(rows[:, 1:], exact(rows[:, 0]).T, atol=1e-6)
+
+
+def test_products_of_inertia_the_run_never_reads_do_not_refuse_it(planar):
+    # given values that make the 3-D inertia indefinite: a planar run never sees them
+    text = PLANAR_FULL_INERTIA.replace("I33=0.3,", "I33=0.3, I11=0.1, I22=0.1, I12=5,")
+    planar.write_text(text)
+    r = autolev.load(planar).simulate()
+    assert r.ok
+    exact = compound_pendulum(2.0, math.radians(40))
+    assert np.allclose(r.states[-1], exact(2.0), atol=1e-6)
+
+
+def test_an_inertia_the_run_reads_is_still_judged(planar):
+    # I33 is in the planar equations: a negative one is refused before the build
+    planar.write_text(PLANAR_FULL_INERTIA.replace("I33=0.3", "I33=-4"))
+    with pytest.raises(autolev.runtime.AutolevModelError,
+                       match="body A has principal inertias -4"):
+        autolev.load(planar).simulate()
+
+
+# a unit mass on a unit spring driven by a SPECIFIED force the model leaves undefined
+DRIVEN = """NEWTONIAN N
+PARTICLES P
+MOTIONVARIABLES' X', V'
+CONSTANTS M, K
+SPECIFIED F
+X' = V
+P_NO_P> = X*N1>
+V_P_N> = V*N1>
+MASS P = M
+FORCE(P, (F - K*X)*N1>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT M=1, K=1, X=0, V=0, TFINAL=2, INTEGSTP=0.25
+OUTPUT T, X, F
+CODE DYNAMICS() driven.c
+"""
+
+
+@pytest.fixture
+def driven(tmp_path):
+    path = tmp_path / "driven.al"
+    path.write_text(DRIVEN)
+    return path
+
+
+def rows_of(path):
+    return np.loadtxt(path, comments="%", ndmin=2)
+
+
+def test_set_gives_a_specified_quantity_a_constant_value(driven, tmp_path):
+    # X'' + X = 2 from rest: X = 2 (1 - cos T)
+    r = cli("run", driven, "--set", "F=2", "--out", tmp_path / "o")
+    assert r.returncode == 0, r.stderr
+    assert "ignored" not in r.stderr and "set to 0" not in r.stderr
+    rows = rows_of(tmp_path / "o" / "driven.1")
+    assert np.allclose(rows[:, 1], 2 * (1 - np.cos(rows[:, 0])), atol=1e-7)
+    assert np.all(rows[:, 2] == 2)
+
+
+def test_specified_gives_a_function_of_time(driven, tmp_path):
+    # X'' + X = 3 sin 2T from rest: X = 2 sin T - sin 2T
+    r = cli("run", driven, "--specified", "F=3*SIN(2*T)", "--out", tmp_path / "o")
+    assert r.returncode == 0, r.stderr
+    t, x, f = rows_of(tmp_path / "o" / "driven.1").T
+    assert np.allclose(x, 2 * np.sin(t) - np.sin(2 * t), atol=1e-7)
+    assert np.allclose(f, 3 * np.sin(2 * t), atol=1e-12)
+
+
+def test_the_api_takes_the_same_values(driven):
+    model = autolev.load(driven)
+    by_override = model.simulate(F=2)
+    by_value = model.simulate(specified={"F": 2.0})
+    t = by_value.t
+    assert np.allclose(by_override["X"], 2 * (1 - np.cos(t)), atol=1e-7)
+    assert np.allclose(by_value["X"], by_override["X"], atol=1e-12)
+
+
+def test_a_specified_expression_of_the_state_is_linearized_with_it(driven):
+    # F = -3 X: X'' = -4 X, eigenvalues +-2i; F is then no input of B
+    r = cli("linearize", driven, "--specified", "F=-3*X")
+    assert r.returncode == 0, r.stderr
+    assert "inputs: none" in r.stdout
+    rows = [line.split(",") for line in r.stdout.splitlines()[2:]]
+    assert sorted(float(im) for _, im, *_ in rows) == pytest.approx([-2, 2])
+    assert all(abs(float(re)) < 1e-12 for re, *_ in rows)
+
+
+def test_an_algebraic_output_of_a_specified_quantity_takes_its_value(tmp_path):
+    path = tmp_path / "alg.al"
+    path.write_text("SPECIFIED F\nCONSTANTS C\nY = C*F^2\nINPUT C=3\nOUTPUT Y\n"
+                    "CODE ALGEBRAIC() alg.c\n")
+    r = cli("run", path, "--set", "F=2", "--out", tmp_path / "o")
+    assert r.returncode == 0, r.stderr
+    assert rows_of(tmp_path / "o" / "alg.1")[0, 0] == 12
+
+
+@pytest.mark.parametrize("value, message", [
+    ("M=3", "M is not a SPECIFIED quantity of the model that it leaves undefined"),
+    ("F=3*SIN(2*T", "expected ')'"),
+    ("F=N1>", "a vector cannot be a specified quantity's value"),
+    ("F=3*Q9", "Q9 is not a quantity of the model"),
+])
+def test_a_value_that_cannot_be_a_specified_one_is_a_usage_error(driven, tmp_path, value,
+                                                                   message):
+    r = cli("run", driven, "--specified", value, "--out", tmp_path / "o")
+    assert r.returncode == 2
+    assert message in r.stderr and "--specified:1:" in r.stderr
+    assert not (tmp_path / "o").exists()
