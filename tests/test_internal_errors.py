@@ -122,3 +122,15 @@ def test_the_cli_says_out_of_memory_without_a_traceback(tiny, monkeypatch, capsy
     assert main(["run", str(tiny), "--out", str(tiny.parent)]) == 1
     err = capsys.readouterr().err
     assert "out of memory" in err and "Traceback" not in err and "internal error" not in err
+
+
+def test_an_internal_error_crosses_to_another_process_whole():
+    # a bench's or a sweep's worker sends it back pickled: it was unreadable there
+    import pickle
+
+    from autolev.errors import AutolevInternalError
+    sent = AutolevInternalError("m.al:3:1", "building the model", KeyError("Z9"))
+    got = pickle.loads(pickle.dumps(sent))
+    assert type(got) is AutolevInternalError
+    assert (str(got), got.location, got.did, got.error) == (
+        str(sent), "m.al:3:1", "building the model", "KeyError: 'Z9'")

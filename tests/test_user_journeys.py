@@ -170,3 +170,68 @@ def test_a_value_that_cannot_be_a_specified_one_is_a_usage_error(driven, tmp_pat
     assert r.returncode == 2
     assert message in r.stderr and "--specified:1:" in r.stderr
     assert not (tmp_path / "o").exists()
+
+
+def test_run_and_code_read_the_time_of_an_algebraic_program_alike(tmp_path):
+    path = tmp_path / "clock.al"
+    path.write_text("CONSTANTS A\nY = A*T\nZ = A^2\nINPUT A=2\nOUTPUT Y, Z\n"
+                    "CODE ALGEBRAIC() clock.c\n")
+    note = ("CODE ALGEBRAIC clock.c: Y depends on T, which a program without time reads "
+            "from its .in file as it reads its variables: T = 0")
+    ran = cli("run", path, "--out", tmp_path / "run")
+    assert ran.returncode == 0 and note in ran.stderr
+    assert rows_of(tmp_path / "run" / "clock.1").tolist() == [[0.0, 4.0]]
+    given = cli("run", path, "--set", "T=3", "--out", tmp_path / "given")
+    assert given.returncode == 0 and note not in given.stderr
+    assert rows_of(tmp_path / "given" / "clock.1").tolist() == [[6.0, 4.0]]
+    coded = cli("code", path, "--out", tmp_path / "code")
+    assert coded.returncode == 0 and note in coded.stderr
+    # the program reads T after A, as the run's .in file lists it
+    in_lines = (tmp_path / "given" / "clock.in").read_text().splitlines()
+    assert [line[21:42].strip() for line in in_lines
+            if line.startswith("Constant")] == ["A", "T"]
+    program = (tmp_path / "code" / "clock.c").read_text()
+    assert "readf(Fptr[0],&A,&T,NULL);" in program
+
+
+# SymPy's examples name a torque T: declared, it is the model's quantity, not the time
+TORQUE_T = DRIVEN.replace("SPECIFIED F", "SPECIFIED T").replace("(F - K*X)", "(T - K*X)") \
+    .replace("OUTPUT T, X, F", "OUTPUT T, X")
+
+
+def test_a_declared_t_is_named_at_its_declaration_in_check_and_run(tmp_path):
+    path = tmp_path / "torque.al"
+    path.write_text(TORQUE_T)
+    warning = (f"{path}:5:11: warning: 'T' is declared as a specified quantity: in this "
+               "model T is that specified quantity, not the time")
+    checked = cli("check", path)
+    assert checked.returncode == 0 and warning in checked.stdout + checked.stderr
+    ran = cli("run", path, "--set", "T=2", "--out", tmp_path / "o")
+    assert ran.returncode == 0 and warning in ran.stderr
+    # OUTPUT T prints the torque; X'' + X = 2 from rest is 2 (1 - cos t) at the run's t
+    rows = rows_of(tmp_path / "o" / "driven.1")
+    t = np.arange(len(rows)) * 0.25
+    assert np.all(rows[:, 0] == 2)
+    assert np.allclose(rows[:, 1], 2 * (1 - np.cos(t)), atol=1e-7)
+
+
+def test_a_run_is_plotted_against_its_time_not_a_column_named_t(tmp_path):
+    pytest.importorskip("matplotlib")
+    from autolev.plots import figure
+    path = tmp_path / "torque.al"
+    path.write_text(TORQUE_T)
+    r = autolev.load(path).simulate(T=2)
+    fig = figure(r.outputs[0], r.t)
+    lines = {line.get_label(): line for ax in fig.axes for line in ax.get_lines()}
+    assert set(lines) == {"T", "X"}            # the torque is data, not the axis
+    assert np.array_equal(lines["X"].get_xdata(), r.t) and r.t[-1] == 2.0
+    assert fig.axes[-1].get_xlabel() == "time"
+
+
+def test_the_time_column_is_the_axis_and_not_drawn(driven):
+    pytest.importorskip("matplotlib")
+    from autolev.plots import figure
+    r = autolev.load(driven).simulate(F=2)
+    fig = figure(r.outputs[0], r.t)
+    assert {line.get_label() for ax in fig.axes for line in ax.get_lines()} == {"X", "F"}
+    assert fig.axes[-1].get_xlabel() == "T"

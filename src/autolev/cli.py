@@ -156,7 +156,7 @@ def _load_for_run(path: Path):
             print(d.format(), file=sys.stderr)
         return None
     for note in notes:
-        print(f"{path}: warning: {note}", file=sys.stderr)
+        print(note, file=sys.stderr)
     return model
 
 
@@ -193,6 +193,17 @@ def cmd_run(ns: argparse.Namespace) -> int:
     if specified is None:
         return 2
     return _run_and_report(model, commands, overrides, specified, ns, path)
+
+
+def _statement_label(model, path: Path):
+    """file:line of a CODE command's statement (the model's path when unknown)."""
+    where = {id(c): w for c, w in zip(model.code_commands,
+                                      getattr(model, "code_locations", []))}
+
+    def label(command) -> str:
+        w = where.get(id(command))
+        return f"{w.start.file}:{w.start.line}" if w is not None else str(path)
+    return label
 
 
 def _specified_values(model, ns: argparse.Namespace, command: str) -> dict | None:
@@ -263,12 +274,7 @@ def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list | int:
 def _run_and_report(model, commands: list, overrides: dict, specified: dict,
                     ns: argparse.Namespace, path: Path) -> int:
     from .runtime.numerics.files import safe_stem
-    where = {id(c): w for c, w in zip(model.code_commands,
-                                      getattr(model, "code_locations", []))}
-
-    def label(command) -> str:
-        w = where.get(id(command))
-        return f"{w.start.file}:{w.start.line}" if w is not None else str(path)
+    label = _statement_label(model, path)
     written_by: dict[str, str] = {}
     for command in commands:
         stem = safe_stem(command.filename).lower()
@@ -629,9 +635,10 @@ def cmd_code(ns: argparse.Namespace) -> int:
     finally:
         keep_built(model)        # loaded as for a run: it goes into the cache now
     refused = [w for w in done if w.refused]
+    label = _statement_label(model, path)
     for w in done:
         if w.refused:
-            print(f"{path}: {w.refused}", file=sys.stderr)
+            print(f"{label(w.command)}: error: {w.refused}", file=sys.stderr)
         elif not ns.quiet:
             print("\n".join(f"wrote {f}" for f in w.files))
     return 1 if refused else 0

@@ -163,6 +163,17 @@ class AutolevInternalError(Exception):
         super().__init__(f"{location}: internal error: a bug in autolev, not in the model, "
                          f"while {did}: {self.error}\n{location}: note: {REPORT_REQUEST}")
 
+    def __reduce__(self):
+        # rebuilt whole in another process (a sweep's or a bench's worker), cause and all
+        return (_rebuilt_internal_error, (self.location, self.did, self.error, self.args))
+
+
+def _rebuilt_internal_error(location, did: str, error: str, args: tuple):
+    exc = AutolevInternalError.__new__(AutolevInternalError)
+    Exception.__init__(exc, *args)
+    exc.location, exc.did, exc.error = location, did, error
+    return exc
+
 
 class AutolevSyntaxError(AutolevError):
     """The file could not be read as Autolev.  Carries *all* diagnostics found."""

@@ -23,7 +23,7 @@ from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError
                      AutolevTranslationError, Diagnostic, Location)
 from .pipeline import parse, translation
 from .runtime.errors import AutolevModelError
-from .translate import translate
+from .translate import Translation, translate
 
 # the model's fault: what the runtime refuses, and arithmetic on the values it asks for
 # (a division by zero, an overflow, a singular matrix to invert)
@@ -320,11 +320,13 @@ def load_for_run(path) -> tuple[object, list]:
     that command (Autolev's session rejected a bad statement and went on; the program
     CODE wrote did not depend on what followed).  A model built now goes into the
     cache of built models when its first run or linearization ends.  Returns (model,
-    notes)."""
+    notes): the translation's warnings and what was left out, each a line
+    `file:line:col: warning: ...` to show the user."""
     p = Path(path)
     try:
         result = _translation(p)
-        return load_translation(result, str(p), write_later=True), []
+        model = load_translation(result, str(p), write_later=True)
+        return model, _warnings(result)
     except (AutolevTranslationError, AutolevRuntimeError) as exc:
         failure = exc
     program = parse(p)
@@ -340,9 +342,13 @@ def load_for_run(path) -> tuple[object, list]:
     except AutolevRuntimeError:
         raise failure from None
     first = next(d for d in failure.diagnostics if d.severity == "error")
-    notes = [f"statements after the last CODE command fail and are left out of the run "
-             f"(first: {first.format(context=False).splitlines()[0]})"]
-    return model, notes
+    notes = [f"{p}: warning: statements after the last CODE command fail and are left out "
+             f"of the run (first: {first.format(context=False).splitlines()[0]})"]
+    return model, _warnings(result) + notes
+
+
+def _warnings(result: Translation) -> list[str]:
+    return [d.format(context=False) for d in result.diagnostics if d.severity == "warning"]
 
 
 __all__ = ["load", "load_translation", "load_for_run", "load_python", "run_python",

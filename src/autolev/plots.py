@@ -1,8 +1,8 @@
 """Pictures of a run's output tables (matplotlib, an optional dependency: each
 function imports it where it draws, so this module loads without it).
 
-One figure per output file: its columns against time (or, in a table without a T
-column, against its first column, which the figure says), one panel per unit so that
+One figure per output file: its columns against the integration's time (a dynamics
+run's; else the T column, else the first column, which the figure says), one panel per unit so that
 degrees do not squash radians per second, the panels sharing the time axis, each
 labelled with its unit, numbers written out (no offset notation).
 """
@@ -10,13 +10,23 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
+
 
 def _unit_key(unit: str | None) -> str:
     return (unit or "").strip().upper()
 
 
-def abscissa(table) -> tuple[int, str | None]:
-    """(column index of the x axis, a note when it is not time)."""
+def abscissa(table, times=None) -> tuple[int | None, str | None]:
+    """(column index of the x axis, a note when it is not time).  With the run's
+    `times` (one per row) the x axis is those times, and the index is that of the
+    column holding them, None when none does: a column labelled T may be a quantity the
+    model declared, drawn then as any other."""
+    if times is not None:
+        for j in range(table.data.shape[1]):
+            if np.allclose(table.data[:, j], times, rtol=1e-6, atol=1e-12):
+                return j, None
+        return None, None
     for j, label in enumerate(table.labels):
         if label.strip().upper() in ("T", "TIME"):
             return j, None
@@ -24,17 +34,21 @@ def abscissa(table) -> tuple[int, str | None]:
                if table.labels else None)
 
 
-def figure(table):
+def figure(table, times=None):
     """The figure of one OutputTable, or None when there is nothing to draw (fewer than
-    two rows or two columns)."""
+    two rows or no column beside the x axis); `times`: the run's time at each row,
+    the x axis when given."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     data = table.data
-    if data.shape[0] < 2 or data.shape[1] < 2:
+    if times is not None and len(times) != data.shape[0]:
+        times = None
+    xj, note = abscissa(table, times)
+    if data.shape[0] < 2 or data.shape[1] < 1 + (xj is not None):
         return None
-    xj, note = abscissa(table)
+    x = times if times is not None else data[:, xj]
     groups: dict[str, list[int]] = {}
     for j in range(data.shape[1]):
         if j != xj:
@@ -43,14 +57,15 @@ def figure(table):
                              figsize=(8, 1.2 + 2.3 * len(groups)))
     for ax, (unit, columns) in zip(axes[:, 0], groups.items()):
         for j in columns:
-            ax.plot(data[:, xj], data[:, j], label=table.labels[j])
+            ax.plot(x, data[:, j], label=table.labels[j])
         ax.set_ylabel(table.units[columns[0]] or "no unit")
         ax.ticklabel_format(axis="y", useOffset=False)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize="small", loc="best")
     bottom = axes[-1, 0]
-    x_unit = table.units[xj]
-    bottom.set_xlabel(table.labels[xj] + (f" ({x_unit})" if x_unit else ""))
+    x_unit = table.units[xj] if xj is not None else None
+    x_label = "time" if xj is None else table.labels[xj]
+    bottom.set_xlabel(x_label + (f" ({x_unit})" if x_unit else ""))
     bottom.ticklabel_format(axis="x", useOffset=False)
     fig.suptitle(table.filename + (f"\n{note}" if note else ""), fontsize="medium")
     fig.tight_layout()
@@ -62,8 +77,9 @@ def write_pngs(result, out_dir: Path) -> list[Path]:
     import matplotlib.pyplot as plt
 
     written = []
+    times = result.t if result.kind in ("dynamics", "ode") else None
     for table in result.outputs:
-        fig = figure(table)
+        fig = figure(table, times)
         if fig is None:
             continue
         path = Path(out_dir) / f"{table.filename}.png"

@@ -12,15 +12,14 @@ import heapq
 import re
 from dataclasses import dataclass, field
 
-import sympy as sm
-
 from ..runtime import symbols as S
 from ..runtime import units
 from ..runtime.errors import AutolevModelError
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs
 from ..runtime.numerics.run import (encoded_values, equations_and_unknowns, output_columns,
-                                     solution_columns, solver_expressions, sweep_of)
+                                     solution_columns, solver_expressions, sweep_of,
+                                     take_time, time_dependence)
 from ..runtime.numerics.system import NumericSystem, lower_derivative, read_order
 
 
@@ -178,12 +177,9 @@ def plan_algebraic(model, command) -> Plan:
                                extra=solver_expressions(defs, kind, equations, unknowns),
                                compile_functions=False)
         extra = system.extra_exprs
-        if S.TIME in _free(system.output_exprs + [e for v in extra.values() for e in v],
-                           model):
-            raise AutolevModelError(f"CODE {kind.upper()}: its quantities depend on T, "
-                                    "which such a program has no value for")
+        timed = time_dependence(model, system)
         fixed = dict(system.aux_fixed)
-        inputs = read_order(system.params, model)
+        inputs = read_order(system.params, model) + ([S.TIME] if timed else [])
         given = {"in": inputs, "s": list(system.specified), "u": list(system.solved)}
         prog = codegen.Program(given, system.output_exprs, defs, fixed).build(shared="all")
         solving, solver_named = None, []
@@ -207,6 +203,8 @@ def plan_algebraic(model, command) -> Plan:
     values = Inputs(model, read + guesses,
                     integration=("ABSERR", "RELERR") if guesses else (),
                     given=command.inputs, unit_table={**model.unit_of, **command.units})
+    if timed:
+        take_time(command, values, timed)
     values.fill_missing(read + guesses, "0 (no INPUT)")
     text = values.file_text(input_file_name(command.filename),
                             {**{s: "Constant" for s in read},
@@ -331,17 +329,6 @@ def _shown(system, outputs: list) -> tuple[list, list]:
         elements = [outputs.pop(0) for _ in range(size)]
         encoded.append(Encoded(name, (shape[0],) if shape[1:] == (1,) else shape, elements))
     return files, encoded
-
-
-def _free(exprs, model) -> set:
-    """The symbols the expressions need, through the definitions (walked as a DAG)."""
-    exprs = [sm.sympify(e) for e in exprs]
-    roots = {a for node in codegen.post_order(exprs, set()) for a in node.args
-             if a.is_Symbol} | {e for e in exprs if e.is_Symbol}
-    found = set(roots)
-    for s in model.defs.evaluation_order(roots, set()):
-        found |= model.defs.free(s)
-    return found
 
 
 def statements_of(prog: codegen.Program) -> tuple[list, list]:
@@ -545,7 +532,9 @@ def element_indices(shape: tuple) -> list[tuple]:
 
 
 def c_name(sym) -> str:
-    """A quantity's name in Autolev's programs: X' is Xp, X'' is Xpp."""
+    """A quantity's name in Autolev's programs: X' is Xp, X'' is Xpp; time is T."""
+    if sym == S.TIME:
+        return "T"
     base, order = S.base_and_order(sym)
     return base.name + "p" * order
 
@@ -554,7 +543,7 @@ def check_names(plan, reserved: frozenset, language: str) -> None:
     """Autolev printed the user's names as they are: a name the program's own text
     uses (or the language reserves) would change its meaning, so it is refused."""
     symbols = [s for group in ("inputs", "constants", "states", "named", "specified")
-               for s in getattr(plan, group, [])]
+               for s in getattr(plan, group, []) if s != S.TIME]    # T is the program's
     clashes = sorted({c_name(s) for s in symbols if c_name(s).lower() in reserved}
                      | {e.name for e in plan.encoded if e.name.lower() in reserved})
     if clashes:

@@ -85,6 +85,20 @@ def _entry_key(tr: Translator, entry: Entry) -> str:
     return next(k for k, e in tr.scalars.items() if e is entry)
 
 
+_KIND_WORDS = {NameKind.CONSTANT: "constant", NameKind.VARIABLE: "variable",
+               NameKind.MOTIONVARIABLE: "motion variable",
+               NameKind.SPECIFIED: "specified quantity", NameKind.IMAGINARY: "imaginary unit"}
+
+
+def _warn_time_replaced(tr: Translator, name: str, kind: NameKind, item) -> None:
+    # a declared name is the model's own (docs/language.md), time's T included
+    what = _KIND_WORDS[kind]
+    tr.warn(f"'{name}' is declared as a {what}: in this model {name} is that {what}, not "
+            f"the time (expressions with {name} mean it, and OUTPUT {name} prints it); "
+            "runs still integrate over time and plot against it (rename it to keep T the "
+            "time)", item, "W105")
+
+
 def _declare_scalars(tr: Translator, st: ir.Declaration) -> None:
     kind = _SCALAR_DECL[st.what]
     groups: dict[tuple, list[tuple[str, str]]] = {}
@@ -100,6 +114,8 @@ def _declare_scalars(tr: Translator, st: ir.Declaration) -> None:
             else:
                 entry = tr.declare_scalar(n, kind, order)
                 groups.setdefault((order, item.sign), []).append((n, entry.py))
+                if key == "t":
+                    _warn_time_replaced(tr, n, kind, item)
             if item.value is not None:
                 definitions.append((entry, item.value, item))
     for (order, sign), items in groups.items():

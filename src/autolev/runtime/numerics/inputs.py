@@ -25,6 +25,7 @@ from .. import units
 from ..calculus import is_real_number
 from ..errors import AutolevModelError
 from ..io import INTEGRATION_PARAMETERS as INTEGRATION
+from ..symbols import TIME
 
 DEFAULTS = {"TINITIAL": 0.0, "TFINAL": 1.0, "INTEGSTP": 0.1, "PRINTINT": 1,
             "ABSERR": 1.0e-8, "RELERR": 1.0e-7}
@@ -55,7 +56,7 @@ def key_of(sym_or_name):
 
 
 def display_name(key) -> str:
-    return key if isinstance(key, str) else key.name
+    return key if isinstance(key, str) else "T" if key == TIME else key.name
 
 
 class Inputs:

@@ -226,6 +226,10 @@ def _take_inputs(ask: _InputsWanted, system):
     constants = list(system.params) + extra_constants
     kinds = {p: "Constant" for p in constants}
     names = list(constants)
+    timed = [] if ask.integrate_states else time_dependence(ask.model, system)
+    if timed:
+        names.append(S.TIME)
+        kinds[S.TIME] = "Constant"
     if ask.integrate_states:
         names += system.states
         kinds.update({x: "Initial Value" for x in system.states})
@@ -271,6 +275,8 @@ def _take_inputs(ask: _InputsWanted, system):
     if missing:
         warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
                       + ": using 0", stacklevel=5)
+    if timed:
+        take_time(ask.command, inputs, timed)
     inputs.fill_missing(names)
     inputs.check_finite()
     _degree_rates_note(inputs, names)
@@ -324,6 +330,33 @@ def prepare_command(model, command, backend: str = "auto", infile=None, specifie
                     extra_constants, build_seconds)
 
 
+def time_dependence(model, system) -> list[str]:
+    """What an ALGEBRAIC or NONLINEAR program computes that depends on T (OUTPUT columns,
+    ENCODE arrays, its equations).  Such a program has no time of its own: it reads T
+    from its .in file as it reads its variables (see take_time)."""
+    defs = model.defs
+    named = [(c.label, c.expr) for cols in system.files for c in cols]
+    named += list(system.encoded)
+    named += [("its equations", e) for v in system.extra_exprs.values() for e in v]
+    found = []
+    for label, value in named:
+        values = list(value) if isinstance(value, sm.MatrixBase) else [value]
+        if label not in found and any(defs.depends_on(v, S.TIME) for v in values):
+            found.append(label)
+    return found
+
+
+def take_time(command, inputs, dependent: list[str]) -> None:
+    """T, read by a program without time whose `dependent` quantities need it: 0 unless
+    given (INPUT has no T to give; --set T=..., an .in file), said so."""
+    if inputs.missing([S.TIME]):
+        inputs.set_internal("T", 0.0, "0: no value given")
+        warnings.warn(f"CODE {command.kind.upper()} {command.filename}: "
+                      f"{some_names(dependent)} {'depends' if len(dependent) == 1 else 'depend'}"
+                      " on T, which a program without time reads from its .in file as it "
+                      "reads its variables: T = 0 (give it with --set T=VALUE)", stacklevel=6)
+
+
 def given_specified(model, command, specified, overrides):
     """`command` as if the model had defined, before it, the SPECIFIED quantities it
     leaves undefined and that are given a value -- a number or a sympy expression in
@@ -336,8 +369,11 @@ def given_specified(model, command, specified, overrides):
         sym = _find_symbol(model, name)
         if callable(value) and not isinstance(value, sm.Basic):
             functions[sym] = value
-        else:
-            given[sym] = sm.sympify(value)
+            continue
+        given[sym] = sm.sympify(value)
+        if model.defs.depends_on(given[sym], sym):
+            raise AutolevModelError(f"specified: the value of {display_name(sym)} depends "
+                                    f"on {display_name(sym)} itself")
     for name, value in (overrides or {}).items():
         sym = _undefined_specified(model, name)
         if sym is None:
@@ -591,8 +627,8 @@ def names_a_quantity(model, name: str) -> bool:
     """Whether `name` (as --set or an override gives it: Q1, Q1', Q1P, TFINAL) is an
     integration parameter or a quantity of the model."""
     name = name.strip()
-    if name.upper() in INTEGRATION or name.upper() == "INTEGSTEP":
-        return True
+    if name.upper() in INTEGRATION or name.upper() in ("INTEGSTEP", "T"):
+        return True         # T: the time, which a program without time reads
     primes = len(name) - len(name.upper().rstrip("P"))       # Q1PP is Q1''
     for candidate in [name] + [name[:-k] + "'" * k for k in range(1, primes + 1)]:
         try:
@@ -1026,6 +1062,7 @@ def _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_p
     n = len(unknowns)
     guess = (np.array(inputs.vector(unknowns)) if kind == "nonlinear" else np.zeros(n))
     base = inputs.vector(system.params)
+    t = inputs.internal(S.TIME) if S.TIME in inputs.values else 0.0
     target_pos = None
     if sweep is not None:
         if sweep[0] in system.params:
@@ -1039,18 +1076,18 @@ def _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_p
             p[target_pos] = point[0]
             system.set_parameters(p)
         if kind == "algebraic" and n:
-            ab = system.extra("linear", 0.0)
+            ab = system.extra("linear", t)
             a = ab[:n * n].reshape(n, n)
             b = ab[n * n:]
             x = _linear_solve(a, -b, zero_params)
         elif kind == "nonlinear":
-            x = _newton(system, guess, inputs.internal("ABSERR"), inputs.internal("RELERR"),
-                        unknowns, zero_params)
+            x = _newton(system, guess, t, inputs.internal("ABSERR"),
+                        inputs.internal("RELERR"), unknowns, zero_params)
             guess = x
         else:
             x = np.zeros(0)
         solutions.append(x)
-        values = system.outputs(0.0, np.zeros(0), None, x)
+        values = system.outputs(t, np.zeros(0), None, x)
         _split_outputs(system, values, rows, writer, encoded)
     result.t = np.array([pt[1] for pt in points]) if sweep is not None else np.zeros(0)
     result.solution = {display_name(u): np.array([s[i] for s in solutions])
@@ -1072,14 +1109,14 @@ def _linear_solve(a, b, zero_params):
     return scipy.linalg.lu_solve((lu, piv), b)
 
 
-def _newton(system, x0, abserr, relerr, unknowns, zero_params, max_iter: int = 50):
+def _newton(system, x0, t, abserr, relerr, unknowns, zero_params, max_iter: int = 50):
     """Newton's method from the guesses; converged when every step is within
     max(ABSERR, RELERR*|x|) and the residual is small."""
     x = np.array(x0, dtype=float)
     n = len(x)
     for _ in range(max_iter):
-        r = system.extra("residual", 0.0, (), x)
-        j = system.extra("jacobian", 0.0, (), x).reshape(n, n)
+        r = system.extra("residual", t, (), x)
+        j = system.extra("jacobian", t, (), x).reshape(n, n)
         if not (np.all(np.isfinite(r)) and np.all(np.isfinite(j))):
             raise AutolevModelError("CODE NONLINEAR: the equations are not finite at "
                                     + _at(unknowns, x) + _zero_hint(zero_params))
