@@ -158,7 +158,8 @@ def test_run_refuses_bad_options(tmp_path, capsys, argv, message):
 def test_run_with_a_value_that_is_not_a_number_writes_nothing(tmp_path, capsys):
     code, _, err = run(capsys, "run", str(EXAMPLES / "double_pendulum.al"), "--out",
                        str(tmp_path), "--set", "Q1=abc", "-q")
-    assert code == 1 and "Q1=abc: not a number" in err
+    # a usage error (issue 29): the model is not at fault
+    assert code == 2 and "--set Q1=abc: abc is not a finite number" in err
     assert not any(tmp_path.iterdir())
 
 

@@ -235,3 +235,26 @@ def test_the_time_column_is_the_axis_and_not_drawn(driven):
     fig = figure(r.outputs[0], r.t)
     assert {line.get_label() for ax in fig.axes for line in ax.get_lines()} == {"X", "F"}
     assert fig.axes[-1].get_xlabel() == "T"
+
+
+def test_check_reports_in_one_round(tmp_path):
+    # a syntax error no longer hides the translation's findings on the lines that read,
+    # and a name whose declaration did not read is not reported again
+    path = tmp_path / "rounds.al"
+    path.write_text("NEWTONIAN N\nBODIES A\nMOTIONVARIABLES' Q', U'\nCONSTANTS L, K M\n"
+                    "SIMPORT(N, A, 3, Q)\nQ' = U\nX = SINN(Q) + M\nCODE DYNAMIC() r.c\n")
+    r = cli("check", path)
+    found = [line for line in (r.stdout + r.stderr).splitlines() if ": error: " in line]
+    assert r.returncode == 1
+    assert [f.split(": error: ")[0] for f in found] == [
+        f"{path}:4:16", f"{path}:5:1", f"{path}:7:5", f"{path}:8:6"]
+    assert "unknown command SIMPORT(); did you mean SIMPROT?" in found[1]
+    assert "did you mean SIN, SINH or SIGN?" in found[2]
+    assert "unknown CODE kind 'DYNAMIC'" in found[3]
+
+
+@pytest.mark.parametrize("command", ["run", "linearize", "animate"])
+def test_a_value_that_is_not_a_number_is_a_usage_error(driven, tmp_path, command):
+    r = cli(command, driven, "--set", "X=abc", "--out", tmp_path / "o")
+    assert r.returncode == 2
+    assert "--set X=abc: abc is not a finite number" in r.stderr

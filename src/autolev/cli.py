@@ -6,6 +6,7 @@ import contextlib
 import json
 import math
 import os
+import re
 import sys
 from pathlib import Path
 
@@ -55,13 +56,27 @@ def check_file(path: Path) -> list[Diagnostic]:
         builder.build_macro_source(src)
         return sorted(builder.diagnostics, key=sort_key)
     builder.build_source(src)
-    if builder.errors:
-        return sorted(builder.diagnostics, key=sort_key)
     program = builder.program()
-    found = {(d.location, d.code, d.message) for d in program.diagnostics}
+    # one warning per place: reading's 'declared again' is the translation's too
+    warned = {d.location for d in program.diagnostics}
+    # the statements that read are translated even when others did not: one round
     more = [d for d in translate(program).diagnostics
-            if (d.location, d.code, d.message) not in found]
+            if not (d.severity == "warning" and d.location in warned)
+            and not _follows_from(d, builder.errors)]
     return sorted(builder.diagnostics + more, key=sort_key)
+
+
+def _follows_from(d: Diagnostic, syntax_errors: list[Diagnostic]) -> bool:
+    """Whether a translation diagnostic only repeats a syntax error: a name it calls
+    undeclared or of the wrong kind is a word of a line that did not read (whose
+    declaration or definition is then missing)."""
+    if d.code not in ("T002", "T008") or not syntax_errors:
+        return False
+    words = {w.lower() for e in syntax_errors
+             for w in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", e.source_line or "")}
+    named = re.findall(r"'([A-Za-z_][A-Za-z0-9_]*)", d.message)
+    named += re.findall(r"^([A-Za-z_][A-Za-z0-9_]*) has no value", d.message)
+    return any(n.lower() in words for n in named)
 
 
 def cmd_check(ns: argparse.Namespace) -> int:
@@ -229,13 +244,9 @@ def _run_overrides(ns: argparse.Namespace) -> dict | None:
         print(f"autolev run: unknown --method {ns.method} (one of {', '.join(METHODS)})",
               file=sys.stderr)
         return None
-    overrides = {}
-    for item in ns.set or []:
-        name, sep, value = item.partition("=")
-        if not sep or not name.strip():
-            print(f"autolev run: --set expects NAME=VALUE, not {item!r}", file=sys.stderr)
-            return None
-        overrides[name.strip()] = value.strip()
+    overrides = _name_values(ns.set, "--set", numbers=True)
+    if overrides is None:
+        return None
     if ns.tfinal is not None:
         overrides["TFINAL"] = ns.tfinal
     if ns.plot:
@@ -329,13 +340,19 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
     return status
 
 
-def _name_values(items, option: str) -> dict | None:
-    """NAME=VALUE items of a repeatable option, or None after printing the bad one."""
+def _name_values(items, option: str, numbers: bool = False) -> dict | None:
+    """NAME=VALUE items of a repeatable option (with `numbers`, each VALUE a number as
+    an .in file writes it), or None after printing the bad one."""
+    from .runtime.numerics.inputs import parse_number
     values = {}
     for item in items or []:
         name, sep, value = item.partition("=")
         if not sep or not name.strip():
             print(f"autolev: {option} expects NAME=VALUE, not {item!r}", file=sys.stderr)
+            return None
+        if numbers and parse_number(value) is None:
+            print(f"autolev: {option} {item}: {value.strip() or 'nothing'} is not a finite "
+                  "number", file=sys.stderr)
             return None
         values[name.strip()] = value.strip()
     return values
@@ -381,7 +398,7 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
 def _linearize_request(ns: argparse.Namespace):
     """(--set values, --at point, --sweep range or None) from the options, or None after
     printing what is wrong with them."""
-    overrides = _name_values(ns.set, "--set")
+    overrides = _name_values(ns.set, "--set", numbers=True)
     at = _name_values(ns.at, "--at")
     if overrides is None or at is None:
         return None

@@ -6,7 +6,7 @@ from __future__ import annotations
 from .. import ir
 from .assignments import assign
 from .core import STATEMENTS, Entry, NameKind, Translator, ValueType
-from .functions import FUNCTIONS
+from .functions import FUNCTIONS, did_you_mean
 
 
 # command name -> handler(translator, call); filled by @command here and in the families
@@ -39,7 +39,8 @@ def command_statement(tr: Translator, st: ir.Command) -> None:
         tr.expr(c)      # checked, and displayed by Autolev; nothing to keep
         tr.emit("# (displayed by Autolev; nothing to compute)")
         return
-    raise tr.error(f"unknown command {name}()", c, "T003")
+    raise tr.error(f"unknown command {name}()"
+                   + did_you_mean(name, [*COMMANDS, *IN_PLACE, *FUNCTIONS]), c, "T003")
 
 
 @STATEMENTS.register(ir.Display)

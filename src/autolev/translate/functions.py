@@ -46,15 +46,19 @@ def call_expression(tr: Translator, e: ir.Call, want: str) -> Typed:
 def call(tr: Translator, c: ir.Call) -> Typed:
     fn = FUNCTIONS.get(c.name.upper())
     if fn is None:
-        close = difflib.get_close_matches(c.name.upper(), FUNCTIONS, n=3, cutoff=0.6)
-        hint = ""
-        if close:
-            hint = "; did you mean " + (" or ".join(close) if len(close) < 3 else
-                                        f"{close[0]}, {close[1]} or {close[2]}") + "?"
         raise tr.error(f"unknown function {c.name.upper()}(): Autolev has no such function, "
-                       f"and no user function file {c.name}.R is next to the model{hint}",
-                       c, "T003")
+                       f"and no user function file {c.name}.R is next to the model"
+                       + did_you_mean(c.name, FUNCTIONS), c, "T003")
     return fn(tr, c)
+
+
+def did_you_mean(word: str, known) -> str:
+    """'; did you mean A, B or C?' for the known words closest to a misspelt one."""
+    close = difflib.get_close_matches(word.upper(), known, n=3, cutoff=0.6)
+    if not close:
+        return ""
+    return "; did you mean " + (" or ".join(close) if len(close) < 3 else
+                                f"{close[0]}, {close[1]} or {close[2]}") + "?"
 
 
 def nargs(tr: Translator, c: ir.Call, *counts: int) -> list:
