@@ -258,3 +258,54 @@ def test_a_value_that_is_not_a_number_is_a_usage_error(driven, tmp_path, command
     r = cli(command, driven, "--set", "X=abc", "--out", tmp_path / "o")
     assert r.returncode == 2
     assert "--set X=abc: abc is not a finite number" in r.stderr
+
+
+# a kinematics model: bodies with no mass, no Kane's equations; UA' declared, never
+# defined, is a constant the program reads
+KINEMATICS = """NEWTONIAN N
+BODIES A, D
+POINTS G
+VARIABLES Q1'', X'
+VARIABLES UA'
+CONSTANTS R
+SIMPROT(N, A, 3, Q1)
+SIMPROT(A, D, 1, Q1)
+Q1' = UA
+W_A_N> = UA*N3>
+P_NO_G> = R*A1>
+V_G_N> = DT(P_NO_G>, N)
+X' = DOT(V_G_N>, N1>)
+INPUT R=2, UA=3, Q1=0, X=0, UA'=0.5, TFINAL=1, INTEGSTP=0.25
+OUTPUT T, Q1, X, UA
+CODE ODE() kin.c
+"""
+
+
+def test_code_ode_integrates_the_explicit_equations_and_forms_nothing_else(tmp_path):
+    path = tmp_path / "kin.al"
+    path.write_text(KINEMATICS)
+    r = cli("run", path, "--out", tmp_path / "o")
+    assert r.returncode == 0, r.stderr
+    t, q1, x, ua = rows_of(tmp_path / "o" / "kin.1").T
+    # UA' = 1/2: UA = 3 + T/2, Q1 = 3T + T^2/4; X' = -R sin(Q1) Q1': X = R (cos Q1 - 1)
+    assert np.allclose(ua, 3 + t / 2, atol=1e-9)
+    assert np.allclose(q1, 3 * t + t ** 2 / 4, atol=1e-7)
+    assert np.allclose(x, 2 * (np.cos(q1) - 1), atol=1e-6)
+    in_text = (tmp_path / "o" / "kin.in").read_text()
+    assert "Constant             UA'" in in_text
+
+
+@pytest.mark.skipif(not __import__("shutil").which("cc"), reason="needs a C compiler (cc)")
+def test_the_program_of_code_ode_reads_the_undefined_derivative(tmp_path):
+    path = tmp_path / "kin.al"
+    path.write_text(KINEMATICS)
+    assert cli("run", path, "--out", tmp_path / "run").returncode == 0
+    assert cli("code", path, "--out", tmp_path / "prog").returncode == 0
+    program = (tmp_path / "prog" / "kin.c").read_text()
+    assert "readf(Fptr[0],&R,&UAp,NULL);" in program and "double   Q1p,Xp;" in program
+    subprocess.run(["cc", "-O0", "-o", "kin", "kin.c", "-lm"], cwd=tmp_path / "prog",
+                   check=True)
+    (tmp_path / "prog" / "kin.in").write_text((tmp_path / "run" / "kin.in").read_text())
+    subprocess.run(["./kin"], cwd=tmp_path / "prog", check=True, capture_output=True)
+    assert np.array_equal(rows_of(tmp_path / "prog" / "kin.1"),
+                          rows_of(tmp_path / "run" / "kin.1"))

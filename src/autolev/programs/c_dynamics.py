@@ -56,7 +56,7 @@ class CDynamicsProgram:
             "                    double abserr, double relerr, char com);",
             "int      solve     (int n, double *coef, double *rhs, double *x);"]
         lines += READING_PROTOTYPES
-        derivatives = [S.derivative(x) for x in p.states]
+        derivatives = p.derivatives
         algebraic = derivatives + [s for s in by_name(p.named) if s not in derivatives]
         for group in (p.constants, by_name(p.specified), p.states, algebraic):
             if group:

@@ -256,7 +256,7 @@ class FortranDynamicsProgram:
     def _commons(self) -> list[str]:
         p = self.plan
         # a second-order variable's X' is a state already (in VARIBLES)
-        derivatives = [S.derivative(x) for x in p.states if S.derivative(x) not in p.states]
+        derivatives = [d for d in p.derivatives if d not in p.states]
         others = sorted((s for s in set(p.named) | set(p.specified) if s not in derivatives),
                         key=lambda s: f_name(s).upper())
         # as Autolev's: the quantities, the states' derivatives, other derivatives

@@ -443,7 +443,7 @@ class MDynamicsProgram(MProgram):
 
     def _globals(self) -> list[str]:
         p = self.plan
-        derivatives = [S.derivative(x) for x in p.states]
+        derivatives = p.derivatives
         algebraic = derivatives + sorted((s for s in p.named if s not in derivatives),
                                          key=lambda s: (c_name(s).lower(), c_name(s)))
         groups = [p.constants, p.specified, p.states, algebraic]

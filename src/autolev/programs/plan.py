@@ -256,6 +256,12 @@ class DynamicsPlan:
     options: tuple = ()         # SUBS / NOSUBS
     sources: dict = field(default_factory=dict)     # as Plan's
 
+    @property
+    def derivatives(self) -> list:
+        """The states' derivatives, but those the program reads as constants (a
+        derivative CODE ODE() finds declared and never defined)."""
+        return [d for d in map(S.derivative, self.states) if d not in self.constants]
+
 
 def plan_dynamics(model, command) -> DynamicsPlan:
     """The plan of a CODE DYNAMICS() program, or of a CODE ODE(EQ, x'', ...) one: the
@@ -266,7 +272,7 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     if command.kind == "dynamics" and command.args:
         raise AutolevModelError("CODE DYNAMICS with arguments is not written as a "
                                 "program yet")
-    implicit = (equations, unknowns) if command.kind == "ode" and equations else None
+    ode = (equations, unknowns) if command.kind == "ode" else None
     files = output_columns(model, command)
     encoded = encoded_values(model, command)
     defs = model.defs
@@ -274,7 +280,7 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     filename = command.filename.lower() if is_fortran(command.filename) else \
         command.filename
     with defs.as_of(command.definitions):
-        system = NumericSystem(model, files, encoded, integrate=True, implicit=implicit,
+        system = NumericSystem(model, files, encoded, integrate=True, ode=ode,
                                zero=command.zero if command.kind == "dynamics" else None,
                                compile_functions=False)
         if not system.nstate:

@@ -449,7 +449,7 @@ def _numeric_system(model, command, files, encoded, solving: tuple, backend: str
     with model.defs.as_of(command.definitions):
         system = NumericSystem(
             model, files, encoded, backend=backend, integrate=kind in ("dynamics", "ode"),
-            implicit=(equations, unknowns) if kind == "ode" and equations else None,
+            ode=(equations, unknowns) if kind == "ode" else None,
             solved=unknowns if kind in ("algebraic", "nonlinear") else (),
             extra=solver_expressions(model.defs, kind, equations, unknowns),
             zero=command.zero if kind == "dynamics" else None,

@@ -109,11 +109,14 @@ class NumericSystem:
 
     `outputs`: a list of files, each a list of Column; `encoded`: (name, value) pairs.
     `integrate=False` (ALGEBRAIC/NONLINEAR programs) builds no right-hand side; every
-    variable is an input then.  `implicit=(equations, unknowns)` (CODE ODE(EQ, x'', ...))
-    integrates by solving the equations for the unknown derivatives at each step, in
-    place of Kane's equations.  `locked`: coordinates held where they are (a rigid
-    joint): each must have Q' = U for an independent speed U, which is then 0 with U',
-    its row of Kane's equations dropped, and Q a constant of the program.  `solved`:
+    variable is an input then.  `ode=(equations, unknowns)` is a CODE ODE's: with
+    equations (CODE ODE(EQ, x'', ...)) it integrates by solving them for the unknown
+    derivatives at each step, in place of Kane's equations; without (CODE ODE()) it
+    integrates the model's explicit differential equations alone, forming nothing
+    else, and a declared derivative without a definition is a constant input.
+    `locked`: coordinates held where they are (a rigid joint): each must have Q' = U
+    for an independent speed U, which is then 0 with U', its row of Kane's equations
+    dropped, and Q a constant of the program.  `solved`:
     symbols whose values the caller supplies at output time (the unknowns of
     ALGEBRAIC/NONLINEAR); `extra`: {name: [expressions]}
     compiled with the outputs' inputs.  `before_compiling(system)`: called once the
@@ -123,14 +126,14 @@ class NumericSystem:
     writer of programs in another language."""
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
-                 integrate: bool = True, implicit=None, solved=(), extra=None,
+                 integrate: bool = True, ode=None, solved=(), extra=None,
                  zero=None, hidden_in_outputs=(), before_compiling=None, locked=(),
                  compile_functions: bool = True):
         self.model = model
         self._zero = zero
         self.backend = backend
         self._fix_speeds(locked)
-        rates, unknowns, dyn = (self._integrated(implicit) if integrate else ({}, [], []))
+        rates, unknowns, dyn = (self._integrated(ode) if integrate else ({}, [], []))
         self.states = alphabetical(rates)
         self.nstate = len(self.states)
         self.implicit_unknowns = unknowns          # derivatives solved from M a = f
@@ -279,14 +282,17 @@ class NumericSystem:
         self._bind_loop()
 
     # -- structure ------------------------------------------------------------------------
-    def _integrated(self, implicit) -> tuple[dict, list, list]:
+    def _integrated(self, ode) -> tuple[dict, list, list]:
         """({X: rate} for every integrated X, [derivatives solved from M a = f],
         [M entries row by row, then f]).  A rate is X's definition, or the symbol X'
-        when X' is itself integrated or solved for."""
+        when X' is itself integrated or solved for, or (CODE ODE()) a constant input."""
         m = self.model
         defs = m.defs
-        if implicit is not None:
-            equations, unknowns = implicit
+        explicit_only = ode is not None and not ode[0]
+        if explicit_only:
+            unknowns, dyn = [], []
+        elif ode is not None:
+            equations, unknowns = ode
             unknowns = list(unknowns)
             eqs = [sm.sympify(e) for e in equations]
             if len(eqs) != len(unknowns):
@@ -339,8 +345,10 @@ class NumericSystem:
                 d = S.derivative(sym)
                 if d in defs.rhs:
                     rates[sym] = defs.rhs[d]
-                elif d in rates:
-                    rates[sym] = d               # Q' integrated too: Q's rate is Q'
+                elif d in rates or (explicit_only and info.order >= 1):
+                    # Q' integrated too: Q's rate is Q'; or, in CODE ODE(), Q' declared
+                    # and never defined: a constant its program reads
+                    rates[sym] = d
                 else:
                     continue
                 changed = True
