@@ -201,3 +201,17 @@ def test_points_where_a_value_has_none_are_skipped(tmp_path):
     assert x.status == "match"
     assert (y.status, y.detail) == ("not comparable", "cannot evaluate: no value at the "
                                     "points tried")
+
+
+def test_zee_not_is_answered_and_its_answer_compared(tmp_path):
+    # Autolev answered ZEE_NOT = [...] with the row of the names it keeps out of Z's
+    session = tmp_path / "zee.all"
+    session.write_text("   (1) MOTIONVARIABLES' U{2}'\n   (2) CONSTANTS GRAV\n"
+                       "   (3) ZEE_NOT = [U1', U2', GRAV]\n"
+                       "-> (4) ZEE_NOT = [U1', U2', GRAV]\n\n")
+    report = autolev.verify(session)
+    assert report.error is None and report.ok and report.count("match") == 1
+    wrong = tmp_path / "wrong.all"
+    wrong.write_text(session.read_text().replace("-> (4) ZEE_NOT = [U1', U2', GRAV]",
+                                                 "-> (4) ZEE_NOT = [U2', U1', GRAV]"))
+    assert autolev.verify(wrong).count("mismatch") == 1

@@ -190,9 +190,12 @@ class AlgebraMixin:
             return sm.Add(*[self.defs.zify(c) * m for m, c in parts.items()])
         return self.map_scalars(value, one)
 
-    def zee_not(self, names) -> None:
-        """ZEE_NOT = [x, y]: names kept visible (never hidden in a Z)."""
-        self.settings["ZEE_NOT"] = list(names) if not isinstance(names, sm.Basic) else [names]
+    def zee_not(self, names) -> sm.Matrix:
+        """ZEE_NOT = [x, y]: names kept visible (never hidden in a Z); its value, what
+        Autolev answered and what a later ZEE_NOT reads, is the row of those names."""
+        kept = list(names) if not isinstance(names, sm.Basic) else [names]
+        self.settings["ZEE_NOT"] = kept
+        return sm.Matrix([kept])
 
     def inv(self, m):
         """INV(M) (entries named by Z's when symbolic)."""

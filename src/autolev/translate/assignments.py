@@ -95,8 +95,12 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
         return
     name, primes = target.name, target.primes
     key = name.lower()
-    if key == "zee_not" and not primes:
-        tr.emit(f"model.zee_not({value.code})")
+    if key == "zee_not" and not primes:      # a setting, also a value (Autolev answers it)
+        entry = tr.values.get(key)
+        if entry is None:
+            entry = tr.values[key] = Entry(tr.py_name("value", name), NameKind.VALUE,
+                                           ValueType.MATRIX)
+        tr.emit(f"{entry.py} = model.zee_not({value.code})")
         return
     if key in tr.scalars:
         sym = tr.symbol(target)
