@@ -7,28 +7,34 @@ import pytest
 import autolev
 from autolev.cli import main
 
-# (model, the failing statement's line, the diagnostic's message): the model's faults
+# (model, the failing statement's line, the diagnostic's message): the model's faults.
+# Each reaches the runtime: the matrix is a product (its shape is not followed by the
+# translation) and the number a name given a symbol; a literal matrix of the wrong shape
+# or a declared name where a number is needed are reported by check
+# (tests/test_function_kinds.py)
 MODEL_FAULTS = [
-    ("X = TRACE([1, 2])", 1, "TRACE needs a square matrix, not 1x2"),
-    ("CONSTANTS N\nX = DIAGMAT(N, 1)", 2, "DIAGMAT's number of rows must be a number, not N"),
+    ("X = TRACE(2*[1, 2])", 1, "TRACE needs a square matrix, not 1x2"),
+    ("CONSTANTS K\nN = K\nX = DIAGMAT(N, 1)", 3,
+     "DIAGMAT's number of rows must be a number, not K"),
     ("X = DIAGMAT(-1, 1)", 1, "DIAGMAT: a matrix cannot have -1 x -1 elements"),
-    ("CONSTANTS N\nM = [1, 2; 3, 4]\nX = ROWS(M, N)", 3, "an index must be a number, not N"),
+    ("CONSTANTS K\nN = K\nM = [1, 2; 3, 4]\nX = ROWS(M, N)", 4,
+     "an index must be a number, not K"),
     ("M = [1, 2; 3, 4]\nX = [M, 1]", 2, "the blocks of this matrix do not fit together"),
     ("VARIABLES X\nE = ROOTS(SIN(X) + X, X, 2)", 2,
      "ROOTS: X + sin(X) is not a polynomial in X"),
-    ("CONSTANTS N\nVARIABLES X\nE = POLYNOMIAL(X^2 + 1, X, N)", 3,
-     "POLYNOMIAL's degree must be a number, not N"),
-    ("CONSTANTS T1\nVARIABLES X\nE = EPSILON(X, T1)", 3,
-     "EPSILON's tolerance must be a number, not T1"),
+    ("CONSTANTS K\nN = K\nVARIABLES X\nE = POLYNOMIAL(X^2 + 1, X, N)", 4,
+     "POLYNOMIAL's degree must be a number, not K"),
+    ("CONSTANTS K\nT1 = K\nVARIABLES X\nE = EPSILON(X, T1)", 4,
+     "EPSILON's tolerance must be a number, not K"),
     ("VARIABLES X\nE = EVALUATE(X^2, X = [1; 2])", 2,
      "EVALUATE: X is a scalar; it cannot be replaced by a matrix"),
     ("NEWTONIAN N\nVARIABLES X\nE = REPLACE(X^2, X = N1>)", 3,
      "REPLACE: X is a scalar; it cannot be replaced by a vector"),
-    ("CONSTANTS A\nVARIABLES X\nE = D(X^2, A + 1)", 3,
+    ("CONSTANTS A\nVARIABLES X\nB = A + 1\nE = D(X^2, B)", 4,
      "D differentiates with respect to a name, not A + 1"),
-    ("CONSTANTS N\nVARIABLES X\nE = TAYLOR(SIN(X), 0:N, X = 0)", 3,
-     "TAYLOR's order must be a number, not N"),
-    ("CONSTANTS A\nE = EXPAND(A^2, 1:A)", 2, "EXPAND's degree must be a number, not A"),
+    ("CONSTANTS K\nN = K\nVARIABLES X\nE = TAYLOR(SIN(X), 0:N, X = 0)", 4,
+     "TAYLOR's order must be a number, not K"),
+    ("CONSTANTS A\nB = A\nE = EXPAND(A^2, 1:B)", 3, "EXPAND's degree must be a number, not A"),
     ("NEWTONIAN N\nVARIABLES X\nX = N1>", 3,
      "X is a scalar; it cannot be given a vector or dyadic"),
     ("NEWTONIAN N\nFRAMES A\nCONSTANTS K\nSIMPROT(N, A, N2>, CSC(PI) + K)", 4,
@@ -53,7 +59,7 @@ MODEL_FAULTS = [
      "SOLVE solves equations linear in their unknowns; these are not linear in X, Y"),
     # sympy refusing what the statement's own Python does with the model's values
     ("M = [1, 2] + [1; 2]", 1, "this statement failed: ShapeError: Matrix size mismatch"),
-    ("M = [1, 2; 3, 4]\nE = ELEMENT(M, 3, 3)", 2, "this statement failed: IndexError"),
+    ("M = 2*[1, 2; 3, 4]\nE = ELEMENT(M, 3, 3)", 2, "this statement failed: IndexError"),
     ("CONSTANTS N\nM = [1, 2; 3, 4]\nX = M[N, 1]", 3,
      "this statement failed: TypeError: Cannot convert symbols to int"),
     ("CONSTANTS K-\nX = MIN(LOG(K), 1)", 2,
@@ -77,7 +83,7 @@ def test_the_models_faults_stay_diagnostics_at_their_line(tmp_path, text, line, 
 
 def test_the_cli_reports_the_models_fault_without_a_traceback(tmp_path, capsys):
     path = tmp_path / "m.al"
-    path.write_text("X = 1\nY = TRACE([1, 2])\n")
+    path.write_text("X = 1\nY = TRACE(2*[1, 2])\n")
     assert main(["run", str(path), "--out", str(tmp_path)]) == 1
     err = capsys.readouterr().err
     assert f"{path}:2:1: error: TRACE needs a square matrix, not 1x2 [R001]" in err

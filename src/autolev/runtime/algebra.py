@@ -7,7 +7,7 @@ import sympy as sm
 from . import symbols as S
 from .functions import scalar_values, whole_number
 from .linalg import coefficients, solve_linear
-from .vector import AutolevModelError, Vector, body_fixed, rodrigues, space_fixed
+from .vector import AutolevModelError, Dyadic, Vector, body_fixed, rodrigues, space_fixed
 
 
 class AlgebraMixin:
@@ -19,13 +19,21 @@ class AlgebraMixin:
 
     def coef(self, value, var):
         """COEF(E, x): the coefficient of x in E (of x^1, through definitions: E may be
-        in Z form); COEF(E, x^2) or COEF(E, x*y): the coefficient of that monomial in
-        the expanded E; COEF([E1;E2], [x, y]): the coefficient matrix."""
+        in Z form), in every element of a matrix and measure number of a vector or
+        dyadic; COEF(E, x^2) or COEF(E, x*y): the coefficient of that monomial in the
+        expanded E; COEF([E1;E2], [x, y]): the coefficient matrix; COEF(V>, N1>): the
+        measure number of N1> in V> as V> is written (no other frame's unit vectors
+        expressed in N)."""
+        if isinstance(var, Vector):
+            return _unit_vector_coefficient(value, var)
         if isinstance(var, (sm.MatrixBase, list, tuple)):
-            vs = [sm.sympify(v) for v in var]
+            vs = _name_list(var, "COEF")
+            if isinstance(value, (Vector, Dyadic)):
+                raise AutolevModelError("COEF(E, [x, y]) takes a scalar or a column E, not "
+                                        "a vector")
             col = value if isinstance(value, sm.MatrixBase) else sm.Matrix([value])
             return sm.Matrix(len(col), len(vs), lambda i, j: self._coef1(col[i], vs[j]))
-        var = sm.sympify(var)
+        (var,) = _name_list(var, "COEF")
         return self.map_scalars(value, lambda e: self._coef1(e, var))
 
     def _coef1(self, e, var):
@@ -59,12 +67,12 @@ class AlgebraMixin:
     def exclude(self, value, var):
         """EXCLUDE(E, x) (or [x, y]): the terms of the expanded E that do not contain x
         (through definitions)."""
-        vs = _name_list(var)
+        vs = _name_list(var, "EXCLUDE")
         return self.map_scalars(value, lambda e: self._terms_free_of(e, vs))
 
     def include(self, value, var):
         """INCLUDE(E, x): the terms of the expanded E that contain x."""
-        vs = _name_list(var)
+        vs = _name_list(var, "INCLUDE")
         return self.map_scalars(
             value, lambda e: sm.expand(sm.sympify(e)) - self._terms_free_of(e, vs))
 
@@ -179,7 +187,7 @@ class AlgebraMixin:
         with a Z for its coefficient (a name inside a non-polynomial function stays
         hidden in its Z)."""
         names = [n for k in list(self.settings.get("ZEE_NOT", [])) + list(keep)
-                 for n in _name_list(k)]
+                 for n in _name_list(k, "ZEE")]
 
         def one(e):
             e = sm.sympify(e)
@@ -256,7 +264,22 @@ class AlgebraMixin:
             raise AutolevModelError(f"ANGVEL does not know the rotation type {kind.upper()}")
 
 
-def _name_list(x) -> list:
-    """x, or the entries of a matrix or list x, as sympy expressions."""
+def _name_list(x, what: str) -> list:
+    """x, or the entries of a matrix or list x, as sympy expressions (names, or products
+    of names)."""
     items = list(x) if isinstance(x, (sm.MatrixBase, list, tuple)) else [x]
+    for v in items:
+        if not isinstance(v, (sm.Expr, int, float)):
+            raise AutolevModelError(f"{what} takes names (x or [x, y]), not {v}")
     return [sm.sympify(v) for v in items]
+
+
+def _unit_vector_coefficient(value, unit: Vector):
+    """COEF(V>, N1>): the measure number of V> on N1>, from V>'s terms in N only."""
+    terms = list(unit.terms.items())
+    if len(terms) != 1 or sorted(terms[0][1], key=str) != [0, 0, 1]:
+        raise AutolevModelError(f"COEF(V>, x>) takes a unit vector x> of a frame, not {unit}")
+    frame, axes = terms[0]
+    if not isinstance(value, Vector):
+        raise AutolevModelError(f"COEF(E, {unit}) takes a vector E, not {value}")
+    return value.terms.get(frame, (0, 0, 0))[list(axes).index(1)]

@@ -73,7 +73,8 @@ def _assign_column(tr: Translator, run: list[ir.Assignment]) -> None:
                            "T001")
         codes.append(value.code)
     name = run[0].target.name
-    entry = Entry(tr.py_name("value", name), NameKind.VALUE, ValueType.MATRIX)
+    entry = Entry(tr.py_name("value", name), NameKind.VALUE, ValueType.MATRIX,
+                  shape=(len(codes), 1), elements=tuple(st.value for st in run))
     tr.values[name.lower()] = entry
     tr.emit(call_lines(f"{entry.py} = sm.Matrix([", codes, "])"))
 
@@ -128,14 +129,16 @@ def assign(tr: Translator, target: ir.Expr, op: str, value_expr: ir.Expr) -> Non
     if entry is None:
         if op not in ("=", ":="):
             raise tr.error(f"{name} has no value yet", target, "T002")
-        entry = Entry(tr.py_name("value", name), NameKind.VALUE, value.type)
+        entry = Entry(tr.py_name("value", name), NameKind.VALUE, value.type, shape=value.shape,
+                      elements=value.elements)
         tr.values[key] = entry
         tr.emit(f"{entry.py} = {value.code}")
         return
     if op in ("=", ":="):
-        entry.type = value.type
+        entry.type, entry.shape, entry.elements = value.type, value.shape, value.elements
         tr.emit(f"{entry.py} = {value.code}")
     else:
+        entry.shape = entry.elements = None     # M *= N: the product is not followed
         tr.emit(f"{entry.py} = {entry.py} {_COMPOUND[op]} {value.wrapped(6)}")
 
 
@@ -158,7 +161,7 @@ def _assign_element(tr: Translator, target: ir.Index, op: str, value: Typed) -> 
         current = "None"
     else:
         current = entry.py
-        entry.type = ValueType.MATRIX
+        entry.type, entry.shape, entry.elements = ValueType.MATRIX, None, None   # it may grow
     if op not in ("=", ":="):
         old = f"{entry.py}[{', '.join(tr.index_code(i) for i in target.indices)}]"
         rhs = f"{old} {_COMPOUND[op]} {value.wrapped(6)}"

@@ -97,6 +97,7 @@ def _eig_command(tr, c):
         if entry is None:
             entry = Entry(tr.py_name("value", a.name), NameKind.VALUE, ValueType.MATRIX)
             tr.values[key] = entry
+        entry.type, entry.shape, entry.elements = ValueType.MATRIX, None, None
         names.append(entry.py)
     tr.emit(f"{names[0]}, {names[1]} = al.eig(model.explicit({m.code}), vectors=True)")
 

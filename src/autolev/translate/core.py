@@ -102,6 +102,8 @@ class Typed:
     exact: Fraction | None = None      # value of a pure integer/rational expression
     node: object = None
     approx: float | None = None        # double value of a function of numbers (EXP(2))
+    shape: tuple[int, int] | None = None   # rows and columns of a matrix, when known
+    elements: tuple | None = None      # a matrix literal's elements (IR), row by row
 
     def wrapped(self, below: int) -> str:
         return f"({self.code})" if self.prec < below else self.code
@@ -122,6 +124,8 @@ class Entry:
     kind: NameKind
     type: ValueType
     order: int = 0       # derivatives declared (scalars)
+    shape: tuple[int, int] | None = None   # of a matrix value, while known
+    elements: tuple | None = None      # of a matrix value written as a literal
 
 
 @dataclass
@@ -432,7 +436,7 @@ class Translator:
             if primes:
                 raise self.error(f"{name} is not a declared variable, so {name}"
                                  f"{chr(39) * primes} has no meaning", node, "T008")
-            return Typed(entry.py, entry.type)
+            return Typed(entry.py, entry.type, shape=entry.shape, elements=entry.elements)
         if key in ("u_independent", "u_dependent", "u_auxiliary"):
             order = f", {primes}" if primes else ""
             return Typed(f"model.speed_column({key[2:]!r}{order})", ValueType.MATRIX)

@@ -184,9 +184,13 @@ def matrix(tr: Translator, e: ir.Matrix, want: str) -> Typed:
         inner = ", ".join("[" + ", ".join(r) + "]" for r in rows)
         return Typed(f"al.block_matrix([{inner}])", ValueType.MATRIX)
     if all(len(r) == 1 for r in rows):
-        return Typed("sm.Matrix([" + ", ".join(r[0] for r in rows) + "])", ValueType.MATRIX)
+        return Typed("sm.Matrix([" + ", ".join(r[0] for r in rows) + "])", ValueType.MATRIX,
+                     shape=(len(rows), 1), elements=tuple(r[0] for r in e.rows))
     inner = ", ".join("[" + ", ".join(r) + "]" for r in rows)
-    return Typed(f"sm.Matrix([{inner}])", ValueType.MATRIX)
+    if len({len(r) for r in rows}) != 1:
+        return Typed(f"sm.Matrix([{inner}])", ValueType.MATRIX)
+    return Typed(f"sm.Matrix([{inner}])", ValueType.MATRIX, shape=(len(rows), len(rows[0])),
+                 elements=tuple(x for r in e.rows for x in r))
 
 
 @EXPRESSIONS.register(ir.NameRange)

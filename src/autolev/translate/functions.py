@@ -12,6 +12,7 @@ import math
 from .. import ir
 from .core import ATOM, EXPRESSIONS, NameKind, Translator, Typed, ValueType
 from .emit import quote
+from .special import classify
 
 FUNCTIONS: dict = {}
 # beyond these, exact computation takes minutes or gigabytes for what a model never needs
@@ -75,6 +76,104 @@ def _plain(tr: Translator, c: ir.Call):
             sign = "=" if isinstance(a, ir.Equation) else ":"
             raise tr.error(f"{c.name.upper()} does not take '{sign}' "
                            "arguments", a, "T009")
+
+
+# -- the kinds of arguments -----------------------------------------------------------
+# what no function takes where it wants an expression
+_NOT_VALUES = (ValueType.FRAME, ValueType.POINT, ValueType.LIST, ValueType.STRING)
+_NAME_OF_KIND = {NameKind.NEWTONIAN: "the Newtonian frame", NameKind.FRAME: "a frame",
+                 NameKind.BODY: "a body", NameKind.POINT: "a point",
+                 NameKind.PARTICLE: "a particle"}
+
+
+def _what(tr: Translator, node, x: Typed) -> str:
+    """What an argument is, for a message: a body, a vector, a number, ..."""
+    if x.type in (ValueType.FRAME, ValueType.POINT) and isinstance(node, ir.Name):
+        ent = tr.entities.get(node.name.lower())
+        if ent is not None:
+            return _NAME_OF_KIND.get(ent.kind, f"a {x.type}")
+    if _is_number(x):
+        return "a number"
+    return f"a {x.type}"
+
+
+def _what_not_a_name(tr: Translator, node, x: Typed) -> str:
+    """What an argument that should be a name is: a number, an expression, a vector, ..."""
+    if x.type == ValueType.SCALAR and not _is_number(x):
+        return "an expression"
+    return _what(tr, node, x)
+
+
+def _is_number(x: Typed) -> bool:
+    return x.exact is not None or x.approx is not None
+
+
+def _value(tr: Translator, a, what: str) -> Typed:
+    """An argument that is an expression: a scalar, vector, dyadic or matrix."""
+    x = tr.expr(a)
+    if x.type in _NOT_VALUES:
+        raise tr.error(f"{what} takes an expression, not {_what(tr, a, x)}", a, "T001")
+    return x
+
+
+def _names(tr: Translator, a, what: str) -> Typed:
+    """The quantities a function works on: a name (or a product of names, x*y), or a
+    list of them ([x, y])."""
+    x = tr.expr(a)
+    if x.type not in (ValueType.SCALAR, ValueType.MATRIX, ValueType.UNKNOWN) or _is_number(x):
+        raise tr.error(f"{what} takes a name or a list of names ([x, y]) here, not "
+                       f"{_what(tr, a, x)}", a, "T001")
+    for el in x.elements or ():
+        if not any(isinstance(n, ir.Name) for n in ir.walk(el)):
+            raise tr.error(f"{what} takes a list of names ([x, y]) here; this one holds a "
+                           "number", a, "T001")
+    return x
+
+
+def _variable(tr: Translator, a, what: str) -> Typed:
+    """A name to differentiate with respect to (Q, Q', U1), or a list of them."""
+    x = tr.expr(a)
+    if x.type == ValueType.MATRIX and x.elements is not None:
+        for el in x.elements:
+            if not isinstance(el, ir.Name):
+                raise tr.error(f"{what} differentiates with respect to a list of names; "
+                               "this one holds an expression", a, "T009")
+    if x.type in (ValueType.MATRIX, ValueType.UNKNOWN) or \
+            (x.type == ValueType.SCALAR and isinstance(a, ir.Name)):
+        return x
+    raise tr.error(f"{what} differentiates with respect to a name or a list of names, "
+                   f"not {_what_not_a_name(tr, a, x)}", a, "T009")
+
+
+def _number(tr: Translator, a, what: str) -> Typed:
+    """A count, degree, index or tolerance: a scalar holding no declared quantity (a
+    variable or constant is a symbol, never a number)."""
+    x = tr.expr(a)
+    if x.type not in (ValueType.SCALAR, ValueType.UNKNOWN):
+        raise tr.error(f"{what} must be a number, not {_what(tr, a, x)}", a, "T001")
+    for node in ir.walk(a):
+        entry = tr.scalars.get(node.name.lower()) if isinstance(node, ir.Name) else None
+        if entry is not None:
+            raise tr.error(f"{what} must be a number, not {node.name}{chr(39) * node.primes} "
+                           f"(a {entry.kind})", node, "T009")
+    return x
+
+
+def _declared_in(tr: Translator, elements) -> ir.Name | None:
+    """The first declared quantity (a symbol, never a number) in a literal's elements."""
+    for el in elements or ():
+        for node in ir.walk(el):
+            if isinstance(node, ir.Name) and node.name.lower() in tr.scalars:
+                return node
+    return None
+
+
+def _is_unit_vector(tr: Translator, a) -> bool:
+    """N1>, N2>, N3> of a declared frame or body."""
+    if not isinstance(a, ir.VectorName) or a.dyadic:
+        return False
+    sp = classify(tr, a)
+    return sp is not None and sp.kind == "unit"
 
 
 # -- elementary scalar functions ---------------------------------------------------
@@ -236,7 +335,14 @@ def _express(tr, c):
 def _vector(tr, c):
     args = nargs(tr, c, 2, 4)
     f = tr.frame(args[0]).code
-    rest = [tr.expr(a) for a in args[1:]]
+    if len(args) == 2:
+        rest = [_matrix_arg(tr, args[1], "VECTOR(A, M)")]
+        shape = rest[0].shape
+        if shape is not None and shape[0] * shape[1] != 3:
+            raise tr.error(f"VECTOR(A, M) takes the 3 measure numbers, not a {shape[0]}x"
+                           f"{shape[1]} matrix", args[1], "T001")
+    else:
+        rest = [tr.scalar(a) for a in args[1:]]
     return Typed(f"al.vector({f}, {', '.join(r.code for r in rest)})", ValueType.VECTOR)
 
 
@@ -256,7 +362,10 @@ def _matrix(tr, c):
 def _dyadic(tr, c):
     args = nargs(tr, c, 2, 3)
     frames = [tr.frame(a).code for a in [args[0]] + args[2:]]
-    m = tr.expr(args[1])
+    m = _matrix_arg(tr, args[1], "DYADIC")
+    if m.shape not in (None, (3, 3)):
+        raise tr.error(f"DYADIC takes a 3x3 matrix, not a {m.shape[0]}x{m.shape[1]} one",
+                       args[1], "T001")
     return Typed(f"al.dyadic({frames[0]}, {m.code}" +
                  (f", {frames[1]})" if len(frames) > 1 else ")"), ValueType.DYADIC)
 
@@ -265,7 +374,7 @@ def _dyadic(tr, c):
 @function("DT")
 def _dt(tr, c):
     args = nargs(tr, c, 1, 2)
-    x = tr.expr(args[0])
+    x = _value(tr, args[0], "DT")
     if x.type in (ValueType.VECTOR, ValueType.DYADIC):
         if len(args) != 2:
             raise tr.error("DT of a vector needs the frame: DT(V>, N)", c, "T007")
@@ -278,8 +387,8 @@ def _dt(tr, c):
 @function("D")
 def _d(tr, c):
     args = nargs(tr, c, 2, 3)
-    x = tr.expr(args[0])
-    var = tr.expr(args[1])
+    x = _value(tr, args[0], "D")
+    var = _variable(tr, args[1], "D")
     if x.type in (ValueType.VECTOR, ValueType.DYADIC):
         if len(args) != 3:
             raise tr.error("D of a vector needs the frame: D(V>, x, N)", c, "T007")
@@ -293,23 +402,24 @@ def _d(tr, c):
 @function("RHS")
 def _rhs(tr, c):
     (a,) = nargs(tr, c, 1)
-    x = tr.expr(a)
+    x = _value(tr, a, "RHS")
     return Typed(f"model.rhs({x.code})", x.type)
 
 
 @function("EXPLICIT")
 def _explicit(tr, c):
     args = nargs(tr, c, 1, 2)
-    x = tr.expr(args[0])
-    extra = "".join(f", {tr.expr(a).code}" for a in args[1:])
+    x = _value(tr, args[0], "EXPLICIT")
+    extra = "".join(f", {_names(tr, a, 'EXPLICIT').code}" for a in args[1:])
     return Typed(f"model.explicit({x.code}{extra})", x.type)
 
 
 @function("ZEE", "AUTOZ")
 def _zee(tr, c):
     args = nargs(tr, c, 1, 2)
-    x = tr.expr(args[0])
-    keep = f", {tr.expr(args[1]).code}" if len(args) == 2 else ""
+    name = c.name.upper()
+    x = _value(tr, args[0], name)
+    keep = f", {_names(tr, args[1], name).code}" if len(args) == 2 else ""
     return Typed(f"model.zee({x.code}{keep})", x.type)
 
 
@@ -398,10 +508,11 @@ def _partials(tr, c):
     v = tr.expr(c.args[0])
     if v.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
         raise tr.error(f"PARTIALS takes a velocity vector, not a {v.type}", c.args[0], "T001")
-    speeds = [tr.scalar(a).code for a in c.args[1:]]
-    if len(speeds) == 1:
-        return Typed(f"model.partials({v.code}, {speeds[0]})[0]", ValueType.VECTOR)
-    return Typed(f"model.partials({', '.join([v.code] + speeds)})", ValueType.VECTORS)
+    speeds = [_variable(tr, a, "PARTIALS") for a in c.args[1:]]
+    codes = [v.code] + [u.code for u in speeds]
+    if len(speeds) == 1 and speeds[0].type == ValueType.SCALAR:
+        return Typed(f"model.partials({', '.join(codes)})[0]", ValueType.VECTOR)
+    return Typed(f"model.partials({', '.join(codes)})", ValueType.VECTORS)
 
 
 @function("NICHECK")
@@ -427,7 +538,7 @@ def _substitutions(tr, args) -> str:
 def _evaluate(tr, c):
     if not c.args:
         raise tr.error("EVALUATE needs an expression", c, "T007")
-    x = tr.expr(c.args[0])
+    x = _value(tr, c.args[0], "EVALUATE")
     return Typed(f"model.evaluate({x.code}, {_substitutions(tr, c.args[1:])})", x.type)
 
 
@@ -435,43 +546,58 @@ def _evaluate(tr, c):
 def _replace(tr, c):
     if not c.args:
         raise tr.error("REPLACE needs an expression", c, "T007")
-    x = tr.expr(c.args[0])
+    x = _value(tr, c.args[0], "REPLACE")
     return Typed(f"al.replace({x.code}, {_substitutions(tr, c.args[1:])})", x.type)
 
 
-def _degree_range(tr, a) -> str:
+def _degree_range(tr, a, what: str) -> str:
     if isinstance(a, ir.Range):
-        return f"{tr.scalar(a.lo).code}, {tr.scalar(a.hi).code}"
-    return tr.scalar(a).code
+        return f"{_number(tr, a.lo, what).code}, {_number(tr, a.hi, what).code}"
+    return _number(tr, a, what).code
 
 
 @function("EXPAND")
 def _expand(tr, c):
     args = nargs(tr, c, 1, 2)
-    x = tr.expr(args[0])
-    extra = f", {_degree_range(tr, args[1])}" if len(args) == 2 else ""
+    x = _value(tr, args[0], "EXPAND")
+    degree = "EXPAND's degree"
+    extra = f", {_degree_range(tr, args[1], degree)}" if len(args) == 2 else ""
     return Typed(f"model.expand({x.code}{extra})", x.type)
 
 
 @function("FACTOR")
 def _factor(tr, c):
     args = nargs(tr, c, 1, 2)
-    x = tr.expr(args[0])
-    extra = "".join(f", {tr.expr(a).code}" for a in args[1:])
+    x = _value(tr, args[0], "FACTOR")
+    extra = "".join(f", {_names(tr, a, 'FACTOR').code}" for a in args[1:])
     return Typed(f"al.factor({x.code}{extra})", x.type)
 
 
 @function("SIMPLIFY")
 def _simplify(tr, c):
     (a,) = nargs(tr, c, 1)
-    x = tr.expr(a)
+    x = _value(tr, a, "SIMPLIFY")
     return Typed(f"al.simplify({x.code})", x.type)
 
 
 @function("COEF")
 def _coef(tr, c):
+    """COEF(E, x) of every measure number or element of E; COEF(E, [x, y]) of a scalar or
+    column, a matrix; COEF(V>, N1>), V>'s measure number on N1> (docs/language.md)."""
     a, b = nargs(tr, c, 2)
-    x, v = tr.expr(a), tr.expr(b)
+    x = _value(tr, a, "COEF")
+    if isinstance(b, ir.VectorName) and not b.dyadic:
+        if not _is_unit_vector(tr, b):
+            raise tr.error(f"COEF(V>, {b.text}): the coefficient is taken of a unit vector "
+                           "of a frame (N1>, N2>, N3>)", b, "T001")
+        if x.type not in (ValueType.VECTOR, ValueType.UNKNOWN):
+            raise tr.error(f"COEF(E, {b.text}) takes a vector E, not {_what(tr, a, x)}", a,
+                           "T001")
+        return Typed(f"model.coef({x.code}, {tr.expr(b).code})", ValueType.SCALAR)
+    v = _names(tr, b, "COEF")
+    if v.type == ValueType.MATRIX and x.type in (ValueType.VECTOR, ValueType.DYADIC):
+        raise tr.error(f"COEF(E, [x, y]) takes a scalar or a column E, not a {x.type}", a,
+                       "T001")
     rtype = ValueType.MATRIX if ValueType.MATRIX in (x.type, v.type) else x.type
     return Typed(f"model.coef({x.code}, {v.code})", rtype)
 
@@ -479,7 +605,7 @@ def _coef(tr, c):
 @function("EXCLUDE", "INCLUDE")
 def _exclude(tr, c):
     a, b = nargs(tr, c, 2)
-    x, v = tr.expr(a), tr.expr(b)
+    x, v = _value(tr, a, c.name.upper()), _names(tr, b, c.name.upper())
     fn = c.name.lower()
     return Typed(f"model.{fn}({x.code}, {v.code})", x.type)
 
@@ -487,21 +613,24 @@ def _exclude(tr, c):
 @function("ARRANGE")
 def _arrange(tr, c):
     a, n, v = nargs(tr, c, 3)
-    x = tr.expr(a)
-    return Typed(f"al.arrange({x.code}, {tr.scalar(n).code}, {tr.expr(v).code})", x.type)
+    x = _value(tr, a, "ARRANGE")
+    degree = _number(tr, n, "ARRANGE's degree")
+    return Typed(f"al.arrange({x.code}, {degree.code}, {_names(tr, v, 'ARRANGE').code})",
+                 x.type)
 
 
 @function("TAYLOR")
 def _taylor(tr, c):
     if len(c.args) < 3:
         raise tr.error("TAYLOR(E, n, x=a, ...) or TAYLOR(E, n:m, x=a, ...)", c, "T007")
-    x = tr.expr(c.args[0])
-    degrees = [tr.scalar(d) for d in ((c.args[1].lo, c.args[1].hi)
-                                      if isinstance(c.args[1], ir.Range) else (c.args[1],))]
+    x = _value(tr, c.args[0], "TAYLOR")
+    degrees = [_number(tr, d, "TAYLOR's order")
+               for d in ((c.args[1].lo, c.args[1].hi)
+                         if isinstance(c.args[1], ir.Range) else (c.args[1],))]
     if any(d.exact is not None and d.exact > MAX_TAYLOR_ORDER for d in degrees):
         raise tr.error(f"TAYLOR to order {max(d.exact for d in degrees if d.exact)}: at most "
                        f"order {MAX_TAYLOR_ORDER} is expanded", c.args[1], "T005")
-    order = _degree_range(tr, c.args[1])
+    order = _degree_range(tr, c.args[1], "TAYLOR's order")
     points = []
     for a in c.args[2:]:
         if isinstance(a, ir.Name):      # a bare name: expand about 0
@@ -521,29 +650,53 @@ def _taylor(tr, c):
 @function("POLYNOMIAL")
 def _polynomial(tr, c):
     args = nargs(tr, c, 2, 3)
-    items = [tr.expr(a).code for a in args]
-    return Typed(f"al.polynomial({', '.join(items)})", ValueType.SCALAR)
+    if len(args) == 2:          # the polynomial of a list of coefficients
+        coefficients = _matrix_arg(tr, args[0], "POLYNOMIAL([a, b, ...], x)")
+        return Typed(f"al.polynomial({coefficients.code}, {tr.scalar(args[1]).code})",
+                     ValueType.SCALAR)
+    # the row of E's coefficients in x
+    e, x = tr.scalar(args[0]), tr.scalar(args[1])
+    n = _number(tr, args[2], "POLYNOMIAL's degree")
+    return Typed(f"al.polynomial({e.code}, {x.code}, {n.code})", ValueType.MATRIX)
 
 
 @function("ROOTS")
 def _roots(tr, c):
     args = nargs(tr, c, 1, 3)
-    items = [tr.expr(a).code for a in args]
-    return Typed(f"al.roots({', '.join(items)})", ValueType.MATRIX)
+    if len(args) == 1:          # the polynomial's coefficients, highest power first
+        items = [_matrix_arg(tr, args[0], "ROOTS([a, b, ...])")]
+        symbol = _declared_in(tr, items[0].elements)
+        if symbol is not None and len(items[0].elements) > 3:
+            raise tr.error(f"ROOTS of a polynomial of degree {len(items[0].elements) - 1} "
+                           f"takes numbers; this one holds {symbol.name} (the closed forms are "
+                           "computed up to degree 2)", args[0], "T001")
+    else:
+        items = [tr.scalar(args[0]), tr.scalar(args[1]), _number(tr, args[2], "ROOTS' degree")]
+    return Typed(f"al.roots({', '.join(i.code for i in items)})", ValueType.MATRIX)
 
 
 @function("EPSILON")
 def _epsilon(tr, c):
     a, b = nargs(tr, c, 2)
-    x = tr.expr(a)
-    return Typed(f"al.epsilon({x.code}, {tr.scalar(b).code})", x.type)
+    x = _value(tr, a, "EPSILON")
+    tolerance = _number(tr, b, "EPSILON's tolerance")
+    return Typed(f"al.epsilon({x.code}, {tolerance.code})", x.type)
 
 
 # -- matrices ------------------------------------------------------------------------
 def _matrix_arg(tr, a, what):
     x = tr.expr(a)
     if x.type not in (ValueType.MATRIX, ValueType.UNKNOWN):
-        raise tr.error(f"{what} takes a matrix, not a {x.type}", a, "T001")
+        raise tr.error(f"{what} takes a matrix, not {_what(tr, a, x)}", a, "T001")
+    return x
+
+
+def _square_arg(tr, a, what):
+    """A matrix argument that must be square (when its shape is known here)."""
+    x = _matrix_arg(tr, a, what)
+    if x.shape is not None and x.shape[0] != x.shape[1]:
+        raise tr.error(f"{what} takes a square matrix, not a {x.shape[0]}x{x.shape[1]} one",
+                       a, "T001")
     return x
 
 
@@ -556,34 +709,44 @@ def _transpose(tr, c):
 @function("INV", "INVERSE")
 def _inv(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"model.inv({_matrix_arg(tr, a, 'INV').code})", ValueType.MATRIX)
+    return Typed(f"model.inv({_square_arg(tr, a, c.name.upper()).code})", ValueType.MATRIX)
 
 
 @function("DET")
 def _det(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"model.det({_matrix_arg(tr, a, 'DET').code})", ValueType.SCALAR)
+    return Typed(f"model.det({_square_arg(tr, a, 'DET').code})", ValueType.SCALAR)
 
 
 @function("TRACE")
 def _trace(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"al.trace({_matrix_arg(tr, a, 'TRACE').code})", ValueType.SCALAR)
+    return Typed(f"al.trace({_square_arg(tr, a, 'TRACE').code})", ValueType.SCALAR)
 
 
 @function("DIAGMAT")
 def _diagmat(tr, c):
     args = nargs(tr, c, 2, 3)
-    return Typed(f"al.diagmat({', '.join(tr.scalar(a).code for a in args)})", ValueType.MATRIX)
+    sizes = [_number(tr, a, "DIAGMAT's size").code for a in args[:-1]]
+    return Typed(f"al.diagmat({', '.join(sizes + [tr.scalar(args[-1]).code])})",
+                 ValueType.MATRIX)
 
 
-def _selection(tr, args) -> list[str]:
+def _index(tr, a, count: int | None) -> Typed:
+    """A 1-based index, within 1..count when both are known here."""
+    x = _number(tr, a, "an index")
+    if count is not None and x.exact is not None and not 1 <= x.exact <= count:
+        raise tr.error(f"index {x.exact} is outside 1..{count}", a, "T001")
+    return x
+
+
+def _selection(tr, args, count: int | None) -> list[str]:
     out = []
     for a in args:
         if isinstance(a, ir.Range):
-            out.append(f"({tr.scalar(a.lo).code}, {tr.scalar(a.hi).code})")
+            out.append(f"({_index(tr, a.lo, count).code}, {_index(tr, a.hi, count).code})")
         else:
-            out.append(tr.scalar(a).code)
+            out.append(_index(tr, a, count).code)
     return out
 
 
@@ -595,7 +758,8 @@ def _rows(tr, c):
     fn = "rows" if c.name.upper() == "ROWS" else "cols"
     if len(c.args) == 1:
         return Typed(f"al.{fn}({m.code})", ValueType.SCALAR)
-    sel = _selection(tr, c.args[1:])
+    axis = 0 if fn == "rows" else 1
+    sel = _selection(tr, c.args[1:], m.shape[axis] if m.shape else None)
     return Typed(f"al.{fn}({m.code}, {', '.join(sel)})", ValueType.MATRIX)
 
 
@@ -603,6 +767,10 @@ def _rows(tr, c):
 def _element(tr, c):
     args = nargs(tr, c, 2, 3)
     m = _matrix_arg(tr, args[0], "ELEMENT")
+    counts = (m.shape if len(args) == 3 else (m.shape[0] * m.shape[1],)) if m.shape \
+        else (None, None)
+    for a, count in zip(args[1:], counts):
+        _index(tr, a, count)
     idx = [tr.index_code(a) for a in args[1:]]
     return Typed(f"{m.wrapped(ATOM)}[{', '.join(idx)}]", ValueType.SCALAR)
 
@@ -610,7 +778,12 @@ def _element(tr, c):
 @function("EIG")
 def _eig(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"al.eig(model.explicit({_matrix_arg(tr, a, 'EIG').code}))", ValueType.MATRIX)
+    m = _square_arg(tr, a, "EIG")
+    symbol = _declared_in(tr, m.elements)
+    if symbol is not None:
+        raise tr.error(f"EIG takes a matrix of numbers; this one holds {symbol.name}, a "
+                       f"{tr.scalars[symbol.name.lower()].kind} (EVALUATE it first)", a, "T001")
+    return Typed(f"al.eig(model.explicit({m.code}))", ValueType.MATRIX)
 
 
 # -- units and inputs ------------------------------------------------------------------
@@ -640,4 +813,8 @@ def _unit_text(tr, e) -> str:
 @function("INPUT")
 def _input(tr, c):
     (a,) = nargs(tr, c, 1)
-    return Typed(f"model.input_value({tr.expr(a).code})", ValueType.SCALAR)  # SI (radians)
+    if not (isinstance(a, ir.Name) and a.name.lower() in tr.scalars):
+        x = tr.expr(a)
+        raise tr.error(f"INPUT(x) is the value INPUT gave to a declared name x, not to "
+                       f"{_what_not_a_name(tr, a, x)}", a, "T008")
+    return Typed(f"model.input_value({tr.symbol(a)})", ValueType.SCALAR)  # SI (radians)
