@@ -52,9 +52,10 @@ def test_the_cache_is_made_private_whatever_the_umask(cache):
     simulate(umask=0)
     for d in (cache, cache.parent, cache.parent.parent):
         assert stat.S_IMODE(d.stat().st_mode) == 0o700, d
-    for lib in libraries(cache):
-        assert stat.S_IMODE(lib.stat().st_mode) & 0o022 == 0
-        assert (lib.parent / (lib.name + ".sha256")).exists()
+    # every file 0600, digests included (they were 0666 under umask 000)
+    files = [f for lib in libraries(cache) for f in (lib, diskcache.digest_file(lib))]
+    assert files and all(stat.S_IMODE(f.stat().st_mode) == 0o600 for f in files)
+    assert stat.S_IMODE((cache / diskcache.MARKER).stat().st_mode) == 0o600
 
 
 @pytest.mark.parametrize("damage", [b"", b"garbage" * 10, "truncated"])
@@ -161,9 +162,10 @@ def test_a_second_user_cannot_make_our_runs_load_their_code(shared_tmp, monkeypa
     for kind in ("lib.so", "obj.o"):
         diskcache.install((planted / kind).read_bytes(), planted / ("x" + kind))
         os.chmod(planted / ("x" + kind), 0o755)
+        os.chmod(diskcache.digest_file(planted / ("x" + kind)), 0o644)
     copies = " && ".join(
         f"cp {planted}/x{'lib.so' if n.endswith('.so') else 'obj.o'} DIR/{n} && "
-        f"cp {planted}/x{'lib.so' if n.endswith('.so') else 'obj.o'}.sha256 DIR/{n}.sha256"
+        f"cp {planted}/x{'lib.so' if n.endswith('.so') else 'obj.o'}.mac DIR/{n}.mac"
         for n in names)
 
     # 1. our cache: they can neither write into it, nor list it, nor move it aside

@@ -107,11 +107,18 @@ def test_the_warnings_of_building_are_given_again(cache, tmp_path, monkeypatch):
 def test_the_cache_keeps_under_its_limit_oldest_first(tmp_path):
     folder = tmp_path / "c"
     folder.mkdir(mode=0o700)
-    for n in range(5):
-        (folder / f"e{n}").write_bytes(b"x" * 1000)
-        os.utime(folder / f"e{n}", (n, n))
-    assert diskcache.trim(folder, limit=2500) == 3
-    assert sorted(p.name for p in folder.iterdir()) == ["e3", "e4"]
+    names = [f"model_{n:040x}.pickle" for n in range(6)]
+    for n, name in enumerate(names):
+        (folder / name).write_bytes(b"x" * 1000)
+        os.utime(folder / name, (n, n))
+    # the newest was written just now: another process may be reading it
+    os.utime(folder / names[5], None)
+    (folder / "measurements.csv").write_bytes(b"y" * 3_000_000)   # not autolev's
+    assert diskcache.trim(folder, limit=2500) == 4
+    assert sorted(p.name for p in folder.iterdir()) == ["measurements.csv", *names[4:]]
+    # over the limit still, the entry just written stays
+    assert diskcache.trim(folder, limit=500) == 1
+    assert sorted(p.name for p in folder.iterdir()) == ["measurements.csv", names[5]]
 
 
 def test_cache_info_and_clear(cache, tmp_path, capsys):

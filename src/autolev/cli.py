@@ -666,7 +666,11 @@ def cmd_cache(ns: argparse.Namespace) -> int:
     from . import modelcache
 
     if ns.action == "clear":
-        count, size = modelcache.clear()
+        try:
+            count, size = modelcache.clear()
+        except OSError as exc:
+            print(f"autolev cache: error: {exc}", file=sys.stderr)
+            return 1
         print(f"removed {count} entr{'y' if count == 1 else 'ies'} ({_megabytes(size)})")
         return 0
     s = modelcache.summary()

@@ -223,8 +223,10 @@ def summary() -> Summary:
 
 
 def clear() -> tuple[int, int]:
-    """Remove every entry (models and compiled code); (entries, bytes) removed."""
-    found = diskcache.entries(diskcache.cache_dir())
-    for e in found:
-        diskcache.remove(e.path)
-    return len(found), sum(e.size for e in found)
+    """Remove every entry (models and compiled code) of the configured cache folder;
+    (entries, bytes) removed.  Raises diskcache.CacheFolderError for a folder that is
+    not autolev's cache."""
+    folder = diskcache.configured_dir()
+    if not folder.exists():
+        return 0, 0
+    return diskcache.clear(folder)

@@ -23,7 +23,7 @@ import numpy as np
 import sympy as sm
 
 from ..calculus import Definitions
-from ..diskcache import cache_dir, install, verified
+from ..diskcache import cache_dir, install_or_aside, read_verified, verified
 from ..errors import AutolevModelError
 from ..printer import MATH_ERRORS, CodePrinter, fast_namespace, safe_namespace
 
@@ -414,16 +414,19 @@ class CompileError(Exception):
     pass
 
 
-def build_object(source: str, flags: tuple) -> Path:
+def build_object(source: str, flags: tuple) -> bytes:
     """Compile C source to an object file, cached by the hash of source and flags:
-    code that is the same for every model (the integration loop) is compiled once."""
+    code that is the same for every model (the integration loop) is compiled once.
+    Returns its bytes (read as verified: another process's trim cannot take it away
+    from a link under way)."""
     cc = compiler()
     if cc is None:
         raise CompileError("no C compiler")
     digest = hashlib.sha256((source + "\0" + " ".join(flags) + "\0" + cc).encode()).hexdigest()
     obj = cache_dir() / f"al_{digest[:24]}.o"
-    if verified(obj):
-        return obj
+    data = read_verified(obj)
+    if data is not None:
+        return data
     with tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / "shared.c"
         src.write_text(source)
@@ -432,8 +435,9 @@ def build_object(source: str, flags: tuple) -> Path:
                            capture_output=True, text=True)
         if r.returncode != 0:
             raise CompileError(r.stderr.strip()[-2000:])
-        install(out.read_bytes(), obj)
-    return obj
+        data = out.read_bytes()
+        install_or_aside(data, obj)
+    return data
 
 
 def build_shared_library(source: str, flags: tuple | None = None,
@@ -455,8 +459,11 @@ def build_shared_library(source: str, flags: tuple | None = None,
     # `shared_source`: compiled once for all models (its own cached object), linked in
     # at -O3: compiled once, and its loops (the LU solve, the stages) gain from it
     shared_flags = tuple("-O3" if f.startswith("-O") else f for f in flags)
-    shared = [build_object(shared_source, shared_flags)] if shared_source else []
     with tempfile.TemporaryDirectory() as tmp:
+        shared = []
+        if shared_source:
+            shared.append(Path(tmp) / "shared.o")
+            shared[0].write_bytes(build_object(shared_source, shared_flags))
         objects, procs = [], []
         for k, unit in enumerate(source.split(UNIT_MARK)):
             src = Path(tmp) / f"unit{k}.c"
@@ -478,8 +485,7 @@ def build_shared_library(source: str, flags: tuple | None = None,
                            capture_output=True, text=True)
         if r.returncode != 0:
             raise CompileError(r.stderr.strip()[-2000:])
-        install(out.read_bytes(), lib)
-    return lib
+        return install_or_aside(out.read_bytes(), lib)
 
 
 def compile_c(prog: Program, name: str = "compute", extra_source: str = "",
