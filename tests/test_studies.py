@@ -148,3 +148,30 @@ def test_progress_lines_for_a_long_study(pendulum, monkeypatch):
     lines = stream.getvalue().splitlines()
     assert lines[0].startswith("  sweep: ") and lines[-1].startswith("  sweep: 10/10 points")
     assert "s left" in lines[0]
+
+
+def test_sweeps_in_two_threads_each_get_their_own_model(tmp_path, monkeypatch):
+    # earth and moon pendulums swept at once: each table from its own model, though
+    # with other threads running the workers are started afresh, not forked
+    monkeypatch.setattr(studies, "LOCAL_SECONDS", 0.0)
+    import threading
+    models = {}
+    for name, g in (("earth", 9.81), ("moon", 1.62)):
+        path = tmp_path / f"{name}.al"
+        path.write_text(PENDULUM.replace("G = 9.81", f"G = {g}"))
+        models[name] = (autolev.load(path), g)
+    assert "G = 9.81" in PENDULUM
+    lengths = np.linspace(0.5, 3, 24)
+    tables = {}
+
+    def sweep(name):
+        model, _ = models[name]
+        tables[name] = model.sweep({"L": lengths, "Q": [0.0] * len(lengths)},
+                                   as_frame=False, workers=2, chunk_size=3, progress=False)
+    threads = [threading.Thread(target=sweep, args=(n,)) for n in models]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for name, (_, g) in models.items():
+        assert np.allclose(tables[name]["im2"], np.sqrt(g / lengths), rtol=1e-12), name

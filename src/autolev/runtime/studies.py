@@ -4,7 +4,8 @@ compiled once, as one table.
 Where the points are evaluated:
 - on this machine's cores (the default): the first point is evaluated here, which
   builds and compiles everything, then worker processes forked from this one (they
-  inherit the model and its compiled code) take the rest in chunks;
+  inherit the model and its compiled code) take the rest in chunks -- or, when this
+  process runs other threads, workers started afresh that get the model pickled;
 - on any executor passed as `executor=` (a `concurrent.futures.Executor`, or a Dask
   `distributed.Client`, whose `submit` is the same): each task carries the model's
   translation, and each worker process rebuilds the model once and keeps it for the
@@ -40,7 +41,9 @@ _OPTIONS = {
 # in an executor's worker: {digest of a model's source: model}, per thread (a model's
 # numeric state is not shared between threads)
 _WORKER_MODELS = threading.local()
-_FORKED: dict = {}             # what a forked worker inherits: the model being swept
+# what forked workers inherit: {a sweep's token: its model}, one entry per sweep under
+# way (sweeps in several threads each find their own)
+_FORKED: dict = {}
 # evaluated here, without workers, when the points left would take less than this
 LOCAL_SECONDS = 2.0
 
@@ -177,11 +180,10 @@ def _on_local_cores(model, workers, what, rows, options, collect, chunk_size, re
     results = [_evaluate(model, what, rows[0], options, collect)]
     report.advance(1)
     count = _worker_count(workers, len(rows) - 1)
-    forkable = count > 1 and "fork" in multiprocessing.get_all_start_methods()
     start = time.perf_counter()
     while len(results) < len(rows):
         per_point = (time.perf_counter() - start) / max(len(results) - 1, 1)
-        if forkable and len(results) > 1 and \
+        if count > 1 and len(results) > 1 and \
                 per_point * (len(rows) - len(results)) > LOCAL_SECONDS:
             break
         results.append(_evaluate(model, what, rows[len(results)], options, collect))
@@ -190,21 +192,71 @@ def _on_local_cores(model, workers, what, rows, options, collect, chunk_size, re
     if not rest:
         return results
     chunks = _chunks(rest, chunk_size or max(1, min(64, len(rest) // (4 * count))))
-    _FORKED["model"] = model
-    try:
-        with ProcessPoolExecutor(count, mp_context=multiprocessing.get_context("fork")) as pool:
-            futures = [pool.submit(_forked_chunk, what, chunk, options, collect)
-                       for chunk in chunks]
-            for future, chunk in zip(futures, chunks):
-                results += future.result()
-                report.advance(len(chunk))
-    finally:
-        _FORKED.clear()
+    for chunk_results, chunk in zip(_in_workers(model, count, what, chunks, options, collect),
+                                    chunks):
+        results += chunk_results
+        report.advance(len(chunk))
     return results
 
 
-def _forked_chunk(what, chunk, options, collect) -> list:
-    return _evaluate_chunk(_FORKED["model"], what, chunk, options, collect)
+def _in_workers(model, count: int, what, chunks, options, collect):
+    """The chunks' results, in order, from `count` worker processes: forked from this
+    one (inheriting the model and its compiled code) when it runs no other thread;
+    else started afresh, the model sent pickled (a fork beside other threads -- Jupyter's,
+    a GUI's, a Dask client's, another sweep's -- can deadlock in their locks)."""
+    if threading.active_count() == 1 and "fork" in multiprocessing.get_all_start_methods():
+        token = f"{os.getpid()}-{next(_SWEEPS)}"
+        _FORKED[token] = model
+        try:
+            with ProcessPoolExecutor(count, mp_context=multiprocessing.get_context("fork")) \
+                    as pool:
+                futures = [pool.submit(_forked_chunk, token, what, chunk, options, collect)
+                           for chunk in chunks]
+                for future in futures:
+                    yield future.result()
+        finally:
+            _FORKED.pop(token, None)
+        return
+    payload = _pickled(model)
+    digest = hashlib.sha256(payload).hexdigest()
+    method = "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() \
+        else "spawn"
+    with ProcessPoolExecutor(count, mp_context=multiprocessing.get_context(method)) as pool:
+        futures = [pool.submit(_pickled_chunk, payload, digest, what, chunk, options, collect)
+                   for chunk in chunks]
+        for future in futures:
+            yield future.result()
+
+
+_SWEEPS = itertools.count()
+# sympy expressions nest deeply: pickling walks them recursively
+_RECURSION = 20000
+
+
+def _pickled(model) -> bytes:
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, _RECURSION))
+    try:
+        return pickle.dumps(model, protocol=pickle.HIGHEST_PROTOCOL)
+    finally:
+        sys.setrecursionlimit(limit)
+
+
+def _forked_chunk(token: str, what, chunk, options, collect) -> list:
+    return _evaluate_chunk(_FORKED[token], what, chunk, options, collect)
+
+
+def _pickled_chunk(payload: bytes, digest: str, what, chunk, options, collect) -> list:
+    """A chunk in a worker started afresh: the model unpickled once per worker."""
+    kept = getattr(_WORKER_MODELS, "pickled", None)
+    if kept is None or kept[0] != digest:
+        limit = sys.getrecursionlimit()
+        sys.setrecursionlimit(max(limit, _RECURSION))
+        try:
+            kept = _WORKER_MODELS.pickled = (digest, pickle.loads(payload))
+        finally:
+            sys.setrecursionlimit(limit)
+    return _evaluate_chunk(kept[1], what, chunk, options, collect)
 
 
 def _on_executor(model, executor, what, rows, options, collect, chunk_size, report):
