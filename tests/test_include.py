@@ -101,3 +101,37 @@ def test_the_ir_builder_reads_no_file():
     calls = {node.func.attr for node in ast.walk(tree)
              if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)}
     assert not calls & {"read", "read_text", "read_bytes", "parse"}
+
+
+def test_a_stray_file_never_replaces_autolevs_own_words(tmp_path):
+    # an empty gravity.a and a cos.r holding 42 beside a pendulum (issue 31, item 3):
+    # Autolev's command and function are meant; each file is named in a warning
+    import subprocess
+    import sys
+    import numpy as np
+    from helpers import EXAMPLES
+    text = (EXAMPLES / "simple_pendulum.al").read_text()
+    assert "GRAVITY(G*N1>)" in text
+    (tmp_path / "pend.al").write_text(text + "CX = COS(THETA)\n")
+    clean = tmp_path / "clean"
+    clean.mkdir()
+    (clean / "pend.al").write_text(text)
+    (tmp_path / "gravity.a").write_text("")
+    (tmp_path / "cos.r").write_text("42\n")
+
+    def cli(*args):
+        return subprocess.run([sys.executable, "-m", "autolev", *map(str, args)],
+                              capture_output=True, text=True)
+    checked = cli("check", tmp_path / "pend.al")
+    said = checked.stdout + checked.stderr
+    assert checked.returncode == 0
+    assert "gravity.a has the name of Autolev's own command GRAVITY" in said
+    assert "cos.r has the name of Autolev's own function COS" in said
+    ran = cli("run", tmp_path / "pend.al", "--out", tmp_path / "o", "-q")
+    assert ran.returncode == 0 and "[W106]" in ran.stderr
+    assert cli("run", clean / "pend.al", "--out", clean / "o", "-q").returncode == 0
+    rows = np.loadtxt(tmp_path / "o" / "simple_pendulum.1", comments="%")
+    assert np.array_equal(rows, np.loadtxt(clean / "o" / "simple_pendulum.1", comments="%"))
+    assert np.ptp(rows[:, 1]) > 1.0          # it swings
+    model = autolev.load(tmp_path / "pend.al")
+    assert str(model["CX"]) == "cos(THETA)"

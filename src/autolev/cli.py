@@ -48,21 +48,18 @@ def check_file(path: Path) -> list[Diagnostic]:
     converts.  Nothing is built or run."""
     from .irbuild import Builder, sort_key
     from .source import SourceFile
-    from .translate import translate
+    from .translate import translate, vocabulary
 
     src = SourceFile.read(path, str(path))
-    builder = Builder(src.name, path)
+    builder = Builder(src.name, path, reserved=vocabulary())
     if path.suffix.lower() in MACRO_SUFFIXES:
         builder.build_macro_source(src)
         return sorted(builder.diagnostics, key=sort_key)
     builder.build_source(src)
     program = builder.program()
-    # one warning per place: reading's 'declared again' is the translation's too
-    warned = {d.location for d in program.diagnostics}
     # the statements that read are translated even when others did not: one round
-    more = [d for d in translate(program).diagnostics
-            if not (d.severity == "warning" and d.location in warned)
-            and not _follows_from(d, builder.errors)]
+    more = [d for d in translate(program).diagnostics[len(program.diagnostics):]
+            if not _follows_from(d, builder.errors)]
     return sorted(builder.diagnostics + more, key=sort_key)
 
 

@@ -73,8 +73,12 @@ class Includes:
     """Reads a model and everything it includes, statement by statement; collects the
     files read (`files`, `sources`) and the diagnostics of reading them."""
 
-    def __init__(self, filename: str, path: Path | None, parser: Parser | None = None):
+    def __init__(self, filename: str, path: Path | None, parser: Parser | None = None,
+                 reserved: frozenset[str] = frozenset()):
+        """`reserved`: Autolev's own commands and functions (upper case), which a file
+        of the same name beside the model does not replace."""
         self.filename = filename
+        self.reserved = reserved
         self.root_path = path.resolve() if path is not None else None
         self.model_root = self.root_path.parent if self.root_path is not None else None
         self.parser = parser or Parser()
@@ -187,7 +191,23 @@ class Includes:
         if not isinstance(primary, P.CallAtomContext) or primary in piece.functions:
             return None
         found = find_macro(primary.start.text, self._search_dirs(path))
-        return (primary, found) if found is not None else None
+        if found is None or self._builtin(piece.origin, primary, found, "command"):
+            return None
+        return primary, found
+
+    def _builtin(self, origin: Origin, call: P.CallAtomContext, found: Path,
+                 what: str) -> bool:
+        """Whether the called name is Autolev's own (its file then unread, said so)."""
+        name = call.start.text
+        if name.upper() not in self.reserved:
+            return False
+        offset = call.start.start
+        self.diagnostics.append(Diagnostic(
+            origin.mapped.locate(offset), "W106",
+            f"{self._display_name(found.resolve())} has the name of Autolev's own {what} "
+            f"{name.upper()}: the {what} is meant here, the file is not read (rename the "
+            "file to call it)", "warning", origin.mapped.source_line(offset)))
+        return True
 
     def _macro(self, piece: Piece, call: P.CallAtomContext, found: Path) -> Iterator[Piece]:
         origin = piece.origin
@@ -279,7 +299,8 @@ class Includes:
         key = (name.lower(), origin.path.parent if origin.path is not None else None)
         if key not in self._function_files:
             self._function_files[key] = find_macro(name, self._search_dirs(origin.path), ".r")
-        if self._function_files[key] is None:
+        if self._function_files[key] is None or \
+                self._builtin(origin, call, self._function_files[key], "function"):
             return None
         args = self._args(call, origin)
         got = self._expansion_source(origin, call, "function", name, self._function_files[key],

@@ -66,9 +66,11 @@ def _gc_paused():
 
 
 class Builder:
-    def __init__(self, filename: str, path: Path | None):
+    def __init__(self, filename: str, path: Path | None,
+                 reserved: frozenset[str] = frozenset()):
+        """`reserved`: Autolev's own commands and functions (see Includes)."""
         self.filename = filename
-        self.includes = Includes(filename, path)
+        self.includes = Includes(filename, path, reserved=reserved)
         self.symbols = ir.SymbolTable()
         self.statements: list[ir.Statement] = []
         self.diagnostics: list[Diagnostic] = []

@@ -9,7 +9,7 @@ from .errors import AutolevSyntaxError, AutolevTranslationError
 from .ir import Program
 from .irbuild import Builder, sort_key
 from .source import SourceFile
-from .translate import Translation, translate
+from .translate import Translation, translate, vocabulary
 
 
 def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
@@ -28,7 +28,7 @@ def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
     else:
         src = SourceFile(filename or "<string>", source)
         path = Path(filename) if filename else None
-    builder = Builder(src.name, path)
+    builder = Builder(src.name, path, reserved=vocabulary())
     builder.build_source(src)
     if builder.errors:
         raise AutolevSyntaxError(sorted(builder.diagnostics, key=sort_key))

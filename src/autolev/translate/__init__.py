@@ -10,7 +10,13 @@ from . import (  # noqa: F401
 )
 from .core import Translation, Translator
 
-__all__ = ["translate", "Translation"]
+__all__ = ["translate", "Translation", "vocabulary"]
+
+
+def vocabulary() -> frozenset[str]:
+    """Autolev's own commands and functions (upper case): names no macro or user
+    function file replaces."""
+    return frozenset(functions.FUNCTIONS) | frozenset(commands.COMMANDS) | commands.IN_PLACE
 
 
 def translate(program: ir.Program, module_name: str | None = None) -> Translation:

@@ -173,7 +173,8 @@ class Translator:
         self.vectors: dict[str, Entry] = {}
         self.derivs: dict[tuple[str, int], str] = {}
         self.lines: list[Line] = []
-        self.diagnostics: list[Diagnostic] = []
+        # reading's warnings first: the Translation holds every diagnostic of the model
+        self.diagnostics: list[Diagnostic] = list(program.diagnostics)
         self.degrees = True
         self.complex = False
         self.call_depth = 0
@@ -215,7 +216,12 @@ class Translator:
         return TranslationError(message, node, code)
 
     def warn(self, message: str, node=None, code: str = "W101") -> None:
-        self.diagnostics.append(self._diagnostic(message, node, code, "warning"))
+        """A warning, unless one was given at that place already (reading's 'declared
+        again' is the translation's too)."""
+        found = self._diagnostic(message, node, code, "warning")
+        if not any(d.severity == "warning" and d.location == found.location
+                   for d in self.diagnostics):
+            self.diagnostics.append(found)
 
     def _diagnostic(self, message, node, code, severity) -> Diagnostic:
         span = getattr(node, "span", None) or self._span
