@@ -69,9 +69,11 @@ def test_clear_removes_autolevs_files_only(cache, tmp_path):
 def test_the_names_autolev_calls_its_own():
     entry = "model_" + "a" * 40 + ".pickle"
     for name in (entry, entry + ".mac", entry + ".sha256", entry + ".77.tmp",
-                 entry + ".mac.77.0a1b.tmp", "al_" + "0" * 24 + ".so", diskcache.MARKER):
+                 entry + ".mac.77.0a1b.tmp", "." + entry + ".mac.77.0a1b.autolev-part",
+                 "al_" + "0" * 24 + ".so", diskcache.MARKER):
         assert diskcache.is_ours(name), name
     for name in ("model_notes.pickle", entry + ".bak", "al_x.so", "report.md",
+                 ".report.md.77.0a1b.autolev-part",
                  "al_" + "0" * 24 + ".so.d", entry[:-1]):
         assert not diskcache.is_ours(name), name
 

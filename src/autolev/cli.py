@@ -142,9 +142,16 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     if out.resolve() == path.resolve():
         print(f"autolev convert: refusing to overwrite the model {path}", file=sys.stderr)
         return 2
-    tmp = out.with_name(out.name + ".tmp")
-    tmp.write_text(result.code)
-    tmp.replace(out)              # never a half-written module
+    from .runtime.outputs import write_whole
+    if out.is_dir():
+        print(f"autolev convert: {out} is a folder; -o names the module's file",
+              file=sys.stderr)
+        return 2
+    try:
+        write_whole(out, result.code)              # never a half-written module
+    except OSError as exc:
+        print(f"autolev convert: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)
+        return 1
     if not ns.quiet:
         print(f"wrote {out}")
     return 0
@@ -444,6 +451,7 @@ def _report_eigenvalues(path: Path, lin, out_dir: str | None) -> int:
     """Print a linearization's eigenvalues (and write them into `out_dir`)."""
     from .runtime.numerics.files import safe_stem
     from .runtime.numerics.linearize import eigenvalue_table
+    from .runtime.outputs import write_whole
 
     if not lin.steady:
         print(f"{path}: warning: not an equilibrium or a steady motion: the accelerations "
@@ -457,8 +465,7 @@ def _report_eigenvalues(path: Path, lin, out_dir: str | None) -> int:
         out = Path(out_dir)
         try:
             out.mkdir(parents=True, exist_ok=True)
-            target = out / f"{safe_stem(path.stem)}-eigenvalues.csv"
-            target.write_text(table)
+            target = write_whole(out / f"{safe_stem(path.stem)}-eigenvalues.csv", table)
         except OSError as exc:
             print(f"autolev linearize: cannot write into {out}: {exc.strerror}",
                   file=sys.stderr)
@@ -497,6 +504,7 @@ def _linearize_sweep(path: Path, sweep, at, out: str | None, plot: bool = False)
 
     from .runtime.numerics.files import safe_stem
     from .runtime.numerics.linearize import sweep_table
+    from .runtime.outputs import write_whole
     name, values = sweep
     start = time.monotonic()
     lins = []
@@ -518,8 +526,7 @@ def _linearize_sweep(path: Path, sweep, at, out: str | None, plot: bool = False)
             folder.mkdir(parents=True, exist_ok=True)
             written = []
             if out:
-                written.append(folder / f"{stem}-sweep.csv")
-                written[-1].write_text(table)
+                written.append(write_whole(folder / f"{stem}-sweep.csv", table))
             if plot:
                 from .plots import write_eigenvalue_png
                 written.append(write_eigenvalue_png(
@@ -540,6 +547,7 @@ def cmd_transcript(ns: argparse.Namespace) -> int:
 
 
 def _print_transcript(path: Path, out_dir: Path | None) -> int:
+    from .runtime.outputs import write_whole
     from .transcript import transcript
     if path.suffix.lower() == ".py":
         print(f"{path}: a transcript is made from the .al model", file=sys.stderr)
@@ -556,9 +564,7 @@ def _print_transcript(path: Path, out_dir: Path | None) -> int:
     target = out_dir / f"{path.stem}.all"
     try:
         out_dir.mkdir(parents=True, exist_ok=True)
-        tmp = target.with_name(f".{target.name}.{os.getpid()}.tmp")
-        tmp.write_text(text, encoding="utf-8")
-        os.replace(tmp, target)
+        write_whole(target, text)
     except OSError as exc:
         print(f"autolev transcript: cannot write {target}: {exc.strerror}", file=sys.stderr)
         return 1

@@ -8,9 +8,12 @@ labelled with its unit, numbers written out (no offset notation).
 """
 from __future__ import annotations
 
+import io
 from pathlib import Path
 
 import numpy as np
+
+from .runtime.outputs import write_whole
 
 
 def _unit_key(unit: str | None) -> str:
@@ -82,11 +85,16 @@ def write_pngs(result, out_dir: Path) -> list[Path]:
         fig = figure(table, times)
         if fig is None:
             continue
-        path = Path(out_dir) / f"{table.filename}.png"
-        fig.savefig(path, dpi=100)
+        written.append(_save(fig, Path(out_dir) / f"{table.filename}.png"))
         plt.close(fig)
-        written.append(path)
     return written
+
+
+def _save(fig, path: Path) -> Path:
+    """The figure as a PNG, written whole (never through a link at its name)."""
+    picture = io.BytesIO()
+    fig.savefig(picture, dpi=100, format="png")
+    return write_whole(path, picture.getvalue())
 
 
 def eigenvalue_figure(name: str, values, eigenvalues, title: str = ""):
@@ -117,6 +125,6 @@ def write_eigenvalue_png(path: Path, name: str, values, eigenvalues, title: str 
     import matplotlib.pyplot as plt
 
     fig = eigenvalue_figure(name, values, eigenvalues, title)
-    fig.savefig(path, dpi=100)
+    written = _save(fig, Path(path))
     plt.close(fig)
-    return Path(path)
+    return written

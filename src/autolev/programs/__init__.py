@@ -3,11 +3,11 @@ Autolev wrote (`autolev code`), so that toolchains built on them rebuild unchang
 from __future__ import annotations
 
 import os
-import secrets
 from dataclasses import dataclass
 from pathlib import Path, PureWindowsPath
 
 from ..runtime.errors import AutolevModelError
+from ..runtime.outputs import inside, write_whole
 from .c import write_c
 from .c_dynamics import write_c_dynamics
 from .f import write_f_dynamics
@@ -89,20 +89,12 @@ def write_programs(model, out_dir, commands=None, source=None) -> list[Written]:
             continue
         texts.update(made)
         done.append(Written(command, [out / p for p in made]))
+    if texts:
+        out.mkdir(parents=True, exist_ok=True)
+    # every name checked first: one that leads outside means none is written
+    paths = {rel: inside(out, rel) for rel in texts}
     for rel, text in texts.items():
-        path = out / rel
-        path.parent.mkdir(parents=True, exist_ok=True)
-        # created as any file of the user's (mode 0666 less the umask), under a name
-        # of its own until it is whole
-        tmp = path.parent / f".{path.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp"
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
-        try:
-            with os.fdopen(fd, "w", newline="\n") as f:
-                f.write(text)
-            os.replace(tmp, path)
-        except BaseException:          # a full disk, an interrupt: no half file left
-            tmp.unlink(missing_ok=True)
-            raise
+        write_whole(paths[rel], text)
     return done
 
 

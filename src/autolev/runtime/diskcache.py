@@ -35,6 +35,8 @@ import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
+from .outputs import TEMPORARY_SUFFIX, write_whole
+
 LIMIT_VARIABLE = "AUTOLEV_CACHE_LIMIT_MB"
 DEFAULT_LIMIT_MB = 2048
 DIGEST_SUFFIX = ".mac"
@@ -49,7 +51,8 @@ RECENT_SECONDS = 300
 # translations; their digests (.sha256 of earlier versions too) and temporaries
 _ENTRY = re.compile(r"(al_[0-9a-f]{24}\.(o|so|dll)|(model|translation)_[0-9a-f]{40}\.pickle)")
 _SIDE = re.compile(r"(\.mac|\.sha256)?")
-_TEMPORARY = re.compile(r"\.\d+(\.[0-9a-f]+)?\.tmp")
+_LEGACY_TEMPORARY = re.compile(r"\.\d+(\.[0-9a-f]+)?\.tmp")     # of earlier versions
+_TEMPORARY = re.compile(r"\.(?P<name>.+)\.\d+\.[0-9a-f]+" + re.escape(TEMPORARY_SUFFIX))
 
 
 class CacheFolderError(OSError):
@@ -60,13 +63,16 @@ def is_ours(name: str) -> bool:
     """A file name autolev writes into its cache (entry, digest, temporary, tag)."""
     if name == MARKER:
         return True
+    temporary = _TEMPORARY.fullmatch(name)
+    if temporary is not None:
+        return is_ours(temporary.group("name")) and temporary.group("name") != MARKER
     m = _ENTRY.match(name)
     if m is None:
         return False
     rest = name[m.end():]
     side = _SIDE.match(rest)
     rest = rest[side.end():]
-    return rest == "" or _TEMPORARY.fullmatch(rest) is not None
+    return rest == "" or _LEGACY_TEMPORARY.fullmatch(rest) is not None
 
 
 # -- where the cache is ----------------------------------------------------------------
@@ -250,26 +256,15 @@ def _write_new(path: Path, data: bytes) -> None:
         raise
 
 
-def _replace(data: bytes, target: Path) -> None:
-    """`target` becomes `data` in one step: written aside, then renamed."""
-    tmp = target.with_name(f"{target.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp")
-    _write_new(tmp, data)
-    try:
-        os.replace(tmp, target)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-
-
 def install(data: bytes, target: Path) -> None:
     """Put an entry into the cache atomically, with its authentication; then keep the
     folder under its size limit.  Raises OSError (a full or read-only disk) with
     nothing of it left behind."""
     mac = _mac(data)
     digest_file(target).unlink(missing_ok=True)     # never an entry beside a stale digest
-    _replace(data, target)
+    write_whole(target, data, mode=0o600)
     try:
-        _replace((mac + "\n").encode(), digest_file(target))
+        write_whole(digest_file(target), mac + "\n", mode=0o600)
     except BaseException:
         target.unlink(missing_ok=True)
         raise

@@ -30,6 +30,7 @@ except ImportError:           # Windows: runs into one folder are not locked
     fcntl = None
 
 from ..errors import AutolevModelError
+from ..outputs import TEMPORARY_SUFFIX, temporary_beside
 
 
 def safe_stem(filename: str) -> str:
@@ -89,7 +90,7 @@ class OutputFiles:
 
 
 # the suffix of a run's temporaries: hidden, and recognisable as stale after a crash
-PART = ".autolev-part"
+PART = TEMPORARY_SUFFIX
 
 
 class RunFiles:
@@ -121,7 +122,7 @@ class RunFiles:
 
     def open(self, final: Path):
         """A new text file that becomes `final` at commit."""
-        tmp = final.with_name(f".{final.name}.{os.getpid()}{PART}")
+        tmp = temporary_beside(final)
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
         self._staged.append((tmp, final))
         handle = os.fdopen(fd, "w", newline="\n", encoding="utf-8")
