@@ -1,6 +1,5 @@
 """Outputs never follow planted links, never leave their folder, and are whole or
 absent (issue 31, item 5; issue 30, item 8: one writer of files)."""
-import os
 import subprocess
 import sys
 
