@@ -526,3 +526,26 @@ def test_each_named_quantity_says_which_statement_of_the_model_defines_it(tmp_pa
     assert lines[at + 1] == "  Q2p = U2;"
     from autolev.programs.c import c_comment
     assert c_comment("X = 1 */ Y \u00e9") == "/* X = 1 * / Y ? */"
+
+
+@pytest.mark.parametrize("name", ["gamma", "index", "j0", "y1", "hypot", "y0", "j1", "erf",
+                                  "nan", "stdin", "M_PI", "unix"])
+def test_a_name_the_c_library_declares_is_refused(tmp_path, capsys, name):
+    # glibc's headers declare these in gcc's default mode: the program would not compile
+    path = tmp_path / "lib.al"
+    path.write_text(f"CONSTANTS {name}, K\nY = K*{name}\nINPUT K=2\nOUTPUT Y\n"
+                    "CODE ALGEBRAIC() lib.c\n")
+    assert main(["code", str(path), "--out", str(tmp_path / "out")]) == 1
+    assert f"{name} cannot be a name in the C program" in capsys.readouterr().err
+
+
+@needs_cc
+def test_the_same_names_in_another_case_compile(tmp_path, capsys):
+    # C tells case apart: Gamma, Y1 and Index are the model's own
+    path = tmp_path / "case.al"
+    path.write_text("CONSTANTS Gamma, Y1, Index\nY = Gamma*Y1 + Index\n"
+                    "INPUT Gamma=2, Y1=3, Index=4\nOUTPUT Y\nCODE ALGEBRAIC() case.c\n")
+    assert main(["code", str(path), "--out", str(tmp_path / "out")]) == 0
+    done = subprocess.run([P.compiler(), "-Wall", "-o", "case", "case.c", "-lm"],
+                          cwd=tmp_path / "out", capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr

@@ -5,6 +5,7 @@ and the NAME.in file main() reads."""
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 from .. import __version__
 from ..runtime import units
@@ -23,6 +24,17 @@ cosh tanh exp log log10 pow sqrt fabs floor ceil fmod trunc round printf fprintf
 puts fopen fclose fgets strtod strlen strcpy exit isspace va_list va_start va_arg va_end
 _nan t
 """.split())
+
+
+
+def _library_names() -> frozenset:
+    lines = (Path(__file__).parent / "c_library_names.txt").read_text().splitlines()
+    return frozenset(line.strip() for line in lines if line.strip()
+                     and not line.startswith("#"))
+
+
+# what the headers the programs include declare (gamma, j0, y1, index, stdin, M_PI, ...)
+LIBRARY_NAMES = _library_names()
 
 LINE = 78            # continuation lines start with two spaces; lines stay well under 100
 _TOKEN = re.compile(r"\s*([A-Za-z_][A-Za-z_0-9]*(?:\[[0-9]+\])*|[0-9.]+(?:[eE][-+]?[0-9]+)?"
@@ -75,7 +87,7 @@ class CProgram:
 
     def __init__(self, plan: Plan):
         check_names(plan, RESERVED | (SOLVING_RESERVED if plan.solves_or_sweeps()
-                                      else frozenset()), "C")
+                                      else frozenset()), "C", LIBRARY_NAMES)
         self.plan = plan
         self.name = program_name(plan.filename)
         self.stem = self.name.rpartition(".")[0] or self.name

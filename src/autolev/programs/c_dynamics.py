@@ -7,10 +7,9 @@ from __future__ import annotations
 
 from ..runtime import symbols as S
 from ..runtime.printer import CodePrinter
-from .c import (READING_AND_WRITING, READING_PROTOTYPES, RESERVED, SOLVE, _lines, banner,
-                by_name,
-                encoded_declarations, farewell, headings_and_units, opening, output_lines,
-                wrap)
+from .c import (LIBRARY_NAMES, READING_AND_WRITING, READING_PROTOTYPES, RESERVED, SOLVE,
+                _lines, banner, by_name, encoded_declarations, farewell, headings_and_units,
+                opening, output_lines, wrap)
 from .plan import (DynamicsPlan, c_name, check_names, dynamics_names, input_file_name,
                    print_dynamics, program_name)
 
@@ -23,7 +22,7 @@ class CDynamicsProgram:
     """The text of one DynamicsPlan's C program."""
 
     def __init__(self, plan: DynamicsPlan):
-        check_names(plan, _DYNAMICS_RESERVED, "C")
+        check_names(plan, _DYNAMICS_RESERVED, "C", LIBRARY_NAMES)
         self.plan = plan
         self.name = program_name(plan.filename)
         self.stem = self.name.rpartition(".")[0] or self.name

@@ -545,13 +545,16 @@ def c_name(sym) -> str:
     return base.name + "p" * order
 
 
-def check_names(plan, reserved: frozenset, language: str) -> None:
+def check_names(plan, reserved: frozenset, language: str,
+                exact: frozenset = frozenset()) -> None:
     """Autolev printed the user's names as they are: a name the program's own text
-    uses (or the language reserves) would change its meaning, so it is refused."""
+    uses (or the language reserves) would change its meaning, so it is refused.
+    `reserved`: in lower case, met in any case; `exact`: met as spelt (a library's
+    names, in a language that tells case apart)."""
     symbols = [s for group in ("inputs", "constants", "states", "named", "specified")
                for s in getattr(plan, group, []) if s != S.TIME]    # T is the program's
-    clashes = sorted({c_name(s) for s in symbols if c_name(s).lower() in reserved}
-                     | {e.name for e in plan.encoded if e.name.lower() in reserved})
+    names = [c_name(s) for s in symbols] + [e.name for e in plan.encoded]
+    clashes = sorted({n for n in names if n.lower() in reserved or n in exact})
     if clashes:
         raise AutolevModelError(
             f"{plan.filename}: {', '.join(clashes)} cannot be a name in the {language} "
