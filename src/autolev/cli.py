@@ -288,11 +288,15 @@ def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list | int:
 
 def _run_and_report(model, commands: list, overrides: dict, specified: dict,
                     ns: argparse.Namespace, path: Path) -> int:
+    from .runtime.errors import AutolevModelError
     from .runtime.numerics.files import safe_stem
     label = _statement_label(model, path)
     written_by: dict[str, str] = {}
     for command in commands:
-        stem = safe_stem(command.filename).lower()
+        try:
+            stem = safe_stem(command.filename).lower()
+        except AutolevModelError:
+            continue                # an unusable name: its run says so
         if stem in written_by:
             print(f"{label(command)}: warning: CODE {command.filename} writes the same "
                   f"files ({safe_stem(command.filename)}.1, ...) as CODE {written_by[stem]}; "
@@ -698,6 +702,17 @@ def _short(v) -> str:
     return np.array2string(a, precision=8, max_line_width=100)
 
 
+def _positive_int(text: str) -> int:
+    """An option's whole number of at least 1 (argparse reports anything else)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a whole number of at least 1, not {text!r}")
+    return value
+
+
 def _model_value_options(parser) -> None:
     """The model and where its values come from, shared by `run`, `animate` and
     `linearize`."""
@@ -832,7 +847,7 @@ def _add_animate(sub) -> None:
                       choices=("html", "gif", "mp4"),
                       help="what to write (repeatable; default: html, and gif when "
                       "matplotlib is installed)")
-    anim.add_argument("--frames", type=int, default=None, metavar="N",
+    anim.add_argument("--frames", type=_positive_int, default=None, metavar="N",
                       help="frames at most (default 400; the rows are sampled evenly)")
     anim.set_defaults(func=cmd_animate, plot=False, animate=True, first_dynamics=True)
 

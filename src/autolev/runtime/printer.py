@@ -111,6 +111,9 @@ class CodePrinter:
                 (("INFINITY" if self.c else "math.inf") if e is sm.oo
                  else ("(-INFINITY)" if self.c else "(-math.inf)")), _ATOM
         v = float(e)
+        if math.isinf(v):
+            raise AutolevModelError(f"the number {sm.Float(e, 6)} is beyond double precision "
+                                    "(more than 1.8E308); Autolev computed in doubles")
         text = repr(v)
         if "e" not in text and "." not in text and "inf" not in text and "nan" not in text:
             text += ".0"

@@ -130,7 +130,12 @@ class Inputs:
 
     def check_finite(self) -> None:
         """Every value a number: NaN or an infinity (from an .in file, an override or
-        an INPUT expression) is refused, naming the quantity and where it came from."""
+        an INPUT expression) is refused, naming the quantity and where it came from;
+        PRINTINT a count the programs can hold."""
+        printint = self.values.get("PRINTINT")
+        if printint is not None and not is_print_integer(printint.given):
+            raise AutolevModelError(f"{PRINTINT_RULE}, not {printint.given:g} (from "
+                                    f"{printint.source})")
         bad = [(k, v) for k, v in self.values.items()
                if not math.isfinite(v.given) or not math.isfinite(v.internal)]
         if bad:
@@ -160,9 +165,8 @@ class Inputs:
                 raise AutolevModelError(f"{name}={value}: not a number")
             value = number
         value = float(value)
-        if key == "PRINTINT":
-            if value != int(value) or value < 1:
-                raise AutolevModelError("PRINTINT must be a positive integer")
+        if key == "PRINTINT" and not is_print_integer(value):
+            raise AutolevModelError(PRINTINT_RULE)
         self.values[key] = Value(value, self.unit_of(key), source)
 
     def set_internal(self, name: str, value: float, source: str = "operating point") -> None:
@@ -233,9 +237,8 @@ class Inputs:
             if key is None:
                 strangers.append((lineno, name))
                 continue
-            if key == "PRINTINT" and (value != int(value) or value < 1):
-                raise InputFileError(f"{path}:{lineno}:60: PRINTINT must be a positive "
-                                     "integer")
+            if key == "PRINTINT" and not is_print_integer(value):
+                raise InputFileError(f"{path}:{lineno}:60: {PRINTINT_RULE}")
             unit = self.unit_of(key)
             if units.is_degrees(file_unit) != units.is_degrees(unit) and file_unit.upper() \
                     not in ("", "UNITS"):
@@ -320,6 +323,15 @@ class Inputs:
 # the third line of the .in file of Autolev 3.2's Fortran programs, which they read
 # as a message (99 characters) and print at the top of every output file
 FORTRAN_MESSAGE = "Replace this line with a message to appear on all output files."
+
+
+# Autolev's programs count PRINTINT steps in a C int
+MAX_PRINT_INTEGER = 2 ** 31 - 1
+PRINTINT_RULE = f"PRINTINT must be a whole number from 1 to {MAX_PRINT_INTEGER}"
+
+
+def is_print_integer(value: float) -> bool:
+    return math.isfinite(value) and value == int(value) and 1 <= value <= MAX_PRINT_INTEGER
 
 
 def some_names(names, shown: int = 8) -> str:

@@ -522,7 +522,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
                           program=program_language(command.filename), keep_rows=keep_rows)
         else:
             _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep,
-                           zero_params)
+                           zero_params, keep_rows)
 
     if out_dir is None:
         perform(None)
@@ -669,21 +669,50 @@ def sweep_of(command, inputs) -> tuple | None:
     target, start, stop, step = command.sweep[:4]
     unit = command.sweep[4] if len(command.sweep) > 4 else inputs.unit_of(target)
     start, stop, step = float(start), float(stop), float(step)
+    name = display_name(target)
+    if not all(math.isfinite(v) for v in (start, stop, step)):
+        raise AutolevModelError(f"the sweep of {name}: its start, end and step must be "
+                                f"numbers within double precision, not {start:g}, {stop:g}, "
+                                f"{step:g}")
     if step == 0 or (stop - start) * step < 0:
-        raise AutolevModelError(f"the sweep of {target}: step {step:g} does not lead from "
+        raise AutolevModelError(f"the sweep of {name}: step {step:g} does not lead from "
                                 f"{start:g} to {stop:g}")
-    return target, start, step, int(np.floor((stop - start) / step + 1e-9)) + 1, unit
+    count = math.floor((stop - start) / step + 1e-9) + 1 if math.isfinite(
+        (stop - start) / step) else math.inf
+    if count > MAX_SWEEP_VALUES:
+        raise AutolevModelError(f"the sweep of {name} from {start:g} to {stop:g} by {step:g} "
+                                f"has {count:.3g} values; at most {MAX_SWEEP_VALUES:.0e} are "
+                                "swept (a larger step, or several programs)")
+    return target, start, step, count, unit
 
 
-def _sweep(model, command, inputs):
-    """[q deg = start, stop, step] of CODE ALGEBRAIC: (key, internal values, given)."""
+# values of one sweep at most: each is a row of every output file
+MAX_SWEEP_VALUES = 10 ** 9
+
+
+@dataclass(frozen=True)
+class SweepValues:
+    """The values of [q deg = start, stop, step], made one at a time: given (in the
+    sweep's unit) and internal."""
+
+    target: object
+    start: float
+    step: float
+    count: int
+    unit: str | None
+
+    def given(self, k: int) -> float:
+        return self.start + self.step * k
+
+    def __iter__(self):
+        for k in range(self.count):
+            given = self.given(k)
+            yield units.to_internal(given, self.unit), given
+
+
+def _sweep(model, command, inputs) -> SweepValues | None:
     found = sweep_of(command, inputs)
-    if found is None:
-        return None
-    target, start, step, count, unit = found
-    given = start + step * np.arange(count)
-    internal = np.array([units.to_internal(v, unit) for v in given])
-    return target, internal, given
+    return None if found is None else SweepValues(*found)
 
 
 def _degree_rates_note(inputs, names) -> None:
@@ -1054,23 +1083,29 @@ def _spectral_radius(f, t: float, y: np.ndarray) -> float | None:
     return float(np.max(np.abs(np.linalg.eigvals(jac)))) if len(y) else 0.0
 
 
-def _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_params):
+def _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_params,
+                   keep_rows: bool = True):
+    """Evaluate (and solve) once, or once per value of the sweep, made and written one
+    at a time; with `keep_rows` False the Result holds only the last row."""
     rows = [[] for _ in system.files]
     encoded: dict = {}
-    solutions = []
-    points = [None] if sweep is None else list(zip(sweep[1], sweep[2]))
+    solutions, swept = [], []
+    points = [None] if sweep is None else sweep
     n = len(unknowns)
     guess = (np.array(inputs.vector(unknowns)) if kind == "nonlinear" else np.zeros(n))
     base = inputs.vector(system.params)
     t = inputs.internal(S.TIME) if S.TIME in inputs.values else 0.0
     target_pos = None
     if sweep is not None:
-        if sweep[0] in system.params:
-            target_pos = system.params.index(sweep[0])
+        if sweep.target in system.params:
+            target_pos = system.params.index(sweep.target)
         else:
-            warnings.warn(f"the swept input {display_name(sweep[0])} does not enter the "
+            warnings.warn(f"the swept input {display_name(sweep.target)} does not enter the "
                           "outputs", stacklevel=3)
     for point in points:
+        if not keep_rows:
+            rows = [[] for _ in system.files]
+            del solutions[:], swept[:]
         if point is not None and target_pos is not None:
             p = list(base)
             p[target_pos] = point[0]
@@ -1087,9 +1122,11 @@ def _run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_p
         else:
             x = np.zeros(0)
         solutions.append(x)
+        if point is not None:
+            swept.append(point[1])
         values = system.outputs(t, np.zeros(0), None, x)
         _split_outputs(system, values, rows, writer, encoded)
-    result.t = np.array([pt[1] for pt in points]) if sweep is not None else np.zeros(0)
+    result.t = np.array(swept, dtype=float)
     result.solution = {display_name(u): np.array([s[i] for s in solutions])
                        for i, u in enumerate(unknowns)}
     result.outputs = _tables(system, rows, result.name)
