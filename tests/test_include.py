@@ -135,3 +135,30 @@ def test_a_stray_file_never_replaces_autolevs_own_words(tmp_path):
     assert np.ptp(rows[:, 1]) > 1.0          # it swings
     model = autolev.load(tmp_path / "pend.al")
     assert str(model["CX"]) == "cos(THETA)"
+
+
+def test_files_that_include_each_other_many_times_stop_at_the_budget(tmp_path):
+    # seven files under 100 bytes, each RUN eight times by the one before: 8^6
+    # inclusions (issue 31, item 6); the budget stops them with the chain named
+    from autolev.include import MAX_EXPANDED_STATEMENTS
+    for i in range(1, 7):
+        write(tmp_path / f"f{i}.al", f"RUN f{i + 1}.al\n" * 8)
+    write(tmp_path / "f7.al", "X = 1\n")
+    top = write(tmp_path / "top.al", "RUN f1.al\n")
+    found = errors(top)
+    assert [d.code for d in found] == ["E033"]
+    assert (f"more than 2 MB of text or {MAX_EXPANDED_STATEMENTS} statements (here: top.al "
+            "-> f1.al -> f2.al -> f3.al -> f4.al -> f5.al -> f6.al") in found[0].message
+
+
+def test_a_file_included_many_times_is_read_and_parsed_once(tmp_path, monkeypatch):
+    from autolev import include
+    reads = []
+    real = include.SourceFile.read
+    monkeypatch.setattr(include.SourceFile, "read",
+                        classmethod(lambda cls, p, n=None: reads.append(n) or real(p, n)))
+    write(tmp_path / "part.al", "X = X + 1\n")
+    top = write(tmp_path / "top.al", "VARIABLES X\nX = 0\n" + "RUN part.al\n" * 5)
+    program = autolev.parse(top)
+    assert [Path(n).name for n in reads].count("part.al") == 1
+    assert sum(st.kind == "assignment" for st in program.statements) == 6

@@ -29,7 +29,14 @@ from ._antlr.AutolevParser import AutolevParser as P
 from .errors import Diagnostic
 from .source import (MAX_INCLUDE_DEPTH, MappedText, RunRefused, SourceFile, expand_macro,
                      find_macro, is_within, mapped_source, placeholders, resolve_run)
-from .syntax import Parser
+from .syntax import ParsedText, Parser
+
+
+# the most text and statements a model expands to with its RUN files, macros and
+# functions (the largest corpus model: 23 KB, 310 statements); beyond, files that include
+# each other many times would take minutes and gigabytes
+MAX_EXPANDED_BYTES = 2_000_000
+MAX_EXPANDED_STATEMENTS = 20_000
 
 
 @dataclass(frozen=True)
@@ -88,6 +95,14 @@ class Includes:
         self._stack: list[Path] = [self.root_path] if self.root_path else []
         self._function_files: dict[tuple[str, Path | None], Path | None] = {}
         self._function_names: dict[Path, frozenset[str]] = {}
+        # parsed texts by their text: a file included many times is parsed once (its
+        # trees' offsets hold for every inclusion, each located by its own mapping)
+        self._parsed: dict[str, ParsedText] = {}
+        self._read_files: dict[str, SourceFile] = {}       # by display name
+        self._run_targets: dict[tuple[Path | None, str], Path] = {}
+        self._expanded_bytes = 0
+        self._expanded_statements = 0
+        self._exhausted = False             # the budget is spent: nothing more is read
 
     # -- entry points ------------------------------------------------------------
     def model(self, src: SourceFile) -> Iterator[Piece]:
@@ -104,14 +119,16 @@ class Includes:
     # -- the stream ----------------------------------------------------------------
     def _pieces(self, mapped: MappedText, path: Path | None, display: str) -> Iterator[Piece]:
         origin = Origin(mapped, path, display)
-        parsed = self.parser.parse(mapped)
-        self.diagnostics.extend(parsed.diagnostics)
-        for line in parsed.lines:
+        if not self._spend(origin, len(mapped.text), 0):
+            return
+        for line in self._parse(mapped).lines:
             body = line.tree.statementLine()
             if body is None:
                 continue
             calls = self._may_call_functions(line.tokens, path)
             for statement in body.statement():
+                if not self._spend(origin, 0, statement.start.start):
+                    return
                 piece = Piece(statement, origin)
                 if calls:
                     self._find_functions(statement, origin, piece.functions)
@@ -122,6 +139,38 @@ class Includes:
                     yield from self._macro(piece, *macro)
                 else:
                     yield piece
+
+    def _parse(self, mapped: MappedText) -> ParsedText:
+        """The parsed text, its diagnostics given the first time it is read."""
+        parsed = self._parsed.get(mapped.text)
+        if parsed is None:
+            parsed = self._parsed[mapped.text] = self.parser.parse(mapped)
+            self.diagnostics.extend(parsed.diagnostics)
+        return parsed
+
+    def _spend(self, origin: Origin, size: int, offset: int) -> bool:
+        """Count `size` bytes of text to read (or, with 0, one more statement) against the
+        model's budget; False, after the one diagnostic naming the chain of files, when
+        it is spent."""
+        if self._exhausted:
+            return False
+        if size:
+            self._expanded_bytes += size
+        else:
+            self._expanded_statements += 1
+        if self._expanded_bytes <= MAX_EXPANDED_BYTES and \
+                self._expanded_statements <= MAX_EXPANDED_STATEMENTS:
+            return True
+        self._exhausted = True
+        chain = " -> ".join(os.path.relpath(p, self.model_root) for p in self._stack) \
+            if self.model_root is not None else origin.display
+        self.diagnostics.append(Diagnostic(
+            origin.mapped.locate(offset), "E033",
+            f"the model with its RUN files, macros and functions expands to more than "
+            f"{MAX_EXPANDED_BYTES // 10 ** 6} MB of text or {MAX_EXPANDED_STATEMENTS} "
+            f"statements (here: {chain}); files that include each other many times? "
+            "Nothing more is read", "error", origin.mapped.source_line(offset)))
+        return False
 
     def _search_dirs(self, path: Path | None) -> list[Path]:
         dirs = [path.parent] if path is not None else []
@@ -146,17 +195,40 @@ class Includes:
         if found is None:
             return
         display = self._display_name(found)
-        src = SourceFile.read(found, display)
-        self.files.append(display)
-        self.sources[display] = src.lines
+        src = self._read(found, display)
         where = origin.mapped.locate(ctx.start.start)
         self._stack.append(found)
         yield from self._pieces(mapped_source(src, where, f"the file included by RUN {name}"),
                                 found, display)
         self._stack.pop()
 
+    def _read(self, found: Path, display: str) -> SourceFile:
+        """A file to include, read once however often it is included."""
+        if display not in self._read_files:
+            self._read_files[display] = SourceFile.read(found, display)
+            self.files.append(display)
+            self.sources[display] = self._read_files[display].lines
+        return self._read_files[display]
+
     def _run_target(self, origin: Origin, ctx: P.FileNameContext, name: str) -> Path | None:
         """The file `RUN name` includes; None, after its diagnostic, when there is none."""
+        key = (origin.path, name)
+        found = self._run_targets.get(key) or self._find_run_target(origin, ctx, name)
+        if found is None:
+            return None
+        self._run_targets[key] = found      # a file found once is not looked for again
+        if found in self._stack:
+            self._error(origin, ctx, "E023", f"RUN {name}: the file includes itself")
+            return None
+        if len(self._stack) >= MAX_INCLUDE_DEPTH:
+            self._error(origin, ctx, "E024", f"RUN {name}: files nested deeper than "
+                        f"{MAX_INCLUDE_DEPTH} levels")
+            return None
+        return found
+
+    def _find_run_target(self, origin: Origin, ctx: P.FileNameContext,
+                         name: str) -> Path | None:
+        """Where `RUN name` leads from the file `origin`, resolved, or None after why."""
         if origin.path is None or self.model_root is None:
             self._error(origin, ctx, "E020", f"RUN {name}: a model given as text has no "
                         "folder to look in; parse the file itself, or pass filename=")
@@ -171,15 +243,7 @@ class Includes:
             self._error(origin, ctx, "E022", f"RUN {name}: no such file next to the model "
                         f"(looked in {origin.path.parent} and the folders above it)")
             return None
-        found = found.resolve()
-        if found in self._stack:
-            self._error(origin, ctx, "E023", f"RUN {name}: the file includes itself")
-            return None
-        if len(self._stack) >= MAX_INCLUDE_DEPTH:
-            self._error(origin, ctx, "E024", f"RUN {name}: files nested deeper than "
-                        f"{MAX_INCLUDE_DEPTH} levels")
-            return None
-        return found
+        return found.resolve()
 
     # -- macros --------------------------------------------------------------------
     def _macro_call(self, node, path: Path | None,
@@ -241,7 +305,7 @@ class Includes:
                         f"the model's folder ({self.model_root}), through a link")
             return None
         display = self._display_name(found)
-        src = SourceFile.read(found, display)
+        src = self._read(found, display)
         used = placeholders(src)
         if used and max(used) > len(args):
             self._error(origin, ctx, "E030", f"{what} {name} ({display}) uses #{max(used)}# "
@@ -252,9 +316,6 @@ class Includes:
             self._error(origin, ctx, "E031", f"{what} {name} calls itself (directly or through "
                         f"other {what}s)")
             return None
-        if display not in self.files:
-            self.files.append(display)
-            self.sources[display] = src.lines
         return found, src, display
 
     # -- user functions --------------------------------------------------------------
@@ -310,8 +371,9 @@ class Includes:
         found, src, display = got
         where = origin.mapped.locate(call.start.start)
         mapped = expand_macro(src, args, where, f"function {name}({', '.join(args)})")
-        parsed = self.parser.parse(mapped)
-        self.diagnostics.extend(parsed.diagnostics)
+        if not self._spend(origin, len(mapped.text), call.start.start):
+            return None
+        parsed = self._parse(mapped)
         bodies = [st.getChild(0) for line in parsed.lines
                   if line.tree.statementLine() is not None
                   for st in line.tree.statementLine().statement()]

@@ -44,7 +44,8 @@ def _column_runs(tr: Translator) -> dict[int, list[ir.Assignment]]:
 def _run_at(statements: list[ir.Statement], i: int) -> list[ir.Assignment]:
     """The statements from i on that set elements 1, 2, ... of one name, none reading it."""
     run: list[ir.Assignment] = []
-    for st in statements[i:]:
+    for k in range(i, len(statements)):        # by index: no copy of a long model's list
+        st = statements[k]
         target = getattr(st, "target", None)
         if not (isinstance(st, ir.Assignment) and st.op == "=" and isinstance(target, ir.Index)
                 and not target.primes and len(target.indices) == 1
