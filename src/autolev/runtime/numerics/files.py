@@ -137,13 +137,23 @@ class RunFiles:
         return OutputFiles(self, files)
 
     def commit(self) -> list[Path]:
-        """Rename every temporary to its name; returns the files, in writing order."""
+        """Rename every temporary to its name, the `.dir` last; returns the files, in
+        writing order.  The set changes as one step for what a run can hold off
+        (SIGINT, SIGTERM, SIGHUP wait until it is complete), and the previous run's
+        `.dir` goes first, so that a set cut short by what cannot be held off (SIGKILL,
+        a power cut) has no `.dir` and does not pass for complete."""
         for h in self._handles:
             h.close()
         self._handles = []
         order = sorted(self._staged, key=lambda pair: pair[1].suffix == ".dir")
-        for tmp, final in order:
-            os.replace(tmp, final)
+        previous_dir = self.folder / f"{self.stem}.dir"
+        with signals_held():
+            if previous_dir.is_file() and not previous_dir.is_symlink() and \
+                    previous_dir.read_bytes()[:64].startswith(f"FILE: {previous_dir.name}"
+                                                              .encode()):
+                previous_dir.unlink()
+            for tmp, final in order:
+                os.replace(tmp, final)
         self._staged = []
         self._remove_superseded([final for _, final in order])
         return [final for _, final in order]
@@ -180,7 +190,40 @@ def glob_escape(text: str) -> str:
 def _written_by_a_run(path: Path) -> bool:
     with open(path, "rb") as h:
         head = h.read(64)
-    return head.startswith(b"% FILE: ") or head.startswith(b"% values of the ENCODE")
+    return head.startswith((b"% FILE: ", b"% values of the ENCODE"))
+
+
+# the signals a run holds off while it changes its set of files
+_HELD = tuple(s for s in (getattr(signal, n, None) for n in ("SIGINT", "SIGTERM", "SIGHUP"))
+              if s is not None)
+
+
+@contextmanager
+def signals_held():
+    """SIGINT, SIGTERM and SIGHUP wait until the block ends, then arrive as they would
+    have.  In the main thread their handlers are set aside (a signal sent to the
+    process may reach any of its threads, BLAS's too: masking this thread is not
+    enough); elsewhere this thread masks them."""
+    if threading.current_thread() is not threading.main_thread():
+        if not hasattr(signal, "pthread_sigmask"):        # Windows: nothing to hold
+            yield
+            return
+        before = signal.pthread_sigmask(signal.SIG_BLOCK, _HELD)
+        try:
+            yield
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, before)
+        return
+    arrived: list[int] = []
+    previous = {s: signal.signal(s, lambda signum, frame: arrived.append(signum))
+                for s in _HELD}
+    try:
+        yield
+    finally:
+        for s, handler in previous.items():
+            signal.signal(s, handler)
+        for s in dict.fromkeys(arrived):
+            signal.raise_signal(s)
 
 
 def _lock_folder(folder: Path):
