@@ -171,3 +171,38 @@ def test_a_folder_that_refuses_files_is_one_message_and_no_partial_set(model, tm
                        "Permission denied"):
         model.simulate(out_dir=out, TFINAL=0.2)
     assert list(out.iterdir()) == []
+
+
+def test_a_full_disk_is_the_users_error_and_leaves_no_temporary(tmp_path, monkeypatch):
+    # the disk fills while rows are written; closing the buffered files then fails too
+    from autolev.runtime.numerics import files
+    from helpers import EXAMPLES
+    real = files.os.fdopen
+
+    class Full:
+        def __init__(self, handle):
+            self.handle, self.written = handle, 0
+
+        def write(self, text):
+            self.written += len(text)
+            if self.written > 2000:
+                raise OSError(errno.ENOSPC, "No space left on device")
+            return self.handle.write(text)
+
+        def close(self):
+            self.handle.close()
+            raise OSError(errno.ENOSPC, "No space left on device")
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            self.close()
+
+    monkeypatch.setattr(files.os, "fdopen", lambda *a, **k: Full(real(*a, **k)))
+    out = tmp_path / "out"
+    model = autolev.load(EXAMPLES / "simple_pendulum.al")
+    with pytest.raises(AutolevModelError,
+                       match=f"cannot write the output files into {out}: No space left"):
+        model.simulate(out_dir=out)
+    assert list(out.iterdir()) == []

@@ -170,8 +170,13 @@ class RunFiles:
                 path.unlink()
 
     def discard(self) -> None:
+        """Remove every temporary; a file that cannot be closed (its buffer cannot be
+        flushed to a full disk) is removed all the same."""
         for h in self._handles:
-            h.close()
+            try:
+                h.close()
+            except OSError:
+                pass            # its rows are discarded with it
         self._handles = []
         for tmp, _ in self._staged:
             tmp.unlink(missing_ok=True)
