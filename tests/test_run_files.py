@@ -176,7 +176,6 @@ def test_a_folder_that_refuses_files_is_one_message_and_no_partial_set(model, tm
 def test_a_full_disk_is_the_users_error_and_leaves_no_temporary(tmp_path, monkeypatch):
     # the disk fills while rows are written; closing the buffered files then fails too
     from autolev.runtime.numerics import files
-    from helpers import EXAMPLES
     real = files.os.fdopen
 
     class Full:
