@@ -1,5 +1,6 @@
 """Fixtures; the helpers tests import live in tests/helpers."""
 import os
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -10,6 +11,8 @@ from helpers import CORPUS
 # build does); tests/test_model_cache.py turns the cache of built models on where it
 # tests it, and AUTOLEV_NO_MODEL_CACHE=0 runs the whole suite with it.
 os.environ.setdefault("AUTOLEV_NO_MODEL_CACHE", "1")
+# what autolev records of the folders it wrote into stays with the tests' own state
+os.environ.setdefault("XDG_STATE_HOME", tempfile.mkdtemp(prefix="autolev-test-state-"))
 
 
 @pytest.fixture(scope="session")

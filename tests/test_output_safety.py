@@ -118,3 +118,48 @@ def test_convert_into_a_place_it_cannot_write_is_a_clear_error(tmp_path, args, m
     r = cli("convert", PENDULUM, *[a.format(tmp=tmp_path) for a in args])
     assert r.returncode in (1, 2) and message in r.stderr
     assert "internal error" not in r.stderr
+
+
+def test_a_run_never_replaces_an_in_file_the_user_edited(tmp_path):
+    # Autolev's workflow edits NAME.in; the next run keeps it unless told otherwise
+    out = tmp_path / "out"
+    assert cli("run", PENDULUM, "--out", out, "-q").returncode == 0
+    again = cli("run", PENDULUM, "--out", out, "-q")        # its own files: replaced
+    assert again.returncode == 0, again.stderr
+    edited = (out / "simple_pendulum.in").read_text().replace("| 1.0", "| 2.0", 1)
+    (out / "simple_pendulum.in").write_text(edited)
+    refused = cli("run", PENDULUM, "--out", out, "-q")
+    assert refused.returncode == 1
+    assert "simple_pendulum.in in" in refused.stderr and "--overwrite" in refused.stderr
+    assert (out / "simple_pendulum.in").read_text() == edited
+    with_it = cli("run", PENDULUM, "--out", out, "--in", out / "simple_pendulum.in", "-q")
+    assert with_it.returncode == 0, with_it.stderr
+    assert (out / "simple_pendulum.in").read_text() == edited
+    replaced = cli("run", PENDULUM, "--out", out, "-q", "--overwrite")
+    assert replaced.returncode == 0 and (out / "simple_pendulum.in").read_text() != edited
+    # the record of what autolev wrote is kept with the user's state, not in the folder
+    assert sorted(p.name for p in out.iterdir()) == [
+        "simple_pendulum.1", "simple_pendulum.dir", "simple_pendulum.in"]
+
+
+def test_transcript_never_replaces_autolevs_own_session(tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    session = out / "simple_pendulum.all"
+    session.write_text("   (1) NEWTONIAN N\n")            # Autolev's own, saved by SAVE
+    r = cli("transcript", PENDULUM, "--out", out)
+    assert r.returncode == 1 and "not written by autolev" in r.stderr
+    assert session.read_text() == "   (1) NEWTONIAN N\n"
+    assert cli("transcript", PENDULUM, "--out", out, "--overwrite").returncode == 0
+    assert session.read_text() != "   (1) NEWTONIAN N\n"
+    assert cli("transcript", PENDULUM, "--out", out).returncode == 0     # now ours
+
+
+def test_code_never_replaces_a_program_the_user_edited(tmp_path):
+    out = tmp_path / "out"
+    assert cli("code", PENDULUM, "--out", out).returncode == 0
+    program = out / "simple_pendulum.c"
+    program.write_text(program.read_text() + "/* my change */\n")
+    r = cli("code", PENDULUM, "--out", out)
+    assert r.returncode == 1 and "--overwrite" in r.stderr
+    assert program.read_text().endswith("/* my change */\n")

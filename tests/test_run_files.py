@@ -83,13 +83,21 @@ def test_temporaries_of_a_killed_run_are_removed_by_the_next(model, tmp_path):
 
 
 def test_tables_of_the_previous_run_that_this_run_did_not_write_go(model, tmp_path):
+    # the previous run had two OUTPUT statements more: its .3 and .4 would pass for
+    # this run's; a .5 autolev did not write (laid out as its own) stays
     out = tmp_path / "out"
-    first_run(model, out)
-    (out / "double_pendulum.7").write_text("% FILE: double_pendulum.7\n")
-    (out / "double_pendulum.8").write_text("the user's own notes\n")
+    text = PENDULUM.read_text()
+    assert text.count("\nOUTPUT") == 2
+    more = tmp_path / "more" / "double_pendulum.al"
+    more.parent.mkdir()
+    more.write_text(text.replace("CODE DYNAMICS", "OUTPUT T\nOUTPUT Q1\nCODE DYNAMICS"))
+    autolev.load(more).simulate(out_dir=out, TFINAL=0.2)
+    assert (out / "double_pendulum.4").exists()
+    (out / "double_pendulum.5").write_text("% FILE: double_pendulum.5\n")
     result = model.simulate(out_dir=out, TFINAL=0.2)
     names = {p.name for p in out.iterdir()}
-    assert "double_pendulum.7" not in names and "double_pendulum.8" in names
+    assert not {"double_pendulum.3", "double_pendulum.4"} & names
+    assert "double_pendulum.5" in names
     assert {p.name for p in result.files} <= names
 
 

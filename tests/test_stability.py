@@ -34,7 +34,7 @@ def test_non_finite_input_on_the_command_line_is_a_diagnostic_not_a_traceback(tm
     r = subprocess.run([sys.executable, "-m", "autolev.cli", "run", str(DATA / "two_links.al"),
                         "--set", "L=nan", "--out", str(tmp_path)],
                        capture_output=True, text=True)
-    assert r.returncode == 1
+    assert r.returncode == 2          # a usage error, not the model's (issue 29)
     assert "Traceback" not in r.stderr + r.stdout
     assert "L=nan" in r.stderr + r.stdout
     assert not list(tmp_path.glob("two_links.1"))      # no partial output

@@ -142,13 +142,13 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     if out.resolve() == path.resolve():
         print(f"autolev convert: refusing to overwrite the model {path}", file=sys.stderr)
         return 2
-    from .runtime.outputs import write_whole
+    from .runtime.outputs import write_output
     if out.is_dir():
         print(f"autolev convert: {out} is a folder; -o names the module's file",
               file=sys.stderr)
         return 2
     try:
-        write_whole(out, result.code)              # never a half-written module
+        write_output(out.parent, out.name, result.code, ns.overwrite)  # whole, or nothing
     except OSError as exc:
         print(f"autolev convert: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)
         return 1
@@ -309,6 +309,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
         commands, out_dir, keep_going=True, method=ns.method, backend=ns.backend,
         infile=ns.infile, progress=None if ns.quiet else sys.stderr, overrides=overrides,
         specified=specified, quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate),
+        overwrite=ns.overwrite,
         missing_values="zero" if ns.zero_missing else "refuse")
     for done in runs:
         if done.error is not None:
@@ -342,7 +343,13 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
             status = 1
     if ns.plot and result.outputs:
         from .plots import write_pngs
-        for f in write_pngs(result, out_dir):
+        try:
+            pictures = write_pngs(result, out_dir, ns.overwrite)
+        except OSError as exc:
+            print(f"{label}: error: cannot write the plots into {out_dir}: "
+                  f"{exc.strerror or exc}", file=sys.stderr)
+            return 1
+        for f in pictures:
             if not ns.quiet:
                 print(f"  wrote {f}")
     return status
@@ -395,12 +402,12 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
                                locked=_listed(ns.lock) or None, specified=specified)
     try:
         if sweep is not None:
-            return _linearize_sweep(path, sweep, at, ns.out, ns.plot)
+            return _linearize_sweep(path, sweep, at, ns.out, ns.plot, ns.overwrite)
         lin = at({})
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
-    return _report_eigenvalues(path, lin, ns.out)
+    return _report_eigenvalues(path, lin, ns.out, ns.overwrite)
 
 
 def _linearize_request(ns: argparse.Namespace):
@@ -451,11 +458,11 @@ def _constraint_values(model, names) -> list | None:
     return constraints
 
 
-def _report_eigenvalues(path: Path, lin, out_dir: str | None) -> int:
+def _report_eigenvalues(path: Path, lin, out_dir: str | None, overwrite: bool = False) -> int:
     """Print a linearization's eigenvalues (and write them into `out_dir`)."""
     from .runtime.numerics.files import safe_stem
     from .runtime.numerics.linearize import eigenvalue_table
-    from .runtime.outputs import write_whole
+    from .runtime.outputs import write_output
 
     if not lin.steady:
         print(f"{path}: warning: not an equilibrium or a steady motion: the accelerations "
@@ -469,7 +476,8 @@ def _report_eigenvalues(path: Path, lin, out_dir: str | None) -> int:
         out = Path(out_dir)
         try:
             out.mkdir(parents=True, exist_ok=True)
-            target = write_whole(out / f"{safe_stem(path.stem)}-eigenvalues.csv", table)
+            target = write_output(out, f"{safe_stem(path.stem)}-eigenvalues.csv", table,
+                                  overwrite)
         except OSError as exc:
             print(f"autolev linearize: cannot write into {out}: {exc.strerror}",
                   file=sys.stderr)
@@ -501,14 +509,15 @@ def _sweep_range(text: str):
     return name.strip(), [start + (stop - start) * k / (count - 1) for k in range(count)]
 
 
-def _linearize_sweep(path: Path, sweep, at, out: str | None, plot: bool = False) -> int:
+def _linearize_sweep(path: Path, sweep, at, out: str | None, plot: bool = False,
+                     overwrite: bool = False) -> int:
     """Eigenvalues against one quantity of the operating point: CSV on stdout (and in
     --out as NAME-sweep.csv; with `plot`, NAME-sweep.png in --out or here)."""
     import time
 
     from .runtime.numerics.files import safe_stem
     from .runtime.numerics.linearize import sweep_table
-    from .runtime.outputs import write_whole
+    from .runtime.outputs import write_output
     name, values = sweep
     start = time.monotonic()
     lins = []
@@ -530,12 +539,13 @@ def _linearize_sweep(path: Path, sweep, at, out: str | None, plot: bool = False)
             folder.mkdir(parents=True, exist_ok=True)
             written = []
             if out:
-                written.append(write_whole(folder / f"{stem}-sweep.csv", table))
+                written.append(write_output(folder, f"{stem}-sweep.csv", table, overwrite))
             if plot:
                 from .plots import write_eigenvalue_png
                 written.append(write_eigenvalue_png(
                     folder / f"{stem}-sweep.png", name, values,
-                    [lin.eigenvalues() for lin in lins], f"{path.name}: eigenvalues"))
+                    [lin.eigenvalues() for lin in lins], f"{path.name}: eigenvalues",
+                    overwrite))
         except OSError as exc:
             print(f"autolev linearize: cannot write into {folder}: {exc.strerror}",
                   file=sys.stderr)
@@ -547,11 +557,11 @@ def _linearize_sweep(path: Path, sweep, at, out: str | None, plot: bool = False)
 
 def cmd_transcript(ns: argparse.Namespace) -> int:
     """The responses Autolev displayed for each statement, as its .all files."""
-    return _print_transcript(Path(ns.file), Path(ns.out) if ns.out else None)
+    return _print_transcript(Path(ns.file), Path(ns.out) if ns.out else None, ns.overwrite)
 
 
-def _print_transcript(path: Path, out_dir: Path | None) -> int:
-    from .runtime.outputs import write_whole
+def _print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False) -> int:
+    from .runtime.outputs import write_output
     from .transcript import transcript
     if path.suffix.lower() == ".py":
         print(f"{path}: a transcript is made from the .al model", file=sys.stderr)
@@ -568,7 +578,7 @@ def _print_transcript(path: Path, out_dir: Path | None) -> int:
     target = out_dir / f"{path.stem}.all"
     try:
         out_dir.mkdir(parents=True, exist_ok=True)
-        write_whole(target, text)
+        write_output(out_dir, target.name, text, overwrite)
     except OSError as exc:
         print(f"autolev transcript: cannot write {target}: {exc.strerror}", file=sys.stderr)
         return 1
@@ -650,7 +660,7 @@ def cmd_code(ns: argparse.Namespace) -> int:
         return 1
     out = Path(ns.out)
     try:
-        done = write_programs(model, out,
+        done = write_programs(model, out, overwrite=ns.overwrite,
                               source=path if path.suffix.lower() != ".py" else None)
     except OSError as exc:
         print(f"autolev code: cannot write into {out}: {exc.strerror or exc}",
@@ -748,6 +758,14 @@ def _run_options(parser) -> None:
                         help="compute the values meant where Autolev's programs computed "
                         "others (a quantity named i1 in a C program's outputs)")
     parser.add_argument("-q", "--quiet", action="store_true")
+    _overwrite_option(parser)
+
+
+def _overwrite_option(parser) -> None:
+    parser.add_argument("--overwrite", action="store_true",
+                        help="replace files in the way that autolev did not write (an .in "
+                        "file you edited, Autolev's own output); without it they stop the "
+                        "command")
 
 
 def _add_check(sub) -> None:
@@ -775,6 +793,7 @@ def _add_convert(sub) -> None:
     convert.add_argument("-o", "--output", metavar="OUT.py",
                          help="where to write the module (default: FILE with .py)")
     convert.add_argument("-q", "--quiet", action="store_true")
+    _overwrite_option(convert)
     convert.set_defaults(func=cmd_convert)
 
 
@@ -830,6 +849,7 @@ def _add_linearize(sub) -> None:
                      "against the swept quantity (needs matplotlib)")
     lin.add_argument("--out", metavar="DIR",
                      help="also write NAME-eigenvalues.csv (or NAME-sweep.csv) there")
+    _overwrite_option(lin)
     lin.set_defaults(func=cmd_linearize)
 
 
@@ -860,6 +880,7 @@ def _add_transcript(sub) -> None:
                         "`autolev verify NAME.all` replays such a transcript.")
     tr.add_argument("file", metavar="FILE", help=".al model")
     tr.add_argument("--out", metavar="DIR", help="write DIR/NAME.all instead of printing")
+    _overwrite_option(tr)
     tr.set_defaults(func=cmd_transcript)
 
 
@@ -905,6 +926,7 @@ def _add_code(sub) -> None:
     code.add_argument("--out", metavar="DIR", default=".",
                       help="folder for the programs (default: the current folder)")
     code.add_argument("-q", "--quiet", action="store_true")
+    _overwrite_option(code)
     code.set_defaults(func=cmd_code)
 
 

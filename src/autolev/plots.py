@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .runtime.outputs import write_whole
+from .runtime.outputs import write_output
 
 
 def _unit_key(unit: str | None) -> str:
@@ -75,8 +75,9 @@ def figure(table, times=None):
     return fig
 
 
-def write_pngs(result, out_dir: Path) -> list[Path]:
-    """A PNG per output table of the run (NAME.k.png); returns the files written."""
+def write_pngs(result, out_dir: Path, overwrite: bool = False) -> list[Path]:
+    """A PNG per output table of the run (NAME.k.png); returns the files written.
+    `overwrite`: replace such files autolev did not write."""
     import matplotlib.pyplot as plt
 
     written = []
@@ -85,16 +86,17 @@ def write_pngs(result, out_dir: Path) -> list[Path]:
         fig = figure(table, times)
         if fig is None:
             continue
-        written.append(_save(fig, Path(out_dir) / f"{table.filename}.png"))
+        written.append(_save(fig, Path(out_dir) / f"{table.filename}.png", overwrite))
         plt.close(fig)
     return written
 
 
-def _save(fig, path: Path) -> Path:
-    """The figure as a PNG, written whole (never through a link at its name)."""
+def _save(fig, path: Path, overwrite: bool = False) -> Path:
+    """The figure as a PNG, written whole (never through a link at its name, nor over a
+    file autolev did not write unless `overwrite`)."""
     picture = io.BytesIO()
     fig.savefig(picture, dpi=100, format="png")
-    return write_whole(path, picture.getvalue())
+    return write_output(path.parent, path.name, picture.getvalue(), overwrite)
 
 
 def eigenvalue_figure(name: str, values, eigenvalues, title: str = ""):
@@ -121,10 +123,11 @@ def eigenvalue_figure(name: str, values, eigenvalues, title: str = ""):
     return fig
 
 
-def write_eigenvalue_png(path: Path, name: str, values, eigenvalues, title: str = "") -> Path:
+def write_eigenvalue_png(path: Path, name: str, values, eigenvalues, title: str = "",
+                         overwrite: bool = False) -> Path:
     import matplotlib.pyplot as plt
 
     fig = eigenvalue_figure(name, values, eigenvalues, title)
-    written = _save(fig, Path(path))
+    written = _save(fig, Path(path), overwrite)
     plt.close(fig)
     return written

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 from pathlib import Path, PureWindowsPath
 
 from ..runtime.errors import AutolevModelError
-from ..runtime.outputs import inside, write_whole
+from ..runtime.outputs import Written as WrittenFiles
+from ..runtime.outputs import inside, write_output
 from .c import write_c
 from .c_dynamics import write_c_dynamics
 from .f import write_f_dynamics
@@ -72,11 +73,13 @@ def program_texts(model, command, sources=None) -> dict:
     return {relative_path(name): text for name, text in write(plan).items()}
 
 
-def write_programs(model, out_dir, commands=None, source=None) -> list[Written]:
+def write_programs(model, out_dir, commands=None, source=None,
+                   overwrite: bool = False) -> list[Written]:
     """Write each CODE command's program (default: all of the model's) and the .in
     file it reads into `out_dir`; `source`: the model's .al file, whose statements the
     programs name in comments.  Every text is made before any file is written, and
-    each file appears whole (written aside, then renamed)."""
+    each file appears whole (written aside, then renamed).  A file in the way that
+    autolev did not write stops it before anything is written, unless `overwrite`."""
     sources = statement_sources(source) if source is not None else {}
     out = Path(out_dir)
     done = []
@@ -91,10 +94,13 @@ def write_programs(model, out_dir, commands=None, source=None) -> list[Written]:
         done.append(Written(command, [out / p for p in made]))
     if texts:
         out.mkdir(parents=True, exist_ok=True)
-    # every name checked first: one that leads outside means none is written
+    # every name checked first: one that leads outside, or a file of someone else's in
+    # the way, means none is written
     paths = {rel: inside(out, rel) for rel in texts}
+    for path in paths.values():
+        WrittenFiles(path.parent).check([path.name], overwrite)
     for rel, text in texts.items():
-        write_whole(paths[rel], text)
+        write_output(out, rel, text, overwrite=True)
     return done
 
 

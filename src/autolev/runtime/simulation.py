@@ -105,7 +105,7 @@ class SimulationMixin:
                  infile=None, out_dir=None, specified=None, progress=None,
                  compiled: bool = True, constraints=None, quirks: bool = True,
                  keep_rows: bool = True, missing_values: str = "refuse", code=None,
-                 **overrides):
+                 overwrite: bool = False, **overrides):
         """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
         CODE command, else a plain simulation) with INPUT values, `overrides`
         (NAME=value in the quantity's unit, TFINAL=..., ...; a number for a specified
@@ -127,14 +127,16 @@ class SimulationMixin:
         Result holds only the last row (a long run into out_dir then needs no memory
         for its rows).  `missing_values="zero"`: constants without a value are 0 (with a
         warning) instead of stopping the run before it is compiled (MissingValues).
-        `code`: which CODE command to run (see code_command).
+        `code`: which CODE command to run (see code_command).  `overwrite`: replace
+        files in out_dir that autolev did not write (else they stop the run).
         Returns a Result (times, states and outputs as numpy arrays)."""
         try:
             return run_command(
                 self, self.command_to_run(code), out_dir=out_dir, method=method,
                 backend=backend, infile=infile, specified=specified, progress=progress,
                 overrides=overrides, compiled=compiled, constraints=constraints,
-                quirks=quirks, keep_rows=keep_rows, missing_values=missing_values)
+                quirks=quirks, keep_rows=keep_rows, missing_values=missing_values,
+                overwrite=overwrite)
         finally:
             keep_built(self)
 

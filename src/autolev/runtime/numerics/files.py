@@ -30,7 +30,7 @@ except ImportError:           # Windows: runs into one folder are not locked
     fcntl = None
 
 from ..errors import AutolevModelError
-from ..outputs import TEMPORARY_SUFFIX, temporary_beside
+from ..outputs import TEMPORARY_SUFFIX, Written, temporary_beside
 
 
 def safe_stem(filename: str) -> str:
@@ -99,15 +99,18 @@ class RunFiles:
     failed-to-write run leaves the previous run's files as they were.  While it is
     open the folder is locked against another run (flock on the folder itself)."""
 
-    def __init__(self, folder: Path, stem: str):
+    def __init__(self, folder: Path, stem: str, overwrite: bool = False):
+        """`overwrite`: replace files autolev did not write (see outputs.Written)."""
         self.folder = Path(folder)
         self.stem = stem
+        self.overwrite = overwrite
         self._staged: list[tuple[Path, Path]] = []       # (temporary, final)
         self._handles = []
         if self.folder.exists() and not self.folder.is_dir():
             raise NotADirectoryError(errno.ENOTDIR, "not a folder", str(self.folder))
         self.folder.mkdir(parents=True, exist_ok=True)
         self._lock = _lock_folder(self.folder)
+        self._written = Written(self.folder)
         try:
             self._remove_stale()
         except BaseException:
@@ -120,8 +123,14 @@ class RunFiles:
             if tmp.is_file() or tmp.is_symlink():
                 tmp.unlink(missing_ok=True)
 
+    def claim(self, names) -> None:
+        """Refuse, before anything is computed, to replace files autolev did not write
+        (unless told to overwrite)."""
+        self._written.check(names, self.overwrite)
+
     def open(self, final: Path):
         """A new text file that becomes `final` at commit."""
+        self._written.check([final.name], self.overwrite)
         tmp = temporary_beside(final)
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
         self._staged.append((tmp, final))
@@ -148,26 +157,32 @@ class RunFiles:
         order = sorted(self._staged, key=lambda pair: pair[1].suffix == ".dir")
         previous_dir = self.folder / f"{self.stem}.dir"
         with signals_held():
-            if previous_dir.is_file() and not previous_dir.is_symlink() and \
-                    previous_dir.read_bytes()[:64].startswith(f"FILE: {previous_dir.name}"
-                                                              .encode()):
-                previous_dir.unlink()
+            self._written.expect(order)
+            if previous_dir.is_file() and not previous_dir.is_symlink():
+                previous_dir.unlink()      # ours, or overwrite was asked: open() checked
             for tmp, final in order:
                 os.replace(tmp, final)
+            self._written.record([final.name for _, final in order])
         self._staged = []
         self._remove_superseded([final for _, final in order])
         return [final for _, final in order]
 
     def _remove_superseded(self, written: list[Path]) -> None:
         """The previous run's tables and `.encode` this run did not write (fewer OUTPUT
-        statements, no ENCODE): they would pass for this run's."""
+        statements, no ENCODE): they would pass for this run's.  Only files autolev
+        wrote and nobody changed since."""
         names = {p.name for p in written}
+        gone = []
         for path in self.folder.glob(f"{glob_escape(self.stem)}.*"):
             suffix = path.name[len(self.stem) + 1:]
             if path.name in names or not (suffix.isdigit() or suffix == "encode"):
                 continue
-            if path.is_file() and not path.is_symlink() and _written_by_a_run(path):
+            if path.is_file() and not path.is_symlink() and path.name in \
+                    self._written.records and self._written.ours(path.name):
                 path.unlink()
+                gone.append(path.name)
+        if gone:
+            self._written.forget(gone)
 
     def discard(self) -> None:
         """Remove every temporary; a file that cannot be closed (its buffer cannot be
@@ -190,12 +205,6 @@ class RunFiles:
 
 def glob_escape(text: str) -> str:
     return "".join(f"[{c}]" if c in "*?[" else c for c in text)
-
-
-def _written_by_a_run(path: Path) -> bool:
-    with open(path, "rb") as h:
-        head = h.read(64)
-    return head.startswith((b"% FILE: ", b"% values of the ENCODE"))
 
 
 # the signals a run holds off while it changes its set of files

@@ -488,7 +488,7 @@ def run_command(model, command, out_dir=None, method: str | None = None,
                 backend: str = "auto", infile=None, specified=None, progress=None,
                 overrides=None, compiled: bool = True, constraints=None,
                 quirks: bool = True, keep_rows: bool = True,
-                missing_values: str = "refuse") -> Result:
+                missing_values: str = "refuse", overwrite: bool = False) -> Result:
     """Run one CODE command; files go to out_dir (None: no files).  `constraints`:
     configuration constraints g(q) (sympy expressions in the model's symbols) kept at
     their initial values by projecting the state onto them at every print time.
@@ -498,7 +498,9 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     so that memory does not grow with the length of the run.  `missing_values`:
     "refuse" (a constant the run needs without a value from INPUT, the .in file or
     the overrides stops it before anything is compiled, MissingValues) or "zero"
-    (they are 0, with a warning)."""
+    (they are 0, with a warning).  `overwrite`: replace files in out_dir that autolev did
+    not write (Autolev's own output, a .in the user edited); else they stop the run
+    before it computes anything."""
     prepared = prepare_command(model, command, backend=backend, infile=infile,
                                specified=specified, overrides=overrides,
                                constraints=constraints, quirks=quirks,
@@ -531,10 +533,13 @@ def run_command(model, command, out_dir=None, method: str | None = None,
     own_in = folder / f"{stem}.in"
     with termination_cleans_up():
         with _writing(folder):
-            run_files = RunFiles(folder, stem)
+            run_files = RunFiles(folder, stem, overwrite)
+        writes_in = infile is None or Path(infile).resolve() != own_in.resolve()
         try:
             with _writing(folder):
-                if infile is None or Path(infile).resolve() != own_in.resolve():
+                run_files.claim([own_in.name] * writes_in + [f"{stem}.dir", f"{stem}.encode"]
+                                + [f"{stem}.{k}" for k in range(1, len(files) + 1)])
+                if writes_in:
                     run_files.text(own_in.name, inputs.file_text(own_in.name, kinds))
                 writer = run_files.tables([([c.label for c in cols], [c.unit for c in cols])
                                            for cols in files])
