@@ -4,12 +4,14 @@ What is drawn follows rules of this tool (Autolev drew nothing itself):
 
 * **Links.** Every position the model defines (P_A_B> = ...) links A and B.  Links are
   taken most local first: measure numbers in the fewest frames, then the fewest measure
-  numbers, then the smallest expressions.  A link between two points that links taken
-  before already join is a *repetition* when its vector is the sum along that chain at
-  every state (P_O_P2> = P_O_P1> + P_P1_P2>, as models write for their outputs): checked
-  at the run's rows and at a probe state off the run, it is left out, so the figure is
-  the chain and not a fan from the point every output is measured from.  Otherwise it
-  closes a loop (a four-bar whose last joint is positioned) and is drawn.
+  numbers, then the smallest expressions.  A link between two points that the links
+  taken before already join is a *repetition* when its vector is the sum along that
+  chain at every state (checked at the run's rows and at a probe state off the run) and
+  it is less local than each link of the chain: it is built from them, as a model's
+  outputs are (P_O_P2> = P_O_P1> + P_P1_P2>).  Repetitions are left out, so the figure
+  is the chain and not a fan from the point every output is measured from.  Any other
+  such link closes a loop (a four-bar or parallelogram with its last side positioned)
+  and is drawn.
 * **Segments.** A link whose length and measure numbers along N's own axes both change
   during the run places the figure in N rather than being part of it (P_O_P1> =
   Q1*N1> + Q2*N2>, or P_O_CM> = CM(O) built on it): it is not drawn.  Every other link is.
@@ -19,19 +21,20 @@ What is drawn follows rules of this tool (Autolev drew nothing itself):
   NO, or with no fixed point at all (then at its first point), is drawn from the origin
   too, with a note.  A fixed point that ends no segment is not drawn (the ground point
   the figure is only placed from).
-* **Marks.** Mass centres of bodies are drawn larger and unlabelled; every other point
-  is labelled, the ends of most segments first, and a label that would cover one already
-  placed in that frame is left out.
-* **No figure.** When no segment has a length (a spacecraft with reaction wheels), each
-  oriented body's axes are drawn instead, side by side: unit lines along B1>, B2>, B3>
-  turning with B's orientation in N.
-* **The view.** Down is where the first GRAVITY statement's vector points (with the
-  run's values).  The depth (the direction toward the viewer) is an N axis along which the drawn
-  points keep their coordinate when there is one (a plane motion seen face on), otherwise
-  the N axis most nearly level (N3, N2, N1 first); up is opposite gravity, made
-  perpendicular to the depth; without gravity (or gravity along the depth) the axes go
-  round: depth N3 with N1 right and N2 up, depth N2 with N3 right and N1 up, depth N1
-  with N2 right and N3 up.  The view is framed on the drawn points over the whole run.
+* **Marks.** Bodies' mass centres and particles are drawn larger; every point but a
+  body's mass centre is labelled, the ends of most segments first, and a label that
+  would cover one already placed in that frame is left out.
+* **No figure.** When no segment has a length (a spacecraft with reaction wheels, a
+  body at its fixed mass centre), each oriented body's axes are drawn instead, side by
+  side: unit lines along B1>, B2>, B3> turning with B's orientation in N.
+* **The view.** Down is where the first GRAVITY statement's vector points, with the
+  run's values.  When the drawn points keep their coordinate along an axis of N (a plane
+  motion) the picture looks along that axis (the one gravity is not along, N3 before N2
+  before N1); otherwise along the axis most nearly level (the same order on a tie).  Up
+  is opposite gravity, made square to the line of sight; without gravity (or with it
+  along the line of sight) the axes go round: looking along N3, N1 is right and N2 up;
+  along N2, N3 right and N1 up; along N1, N2 right and N3 up.  The view is framed on the
+  drawn points over the whole run.
 
 It is written as a self-contained HTML page (a 3-D view to rotate with the mouse and a
 time slider, no network needed) and, with matplotlib, as a GIF (or an MP4 where ffmpeg
