@@ -147,7 +147,7 @@ VARIABLES X', TH', PH'
 CONSTANTS H, L1, L2, G
 SIMPROT(N, A, 3, TH)
 SIMPROT(A, {knee_axis}, PH)
-X' = 1
+X' = {speed}
 TH' = 1
 PH' = 0.5
 V_O_N> = 0>
@@ -162,9 +162,10 @@ CODE ODE() walker.c
 """
 
 
-def walker(tmp_path, before="", after="", knee_axis="B, 3", x0=0):
+def walker(tmp_path, before="", after="", knee_axis="B, 3", x0=0, speed=1):
     path = tmp_path / "walker.al"
-    path.write_text(WALKER.format(before=before, after=after, knee_axis=knee_axis, x0=x0))
+    path.write_text(WALKER.format(before=before, after=after, knee_axis=knee_axis, x0=x0,
+                                  speed=speed))
     model = autolev.load(path)
     return animation.motion(model, model.simulate(), max_frames=11)
 
@@ -251,6 +252,32 @@ def test_the_view_is_framed_on_the_motion_not_on_the_origin(tmp_path):
     pad = animation.MARGIN * extent.max()
     assert np.allclose(lo, points.min(axis=0) - pad) and np.allclose(hi, points.max(axis=0) + pad)
     assert lo[0] > 5.9 and lo[0] == pytest.approx(6 - pad)
+
+
+def test_the_view_follows_a_figure_that_travels_far_over_a_grid_fixed_in_n(tmp_path):
+    still = walker(tmp_path)                     # 1 m of travel for a leg 0.9 m long
+    assert not still.follows and still.grid() is None
+    centres, width = still.view()
+    lo, hi = still.view_box()
+    assert np.allclose(centres, (lo + hi) / 2) and width == pytest.approx((hi - lo).max())
+    m = walker(tmp_path, speed=10)               # 10 m: more than 3 times its size
+    assert m.follows
+    centres, width = m.view()
+    p = m.picture
+    assert np.allclose(centres, p.mean(axis=1))  # each frame about its own points
+    reach = np.linalg.norm(p - centres[:, None], axis=2).max()
+    assert width == pytest.approx(2 * reach * (1 + 2 * animation.MARGIN))
+    # a quarter of the view is about 0.26 m: the nearest of 0.1, 0.2, 0.5 ... is 0.2
+    assert width / 4 == pytest.approx(0.26, abs=0.03)
+    assert m.grid() == {"step": 0.2, "axes": [0, 1], "level": 0.0}
+    lines = animation.grid_lines(m.grid(), centres[5], width)
+    across = sorted(ends[0, 0] for ends, _ in lines if ends[0, 0] == ends[1, 0])
+    # every 0.2 m across the view and a width either side of its centre
+    assert np.allclose(np.diff(across), 0.2)
+    assert across[0] - 0.2 < centres[5][0] - width <= across[0]
+    assert across[-1] <= centres[5][0] + width < across[-1] + 0.2
+    assert [major for ends, major in lines if ends[0, 0] == ends[1, 0]] == [
+        round(x / 0.2) % 5 == 0 for x in across]
 
 
 def test_labels_go_to_joints_first_and_never_cover_each_other(tmp_path):
@@ -367,13 +394,10 @@ global.setInterval = () => 0;
 """
 
 
-@pytest.mark.skipif(shutil.which("node") is None, reason="needs Node.js to run the page")
-def test_the_pages_script_draws_the_segments_and_the_labels_that_fit(tmp_path):
+def page_calls(m, tmp_path) -> list:
+    """The canvas calls of the page's script drawing its first frame, under Node.js."""
     import json
     import re
-    m = animation.Motion("N", ["NO", "P1", "P2", "P3"], [(0, 1), (1, 2)], [2],
-                         np.array([0.0]), np.array([[[0, 0, 0], [1, 0, 0], [2, 0, 0],
-                                                     [2.001, 0, 0]]]), labelled=[1, 0, 2, 3])
     page = animation.write_html(m, tmp_path / "m.html", "m").read_text()
     data = re.search(r'<script id="motion" type="application/json">(.*?)</script>', page,
                      re.S).group(1)
@@ -383,14 +407,42 @@ def test_the_pages_script_draws_the_segments_and_the_labels_that_fit(tmp_path):
     (tmp_path / "run.js").write_text(program)
     out = subprocess.run(["node", str(tmp_path / "run.js")], capture_output=True, text=True,
                          timeout=60, check=True).stdout
-    calls = json.loads(out)
-    strokes = [c for c in calls if c[0] == "strokeStyle"]
-    assert [c[1] for c in strokes].count(animation.COLOURS[animation.SEGMENT]) == 2
+    return json.loads(out)
+
+
+needs_node = pytest.mark.skipif(shutil.which("node") is None,
+                                reason="needs Node.js to run the page's script")
+
+
+@needs_node
+def test_the_pages_script_draws_the_segments_and_the_labels_that_fit(tmp_path):
+    m = animation.Motion("N", ["NO", "P1", "P2", "P3"], [(0, 1), (1, 2)], [2],
+                         np.array([0.0]), np.array([[[0, 0, 0], [1, 0, 0], [2, 0, 0],
+                                                     [2.001, 0, 0]]]), labelled=[1, 0, 2, 3])
+    calls = page_calls(m, tmp_path)
+    strokes = [c[1] for c in calls if c[0] == "strokeStyle"]
+    assert strokes.count(animation.COLOURS[animation.SEGMENT]) == 2
+    assert not set(animation.GRID_COLOURS.values()) & set(strokes)   # a view that stays
     texts = [c[1] for c in calls if c[0] == "fillText"]
     # P3 sits 1 mm from P2: its label would cover P2's, drawn before it is not;
     # N's axes in the corner: N1> and N2> as lines, N3> toward the viewer as a dot
     assert [t for t in texts if t in m.names] == ["P1", "NO", "P2"]
     assert "\u2299" in texts and {"N1>", "N2>", "N3>"} <= set(texts)
+
+
+@needs_node
+def test_the_pages_script_draws_the_grid_a_following_view_moves_over(tmp_path):
+    # a 1 m rod that travels 10 m along N1 in two frames: a view 1.1 m wide about the
+    # rod's middle (0.5, 0), a grid 0.2 m apart (1.1 / 4 = 0.275, nearest 0.2) drawn a
+    # width either side: x = -0.6 ... 1.6 (12 lines, majors at 0 and 1), y = -1.1 ...
+    # 1.1 (11 lines, majors at -1, 0, 1)
+    times = np.array([0.0, 1.0])
+    xyz = np.array([[[0, 0, 0], [1, 0, 0]], [[10, 0, 0], [11, 0, 0]]])
+    m = animation.Motion("N", ["A", "B"], [(0, 1)], [], times, xyz)
+    assert m.follows and m.grid()["step"] == 0.2
+    strokes = [c[1] for c in page_calls(m, tmp_path) if c[0] == "strokeStyle"]
+    grid = [c for c in strokes if c in animation.GRID_COLOURS.values()]
+    assert len(grid) == 12 + 11 and grid.count(animation.GRID_COLOURS[True]) == 2 + 3
 
 
 # -- real sprint and gait models -------------------------------------------------------------

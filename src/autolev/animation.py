@@ -34,7 +34,10 @@ What is drawn follows rules of this tool (Autolev drew nothing itself):
   is opposite gravity, made square to the line of sight; without gravity (or with it
   along the line of sight) the axes go round: looking along N3, N1 is right and N2 up;
   along N2, N3 right and N1 up; along N1, N2 right and N3 up.  The view is framed on the
-  drawn points over the whole run.
+  drawn points over the whole run; when they travel farther than FOLLOW times the
+  figure's own size (a runner, a bicycle) it follows them instead, centred on their
+  centroid in each frame, over a grid fixed in N (in the plane of a plane motion, else
+  on the ground under the lowest point) that shows the travel.
 
 It is written as a self-contained HTML page (a 3-D view to rotate with the mouse and a
 time slider, no network needed) and, with matplotlib, as a GIF (or an MP4 where ffmpeg
@@ -58,6 +61,8 @@ from .runtime.numerics.inputs import Inputs, display_name
 MAX_FRAMES = 400
 # the margin around the drawn points, as a fraction of their extent
 MARGIN = 0.05
+# the view follows drawn points that travel farther than this many times their own size
+FOLLOW = 3.0
 # body triads are this far apart, in units of their own length
 TRIAD_SPACING = 2.5
 # the 3-D view the GIF is drawn in (the page starts from it too): radians about up, right
@@ -109,6 +114,64 @@ class Motion:
         extent = float((hi - lo).max())
         pad = MARGIN * extent if extent > 0 else 1.0
         return lo - pad, hi + pad
+
+    @property
+    def follows(self) -> bool:
+        """The drawn points travel farther than FOLLOW times the figure's own size (its
+        largest extent in one frame): the view goes with them."""
+        p = self.picture
+        if len(self.names) < 2:
+            return False
+        size = float(np.ptp(p, axis=1).max())
+        travel = float(np.ptp(p.mean(axis=1), axis=0).max())
+        return size > 0 and travel > FOLLOW * size
+
+    def view(self) -> tuple[np.ndarray, float]:
+        """(frames, 3) centres of the view and its width, in picture coordinates: the
+        view box over the whole run, or, when the view follows, each frame's centroid of
+        the drawn points and room for the figure's farthest point from it."""
+        if self.follows:
+            centres = self.picture.mean(axis=1)
+            reach = float(np.linalg.norm(self.picture - centres[:, None], axis=2).max())
+            return centres, 2 * reach * (1 + 2 * MARGIN)
+        lo, hi = self.view_box()
+        return np.repeat(((lo + hi) / 2)[None], len(self.times), axis=0), float((hi - lo).max())
+
+    def grid(self) -> dict | None:
+        """The grid fixed in N that a following view moves over: its spacing (1, 2 or 5
+        times a power of ten, about a quarter of the view), the two picture axes it spans
+        and its place along the third (the plane of a plane motion, else the lowest
+        point's height: the ground); None for a view that stays put."""
+        if not self.follows:
+            return None
+        _, width = self.view()
+        rough = width / 4
+        power = 10 ** np.floor(np.log10(rough))
+        step = float(min((f * power for f in (1, 2, 5, 10)), key=lambda v: abs(v - rough)))
+        p = self.picture
+        if self.planar:
+            return {"step": step, "axes": [0, 1], "level": float(p[0, 0, 2])}
+        return {"step": step, "axes": [0, 2], "level": float(p[:, :, 1].min())}
+
+
+def grid_lines(grid: dict | None, centre, width: float) -> list:
+    """A grid's lines (Motion.grid) within width of centre: (pair of picture points,
+    whether it is a major line, every fifth: a figure moving a whole number of steps
+    between frames still shows its travel)."""
+    if grid is None:
+        return []
+    i, j = grid["axes"]
+    k, step = 3 - i - j, grid["step"]
+    lines = []
+    for a, b in ((i, j), (j, i)):
+        for n in range(int(np.ceil((centre[a] - width) / step)),
+                       int(np.floor((centre[a] + width) / step)) + 1):
+            ends = np.zeros((2, 3))
+            ends[:, a] = n * step
+            ends[:, b] = centre[b] - width, centre[b] + width
+            ends[:, k] = grid["level"]
+            lines.append((ends, n % 5 == 0))
+    return lines
 
 
 @dataclass
@@ -435,6 +498,7 @@ def _geometry_values(model, system, exprs) -> dict:
 
 # -- the HTML page ---------------------------------------------------------------------------
 COLOURS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd"]   # by kind: segment, axes 1, 2, 3
+GRID_COLOURS = {False: "#ebebeb", True: "#c4c4c4"}        # a grid's minor and major lines
 
 
 def _script_json(value) -> str:
@@ -463,8 +527,8 @@ const slider = document.getElementById("time"), label = document.getElementById(
 const button = document.getElementById("play");
 slider.max = M.times.length - 1;
 let frame = 0, playing = true, yaw = M.planar ? 0 : M.yaw, pitch = M.planar ? 0 : M.pitch;
-const mid = M.lo.map((v, i) => (v + M.hi[i]) / 2);
-const span = Math.max(1e-12, ...M.hi.map((v, i) => v - M.lo[i]));
+const span = Math.max(1e-12, M.span);
+let mid = M.centres[0];
 // picture coordinates (right, up, toward the viewer) turned about up, then about right
 function turn(v) {
   const cy = Math.cos(yaw), sy = Math.sin(yaw), cp = Math.cos(pitch), sp = Math.sin(pitch);
@@ -508,9 +572,27 @@ function labels(pts) {
     placed.push(box); ctx.fillText(M.names[k], x, y);
   }
 }
+// a following view moves over a grid fixed in N, every fifth line darker
+function grid() {
+  if (!M.grid) return;
+  const [i, j] = M.grid.axes, k = 3 - i - j, step = M.grid.step;
+  ctx.lineWidth = 1;
+  for (const [a, b] of [[i, j], [j, i]]) {
+    const last = Math.floor((mid[a] + span) / step);
+    for (let n = Math.ceil((mid[a] - span) / step); n <= last; n++) {
+      const p = [0, 0, 0], q = [0, 0, 0];
+      p[a] = q[a] = n * step; p[b] = mid[b] - span; q[b] = mid[b] + span;
+      p[k] = q[k] = M.grid.level;
+      ctx.strokeStyle = M.gridColours[n % 5 === 0 ? 1 : 0];
+      ctx.beginPath(); ctx.moveTo(...project(p)); ctx.lineTo(...project(q)); ctx.stroke();
+    }
+  }
+}
 function draw() {
   ctx.fillStyle = "#ffffff"; ctx.fillRect(0, 0, canvas.width, canvas.height);
   ctx.font = "12px sans-serif";
+  mid = M.centres[frame];
+  grid();
   const pts = M.xyz[frame].map(project);
   ctx.lineWidth = 3;
   M.edges.forEach(([a, b], n) => {
@@ -543,12 +625,14 @@ window.onresize = resize; resize();
 
 
 def write_html(m: Motion, path: Path, title: str) -> Path:
-    lo, hi = m.view_box()
+    centres, width = m.view()
     data = {"frame": m.frame, "names": m.names, "edges": m.edges, "kinds": m.kinds,
             "colours": COLOURS, "centers": m.centers, "labelled": m.labelled,
             "times": [float(t) for t in m.times], "planar": m.planar, "yaw": YAW,
-            "pitch": PITCH, "lo": lo.tolist(), "hi": hi.tolist(),
-            "axes": m.basis.T.tolist(), "xyz": np.round(m.picture, 12).tolist()}
+            "pitch": PITCH, "centres": np.round(centres, 12).tolist(), "span": width,
+            "grid": m.grid(), "gridColours": [GRID_COLOURS[False], GRID_COLOURS[True]],
+            "axes": m.basis.T.tolist(),
+            "xyz": np.round(m.picture, 12).tolist()}
     page = PAGE.replace("@TITLE@", html.escape(title)).replace("@DATA@", _script_json(data))
     path = Path(path)
     path.write_text(page, encoding="utf-8")
@@ -556,12 +640,12 @@ def write_html(m: Motion, path: Path, title: str) -> Path:
 
 
 # -- GIF and MP4 ------------------------------------------------------------------------------
-def screen(m: Motion) -> np.ndarray:
-    """(frames, points, 2): where the movie draws each point, the picture seen face on
+def screen(m: Motion, picture) -> np.ndarray:
+    """(..., 2): where the movie draws points given in picture coordinates: seen face on
     when planar, else turned by YAW about up and PITCH about right (as the page starts)."""
-    p = m.picture
+    p = np.asarray(picture, dtype=float)
     if m.planar:
-        return p[:, :, :2].copy()
+        return p[..., :2].copy()
     return np.stack(_turned(p, YAW, PITCH)[:2], axis=-1)
 
 
@@ -713,15 +797,18 @@ def _frames(m: Motion, report: _Progress):
     left, bottom, width, height = 0.02, 0.02, 0.86, 0.86   # labels may pass the top right
     ax = fig.add_axes([left, bottom, width, height])
     ax.set_axis_off()
-    xy = screen(m)
-    flat = xy.reshape(-1, 2)
-    lo, hi = (flat.min(axis=0), flat.max(axis=0)) if len(flat) else (-np.ones(2), np.ones(2))
-    mid = (lo + hi) / 2
+    centres, view_width = m.view()
+    ground = m.grid()
+    at = screen(m, centres)                   # where the view's centre is drawn
+    xy = screen(m, m.picture) - at[:, None]
+    reach = np.abs(xy).max(axis=(0, 1)) * (1 + MARGIN) if xy.size else np.ones(2)
     aspect = width / height                   # the axes' width over their height
-    half_y = max((hi - lo)[0] / aspect, (hi - lo)[1], 1e-12) / 2 * (1 + 2 * MARGIN)
-    ax.set_xlim(mid[0] - half_y * aspect, mid[0] + half_y * aspect)
-    ax.set_ylim(mid[1] - half_y, mid[1] + half_y)
+    half_y = max(reach[0] / aspect, reach[1], 1e-12)
+    ax.set_xlim(-half_y * aspect, half_y * aspect)
+    ax.set_ylim(-half_y, half_y)
     _corner_axes(ax, m, aspect)
+    grid = LineCollection([], linewidths=1, animated=True)
+    ax.add_collection(grid)
     lines = LineCollection([], linewidths=3, colors=[COLOURS[k] for k in m.kinds],
                            animated=True)
     ax.add_collection(lines)
@@ -740,6 +827,9 @@ def _frames(m: Motion, report: _Progress):
         for n in range(len(m.times)):
             fig.canvas.restore_region(background)
             p = xy[n]
+            lines_now = grid_lines(ground, centres[n], view_width)
+            grid.set_segments([screen(m, ends) - at[n] for ends, _ in lines_now])
+            grid.set_color([GRID_COLOURS[major] for _, major in lines_now])
             lines.set_segments([[p[a], p[b]] for a, b in m.edges])
             dots.set_data(p[others, 0], p[others, 1])
             centers.set_data(p[m.centers, 0], p[m.centers, 1])
@@ -751,7 +841,7 @@ def _frames(m: Motion, report: _Progress):
                 text.set_visible(shown)
                 text.set_position(ax.transData.inverted().transform(box[:2]))
             title.set_text(f"T = {m.times[n]:.6g}")
-            for artist in [lines, dots, centers] + labels:
+            for artist in [grid, lines, dots, centers] + labels:
                 ax.draw_artist(artist)
             fig.draw_artist(title)
             yield np.asarray(fig.canvas.buffer_rgba()).copy()
