@@ -640,11 +640,11 @@ def write_html(m: Motion, path: Path, title: str) -> Path:
 
 
 # -- GIF and MP4 ------------------------------------------------------------------------------
-def screen(m: Motion, picture) -> np.ndarray:
+def screen(planar: bool, picture) -> np.ndarray:
     """(..., 2): where the movie draws points given in picture coordinates: seen face on
     when planar, else turned by YAW about up and PITCH about right (as the page starts)."""
     p = np.asarray(picture, dtype=float)
-    if m.planar:
+    if planar:
         return p[..., :2].copy()
     return np.stack(_turned(p, YAW, PITCH)[:2], axis=-1)
 
@@ -744,8 +744,7 @@ def write_movie(m: Motion, path: Path, fps: int = 25, progress=None) -> Path:
 def _write_gif(frames, path: Path, fps: int) -> None:
     from PIL import Image
     images, palette, index_of = [], None, {}
-    for rgba in frames:
-        rgb = rgba[:, :, :3]
+    for rgb in frames:
         if palette is None:                  # the colours of the first frame: all there are
             first = Image.fromarray(rgb).quantize(colors=64, dither=Image.Dither.NONE)
             palette = np.array(first.getpalette()[:3 * 64], dtype=float).reshape(-1, 3)
@@ -767,18 +766,19 @@ def _write_gif(frames, path: Path, fps: int) -> None:
 
 
 def _write_mp4(frames, path: Path, fps: int) -> None:
+    import itertools
     import subprocess
 
     import matplotlib
     first = next(frames)
     height, width = first.shape[:2]
     command = [matplotlib.rcParams["animation.ffmpeg_path"], "-y", "-loglevel", "error",
-               "-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{width}x{height}",
+               "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{width}x{height}",
                "-r", str(fps), "-i", "-", "-pix_fmt", "yuv420p", "-vcodec", "libx264",
                str(path)]
     with subprocess.Popen(command, stdin=subprocess.PIPE, stderr=subprocess.PIPE) as ffmpeg:
-        for rgba in [first] + list(frames):
-            ffmpeg.stdin.write(rgba.tobytes())
+        for rgb in itertools.chain([first], frames):
+            ffmpeg.stdin.write(rgb.tobytes())
         _, errors = ffmpeg.communicate()
     if ffmpeg.returncode:
         raise AutolevModelError(f"ffmpeg could not write {path.name}: "
@@ -786,21 +786,25 @@ def _write_mp4(frames, path: Path, fps: int) -> None:
 
 
 def _frames(m: Motion, report: _Progress):
-    """The movie's frames as RGBA arrays: the still parts drawn once, each frame's
-    segments, points and labels drawn over them."""
+    """The movie's frames as RGB arrays: the still parts drawn once, each frame's grid,
+    segments and points drawn over them by matplotlib, its labels and time by Pillow
+    (matplotlib's text is most of the time a frame takes)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.collections import LineCollection
+    from matplotlib.font_manager import FontProperties, findfont
+    from PIL import Image, ImageDraw, ImageFont
 
     fig = plt.figure(figsize=(6, 6), dpi=80)
     left, bottom, width, height = 0.02, 0.02, 0.86, 0.86   # labels may pass the top right
     ax = fig.add_axes([left, bottom, width, height])
     ax.set_axis_off()
+    planar = m.planar
     centres, view_width = m.view()
     ground = m.grid()
-    at = screen(m, centres)                   # where the view's centre is drawn
-    xy = screen(m, m.picture) - at[:, None]
+    at = screen(planar, centres)              # where the view's centre is drawn
+    xy = screen(planar, m.picture) - at[:, None]
     reach = np.abs(xy).max(axis=(0, 1)) * (1 + MARGIN) if xy.size else np.ones(2)
     aspect = width / height                   # the axes' width over their height
     half_y = max(reach[0] / aspect, reach[1], 1e-12)
@@ -815,36 +819,40 @@ def _frames(m: Motion, report: _Progress):
     others = [k for k in range(len(m.names)) if k not in set(m.centers)]
     dots = ax.plot([], [], "o", color="#ff7f0e", ms=5, animated=True)[0]
     centers = ax.plot([], [], "o", color="#d62728", ms=9, animated=True)[0]
-    labels = [ax.text(0, 0, m.names[k], fontsize=9, color="#222222", animated=True)
-              for k in m.labelled]
-    title = fig.text(0.5, 0.95, "", ha="center", fontsize=11, animated=True)
     fig.canvas.draw()
     background = fig.canvas.copy_from_bbox(fig.bbox)
-    renderer = fig.canvas.get_renderer()
-    sizes = [t.get_window_extent(renderer).size for t in labels]
+    font_file = findfont(FontProperties(family=["sans-serif"]))
+    font = ImageFont.truetype(font_file, round(9 * fig.dpi / 72))
+    title_font = ImageFont.truetype(font_file, round(11 * fig.dpi / 72))
+    sizes = [font.getbbox(m.names[k])[2:] for k in m.labelled]
     offset = 6 * fig.dpi / 72                  # the labels' offset from their point, pixels
+    tall = fig.canvas.get_width_height()[1]
     try:
         for n in range(len(m.times)):
             fig.canvas.restore_region(background)
             p = xy[n]
             lines_now = grid_lines(ground, centres[n], view_width)
-            grid.set_segments([screen(m, ends) - at[n] for ends, _ in lines_now])
+            grid.set_segments([screen(planar, ends) - at[n] for ends, _ in lines_now])
             grid.set_color([GRID_COLOURS[major] for _, major in lines_now])
             lines.set_segments([[p[a], p[b]] for a, b in m.edges])
             dots.set_data(p[others, 0], p[others, 1])
             centers.set_data(p[m.centers, 0], p[m.centers, 1])
-            pixels = ax.transData.transform(p) if len(p) else p
+            for artist in (grid, lines, dots, centers):
+                ax.draw_artist(artist)
+            image = Image.frombuffer("RGBA", fig.canvas.get_width_height(),
+                                     fig.canvas.buffer_rgba()).convert("RGB")
+            draw = ImageDraw.Draw(image)
+            pixels = ax.transData.transform(p) if len(p) else p   # from the lower left
             boxes = [(pixels[k, 0] + offset, pixels[k, 1] + offset,
                       pixels[k, 0] + offset + size[0], pixels[k, 1] + offset + size[1])
                      for k, size in zip(m.labelled, sizes)]
-            for text, box, shown in zip(labels, boxes, shown_labels(boxes)):
-                text.set_visible(shown)
-                text.set_position(ax.transData.inverted().transform(box[:2]))
-            title.set_text(f"T = {m.times[n]:.6g}")
-            for artist in [grid, lines, dots, centers] + labels:
-                ax.draw_artist(artist)
-            fig.draw_artist(title)
-            yield np.asarray(fig.canvas.buffer_rgba()).copy()
+            for k, box, shown in zip(m.labelled, boxes, shown_labels(boxes)):
+                if shown:
+                    draw.text((box[0], tall - box[1]), m.names[k], font=font,
+                              fill="#222222", anchor="lb")
+            draw.text((image.width / 2, 0.05 * tall), f"T = {m.times[n]:.6g}",
+                      font=title_font, fill="#000000", anchor="mm")
+            yield np.asarray(image)
             report.update(n + 1)
     finally:
         plt.close(fig)
