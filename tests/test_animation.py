@@ -186,6 +186,9 @@ FANS = {
     # ... or built from it afterwards, one of them expressed in N
     "a fan built from the chain": ("", "P_O_KNEE> = P_O_HIP> + P_HIP_KNEE>\n"
                                    "P_O_ANKLE> = EXPRESS(P_O_KNEE> + P_KNEE_ANKLE>, N)"),
+    # O put at NO (the way round "no point has a position from NO"): a link of
+    # no length, drawn as nothing
+    "O at NO": ("P_NO_O> = 0>", "P_O_KNEE> = P_O_HIP> + P_HIP_KNEE>"),
 }
 
 

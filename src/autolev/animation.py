@@ -14,7 +14,8 @@ What is drawn follows rules of this tool (Autolev drew nothing itself):
   and is drawn.
 * **Segments.** A link whose length and measure numbers along N's own axes both change
   during the run places the figure in N rather than being part of it (P_O_P1> =
-  Q1*N1> + Q2*N2>, or P_O_CM> = CM(O) built on it): it is not drawn.  Every other link is.
+  Q1*N1> + Q2*N2>, or P_O_CM> = CM(O) built on it): it is not drawn, nor is a link of
+  no length (P_NO_O> = 0>).  Every other link is.
 * **Where.** A point fixed in N (NO, or a point whose velocity in N is 0>: V_O_N> = 0>
   or a constant position from NO) anchors the points linked to it.  NO is the picture's
   origin; a part of the figure anchored at another fixed point with no position from
@@ -24,8 +25,8 @@ What is drawn follows rules of this tool (Autolev drew nothing itself):
 * **Marks.** Bodies' mass centres and particles are drawn larger; every point but a
   body's mass centre is labelled, the ends of most segments first, and a label that
   would cover one already placed in that frame is left out.
-* **No figure.** When no segment has a length (a spacecraft with reaction wheels, a
-  body at its fixed mass centre), each oriented body's axes are drawn instead, side by
+* **No figure.** When there is no segment (a spacecraft with reaction wheels, a body
+  at its fixed mass centre), each oriented body's axes are drawn instead, side by
   side: unit lines along B1>, B2>, B3> turning with B's orientation in N.
 * **The view.** Down is where the first GRAVITY statement's vector points, with the
   run's values.  When the drawn points keep their coordinate along an axis of N (a plane
@@ -209,7 +210,7 @@ def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
         raise AutolevModelError("the figure's positions are not finite along the run")
     per_link = values[:, :6 * len(links)].reshape(len(rows), len(links), 6)
     figure = _Figure(model, points, links, per_link, probe[:6 * len(links)])
-    triads = not figure.has_length() and bool(_oriented_bodies(model))
+    triads = not figure.segments and bool(_oriented_bodies(model))
     d = _triads(model, result, rows) if triads else figure.drawing()
     if not d.names:
         raise AutolevModelError(
@@ -300,7 +301,9 @@ class _Figure:
         self.placing = {k for k in range(len(links))
                         if np.ptp(lengths[:, k]) > self.tolerance
                         and np.ptp(along_n[:, k], axis=0).max() > self.tolerance}
-        self.segments = [k for k in self.tree + self.loops if k not in self.placing]
+        # a link of no length at any time joins a point to itself: nothing to draw
+        self.segments = [k for k in self.tree + self.loops if k not in self.placing
+                         and lengths[:, k].max() > self.tolerance]
         self.fixed = _fixed_points(model, points)
         self.parts: list[list[int]] = []     # the points joined by the tree, anchor first
         self.notes: list[str] = []
@@ -325,10 +328,6 @@ class _Figure:
                 loops.append(n)
         return tree, loops
 
-    def has_length(self) -> bool:
-        """Some segment is longer than nothing at some time."""
-        return any(np.linalg.norm(self.vectors[:, k], axis=1).max() > self.tolerance
-                   for k in self.segments)
 
     def _place(self) -> np.ndarray:
         """(rows, points, 3): every point from its part's anchor along the tree."""
