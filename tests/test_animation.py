@@ -202,6 +202,12 @@ def test_the_figure_is_the_chain_not_the_fan_from_the_fixed_point(tmp_path, fan)
         assert np.allclose(m.xyz[k], leg_by_hand(m.times[k]), atol=1e-12)
 
 
+def test_a_figure_standing_still_is_placed_as_one_that_moves(tmp_path):
+    # the hip's translation keeps its length over this run but not at the probe state
+    m = walker(tmp_path, speed=0)
+    assert m.names == ["HIP", "KNEE", "ANKLE"] and m.edges == [(0, 1), (1, 2)]
+
+
 def test_a_link_that_closes_a_loop_is_drawn(tmp_path):
     # a parallelogram: P_R_Q> is the sum along R, NO, P, Q at every state but is no more
     # than one side (as local as the others): a loop, kept; so is a loop that does not close

@@ -13,9 +13,9 @@ What is drawn follows rules of this tool (Autolev drew nothing itself):
   such link closes a loop (a four-bar or parallelogram with its last side positioned)
   and is drawn.
 * **Segments.** A link whose length and measure numbers along N's own axes both change
-  during the run places the figure in N rather than being part of it (P_O_P1> =
-  Q1*N1> + Q2*N2>, or P_O_CM> = CM(O) built on it): it is not drawn, nor is a link of
-  no length (P_NO_O> = 0>).  Every other link is.
+  (over the run or at the probe state) places the figure in N rather than being part of
+  it (P_O_P1> = Q1*N1> + Q2*N2>, or P_O_CM> = CM(O) built on it): it is not drawn, nor
+  is a link of no length (P_NO_O> = 0>).  Every other link is.
 * **Where.** A point fixed in N (NO, or a point whose velocity in N is 0>: V_O_N> = 0>
   or a constant position from NO) anchors the points linked to it.  NO is the picture's
   origin; a part of the figure anchored at another fixed point with no position from
@@ -291,19 +291,21 @@ class _Figure:
         vectors = per_link[:, :, :3]                       # (rows, links, 3)
         self.vectors = vectors
         self.tolerance = 1e-9 * (1.0 + float(np.abs(vectors).max(initial=0.0)))
-        # a repetition holds at the probe and every row (a non-finite probe is left out)
-        at_probe = probe.reshape(1, len(links), 6)[:, :, :3]
-        samples = vectors if not np.all(np.isfinite(at_probe)) else \
-            np.concatenate([at_probe, vectors])
-        self.tree, self.loops = self._sort(samples)
-        lengths = np.linalg.norm(vectors, axis=2)              # (rows, links)
-        along_n = per_link[:, :, 3:]
+        # what holds at every state is judged at the rows and at the probe (when finite):
+        # a run where the figure stands still still tells a rod from a translation
+        probe = probe.reshape(1, len(links), 6)
+        samples = np.concatenate([probe, per_link]) if np.all(np.isfinite(probe)) \
+            else per_link
+        self.tree, self.loops = self._sort(samples[:, :, :3])
+        lengths = np.linalg.norm(samples[:, :, :3], axis=2)    # (samples, links)
+        along_n = samples[:, :, 3:]
         self.placing = {k for k in range(len(links))
                         if np.ptp(lengths[:, k]) > self.tolerance
                         and np.ptp(along_n[:, k], axis=0).max() > self.tolerance}
         # a link of no length at any time joins a point to itself: nothing to draw
+        drawn_lengths = np.linalg.norm(vectors, axis=2)
         self.segments = [k for k in self.tree + self.loops if k not in self.placing
-                         and lengths[:, k].max() > self.tolerance]
+                         and drawn_lengths[:, k].max() > self.tolerance]
         self.fixed = _fixed_points(model, points)
         self.parts: list[list[int]] = []     # the points joined by the tree, anchor first
         self.notes: list[str] = []
