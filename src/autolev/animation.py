@@ -47,7 +47,9 @@ is installed); matplotlib, optional, is imported only where the movie is drawn.
 from __future__ import annotations
 
 import html
+import io
 import json
+import os
 from time import monotonic
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -57,6 +59,7 @@ import sympy as sm
 
 from .runtime.errors import AutolevModelError
 from .runtime.numerics.inputs import Inputs, display_name
+from .runtime.outputs import temporary_beside, write_whole
 
 # frames drawn at most: more rows are sampled evenly (the page and the GIF stay small)
 MAX_FRAMES = 400
@@ -635,9 +638,7 @@ def write_html(m: Motion, path: Path, title: str) -> Path:
             "axes": m.basis.T.tolist(),
             "xyz": np.round(m.picture, 12).tolist()}
     page = PAGE.replace("@TITLE@", html.escape(title)).replace("@DATA@", _script_json(data))
-    path = Path(path)
-    path.write_text(page, encoding="utf-8")
-    return path
+    return write_whole(Path(path), page)
 
 
 # -- GIF and MP4 ------------------------------------------------------------------------------
@@ -762,8 +763,10 @@ def _write_gif(frames, path: Path, fps: int) -> None:
         image = Image.frombytes("P", (rgb.shape[1], rgb.shape[0]), indices[where].tobytes())
         image.putpalette(palette.astype(np.uint8).ravel().tolist())
         images.append(image)
-    images[0].save(path, save_all=True, append_images=images[1:], loop=0,
+    movie = io.BytesIO()
+    images[0].save(movie, format="GIF", save_all=True, append_images=images[1:], loop=0,
                    duration=round(1000 / fps))
+    write_whole(path, movie.getvalue())
 
 
 def _write_mp4(frames, path: Path, fps: int) -> None:
@@ -773,17 +776,23 @@ def _write_mp4(frames, path: Path, fps: int) -> None:
     import matplotlib
     first = next(frames)
     height, width = first.shape[:2]
-    command = [matplotlib.rcParams["animation.ffmpeg_path"], "-y", "-loglevel", "error",
+    aside = temporary_beside(path)              # renamed over the target once whole
+    command = [matplotlib.rcParams["animation.ffmpeg_path"], "-n", "-loglevel", "error",
                "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", f"{width}x{height}",
                "-r", str(fps), "-i", "-", "-pix_fmt", "yuv420p", "-vcodec", "libx264",
-               str(path)]
-    with subprocess.Popen(command, stdin=subprocess.PIPE, stderr=subprocess.PIPE) as ffmpeg:
-        for rgb in itertools.chain([first], frames):
-            ffmpeg.stdin.write(rgb.tobytes())
-        _, errors = ffmpeg.communicate()
-    if ffmpeg.returncode:
-        raise AutolevModelError(f"ffmpeg could not write {path.name}: "
-                                + errors.decode(errors="replace").strip()[-300:])
+               "-f", "mp4", str(aside)]
+    try:
+        with subprocess.Popen(command, stdin=subprocess.PIPE,
+                              stderr=subprocess.PIPE) as ffmpeg:
+            for rgb in itertools.chain([first], frames):
+                ffmpeg.stdin.write(rgb.tobytes())
+            _, errors = ffmpeg.communicate()
+        if ffmpeg.returncode:
+            raise AutolevModelError(f"ffmpeg could not write {path.name}: "
+                                    + errors.decode(errors="replace").strip()[-300:])
+        os.replace(aside, path)
+    finally:
+        aside.unlink(missing_ok=True)
 
 
 def _frames(m: Motion, report: _Progress):
