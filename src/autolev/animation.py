@@ -60,6 +60,7 @@ import sympy as sm
 from .runtime.errors import AutolevModelError
 from .runtime.numerics.inputs import Inputs, display_name
 from .runtime.outputs import temporary_beside, write_whole
+from .runtime.vector import Vector
 
 # frames drawn at most: more rows are sampled evenly (the page and the GIF stay small)
 MAX_FRAMES = 400
@@ -81,17 +82,17 @@ class Motion:
     frame: str                       # the Newtonian frame's name
     names: list[str]                 # the points drawn
     edges: list[tuple[int, int]]     # pairs of point indices
-    centers: list[int]               # points that are mass centers (drawn larger)
+    centers: list[int]               # mass centres and particles (drawn larger)
     times: np.ndarray                # (frames,)
     xyz: np.ndarray                  # (frames, points, 3), in the frame's basis
     kinds: list[int] = field(default_factory=list)     # per edge (default: SEGMENT)
-    labelled: list[int] = field(default_factory=list)  # points labelled, first first
+    labelled: list[int] = field(default_factory=list)  # points labelled, most wanted first
     # rows: the picture's right, up and toward-the-viewer directions in N's basis
     basis: np.ndarray = field(default_factory=lambda: np.eye(3))
     notes: list[str] = field(default_factory=list)     # how the figure was placed
 
     def __post_init__(self):
-        if not self.kinds:
+        if not self.kinds:                   # edges not said otherwise are segments
             self.kinds = [SEGMENT] * len(self.edges)
 
     @property
@@ -184,7 +185,7 @@ class _Link:
 
     a: int
     b: int
-    vector: object                   # runtime Vector
+    vector: Vector
     locality: tuple                  # smaller is more local (see _locality)
 
 
