@@ -334,7 +334,7 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
     status = 0
     if ns.animate and result.kind in ("dynamics", "ode") and len(result.t):
         try:
-            for f in _animate(model, result, out_dir, ns):
+            for f in _animate(model, result, out_dir, ns, label):
                 if not ns.quiet:
                     print(f"  wrote {f}")
         except AutolevModelError as exc:
@@ -588,12 +588,10 @@ def _print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False)
 
 def cmd_animate(ns: argparse.Namespace) -> int:
     """`run` of one CODE DYNAMICS (the first, or --code), with its motion written."""
-    formats = ns.formats or ["html"] + (["gif"] if _has_matplotlib() else [])
-    if any(f in ("gif", "mp4") for f in formats) and not _has_matplotlib():
+    if any(f in ("gif", "mp4") for f in ns.formats or ()) and not _has_matplotlib():
         print("autolev animate: a GIF or MP4 needs matplotlib (pip install "
               "'autolev[plot]'); --format html needs nothing more", file=sys.stderr)
         return 2
-    ns.formats = formats
     ns.code = [ns.code] if ns.code is not None else None
     return cmd_run(ns)
 
@@ -603,16 +601,22 @@ def _has_matplotlib() -> bool:
     return importlib.util.find_spec("matplotlib") is not None
 
 
-def _animate(model, result, out_dir: Path, ns) -> list[Path]:
+def _animate(model, result, out_dir: Path, ns, label: str) -> list[Path]:
     from .animation import MAX_FRAMES, motion, write_html, write_movie
     m = motion(model, result, ns.frames or MAX_FRAMES)
+    for note in m.notes:
+        print(f"{label}: note: {note}", file=sys.stderr)
+    formats = ns.formats or ["html"] + (["gif"] if _has_matplotlib() else [])
+    if not ns.formats and not _has_matplotlib():
+        print("autolev: note: no GIF: it needs matplotlib (pip install 'autolev[plot]'); "
+              "the HTML page needs nothing more", file=sys.stderr)
     written = []
-    for fmt in ns.formats or ["html"] + (["gif"] if _has_matplotlib() else []):
+    for fmt in formats:
         path = out_dir / f"{result.name}.{fmt}"
         if fmt == "html":
             written.append(write_html(m, path, f"{result.name} ({model.name})"))
         else:
-            written.append(write_movie(m, path))
+            written.append(write_movie(m, path, progress=None if ns.quiet else sys.stderr))
     return written
 
 

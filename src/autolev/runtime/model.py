@@ -62,6 +62,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         self.code_commands: list = []   # (kind, filename, args, sweep, options)
         self._kinematics_pending: dict = {}   # U -> f(q') awaiting inversion
         self.unit_quaternions: list = []       # (e1, e2, e3, e4) of DIRCOS(..., EULER, ...)
+        self.gravity_vectors: list[Vector] = []  # g> of each GRAVITY statement, in order
 
     def __repr__(self) -> str:
         return f"<autolev Model {self.name}>"
@@ -453,6 +454,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         """GRAVITY(g>[, B, P, ...]): m*g> on the mass center of every body and particle
         (or of those listed)."""
         g = _vector(g)
+        self.gravity_vectors.append(g)
         targets = list(bodies) if bodies else self.bodies_list + self.particles_list
         for b in targets:
             if isinstance(b, Body):
