@@ -163,3 +163,15 @@ def test_code_never_replaces_a_program_the_user_edited(tmp_path):
     r = cli("code", PENDULUM, "--out", out)
     assert r.returncode == 1 and "--overwrite" in r.stderr
     assert program.read_text().endswith("/* my change */\n")
+
+
+def test_animate_replaces_a_planted_link_but_not_a_users_page(tmp_path, victim):
+    out = tmp_path / "out"
+    link = planted(out, "simple_pendulum.html", victim)
+    r = cli("animate", PENDULUM, "--format", "html", "--out", out, "-q")
+    assert r.returncode == 0, r.stderr
+    unharmed(victim, link)
+    (out / "simple_pendulum.html").write_text("<p>my page</p>")
+    r = cli("animate", PENDULUM, "--format", "html", "--out", out, "-q")
+    assert r.returncode == 1 and "--overwrite" in r.stderr
+    assert (out / "simple_pendulum.html").read_text() == "<p>my page</p>"

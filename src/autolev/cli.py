@@ -341,6 +341,10 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
             print(f"{label}: error: cannot animate {done.command.filename}: {exc}",
                   file=sys.stderr)
             status = 1
+        except OSError as exc:
+            print(f"{label}: error: cannot write the animation into {out_dir}: "
+                  f"{exc.strerror or exc}", file=sys.stderr)
+            status = 1
     if ns.plot and result.outputs:
         from .plots import write_pngs
         try:
@@ -610,13 +614,18 @@ def _animate(model, result, out_dir: Path, ns, label: str) -> list[Path]:
     if not ns.formats and not _has_matplotlib():
         print("autolev: note: no GIF: it needs matplotlib (pip install 'autolev[plot]'); "
               "the HTML page needs nothing more", file=sys.stderr)
+    from .runtime.outputs import Written
+    names = [f"{result.name}.{fmt}" for fmt in formats]
+    record = Written(out_dir)
+    record.check(names, ns.overwrite)        # before drawing: nothing of theirs replaced
     written = []
-    for fmt in formats:
-        path = out_dir / f"{result.name}.{fmt}"
+    for fmt, name in zip(formats, names):
+        path = out_dir / name
         if fmt == "html":
             written.append(write_html(m, path, f"{result.name} ({model.name})"))
         else:
             written.append(write_movie(m, path, progress=None if ns.quiet else sys.stderr))
+        record.record([name])
     return written
 
 
