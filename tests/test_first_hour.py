@@ -299,7 +299,8 @@ def test_a_negative_mass_is_refused_before_the_build(model_file, monkeypatch):
                         lambda *a, **kw: compiled.append(a[2]) or real(*a, **kw))
     model = autolev.load(model_file)
     with pytest.raises(autolev.runtime.AutolevModelError,
-                       match="masses and inertias must not be negative: body A has mass -1"):
+                       match="masses and inertias must be finite and not negative: body A "
+                       "has mass -1"):
         model.simulate(M=-1, G=9.81, L=1, I=0.1)
     assert compiled == []
 

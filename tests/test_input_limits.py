@@ -54,3 +54,65 @@ def test_animate_frames_must_be_a_positive_count(tmp_path, frames):
             "--out", tmp_path)
     assert r.returncode == 2
     assert f"--frames: expected a whole number of at least 1, not '{frames}'" in r.stderr
+
+
+def test_a_value_beyond_a_double_is_named_as_such_not_as_a_negative_inertia(tmp_path):
+    path = tmp_path / "big.al"
+    path.write_text("NEWTONIAN N\nBODIES A\nMOTIONVARIABLES' Q', U'\nCONSTANTS L, M, G\n"
+                    "SIMPROT(N, A, 3, Q)\nQ' = U\nW_A_N> = U*N3>\nP_NO_AO> = L*A1>\n"
+                    "V_AO_N> = DT(P_NO_AO>, N)\nMASS A = M\nINERTIA A, 0, 0, M*L^2/12\n"
+                    "GRAVITY(G*N1>)\nZERO = FR() + FRSTAR()\nKANE()\n"
+                    "INPUT L=1E308, M=1, G=9.81, Q=0.1, U=0\nOUTPUT T, Q\n"
+                    "CODE DYNAMICS() big.c\n")
+    r = cli("run", path, "--out", tmp_path / "o", "-q")
+    assert r.returncode == 1
+    assert ("body A has a central inertia that is not a finite number (a value beyond "
+            "double precision?)") in r.stderr
+    negative = cli("run", path, "--set", "L=1", "--set", "RELERR=-1E-7", "--out",
+                   tmp_path / "o", "-q")
+    assert negative.returncode == 1
+    assert "error tolerances cannot be negative: RELERR = -1e-07 (from override)" in \
+        negative.stderr
+
+
+@pytest.mark.parametrize("written, why", [
+    ("1_0", "expected a number"), ("\u0661\u0662", "expected a number"),
+])
+def test_the_in_reader_takes_numbers_as_autolevs_programs_read_them(tmp_path, written, why):
+    # C's strtod takes neither digit separators nor other scripts' digits
+    out = tmp_path / "o"
+    assert cli("run", EXAMPLES / "simple_pendulum.al", "--out", out, "-q").returncode == 0
+    infile = out / "simple_pendulum.in"
+    lines = infile.read_text().splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("Constant"))
+    lines[k] = lines[k][:59] + " " + written
+    edited = tmp_path / "edited.in"
+    edited.write_text("\n".join(lines) + "\n")
+    r = cli("run", EXAMPLES / "simple_pendulum.al", "--in", edited, "--out", out, "-q")
+    assert r.returncode == 1 and f"{edited}:{k + 1}:60: {why}" in r.stderr
+
+
+def test_a_name_given_twice_in_an_in_file_is_an_error(tmp_path):
+    out = tmp_path / "o"
+    assert cli("run", EXAMPLES / "simple_pendulum.al", "--out", out, "-q").returncode == 0
+    lines = (out / "simple_pendulum.in").read_text().splitlines()
+    k = next(i for i, line in enumerate(lines) if line.startswith("Constant"))
+    name = lines[k][21:42].strip()
+    edited = tmp_path / "twice.in"
+    edited.write_text("\n".join(lines[:k + 1] + [lines[k]] + lines[k + 1:]) + "\n")
+    r = cli("run", EXAMPLES / "simple_pendulum.al", "--in", edited, "--out", out, "-q")
+    assert r.returncode == 1
+    assert f"{edited}:{k + 2}:22: {name} is given twice (line {k + 1} and here)" in r.stderr
+
+
+def test_a_models_control_characters_never_reach_the_terminal(tmp_path):
+    path = tmp_path / "esc.al"
+    path.write_text("X = 1\nY = \x1b[31m)\n")
+    r = cli("check", path)
+    assert r.returncode == 1 and "\x1b" not in r.stdout + r.stderr
+    assert "Y = \\x1b[31m)" in r.stdout + r.stderr
+    session = tmp_path / "esc.all"
+    session.write_text("   (1) VARIABLES X\n-> (2) \x1b[2JX = 1\n")
+    v = cli("verify", session)
+    assert "\x1b" not in v.stdout + v.stderr
+    assert "its left side '\\x1b[2JX' is not a name" in v.stdout

@@ -12,7 +12,7 @@ from pathlib import Path
 
 from . import __version__
 from .errors import (AutolevError, AutolevFileError, AutolevInternalError, AutolevRuntimeError,
-                     AutolevSyntaxError, AutolevTranslationError, Diagnostic)
+                     AutolevSyntaxError, AutolevTranslationError, Diagnostic, printable)
 
 MODEL_SUFFIXES = (".al",)
 MACRO_SUFFIXES = (".a",)
@@ -644,12 +644,13 @@ def cmd_verify(ns: argparse.Namespace) -> int:
         print(json.dumps(report.as_dict(), indent=1))
     else:
         if report.error:
-            print(f"{path}: {report.error}", file=sys.stderr)
+            print(printable(f"{path}: {report.error}"), file=sys.stderr)
         for o in report.outcomes:
             if o.status == "match" and not ns.all:
                 continue
             r = o.response
-            line = f"{path}:{r.line}: ({r.number}) {r.lhs}: {o.status}: {o.detail}"
+            line = printable(f"{path}:{r.line}: ({r.number}) {r.lhs}: {o.status}: "
+                             f"{o.detail}")
             if o.status == "mismatch" and o.ours is not None:
                 line += f"\n    ours {_short(o.ours)}\n    Autolev's {_short(o.theirs)}"
             print(line)

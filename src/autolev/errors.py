@@ -25,7 +25,7 @@ class Location:
     via_what: str = ""
 
     def __str__(self) -> str:
-        return f"{self.file}:{self.line}:{self.col}"
+        return f"{printable(self.file)}:{self.line}:{self.col}"
 
 
 class Span:
@@ -108,14 +108,15 @@ class Diagnostic:
         return self.location.col
 
     def format(self, context: bool = True) -> str:
-        """`file:line:col: error: message`, then the line and a caret (when known)."""
-        out = [f"{self.location}: {self.severity}: {self.message} [{self.code}]"]
+        """`file:line:col: error: message`, then the line and a caret (when known); a
+        model's control characters written out, never sent to the terminal."""
+        out = [f"{self.location}: {self.severity}: {printable(self.message)} [{self.code}]"]
         if context and self.source_line is not None:
             line = self.source_line.rstrip("\n")
-            out.append("    " + line)
+            out.append("    " + printable(line))
             # copy tabs so the caret lines up however the terminal renders them
             prefix = "".join(ch if ch == "\t" else " "
-                             for ch in line[: max(self.col - 1, 0)])
+                             for ch in printable(line[: max(self.col - 1, 0)]))
             out.append("    " + prefix + "^")
         via = self.location.via
         what = self.location.via_what
@@ -139,6 +140,16 @@ class Diagnostic:
 
     def __str__(self) -> str:
         return self.format()
+
+
+def printable(text: str) -> str:
+    """`text` with its control characters (a terminal's escape sequences) written out as
+    \\xNN; tabs kept."""
+    if all(ch.isprintable() or ch == "\t" for ch in text):
+        return text
+    return "".join(ch if ch.isprintable() or ch == "\t" else
+                   f"\\x{ord(ch):02x}" if ord(ch) < 256 else f"\\u{ord(ch):04x}"
+                   for ch in text)
 
 
 class AutolevError(Exception):

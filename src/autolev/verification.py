@@ -29,7 +29,7 @@ import numpy as np
 from sympy import Symbol
 
 from .errors import (AutolevInternalError, AutolevRuntimeError, AutolevSyntaxError,
-                     AutolevTranslationError, Location)
+                     AutolevTranslationError, Location, printable)
 from .loader import load_translation
 from .pipeline import translation
 from .runtime.calculus import NumericPoint
@@ -356,7 +356,11 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
     if not session.responses:
         report.error = "no responses recorded (an .all transcript, or % -> comments)"
         return report
-    model, captured, skipped = _build(session, p)
+    # a left side that is not a name is never spliced into the replayed model
+    refused = {k: f"its left side '{printable(r.lhs)}' is not a name (NAME, NAME', NAME[i], "
+               "NAME>, NAME>>)" for k, r in enumerate(session.responses)
+               if not _NAME_LHS.fullmatch(r.lhs.strip())}
+    model, captured, skipped = _build(session, p, refused)
     if model is None:
         report.error = skipped
         return report
@@ -381,6 +385,10 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
                                         tolerance))
     _judge_z_responses(session, report)
     return report
+
+
+# what a response may name: NAME, NAME', NAME[i], NAME[i,j], NAME>, NAME>>
+_NAME_LHS = re.compile(r"[A-Za-z_][A-Za-z0-9_]*('{1,3}|>{1,2}|\[\s*\d+(\s*,\s*\d+)?\s*\])?")
 
 
 def _is_z(lhs: str) -> bool:
@@ -421,12 +429,13 @@ def _judge_z_responses(session: Session, report: Report) -> None:
                                          f"({user.number}) {user.lhs}")
 
 
-def _build(session: Session, p: Path):
+def _build(session: Session, p: Path, refused: dict | None = None):
     """Translate and run the model with the capture statements; drop the captures our
-    translation cannot make (reported as not comparable) and retry."""
+    translation cannot make (reported as not comparable, as are the `refused` ones
+    {index: why}) and retry."""
     lines = session.source.splitlines()
     capture = _capture_prefix(session.source)
-    skipped: dict[int, str] = {}
+    skipped: dict[int, str] = dict(refused or {})
     for _attempt in range(6):
         text, where, kinds = [], {}, {}
         after: dict[int, list[int]] = {}

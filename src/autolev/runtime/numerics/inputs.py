@@ -15,6 +15,7 @@ model still works for the names it shares (the others are reported).
 from __future__ import annotations
 
 import math
+import re
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
@@ -136,6 +137,11 @@ class Inputs:
         if printint is not None and not is_print_integer(printint.given):
             raise AutolevModelError(f"{PRINTINT_RULE}, not {printint.given:g} (from "
                                     f"{printint.source})")
+        negative = [(k, v) for k, v in self.values.items()
+                    if k in ("ABSERR", "RELERR") and v.given < 0]
+        if negative:
+            raise AutolevModelError("error tolerances cannot be negative: " + "; ".join(
+                f"{k} = {v.given:g} (from {v.source})" for k, v in negative))
         bad = [(k, v) for k, v in self.values.items()
                if not math.isfinite(v.given) or not math.isfinite(v.internal)]
         if bad:
@@ -233,10 +239,15 @@ class Inputs:
                          "initial values, integration parameters), as Autolev's programs "
                          "read them")
         strangers = []                     # (line, name) not inputs of this model
+        first_line: dict = {}              # key -> the line that gave it
         for key, (lineno, name, value, file_unit) in zip(keys, entries):
             if key is None:
                 strangers.append((lineno, name))
                 continue
+            if key in first_line:
+                raise InputFileError(f"{path}:{lineno}:22: {name} is given twice (line "
+                                     f"{first_line[key]} and here)")
+            first_line[key] = lineno
             if key == "PRINTINT" and not is_print_integer(value):
                 raise InputFileError(f"{path}:{lineno}:60: {PRINTINT_RULE}")
             unit = self.unit_of(key)
@@ -341,12 +352,17 @@ def some_names(names, shown: int = 8) -> str:
     return ", ".join(names[:shown]) + (f", ... and {more} more" if more > 0 else "")
 
 
+# a number as Autolev's programs read it (C's strtod, Fortran's D exponents): ASCII
+# digits only, no digit separators (Python's float takes '1_0' and other scripts' digits)
+_NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eEdD][+-]?\d+)?", re.ASCII)
+
+
 def parse_number(text: str):
-    t = text.strip().replace("D", "E").replace("d", "e")
-    try:
-        v = float(t)
-    except ValueError:
+    """The finite number `text` writes, or None."""
+    t = text.strip()
+    if not _NUMBER.fullmatch(t):
         return None
+    v = float(t.replace("D", "E").replace("d", "e"))
     return v if math.isfinite(v) else None
 
 

@@ -283,7 +283,7 @@ def _take_inputs(ask: _InputsWanted, system):
     if ask.integrate_states:       # before the build: it needs only the inputs
         bad = _inertia_problems(system, inputs, zero=False)
         if bad:
-            raise AutolevModelError("masses and inertias must not be negative: "
+            raise AutolevModelError("masses and inertias must be finite and not negative: "
                                     + "; ".join(bad))
     return inputs, kinds, names, extra_constants
 
@@ -779,7 +779,10 @@ def _inertia_problems(system, inputs, zero: bool = True) -> list[str]:
         principal = [] if inertia is None else _principal(
             np.array([[num(inertia[i, j]) for j in range(3)] for i in range(3)]))
         zero_mass = zero and not mass_partial
-        if not mass > 0 and (zero_mass or mass != 0):
+        if math.isinf(mass) or not all(map(math.isfinite, principal)):
+            out.append(f"{name} has a {'mass' if math.isinf(mass) else 'central inertia'} "
+                       "that is not a finite number (a value beyond double precision?)")
+        elif not mass > 0 and (zero_mass or mass != 0):
             what = f"{name} has mass {mass:g}"
             if principal and not any(d > 0 for d in principal):
                 what += " and no inertia"
@@ -1034,6 +1037,13 @@ def _failure_message(exc: IntegrationFailure, system, inputs, result, zero_param
         problems = _inertia_problems(system, inputs)
         if problems:
             message += "; " + "; ".join(problems)
+    mass = system.last_mass_matrix() if "singular" in str(exc) else None
+    if mass is not None and not np.all(np.isfinite(mass)):
+        huge = [f"{display_name(p)} = {v:g}" for p, v in zip(system.params,
+                                                               system.constant_values)
+                if abs(v) > 1e100]
+        message += ("; its entries are not finite numbers (inf or NaN): a value beyond "
+                    "double precision" + (f" (from {', '.join(huge[:4])}?)" if huge else ""))
     if exc.cuts:
         f, sched, abserr, relerr = integration
         message += "; " + _halving_verdict(f, exc, sched, abserr, relerr)
