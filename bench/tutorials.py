@@ -102,7 +102,7 @@ def main() -> int:
 
     # -- tutorial 1: responses worked out by hand ---------------------------------------
     m, _ = models[1]
-    ns = m.namespace
+    ns = m.loaded.namespace
     check("T1 F = Evaluate(Taylor(x*cos(y), 0:7), x=1, y=0.5)",
           abs(float(ns["F"]) - (1 - .5**2 / 2 + .5**4 / 24 - .5**6 / 720)) < 1e-15,
           f"{float(ns['F']):.12f}")
@@ -210,7 +210,7 @@ def main() -> int:
 
     # -- tutorial 8: eigenvalues of the linearised cart pendulum, derived by hand --------
     m, res = models[8]
-    ns = m.namespace
+    ns = m.loaded.namespace
 
     def a_matrix(k1, k2, k3, k4):
         # cart (MA=10) with a uniform rod (MB=1, L=1) pivoted on it, F = k.x on the cart;
@@ -240,7 +240,7 @@ def main() -> int:
     h0 = math.hypot(4.25 * 0.02, 5 * 1 + 0.07634 * -20.0)
     check("T9 H at t=0 by hand (|I.w + J*Omega*A3|)", abs(float(c["H"][0]) - h0) < 1e-6,
           f"{float(c['H'][0]):.6f} vs {h0:.6f} kg*m^2/s")
-    det = m.namespace["Det"]
+    det = m.loaded.namespace["Det"]
     lam = sm.Symbol("Lambda", real=True)
     roots = sorted((complex(r) for r in sm.Poly(sm.sympify(m.explicit(det)), lam).nroots()),
                    key=lambda z: (z.real, z.imag))

@@ -1,5 +1,6 @@
 """The package's shape: its import graph (tools/import_graph.py) and its layers."""
 import importlib.util
+import re
 import sys
 
 import pytest
@@ -59,3 +60,24 @@ def test_kanes_method_is_apart_from_the_model():
 def test_the_stages_import_each_other_directly_not_through_the_package():
     for stage in ("autolev.loader", "autolev.verification", "autolev.transcript"):
         assert "autolev" not in GRAPH[stage], stage
+
+
+def test_no_runtime_module_but_the_models_own_imports_it_even_for_types():
+    # frames and points hold their Scene (definitions, symbols, what is derived, the
+    # change notice), not the Model; the package's __init__ only re-exports it
+    runtime = ROOT / "src" / "autolev" / "runtime"
+    found = []
+    for path in runtime.rglob("*.py"):
+        if path.name in ("model.py", "__init__.py") and path.parent == runtime:
+            continue
+        text = path.read_text()
+        if re.search(r"from \.+model import|runtime\.model|import model\b", text):
+            found.append(str(path.relative_to(runtime)))
+    assert found == []
+
+
+def test_no_field_of_a_model_is_read_with_a_default():
+    # a Model declares what it holds (Model.loaded for what loading attached)
+    found = [str(p) for p in (ROOT / "src" / "autolev").rglob("*.py")
+             if re.search(r"getattr\((model|self\.model|m), ", p.read_text())]
+    assert found == []

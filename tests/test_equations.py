@@ -25,7 +25,7 @@ def test_double_pendulum_rows_equal_autolevs_printed_rows():
     m = example("double_pendulum")
     q1, q2, u1, u2, u1d, u2d = symbols(m, "Q1", "Q2", "U1", "U2", "U1'", "U2'")
     L1, L2, M1, M2, G = symbols(m, "L1", "L2", "M1", "M2", "G")
-    zero = m.namespace["ZERO"]
+    zero = m.loaded.namespace["ZERO"]
     for seed in range(4):
         v = random_values([q1, q2, u1, u2, u1d, u2d], seed)
         L, M, g = 0.7 + seed / 10, 1.3, 9.81

@@ -216,8 +216,8 @@ def cmd_run(ns: argparse.Namespace) -> int:
 
 def _statement_label(model, path: Path):
     """file:line of a CODE command's statement (the model's path when unknown)."""
-    where = {id(c): w for c, w in zip(model.code_commands,
-                                      getattr(model, "code_locations", []))}
+    located = model.loaded.code_locations if model.loaded is not None else []
+    where = {id(c): w for c, w in zip(model.code_commands, located)}
 
     def label(command) -> str:
         w = where.get(id(command))

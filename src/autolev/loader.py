@@ -23,6 +23,7 @@ from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError
                      AutolevTranslationError, Diagnostic, Location)
 from .pipeline import parse, translation
 from .runtime.errors import AutolevModelError
+from .runtime.model import Loaded
 from .translate import Translation, translate
 
 # the model's fault: what the runtime refuses, and arithmetic on the values it asks for
@@ -68,16 +69,15 @@ def load_translation(translation, filename: str, write_later: bool = False):
             keeper.flush(built.model)
     built.warn_again()
     model = built.model
-    # the numeric systems its runs build are kept with it too, while it is as built
-    model.cache_writer = keeper or ModelKeeper(key, built.warnings, _as_built(model), False)
     lines = translation.code.splitlines()
-    model.source = ModelSource("translation", translation, filename, model.revision())
-    model.names = translation.names
-    model.namespaces = translation.namespaces
-    # where each CODE statement is in the .al file (diagnostics of its run point there)
-    model.code_locations = [translation.line_map.get(n)
-                            for n, text in enumerate(lines, 1)
-                            if text.startswith("model.code(")]
+    model.loaded = dataclasses.replace(
+        model.loaded, names=translation.names, namespaces=translation.namespaces,
+        # where each CODE statement is in the .al file (diagnostics of its run point there)
+        code_locations=[translation.line_map.get(n) for n, text in enumerate(lines, 1)
+                        if text.startswith("model.code(")],
+        source=ModelSource("translation", translation, filename, model.revision()),
+        # the numeric systems its runs build are kept with it too, while it is as built
+        keeper=keeper or ModelKeeper(key, built.warnings, _as_built(model), False))
     return model
 
 
@@ -146,7 +146,7 @@ def _execute(translation, filename: str):
         # an internal error keeps autolev's traceback; the user's diagnostic needs none
         raise failure from (exc if isinstance(failure, AutolevInternalError) else None)
     model = module.__dict__["model"]
-    model.namespace = module.__dict__
+    model.loaded = Loaded(module.__dict__)
     return model
 
 
@@ -264,8 +264,8 @@ def run_python(text: str, filename: str) -> object:
         raise AutolevRuntimeError(Diagnostic(Location(filename, 1, 1), "R003",
                                              "this module defines no `model`", "error",
                                              None))
-    model.namespace = module.__dict__
-    model.source = ModelSource("python", text, filename, model.revision())
+    model.loaded = Loaded(module.__dict__,
+                          source=ModelSource("python", text, filename, model.revision()))
     return model
 
 

@@ -482,7 +482,7 @@ def _build(session: Session, p: Path, refused: dict | None = None):
                 skipped[where[line]] = f"our model cannot give it there ({d.message})"
                 continue
             return None, None, f"the model does not run: {exc}"
-        ns = model.namespace
+        ns = model.loaded.namespace
         captured = {}
         for k in range(len(session.responses)):
             if k in skipped or _is_z(session.responses[k].lhs):

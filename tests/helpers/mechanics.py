@@ -23,7 +23,7 @@ def symbols(model, *names):
     out = []
     for n in names:
         base = n.rstrip("'")
-        sym = model.namespace[model.names[base]]
+        sym = model.loaded.namespace[model.loaded.names[base]]
         out.append(derivative(sym, len(n) - len(base)))
     return out if len(out) > 1 else out[0]
 

@@ -15,8 +15,7 @@ from . import symbols as S
 from .errors import AutolevModelError
 
 if TYPE_CHECKING:
-    from .model import Model
-    from .vector import Frame, Vector
+    from .vector import Frame, Scene, Vector
 
 
 def _mechanics():
@@ -25,11 +24,11 @@ def _mechanics():
     return sympy.physics.mechanics
 
 
-def dynamic_map(model: "Model") -> dict:
+def dynamic_map(scene: "Scene") -> dict:
     """{our symbol: its sympy counterpart} for every variable and derivative."""
     me = _mechanics()
     mapping: dict = {S.TIME: me.dynamicsymbols._t}
-    for sym, info in model.info.items():
+    for sym, info in scene.info.items():
         base, order = S.base_and_order(sym)
         if info.kind == "constant" or order:
             continue
@@ -40,23 +39,22 @@ def dynamic_map(model: "Model") -> dict:
     return mapping
 
 
-def to_sympy_expr(model: "Model", expr, mapping: dict | None = None):
-    """The expression with every definition expanded, in dynamicsymbols."""
-    mapping = mapping if mapping is not None else dynamic_map(model)
-    explicit = model.explicit(expr)
-    if isinstance(explicit, sm.MatrixBase):
-        return explicit.applyfunc(lambda e: e.xreplace(mapping))
-    return sm.sympify(explicit).xreplace(mapping)
+def to_sympy_expr(scene: "Scene", expr, mapping: dict | None = None):
+    """The expression (or matrix) with every definition expanded, in dynamicsymbols."""
+    mapping = mapping if mapping is not None else dynamic_map(scene)
+    if isinstance(expr, sm.MatrixBase):
+        return expr.applyfunc(lambda e: scene.defs.explicit(e).xreplace(mapping))
+    return scene.defs.explicit(expr).xreplace(mapping)
 
 
 def to_sympy_frame(frame: "Frame"):
     """A sympy ReferenceFrame oriented as `frame` is (through the model's frames)."""
     me = _mechanics()
-    model = frame.model
-    cache = model.derived.table("sympy frames", (model.version, model.defs.user_version))
+    scene = frame.scene
+    cache = scene.derived.table("sympy frames", (scene.version, scene.defs.user_version))
     if frame in cache:
         return cache[frame]
-    mapping = dynamic_map(model)
+    mapping = dynamic_map(scene)
     # orient every frame reachable from this one along a spanning tree of the edges
     root = frame
     todo = [root]
@@ -67,7 +65,7 @@ def to_sympy_frame(frame: "Frame"):
             if g in cache or g.name == "_probe":
                 continue
             sg = me.ReferenceFrame(g.name)
-            dcm = to_sympy_expr(model, f.dcm(g), mapping)     # f_i . g_j
+            dcm = to_sympy_expr(scene, f.dcm(g), mapping)     # f_i . g_j
             sg.orient_explicit(cache[f], dcm.T)               # sympy: g.dcm(f) = dcm^T
             try:
                 w = to_sympy_vector(g.ang_vel_in(f), mapping=mapping)
@@ -85,9 +83,8 @@ def to_sympy_vector(v: "Vector", frames: dict | None = None, mapping: dict | Non
     total = me.Vector(0)
     for f, comps in v.terms.items():
         sf = (frames or {}).get(f) or to_sympy_frame(f)
-        model = f.model
-        m = mapping if mapping is not None else dynamic_map(model)
-        c = [to_sympy_expr(model, x, m) for x in comps]
+        m = mapping if mapping is not None else dynamic_map(f.scene)
+        c = [to_sympy_expr(f.scene, x, m) for x in comps]
         total += c[0] * sf.x + c[1] * sf.y + c[2] * sf.z
     return total
 
@@ -97,26 +94,26 @@ def to_sympy_point(point):
     return me.Point(point.name)
 
 
-def symbolic_system(model: "Model", form: str = "combined"):
+def symbolic_system(model, form: str = "combined"):
     """Kane's equations as a sympy.physics.mechanics.SymbolicSystem.
 
     form "explicit": x' = F(x); "combined": M(x) x' = F(x) for the whole state;
     "separate": q' = G(q, u) and M u' = f kept apart.  With dependent speeds the state
     ends with them and their constraint rows are marked algebraic (alg_con)."""
     me = _mechanics()
-    mapping = dynamic_map(model)
+    mapping = dynamic_map(model.scene)
     eqs = model.equations()
     qs = [mapping[q] for q in model.coordinates]
     us = [mapping.get(u, u) for u in eqs.speeds]
     dep = [mapping[u] for u in model.dependent_speeds]
     kin = model.kinematical_equations
-    kin_rhs = sm.Matrix([to_sympy_expr(model, kin[S.derivative(q)], mapping)
+    kin_rhs = sm.Matrix([to_sympy_expr(model.scene, kin[S.derivative(q)], mapping)
                          for q in model.coordinates])
-    mm = to_sympy_expr(model, model.mass_matrix, mapping)
-    f = to_sympy_expr(model, model.forcing, mapping)
+    mm = to_sympy_expr(model.scene, model.mass_matrix, mapping)
+    f = to_sympy_expr(model.scene, model.forcing, mapping)
     nq, nu, nd = len(qs), len(us), len(dep)
     states = qs + us + dep
-    dep_values = [to_sympy_expr(model, model.defs.rhs[u], mapping)
+    dep_values = [to_sympy_expr(model.scene, model.defs.rhs[u], mapping)
                   for u in model.dependent_speeds]
     alg = sm.Matrix([d - v for d, v in zip(dep, dep_values)])
     n = nq + nu + nd

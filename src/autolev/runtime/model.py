@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import importlib
 import types
+from dataclasses import dataclass, field, replace
 
 import sympy as sm
 
@@ -23,8 +24,24 @@ from .functions import VectorColumn
 from .interop import symbolic_system, to_sympy_expr, to_sympy_vector
 from .point import Body, Particle, Point, point_mass_inertia
 from .simulation import SimulationMixin
-from .vector import (AutolevModelError, Dyadic, Frame, UnitDyadic, Vector, _vector,
+from .vector import (AutolevModelError, Dyadic, Frame, Scene, UnitDyadic, Vector, _vector,
                      body_fixed, euler_parameter_rates, space_fixed)
+
+
+@dataclass
+class Loaded:
+    """What loading a model attached to it: its module's namespace, the translation's
+    Python names of the Autolev names (by namespace), where each CODE statement is in
+    the .al file, what rebuilds it in another process (`source`, the loader's
+    ModelSource) and what writes it back to the cache of built models (`keeper`, the
+    loader's ModelKeeper: `added()` when a numeric system is built, `flush(model)`)."""
+
+    namespace: dict
+    names: dict = field(default_factory=dict)
+    namespaces: dict = field(default_factory=dict)
+    code_locations: list = field(default_factory=list)
+    source: object = None
+    keeper: object = None
 
 
 class Model(AlgebraMixin, IOMixin, SimulationMixin):
@@ -48,7 +65,6 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         self.auxiliary_speeds: list[sm.Symbol] = []
         self.kane_equations: KaneEquations | None = None
         self.kane_calls = 0             # KANE() statements so far (what numerics are keyed by)
-        self._version = 0
         self._formed: tuple[int, KaneEquations] | None = None
         self.settings: dict[str, object] = {}
         self._nicheck_work = None
@@ -61,8 +77,11 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         self.encoded: list = []         # (name, value) of ENCODE
         self.code_commands: list = []   # (kind, filename, args, sweep, options)
         self._kinematics_pending: dict = {}   # U -> f(q') awaiting inversion
-        self.unit_quaternions: list = []       # (e1, e2, e3, e4) of DIRCOS(..., EULER, ...)
+        # what its frames and points share; unit_quaternions: (e1, e2, e3, e4) of
+        # DIRCOS(..., EULER, ...)
+        self.scene = Scene(self.defs, self.info, self.derived, self.point, self._changed)
         self.gravity_vectors: list[Vector] = []  # g> of each GRAVITY statement, in order
+        self.loaded: Loaded | None = None          # set by the loader, None when built here
 
     def __repr__(self) -> str:
         return f"<autolev Model {self.name}>"
@@ -74,19 +93,18 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         its namespace holds go by name."""
         state = dict(self.__dict__)
         state["derived"] = self.derived.kept_with_the_model()
-        state.pop("cache_writer", None)
-        if "namespace" in state:
-            state["namespace"] = {
+        if self.loaded is not None:        # the keeper stays with this process
+            state["loaded"] = replace(self.loaded, keeper=None, namespace={
                 k: (_ModuleName(v.__name__) if isinstance(v, types.ModuleType) else v)
-                for k, v in state["namespace"].items() if k != "__builtins__"}
+                for k, v in self.loaded.namespace.items() if k != "__builtins__"})
         return state
 
     def __setstate__(self, state: dict) -> None:
-        namespace = state.get("namespace")
-        if namespace is not None:
-            for k, v in namespace.items():
+        loaded = state.get("loaded")
+        if loaded is not None:
+            for k, v in loaded.namespace.items():
                 if isinstance(v, _ModuleName):
-                    namespace[k] = importlib.import_module(v.name)
+                    loaded.namespace[k] = importlib.import_module(v.name)
         self.__dict__.update(state)
 
     def __getitem__(self, name: str):
@@ -106,8 +124,10 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         raise KeyError(name)
 
     def _named(self, space: str, name: str):
-        namespace = getattr(self, "namespace", {})
-        for autolev_name, py in getattr(self, "namespaces", {}).get(space, {}).items():
+        if self.loaded is None:
+            raise KeyError(name)
+        namespace = self.loaded.namespace
+        for autolev_name, py in self.loaded.namespaces.get(space, {}).items():
             if autolev_name.lower() == name.lower() and py in namespace:
                 return namespace[py]
         raise KeyError(name)
@@ -138,26 +158,32 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         return self._named("vector", name.rstrip(">"))
 
     def note_change(self) -> None:
-        """Called by the model's frames and points when they change."""
-        self._version += 1
+        """A change to the model's loads or kinematics made here."""
+        self.scene.note_change()
 
     @property
     def version(self) -> int:
         """Counts the changes to the model's frames, points, loads and kinematics."""
-        return self._version
+        return self.scene.version
+
+    @property
+    def unit_quaternions(self) -> list:
+        return self.scene.unit_quaternions
 
     def revision(self) -> tuple:
         """A value that changes whenever the model is changed (a statement, an INPUT,
         a CODE command), so that what was derived from it can be known stale."""
-        return (self._version, self.defs.user_version, tuple(self.inputs.items()),
+        return (self.scene.version, self.defs.user_version, tuple(self.inputs.items()),
                 len(self.code_commands))
 
-    def note_orientation_change(self) -> None:
-        for f in self.frames_by_name.values():
-            f.forget_derived()
-        for p in self.points_by_name.values():
-            p.forget_derived()
-        self.note_change()
+    def _changed(self, orientation: bool) -> None:
+        """What a change to the frames and points means for the rest: an orientation
+        changes the direction cosines derived along their paths."""
+        if orientation:
+            for f in self.frames_by_name.values():
+                f.forget_derived()
+            for p in self.points_by_name.values():
+                p.forget_derived()
 
     # -- declarations ------------------------------------------------------------------
     def newtonian(self, name: str) -> Frame:
@@ -171,7 +197,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         return frame
 
     def frame(self, name: str) -> Frame:
-        f = Frame(name, self)
+        f = Frame(name, self.scene)
         self.frames_by_name[name] = f
         return f
 
@@ -181,7 +207,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
 
     def body(self, name: str) -> Body:
         center = self.point(name + "O")
-        b = Body(name, self, center)
+        b = Body(name, self.scene, center)
         self.frames_by_name[name] = b
         self.bodies_list.append(b)
         return b
@@ -191,7 +217,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         return out[0] if len(out) == 1 else out
 
     def point(self, name: str) -> Point:
-        p = Point(name, self)
+        p = Point(name, self.scene)
         self.points_by_name[name] = p
         return p
 
@@ -200,7 +226,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         return out[0] if len(out) == 1 else out
 
     def particle(self, name: str) -> Particle:
-        p = Particle(name, self)
+        p = Particle(name, self.scene)
         self.points_by_name[name] = p
         self.particles_list.append(p)
         return p
@@ -518,7 +544,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         return kane.generalized_speeds(self.kane_system(), declared)
 
     def _form(self, inertia: bool = True) -> KaneEquations:
-        key = (self._version, self.defs.user_version, inertia)
+        key = (self.scene.version, self.defs.user_version, inertia)
         if self._formed is not None and self._formed[0][:2] == key[:2] and \
                 (self._formed[0][2] or not inertia):
             return self._formed[1]
@@ -659,7 +685,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         """An expression, matrix or vector as plain sympy (dynamicsymbols, expanded)."""
         if isinstance(value, Vector):
             return to_sympy_vector(value)
-        return to_sympy_expr(self, value)
+        return to_sympy_expr(self.scene, self.explicit(value))
 
     # -- energy, momentum, mass properties ---------------------------------------------------
     def _items(self, items):

@@ -8,23 +8,19 @@ by itself); an acceleration that was not assigned is DT(V_P_N>, N), as Autolev d
 from __future__ import annotations
 
 from collections import deque
-from typing import TYPE_CHECKING
 
 import sympy as sm
 
 from .interop import to_sympy_point
-from .vector import AutolevModelError, Dyadic, Frame, Vector, _vector, outer
-
-if TYPE_CHECKING:
-    from .model import Model
+from .vector import AutolevModelError, Dyadic, Frame, Scene, Vector, _vector, outer
 
 
 class Point:
     """A point (Autolev POINTS, the origin NO of a Newtonian frame, a mass center BO)."""
 
-    def __init__(self, name: str, model: "Model"):
+    def __init__(self, name: str, scene: Scene):
         self.name = name
-        self.model = model
+        self.scene = scene
         self._pos: dict[Point, Vector] = {}     # other -> self.pos_from(other)
         self._vel: dict[Frame, Vector] = {}
         self._acc: dict[Frame, Vector] = {}
@@ -42,7 +38,7 @@ class Point:
         value = _vector(value)
         self._pos[other] = value
         other._pos[self] = -value
-        self.model.note_change()
+        self.scene.note_change()
 
     def pos_from(self, other: "Point") -> Vector:
         """P_other_self>: the sum of position vectors along the points linking them."""
@@ -73,7 +69,7 @@ class Point:
         return list(self._pos)
 
     def locate_new(self, name: str, value) -> "Point":
-        p = self.model.point(name)
+        p = self.scene.point(name)
         p.set_pos(self, value)
         return p
 
@@ -82,7 +78,7 @@ class Point:
         """V_self_frame> = value."""
         self._vel[frame] = _vector(value)
         self._acc_derived.pop(frame, None)
-        self.model.note_change()
+        self.scene.note_change()
 
     def has_vel(self, frame: Frame) -> bool:
         """Whether V_self_frame> is assigned or follows from the positions."""
@@ -94,7 +90,7 @@ class Point:
         assigned or which is fixed in frame (its origin)."""
         if frame in self._vel:
             return self._vel[frame]
-        version = self.model.version
+        version = self.scene.version
         cached = self._vel_derived.get(frame)
         if cached is not None and cached[0] == version:
             return cached[1]
@@ -130,7 +126,7 @@ class Point:
     def set_acc(self, frame: Frame, value) -> None:
         """A_self_frame> = value."""
         self._acc[frame] = _vector(value)
-        self.model.note_change()
+        self.scene.note_change()
 
     def acc(self, frame: Frame) -> Vector:
         """A_self_frame>: as assigned, else DT(V_self_frame>, frame)."""
@@ -200,8 +196,8 @@ class Point:
 class Particle(Point):
     """A point with a mass (Autolev PARTICLES)."""
 
-    def __init__(self, name: str, model: "Model"):
-        super().__init__(name, model)
+    def __init__(self, name: str, scene: Scene):
+        super().__init__(name, scene)
         self.mass: sm.Expr | None = None
 
     @property
@@ -213,8 +209,8 @@ class Body(Frame):
     """A rigid body (Autolev BODIES): a frame with a mass center BO, a mass and a
     central inertia dyadic."""
 
-    def __init__(self, name: str, model: "Model", masscenter: Point):
-        super().__init__(name, model)
+    def __init__(self, name: str, scene: Scene, masscenter: Point):
+        super().__init__(name, scene)
         self.masscenter = masscenter
         self.origin = masscenter
         self.mass: sm.Expr | None = None
@@ -237,7 +233,7 @@ class Body(Frame):
             self._inertia, self._inertia_about = dyadic, None
         else:
             self._inertia, self._inertia_about = None, (about, dyadic)
-        self.model.note_change()
+        self.scene.note_change()
 
     def set_inertia_dyadic(self, dyadic: Dyadic, about: Point | None = None) -> None:
         """I_B_O>> = dyadic."""
@@ -245,7 +241,7 @@ class Body(Frame):
             self._inertia, self._inertia_about = dyadic, None
         else:
             self._inertia, self._inertia_about = None, (about, dyadic)
-        self.model.note_change()
+        self.scene.note_change()
 
     @property
     def central_inertia(self) -> Dyadic:

@@ -260,7 +260,7 @@ def _pickled_chunk(payload: bytes, digest: str, what, chunk, options, collect) -
 
 
 def _on_executor(model, executor, what, rows, options, collect, chunk_size, report):
-    source = getattr(model, "source", None)
+    source = model.loaded.source if model.loaded is not None else None
     if source is None:
         raise AutolevModelError("this model was not loaded from a file (autolev.load): "
                                 "an executor's workers have nothing to rebuild it from")

@@ -14,16 +14,37 @@ who overrides the implied one (Autolev: an explicit W_B_A> wins).
 from __future__ import annotations
 
 from collections import deque
-from typing import TYPE_CHECKING
+from dataclasses import dataclass, field
+from typing import Callable
 
 import sympy as sm
 
+from .calculus import Definitions
+from .derived import DerivedCache
 from .errors import AutolevModelError
 from .interop import to_sympy_frame, to_sympy_vector
 from .symbols import TIME
 
-if TYPE_CHECKING:
-    from .model import Model
+
+@dataclass(eq=False)
+class Scene:
+    """What the frames and points of one model share, instead of the model itself: its
+    definitions, its declared symbols (`info`, for sympy's dynamicsymbols), what is
+    derived from it, its points by name (`point`: made on first use), and the notice
+    of a change to its kinematics (`changed(orientation)`), which `version` counts."""
+
+    defs: Definitions
+    info: dict
+    derived: DerivedCache
+    point: Callable
+    changed: Callable
+    unit_quaternions: list = field(default_factory=list)
+    version: int = 0
+
+    def note_change(self, orientation: bool = False) -> None:
+        self.version += 1
+        self.changed(orientation)
+
 
 _ZERO3 = (sm.S.Zero, sm.S.Zero, sm.S.Zero)
 
@@ -183,7 +204,7 @@ class Vector:
     def definitions(self):
         """The Definitions of the model its frames belong to (None for 0>)."""
         for f in self.terms:
-            return f.model.defs
+            return f.scene.defs
         return None
 
     def applyfunc(self, fn) -> "Vector":
@@ -195,7 +216,7 @@ class Vector:
         frames, plus W_F_frame x (the part in F) for every other frame F."""
         out = Vector()
         for f, c in self.terms.items():
-            defs = f.model.defs
+            defs = f.scene.defs
             part = Vector({f: tuple(defs.dt(x) for x in c)})
             if f is not frame:
                 w = f.ang_vel_in(frame)
@@ -208,7 +229,7 @@ class Vector:
         """Partial derivative with respect to `var` in `frame` (through definitions)."""
         out = Vector()
         for f, c in self.terms.items():
-            defs = f.model.defs
+            defs = f.scene.defs
             if f is not frame and any(defs.depends_on(e, var)
                                       for e in frame.dcm(f) if e != 0):
                 c = frame.express_components(f, c)
@@ -351,7 +372,7 @@ class Dyadic:
         total = sm.zeros(3, 3)
         for (fa, fb), m in self.terms.items():
             total += a.dcm(fa) * m * fb.dcm(b)
-        defs = a.model.defs
+        defs = a.scene.defs
         return Dyadic({(a, b): total.applyfunc(defs.zify)})
 
     def to_matrix(self, a: "Frame", b: "Frame | None" = None) -> sm.Matrix:
@@ -361,7 +382,7 @@ class Dyadic:
     def dt(self, frame: "Frame") -> "Dyadic":
         out = Dyadic()
         for (fa, fb), m in self.terms.items():
-            defs = fa.model.defs
+            defs = fa.scene.defs
             out = out + Dyadic({(fa, fb): m.applyfunc(defs.dt)})
             if fa is not frame:
                 w = fa.ang_vel_in(frame)
@@ -527,9 +548,9 @@ def euler_parameter_rates(e, w) -> tuple:
 class Frame:
     """A reference frame (Autolev FRAMES, NEWTONIAN, and the frame of a body)."""
 
-    def __init__(self, name: str, model: "Model"):
+    def __init__(self, name: str, scene: Scene):
         self.name = name
-        self.model = model
+        self.scene = scene
         self._dcm_edges: dict[Frame, sm.Matrix] = {}   # other -> self.dcm(other)
         self._w_edges: dict[Frame, Vector] = {}        # other -> W_self_other
         self._w_user: set[Frame] = set()
@@ -555,7 +576,7 @@ class Frame:
         """AO: the point every frame A has (NO of a Newtonian frame, BO of a body), fixed
         in A; made when first asked for."""
         if self._origin is None:
-            self._origin = self.model.point(self.name + "O")
+            self._origin = self.scene.point(self.name + "O")
         return self._origin
 
     @origin.setter
@@ -583,7 +604,7 @@ class Frame:
             raise AutolevModelError(f"a direction cosine matrix is 3x3, not {dcm.shape}")
         self._dcm_edges[parent] = dcm.T
         parent._dcm_edges[self] = dcm
-        self.model.note_orientation_change()
+        self.scene.note_change(orientation=True)
         if parent not in self._w_user:
             w = ang_vel if ang_vel is not None else _DerivedAngVel(parent, self)
             self._w_edges[parent] = w
@@ -600,7 +621,7 @@ class Frame:
             norm = sm.sqrt(sum(c ** 2 for c in comps))
             unit = tuple(c / norm for c in comps) if norm != 1 else comps
             dcm = axis_rotation(unit, angle)
-            rate = self.model.defs.dt_raw(angle)
+            rate = self.scene.defs.dt_raw(angle)
             w = Vector({parent: tuple(rate * u for u in unit)})
         else:
             k = int(axis)
@@ -610,32 +631,32 @@ class Frame:
                 angle = -angle
             dcm = rotation(abs(k), angle)
             comps = [0, 0, 0]
-            comps[abs(k) - 1] = self.model.defs.dt_raw(angle)
+            comps[abs(k) - 1] = self.scene.defs.dt_raw(angle)
             w = Vector({parent: tuple(comps)})
         self.orient_dcm(parent, dcm, w)
 
     def orient_body_fixed(self, parent: "Frame", angles, sequence: str) -> None:
         """DIRCOS(parent, self, BODYijk, a, b, c)."""
-        dcm, w = body_fixed(angles, sequence, self.model.defs.dt_raw)
+        dcm, w = body_fixed(angles, sequence, self.scene.defs.dt_raw)
         self.orient_dcm(parent, dcm, Vector({self: w}))
 
     def orient_space_fixed(self, parent: "Frame", angles, sequence: str) -> None:
         """DIRCOS(parent, self, SPACEijk, a, b, c): rotations about parent-fixed axes."""
-        dcm, w = space_fixed(angles, sequence, self.model.defs.dt_raw)
+        dcm, w = space_fixed(angles, sequence, self.scene.defs.dt_raw)
         self.orient_dcm(parent, dcm, Vector({parent: w}))
 
     def orient_rodrigues(self, parent: "Frame", g1, g2, g3) -> None:
         """DIRCOS(parent, self, RODRIGUES, g1, g2, g3): Rodrigues parameters."""
-        dcm, w = rodrigues((g1, g2, g3), self.model.defs.dt_raw)
+        dcm, w = rodrigues((g1, g2, g3), self.scene.defs.dt_raw)
         self.orient_dcm(parent, dcm, Vector({self: w}))
 
     def orient_euler_parameters(self, parent: "Frame", e1, e2, e3, e4) -> None:
         """DIRCOS(parent, self, EULER, e1, e2, e3, e4) with e4 the scalar part."""
-        dcm, w = euler_parameters((e1, e2, e3, e4), self.model.defs.dt_raw)
+        dcm, w = euler_parameters((e1, e2, e3, e4), self.scene.defs.dt_raw)
         self.orient_dcm(parent, dcm, Vector({self: w}))
         # a unit quaternion: numeric checks give the four values unit length, else the
         # direction cosines are not orthogonal there
-        self.model.unit_quaternions.append(tuple(_s(e) for e in (e1, e2, e3, e4)))
+        self.scene.unit_quaternions.append(tuple(_s(e) for e in (e1, e2, e3, e4)))
 
     def _path(self, other: "Frame", edges_of) -> list["Frame"] | None:
         """Shortest path self -> other through the given edge dictionaries."""
@@ -671,7 +692,7 @@ class Frame:
         m = self._dcm_edges[path[1]]
         if len(path) > 2:
             rest = path[1].dcm(other)
-            defs = self.model.defs
+            defs = self.scene.defs
             m = (m * rest).applyfunc(defs.zify)
         self._dcm_cache[other] = m
         other._dcm_cache[self] = m.T
@@ -768,7 +789,7 @@ class _DerivedAngVel:
 
     def value(self) -> Vector:
         c = self.parent._dcm_edges[self.child]          # parent_i . child_j
-        defs = self.child.model.defs
+        defs = self.child.scene.defs
         cd = c.applyfunc(defs.dt_raw)
         w = c.T * cd                                     # skew, in child
         return Vector({self.child: (w[2, 1], w[0, 2], w[1, 0])}).zified()

@@ -456,18 +456,16 @@ def _numeric_system(model, command, files, encoded, solving: tuple, backend: str
             hidden_in_outputs=_hidden_in_outputs(command) if quirks else (),
             before_compiling=before_compiling, locked=locked)
     systems()[key] = (command, system)      # after the build: it may form KANE
-    keeper = getattr(model, "cache_writer", None)
-    if keeper is not None:          # the cache of built models keeps it (keep_built)
-        keeper.added()
+    if model.loaded is not None and model.loaded.keeper is not None:
+        model.loaded.keeper.added()        # the cache of built models keeps it (keep_built)
     return system
 
 
 def keep_built(model) -> None:
     """The numeric systems built so far go to the cache of built models (loader's
     ModelKeeper), once the work that built them is done."""
-    keeper = getattr(model, "cache_writer", None)
-    if keeper is not None:
-        keeper.flush(model)
+    if model.loaded is not None and model.loaded.keeper is not None:
+        model.loaded.keeper.flush(model)
 
 
 def _set_specified(model, system, specified, warn_unassigned: bool) -> None:
