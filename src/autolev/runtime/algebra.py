@@ -167,6 +167,7 @@ class AlgebraMixin:
             return
         speeds = set(self.generalized_speeds(complete=False)[0])
         self.solved_speeds.update(b for b in bases if b in speeds)
+        self.note_change()
 
     def _dynamical_rows(self, eqs: list, unknowns: list) -> list:
         """After KANE(F1, ..., Fk), ZERO holds the n dynamical rows and then the k rows
@@ -203,6 +204,7 @@ class AlgebraMixin:
         Autolev answered and what a later ZEE_NOT reads, is the row of those names."""
         kept = list(names) if not isinstance(names, sm.Basic) else [names]
         self.settings["ZEE_NOT"] = kept
+        self.note_change()
         return sm.Matrix([kept])
 
     def inv(self, m):
@@ -243,6 +245,7 @@ class AlgebraMixin:
 
     def setting(self, name: str, value) -> None:
         self.settings[name] = value
+        self.note_change()
         if name == "DEGREES":
             self.degrees = value != "OFF"
         elif name == "COMPLEX":

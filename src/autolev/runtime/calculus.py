@@ -26,6 +26,7 @@ import numpy as np
 import sympy as sm
 
 from ..errors import MAX_EXACT_DIGITS
+from .derived import Revision
 from .symbols import TIME, Z, derivative, new_z
 from .errors import AutolevModelError
 from .fastdiff import diff as fast_diff
@@ -168,7 +169,9 @@ def refuse_huge_powers(expr, repl: dict) -> None:
 class Definitions:
     """Definitions of symbols (user definitions and Z's) and calculus through them."""
 
-    def __init__(self) -> None:
+    def __init__(self, revision: Revision | None = None) -> None:
+        """`revision`: the model's, bumped by each user definition."""
+        self.revision = revision if revision is not None else Revision()
         self.rhs: dict[sm.Symbol, sm.Expr] = {}
         self.varying: set[sm.Symbol] = {TIME}       # symbols with a time derivative
         self._z_of: dict[sm.Expr, Z] = {}           # hash-consing of Z definitions
@@ -199,6 +202,7 @@ class Definitions:
         if not isinstance(sym, Z):
             self._invalidate()
             self.user_version += 1
+            self.revision.bump()
         self.rhs[sym] = expr
         self._fs.pop(sym, None)
         self._fo.pop(sym, None)
@@ -221,14 +225,14 @@ class Definitions:
                 user_definitions.get(s) is e for s, e in now.items()):
             yield self
             return
-        outside = self.user_version
+        outside, outside_view = self.user_version, self.revision.view
         self._replace_user_definitions(user_definitions)
-        self.user_version = self._view_version(user_definitions)
+        self.user_version = self.revision.view = self._view_version(user_definitions)
         try:
             yield self
         finally:
             self._replace_user_definitions(now)
-            self.user_version = outside
+            self.user_version, self.revision.view = outside, outside_view
 
     def _view_version(self, user_definitions: Mapping):
         """A version for the table seen through `as_of(user_definitions)`: the same

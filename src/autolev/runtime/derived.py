@@ -1,17 +1,38 @@
-"""What the numerics and interop derive from a model, kept while it stays valid."""
+"""A model's one revision, and what the numerics and interop derive from a model, kept
+while it stays valid."""
 from __future__ import annotations
 
 from collections.abc import Hashable
 
 
-class DerivedCache:
-    """Tables of derived things, each table valid for one state of the model: asking
-    for a table with another state drops what the old state derived."""
+class Revision:
+    """The one count of a model's changes: every mutation (a statement's, a caller's)
+    bumps it, through the model, its frames and points (their Scene) and its
+    definitions.  `view` is set while the definitions are seen as they stood at a CODE
+    command (Definitions.as_of): what is derived then belongs to that view."""
 
     def __init__(self) -> None:
+        self.count = 0
+        self.view: Hashable = None
+
+    def bump(self) -> None:
+        self.count += 1
+
+    @property
+    def key(self) -> tuple:
+        return (self.count, self.view)
+
+
+class DerivedCache:
+    """Tables of derived things, each valid for the model's revision it was made at:
+    asking for a table at another revision drops what the old one derived."""
+
+    def __init__(self, revision: Revision) -> None:
+        self.revision = revision
         self._tables: dict[str, tuple[Hashable, dict]] = {}
 
-    def table(self, kind: str, state: Hashable = None) -> dict:
+    def table(self, kind: str) -> dict:
+        state = self.revision.key
         kept = self._tables.get(kind)
         if kept is None or kept[0] != state:
             kept = self._tables[kind] = (state, {})
@@ -20,7 +41,7 @@ class DerivedCache:
     def kept_with_the_model(self) -> "DerivedCache":
         """The tables a pickled model keeps: its commands' numeric systems (rebuilt from
         their generated code when read back), not the rest (sympy frames, Jacobians)."""
-        copy = DerivedCache()
+        copy = DerivedCache(self.revision)
         copy._tables = {kind: kept for kind, kept in self._tables.items()
                         if kind in PICKLED_TABLES}
         return copy

@@ -51,7 +51,7 @@ def to_sympy_frame(frame: "Frame"):
     """A sympy ReferenceFrame oriented as `frame` is (through the model's frames)."""
     me = _mechanics()
     scene = frame.scene
-    cache = scene.derived.table("sympy frames", (scene.version, scene.defs.user_version))
+    cache = scene.derived.table("sympy frames")
     if frame in cache:
         return cache[frame]
     mapping = dynamic_map(scene)

@@ -22,10 +22,12 @@ class IOMixin:
             if key not in INTEGRATION_PARAMETERS:
                 raise AutolevModelError(f"INPUT {target}: not a declared name")
             self.inputs[key] = (sm.sympify(value), unit)
+            self.note_change()
             return
         if not isinstance(target, sm.Symbol):
             raise AutolevModelError(f"INPUT gives values to names, not to {target}")
         self.inputs[target] = (sm.sympify(value), unit)
+        self.note_change()
 
     def input_value(self, target):
         """INPUT(x): the value INPUT gave to x."""
@@ -61,17 +63,21 @@ class IOMixin:
             unit = item[2] if len(item) > 2 else None
             cols.append((value, label, unit))
         self.outputs.append(cols)
+        self.note_change()
 
     def units(self, target, unit: str) -> None:
         """UNITS x = unit."""
         self.unit_of[target if not isinstance(target, str) else target.upper()] = unit
+        self.note_change()
 
     def unit_system(self, *names: str) -> None:
         self.unit_system_names = tuple(names)
+        self.note_change()
 
     def encode(self, *items) -> None:
         """ENCODE A, B: quantities the generated program evaluates."""
         self.encoded.extend(items)
+        self.note_change()
 
     def code(self, kind: str, filename: str, args=None, sweep=None, options=(),
              zero=None) -> None:
@@ -87,6 +93,7 @@ class IOMixin:
             inputs=dict(self.inputs), units=dict(self.unit_of),
             zero=None if zero is None else sm.Matrix(zero),
             definitions=self.defs.user_definitions()))
+        self.note_change()
 
 
 @dataclass

@@ -14,7 +14,7 @@ import sympy as sm
 
 from . import symbols as S
 from .algebra import AlgebraMixin
-from .derived import DerivedCache
+from .derived import DerivedCache, Revision
 from .io import IOMixin
 from .calculus import Definitions
 from . import kane
@@ -47,7 +47,9 @@ class Loaded:
 class Model(AlgebraMixin, IOMixin, SimulationMixin):
     def __init__(self, name: str = "model", degrees: bool = True, complex: bool = False):
         self.name = name
-        self.defs = Definitions()
+        # every change to the model bumps it: what is derived is keyed on it alone
+        self._revision = Revision()
+        self.defs = Definitions(self._revision)
         self.t = S.TIME
         self.degrees = degrees
         self.complex = complex
@@ -64,12 +66,11 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         self.solved_speeds: set[sm.Symbol] = set()
         self.auxiliary_speeds: list[sm.Symbol] = []
         self.kane_equations: KaneEquations | None = None
-        self.kane_calls = 0             # KANE() statements so far (what numerics are keyed by)
         self._formed: tuple[int, KaneEquations] | None = None
         self.settings: dict[str, object] = {}
         self._nicheck_work = None
         # what numerics and interop derive from the model (numeric systems, ...)
-        self.derived = DerivedCache()
+        self.derived = DerivedCache(self._revision)
         self.inputs: dict = {}          # symbol or integration name -> (value, unit)
         self.outputs: list = []         # one list of (expr, label, unit) per OUTPUT
         self.unit_of: dict = {}         # UNITS x = unit
@@ -158,13 +159,9 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         return self._named("vector", name.rstrip(">"))
 
     def note_change(self) -> None:
-        """A change to the model's loads or kinematics made here."""
-        self.scene.note_change()
-
-    @property
-    def version(self) -> int:
-        """Counts the changes to the model's frames, points, loads and kinematics."""
-        return self.scene.version
+        """Every change to the model comes here (its frames' and points' through their
+        Scene, its definitions' through its Definitions): it bumps the one revision."""
+        self._revision.bump()
 
     @property
     def unit_quaternions(self) -> list:
@@ -172,9 +169,9 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
 
     def revision(self) -> tuple:
         """A value that changes whenever the model is changed (a statement, an INPUT,
-        a CODE command), so that what was derived from it can be known stale."""
-        return (self.scene.version, self.defs.user_version, tuple(self.inputs.items()),
-                len(self.code_commands))
+        a CODE command, a caller's change), so that what was derived from it can be
+        known stale; the derived cache is keyed on it."""
+        return self._revision.key
 
     def _changed(self, orientation: bool) -> None:
         """What a change to the frames and points means for the rest: an orientation
@@ -190,6 +187,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         """NEWTONIAN N: the inertial frame and its origin NO (at rest in N)."""
         frame = self.frame(name)
         self.newtonian_frame = frame
+        self.note_change()
         origin = self.point(name + "O")
         origin.set_vel(frame, Vector())
         origin.set_acc(frame, Vector())
@@ -250,6 +248,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
                         d = S.derivative(sym, k)
                         self.info.setdefault(d, SymbolInfo(kind, order - k, len(self.info)))
             out.append(sym)
+        self.note_change()
         return out[0] if len(out) == 1 else tuple(out)
 
     def constants(self, *names: str, sign: str | None = None):
@@ -498,12 +497,14 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         speeds, which are then defined in terms of the others."""
         self._solve_speeds(equations, dependent, "DEPENDENT")
         self.dependent_speeds.extend(s for s in dependent if s not in self.dependent_speeds)
+        self.note_change()
 
     def constrain_auxiliary(self, equations, auxiliary) -> None:
         """CONSTRAIN(AUXILIARY[u...]): the listed speeds bring noncontributing forces into
         evidence; they are solved from their constraints (zero in simulation)."""
         self._solve_speeds(equations, auxiliary, "AUXILIARY")
         self.auxiliary_speeds.extend(s for s in auxiliary if s not in self.auxiliary_speeds)
+        self.note_change()
 
     def _solve_speeds(self, equations, speeds, what: str) -> None:
         eqs = list(sm.Matrix(equations)) if not isinstance(equations, (list, tuple)) \
@@ -544,9 +545,9 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         return kane.generalized_speeds(self.kane_system(), declared)
 
     def _form(self, inertia: bool = True) -> KaneEquations:
-        key = (self.scene.version, self.defs.user_version, inertia)
-        if self._formed is not None and self._formed[0][:2] == key[:2] and \
-                (self._formed[0][2] or not inertia):
+        key = (self.revision(), inertia)
+        if self._formed is not None and self._formed[0][0] == key[0] and \
+                (self._formed[0][1] or not inertia):
             return self._formed[1]
         speeds = self.generalized_speeds()
         eqs = kane.form(self.kane_system(), speeds, inertia)
@@ -578,12 +579,7 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
     def kane(self, *unknowns) -> KaneEquations:
         """KANE(): take Fr + Fr* = 0 as the dynamical equations; KANE(F1, ...) also solves
         the auxiliary rows for the listed unknowns (noncontributing forces)."""
-        eqs = self._form()
-        eqs.unknowns = list(unknowns)
-        if len(unknowns) != len(eqs.auxiliary):
-            raise AutolevModelError(f"KANE solves one unknown per auxiliary speed: "
-                                    f"{len(unknowns)} unknowns, {len(eqs.auxiliary)} "
-                                    "auxiliary speeds")
+        eqs = self._formed_for(unknowns)
         if unknowns:
             # the auxiliary rows, linear in the unknowns, define them (in terms of the
             # state and the speeds' derivatives, which the dynamics give)
@@ -593,14 +589,26 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
             for sym, val in zip(eqs.unknowns, solution):
                 self.define(sym, val)
         self.kane_equations = eqs
-        self.kane_calls += 1
+        self.note_change()
+        return eqs
+
+    def _formed_for(self, unknowns) -> KaneEquations:
+        """Kane's equations formed now, for KANE(unknowns): one unknown per auxiliary
+        speed."""
+        eqs = self._form()
+        eqs.unknowns = list(unknowns)
+        if len(unknowns) != len(eqs.auxiliary):
+            raise AutolevModelError(f"KANE solves one unknown per auxiliary speed: "
+                                    f"{len(unknowns)} unknowns, {len(eqs.auxiliary)} "
+                                    "auxiliary speeds")
         return eqs
 
     # the equations, in the forms sympy users know ---------------------------------------
     def equations(self) -> KaneEquations:
-        """Kane's equations: those KANE() took, else formed from the model as it stands."""
+        """Kane's equations: those KANE() took, else formed from the model as it stands
+        (asking changes nothing: they are kept with the model's revision)."""
         if self.kane_equations is None:
-            return self.kane()
+            return self._formed_for(())
         return self.kane_equations
 
     @property

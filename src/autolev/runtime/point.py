@@ -90,7 +90,7 @@ class Point:
         assigned or which is fixed in frame (its origin)."""
         if frame in self._vel:
             return self._vel[frame]
-        version = self.scene.version
+        version = self.scene.revision.key
         cached = self._vel_derived.get(frame)
         if cached is not None and cached[0] == version:
             return cached[1]
@@ -193,12 +193,26 @@ class Point:
         return to_sympy_point(self)
 
 
+def _mass_property() -> property:
+    """A particle's or body's mass (None until MASS gives it): giving it changes the
+    model, whose revision its Scene bumps."""
+    def get(self) -> sm.Expr | None:
+        return self._mass
+
+    def give(self, value) -> None:
+        self._mass = value
+        self.scene.note_change()
+    return property(get, give, doc=_mass_property.__doc__)
+
+
 class Particle(Point):
     """A point with a mass (Autolev PARTICLES)."""
 
+    mass = _mass_property()
+
     def __init__(self, name: str, scene: Scene):
         super().__init__(name, scene)
-        self.mass: sm.Expr | None = None
+        self._mass: sm.Expr | None = None
 
     @property
     def point(self) -> Point:
@@ -209,11 +223,13 @@ class Body(Frame):
     """A rigid body (Autolev BODIES): a frame with a mass center BO, a mass and a
     central inertia dyadic."""
 
+    mass = _mass_property()
+
     def __init__(self, name: str, scene: Scene, masscenter: Point):
         super().__init__(name, scene)
         self.masscenter = masscenter
         self.origin = masscenter
-        self.mass: sm.Expr | None = None
+        self._mass: sm.Expr | None = None
         self._inertia: Dyadic | None = None
         self._inertia_about: tuple[Point, Dyadic] | None = None
 

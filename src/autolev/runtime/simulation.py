@@ -164,9 +164,7 @@ class SimulationMixin:
     def plain_dynamics(self) -> CodeCommand:
         """CODE DYNAMICS of the model as it stands (for a model that writes none); the
         same object while the model is unchanged, so its numeric system is reused."""
-        state = (self.revision(), len(self.outputs), len(self.encoded),
-                 tuple(self.unit_of.items()))
-        kept = self.derived.table("plain dynamics", state)
+        kept = self.derived.table("plain dynamics")
         if "command" not in kept:
             kept["command"] = CodeCommand(
                 "dynamics", f"{self.name}.c", [], None, (), n_outputs=len(self.outputs),

@@ -20,7 +20,7 @@ from typing import Callable
 import sympy as sm
 
 from .calculus import Definitions
-from .derived import DerivedCache
+from .derived import DerivedCache, Revision
 from .errors import AutolevModelError
 from .interop import to_sympy_frame, to_sympy_vector
 from .symbols import TIME
@@ -31,7 +31,8 @@ class Scene:
     """What the frames and points of one model share, instead of the model itself: its
     definitions, its declared symbols (`info`, for sympy's dynamicsymbols), what is
     derived from it, its points by name (`point`: made on first use), and the notice
-    of a change to its kinematics (`changed(orientation)`), which `version` counts."""
+    of a change to its kinematics (`changed(orientation)`), which bumps the model's
+    revision."""
 
     defs: Definitions
     info: dict
@@ -39,10 +40,13 @@ class Scene:
     point: Callable
     changed: Callable
     unit_quaternions: list = field(default_factory=list)
-    version: int = 0
+
+    @property
+    def revision(self) -> Revision:
+        return self.derived.revision
 
     def note_change(self, orientation: bool = False) -> None:
-        self.version += 1
+        self.revision.bump()
         self.changed(orientation)
 
 

@@ -435,9 +435,7 @@ def _numeric_system(model, command, files, encoded, solving: tuple, backend: str
     equations, unknowns = solving
 
     def systems():
-        state = (model.version, model.defs.user_version, model.kane_calls,
-                 len(model.outputs), len(model.encoded))
-        return model.derived.table("numeric systems", state)
+        return model.derived.table("numeric systems")
     # by the command's place in the model (which a model read back from the cache keeps)
     place = next((k for k, c in enumerate(model.code_commands) if c is command),
                  "plain" if command is model.plain_dynamics() else id(command))
