@@ -86,7 +86,9 @@ import autolev
 from autolev.loader import load_for_run
 from autolev.runtime.errors import AutolevModelError
 from autolev.runtime.numerics import codegen
-from autolev.runtime.numerics.run import keep_built, run_command
+from autolev.runtime.numerics.prepare import keep_built
+from autolev.runtime.numerics.options import RunOptions
+from autolev.runtime.numerics.run import run_command
 t1 = time.perf_counter()
 code = {"c": 0, "python": 0, "compile": 0.0}
 real_library, real_python = codegen.build_shared_library, codegen.compile_python
@@ -114,8 +116,8 @@ with tempfile.TemporaryDirectory() as out:
     for command in commands:
         start = time.perf_counter()
         try:
-            result = run_command(model, command, out_dir=out, infile=infile,
-                                 missing_values="zero")
+            result = run_command(model, command, out, RunOptions(infile=infile,
+                                                                  missing_values="zero"))
         except AutolevModelError:
             failed += 1
             continue
@@ -186,13 +188,14 @@ warnings.simplefilter("ignore")
 import autolev, large_models, rhs_speed
 from autolev.loader import load_for_run
 from autolev.runtime.numerics import codegen
-from autolev.runtime.numerics.run import prepare_command
+from autolev.runtime.numerics.options import RunOptions
+from autolev.runtime.numerics.prepare import prepare_command
 model, notes = load_for_run(sys.argv[1])
 infile = sys.argv[2] or None
 commands = [c for c in model.code_commands if c.kind in ("dynamics", "ode")] \
     or list(model.code_commands) or [model.plain_dynamics()]
 command = commands[-1]
-prepared = prepare_command(model, command, infile=infile, missing_values="zero")
+prepared = prepare_command(model, command, RunOptions(infile=infile, missing_values="zero"))
 system = prepared.system
 values = prepared.inputs
 def by_name(symbols):

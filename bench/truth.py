@@ -224,6 +224,7 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
     from autolev.runtime.numerics.files import safe_stem
     named = [c for c in commands if safe_stem(c.filename).lower() == program]
     command = named[0] if named else commands[-1]
+    from autolev.runtime.numerics.options import RunOptions
     from autolev.runtime.numerics.run import run_command
     notes = []
     with warnings.catch_warnings(record=True) as caught:
@@ -240,8 +241,8 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
                     notes.append(f"{k} not an input here")
         try:
             # the reference program read these values, zeros of a template included
-            result = run_command(model, command, out_dir=workdir, method=method,
-                                 infile=infile, overrides=known, missing_values="zero")
+            result = run_command(model, command, workdir, RunOptions(
+                method=method, infile=infile, overrides=known, missing_values="zero"))
         except autolev.AutolevError as exc:
             out["status"] = f"run failed: {exc}"
             return out
@@ -259,8 +260,8 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
                      ABSERR=ins.get("ABSERR", 1e-8) * 1e-3)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            fine = run_command(model, command, out_dir=None, method=method, infile=infile,
-                               overrides=tight, missing_values="zero")
+            fine = run_command(model, command, None, RunOptions(
+                method=method, infile=infile, overrides=tight, missing_values="zero"))
         k = min(len(fine.t), len(result.t))      # a failed run: the rows both have
         if k > 1:
             a, b = fine.states[:k], result.states[:k]

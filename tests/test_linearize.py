@@ -8,7 +8,7 @@ import sympy as sm
 import pytest
 
 import autolev
-from autolev.runtime.numerics.run import prepare_command
+from autolev.runtime.numerics.prepare import prepare_command
 from helpers import EXAMPLES
 
 PENDULUM = """NEWTONIAN N

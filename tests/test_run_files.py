@@ -37,7 +37,7 @@ def first_run(model, out):
 def test_a_refused_run_leaves_the_previous_files(model, tmp_path):
     out = tmp_path / "out"
     before = first_run(model, out)
-    with pytest.raises(AutolevModelError, match="must not be negative"):
+    with pytest.raises(AutolevModelError, match="must be finite and not negative"):
         model.simulate(out_dir=out, TFINAL=0.2, M1=-1)
     assert snapshot(out) == before
 

@@ -199,7 +199,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
         print(f"{path}: no CODE command: the responses Autolev displayed follow "
               "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
         return _print_transcript(path, None)
-    from .runtime.numerics.run import names_a_quantity
+    from .runtime.numerics.command import names_a_quantity
     unknown = [name for name in overrides if not names_a_quantity(model, name)]
     if unknown:
         print(f"autolev run: --set {', '.join(unknown)}: the model has no quantity of "
@@ -305,12 +305,12 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
         written_by[stem] = command.filename
     out_dir = Path(ns.out)
     status = 0
-    runs = model.run_commands(
-        commands, out_dir, keep_going=True, method=ns.method, backend=ns.backend,
-        infile=ns.infile, progress=None if ns.quiet else sys.stderr, overrides=overrides,
-        specified=specified, quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate),
-        overwrite=ns.overwrite,
-        missing_values="zero" if ns.zero_missing else "refuse")
+    from .runtime.numerics.options import RunOptions
+    runs = model.run_commands(commands, out_dir, keep_going=True, options=RunOptions(
+        method=ns.method, backend=ns.backend, infile=ns.infile,
+        progress=None if ns.quiet else sys.stderr, overrides=overrides, specified=specified,
+        quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate), overwrite=ns.overwrite,
+        missing_values="zero" if ns.zero_missing else "refuse"))
     for done in runs:
         if done.error is not None:
             print(f"{label(done.command)}: error: {done.error}", file=sys.stderr)
@@ -661,7 +661,7 @@ def cmd_verify(ns: argparse.Namespace) -> int:
 def cmd_code(ns: argparse.Namespace) -> int:
     """Write the programs a model's CODE commands name, in Autolev's layout."""
     from .programs import write_programs
-    from .runtime.numerics.run import keep_built
+    from .runtime.numerics.prepare import keep_built
 
     path = Path(ns.file)
     model = _load_for_run(path)

@@ -17,9 +17,9 @@ from ..runtime import units
 from ..runtime.errors import AutolevModelError
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs
-from ..runtime.numerics.run import (encoded_values, equations_and_unknowns, output_columns,
-                                     solution_columns, solver_expressions, sweep_of,
-                                     take_time, time_dependence)
+from ..runtime.numerics.command import (encoded_values, equations_and_unknowns,
+                                         output_columns, solution_columns, solver_expressions,
+                                         sweep_of, take_time, time_dependence)
 from ..runtime.numerics.system import NumericSystem, lower_derivative, read_order
 
 

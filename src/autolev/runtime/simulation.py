@@ -11,7 +11,10 @@ from . import studies
 from .errors import AutolevModelError
 from .io import CodeCommand
 from .numerics.files import safe_stem
-from .numerics.run import Result, keep_built, run_command
+from .numerics.prepare import keep_built
+from .numerics.results import Result
+from .numerics.options import RunOptions
+from .numerics.run import run_command
 
 
 @dataclass
@@ -35,15 +38,15 @@ class CommandRun:
 
 
 class SimulationMixin:
-    def run(self, out_dir=".", verbose: bool = False, code=None, **options):
+    def run(self, out_dir=".", verbose: bool = False, code=None, **given):
         """Perform the CODE commands (every one, or those `code` names: a name or index,
         or a list of them) with the INPUT values, as `autolev run` and `python
         model.py` do: writes Autolev's files into out_dir; returns the results.
         `verbose` reports each run on standard output and its progress on standard
-        error.  `options`: as `simulate` takes them."""
+        error.  `given`: options and input values, as `simulate` takes them."""
         results = []
-        for done in self.run_commands(self.commands_named(code), out_dir,
-                                      progress=sys.stderr if verbose else None, **options):
+        options = RunOptions.split(given).but(progress=sys.stderr if verbose else None)
+        for done in self.run_commands(self.commands_named(code), out_dir, options=options):
             results.append(done.result)
             if verbose:
                 print(done.summary()
@@ -61,7 +64,7 @@ class SimulationMixin:
         return [c for c in self.code_commands if id(c) in picked]
 
     def run_commands(self, commands, out_dir=None, keep_going: bool = False,
-                     **options) -> Iterator[CommandRun]:
+                     options: RunOptions = RunOptions()) -> Iterator[CommandRun]:
         """Run each command in turn (the one pipeline behind run, `autolev run` and
         `python model.py`): one CommandRun per command as it finishes.  A command the
         model cannot run stops the rest, or with `keep_going` is reported in its
@@ -70,7 +73,7 @@ class SimulationMixin:
             for command in commands:
                 start = time.monotonic()
                 try:
-                    result = run_command(self, command, out_dir=out_dir, **options)
+                    result = run_command(self, command, out_dir, options)
                 except AutolevModelError as exc:
                     if not keep_going:
                         raise
@@ -101,42 +104,25 @@ class SimulationMixin:
         shown = ", ".join(f"{k}: {c.filename}" for k, c in enumerate(commands)) or "none"
         raise AutolevModelError(f"no CODE command {which!r} (the model's: {shown})")
 
-    def simulate(self, *, method: str | None = None, backend: str = "auto",
-                 infile=None, out_dir=None, specified=None, progress=None,
-                 compiled: bool = True, constraints=None, quirks: bool = True,
-                 keep_rows: bool = True, missing_values: str = "refuse", code=None,
-                 overwrite: bool = False, **overrides):
-        """Run the model's CODE command (its first CODE DYNAMICS or ODE, else its first
-        CODE command, else a plain simulation) with INPUT values, `overrides`
-        (NAME=value in the quantity's unit, TFINAL=..., ...; a number for a specified
-        quantity the model leaves undefined is its value) and `specified` values for
-        those ({name: f(t) or f(t, x)}, called at every evaluation, or a number or a
-        sympy expression in the model's symbols, compiled into the equations as if the
-        model had defined it before its CODE command).  Files are written only when
-        out_dir is given.  `method`: the integrator (default: the one of the program
-        Autolev wrote for the CODE file: ode45, i.e. "rk45", for a .m file, else its
-        Kutta-Merson).
-        `compiled=False` keeps the integration loop in Python even when the right-hand
-        side is compiled C (Kutta-Merson and DOP853 otherwise run wholly in C).
-        `constraints`: configuration constraints g(q) (sympy expressions in the model's
-        symbols, e.g. `al.dot(P5.pos_from(NO), N.x)` for a closed loop) kept at their
-        initial values by projecting the coordinates onto them at every print time
-        (closed loops drift off their constraints otherwise: only the velocity
-        constraints are part of the equations).  `quirks=False`: the values meant where
-        Autolev's programs computed others (docs/language.md).  `keep_rows=False`: the
-        Result holds only the last row (a long run into out_dir then needs no memory
-        for its rows).  `missing_values="zero"`: constants without a value are 0 (with a
-        warning) instead of stopping the run before it is compiled (MissingValues).
-        `code`: which CODE command to run (see code_command).  `overwrite`: replace
-        files in out_dir that autolev did not write (else they stop the run).
+    def simulate(self, *, out_dir=None, code=None, **given):
+        """Run the model's CODE command (`code`, see code_command; default: its first
+        CODE DYNAMICS or ODE, else its first CODE command, else a plain simulation) with
+        its INPUT values; files are written only when out_dir is given.  `given`: the
+        options of a run, by their names (RunOptions: method, backend, infile,
+        specified, progress, compiled, constraints, quirks, keep_rows, missing_values,
+        overwrite), and input values by any other name (NAME=value in the quantity's
+        unit, TFINAL=...; a number for a specified quantity the model leaves undefined
+        is its value).  `specified` gives those quantities a function f(t) or f(t, x),
+        called at every evaluation, or a number or sympy expression, compiled into the
+        equations as if the model had defined it before its CODE command.
+        `constraints`: configuration constraints g(q) (sympy expressions, e.g.
+        `al.dot(P5.pos_from(NO), N.x)` for a closed loop) kept at their initial values
+        by projecting the coordinates onto them at every print time (closed loops
+        drift off them otherwise: only the velocity constraints are in the equations).
         Returns a Result (times, states and outputs as numpy arrays)."""
         try:
-            return run_command(
-                self, self.command_to_run(code), out_dir=out_dir, method=method,
-                backend=backend, infile=infile, specified=specified, progress=progress,
-                overrides=overrides, compiled=compiled, constraints=constraints,
-                quirks=quirks, keep_rows=keep_rows, missing_values=missing_values,
-                overwrite=overwrite)
+            return run_command(self, self.command_to_run(code), out_dir,
+                               RunOptions.split(given))
         finally:
             keep_built(self)
 

@@ -28,7 +28,9 @@ import numpy as np
 
 from .errors import AutolevModelError
 from .io import INTEGRATION_PARAMETERS
-from .numerics.run import names_a_quantity, run_command
+from .numerics.command import names_a_quantity
+from .numerics.options import RunOptions
+from .numerics.run import run_command
 
 STUDIES = ("linearize", "simulate")
 # options a study passes on: Model.linearize's and Model.simulate's keywords
@@ -136,8 +138,8 @@ def _evaluate(model, what: str, point: dict, options: dict, collect) -> dict:
             opts = dict(options)
             command = model.command_to_run(opts.pop("code", None))
             # the rows only when `collect` may want them: memory stays flat otherwise
-            found = run_command(model, command, overrides=point,
-                                keep_rows=collect is not None, **opts)
+            found = run_command(model, command, None, RunOptions(
+                overrides=point, keep_rows=collect is not None, **opts))
             if found.failure:
                 return {"failure": found.failure, **(collect or _last_row)(found)}
     except AutolevModelError as exc:

@@ -31,7 +31,9 @@ from ..errors import AutolevModelError
 from . import codegen
 from .inputs import display_name
 from .projection import Projector
-from .run import given_specified, prepare_command
+from .command import given_specified
+from .options import RunOptions
+from .prepare import prepare_command
 from .system import NumericSystem, compile_program
 
 
@@ -106,10 +108,10 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
         sym = _symbol_named(model, name)
         if sym is not None and model.kind_of(sym) == "specified":
             specified_values[sym] = float(point.pop(name))
-    prepared = prepare_command(model, command, backend=backend, infile=infile,
-                               overrides=overrides, internal_values=point,
-                               constraints=constraints, missing_values=missing_values,
-                               warn_unassigned=False, locked=held)
+    prepared = prepare_command(model, command, RunOptions(
+        backend=backend, infile=infile, overrides=overrides, constraints=constraints,
+        missing_values=missing_values), internal_values=point, warn_unassigned=False,
+        locked=held)
     system = prepared.system
     if not system.nstate:
         raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "

@@ -119,16 +119,13 @@ class NumericSystem:
     dropped, and Q a constant of the program.  `solved`:
     symbols whose values the caller supplies at output time (the unknowns of
     ALGEBRAIC/NONLINEAR); `extra`: {name: [expressions]}
-    compiled with the outputs' inputs.  `before_compiling(system)`: called once the
-    states, parameters and specified quantities are known, before anything is
-    compiled (a run checks its inputs there: a refusal then costs no compilation).
-    `compile_functions=False`: the analysis alone (states, inputs, expressions), for a
-    writer of programs in another language."""
+    compiled with the outputs' inputs.  `compile_functions=False`: the analysis alone
+    (states, inputs, expressions), for a writer of programs in another language or for
+    a run that checks its inputs before anything is compiled, then calls `compile()`."""
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, ode=None, solved=(), extra=None,
-                 zero=None, hidden_in_outputs=(), before_compiling=None, locked=(),
-                 compile_functions: bool = True):
+                 zero=None, hidden_in_outputs=(), locked=(), compile_functions: bool = True):
         self.model = model
         self._zero = zero
         self.backend = backend
@@ -159,11 +156,11 @@ class NumericSystem:
         for v in extra.values():
             exprs += v
         self._find_inputs(exprs, given, integrate)
-        if before_compiling is not None:
-            before_compiling(self)
         self.accel_inputs = accel_inputs
+        self._integrate = integrate
+        self.compiled = False
         if compile_functions:
-            self._compile(extra, accel_inputs, integrate)
+            self.compile()
         self.constant_values = None
         self.specified_values = np.zeros(len(self.specified))
         self.specified_functions: list = []
@@ -217,6 +214,12 @@ class NumericSystem:
             if s not in cset:
                 used |= defs.free(s)
         self.constant_defs = [s for s in const_defs if s in used]
+
+    def compile(self) -> None:
+        """Compile the functions the analysis found (with the model's definitions as
+        they stand: as_of the command's, like the analysis)."""
+        self._compile(self.extra_exprs, self.accel_inputs, self._integrate)
+        self.compiled = True
 
     def _compile(self, extra: dict, accel_inputs: list, integrate: bool) -> None:
         defs, backend = self.model.defs, self.backend

@@ -1,0 +1,208 @@
+"""What a run that fails or struggles tells the user: masses and inertias no
+body has, constants that are 0, why Kutta-Merson halved its step too often,
+stiffness, tolerances too loose for a method.
+"""
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+import sympy as sm
+
+from .. import symbols as S
+from ..calculus import NumericPoint, is_real_number
+from ..errors import AutolevModelError
+from .inputs import display_name
+from .integrate import IntegrationFailure
+
+
+def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
+    """Bodies and particles whose mass (or a principal inertia) is negative or not a
+    number (and, with `zero`, zero) as the run uses them: a constant its equations do
+    not contain (a planar model's I11 or I12) counts as 0 and never had a value chosen
+    for it, and a mass or inertia holding one is not called zero or singular."""
+    m = system.model
+    values = {p: inputs.internal(p) for p in system.params}
+    unused = set()
+
+    def primitives(e):
+        out = set()
+        for f in sm.sympify(e).free_symbols:
+            out |= m.defs.primitive_deps(f) if f in m.defs.rhs else {f}
+        return out
+
+    def unused_in(e) -> bool:
+        found = {f for f in primitives(e)
+                 if f not in values and f not in m.defs.varying and f != S.TIME}
+        unused.update(found)
+        return bool(found)
+
+    masses = [(f"particle {p.name}", p.mass, None) for p in m.particles_list
+              if p.mass is not None]
+    for b in m.bodies_list:
+        if b.mass is not None:
+            try:
+                inertia = b.central_inertia.to_matrix(b)
+            except AutolevModelError:
+                inertia = None
+            masses.append((f"body {b.name}", b.mass, inertia))
+    # every entry looked at (no short cut): each unused constant must get its 0
+    partial = {name: (unused_in(mass), inertia is not None
+                      and any([unused_in(e) for e in inertia]))
+               for name, mass, inertia in masses}
+    point = NumericPoint(m.defs, {**values, **{f: 0.0 for f in unused}})
+
+    def num(e):
+        z = m.defs.numeric(sm.sympify(e), point)
+        return z.real if is_real_number(z) else math.nan
+
+    out = []
+    for name, mass_expr, inertia in masses:
+        mass_partial, inertia_partial = partial[name]
+        mass = num(mass_expr)
+        principal = [] if inertia is None else principal_inertias(
+            np.array([[num(inertia[i, j]) for j in range(3)] for i in range(3)]))
+        zero_mass = zero and not mass_partial
+        if math.isinf(mass) or not all(map(math.isfinite, principal)):
+            out.append(f"{name} has a {'mass' if math.isinf(mass) else 'central inertia'} "
+                       "that is not a finite number (a value beyond double precision?)")
+        elif not mass > 0 and (zero_mass or mass != 0):
+            what = f"{name} has mass {mass:g}"
+            if principal and not any(d > 0 for d in principal):
+                what += " and no inertia"
+            out.append(what)
+        elif principal and any(d < 0 or math.isnan(d) for d in principal):
+            out.append(f"{name} has principal inertias "
+                       + ", ".join(f"{d:.6g}" for d in principal))
+        elif zero and not inertia_partial and len(principal) == 3 and min(principal) == 0:
+            out.append(f"{name} has a singular central inertia (principal inertias "
+                       + ", ".join(f"{d:.6g}" for d in principal) + ")")
+    return out
+
+
+def principal_inertias(numbers) -> list[float]:
+    """The principal inertias of a numeric inertia matrix, those within rounding of
+    0 (1e-12 of the largest) shown as 0; [nan] when an entry is not a number."""
+    if not np.all(np.isfinite(numbers)):
+        return [math.nan]
+    principal = np.linalg.eigvalsh((numbers + numbers.T) / 2)
+    scale = max(float(np.abs(principal).max()), 0.0)
+    return [0.0 if abs(d) <= 1e-12 * scale else float(d) for d in principal]
+
+
+def zero_hint(zero_params) -> str:
+    if not zero_params:
+        return ""
+    shown = ", ".join(zero_params[:12]) + (", ..." if len(zero_params) > 12 else "")
+    return f" (constants that are 0: {shown})"
+
+
+def switch_when_stiff(t: float, hlamb: float) -> str:
+    # Radau, not LSODA: on the lightly damped stiff spring chain of
+    # bench/work_precision.py LSODA took 1.4 ms to 680 ms depending on the tolerance,
+    # Radau 5 to 133 ms at every tolerance
+    warnings.warn(f"the equations are stiff from T = {t:.6g} (step size times the largest "
+                  f"eigenvalue ~ {hlamb:.3g}, beyond DOP853's stability): going on with "
+                  "Radau (implicit); ask for --method radau from the start to avoid the "
+                  "switch", stacklevel=2)
+    return "radau"
+
+
+# RELERR at and above which a method is known to give qualitatively wrong motion
+# over long runs: the relative energy error of the conservative double pendulum over
+# 100 s (Q1 = 30 deg, Q2 = 60 deg; bench/work_precision.py) exceeds 1 % there --
+# RK23 1.5 % at 1e-4; RK45 8.8 %, LSODA 4.3 %, BDF 11 % at 1e-3 (steps not bounded
+# by INTEGSTP); Radau, DOP853 and Kutta-Merson stay below 0.1 % at 1e-3.
+LOOSE_RELERR = {"rk23": 1e-4, "rk45": 1e-3, "lsoda": 1e-3, "bdf": 1e-3, "radau": 1e-2,
+                "dop853": 1e-2, "kutta-merson": 1e-2}
+
+
+def loose_tolerance_note(method: str, relerr: float) -> None:
+    limit = LOOSE_RELERR.get(method)
+    if limit is not None and relerr >= limit:
+        warnings.warn(f"RELERR = {relerr:g} is loose for {method}: at RELERR >= {limit:g} it "
+                      "is known to give qualitatively wrong motion over long runs (a "
+                      "conservative double pendulum gains or loses over 1 % of its energy in "
+                      f"100 s); use RELERR <= {limit / 100:g}", stacklevel=4)
+
+
+def stiff_note(stats: dict, method: str) -> None:
+    t = stats.get("stiff_t")
+    if t is None or stats.get("switched_to"):
+        return
+    warnings.warn(f"the equations are stiff from T = {t:.6g}: {method}'s steps are limited "
+                  "by its stability, not by the error asked for (a slow run); an implicit "
+                  "method (--method lsoda or radau; method='lsoda') takes far fewer steps",
+                  stacklevel=3)
+
+
+def failure_message(exc: IntegrationFailure, system, inputs, result, zero_params,
+                     integration: tuple) -> str:
+    """Autolev's message for a failed integration, with what we can tell of its cause."""
+    state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, exc.y))
+    message = (f"Numerical integration failed to converge: {exc}; the state there: {state}"
+               + (zero_hint(zero_params) if result.stats["rows"] <= 1 else ""))
+    if "singular" in str(exc) or (result.stats["rows"] <= 1 and "not finite" in str(exc)):
+        problems = inertia_problems(system, inputs)
+        if problems:
+            message += "; " + "; ".join(problems)
+    mass = system.last_mass_matrix() if "singular" in str(exc) else None
+    if mass is not None and not np.all(np.isfinite(mass)):
+        huge = [f"{display_name(p)} = {v:g}" for p, v in zip(system.params,
+                                                               system.constant_values)
+                if abs(v) > 1e100]
+        message += ("; its entries are not finite numbers (inf or NaN): a value beyond "
+                    "double precision" + (f" (from {', '.join(huge[:4])}?)" if huge else ""))
+    if exc.cuts:
+        f, sched, abserr, relerr = integration
+        message += "; " + halving_verdict(f, exc, sched, abserr, relerr)
+    return message
+
+
+# h*|lambda| where Kutta-Merson stops being stable on the negative real axis
+KM_STABILITY = 3.5
+
+
+def halving_verdict(f, failure, schedule, abserr: float, relerr: float) -> str:
+    """Why Kutta-Merson's step was halved too often: zero tolerances, or stiffness
+    (judged by the Jacobian's eigenvalues where it stopped), or neither."""
+    if abserr <= 0 and relerr <= 0:
+        return ("ABSERR and RELERR are both 0, which no step can satisfy: give them "
+                "values (e.g. ABSERR = 1E-8, RELERR = 1E-7)")
+    floor = abs(schedule.integstp) / 2 ** 20
+    rho = spectral_radius(f, failure.t, failure.y)
+    if rho is None:
+        return "the derivatives are not finite near that state"
+    if rho * floor > KM_STABILITY:
+        return (f"the equations are stiff there (the Jacobian's largest eigenvalue is "
+                f"about {rho:.3g} in size: Kutta-Merson needs steps below "
+                f"{KM_STABILITY / rho:.2g}, finer than the {floor:.2g} its 20 halvings of "
+                "INTEGSTP allow); an implicit method takes them in stride: --method radau "
+                "(method='radau')")
+    verdict = (f"the equations are not stiff there (the Jacobian's largest eigenvalue is "
+               f"about {rho:.3g} in size)")
+    if abserr <= 0:
+        return verdict + ("; ABSERR = 0 makes any state that is exactly 0 fail the error "
+                          "test: give ABSERR a small value (e.g. 1E-8)")
+    return verdict + ("; the derivatives may jump or grow without bound near that state, "
+                      "or ABSERR and RELERR are below what double precision can meet")
+
+
+def spectral_radius(f, t: float, y: np.ndarray) -> float | None:
+    """max |eigenvalue| of df/dy at (t, y), by forward differences; None where the
+    derivatives cannot be evaluated."""
+    try:
+        f0 = np.asarray(f(t, y), dtype=float)
+        columns = []
+        for j in range(len(y)):
+            step = 1.5e-8 * max(1.0, abs(y[j]))
+            moved = np.array(y, dtype=float)
+            moved[j] += step
+            columns.append((np.asarray(f(t, moved), dtype=float) - f0) / step)
+    except IntegrationFailure:
+        return None
+    jac = np.array(columns).T
+    if not np.all(np.isfinite(jac)):
+        return None
+    return float(np.max(np.abs(np.linalg.eigvals(jac)))) if len(y) else 0.0

@@ -1,0 +1,170 @@
+"""Integrating a CODE DYNAMICS or ODE command: Autolev's print schedule, the
+rows written as they come, the mass matrix's conditioning watched.
+"""
+from __future__ import annotations
+
+import math
+import sys
+import time
+import warnings
+
+import numpy as np
+
+from ..errors import AutolevModelError
+from .advice import failure_message, loose_tolerance_note, stiff_note, switch_when_stiff
+from .integrate import IntegrationFailure, Progress, Schedule, integrate
+from .projection import Projector, integrate_projected
+from .results import split_outputs, tables_of
+from .system import SingularMassMatrix, scaled_condition
+
+# the scaled condition number of the mass matrix beyond which a run warns (the
+# accelerations then keep fewer than 6 of their 16 significant digits)
+COND_WARN = 1e10
+
+
+class Conditioning:
+    """The scaled condition number of the mass matrix at every row, in batches (its
+    memory does not grow with the run): the largest value and where, and the first
+    row past COND_WARN (an exactly singular matrix stops the run with its own
+    message)."""
+
+    BATCH = 4096
+
+    def __init__(self):
+        self.largest = None          # (cond, t)
+        self.first_bad = None        # (cond, t, state)
+        self._batch = []             # (t, state, matrix)
+
+    def add(self, t, state, matrix) -> None:
+        self._batch.append((t, state, matrix))
+        if len(self._batch) >= self.BATCH:
+            self._flush()
+
+    def _flush(self) -> None:
+        if not self._batch:
+            return
+        conds = scaled_condition(np.array([m for _, _, m in self._batch]))
+        k = int(np.argmax(conds))
+        if self.largest is None or conds[k] > self.largest[0]:
+            self.largest = (float(conds[k]), self._batch[k][0])
+        bad = np.nonzero((conds > COND_WARN) & np.isfinite(conds))[0]
+        if len(bad) and self.first_bad is None:
+            i = int(bad[0])
+            self.first_bad = (float(conds[i]), self._batch[i][0], self._batch[i][1])
+        self._batch = []
+
+    def report(self, result) -> None:
+        """The stats, and a warning with the time and state of the first bad row."""
+        self._flush()
+        if self.largest is None:
+            return
+        result.stats["cond_max"], result.stats["cond_max_t"] = self.largest
+        if self.first_bad is not None:
+            cond, t, state = self.first_bad
+            shown = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, state))
+            warnings.warn(
+                f"the mass matrix is nearly singular at T = {t:.6g} (condition number "
+                f"{cond:.2g} after scaling by its diagonal: the accelerations may have lost "
+                f"{min(16, int(math.log10(min(cond, 1e16))))} of their 16 digits); the state "
+                f"there: {shown}", stacklevel=4)
+
+
+class _Rows:
+    """The print rows of a run as they come: written, kept (all, or only the last), and
+    the mass matrix's conditioning watched."""
+
+    def __init__(self, system, result, writer, keep_rows: bool):
+        self.system, self.result, self.writer, self.keep_rows = system, result, writer, keep_rows
+        self.times: list = []
+        self.states: list = []
+        self.rows: list = [[] for _ in system.files]
+        self.encoded: dict = {}
+        self.conditioning = Conditioning()
+
+    def __call__(self, t, y) -> None:
+        values = self.system.outputs(t, y)       # solves for the accelerations once
+        if not self.keep_rows and self.times:
+            self.times.clear()
+            self.states.clear()
+            for r in self.rows:
+                r.clear()
+        self.times.append(t)
+        self.states.append(np.array(y))
+        split_outputs(self.system, values, self.rows, self.writer, self.encoded)
+        self.result.stats["rows"] = self.result.stats.get("rows", 0) + 1
+        mm = self.system.last_mass_matrix()
+        if mm is not None:
+            self.conditioning.add(t, self.states[-1], mm)
+
+    def finish(self) -> None:
+        result, system = self.result, self.system
+        result.t = np.array(self.times)
+        result.states = np.array(self.states).reshape(len(self.states), system.nstate)
+        result.outputs = tables_of(system, self.rows, result.name)
+        result.encoded = self.encoded
+
+
+def _schedule(inputs, program: str) -> Schedule:
+    """The print schedule of the INPUT integration parameters, integrated the way
+    Autolev's program in that language integrated."""
+    sched = Schedule(inputs.internal("TINITIAL"), inputs.internal("TFINAL"),
+                     inputs.internal("INTEGSTP"), int(inputs.values["PRINTINT"].given),
+                     fresh_derivatives=program == "c",
+                     restart_each_step=program == "m")
+    try:
+        sched.check()
+    except ValueError as exc:
+        raise AutolevModelError(str(exc)) from None
+    return sched
+
+
+def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
+                  compiled: bool = True, constraints=None, extra_values=(),
+                  program: str = "", keep_rows: bool = True) -> None:
+    """`program`: the language of Autolev's program for the CODE file ("c", "m", ...),
+    whose way of integrating is followed.  `keep_rows`: the Result holds every row
+    (else only the last: a run's memory is then independent of its length)."""
+    if not system.nstate:
+        raise AutolevModelError("nothing to integrate: no variable has a defined "
+                                "derivative and there are no generalized speeds")
+    y0 = np.array(inputs.vector(system.states))
+    sched = _schedule(inputs, program)
+    on_row = _Rows(system, result, writer, keep_rows)
+
+    def f(t, y):
+        try:
+            return system.derivatives(t, y)
+        except SingularMassMatrix as exc:
+            raise IntegrationFailure(str(exc), t, y) from None
+
+    bar = Progress(sys.stderr if progress is None else progress, sched.tinitial,
+                   sched.tfinal, enabled=progress is not False and progress is not None)
+    start = time.perf_counter()
+    abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
+    try:
+        loop = system.loop if compiled and not system.specified_functions else None
+        on_stiff = switch_when_stiff if method == "dop853" else None
+        loose_tolerance_note(method.lower(), relerr)
+        if constraints:
+            projector = Projector(system, constraints, sched.tinitial, y0, extra_values)
+            result.stats.update(integrate_projected(
+                f, y0, sched, method, abserr, relerr, on_row, bar, loop, on_stiff,
+                projector))
+        else:
+            result.stats.update(integrate(f, y0, sched, method, abserr, relerr, on_row,
+                                          bar, loop=loop, on_stiff=on_stiff))
+        stiff_note(result.stats, method)
+    except IntegrationFailure as exc:
+        on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
+        result.failure = failure_message(exc, system, inputs, result, zero_params,
+                                          (f, sched, abserr, relerr))
+        result.failure_time = exc.t
+        if writer is not None:
+            writer.note("Error: " + result.failure)
+    except ValueError as exc:
+        raise AutolevModelError(str(exc)) from None
+    finally:
+        bar.done()
+        result.stats["seconds"] = time.perf_counter() - start
+        on_row.conditioning.report(result)
+    on_row.finish()

@@ -1,0 +1,294 @@
+"""Preparing a CODE command's run: its numeric system (built once per revision of
+the model), then its inputs (INPUT values, an .in file, overrides), checked
+before anything is compiled, then its compiled functions.
+"""
+from __future__ import annotations
+
+import time
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+
+from .. import symbols as S
+from .. import units
+from ..errors import AutolevModelError, MissingValues
+from .advice import inertia_problems
+from .command import (encoded_values, equations_and_unknowns, find_symbol, given_specified,
+                      hidden_in_outputs, names_a_quantity, output_columns, solution_columns,
+                      solver_expressions, sweep_values, take_time, time_dependence)
+from .files import safe_stem
+from .inputs import INTEGRATION, Inputs, display_name, some_names
+from .projection import constants_needed
+from .options import RunOptions
+from .system import NumericSystem
+
+
+@dataclass
+class Prepared:
+    """A CODE command ready to execute: its numeric system (parameters set) and inputs."""
+
+    system: NumericSystem
+    inputs: Inputs
+    kinds: dict             # input -> "Constant", "Initial Value", ...
+    stem: str
+    files: list
+    encoded: list
+    unknowns: list
+    sweep: tuple | None
+    extra_constants: list
+    build_seconds: float
+
+
+@dataclass
+class InputsWanted:
+    """What prepare_command was given for the run's inputs."""
+
+    model: object
+    command: object
+    stem: str
+    unknowns: list
+    infile: object
+    overrides: dict | None
+    internal_values: dict | None
+    constraints: object
+    missing_values: str
+    out_dir: object
+
+    @property
+    def integrate_states(self) -> bool:
+        return self.command.kind in ("dynamics", "ode")
+
+
+def take_inputs(ask: InputsWanted, system):
+    """The run's inputs (constants, initial values or guesses, integration
+    parameters): INPUT values, then the .in file, then the overrides.  Refuses, before
+    anything is compiled, constants that have no value from any of them."""
+    extra_constants = (constants_needed(system, ask.constraints)
+                       if ask.constraints and ask.integrate_states else [])
+    constants = list(system.params) + extra_constants
+    kinds = {p: "Constant" for p in constants}
+    names = list(constants)
+    timed = [] if ask.integrate_states else time_dependence(ask.model, system)
+    if timed:
+        names.append(S.TIME)
+        kinds[S.TIME] = "Constant"
+    if ask.integrate_states:
+        names += system.states
+        kinds.update({x: "Initial Value" for x in system.states})
+        integration = INTEGRATION
+    elif ask.command.kind == "nonlinear":
+        names += ask.unknowns
+        kinds.update({u: "Initial Guess" for u in ask.unknowns})
+        integration = ("ABSERR", "RELERR")
+    else:
+        integration = ()
+    inputs = Inputs(ask.model, names, integration, given=ask.command.inputs,
+                    unit_table=ask.command.units)
+    notes = []
+    if ask.infile is not None:
+        notes += inputs.read_file_over_model(ask.infile, constants)
+    elsewhere = []                    # the model's, but not inputs of this command
+    for name, value in (ask.overrides or {}).items():
+        if inputs.lookup(name) is None and names_a_quantity(ask.model, name):
+            elsewhere.append(name)
+            continue
+        inputs.set(name, value)
+    for name, value in (ask.internal_values or {}).items():
+        if inputs.lookup(name) is None and names_a_quantity(ask.model, name):
+            elsewhere.append(name)
+            continue
+        inputs.set_internal(name, value)
+    if elsewhere:
+        notes.append(", ".join(elsewhere) + f" {'is' if len(elsewhere) == 1 else 'are'}"
+                     f" not {'an input' if len(elsewhere) == 1 else 'inputs'} of "
+                     f"CODE {ask.command.kind.upper()} {ask.command.filename}: ignored there")
+    for note in notes:
+        warnings.warn(note, stacklevel=5)
+    swept = ask.command.sweep[0] if ask.command.sweep is not None else None
+    if swept in constants and inputs.missing([swept]):
+        # CODE ALGEBRAIC() [Q = a, b, c]: the sweep gives Q its values
+        inputs.set_internal(display_name(swept), 0.0, "the sweep")
+    missing = inputs.missing(constants)
+    if missing and ask.missing_values == "refuse":
+        raise MissingValues(missing_message(ask.model, missing, inputs, kinds, ask.out_dir,
+                                             ask.stem, ask.command.filename),
+                            [display_name(k) for k in missing])
+    inputs.fill_missing(constants)
+    if missing:
+        warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
+                      + ": using 0", stacklevel=5)
+    if timed:
+        take_time(ask.command, inputs, timed)
+    inputs.fill_missing(names)
+    inputs.check_finite()
+    degree_rates_note(inputs, names)
+    if ask.integrate_states:       # before the build: it needs only the inputs
+        bad = inertia_problems(system, inputs, zero=False)
+        if bad:
+            raise AutolevModelError("masses and inertias must be finite and not negative: "
+                                    + "; ".join(bad))
+    return inputs, kinds, names, extra_constants
+
+
+def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=None,
+                    internal_values=None, warn_unassigned: bool = True,
+                    locked=()) -> Prepared:
+    """Build (or reuse) the command's numeric system, take its inputs (INPUT values, then
+    the .in file, then the overrides in the quantities' units, then `internal_values`
+    {name: value} in SI units and radians), refusing missing ones before anything is
+    compiled, then compile it.  `warn_unassigned`: warn about specified quantities that
+    will be 0 (not when they are a linearization's inputs).  `locked`: coordinates held
+    fixed (see NumericSystem)."""
+    command, specified, overrides = given_specified(model, command, options.specified,
+                                                    options.overrides)
+    kind = command.kind
+    stem = safe_stem(command.filename)
+    files = output_columns(model, command)
+    encoded = encoded_values(model, command)
+    equations, unknowns = equations_and_unknowns(command.args, kind.upper())
+    files = solution_columns(command, files, unknowns)
+    ask = InputsWanted(model, command, stem, unknowns, options.infile, overrides,
+                       internal_values, options.constraints, options.missing_values, out_dir)
+    build_start = time.perf_counter()
+    system = numeric_system(model, command, files, encoded, (equations, unknowns),
+                            options.backend, options.quirks, locked)
+    fresh = not system.compiled
+    with model.defs.as_of(command.definitions):
+        inputs, kinds, names, extra_constants = take_inputs(ask, system)
+        if fresh:                    # inputs first: a refusal costs no compilation
+            system.compile()
+    if fresh:                        # kept at the model's own revision, not as_of's view
+        keep_system(model, command, options.backend, options.quirks, locked, system)
+    build_seconds = time.perf_counter() - build_start
+    if system.hidden_in_outputs:
+        warnings.warn(
+            f"{command.filename}: Autolev's C program computed the OUTPUT and ENCODE "
+            "quantities with " + ", ".join(f"{s} = 0" for s in system.hidden_in_outputs)
+            + " (its output routine's counter `int i1` hides the model's i1); reproduced "
+            "as it printed them (--no-quirks, or quirks=False, for the values meant)",
+            stacklevel=3)
+    set_specified(model, system, specified, warn_unassigned)
+    sweep = sweep_values(model, command, inputs)
+    system.set_parameters(inputs.vector(system.params))
+    return Prepared(system, inputs, kinds, stem, files, encoded, unknowns, sweep,
+                    extra_constants, build_seconds)
+
+
+def numeric_system(model, command, files, encoded, solving: tuple, backend: str,
+                   quirks: bool, locked) -> NumericSystem:
+    """The command's numeric system, compiled, as kept for this revision of the model
+    (repeated simulate() calls with other inputs reuse its compiled functions); else
+    its analysis, to be compiled once its inputs are taken (then `keep_system`)."""
+    kind = command.kind
+    equations, unknowns = solving
+    # the command itself is kept with its system: an id() alone may be reused
+    entry = model.derived.table("numeric systems").get(
+        _system_key(model, command, backend, quirks, locked))
+    if entry is not None and entry[0] is command:
+        return entry[1]
+    with model.defs.as_of(command.definitions):
+        return NumericSystem(
+            model, files, encoded, backend=backend, integrate=kind in ("dynamics", "ode"),
+            ode=(equations, unknowns) if kind == "ode" else None,
+            solved=unknowns if kind in ("algebraic", "nonlinear") else (),
+            extra=solver_expressions(model.defs, kind, equations, unknowns),
+            zero=command.zero if kind == "dynamics" else None,
+            hidden_in_outputs=hidden_in_outputs(command) if quirks else (),
+            locked=locked, compile_functions=False)
+
+
+def _system_key(model, command, backend: str, quirks: bool, locked) -> tuple:
+    # by the command's place in the model (which a model read back from the cache keeps)
+    place = next((k for k, c in enumerate(model.code_commands) if c is command),
+                 "plain" if command is model.plain_dynamics() else id(command))
+    return (place, backend, quirks, tuple(locked))
+
+
+def keep_system(model, command, backend: str, quirks: bool, locked, system) -> None:
+    """A compiled system kept for this revision of the model (after its build, which
+    may have formed KANE), and for the cache of built models (keep_built)."""
+    model.derived.table("numeric systems")[
+        _system_key(model, command, backend, quirks, locked)] = (command, system)
+    if model.loaded is not None and model.loaded.keeper is not None:
+        model.loaded.keeper.added()
+
+
+def keep_built(model) -> None:
+    """The numeric systems built so far go to the cache of built models (loader's
+    ModelKeeper), once the work that built them is done."""
+    if model.loaded is not None and model.loaded.keeper is not None:
+        model.loaded.keeper.flush(model)
+
+
+def set_specified(model, system, specified, warn_unassigned: bool) -> None:
+    """Give the system the user's functions of the specified quantities."""
+    functions = {find_symbol(model, k): v for k, v in (specified or {}).items()}
+    unused = [sym for sym in functions if sym not in system.set_specified(functions)]
+    if unused:
+        raise AutolevModelError("specified: " + "; ".join(
+            unused_specified(model, system, sym) for sym in unused))
+    given_fns = {i for i, _ in system.specified_functions}
+    unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
+    if unassigned and warn_unassigned:
+        warnings.warn("specified quantities without a definition or a function, set to 0: "
+                      + ", ".join(map(str, unassigned)), stacklevel=4)
+
+
+def missing_message(model, missing, inputs, kinds, out_dir, stem: str,
+                     program: str) -> str:
+    """What is missing, how to give it, and where a template to fill in was written
+    (the run's output folder; an existing file is never replaced)."""
+    # CODE ALGEBRAIC takes variables as inputs too
+    what = ("constant" if all(model.kind_of(S.base_and_order(k)[0]) == "constant"
+                              for k in missing) else "input")
+    text = (f"{len(missing)} {what}{'s' if len(missing) > 1 else ''} of {program} "
+            f"{'have' if len(missing) > 1 else 'has'} no value: "
+            + some_names(map(display_name, missing), 12)
+            + ".  Autolev's program read them from its .in file; give them with --in FILE "
+            "(an Autolev .in file), --set NAME=VALUE (in the model's units), or INPUT "
+            "statements in the model (--zero-missing, or missing_values='zero', runs with "
+            "0 for each)")
+    if out_dir is None:
+        return text
+    template = Path(out_dir) / f"{stem}-template.in"
+    filled = {k: inputs.values.get(k) for k in inputs.names}
+    inputs.fill_missing(inputs.names, "template")
+    try:
+        folder = Path(out_dir)
+        folder.mkdir(parents=True, exist_ok=True)
+        with open(template, "x", encoding="utf-8", newline="\n") as h:
+            h.write(inputs.file_text(template.name, kinds))
+        text += f"; a template to fill in, with every input: {template}"
+    except FileExistsError:
+        text += f"; the template {template} from before is still there (fill it in)"
+    except OSError as exc:
+        text += f" (no template written: {exc.strerror})"
+    for k, v in filled.items():
+        if v is None:
+            inputs.values.pop(k, None)
+    return text
+
+
+def unused_specified(model, system, sym) -> str:
+    """Why a function given for `sym` would drive nothing."""
+    if model.defs.rhs.get(sym) is not None:
+        shown = str(model.defs.rhs[sym])
+        shown = shown if len(shown) <= 60 else shown[:57] + "..."
+        return (f"{sym} is defined in the model ({sym} = {shown}), so a "
+                "function for it would be ignored; functions drive only SPECIFIED "
+                "quantities the model leaves undefined (remove its definition to drive it)")
+    if sym in system.params or sym in system.states:
+        return f"{sym} is not a SPECIFIED quantity but an input (give it a value instead)"
+    return f"{sym} does not enter this run's equations or outputs"
+
+
+def degree_rates_note(inputs, names) -> None:
+    """Autolev's programs converted DEG inputs but not DEG/S: say so when it matters."""
+    odd = [display_name(k) for k in names
+           if units.has_degrees(inputs.unit_of(k)) and inputs.values[k].given != 0]
+    if odd:
+        warnings.warn(
+            "inputs in " + ", ".join(sorted({inputs.unit_of(k) for k in names
+                                             if units.has_degrees(inputs.unit_of(k))}))
+            + f" ({', '.join(odd)}) are used as radian rates, unconverted, as Autolev's "
+            "programs did; give them in RAD/S if that was not meant", stacklevel=3)

@@ -1,0 +1,106 @@
+"""Results of a run: the tables of its output files and the Result it returns.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+@dataclass
+class OutputTable:
+    """The rows of one output file (values in the file's units)."""
+
+    filename: str
+    labels: list
+    units: list
+    data: np.ndarray
+
+    def __getitem__(self, label: str) -> np.ndarray:
+        for j, name in enumerate(self.labels):
+            if name.upper() == label.upper():
+                return self.data[:, j]
+        raise KeyError(label)
+
+    def __contains__(self, label) -> bool:
+        return isinstance(label, str) and any(n.upper() == label.upper()
+                                              for n in self.labels)
+
+
+@dataclass
+class Result:
+    """What a run produced.
+
+    t: the print times (DYNAMICS, ODE), or the swept input's values (ALGEBRAIC with a
+    sweep, in its unit); states: one row per print time, internal units (radians);
+    outputs: one OutputTable per OUTPUT statement, in the units the OUTPUT asked for;
+    encoded: the ENCODE quantities at the last row; failure: Autolev's message when
+    the run stopped early (the rows before it are kept)."""
+
+    kind: str
+    name: str
+    t: np.ndarray
+    states: np.ndarray
+    state_names: list
+    outputs: list
+    encoded: dict
+    inputs: dict
+    solution: dict = field(default_factory=dict)
+    files: list = field(default_factory=list)
+    failure: str | None = None
+    failure_time: float | None = None
+    stats: dict = field(default_factory=dict)
+    system: object = field(default=None, repr=False)   # the NumericSystem (rhs, outputs)
+
+    @property
+    def ok(self) -> bool:
+        return self.failure is None
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        """A state's column (by name, any case), else the first output column so
+        labelled, else an ALGEBRAIC/NONLINEAR unknown."""
+        for j, s in enumerate(self.state_names):
+            if s.upper() == name.upper():
+                return self.states[:, j]
+        for table in self.outputs:
+            try:
+                return table[name]
+            except KeyError:
+                pass
+        for k, v in self.solution.items():
+            if k.upper() == name.upper():
+                return v
+        raise KeyError(name)
+
+    def __repr__(self) -> str:
+        status = "ok" if self.ok else f"failed: {self.failure}"
+        return (f"<autolev Result {self.kind} {self.name}: {len(self.t)} rows, "
+                f"{len(self.outputs)} output files, {status}>")
+
+
+def split_outputs(system, values, result_rows, writer, encoded_out: dict) -> None:
+    pos = 0
+    for k, cols in enumerate(system.files):
+        vals = values[pos:pos + len(cols)].tolist()
+        # units.to_output, with the unit test made once per column
+        row = [v * 180 / math.pi if deg else v
+               for v, deg in zip(vals, system.degree_columns[k])]
+        pos += len(cols)
+        result_rows[k].append(row)
+        if writer is not None:
+            writer.write(k, row)
+    for name, shape in system.encode_shapes:
+        size = int(np.prod(shape)) if shape else 1
+        chunk = values[pos:pos + size]
+        pos += size
+        encoded_out[name] = chunk.reshape(shape) if shape else float(chunk[0])
+
+
+def tables_of(system, rows, stem: str) -> list[OutputTable]:
+    out = []
+    for k, cols in enumerate(system.files):
+        data = np.array(rows[k], dtype=float).reshape(len(rows[k]), len(cols))
+        out.append(OutputTable(f"{stem}.{k + 1}", [c.label for c in cols],
+                               [c.unit for c in cols], data))
+    return out
