@@ -115,9 +115,10 @@ def test_the_page_shows_the_figure_in_a_real_browser(pendulum_run, tmp_path):
     png = tmp_path / "shot.png"
     screenshot(page, png)
     links = colour_count(png, (0x1f, 0x77, 0xb4))        # the links' blue
-    dots = colour_count(png, (0xff, 0x7f, 0x0e))         # the points' orange
+    joints = colour_count(png, (0xff, 0x7f, 0x0e))       # a joint's orange (NO)
+    masses = colour_count(png, (0xd6, 0x27, 0x28))       # the particles' red, larger
     # two links of 1 m in a 2 m by 2 m box on a 560-pixel canvas: hundreds of pixels
-    assert links > 600 and dots > 60, (links, dots)
+    assert links > 600 and joints > 20 and masses > 2 * joints, (links, joints, masses)
     # a page with no figure in it draws none of them
     empty = animation.Motion("N", ["NO"], [], [], np.array([0.0]), np.zeros((1, 1, 3)))
     bare = animation.write_html(empty, tmp_path / "bare.html", "nothing")
@@ -375,7 +376,7 @@ def test_the_gif_says_how_far_it_is(monkeypatch):
 
 def test_autolev_animate_says_when_it_writes_no_gif(tmp_path, monkeypatch, capsys):
     from autolev import cli
-    monkeypatch.setattr(cli, "_has_matplotlib", lambda: False)
+    monkeypatch.setattr(cli.run, "has_matplotlib", lambda: False)
     code = cli.main(["animate", str(EXAMPLES / "double_pendulum.al"), "--out", str(tmp_path),
                      "--tfinal", "0.2", "-q"])
     assert code == 0

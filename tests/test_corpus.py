@@ -56,7 +56,7 @@ def test_every_corpus_model_parses_except_genuine_errors(corpus):
 
 def test_check_reports_an_error_exactly_when_convert_fails(corpus):
     import autolev
-    from autolev.cli import check_file
+    from autolev.cli.check import check_file
     disagree = []
     models = corpus_bench.corpus_models(corpus)
     for ident, path in models:

@@ -13,6 +13,7 @@ from .io import CodeCommand
 from .numerics.files import safe_stem
 from .numerics.prepare import keep_built
 from .numerics.results import Result
+from .numerics.command import names_a_quantity
 from .numerics.options import RunOptions
 from .numerics.run import run_command
 
@@ -53,6 +54,11 @@ class SimulationMixin:
                       + (f"\n  {done.result.failure}" if done.result.failure else "")
                       + "".join(f"\n  wrote {f}" for f in done.result.files))
         return results
+
+    def names_a_quantity(self, name: str) -> bool:
+        """Whether `name` (as --set or an override gives it: Q1, Q1', Q1P, TFINAL, T)
+        is an integration parameter or a quantity of the model."""
+        return names_a_quantity(self, name)
 
     def commands_named(self, code=None) -> list[CodeCommand]:
         """The CODE commands `code` names (see code_command; a list names several, in

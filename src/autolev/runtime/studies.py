@@ -36,7 +36,7 @@ STUDIES = ("linearize", "simulate")
 # options a study passes on: Model.linearize's and Model.simulate's keywords
 _OPTIONS = {
     "linearize": {"inputs", "code", "backend", "infile", "missing_values", "overrides",
-                  "constraints", "dependent", "locked"},
+                  "constraints", "dependent", "locked", "specified"},
     "simulate": {"method", "backend", "infile", "specified", "compiled", "constraints",
                  "quirks", "missing_values", "code"},
 }

@@ -59,6 +59,17 @@ class Linearization:
         """The eigenvalues of A, by real part, then imaginary part."""
         return self.modes()[0]
 
+    def eigenvalue_table(self) -> str:
+        """The eigenvalues as CSV: real part, imaginary part, and for a complex pair the
+        frequency (Hz) and damping ratio."""
+        lines = ["real,imaginary,frequency_hz,damping_ratio"]
+        for ev in self.eigenvalues():
+            mag = abs(ev)
+            freq = f"{abs(ev.imag) / (2 * np.pi):.12g}" if ev.imag != 0 else ""
+            zeta = f"{0.0 - ev.real / mag:.12g}" if ev.imag != 0 and mag > 0 else ""
+            lines.append(f"{ev.real:.15g},{ev.imag:.15g},{freq},{zeta}")
+        return "\n".join(lines) + "\n"
+
     def modes(self) -> tuple[np.ndarray, np.ndarray]:
         """(eigenvalues, eigenvectors as columns, each of unit norm), in the order of
         `eigenvalues`."""
@@ -405,31 +416,3 @@ def _speed_positions(system) -> list:
         if expr in index:
             positions.add(index[expr])
     return sorted(positions)
-
-
-
-def eigenvalue_table(lin: Linearization) -> str:
-    """The eigenvalues as CSV: real part, imaginary part, and for a complex pair the
-    frequency (Hz) and damping ratio."""
-    lines = ["real,imaginary,frequency_hz,damping_ratio"]
-    for ev in lin.eigenvalues():
-        mag = abs(ev)
-        freq = f"{abs(ev.imag) / (2 * np.pi):.12g}" if ev.imag != 0 else ""
-        zeta = f"{0.0 - ev.real / mag:.12g}" if ev.imag != 0 and mag > 0 else ""
-        lines.append(f"{ev.real:.15g},{ev.imag:.15g},{freq},{zeta}")
-    return "\n".join(lines) + "\n"
-
-
-def sweep_table(name: str, values, linearizations) -> str:
-    """Eigenvalues against a swept quantity as CSV: the value, then the real and
-    imaginary part of each eigenvalue (in `eigenvalues()` order)."""
-    values = list(values)
-    n = len(linearizations[0].states) if linearizations else 0
-    head = [name] + [f"{part}{k + 1}" for k in range(n) for part in ("re", "im")]
-    lines = [",".join(head)]
-    for v, lin in zip(values, linearizations):
-        cells = [f"{v:.15g}"]
-        for ev in lin.eigenvalues():
-            cells += [f"{ev.real:.15g}", f"{ev.imag:.15g}"]
-        lines.append(",".join(cells))
-    return "\n".join(lines) + "\n"

@@ -1,0 +1,111 @@
+"""The `autolev` command line."""
+from __future__ import annotations
+
+import argparse
+import contextlib
+import os
+import sys
+
+from .. import __version__
+from ..errors import AutolevError, AutolevInternalError, AutolevSyntaxError
+from .cache import add_cache
+from .check import add_check
+from .code import add_code
+from .common import UsageError, print_diagnostics, print_warning
+from .convert import add_convert
+from .linearize import add_linearize
+from .responses import add_transcript, add_verify
+from .run import add_animate, add_run
+
+# the exit status of a bug in autolev (EX_SOFTWARE of sysexits.h)
+EXIT_INTERNAL = 70
+
+
+# set to 1: an internal error is shown with Python's traceback
+TRACEBACK_VARIABLE = "AUTOLEV_TRACEBACK"
+
+
+EPILOG = f"""exit status: 0 success; 1 the model has errors, or a command failed; 2 wrong use
+of the command line; {EXIT_INTERNAL} an internal error (a bug in autolev, not in the model:
+the message asks for a report; {TRACEBACK_VARIABLE}=1 in the environment shows its Python
+traceback); 130 interrupted."""
+
+
+COMMANDS = (add_check, add_convert, add_run, add_code, add_linearize, add_animate,
+            add_transcript, add_verify, add_cache)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(
+        prog="autolev",
+        description="Autolev 4.1 models in Python: check, translate and run .al files.",
+        epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--version", action="version", version=f"autolev {__version__}")
+    sub = ap.add_subparsers(dest="command", metavar="COMMAND")
+    for add in COMMANDS:
+        add(sub)
+    return ap
+
+
+@contextlib.contextmanager
+def _warnings_as_notes():
+    """Warnings printed as one-line notes while a command runs (not for the process:
+    a caller of main() keeps its own warning display)."""
+    import warnings
+    shown = warnings.showwarning
+    warnings.showwarning = print_warning
+    try:
+        yield
+    finally:
+        warnings.showwarning = shown
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = build_parser()
+    ns = ap.parse_args(argv)
+    if ns.command is None:
+        ap.print_help()
+        return 2
+    try:
+        with _warnings_as_notes():
+            return ns.func(ns)
+    except UsageError as exc:
+        print(f"autolev {ns.command}: error: {exc}", file=sys.stderr)
+        print_diagnostics(exc.diagnostics)
+        return 2
+    except AutolevSyntaxError as exc:
+        print(exc, file=sys.stderr)
+        return 1
+    except AutolevInternalError as exc:
+        _report_internal_error(exc)
+        return EXIT_INTERNAL
+    except AutolevError as exc:
+        print(f"autolev: error: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 130
+    except MemoryError:
+        print("autolev: error: out of memory (the machine's limit, not a fault of the model)",
+              file=sys.stderr)
+        return 1
+    except BrokenPipeError:
+        # output piped into `head` and the like: stop quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
+    except Exception as exc:  # noqa: BLE001 -- what escapes every stage is autolev's bug
+        internal = AutolevInternalError(getattr(ns, "file", None) or "autolev",
+                                        f"running `autolev {ns.command}`", exc)
+        internal.__cause__ = exc
+        _report_internal_error(internal)
+        return EXIT_INTERNAL
+
+
+def _report_internal_error(exc: AutolevInternalError) -> None:
+    """The bug's message; its Python traceback only when asked for."""
+    print(exc, file=sys.stderr)
+    if os.environ.get(TRACEBACK_VARIABLE) == "1":
+        import traceback
+        traceback.print_exception(exc, file=sys.stderr)
+    else:
+        print(f"autolev: note: {TRACEBACK_VARIABLE}=1 shows where in autolev it happened",
+              file=sys.stderr)

@@ -1,0 +1,204 @@
+"""`autolev linearize`: eigenvalues at an operating point, or along a sweep.
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from pathlib import Path
+
+from .common import (UsageError, has_matplotlib, listed, load_model, model_value_options,
+                     name_values, overwrite_option, specified_values)
+
+
+def cmd_linearize(ns: argparse.Namespace) -> int:
+    """Linearize a model's CODE DYNAMICS at an operating point; print the eigenvalues."""
+    from ..runtime.errors import AutolevModelError
+
+    path = Path(ns.file)
+    overrides, point, sweep = _linearize_request(ns)
+    model = load_model(path)
+    if model is None:
+        print(f"{path}: not linearized", file=sys.stderr)
+        return 1
+    options = dict(inputs=ns.inputs.split(",") if ns.inputs else None,
+                   code=int(ns.code) if ns.code and ns.code.isdigit() else ns.code,
+                   backend=ns.backend, infile=ns.infile, overrides=overrides,
+                   missing_values="zero" if ns.zero_missing else "refuse",
+                   constraints=_constraint_values(model, ns.constraint) or None,
+                   dependent=listed(ns.dependent) or None, locked=listed(ns.lock) or None,
+                   specified=specified_values(model, ns))
+    if sweep is not None:
+        return _linearize_sweep(path, model, sweep, point, options, ns)
+    try:
+        lin = model.linearize(point, **options)
+    except AutolevModelError as exc:
+        print(f"{path}: error: {exc}", file=sys.stderr)
+        return 1
+    return _report_eigenvalues(path, lin, ns.out, ns.overwrite)
+
+
+def _linearize_request(ns: argparse.Namespace):
+    """(--set values, --at point, --sweep range or None) from the options; UsageError
+    for what is wrong with them."""
+    overrides = name_values(ns.set, "--set", numbers=True)
+    point = {}
+    for name, text in name_values(ns.at, "--at").items():
+        try:
+            point[name] = float(text)
+        except ValueError:
+            point[name] = math.nan
+        if not math.isfinite(point[name]):
+            raise UsageError(f"--at {name}={text}: not a finite number")
+    sweep = _sweep_range(ns.sweep) if ns.sweep else None
+    if ns.plot:
+        if sweep is None:
+            raise UsageError("--plot draws a --sweep")
+        if not has_matplotlib():
+            raise UsageError("--plot needs matplotlib (pip install 'autolev[plot]')")
+    return overrides, point, sweep
+
+
+def _constraint_values(model, names) -> list:
+    """The model's quantities named by --constraint, each matrix taken element by
+    element; UsageError for a name the model does not have."""
+    constraints = []
+    for name in listed(names):
+        try:
+            value = model.quantity(name)
+        except KeyError:
+            raise UsageError(f"--constraint {name}: the model has no quantity of that "
+                             "name") from None
+        constraints += list(value) if hasattr(value, "shape") else [value]
+    return constraints
+
+
+def _report_eigenvalues(path: Path, lin, out_dir: str | None, overwrite: bool = False) -> int:
+    """Print a linearization's eigenvalues (and write them into `out_dir`)."""
+    from ..runtime.tools import safe_stem
+    from ..runtime.tools import write_output
+
+    if not lin.steady:
+        print(f"{path}: warning: not an equilibrium or a steady motion: the accelerations "
+              f"are {', '.join(f'{a:.6g}' for a in lin.accelerations)} there "
+              "(the eigenvalues describe only the motion near this instant)", file=sys.stderr)
+    table = lin.eigenvalue_table()
+    print(f"{len(lin.states)} states ({', '.join(lin.states)}); inputs: "
+          f"{', '.join(lin.inputs) or 'none'}")
+    print(table, end="")
+    if out_dir:
+        out = Path(out_dir)
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+            target = write_output(out, f"{safe_stem(path.stem)}-eigenvalues.csv", table,
+                                  overwrite)
+        except OSError as exc:
+            print(f"autolev linearize: cannot write into {out}: {exc.strerror}",
+                  file=sys.stderr)
+            return 1
+        print(f"  wrote {target}")
+    return 0
+
+
+def _sweep_range(text: str):
+    """NAME=START:STOP:N as (name, values); UsageError for anything else."""
+    name, sep, rest = text.partition("=")
+    parts = rest.split(":")
+    try:
+        start, stop, count = float(parts[0]), float(parts[1]), int(parts[2])
+    except (IndexError, ValueError):
+        count = 0
+    if not sep or not name.strip() or len(parts) != 3 or count < 1 \
+            or not (math.isfinite(start) and math.isfinite(stop)):
+        raise UsageError(f"--sweep expects NAME=START:STOP:N (N >= 1), not {text!r}")
+    if count == 1:
+        return name.strip(), [start]
+    return name.strip(), [start + (stop - start) * k / (count - 1) for k in range(count)]
+
+
+def _linearize_sweep(path: Path, model, sweep, point: dict, options: dict,
+                     ns: argparse.Namespace) -> int:
+    """Eigenvalues against one quantity of the operating point, by the studies'
+    sweep (worker processes when it pays): CSV on stdout (and in --out as
+    NAME-sweep.csv; with --plot, NAME-sweep.png in --out or here)."""
+    from ..runtime.tools import safe_stem
+    from ..runtime.tools import write_output
+    name, values = sweep
+    table = model.sweep([dict(point, **{name: v}) for v in values], what="linearize",
+                        as_frame=False, **options)
+    if "failure" in table.names:
+        first = next(k for k, why in enumerate(table["failure"]) if why)
+        print(f"{path}: error: at {name} = {values[first]:.6g}: {table['failure'][first]}",
+              file=sys.stderr)
+        return 1
+    n = sum(c.startswith("re") for c in table.names)
+    eigenvalues = [[complex(table[f"re{k}"][j], table[f"im{k}"][j]) for k in range(1, n + 1)]
+                   for j in range(len(values))]
+    csv = "\n".join([",".join([name] + [f"{p}{k}" for k in range(1, n + 1) for p in ("re", "im")])]
+                    + [",".join([f"{v:.15g}"] + [f"{x:.15g}" for ev in row
+                                                  for x in (ev.real, ev.imag)])
+                       for v, row in zip(values, eigenvalues)]) + "\n"
+    print(csv, end="")
+    unsteady = [v for v, steady in zip(values, table["steady"]) if not steady]
+    if unsteady:
+        print(f"{path}: warning: not an equilibrium or a steady motion at {name} = "
+              + ", ".join(f"{v:.6g}" for v in unsteady[:5])
+              + (" ..." if len(unsteady) > 5 else ""), file=sys.stderr)
+    if ns.out or ns.plot:
+        folder = Path(ns.out or ".")
+        stem = safe_stem(path.stem)
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+            written = []
+            if ns.out:
+                written.append(write_output(folder, f"{stem}-sweep.csv", csv, ns.overwrite))
+            if ns.plot:
+                from ..plots import write_eigenvalue_png
+                written.append(write_eigenvalue_png(
+                    folder / f"{stem}-sweep.png", name, values, eigenvalues,
+                    f"{path.name}: eigenvalues", ns.overwrite))
+        except OSError as exc:
+            print(f"autolev linearize: cannot write into {folder}: {exc.strerror or exc}",
+                  file=sys.stderr)
+            return 1
+        for target in written:
+            print(f"  wrote {target}")
+    return 0
+
+
+def add_linearize(sub) -> None:
+    lin = sub.add_parser("linearize", help="eigenvalues of a model at an operating point",
+                         description="Linearize FILE's first CODE DYNAMICS (or --code) at "
+                         "an operating point (--at, in SI units and radians; the rest from "
+                         "INPUT, --in and --set; states and specified quantities otherwise "
+                         "0) and print the eigenvalues (CSV: real, imaginary, frequency in "
+                         "Hz, damping ratio).  Exact Jacobians through the Z's.")
+    model_value_options(lin)
+    lin.add_argument("--at", action="append", metavar="NAME=VALUE",
+                     help="the operating point: a constant, coordinate, speed or specified "
+                     "quantity in SI units and radians; repeatable")
+    lin.add_argument("--inputs", metavar="NAMES",
+                     help="the specified quantities that are inputs (B's columns), "
+                     "comma-separated (default: all without a definition)")
+    lin.add_argument("--code", metavar="FILE", help="which CODE DYNAMICS (file name or index)")
+    lin.add_argument("--lock", action="append", metavar="NAMES",
+                     help="coordinates held at their values, as by a rigid joint (each "
+                     "with Q' = U: U's equation is dropped); comma-separated, repeatable")
+    lin.add_argument("--constraint", action="append", metavar="NAME",
+                     help="a quantity of the model that is 0 on the motion (a configuration "
+                     "constraint, scalar or matrix): the point is put on it and the state "
+                     "reduced to the independent coordinates; repeatable")
+    lin.add_argument("--dependent", action="append", metavar="NAMES",
+                     help="with --constraint: the coordinates the constraints fix "
+                     "(default: chosen where the constraints' Jacobian is best conditioned)")
+    lin.add_argument("--sweep", metavar="NAME=START:STOP:N",
+                     help="eigenvalues at N values of one quantity of the operating point "
+                     "(SI units, radians): CSV of the value and each eigenvalue's real and "
+                     "imaginary part")
+    lin.add_argument("--plot", action="store_true",
+                     help="with --sweep: also draw NAME-sweep.png, real and imaginary parts "
+                     "against the swept quantity (needs matplotlib)")
+    lin.add_argument("--out", metavar="DIR",
+                     help="also write NAME-eigenvalues.csv (or NAME-sweep.csv) there")
+    overwrite_option(lin)
+    lin.set_defaults(func=cmd_linearize)

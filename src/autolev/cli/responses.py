@@ -1,0 +1,103 @@
+"""`autolev transcript` and `autolev verify`: the responses Autolev displayed,
+written and replayed.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ..errors import AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError, printable
+from .common import UsageError, overwrite_option, print_diagnostics
+
+
+def cmd_transcript(ns: argparse.Namespace) -> int:
+    """The responses Autolev displayed for each statement, as its .all files."""
+    return print_transcript(Path(ns.file), Path(ns.out) if ns.out else None, ns.overwrite)
+
+
+def print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False) -> int:
+    from ..runtime.tools import write_output
+    from ..transcript import transcript
+    if path.suffix.lower() == ".py":
+        raise UsageError(f"{path}: a transcript is made from the .al model")
+    try:
+        text = transcript(path)
+    except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
+        print_diagnostics(exc.diagnostics)
+        return 1
+    if out_dir is None:
+        sys.stdout.write(text)
+        return 0
+    target = out_dir / f"{path.stem}.all"
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+        write_output(out_dir, target.name, text, overwrite)
+    except OSError as exc:
+        print(f"autolev transcript: cannot write {target}: {exc.strerror}", file=sys.stderr)
+        return 1
+    print(f"wrote {target}")
+    return 0
+
+
+def cmd_verify(ns: argparse.Namespace) -> int:
+    """Replay Autolev's recorded responses; exit 0 only when every comparable one matches."""
+    import json
+
+    from autolev.verification import verify
+
+    path = Path(ns.file)
+    if not path.is_file():
+        raise UsageError(f"{path}: no such file")
+    report = verify(path, points=ns.points)
+    if ns.json:
+        print(json.dumps(report.as_dict(), indent=1))
+    else:
+        if report.error:
+            print(printable(f"{path}: {report.error}"), file=sys.stderr)
+        for o in report.outcomes:
+            if o.status == "match" and not ns.all:
+                continue
+            r = o.response
+            line = printable(f"{path}:{r.line}: ({r.number}) {r.lhs}: {o.status}: "
+                             f"{o.detail}")
+            if o.status == "mismatch" and o.ours is not None:
+                line += f"\n    ours {_short(o.ours)}\n    Autolev's {_short(o.theirs)}"
+            print(line)
+        print(report.summary())
+    return 0 if report.ok else 1
+
+
+def _short(v) -> str:
+    import numpy as np
+    a = np.asarray(v, dtype=complex)
+    a = a.real if np.all(np.abs(a.imag) < 1e-12) else a
+    return np.array2string(a, precision=8, max_line_width=100)
+
+
+def add_transcript(sub) -> None:
+    tr = sub.add_parser("transcript", help="the responses Autolev displayed (.all)",
+                        description="Print what Autolev displayed for FILE: every input "
+                        "line numbered (n), and after each assignment the value it defined "
+                        "(with the Z variables it uses), as in Autolev's .all files.  "
+                        "`autolev verify NAME.all` replays such a transcript.")
+    tr.add_argument("file", metavar="FILE", help=".al model")
+    tr.add_argument("--out", metavar="DIR", help="write DIR/NAME.all instead of printing")
+    overwrite_option(tr)
+    tr.set_defaults(func=cmd_transcript)
+
+
+def add_verify(sub) -> None:
+    ver = sub.add_parser("verify", help="check a translation against Autolev's responses",
+                         description="Replay the responses Autolev printed (an .all session "
+                         "saved by SAVE, or a .al file with '% ->' response comments): each "
+                         "is compared with our translation's value at the same point of the "
+                         "model, numerically at several values of every name, to the digits "
+                         "Autolev displayed.  Exit status 0 only when every comparable "
+                         "response matches.")
+    ver.add_argument("file", metavar="FILE", help=".all session or .al file")
+    ver.add_argument("--json", action="store_true", help="machine-readable report")
+    ver.add_argument("--all", action="store_true", help="list the matches too")
+    ver.add_argument("--points", type=int, default=3, metavar="N",
+                     help="sample points per response (default 3)")
+    ver.set_defaults(func=cmd_verify)

@@ -1,0 +1,216 @@
+"""`autolev run` and `autolev animate`: a model's CODE commands performed, their
+files written, plotted and animated.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from .common import (UsageError, has_matplotlib, load_model, name_values, positive_int,
+                     run_options, specified_values, statement_label)
+from .responses import print_transcript
+
+
+def cmd_run(ns: argparse.Namespace) -> int:
+    """Translate, build and run the model's CODE commands; write Autolev's files."""
+    import time
+
+    path = Path(ns.file)
+    overrides = _run_overrides(ns)
+    start = time.monotonic()
+    model = load_model(path)
+    if model is None:
+        print(f"{path}: not run", file=sys.stderr)
+        return 1
+    if not ns.quiet and (model.code_commands or ns.first_dynamics):
+        print(f"{path}: built in {time.monotonic() - start:.1f} s")
+    if not model.code_commands and not ns.first_dynamics:
+        # what Autolev showed for a model that writes no program: its responses
+        print(f"{path}: no CODE command: the responses Autolev displayed follow "
+              "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
+        return print_transcript(path, None)
+    unknown = [name for name in overrides if not model.names_a_quantity(name)]
+    if unknown:
+        raise UsageError(f"--set {', '.join(unknown)}: the model has no quantity of "
+                         f"{'that name' if len(unknown) == 1 else 'those names'}")
+    commands = _commands_to_run(model, ns, path)
+    if not commands:
+        print(f"{path}: error: no CODE DYNAMICS or ODE to animate", file=sys.stderr)
+        return 1
+    return _run_and_report(model, commands, overrides, specified_values(model, ns), ns, path)
+
+
+def _run_overrides(ns: argparse.Namespace) -> dict:
+    """--set and --tfinal as {NAME: value}, after checking --method and --plot
+    (UsageError)."""
+    from ..runtime.tools import METHODS
+    if ns.method is not None and ns.method not in METHODS:
+        raise UsageError(f"unknown --method {ns.method} (one of {', '.join(METHODS)})")
+    overrides = name_values(ns.set, "--set", numbers=True)
+    if ns.tfinal is not None:
+        overrides["TFINAL"] = ns.tfinal
+    if ns.plot and not has_matplotlib():
+        raise UsageError("--plot needs matplotlib (pip install 'autolev[plot]')")
+    return overrides
+
+
+def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list:
+    """The CODE commands --code or --first-dynamics chose (all by default; none when
+    there is nothing to animate)."""
+    from ..runtime.errors import AutolevModelError
+    if not model.code_commands:
+        print(f"{path}: no CODE command; animating it as CODE DYNAMICS", file=sys.stderr)
+        return [model.plain_dynamics()]
+    if ns.code:
+        try:
+            return model.commands_named([int(name) if name.isdigit() else name
+                                         for name in ns.code])
+        except AutolevModelError as exc:
+            raise UsageError(f"--code: {exc}") from None
+    if ns.first_dynamics:
+        return [c for c in model.code_commands if c.kind in ("dynamics", "ode")][:1]
+    return list(model.code_commands)
+
+
+def _run_and_report(model, commands: list, overrides: dict, specified: dict,
+                    ns: argparse.Namespace, path: Path) -> int:
+    from ..runtime.errors import AutolevModelError
+    from ..runtime.tools import safe_stem
+    label = statement_label(model, path)
+    written_by: dict[str, str] = {}
+    for command in commands:
+        try:
+            stem = safe_stem(command.filename).lower()
+        except AutolevModelError:
+            continue                # an unusable name: its run says so
+        if stem in written_by:
+            print(f"{label(command)}: warning: CODE {command.filename} writes the same "
+                  f"files ({safe_stem(command.filename)}.1, ...) as CODE {written_by[stem]}; "
+                  "its run replaces them (give --out per program to keep both)",
+                  file=sys.stderr)
+        written_by[stem] = command.filename
+    out_dir = Path(ns.out)
+    status = 0
+    from ..runtime.tools import RunOptions
+    runs = model.run_commands(commands, out_dir, keep_going=True, options=RunOptions(
+        method=ns.method, backend=ns.backend, infile=ns.infile,
+        progress=None if ns.quiet else sys.stderr, overrides=overrides, specified=specified,
+        quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate), overwrite=ns.overwrite,
+        missing_values="zero" if ns.zero_missing else "refuse"))
+    for done in runs:
+        if done.error is not None:
+            print(f"{label(done.command)}: error: {done.error}", file=sys.stderr)
+            status = 1
+            continue
+        if done.result.failure:
+            print(f"{label(done.command)}: {done.result.failure}", file=sys.stderr)
+            status = 1
+        if not ns.quiet:
+            print(done.summary())
+            for f in done.result.files:
+                print(f"  wrote {f}")
+        status = max(status, _after_run(model, done, out_dir, ns, label(done.command)))
+    return status
+
+
+def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -> int:
+    """--animate and --plot of one finished run."""
+    from ..runtime.errors import AutolevModelError
+    result = done.result
+    status = 0
+    if ns.animate and result.kind in ("dynamics", "ode") and len(result.t):
+        try:
+            for f in _animate(model, result, out_dir, ns, label):
+                if not ns.quiet:
+                    print(f"  wrote {f}")
+        except AutolevModelError as exc:
+            print(f"{label}: error: cannot animate {done.command.filename}: {exc}",
+                  file=sys.stderr)
+            status = 1
+        except OSError as exc:
+            print(f"{label}: error: cannot write the animation into {out_dir}: "
+                  f"{exc.strerror or exc}", file=sys.stderr)
+            status = 1
+    if ns.plot and result.outputs:
+        from ..plots import write_pngs
+        try:
+            pictures = write_pngs(result, out_dir, ns.overwrite)
+        except OSError as exc:
+            print(f"{label}: error: cannot write the plots into {out_dir}: "
+                  f"{exc.strerror or exc}", file=sys.stderr)
+            return 1
+        for f in pictures:
+            if not ns.quiet:
+                print(f"  wrote {f}")
+    return status
+
+
+def cmd_animate(ns: argparse.Namespace) -> int:
+    """`run` of one CODE DYNAMICS (the first, or --code), with its motion written."""
+    if any(f in ("gif", "mp4") for f in ns.formats or ()) and not has_matplotlib():
+        raise UsageError("a GIF or MP4 needs matplotlib (pip install 'autolev[plot]'); "
+                         "--format html needs nothing more")
+    ns.code = [ns.code] if ns.code is not None else None
+    return cmd_run(ns)
+
+
+def _animate(model, result, out_dir: Path, ns, label: str) -> list[Path]:
+    from ..animation import MAX_FRAMES, motion, write_html, write_movie
+    m = motion(model, result, ns.frames or MAX_FRAMES)
+    for note in m.notes:
+        print(f"{label}: note: {note}", file=sys.stderr)
+    formats = ns.formats or ["html"] + (["gif"] if has_matplotlib() else [])
+    if not ns.formats and not has_matplotlib():
+        print("autolev: note: no GIF: it needs matplotlib (pip install 'autolev[plot]'); "
+              "the HTML page needs nothing more", file=sys.stderr)
+    from ..runtime.tools import Written
+    names = [f"{result.name}.{fmt}" for fmt in formats]
+    record = Written(out_dir)
+    record.check(names, ns.overwrite)        # before drawing: nothing of theirs replaced
+    written = []
+    for fmt, name in zip(formats, names):
+        path = out_dir / name
+        if fmt == "html":
+            written.append(write_html(m, path, f"{result.name} ({model.name})"))
+        else:
+            written.append(write_movie(m, path, progress=None if ns.quiet else sys.stderr))
+        record.record([name])
+    return written
+
+
+def add_run(sub) -> None:
+    run = sub.add_parser("run", help="run a model's CODE commands (simulate)",
+                         description="Translate and build FILE, then perform its CODE "
+                         "commands with its INPUT values: DYNAMICS and ODE are integrated, "
+                         "ALGEBRAIC and NONLINEAR solved.  Writes Autolev's files NAME.in, "
+                         "NAME.1 ... NAME.k (one per OUTPUT) and NAME.dir into --out.")
+    run_options(run)
+    run.add_argument("--plot", action="store_true",
+                     help="also write a PNG per output file (needs matplotlib)")
+    run.add_argument("--animate", action="store_true",
+                     help="also write the motion of each CODE DYNAMICS: NAME.html (a 3-D "
+                     "view to rotate and scrub) and, with matplotlib, NAME.gif")
+    run.add_argument("--code", action="append", metavar="FILE",
+                     help="run only this CODE command (its file name, e.g. bike.c, or "
+                     "its 0-based index); repeatable")
+    run.set_defaults(func=cmd_run, formats=None, frames=None, first_dynamics=False)
+
+
+def add_animate(sub) -> None:
+    anim = sub.add_parser("animate", help="run a model and write its motion as a picture",
+                          description="Run FILE's first CODE DYNAMICS (or --code) and write "
+                          "a stick figure of its points in the Newtonian frame over the run: "
+                          "NAME.html, a self-contained page with a 3-D view to rotate and a "
+                          "time slider, and NAME.gif (or .mp4) with matplotlib.  The run's "
+                          "own files are written too.")
+    run_options(anim)
+    anim.add_argument("--code", metavar="FILE",
+                      help="the CODE command to animate (default: the first DYNAMICS/ODE)")
+    anim.add_argument("--format", dest="formats", action="append",
+                      choices=("html", "gif", "mp4"),
+                      help="what to write (repeatable; default: html, and gif when "
+                      "matplotlib is installed)")
+    anim.add_argument("--frames", type=positive_int, default=None, metavar="N",
+                      help="frames at most (default 400; the rows are sampled evenly)")
+    anim.set_defaults(func=cmd_animate, plot=False, animate=True, first_dynamics=True)
