@@ -10,7 +10,7 @@ from pathlib import Path
 from .. import __version__
 from ..runtime import units
 from ..runtime.numerics.files import header as output_header
-from ..runtime.printer import CodePrinter
+from ..runtime.printer import CPrinter
 from .plan import (Plan, c_name, check_names, element_indices, input_file_name, printed,
                    program_name, shown_values, with_sources)
 
@@ -109,7 +109,7 @@ class CProgram:
         """(eqns1's statements, output()'s) as lines, intermediates in z slots."""
         p = self.plan
         part = printed(p.statements, shown_values(p), self.where,
-                       lambda where: CodePrinter("c", where), lambda k: f"z[{k}]")
+                       CPrinter, lambda k: f"z[{k}]")
         self.z_size = part.top
         computed = _lines(part, p.sources)
         if p.solving is not None:
@@ -120,7 +120,7 @@ class CProgram:
         """eqns1's solution of the equations for the unknowns, before the outputs."""
         solving, n = self.plan.solving, len(self.unknowns)
         part = printed(solving.statements, solving.matrix + solving.right, self.where,
-                       lambda where: CodePrinter("c", where), lambda k: f"z[{k}]")
+                       CPrinter, lambda k: f"z[{k}]")
         self.z_size = max(self.z_size, part.top)
         matrix, right = part.values[:n * n], part.values[n * n:]
         body = _lines(part, self.plan.sources)

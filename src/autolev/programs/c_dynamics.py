@@ -6,7 +6,7 @@ M x = F, solved at each call); kutta, solve, readf, pgets and writef follow."""
 from __future__ import annotations
 
 from ..runtime import symbols as S
-from ..runtime.printer import CodePrinter
+from ..runtime.printer import CPrinter
 from .c import (LIBRARY_NAMES, READING_AND_WRITING, READING_PROTOTYPES, RESERVED, SOLVE,
                 _lines, banner, by_name, encoded_declarations, farewell, headings_and_units,
                 opening, output_lines, wrap)
@@ -33,7 +33,7 @@ class CDynamicsProgram:
 
     def text(self) -> str:
         p = self.plan
-        parts = print_dynamics(p, self.names, lambda where: CodePrinter("c", where),
+        parts = print_dynamics(p, self.names, CPrinter,
                                lambda k: f"z[{k}]")
         self.z_size = parts.z_size
         kutta = [f"#define  NUMY      {self.n}        /* the states kutta integrates */"]

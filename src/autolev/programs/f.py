@@ -15,7 +15,7 @@ from ..runtime import symbols as S
 from ..runtime import units
 from ..runtime.errors import AutolevModelError
 from ..runtime.numerics.files import dir_text
-from ..runtime.printer import _ADD, _ATOM, _POW, _UNARY, CodePrinter
+from ..runtime.printer import ADD, ATOM, POW, UNARY, CPrinter
 from .plan import (DynamicsPlan, check_names, dynamics_names, input_file_name, print_dynamics,
                    program_name, with_sources)
 
@@ -55,27 +55,25 @@ def double(value: float) -> str:
     return f"{mantissa}D{int(exponent) if exponent else 0}"
 
 
-class FortranPrinter(CodePrinter):
+class FortranPrinter(CPrinter):
     """The C printer's walk, in Fortran: `**`, upper-case intrinsics, D exponents, and
     a unary minus only where Fortran allows one (never right after an operator)."""
 
     ONE = "1"               # an INTEGER numerator: X is DOUBLE PRECISION in 1/X
 
-    def __init__(self, names: dict):
-        super().__init__("c", names)
-        self.funcs = _FUNCS
+    FUNCS = _FUNCS
 
     def _atom(self, e):
         if e is sm.true or e is sm.false:
-            return (".TRUE." if e is sm.true else ".FALSE."), _ATOM
+            return (".TRUE." if e is sm.true else ".FALSE."), ATOM
         return _binary(*super()._atom(e))
 
     def _compound(self, e):
         if isinstance(e, (sm.And, sm.Or)):
             op = " .AND. " if isinstance(e, sm.And) else " .OR. "
-            return "(" + op.join(self._p(a)[0] for a in e.args) + ")", _ATOM
+            return "(" + op.join(self._p(a)[0] for a in e.args) + ")", ATOM
         if isinstance(e, sm.Not):
-            return f"(.NOT. {self._p(e.args[0])[0]})", _ATOM
+            return f"(.NOT. {self._p(e.args[0])[0]})", ATOM
         return _binary(*super()._compound(e))
 
     def _number(self, e):
@@ -84,8 +82,8 @@ class FortranPrinter(CodePrinter):
                                     "program in C")
         # integers as Autolev printed them (2*X, X**2) while they fit an INTEGER
         if e.is_Integer and abs(int(e)) < 2 ** 31:
-            return str(int(e)), (_ADD if e < 0 else _ATOM)
-        return double(float(e)), (_ADD if e < 0 else _ATOM)
+            return str(int(e)), (ADD if e < 0 else ATOM)
+        return double(float(e)), (ADD if e < 0 else ATOM)
 
     def _real(self, e) -> str:
         """`e` where Fortran needs a DOUBLE PRECISION value (an intrinsic's argument)."""
@@ -95,38 +93,38 @@ class FortranPrinter(CodePrinter):
 
     def _constant(self, e):
         if e is sm.E:
-            return "EXP(1.0D0)", _ATOM
-        return double(float(e)), _ATOM
+            return "EXP(1.0D0)", ATOM
+        return double(float(e)), ATOM
 
     def _sqrt(self, base) -> str:
         return f"SQRT({self._real(base)})"
 
     def _power(self, base, exp):
-        return f"{self._wrap(base, _ATOM)}**{self._wrap(exp, _ATOM)}", _POW
+        return f"{self._wrap(base, ATOM)}**{self._wrap(exp, ATOM)}", POW
 
     def _function(self, e):
         name = type(e).__name__
         args = [self._real(a) for a in e.args]
         if name in self.funcs:
             if name == "log" and len(args) == 2:
-                return f"(LOG({args[0]})/LOG({args[1]}))", _ATOM
-            return f"{self.funcs[name]}({', '.join(args)})", _ATOM
+                return f"(LOG({args[0]})/LOG({args[1]}))", ATOM
+            return f"{self.funcs[name]}({', '.join(args)})", ATOM
         if name in ("floor", "ceiling"):     # an INTEGER*8 result, as a double again
-            return f"DBLE({name.upper()}({args[0]}, 8))", _ATOM
+            return f"DBLE({name.upper()}({args[0]}, 8))", ATOM
         if name in ("Max", "Min"):
-            return f"{name.upper()}({', '.join(args)})", _ATOM
+            return f"{name.upper()}({', '.join(args)})", ATOM
         if name == "sign":
             a = args[0]
             return (f"(MERGE(1.0D0, 0.0D0, {a} .GT. 0) - MERGE(1.0D0, 0.0D0, {a} .LT. 0))",
-                    _ATOM)
+                    ATOM)
         if name == "Heaviside":
             a = args[0]
-            return (f"MERGE(1.0D0, MERGE(0.0D0, 0.5D0, {a} .LT. 0), {a} .GT. 0)", _ATOM)
+            return (f"MERGE(1.0D0, MERGE(0.0D0, 0.5D0, {a} .LT. 0), {a} .GT. 0)", ATOM)
         if name == "factorial":
-            return f"GAMMA({args[0]} + 1)", _ATOM
+            return f"GAMMA({args[0]} + 1)", ATOM
         if name in ("sec", "csc", "cot"):
             inner = {"sec": "COS", "csc": "SIN", "cot": "TAN"}[name]
-            return f"(1/{inner}({args[0]}))", _ATOM
+            return f"(1/{inner}({args[0]}))", ATOM
         raise AutolevModelError(f"cannot generate Fortran for the function {name}")
 
     def _piecewise(self, e):
@@ -137,17 +135,17 @@ class FortranPrinter(CodePrinter):
         text = self._real(pieces[-1][0])
         for value, cond in reversed(pieces[:-1]):
             text = f"MERGE({self._real(value)}, {text}, {self._p(cond)[0]})"
-        return text, _ATOM
+        return text, ATOM
 
     def _relational(self, e):
         return (f"({self._p(e.lhs)[0]} {_RELATIONS[e.rel_op]} {self._p(e.rhs)[0]})",
-                _ATOM)
+                ATOM)
 
 
 def _binary(text: str, prec: int) -> tuple[str, int]:
     # Fortran has no unary minus after an operator (A*-B): a negated term is
     # parenthesised wherever a sum would be
-    return text, (_ADD if prec == _UNARY else prec)
+    return text, (ADD if prec == UNARY else prec)
 
 
 # -- fixed form ---------------------------------------------------------------------------

@@ -17,7 +17,7 @@ from ..runtime.errors import AutolevModelError
 from ..runtime.numerics import codegen
 from ..runtime.numerics.files import header as output_header
 from ..runtime.numerics.inputs import format_value
-from ..runtime.printer import _ATOM, _POW, CodePrinter
+from ..runtime.printer import ATOM, POW, CPrinter
 from .plan import (Plan, c_name, check_names, dynamics_names, element_indices,
                    print_dynamics, printed, program_name, shown_values, with_sources)
 
@@ -43,26 +43,24 @@ _FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "aco
 _RULE = "%" + "-" * 31 + "+" + "-" * 26 + "+" + "-" * 19 + "+" + "-" * 17
 
 
-class MatlabPrinter(CodePrinter):
+class MatlabPrinter(CPrinter):
     """The C printer's walk, with Matlab's power operator, function names and
     constants."""
 
-    def __init__(self, names: dict):
-        super().__init__("c", names)
-        self.funcs = _FUNCS
+    FUNCS = _FUNCS
 
     def _constant(self, e):
         if e is sm.pi:
-            return "pi", _ATOM
+            return "pi", ATOM
         if e is sm.E:
-            return "exp(1)", _ATOM
+            return "exp(1)", ATOM
         return self._number(sm.Float(e))
 
     def _number(self, e):
         if e is sm.nan or e is sm.zoo:
-            return "NaN", _ATOM
+            return "NaN", ATOM
         if e in (sm.oo, -sm.oo):
-            return ("Inf" if e is sm.oo else "(-Inf)"), _ATOM
+            return ("Inf" if e is sm.oo else "(-Inf)"), ATOM
         return super()._number(e)
 
     def _pow(self, e):
@@ -71,7 +69,7 @@ class MatlabPrinter(CodePrinter):
         return super()._pow(e)
 
     def _power(self, base, exp):
-        return f"{self._wrap(base, _ATOM)}^{self._wrap(exp, _ATOM)}", _POW
+        return f"{self._wrap(base, ATOM)}^{self._wrap(exp, ATOM)}", POW
 
     def _function(self, e):
         name = type(e).__name__
@@ -80,11 +78,11 @@ class MatlabPrinter(CodePrinter):
             text = args[0]
             for a in args[1:]:
                 text = f"{name.lower()}({text}, {a})"
-            return text, _ATOM
+            return text, ATOM
         if name == "Heaviside":
             raise AutolevModelError("Heaviside has no Matlab function to print it as")
         if name == "factorial":
-            return f"gamma({self._p(e.args[0])[0]} + 1.0)", _ATOM
+            return f"gamma({self._p(e.args[0])[0]} + 1.0)", ATOM
         return super()._function(e)
 
     def _piecewise(self, e):
@@ -93,7 +91,7 @@ class MatlabPrinter(CodePrinter):
 
     def _relational(self, e):
         op = {"!=": "~="}.get(e.rel_op, e.rel_op)
-        return f"({self._p(e.lhs)[0]} {op} {self._p(e.rhs)[0]})", _ATOM
+        return f"({self._p(e.lhs)[0]} {op} {self._p(e.rhs)[0]})", ATOM
 
 
 def m_string(text: str, fmt: bool = False) -> str:

@@ -211,9 +211,11 @@ def plan_algebraic(model, command) -> Plan:
                              **{u: "Initial Guess" for u in guesses}})
     degrees = [s for s in read + guesses if units.is_degrees(values.unit_of(s))]
     sweep = _sweep_of(command, inputs, values)
-    return Plan(kind, command.filename, read + guesses, text, list(system.specified),
-                named, statements, encoded_plan, out_files, degrees,
-                {s: values.values[s] for s in values.names}, solving, sweep)
+    return Plan(kind=kind, filename=command.filename, inputs=read + guesses, input_text=text,
+                specified=list(system.specified), named=named, statements=statements,
+                encoded=encoded_plan, files=out_files, degree_inputs=degrees,
+                values={s: values.values[s] for s in values.names}, solving=solving,
+                sweep=sweep)
 
 
 def _sweep_of(command, inputs: list, values: Inputs) -> Sweep | None:
@@ -317,11 +319,14 @@ def plan_dynamics(model, command) -> DynamicsPlan:
                             fortran=is_fortran(filename))
     degrees = [q for q in constants + states if units.is_degrees(values.unit_of(q))]
     named = list(dict.fromkeys(const_named + rhs_named + out_named))
-    return DynamicsPlan(command.kind, filename, constants, states, text,
-                        dict(values.values), list(system.specified), const_statements,
-                        list(system.constant_defs), rhs_statements, rates, mass, forcing,
-                        unknowns, out_statements, out_files, encoded_plan, named, degrees,
-                        values.unit_of("T"), tuple(command.options))
+    return DynamicsPlan(
+        kind=command.kind, filename=filename, constants=constants, states=states,
+        input_text=text, values=dict(values.values), specified=list(system.specified),
+        constant_statements=const_statements, defined_constants=list(system.constant_defs),
+        rhs_statements=rhs_statements, rates=rates, mass=mass, forcing=forcing,
+        unknowns=unknowns, output_statements=out_statements, files=out_files,
+        encoded=encoded_plan, named=named, degree_inputs=degrees,
+        time_unit=values.unit_of("T"), options=tuple(command.options))
 
 
 def _shown(system, outputs: list) -> tuple[list, list]:

@@ -11,6 +11,7 @@ it (INT, ROUND of a number), are here too.
 from __future__ import annotations
 
 import math
+from enum import IntEnum
 
 import numpy as np
 import sympy as sm
@@ -32,21 +33,44 @@ _PY_FUNCS = {"sin": "math.sin", "cos": "math.cos", "tan": "math.tan", "asin": "m
              "Abs": "math.fabs", "atan2": "math.atan2", "erf": "math.erf",
              "gamma": "math.gamma", "Int": "_trunc", "Round": "_round"}
 
-# precedence: higher binds tighter
-_ADD, _MUL, _UNARY, _POW, _ATOM = 1, 2, 3, 4, 5
+class Precedence(IntEnum):
+    """How tightly a printed construct binds (higher binds tighter): a subexpression
+    below the precedence its place needs is parenthesised."""
+
+    ADD = 1
+    MUL = 2
+    UNARY = 3
+    POW = 4
+    ATOM = 5
+
+
+ADD, MUL, UNARY, POW, ATOM = (Precedence.ADD, Precedence.MUL, Precedence.UNARY,
+                              Precedence.POW, Precedence.ATOM)
 
 
 class CodePrinter:
-    """Expressions as C or Python source; `names` maps symbols to their code."""
+    """The walk every language's printer shares: each expression once, in sympy's
+    argument order, compound subexpressions printed once; `names` maps symbols to
+    their code.  A language is a subclass that gives its words (the class attributes)
+    and overrides the hooks where its syntax differs (`_power`, `_sign`,
+    `_heaviside`, `_extremum`, `_factorial`, `_choice`, `_truth`)."""
 
     ONE = "1.0"             # the numerator of a reciprocal
+    # the language's words: sympy's function names -> its own; logic; NaN, infinity,
+    # pi, e; the square root
+    FUNCS: dict
+    AND: str
+    OR: str
+    NOT: str
+    NAN: str
+    INF: str
+    PI: str
+    E: str
+    SQRT: str
 
-    def __init__(self, language: str, names: dict):
-        if language not in ("c", "python"):
-            raise ValueError(language)
-        self.c = language == "c"
+    def __init__(self, names: dict):
         self.names = names
-        self.funcs = _C_FUNCS if self.c else _PY_FUNCS
+        self.funcs = self.FUNCS
         self._memo: dict = {}
 
     def __call__(self, expr) -> str:
@@ -55,7 +79,7 @@ class CodePrinter:
     def bind(self, expr, text: str) -> None:
         """From now on print `expr` (a compound expression) as `text` (the variable
         that holds its value)."""
-        self._memo[expr] = (text, _ATOM)
+        self._memo[expr] = (text, ATOM)
 
     # each method returns (text, precedence); compound subexpressions are printed once
     def _p(self, e):
@@ -69,7 +93,7 @@ class CodePrinter:
     def _atom(self, e):
         if e.is_Symbol:
             try:
-                return self.names[e], _ATOM
+                return self.names[e], ATOM
             except KeyError:
                 raise AutolevModelError(f"no value for {e}") from None
         if e.is_Number:
@@ -77,7 +101,7 @@ class CodePrinter:
         if isinstance(e, NumberSymbol):
             return self._constant(e)
         if e is sm.true or e is sm.false:
-            return ("1" if e is sm.true else "0") if self.c else str(bool(e)), _ATOM
+            return self._truth(e is sm.true), ATOM
         raise AutolevModelError(f"cannot generate numeric code for {type(e).__name__}: {e}")
 
     def _compound(self, e):
@@ -94,11 +118,10 @@ class CodePrinter:
         if e.is_Relational:
             return self._relational(e)
         if isinstance(e, (sm.And, sm.Or)):
-            op = (" && " if self.c else " and ") if isinstance(e, sm.And) else \
-                (" || " if self.c else " or ")
-            return "(" + op.join(self._p(a)[0] for a in e.args) + ")", _ATOM
+            op = self.AND if isinstance(e, sm.And) else self.OR
+            return "(" + op.join(self._p(a)[0] for a in e.args) + ")", ATOM
         if isinstance(e, sm.Not):
-            return ("!" if self.c else "not ") + self._wrap(e.args[0], _ATOM), _UNARY
+            return self.NOT + self._wrap(e.args[0], ATOM), UNARY
         raise AutolevModelError(f"cannot generate numeric code for {type(e).__name__}: {e}")
 
     def _wrap(self, e, prec: int) -> str:
@@ -106,10 +129,10 @@ class CodePrinter:
         return f"({text})" if p < prec else text
 
     def _number(self, e):
-        if e is sm.nan or e is sm.zoo or e in (sm.oo, -sm.oo):
-            return ("NAN" if self.c else "math.nan") if e in (sm.nan, sm.zoo) else \
-                (("INFINITY" if self.c else "math.inf") if e is sm.oo
-                 else ("(-INFINITY)" if self.c else "(-math.inf)")), _ATOM
+        if e is sm.nan or e is sm.zoo:
+            return self.NAN, ATOM
+        if e in (sm.oo, -sm.oo):
+            return (self.INF if e is sm.oo else f"(-{self.INF})"), ATOM
         v = float(e)
         if math.isinf(v):
             raise AutolevModelError(f"the number {sm.Float(e, 6)} is beyond double precision "
@@ -117,13 +140,13 @@ class CodePrinter:
         text = repr(v)
         if "e" not in text and "." not in text and "inf" not in text and "nan" not in text:
             text += ".0"
-        return text, (_UNARY if v < 0 else _ATOM)
+        return text, (UNARY if v < 0 else ATOM)
 
     def _constant(self, e):
         if e is sm.pi:
-            return ("M_PI" if self.c else "math.pi"), _ATOM
+            return self.PI, ATOM
         if e is sm.E:
-            return ("M_E" if self.c else "math.e"), _ATOM
+            return self.E, ATOM
         return self._number(sm.Float(e))
 
     def _add(self, e):
@@ -132,16 +155,16 @@ class CodePrinter:
             coeff, rest = term.as_coeff_Mul()
             if coeff.is_Number and coeff < 0 and k > 0:
                 neg = -term
-                parts.append(" - " + self._wrap(neg, _MUL))
+                parts.append(" - " + self._wrap(neg, MUL))
             else:
-                text = self._wrap(term, _ADD)
+                text = self._wrap(term, ADD)
                 parts.append((" + " if k else "") + text)
-        return "".join(parts), _ADD
+        return "".join(parts), ADD
 
     def _mul(self, e):
         coeff, rest = e.as_coeff_Mul()
         if coeff == -1:
-            return "-" + self._wrap(rest, _MUL + 1 if rest.is_Mul else _UNARY), _UNARY
+            return "-" + self._wrap(rest, MUL + 1 if rest.is_Mul else UNARY), UNARY
         num, den = [], []
         for f in e.args:
             if f.is_Pow and f.exp.is_Number and f.exp.is_negative:
@@ -154,35 +177,52 @@ class CodePrinter:
             else:
                 num.append(f)
         if not den:
-            return "*".join(self._wrap(f, _MUL) for f in num), _MUL
-        top = "*".join(self._wrap(f, _MUL) for f in num) if num else self.ONE
+            return "*".join(self._wrap(f, MUL) for f in num), MUL
+        top = "*".join(self._wrap(f, MUL) for f in num) if num else self.ONE
         if len(den) == 1:
-            bottom = self._wrap(den[0], _POW)
+            bottom = self._wrap(den[0], POW)
         else:
-            bottom = "(" + "*".join(self._wrap(f, _MUL) for f in den) + ")"
-        return f"{top}/{bottom}", _MUL
+            bottom = "(" + "*".join(self._wrap(f, MUL) for f in den) + ")"
+        return f"{top}/{bottom}", MUL
 
     def _pow(self, e):
         base, exp = e.base, e.exp
         if exp == sm.Rational(1, 2):
-            return self._sqrt(base), _ATOM
+            return self._sqrt(base), ATOM
         if exp == -1:
-            return f"{self.ONE}/{self._wrap(base, _POW)}", _MUL
+            return f"{self.ONE}/{self._wrap(base, POW)}", MUL
         if exp == sm.Rational(-1, 2):
-            return f"{self.ONE}/{self._sqrt(base)}", _MUL
+            return f"{self.ONE}/{self._sqrt(base)}", MUL
         return self._power(base, exp)
 
     def _sqrt(self, base) -> str:
-        return f"{'sqrt' if self.c else 'math.sqrt'}({self._p(base)[0]})"
+        return f"{self.SQRT}({self._p(base)[0]})"
+
+    # -- hooks: what each language says its own way ----------------------------------
+    def _truth(self, value: bool) -> str:
+        raise NotImplementedError
 
     def _power(self, base, exp):
-        """base**exp for an exponent other than 1/2, -1 and -1/2."""
-        if self.c:
-            return f"pow({self._p(base)[0]}, {self._p(exp)[0]})", _ATOM
-        if exp.is_Integer:
-            # Python's ** with an integer exponent: like C's pow for these values
-            return f"{self._wrap(base, _ATOM)}**{int(exp)}", _POW
-        return f"{self._wrap(base, _ATOM)}**{self._wrap(exp, _ATOM)}", _POW
+        """base**exp for an exponent other than 1/2, -1 and -1/2: (text, precedence)."""
+        raise NotImplementedError
+
+    def _sign(self, a: str) -> str:
+        raise NotImplementedError
+
+    def _heaviside(self, a: str) -> str:
+        raise NotImplementedError
+
+    def _extremum(self, name: str, args: list) -> str:
+        """Max or Min of the printed args."""
+        raise NotImplementedError
+
+    def _factorial(self, a: str) -> str:
+        raise NotImplementedError
+
+    def _choice(self, condition: str, value: str, otherwise: str) -> str:
+        """value where condition holds, else otherwise."""
+        raise NotImplementedError
+
 
     def _function(self, e):
         name = type(e).__name__
@@ -190,51 +230,104 @@ class CodePrinter:
         if name in self.funcs:
             if name == "log" and len(args) == 2:
                 log = self.funcs["log"]
-                return f"({log}({args[0]})/{log}({args[1]}))", _ATOM
-            return f"{self.funcs[name]}({', '.join(args)})", _ATOM
+                return f"({log}({args[0]})/{log}({args[1]}))", ATOM
+            return f"{self.funcs[name]}({', '.join(args)})", ATOM
         if name == "sign":
-            a = args[0]
-            return (f"((double)((({a}) > 0) - (({a}) < 0)))" if self.c
-                    else f"_sign({a})"), _ATOM
+            return self._sign(args[0]), ATOM
         if name == "Heaviside":
-            a = args[0]
-            return (f"(({a}) > 0 ? 1.0 : (({a}) < 0 ? 0.0 : 0.5))" if self.c
-                    else f"_heaviside({a})"), _ATOM
+            return self._heaviside(args[0]), ATOM
         if name in ("Max", "Min"):
-            if self.c:
-                fn = "fmax" if name == "Max" else "fmin"
-                text = args[0]
-                for a in args[1:]:
-                    text = f"{fn}({text}, {a})"
-                return text, _ATOM
-            return f"{name.lower()}({', '.join(args)})", _ATOM
+            return self._extremum(name, args), ATOM
         if name == "factorial":
-            return (f"tgamma({args[0]} + 1.0)" if self.c
-                    else f"math.gamma({args[0]} + 1.0)"), _ATOM
+            return self._factorial(args[0]), ATOM
         if name in ("sec", "csc", "cot"):
             inner = {"sec": "cos", "csc": "sin", "cot": "tan"}[name]
-            return f"(1.0/{self.funcs[inner]}({args[0]}))", _ATOM
+            return f"(1.0/{self.funcs[inner]}({args[0]}))", ATOM
         raise AutolevModelError(f"cannot generate numeric code for the function {name}")
 
+
     def _piecewise(self, e):
-        pieces = list(e.args)
-        text = "NAN" if self.c else "math.nan"
-        for value, cond in reversed(pieces):
+        text = self.NAN
+        for value, cond in reversed(list(e.args)):
             v = self._p(value)[0]
-            if cond is sm.true:
-                text = v
-                continue
-            c = self._p(cond)[0]
-            text = f"(({c}) ? ({v}) : ({text}))" if self.c else \
-                f"(({v}) if ({c}) else ({text}))"
-        return text, _ATOM
+            text = v if cond is sm.true else self._choice(self._p(cond)[0], v, text)
+        return text, ATOM
+
 
     def _relational(self, e):
         op = {"<": "<", "<=": "<=", ">": ">", ">=": ">=", "==": "==", "!=": "!="}[e.rel_op]
-        return f"({self._p(e.lhs)[0]} {op} {self._p(e.rhs)[0]})", _ATOM
+        return f"({self._p(e.lhs)[0]} {op} {self._p(e.rhs)[0]})", ATOM
 
 
-# -- the namespace printed Python runs in ---------------------------------------------
+class CPrinter(CodePrinter):
+    """C (math.h)."""
+
+    FUNCS = _C_FUNCS
+    AND, OR, NOT = " && ", " || ", "!"
+    NAN, INF = "NAN", "INFINITY"
+    PI, E = "M_PI", "M_E"
+    SQRT = "sqrt"
+
+    def _truth(self, value: bool) -> str:
+        return "1" if value else "0"
+
+    def _power(self, base, exp):
+        return f"pow({self._p(base)[0]}, {self._p(exp)[0]})", ATOM
+
+    def _sign(self, a: str) -> str:
+        return f"((double)((({a}) > 0) - (({a}) < 0)))"
+
+    def _heaviside(self, a: str) -> str:
+        return f"(({a}) > 0 ? 1.0 : (({a}) < 0 ? 0.0 : 0.5))"
+
+    def _extremum(self, name: str, args: list) -> str:
+        fn = "fmax" if name == "Max" else "fmin"
+        text = args[0]
+        for a in args[1:]:
+            text = f"{fn}({text}, {a})"
+        return text
+
+    def _factorial(self, a: str) -> str:
+        return f"tgamma({a} + 1.0)"
+
+    def _choice(self, condition: str, value: str, otherwise: str) -> str:
+        return f"(({condition}) ? ({value}) : ({otherwise}))"
+
+
+class PythonPrinter(CodePrinter):
+    """Python on `math` (and this module's _sign, _heaviside, _trunc, _round)."""
+
+    FUNCS = _PY_FUNCS
+    AND, OR, NOT = " and ", " or ", "not "
+    NAN, INF = "math.nan", "math.inf"
+    PI, E = "math.pi", "math.e"
+    SQRT = "math.sqrt"
+
+    def _truth(self, value: bool) -> str:
+        return str(value)
+
+    def _power(self, base, exp):
+        if exp.is_Integer:
+            # Python's ** with an integer exponent: like C's pow for these values
+            return f"{self._wrap(base, ATOM)}**{int(exp)}", POW
+        return f"{self._wrap(base, ATOM)}**{self._wrap(exp, ATOM)}", POW
+
+    def _sign(self, a: str) -> str:
+        return f"_sign({a})"
+
+    def _heaviside(self, a: str) -> str:
+        return f"_heaviside({a})"
+
+    def _extremum(self, name: str, args: list) -> str:
+        return f"{name.lower()}({', '.join(args)})"
+
+    def _factorial(self, a: str) -> str:
+        return f"math.gamma({a} + 1.0)"
+
+    def _choice(self, condition: str, value: str, otherwise: str) -> str:
+        return f"(({value}) if ({condition}) else ({otherwise}))"
+
+
 def _sign(x):
     return (x > 0) - (x < 0)
 
@@ -294,7 +387,7 @@ def safe_namespace() -> dict:
 def number_value(expr) -> float:
     """A closed-form number (no symbols) in double precision, computed as the generated
     code computes it: inf or nan where that overflows or is undefined."""
-    code = compile(CodePrinter("python", {})(expr), "<autolev number>", "eval")
+    code = compile(PythonPrinter({})(expr), "<autolev number>", "eval")
     try:
         return float(eval(code, fast_namespace()))
     except MATH_ERRORS:

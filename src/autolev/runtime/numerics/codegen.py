@@ -25,7 +25,7 @@ import sympy as sm
 from ..calculus import Definitions
 from ..diskcache import cache_dir, install_or_aside, read_verified, verified
 from ..errors import AutolevModelError
-from ..printer import MATH_ERRORS, CodePrinter, fast_namespace, safe_namespace
+from ..printer import MATH_ERRORS, CPrinter, PythonPrinter, fast_namespace, safe_namespace
 
 
 def _factor_out(add):
@@ -267,7 +267,7 @@ def python_source(prog: Program, name: str = "compute") -> str:
     for arg, syms in prog.inputs.items():
         for i in range(len(syms)):
             lines.append(f"    {arg}_{i} = {arg}[{i}]")
-    p = CodePrinter("python", prog.names)
+    p = PythonPrinter(prog.names)
     for ident, expr in prog.assignments:
         lines.append(f"    {ident} = {p(expr)}")
         if ident in prog.bound:
@@ -332,7 +332,7 @@ def c_source(prog: Program, name: str = "compute") -> str:
     for s, ident in prog.names.items():
         if ident in index:
             where[s] = f"w[{index[ident]}]"
-    c = CodePrinter("c", where)
+    c = CPrinter(where)
 
     statements = []
     for k, (ident, expr) in enumerate(prog.assignments):
