@@ -25,7 +25,7 @@ def assignment(tr: Translator, st: ir.Assignment) -> None:
 def _column_runs(tr: Translator) -> dict[int, list[ir.Assignment]]:
     """The runs `X[1] = a`, `X[2] = b`, ... `X[n] = z` (n > 1, consecutive statements) of a
     name X no earlier statement mentions, by the id of each of their statements."""
-    runs = getattr(tr, "_column_runs", None)
+    runs = tr.column_runs
     if runs is None:
         runs, seen = {}, set()
         statements = tr.program.statements
@@ -37,7 +37,7 @@ def _column_runs(tr: Translator) -> dict[int, list[ir.Assignment]]:
             for s in statements[i:i + max(len(run), 1)]:
                 seen.update(w.lower() for w in re.findall(r"\w+", s.text))
             i += max(len(run), 1)
-        tr._column_runs = runs
+        tr.column_runs = runs
     return runs
 
 

@@ -162,6 +162,17 @@ EXPRESSIONS: Dispatch[Callable[[Translator, Any, str], Typed]] = \
     Dispatch("translator expressions", _unsupported_expression)
 
 
+@dataclass
+class Session:
+    """The switches of an Autolev session the statements so far have set: what a later
+    statement means depends on them."""
+
+    degrees: bool = True        # DEGREES ON: a numeric angle is in degrees
+    autorhs: bool = False       # AUTORHS ON: a declared name's stored RHS replaces it
+    exited: bool = False        # EXIT: the statements after it are ignored
+    kane_called: bool = False   # a KANE() so far
+
+
 class Translator:
     def __init__(self, program: ir.Program, module_name: str = "model"):
         self.program = program
@@ -175,16 +186,15 @@ class Translator:
         self.lines: list[Line] = []
         # reading's warnings first: the Translation holds every diagnostic of the model
         self.diagnostics: list[Diagnostic] = list(program.diagnostics)
-        self.degrees = True
-        self.complex = False
+        self.session = Session()
         self.call_depth = 0
-        # AUTORHS ON: a declared name with a stored RHS is replaced by it when read
-        self.autorhs = False
         self.defined: set[tuple[str, int]] = set()
         # the declared name (key, primes) whose new definition is being read
         self.redefining: tuple[str, int] | None = None
-        self.has_code = False
-        self.kane_called = False
+        # made when first asked for: runs X[1] = a, X[2] = b, ... by their statements'
+        # ids (assignments.py), and the words of the model's text (declarations.py)
+        self.column_runs: dict | None = None
+        self.words: set[str] | None = None
         self._span: Span | None = None
         self._used_primes = _primes_used(program)
         self.autolev_names: dict[str, str] = {}
@@ -279,7 +289,7 @@ class Translator:
         previous_end: dict[str, int] = {}
         statements = self.program.statements
         for n, st in enumerate(statements):
-            if getattr(self, "exited", False):
+            if self.session.exited:
                 self.warn(f"{len(statements) - n} statement(s) after EXIT are ignored, as "
                           "Autolev ignored them", st, "W103")
                 break
@@ -434,7 +444,7 @@ class Translator:
             if (key, primes) == self.redefining:
                 # X = f(X): on the right, X stands for its previous definition
                 return Typed(f"model.previous({code})", ValueType.SCALAR)
-            if self.autorhs and (key, primes) in self.defined:
+            if self.session.autorhs and (key, primes) in self.defined:
                 return Typed(f"model.rhs({code})", ValueType.SCALAR)
             return Typed(code, ValueType.SCALAR)
         if key in self.values:

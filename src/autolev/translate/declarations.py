@@ -27,13 +27,13 @@ def declaration(tr: Translator, st: ir.Declaration) -> None:
 
 
 def _referenced(tr: Translator, name: str) -> bool:
-    cache = getattr(tr, "_words", None)
+    cache = tr.words
     if cache is None:
         cache = set()
         for s in tr.program.statements:
             cache.update(w.lower() for w in re.split(r"[^A-Za-z0-9]+", s.text) if w)
             cache.update(w.lower() for w in re.split(r"[^A-Za-z0-9_]+", s.text) if w)
-        tr._words = cache
+        tr.words = cache
     return name.lower() in cache
 
 

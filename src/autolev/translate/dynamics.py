@@ -138,6 +138,6 @@ def _constrain(tr, c):
 @command("KANE")
 def _kane(tr, c):
     unknowns = [tr.scalar(a).code for a in c.args]
-    tr.kane_called = True
+    tr.session.kane_called = True
     tr.emit(f"model.kane({', '.join(unknowns)})")
 

@@ -133,9 +133,8 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
     if st.options:
         opts += f", options=({''.join(quote(o) + ', ' for o in st.options)})"
     zero = tr.values.get("zero")
-    if tr.kane_called and zero is not None and zero.type == ValueType.MATRIX:
+    if tr.session.kane_called and zero is not None and zero.type == ValueType.MATRIX:
         opts += f", zero={zero.py}"
-    tr.has_code = True
     tr.emit(f"model.code({quote(st.what)}, {quote(st.filename)}{opts})")
 
 

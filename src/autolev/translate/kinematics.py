@@ -14,7 +14,7 @@ def _angle(tr: Translator, e: ir.Expr) -> str:
     """A number is an angle in degrees unless DEGREES OFF; an angle written with PI
     (PI/2) is in radians either way (docs/language.md)."""
     x = tr.scalar(e)
-    if tr.degrees and _is_plain_number(e):
+    if tr.session.degrees and _is_plain_number(e):
         return f"al.degrees_to_radians({x.code})"
     return x.code
 

@@ -20,17 +20,15 @@ def macro(tr: Translator, st: ir.MacroCall) -> None:
 @STATEMENTS.register(ir.Exit)
 def exit_statement(tr: Translator, st: ir.Exit) -> None:
     tr.emit("# (EXIT ends the Autolev session)")
-    tr.exited = True
+    tr.session.exited = True
 
 
 @STATEMENTS.register(ir.Setting)
 def setting(tr: Translator, st: ir.Setting) -> None:
     if st.name == "DEGREES":
-        tr.degrees = st.value != "OFF"
+        tr.session.degrees = st.value != "OFF"
     elif st.name == "AUTORHS":
-        tr.autorhs = st.value in ("ON", "ALL")
-    elif st.name == "COMPLEX":
-        tr.complex = st.value == "ON"
+        tr.session.autorhs = st.value in ("ON", "ALL")
     value = "None" if st.value is None else quote(st.value)
     tr.emit(f"model.setting({quote(st.name)}, {value})")
 
