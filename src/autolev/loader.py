@@ -69,12 +69,9 @@ def load_translation(translation, filename: str, write_later: bool = False):
             keeper.flush(built.model)
     built.warn_again()
     model = built.model
-    lines = translation.code.splitlines()
     model.loaded = dataclasses.replace(
         model.loaded, names=translation.names, namespaces=translation.namespaces,
-        # where each CODE statement is in the .al file (diagnostics of its run point there)
-        code_locations=[translation.line_map.get(n) for n, text in enumerate(lines, 1)
-                        if text.startswith("model.code(")],
+        code_locations=list(translation.code_spans), defined_at=dict(translation.defined_at),
         source=ModelSource("translation", translation, filename, model.revision()),
         # the numeric systems its runs build are kept with it too, while it is as built
         keeper=keeper or ModelKeeper(key, built.warnings, _as_built(model), False))

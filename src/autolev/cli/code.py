@@ -25,8 +25,7 @@ def cmd_code(ns: argparse.Namespace) -> int:
         return 1
     out = Path(ns.out)
     try:
-        done = write_programs(model, out, overwrite=ns.overwrite,
-                              source=path if path.suffix.lower() != ".py" else None)
+        done = write_programs(model, out, overwrite=ns.overwrite)
     except OSError as exc:
         print(f"autolev code: cannot write into {out}: {exc.strerror or exc}",
               file=sys.stderr)

@@ -13,7 +13,7 @@ from .c import write_c
 from .c_dynamics import write_c_dynamics
 from .f import write_f_dynamics
 from .m import write_m, write_m_dynamics
-from .plan import plan_algebraic, plan_dynamics, statement_sources
+from .plan import plan_algebraic, plan_dynamics
 
 # (kind, extension) -> (plan, writer); anything else is reported as not written
 WRITERS = {
@@ -57,8 +57,8 @@ def relative_path(filename: str) -> Path:
 
 def program_texts(model, command, sources=None) -> dict:
     """{relative path: text} of one CODE command's program and its .in file;
-    `sources`: statement_sources() of the model's file, for comments that say which
-    statement defines each named quantity."""
+    `sources`: {NAME: "file:line: statement"} (the translation's `defined_at`), for
+    comments that say which statement defines each named quantity."""
     extension = os.path.splitext(command.filename)[1].lower()
     found = WRITERS.get((command.kind, extension))
     if found is None:
@@ -73,14 +73,14 @@ def program_texts(model, command, sources=None) -> dict:
     return {relative_path(name): text for name, text in write(plan).items()}
 
 
-def write_programs(model, out_dir, commands=None, source=None,
-                   overwrite: bool = False) -> list[Written]:
+def write_programs(model, out_dir, commands=None, overwrite: bool = False) -> list[Written]:
     """Write each CODE command's program (default: all of the model's) and the .in
-    file it reads into `out_dir`; `source`: the model's .al file, whose statements the
-    programs name in comments.  Every text is made before any file is written, and
-    each file appears whole (written aside, then renamed).  A file in the way that
-    autolev did not write stops it before anything is written, unless `overwrite`."""
-    sources = statement_sources(source) if source is not None else {}
+    file it reads into `out_dir`, naming in comments the statements of the model's .al
+    file that define its quantities (a model loaded from its translation).  Every text
+    is made before any file is written, and each file appears whole (written aside,
+    then renamed).  A file in the way that autolev did not write stops it before
+    anything is written, unless `overwrite`."""
+    sources = model.loaded.defined_at if model.loaded is not None else {}
     out = Path(out_dir)
     done = []
     texts = {}

@@ -114,25 +114,6 @@ class Sweep:
     degrees: bool
 
 
-def statement_sources(path) -> dict:
-    """{NAME: "file:line: statement"}: the Autolev statement that defines each scalar
-    quantity of the model at `path` (the last one, when it is defined again; NAME as
-    the programs spell it, X' as XP, in upper case), for the comment before its line
-    in a program."""
-    from ..pipeline import parse
-    from pathlib import Path
-    sources = {}
-    for st in parse(path).statements:
-        target = getattr(st, "target", None)
-        if type(st).__name__ != "Assignment" or not hasattr(target, "primes"):
-            continue
-        text = " ".join((st.text or "").split())
-        text = text if len(text) <= 70 else text[:67] + "..."
-        sources[(target.name + "P" * target.primes).upper()] = \
-            f"{Path(st.span.file).name}:{st.span.line}: {text}"
-    return sources
-
-
 def with_sources(pairs, sources: dict, comment, line) -> list[str]:
     """The lines of (target, text) assignments, each named one after a comment that
     says which statement of the model defines it."""

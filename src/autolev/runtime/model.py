@@ -32,14 +32,16 @@ from .vector import (AutolevModelError, Dyadic, Frame, Scene, UnitDyadic, Vector
 class Loaded:
     """What loading a model attached to it: its module's namespace, the translation's
     Python names of the Autolev names (by namespace), where each CODE statement is in
-    the .al file, what rebuilds it in another process (`source`, the loader's
-    ModelSource) and what writes it back to the cache of built models (`keeper`, the
-    loader's ModelKeeper: `added()` when a numeric system is built, `flush(model)`)."""
+    the .al file and which statement defines each quantity, what rebuilds it in
+    another process (`source`, the loader's ModelSource) and what writes it back to
+    the cache of built models (`keeper`, the loader's ModelKeeper: `added()` when a
+    numeric system is built, `flush(model)`)."""
 
     namespace: dict
     names: dict = field(default_factory=dict)
     namespaces: dict = field(default_factory=dict)
     code_locations: list = field(default_factory=list)
+    defined_at: dict = field(default_factory=dict)   # Translation.defined_at
     source: object = None
     keeper: object = None
 

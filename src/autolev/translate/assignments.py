@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 from .. import ir
 from .core import FRAME_KINDS, STATEMENTS, Entry, NameKind, Translator, Typed, ValueType
@@ -14,6 +15,11 @@ _COMPOUND = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}
 
 @STATEMENTS.register(ir.Assignment)
 def assignment(tr: Translator, st: ir.Assignment) -> None:
+    if isinstance(st.target, (ir.Name, ir.Index)) and st.span is not None:
+        text = " ".join((st.text or "").split())
+        text = text if len(text) <= 70 else text[:67] + "..."
+        where = f"{Path(st.span.file).name}:{st.span.line}: {text}"
+        tr.defined_at[(st.target.name + "P" * st.target.primes).upper()] = where
     run = _column_runs(tr).get(id(st))
     if run is None:
         assign(tr, st.target, st.op, st.value)

@@ -145,6 +145,11 @@ class Translation:
     # each Autolev name -> Python name
     namespaces: dict[str, dict[str, str]] = field(default_factory=dict)
     files: list[str] = field(default_factory=list)    # every file read, the model's first
+    # where each CODE statement is, in order (the messages of its run point there)
+    code_spans: list[Span] = field(default_factory=list)
+    # {NAME: "file:line: statement"}: the statement that last defines each scalar (X' as
+    # XP, upper case), for the comment before its line in a written program
+    defined_at: dict[str, str] = field(default_factory=dict)
 
 
 def _unsupported_statement(tr: Translator, st: ir.Statement) -> None:
@@ -195,6 +200,8 @@ class Translator:
         # ids (assignments.py), and the words of the model's text (declarations.py)
         self.column_runs: dict | None = None
         self.words: set[str] | None = None
+        self.code_spans: list[Span] = []           # see Translation
+        self.defined_at: dict[str, str] = {}
         self._span: Span | None = None
         self._used_primes = _primes_used(program)
         self.autolev_names: dict[str, str] = {}
@@ -313,7 +320,8 @@ class Translator:
         code, line_map = self._render()
         return Translation(code, line_map, self.diagnostics, dict(self.autolev_names),
                            {k: dict(v) for k, v in self.namespaces.items()},
-                           list(self.program.files))
+                           list(self.program.files), list(self.code_spans),
+                           dict(self.defined_at))
 
     def _report_other_undeclared(self, st: ir.Statement, first) -> None:
         """The names after the first undeclared one in the statement that are not
