@@ -24,7 +24,7 @@ def test_leading_zeros_are_a_decimal_number(tmp_path):
 
 def test_a_number_too_long_to_be_a_double(tmp_path):
     (d,) = diagnostics_of(tmp_path, "X = " + "9" * 5000 + "\n")
-    assert d.code == "E042" and (d.location.line, d.location.col) == (1, 5)
+    assert d.code == "E045" and (d.location.line, d.location.col) == (1, 5)
 
 
 def test_a_range_too_large_to_count(tmp_path):

@@ -74,6 +74,7 @@ class Builder:
         self.symbols = ir.SymbolTable()
         self.statements: list[ir.Statement] = []
         self.diagnostics: list[Diagnostic] = []
+        self._error_count = 0      # errors of this builder's own, counted as they come
         self._ctx: Origin | None = None
         self._piece: Piece | None = None
 
@@ -113,6 +114,7 @@ class Builder:
     def _error(self, ctx_or_token, code: str, message: str, notes=(), severity="error") -> None:
         tok = ctx_or_token if isinstance(ctx_or_token, Token) else ctx_or_token.start
         m = self._ctx.mapped
+        self._error_count += severity == "error"
         self.diagnostics.append(Diagnostic(m.locate(tok.start), code, message, severity,
                                            m.source_line(tok.start), tuple(notes)))
 
@@ -132,13 +134,15 @@ class Builder:
     def _statement(self, ctx: P.StatementContext) -> None:
         node = ctx.getChild(0)
         handler = self._STATEMENTS.lookup(type(node))
+        errors_before = self._error_count
         try:
             result = handler(self, node)
         except RecursionError:
             # the parser read it, but building it recurses deeper than Python allows
             self._error(ctx, "E004", "this statement is nested too deeply to read")
             return
-        if result is not None:
+        # a statement found wrong while built is not handed on: check translates the rest
+        if result is not None and self._error_count == errors_before:
             self.statements.append(result)
 
     def _common(self, ctx) -> dict:
@@ -474,7 +478,7 @@ class Builder:
     def _number_atom(self, ctx: P.NumberAtomContext) -> ir.Expr:
         text = ctx.start.text
         if len(text) > MAX_NUMBER_DIGITS:
-            self._error(ctx, "E042", f"a number of {len(text)} characters; at most "
+            self._error(ctx, "E045", f"a number of {len(text)} characters; at most "
                         f"{MAX_NUMBER_DIGITS} are read")
             return ir.Number("0", span=self._span(ctx))
         return ir.Number(text, span=self._span(ctx))

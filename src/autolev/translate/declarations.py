@@ -107,9 +107,7 @@ def _declare_scalars(tr: Translator, st: ir.Declaration) -> None:
         order = max(item.primes, st.keyword_primes)
         for n in item.names:
             key = n.lower()
-            if key in tr.scalars:
-                if item.value is None:
-                    tr.warn(f"'{n}' is declared again", item, "W102")
+            if key in tr.scalars:      # declared again: reading warned (W001)
                 entry = tr.scalars[key]
             else:
                 entry = tr.declare_scalar(n, kind, order)
