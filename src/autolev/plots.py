@@ -81,7 +81,7 @@ def write_pngs(result, out_dir: Path, overwrite: bool = False) -> list[Path]:
     import matplotlib.pyplot as plt
 
     written = []
-    times = result.t if result.kind in ("dynamics", "ode") else None
+    times = result.t if result.kind.integrates else None
     for table in result.outputs:
         fig = figure(table, times)
         if fig is None:

@@ -69,7 +69,7 @@ def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list:
         except AutolevModelError as exc:
             raise UsageError(f"--code: {exc}") from None
     if ns.first_dynamics:
-        return [c for c in model.code_commands if c.kind in ("dynamics", "ode")][:1]
+        return [c for c in model.code_commands if c.kind.integrates][:1]
     return list(model.code_commands)
 
 
@@ -119,7 +119,7 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
     from ..runtime.errors import AutolevModelError
     result = done.result
     status = 0
-    if ns.animate and result.kind in ("dynamics", "ode") and len(result.t):
+    if ns.animate and result.kind.integrates and len(result.t):
         try:
             for f in _animate(model, result, out_dir, ns, label):
                 if not ns.quiet:

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path, PureWindowsPath
 
 from ..runtime.errors import AutolevModelError
+from ..runtime.io import CodeKind
 from ..runtime.outputs import Written as WrittenFiles
 from ..runtime.outputs import inside, write_output
 from .c import write_c
@@ -17,19 +18,19 @@ from .plan import plan_algebraic, plan_dynamics
 
 # (kind, extension) -> (plan, writer); anything else is reported as not written
 WRITERS = {
-    ("algebraic", ".c"): (plan_algebraic, write_c),
-    ("algebraic", ".m"): (plan_algebraic, write_m),
-    ("nonlinear", ".c"): (plan_algebraic, write_c),
-    ("nonlinear", ".m"): (plan_algebraic, write_m),
-    ("dynamics", ".c"): (plan_dynamics, write_c_dynamics),
-    ("dynamics", ".m"): (plan_dynamics, write_m_dynamics),
-    ("dynamics", ".f"): (plan_dynamics, write_f_dynamics),
-    ("dynamics", ".for"): (plan_dynamics, write_f_dynamics),
+    (CodeKind.ALGEBRAIC, ".c"): (plan_algebraic, write_c),
+    (CodeKind.ALGEBRAIC, ".m"): (plan_algebraic, write_m),
+    (CodeKind.NONLINEAR, ".c"): (plan_algebraic, write_c),
+    (CodeKind.NONLINEAR, ".m"): (plan_algebraic, write_m),
+    (CodeKind.DYNAMICS, ".c"): (plan_dynamics, write_c_dynamics),
+    (CodeKind.DYNAMICS, ".m"): (plan_dynamics, write_m_dynamics),
+    (CodeKind.DYNAMICS, ".f"): (plan_dynamics, write_f_dynamics),
+    (CodeKind.DYNAMICS, ".for"): (plan_dynamics, write_f_dynamics),
     # CODE ODE(EQ, x'', ...): the DYNAMICS program, its derivatives from the equations
-    ("ode", ".c"): (plan_dynamics, write_c_dynamics),
-    ("ode", ".m"): (plan_dynamics, write_m_dynamics),
-    ("ode", ".f"): (plan_dynamics, write_f_dynamics),
-    ("ode", ".for"): (plan_dynamics, write_f_dynamics),
+    (CodeKind.ODE, ".c"): (plan_dynamics, write_c_dynamics),
+    (CodeKind.ODE, ".m"): (plan_dynamics, write_m_dynamics),
+    (CodeKind.ODE, ".f"): (plan_dynamics, write_f_dynamics),
+    (CodeKind.ODE, ".for"): (plan_dynamics, write_f_dynamics),
 }
 
 

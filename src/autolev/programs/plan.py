@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from ..runtime import symbols as S
 from ..runtime import units
 from ..runtime.errors import AutolevModelError
+from ..runtime.io import CodeKind
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs
 from ..runtime.numerics.command import (encoded_values, equations_and_unknowns,
@@ -180,7 +181,7 @@ def plan_algebraic(model, command) -> Plan:
     named = list(dict.fromkeys(solver_named + named))
     out_files, encoded_plan = _shown(system, prog.outputs)
     read = [s for s in inputs if command.sweep is None or s != command.sweep[0]]
-    guesses = list(unknowns) if kind == "nonlinear" else []
+    guesses = list(unknowns) if kind.from_guesses else []
     values = Inputs(model, read + guesses,
                     integration=("ABSERR", "RELERR") if guesses else (),
                     given=command.inputs, unit_table={**model.unit_of, **command.units})
@@ -252,10 +253,10 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     Kane's (as `autolev run` integrates it)."""
     what = command.kind.upper()
     equations, unknowns = equations_and_unknowns(command.args, what)
-    if command.kind == "dynamics" and command.args:
+    if command.kind is CodeKind.DYNAMICS and command.args:
         raise AutolevModelError("CODE DYNAMICS with arguments is not written as a "
                                 "program yet")
-    ode = (equations, unknowns) if command.kind == "ode" else None
+    ode = (equations, unknowns) if command.kind is CodeKind.ODE else None
     files = output_columns(model, command)
     encoded = encoded_values(model, command)
     defs = model.defs
@@ -264,7 +265,7 @@ def plan_dynamics(model, command) -> DynamicsPlan:
         command.filename
     with defs.as_of(command.definitions):
         system = NumericSystem(model, files, encoded, integrate=True, ode=ode,
-                               zero=command.zero if command.kind == "dynamics" else None,
+                               zero=command.zero if command.kind is CodeKind.DYNAMICS else None,
                                compile_functions=False)
         if not system.nstate:
             raise AutolevModelError(f"CODE {what}: the model has no state to integrate "

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from enum import Enum
 
 import sympy as sm
 
@@ -11,6 +12,33 @@ from .functions import degrees_to_radians
 from .units import is_degrees
 
 INTEGRATION_PARAMETERS = ("TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR")
+
+
+class CodeKind(str, Enum):
+    """The kind of program a CODE command names; a str, so "dynamics" is DYNAMICS."""
+
+    DYNAMICS = "dynamics"
+    ALGEBRAIC = "algebraic"
+    NONLINEAR = "nonlinear"
+    ODE = "ode"
+
+    def __str__(self) -> str:      # "dynamics" in messages, on every Python version
+        return self.value
+
+    @property
+    def integrates(self) -> bool:
+        """Whether its program integrates differential equations over time."""
+        return self in (CodeKind.DYNAMICS, CodeKind.ODE)
+
+    @property
+    def solves(self) -> bool:
+        """Whether its program solves equations for unknowns (ALGEBRAIC, NONLINEAR)."""
+        return not self.integrates
+
+    @property
+    def from_guesses(self) -> bool:
+        """Whether its unknowns start from INPUT guesses (Newton's method)."""
+        return self is CodeKind.NONLINEAR
 
 
 class IOMixin:
@@ -83,12 +111,13 @@ class IOMixin:
              zero=None) -> None:
         """CODE DYNAMICS|ALGEBRAIC|NONLINEAR|ODE(args) file: a program to run, with the
         INPUT, OUTPUT and ENCODE statements given so far (as Autolev generated it then)."""
-        kind = kind.lower()
-        if kind not in ("dynamics", "algebraic", "nonlinear", "ode"):
+        try:
+            typed = CodeKind(kind.lower())
+        except ValueError:
             raise AutolevModelError(f"CODE {kind.upper()}: not a kind of program "
-                                    "(DYNAMICS, ALGEBRAIC, NONLINEAR or ODE)")
+                                    "(DYNAMICS, ALGEBRAIC, NONLINEAR or ODE)") from None
         self.code_commands.append(CodeCommand(
-            kind, filename, list(args or []), sweep, tuple(options),
+            typed, filename, list(args or []), sweep, tuple(options),
             n_outputs=len(self.outputs), n_encoded=len(self.encoded),
             inputs=dict(self.inputs), units=dict(self.unit_of),
             zero=None if zero is None else sm.Matrix(zero),
@@ -100,7 +129,7 @@ class IOMixin:
 class CodeCommand:
     """One CODE statement and what was given before it."""
 
-    kind: str
+    kind: CodeKind
     filename: str
     args: list
     sweep: tuple | None

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 from . import studies
 from .errors import AutolevModelError
-from .io import CodeCommand
+from .io import CodeCommand, CodeKind
 from .numerics.files import safe_stem
 from .numerics.prepare import keep_built
 from .numerics.results import Result
@@ -30,8 +30,8 @@ class CommandRun:
     def summary(self) -> str:
         """`CODE DYNAMICS bike.c: 101 rows in 0.21 s (kutta-merson, 412 steps)`."""
         result, stats = self.result, self.result.stats
-        what = (f"{stats.get('rows', 0)} rows" if result.kind in ("dynamics", "ode")
-                else "solved" if result.kind != "algebraic" or result.solution
+        what = (f"{stats.get('rows', 0)} rows" if result.kind.integrates
+                else "solved" if result.kind is not CodeKind.ALGEBRAIC or result.solution
                 else "evaluated")
         return (f"CODE {self.command.kind.upper()} {self.command.filename}: {what} in "
                 f"{self.seconds:.2f} s" + (f" ({stats['method']}, {stats.get('steps')} steps)"
@@ -138,7 +138,7 @@ class SimulationMixin:
         first CODE command, else a plain simulation of the model as it stands."""
         command = self.code_command(code) if code is not None else None
         for c in self.code_commands if command is None else ():
-            if c.kind in ("dynamics", "ode"):
+            if c.kind.integrates:
                 command = c
                 break
         if command is None and self.code_commands:
@@ -150,7 +150,7 @@ class SimulationMixin:
         equations as they stand."""
         if code is not None:
             return self.code_command(code)
-        return next((c for c in self.code_commands if c.kind == "dynamics"),
+        return next((c for c in self.code_commands if c.kind is CodeKind.DYNAMICS),
                     None) or self.plain_dynamics()
 
     def plain_dynamics(self) -> CodeCommand:
@@ -159,7 +159,7 @@ class SimulationMixin:
         kept = self.derived.table("plain dynamics")
         if "command" not in kept:
             kept["command"] = CodeCommand(
-                "dynamics", f"{self.name}.c", [], None, (), n_outputs=len(self.outputs),
+                CodeKind.DYNAMICS, f"{self.name}.c", [], None, (), n_outputs=len(self.outputs),
                 n_encoded=len(self.encoded), inputs=dict(self.inputs),
                 units=dict(self.unit_of))
         return kept["command"]

@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import symbols as S
 from ..errors import AutolevModelError
+from ..io import CodeKind
 from .advice import zero_hint
 from .inputs import display_name
 from .results import split_outputs, tables_of
@@ -23,7 +24,7 @@ def run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_pa
     solutions, swept = [], []
     points = [None] if sweep is None else sweep
     n = len(unknowns)
-    guess = (np.array(inputs.vector(unknowns)) if kind == "nonlinear" else np.zeros(n))
+    guess = np.array(inputs.vector(unknowns)) if kind.from_guesses else np.zeros(n)
     base = inputs.vector(system.params)
     t = inputs.internal(S.TIME) if S.TIME in inputs.values else 0.0
     target_pos = None
@@ -41,12 +42,12 @@ def run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_pa
             p = list(base)
             p[target_pos] = point[0]
             system.set_parameters(p)
-        if kind == "algebraic" and n:
+        if kind is CodeKind.ALGEBRAIC and n:
             ab = system.extra("linear", t)
             a = ab[:n * n].reshape(n, n)
             b = ab[n * n:]
             x = _linear_solve(a, -b, zero_params)
-        elif kind == "nonlinear":
+        elif kind is CodeKind.NONLINEAR:
             x = _newton(system, guess, t, inputs.internal("ABSERR"),
                         inputs.internal("RELERR"), unknowns, zero_params)
             guess = x

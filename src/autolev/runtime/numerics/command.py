@@ -14,6 +14,7 @@ import sympy as sm
 from .. import symbols as S
 from .. import units
 from ..errors import AutolevModelError
+from ..io import CodeKind
 from ..vector import Vector
 from .inputs import INTEGRATION, display_name, parse_number, some_names
 from .system import Column
@@ -183,10 +184,10 @@ def _override_number(name: str, value) -> float:
 def solution_columns(command, files: list, unknowns: list) -> list:
     """The OUTPUT files of a CODE ALGEBRAIC/NONLINEAR that solves for `unknowns`: with
     no OUTPUT, the solution is what the program is for, so one file of the unknowns."""
-    if command.kind == "nonlinear" and not unknowns:
+    if command.kind is CodeKind.NONLINEAR and not unknowns:
         raise AutolevModelError("CODE NONLINEAR needs equations and unknowns: "
                                 "CODE NONLINEAR(EQ, x, y) file")
-    if unknowns and not files and command.kind in ("algebraic", "nonlinear"):
+    if unknowns and not files and command.kind.solves:
         return [[Column(u, u.name, (command.inputs.get(u) or (None, None))[1]
                         or command.units.get(u)) for u in unknowns]]
     return files
@@ -198,14 +199,14 @@ def hidden_in_outputs(command) -> tuple:
     return ("i1",) if program_language(command.filename) == "c" else ()
 
 
-def solver_expressions(defs, kind: str, equations: list, unknowns: list) -> dict | None:
+def solver_expressions(defs, kind: CodeKind, equations: list, unknowns: list) -> dict | None:
     """What CODE ALGEBRAIC (the linear system's matrix and right side) and CODE
     NONLINEAR (residuals and their Jacobian) evaluate besides the outputs."""
-    if kind == "algebraic" and equations:
+    if kind is CodeKind.ALGEBRAIC and equations:
         zero = {u: 0 for u in unknowns}
         return {"linear": [d for row in defs.jacobian(equations, unknowns) for d in row]
                 + [defs.substitute(e, zero) for e in equations]}
-    if kind == "nonlinear":
+    if kind is CodeKind.NONLINEAR:
         return {"residual": list(equations),
                 "jacobian": [d for row in defs.jacobian(equations, unknowns) for d in row]}
     return None

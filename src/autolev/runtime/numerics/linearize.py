@@ -28,6 +28,7 @@ import sympy as sm
 
 from .. import symbols as S
 from ..errors import AutolevModelError
+from ..io import CodeKind
 from . import codegen
 from .inputs import display_name
 from .projection import Projector
@@ -274,7 +275,7 @@ class _ConfigurationConstraints:
 def _program_to_linearize(model, command, locked) -> tuple:
     """(the command whose equations are linearized, the locked coordinates): a CODE
     DYNAMICS, solving Kane's equations where coordinates are locked."""
-    if command.kind != "dynamics":
+    if command.kind is not CodeKind.DYNAMICS:
         raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
                                 "CODE DYNAMICS program has equations of motion to linearize")
     held = _locked_coordinates(model, locked or ())

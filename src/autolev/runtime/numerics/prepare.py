@@ -12,6 +12,7 @@ from pathlib import Path
 from .. import symbols as S
 from .. import units
 from ..errors import AutolevModelError, MissingValues
+from ..io import CodeKind
 from .advice import inertia_problems
 from .command import (encoded_values, equations_and_unknowns, find_symbol, given_specified,
                       hidden_in_outputs, names_a_quantity, output_columns, solution_columns,
@@ -56,7 +57,7 @@ class InputsWanted:
 
     @property
     def integrate_states(self) -> bool:
-        return self.command.kind in ("dynamics", "ode")
+        return self.command.kind.integrates
 
 
 def take_inputs(ask: InputsWanted, system):
@@ -76,7 +77,7 @@ def take_inputs(ask: InputsWanted, system):
         names += system.states
         kinds.update({x: "Initial Value" for x in system.states})
         integration = INTEGRATION
-    elif ask.command.kind == "nonlinear":
+    elif ask.command.kind.from_guesses:
         names += ask.unknowns
         kinds.update({u: "Initial Guess" for u in ask.unknowns})
         integration = ("ABSERR", "RELERR")
@@ -188,11 +189,11 @@ def numeric_system(model, command, files, encoded, solving: tuple, backend: str,
         return entry[1]
     with model.defs.as_of(command.definitions):
         return NumericSystem(
-            model, files, encoded, backend=backend, integrate=kind in ("dynamics", "ode"),
-            ode=(equations, unknowns) if kind == "ode" else None,
-            solved=unknowns if kind in ("algebraic", "nonlinear") else (),
+            model, files, encoded, backend=backend, integrate=kind.integrates,
+            ode=(equations, unknowns) if kind is CodeKind.ODE else None,
+            solved=unknowns if kind.solves else (),
             extra=solver_expressions(model.defs, kind, equations, unknowns),
-            zero=command.zero if kind == "dynamics" else None,
+            zero=command.zero if kind is CodeKind.DYNAMICS else None,
             hidden_in_outputs=hidden_in_outputs(command) if quirks else (),
             locked=locked, compile_functions=False)
 

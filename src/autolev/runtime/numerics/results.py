@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..io import CodeKind
+
 
 @dataclass
 class OutputTable:
@@ -38,7 +40,7 @@ class Result:
     encoded: the ENCODE quantities at the last row; failure: Autolev's message when
     the run stopped early (the rows before it are kept)."""
 
-    kind: str
+    kind: CodeKind
     name: str
     t: np.ndarray
     states: np.ndarray

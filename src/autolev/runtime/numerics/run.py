@@ -40,7 +40,7 @@ def run_command(model, command, out_dir=None,
     result.stats["build_seconds"] = prepared.build_seconds
 
     def perform(writer):
-        if kind in ("dynamics", "ode"):
+        if kind.integrates:
             run_dynamics(system, inputs, result, writer, method, options.progress,
                          zero_params, options.compiled, options.constraints,
                          inputs.vector(prepared.extra_constants),
