@@ -28,6 +28,7 @@ from pathlib import Path
 import sympy as sm
 
 from .runtime import diskcache
+from .runtime.libraries import sum_or_product_as_given
 
 DISABLE_VARIABLE = "AUTOLEV_NO_MODEL_CACHE"
 FORMAT = 1
@@ -194,7 +195,7 @@ class _ExpressionPickler(pickle.Pickler):
 
 
 def _joined(kind, args, commutative):
-    return kind._from_args(args, commutative)
+    return sum_or_product_as_given(kind, args, commutative)
 
 
 def _power(base, exponent):

@@ -20,6 +20,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..libraries import dormand_prince_853
+
 LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
 PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
 
@@ -77,16 +79,10 @@ class _Context(ctypes.Structure):
 
 def _dop853_table() -> np.ndarray:
     """The Dormand-Prince 8(5,3) tables (A 16x16, B, C, E3, E5, D 4x16) as one array,
-    from scipy's published coefficients."""
-    # imported here: a run whose compiled loop is cached never generates its C
-    from scipy.integrate._ivp import dop853_coefficients as k
-    n, ne = k.N_STAGES, k.N_STAGES_EXTENDED
-    a = np.zeros((ne, ne))
-    a[:, :] = k.A[:ne, :ne]
-    parts = [a.ravel(), np.asarray(k.A[n, :n], float), np.asarray(k.C[:ne], float),
-             np.asarray(k.E3, float), np.asarray(k.E5, float), np.asarray(k.D, float).ravel()]
-    assert parts[3].size == n + 1 and parts[5].size == 4 * ne
-    return np.ascontiguousarray(np.concatenate(parts))
+    in the order the C loop reads them."""
+    k = dormand_prince_853()
+    return np.ascontiguousarray(np.concatenate([k.a.ravel(), k.b, k.c, k.e3, k.e5,
+                                                k.d.ravel()]))
 
 
 _TABLE = None

@@ -339,8 +339,9 @@ def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progres
 
 
 def _scipy_method(name: str):
+    """scipy's public solver class of that name (RK45, DOP853, Radau, BDF, LSODA, RK23)."""
     import scipy.integrate   # 0.14 s to import: only runs with a scipy method pay it
-    return scipy.integrate._ivp.ivp.METHODS[name]
+    return getattr(scipy.integrate, name)
 
 
 def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
