@@ -72,6 +72,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
@@ -655,22 +656,30 @@ def chosen_models(ns) -> list[tuple[str, Path, Path | None]]:
 
 
 def run_all(models, limit: float, jobs: int, keep: Path | None = None, genuine=None,
-            progress=None) -> list[Journey]:
-    """Every model's journey, `jobs` at a time."""
+            progress=None, each=None) -> list[Journey]:
+    """Every model's journey, `jobs` at a time; `each(journeys done so far)` after each
+    (the order of `models`)."""
+    done: dict = {}
+    lock = threading.Lock()
+
     def one(item):
         ident, path, companion = item
         if keep is not None:
             work = keep / re.sub(r"[^\w.-]", "_", ident)
             shutil.rmtree(work, ignore_errors=True)
             work.mkdir(parents=True)
-            done = journey(ident, path, companion, limit, work, genuine)
+            finished = journey(ident, path, companion, limit, work, genuine)
         else:
             with tempfile.TemporaryDirectory(prefix="journey-") as tmp:
-                done = journey(ident, path, companion, limit, Path(tmp), genuine)
-        if progress is not None:
-            print(f"  {ident}: " + " ".join(done.cells[c].status for c in COMMANDS)
-                  + f" ({done.seconds:.0f} s)", file=progress, flush=True)
-        return done
+                finished = journey(ident, path, companion, limit, Path(tmp), genuine)
+        with lock:
+            done[ident] = finished
+            if progress is not None:
+                print(f"  {ident}: " + " ".join(finished.cells[c].status for c in COMMANDS)
+                      + f" ({finished.seconds:.0f} s)", file=progress, flush=True)
+            if each is not None:
+                each([done[m[0]] for m in models if m[0] in done])
+        return finished
     with ThreadPoolExecutor(jobs) as pool:
         return list(pool.map(one, models))
 
@@ -714,7 +723,8 @@ def summary_lines(counts: dict) -> list[str]:
             for c, n in counts.items()]
 
 
-def as_json(journeys: list[Journey], seconds: float, ns) -> dict:
+def as_json(journeys: list[Journey], seconds: float, ns, asked: int) -> dict:
+    """The report: every cell of the `journeys` done of the `asked`."""
     commit = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True,
                             text=True).stdout.strip()
     dirty = bool(subprocess.run(["git", "status", "--porcelain", "--", "src"], cwd=ROOT,
@@ -724,7 +734,8 @@ def as_json(journeys: list[Journey], seconds: float, ns) -> dict:
             "limit_seconds": ns.limit, "jobs": ns.jobs, "tolerance": TOLERANCE,
             "tools": {"cc": compiler(), "gfortran": shutil.which("gfortran"),
                       "octave": octave()},
-            "seconds": round(seconds, 1), "summary": summary(journeys),
+            "seconds": round(seconds, 1), "models_asked": asked,
+            "summary": summary(journeys),
             "models": {j.ident: {"path": j.path, "values": j.values,
                                  "seconds": round(j.seconds, 1),
                                  "cells": {c: dict(asdict(j.cells[c]),
@@ -790,15 +801,18 @@ def main(argv=None) -> int:
         print("no model found (see --corpus, --listing, --only)", file=sys.stderr)
         return 2
     start = time.monotonic()
-    journeys = run_all(models, ns.limit, ns.jobs, ns.keep, progress=sys.stderr)
+
+    def write(journeys):
+        if ns.json:     # after each model: a long run stopped early keeps what it did
+            report = as_json(journeys, time.monotonic() - start, ns, len(models))
+            ns.json.write_text(json.dumps(report, indent=1) + "\n")
+    journeys = run_all(models, ns.limit, ns.jobs, ns.keep, progress=sys.stderr, each=write)
     seconds = time.monotonic() - start
     print(table(journeys))
     print()
     print("\n".join(summary_lines(summary(journeys))))
-    print(f"{len(journeys)} models in {seconds:.0f} s")
-    report = as_json(journeys, seconds, ns)
-    if ns.json:
-        ns.json.write_text(json.dumps(report, indent=1) + "\n")
+    print(f"{len(journeys)} model{'' if len(journeys) == 1 else 's'} in {seconds:.0f} s")
+    report = as_json(journeys, seconds, ns, len(models))
     if ns.compare:
         print("\n".join(changes(json.loads(ns.compare.read_text()), report)))
     return 1 if any(j.cells[c].status == "FAIL" for j in journeys for c in COMMANDS) else 0
