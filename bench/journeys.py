@@ -440,8 +440,11 @@ def code_cell(ident, model: Model, run: RunToMatch, genuine) -> Cell:
 
 
 def program_check(program: Path, kind: str, run: RunToMatch) -> ProgramCheck:
-    """Compile and run one written program, and compare its files with the run's."""
-    here = program.parent
+    """Compile and run one written program, and compare its files with the run's.  It
+    runs where `autolev code` wrote (a CODE file name's folders are in the names of
+    the files it opens)."""
+    root = run.work / "code"
+    source_name = program.relative_to(root).as_posix()
     suffix = program.suffix.lower()
     text = program.read_text(errors="replace")
     if suffix == ".m":
@@ -450,19 +453,22 @@ def program_check(program: Path, kind: str, run: RunToMatch) -> ProgramCheck:
     if in_name is None:
         return ProgramCheck("names no .in file to read")
     shipped = run.shipped_in
-    source = shipped if shipped is not None and shipped.name.lower() == in_name.lower() \
-        else _run_file(run.folder, in_name)
+    source = shipped if shipped is not None and \
+        shipped.name.lower() == Path(in_name).name.lower() \
+        else _run_file(run.folder, Path(in_name).name)
     if source is None:
-        return ProgramCheck(f"autolev run wrote no {in_name}")
-    shutil.copy(source, here / in_name)
+        return ProgramCheck(f"autolev run wrote no {Path(in_name).name}")
+    (root / in_name).parent.mkdir(parents=True, exist_ok=True)
+    shutil.copy(source, root / in_name)
     check = ProgramCheck()
     if source == shipped:
         check.remarks.append(f"read the shipped {source.name}")
+    exe = Path(source_name).with_suffix(".run").as_posix()
     if suffix == ".c":
         cc = compiler()
         if cc is None:
             return ProgramCheck(remarks=["no C compiler: not compiled"])
-        build = [cc, "-O0", "-o", "program", program.name, "-lm"]
+        build = [cc, "-O0", "-o", exe, source_name, "-lm"]
     else:
         gfortran = shutil.which("gfortran")
         if gfortran is None:
@@ -472,18 +478,18 @@ def program_check(program: Path, kind: str, run: RunToMatch) -> ProgramCheck:
             program.write_text(text.rstrip("\n") + "\n\n" + "\n".join(kutta_and_solve(n))
                                + "\n")
             check.remarks.append("NOSUBS: our KUTTA and SOLVE appended")
-        build = [gfortran, "-O0", "-o", "program", program.name]
-    built = run_process(build, here, run.limit)
+        build = [gfortran, "-O0", "-o", exe, source_name]
+    built = run_process(build, root, run.limit)
     if built.returncode != 0:
         check.problem = f"does not compile: {_first_error(built)}"
         return check
-    ran = run_process(["./program"], here, run.limit)
+    ran = run_process([f"./{exe}"], root, run.limit)
     if ran.returncode is None:
         check.problem = f"did not finish in {run.limit:g} s"
     elif ran.returncode != 0:
         check.problem = f"exit {ran.returncode}: {_last_line(ran.stdout + ran.stderr)}"
     else:
-        compare_files(check, here, program.stem, run,
+        compare_files(check, (root / in_name).parent, Path(in_name).stem, run,
                       integrated=kind in ("dynamics", "ode"))
     return check
 
