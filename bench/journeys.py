@@ -103,11 +103,53 @@ LISTING = ROOT.parent / "shared" / "corpus" / "visible.tsv"
 CORPUS = Path(os.environ.get("AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus"))
 EXAMPLES = ROOT / "autolev_examples"
 # how many times the run is repeated to learn the names of constants without a value
-RULE_ROUNDS = 8
+RULE_ROUNDS = 50
 
 # (model id, command): what is wrong in the model file itself, quoting its line.  Only
 # after reading the model: a shortcoming of autolev is a FAIL, never an entry here.
-GENUINE: dict[tuple[str, str], str] = {}
+GENUINE: dict[tuple[str, str], str] = {
+    ("mae223-bicycledyn-bicycle2", "check"):
+        "line 21 `P_PR_DO>=RR*B3>+D1O*D1>+D03*D3>` uses D1O (letter O); line 5 declares "
+        "D01 (digit 0): `CONSTANTS RF,RR,L{3},THETA,D01,D03,FO1,FO3`",
+    ("mae223-bicycledyn-bike", "check"):
+        "line 86 `W_A_A2> = (Z12*U4 + Z13*U5)*A2>` uses Z12 and Z13, which nothing in the "
+        "file defines (no AUTOZ, ZEE or assignment: Z's copied from another session)",
+    ("mae223-bicycledyn-bicycle11", "check"):
+        "line 289 `XP=[Q1P; ...; U4P; U5P; U6P]` uses U5P, whose definition is commented "
+        "out at line 283 (`%U5P=TAYLOR(U5',1,...)`)",
+    ("mae223-chapter-1-1-9-2", "check"):
+        "line 16 `P_O_P>=R*D1>D_Q1_B>=D(P_O_P>,Q1,B)` runs two statements together",
+    ("swingbike-linearize-swing-bike", "check"):
+        "a fragment of a session: it declares nothing and RUNs nothing, and line 7 "
+        "`A[1,1]=EVALUATE(D(Q4',Q4),Q1=0,...,U6=-V/RR,...)` uses Q4, V and RR (declared in "
+        "SB_01.AL)",
+    ("ridermodel-leanangle", "run"):
+        "line 442 `M=INV(ROWS(B,3:4))`: B is 4x5 (B[1,1] ... B[4,5], lines 416-438), so "
+        "ROWS(B,3:4) is 2x5 and has no inverse",
+    ("eulerpar-rigidbody", "run"):
+        "line 49 `input ma=1, Ixx=1, Iyy=1, Izz=1, Ixy=1, Iyz=1, Ixz=1` gives A an inertia "
+        "of all ones (principal moments 0, 0, 3): the mass matrix is singular at T = 0",
+    ("biomac-acc-427b529d", "check"):
+        "line 18 `RUN gait2d_kin.al`: the repository has no gait2d_kin.al (its kinematics "
+        "file is gait2dc_kin.al)",
+    ("sprint-7seg-7segsprint", "run"):
+        "the integration halts at T = 1.0617E-02 on the shipped BaseModel/7SegSprint.in "
+        "(initial rates in DEG/S, read as rad/s as Autolev's programs did: its line "
+        "`Initial Value: MTP DEG/S | 1064.10`); Autolev's own 7SegSprint_raw.f halts at "
+        "T = 1.0615E-02 on it (shared/truth, run f_raw_repo_in)",
+    ("sprint-7seg-stride-7segsprint", "run"):
+        "the integration halts at T = 3.5373E-03 on the shipped base/7segsprint.in "
+        "(initial rates in DEG/S, read as rad/s as Autolev's programs did: its line "
+        "`Initial Value: U4 DEG/S | 1064.10`); Autolev's own 7segsprint_raw.f halts at "
+        "the same T on it (shared/truth, run f_raw_repo_in)",
+    ("npparser-example5-2", "check"):
+        "line 37 `EigenVec = Rows(EigenVec, 1)` uses EigenVec; line 36 "
+        "`Eig(..., Lambda, EigenVecs)` named it EigenVecs",
+    ("npparser-example5-7", "run"):
+        "lines 32-33 `w_B_N> = qA'*B3>`, `w_C_N> = qA'*C3>` give B and C the rate qA', so "
+        "the DEPENDENT velocities of lines 43-44 do not involve qB', qC' and line 45 "
+        "`Constrain(Dependent[qB', qC'])` cannot solve for them",
+}
 
 
 @dataclass
@@ -178,11 +220,13 @@ def _last_line(text: str) -> str:
 
 
 def _first_error(outcome: Outcome) -> str:
-    """The first line saying `error` (else the first line) of what the command said."""
+    """The first line saying `error`, else the first that is not a warning, else the
+    first line, of what the command said."""
     lines = [line.strip() for line in outcome.stderr.splitlines() if line.strip()]
     lines = lines or [line.strip() for line in outcome.stdout.splitlines() if line.strip()]
-    return next((line for line in lines if "error" in line.lower()), lines[0] if lines
-                else "(nothing said)")
+    said = [line for line in lines if "error" in line.lower()] \
+        + [line for line in lines if "warning:" not in line] + lines
+    return said[0] if said else "(nothing said)"
 
 
 # -- running a command -----------------------------------------------------------------
@@ -632,7 +676,8 @@ def companions(listing: Path) -> dict:
 
 def nearest(model: Path, shipped: list) -> Path | None:
     """The .in (of `companions`) that exists beside the model's copy (its overlay, for a
-    pinned model), in the folder nearest the model's."""
+    pinned model), in the folder nearest the model's: the longest common part of the
+    two, then the fewest folders below it."""
     def shared(p: Path) -> int:
         n = 0
         for a, b in zip(model.parent.parts, p.parent.parts):
@@ -645,7 +690,7 @@ def nearest(model: Path, shipped: list) -> Path | None:
         root = model.parents[len(Path(model_path).parts) - 1]
         if (root / in_path).is_file():
             files.append(root / in_path)
-    return max(files, key=shared) if files else None
+    return max(files, key=lambda p: (shared(p), -len(p.parts))) if files else None
 
 
 def chosen_models(ns) -> list[tuple[str, Path, Path | None]]:

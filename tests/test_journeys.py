@@ -49,6 +49,19 @@ def test_an_exit_1_not_named_is_a_failure_saying_the_first_error():
                                                       "declared")
 
 
+def test_a_failure_without_the_word_error_is_said_by_its_first_line_not_a_warning():
+    said = ("autolev: warning: inputs in DEG/S are used as radian rates\n"
+            "m.al:9: Numerical integration failed to converge at T = 0.5\n")
+    assert J.classify("m", "run", outcome(1, said)).reason == \
+        "exit 1: m.al:9: Numerical integration failed to converge at T = 0.5"
+
+
+def test_every_genuine_entry_names_a_command_and_quotes_the_models_line():
+    for (ident, command), reason in J.GENUINE.items():
+        assert command in J.COMMANDS and ident
+        assert "line" in reason and "`" in reason, (ident, command)
+
+
 def test_exit_0_is_ok_and_the_time_limit_and_a_signal_are_failures():
     assert J.classify("m", "run", outcome(0, "autolev: warning: slow")).status == "ok"
     assert J.classify("m", "run", outcome(None)).reason == "did not finish in 600 s"
