@@ -6,11 +6,16 @@ import math
 import re
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
 from autolev.runtime.numerics import codegen
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
+# how Octave runs a written .m program: shared with bench/journeys.py
+from written_programs import octave, run_octave, with_table_values  # noqa: E402, F401
 
 
 def compiler():
@@ -127,21 +132,10 @@ def largest_difference(ours: dict, theirs: dict) -> tuple[float, str]:
     return worst, where
 
 
-def octave():
-    return shutil.which("octave")
-
-
 needs_cc = pytest.mark.skipif(compiler() is None, reason="no C compiler on this machine")
 needs_octave = pytest.mark.skipif(
     octave() is None, reason="GNU Octave runs the Matlab programs; it is not installed "
     "(Debian: apt install octave)")
-
-
-def run_octave(script: str, folder: Path, timeout: int = 900):
-    """Octave, without a window, running `script` (a program's name) in `folder`."""
-    return subprocess.run([octave(), "--no-gui", "--quiet", "--no-window-system", "--eval",
-                           script], cwd=folder, capture_output=True, text=True,
-                          timeout=timeout)
 
 
 def run_program(program: Path, flags=("-O2",)):
@@ -160,23 +154,6 @@ def table_rows(path: Path) -> list:
     """The rows of an output file in the C and Matlab programs' layout."""
     return [[float(v) for v in line.split()] for line in path.read_text().splitlines()
             if line.strip() and not line.startswith("%")]
-
-
-def with_table_values(text: str, value_of) -> str:
-    """A Matlab program in Autolev's layout with each row of its ReadUserInput table
-    (`NAME   =  value;   % ...`) given the text value_of(NAME) (None: kept)."""
-    out, in_table = [], False
-    for line in text.splitlines():
-        if line.startswith("function") and "ReadUserInput" in line:
-            in_table = True
-        elif line.startswith("% Unit conversions"):
-            in_table = False
-        m = re.match(r"^([A-Za-z]\w*)(\s*=\s*)[^;%]*;(.*)$", line) if in_table else None
-        value = value_of(m.group(1)) if m else None
-        if value is not None:
-            line = f"{m.group(1)}{m.group(2)}{value};{m.group(3)}"
-        out.append(line)
-    return "\n".join(out) + "\n"
 
 
 def matlab_with_values(text: str, draw: int) -> str:
