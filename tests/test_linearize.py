@@ -8,6 +8,7 @@ import sympy as sm
 import pytest
 
 import autolev
+import autolev.runtime as al
 from autolev.runtime.numerics.prepare import prepare_command
 from helpers import EXAMPLES
 
@@ -54,6 +55,20 @@ def test_a_pendulum_by_hand(pendulum):
     assert np.allclose(lin.D, [[0], [0], [1 / (m * L * L)]], rtol=1e-14)
     assert lin.accelerations == pytest.approx([-g / L * math.sin(q)], rel=1e-14)
     assert not lin.steady
+
+
+def test_a_mass_matrix_in_tiny_units_is_not_singular(pendulum):
+    # a cell model's masses are 1e-23 kg: M = m L^2 is far below any absolute threshold,
+    # yet A is the same (g/L) and B scales as 1/m
+    g, L, m, q = 9.81, 2.0, 3.5e-23, 0.3
+    lin = pendulum.linearize({"Q": q, "M": m})
+    assert np.allclose(lin.A, [[0, 1], [-g / L * math.cos(q), 0]], rtol=1e-12)
+    assert lin.B[1, 0] == pytest.approx(1 / (m * L * L), rel=1e-12)
+
+
+def test_a_zero_mass_matrix_is_singular(pendulum):
+    with pytest.raises(al.AutolevModelError, match="mass matrix is singular"):
+        pendulum.linearize({"Q": 0.3, "M": 0})
 
 
 def test_operating_point_in_radians_and_the_rest_from_input(pendulum):

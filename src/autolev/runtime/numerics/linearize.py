@@ -375,18 +375,22 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
     jrates = grads[:nx].copy()
     accelerations = np.zeros(n)
     if n:
+        # each equation divided by its largest coefficient: whether M is singular does not
+        # depend on the units (a cell model's masses are 1e-23 kg)
         mass = values[nx:nx + n * n].reshape(n, n)
-        forcing = values[nx + n * n:nx + n * n + n]
-        dmass = grads[nx:nx + n * n].reshape(n, n, nv)
-        dforcing = grads[nx + n * n:nx + n * n + n]
-        try:
-            with warnings.catch_warnings():     # a singular M is reported below
-                warnings.simplefilter("ignore", scipy.linalg.LinAlgWarning)
-                lu = scipy.linalg.lu_factor(mass, check_finite=True)
-        except ValueError:
-            raise AutolevModelError("the mass matrix is not finite at the operating point") \
-                from None
-        if np.any(np.abs(np.diag(lu[0])) <= 1e-14 * np.max(np.abs(mass), initial=1.0)):
+        if not np.all(np.isfinite(mass)):
+            raise AutolevModelError("the mass matrix is not finite at the operating point")
+        rows = np.max(np.abs(mass), axis=1)
+        if not np.all(rows > 0):
+            raise AutolevModelError("the mass matrix is singular at the operating point")
+        mass = mass / rows[:, None]
+        forcing = values[nx + n * n:nx + n * n + n] / rows
+        dmass = grads[nx:nx + n * n].reshape(n, n, nv) / rows[:, None, None]
+        dforcing = grads[nx + n * n:nx + n * n + n] / rows[:, None]
+        with warnings.catch_warnings():     # a singular M is reported below
+            warnings.simplefilter("ignore", scipy.linalg.LinAlgWarning)
+            lu = scipy.linalg.lu_factor(mass, check_finite=False)
+        if np.any(np.abs(np.diag(lu[0])) <= 1e-14):
             raise AutolevModelError("the mass matrix is singular at the operating point")
         accelerations = scipy.linalg.lu_solve(lu, forcing)
         daccel = scipy.linalg.lu_solve(lu, dforcing - np.einsum("ijk,j->ik", dmass,
