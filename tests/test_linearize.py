@@ -233,6 +233,15 @@ def test_dependent_coordinates_named_or_refused():
         model.linearize(point, constraints=loop_closure(model), dependent=["Q2"])
 
 
+def test_a_sweep_too_long_for_the_command_line_is_refused_before_any_work(capsys):
+    from autolev.cli import main
+    # a billion points would hold gigabytes of rows: refused as a usage error at once
+    assert main(["linearize", str(EXAMPLES / "rolling_disc.al"), "--sweep",
+                 "U3=2:5:1000000000"]) == 2
+    err = capsys.readouterr().err
+    assert "1000000000 points" in err and "at most 100000" in err
+
+
 def test_a_sweep_is_drawn_with_plot(tmp_path, capsys):
     pytest.importorskip("matplotlib", reason="--plot needs the optional matplotlib")
     from autolev.cli import main

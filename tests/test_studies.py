@@ -66,6 +66,25 @@ def test_a_refused_point_gets_its_message_and_the_rest_go_on(pendulum):
         math.sqrt(9.81 / 2), rel=1e-14)
 
 
+def test_points_that_give_different_names_keep_each_its_own():
+    points = studies.Points.of([{"L": 2.0}, {"M": 3.0, "L": 1.0}, {"Q": 0.5}])
+    assert points.names == ["L", "M", "Q"] and len(points) == 3
+    # a name a point does not give is not invented for it (NaN in the table, absent here)
+    assert points.point(0) == {"L": 2.0}
+    assert points.point(1) == {"L": 1.0, "M": 3.0}
+    assert points.point(2) == {"Q": 0.5}
+    assert np.isnan(points.values[0, 1]) and points.values[1, 1] == 3.0
+    whole = studies.Points.of({"L": [1, 2], "Q": [0, 0.1]})
+    assert whole.given is None and whole.point(1) == {"L": 2.0, "Q": 0.1}
+
+
+def test_a_point_without_a_name_gives_nan_in_its_column(pendulum):
+    table = pendulum.sweep([{"L": 2.0, "Q": 0.0}, {"Q": 0.0}], as_frame=False, workers=1)
+    assert table["L"][0] == 2.0 and np.isnan(table["L"][1])
+    # the second point runs with the model's own L (INPUT L = 2)
+    assert table["im2"][1] == pytest.approx(math.sqrt(9.81 / 2.0), rel=1e-12)
+
+
 def test_bad_studies_are_refused(pendulum):
     with pytest.raises(AutolevModelError, match="no quantity named NOPE"):
         pendulum.sweep([{"NOPE": 1.0}])

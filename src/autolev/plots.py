@@ -108,9 +108,10 @@ def eigenvalue_figure(name: str, values, eigenvalues, title: str = ""):
     import matplotlib.pyplot as plt
 
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6.5))
-    for v, ev in zip(values, eigenvalues):
-        top.plot([v] * len(ev), [e.real for e in ev], "k.", markersize=3)
-        bottom.plot([v] * len(ev), [abs(e.imag) for e in ev], "b.", markersize=3)
+    numbers = np.asarray(eigenvalues, dtype=complex).reshape(len(values), -1)
+    along = np.repeat(np.asarray(values, dtype=float), numbers.shape[1])
+    top.plot(along, numbers.real.ravel(), "k.", markersize=3)
+    bottom.plot(along, np.abs(numbers.imag).ravel(), "b.", markersize=3)
     top.axhline(0.0, color="r", linewidth=0.8)
     top.set_ylabel("real part (1/s)")
     bottom.set_ylabel("|imaginary part| (rad/s)")

@@ -7,6 +7,8 @@ import math
 import sys
 from pathlib import Path
 
+import numpy as np
+
 from .common import (UsageError, has_matplotlib, listed, load_model, model_value_options,
                      name_values, overwrite_option, specified_values)
 
@@ -100,6 +102,10 @@ def _report_eigenvalues(path: Path, lin, out_dir: str | None, overwrite: bool = 
     return 0
 
 
+# a sweep's table is held for its CSV and plot: past this, Model.sweep streams to a file
+MAX_SWEEP_POINTS = 100_000
+
+
 def _sweep_range(text: str):
     """NAME=START:STOP:N as (name, values); UsageError for anything else."""
     name, sep, rest = text.partition("=")
@@ -111,6 +117,9 @@ def _sweep_range(text: str):
     if not sep or not name.strip() or len(parts) != 3 or count < 1 \
             or not (math.isfinite(start) and math.isfinite(stop)):
         raise UsageError(f"--sweep expects NAME=START:STOP:N (N >= 1), not {text!r}")
+    if count > MAX_SWEEP_POINTS:
+        raise UsageError(f"--sweep asks for {count} points; at most {MAX_SWEEP_POINTS} "
+                         "from the command line (Model.sweep in Python takes more)")
     if count == 1:
         return name.strip(), [start]
     return name.strip(), [start + (stop - start) * k / (count - 1) for k in range(count)]
@@ -132,13 +141,13 @@ def _linearize_sweep(path: Path, model, sweep, point: dict, options: dict,
               file=sys.stderr)
         return 1
     n = sum(c.startswith("re") for c in table.names)
-    eigenvalues = [[complex(table[f"re{k}"][j], table[f"im{k}"][j]) for k in range(1, n + 1)]
-                   for j in range(len(values))]
-    csv = "\n".join([",".join([name] + [f"{p}{k}" for k in range(1, n + 1) for p in ("re", "im")])]
-                    + [",".join([f"{v:.15g}"] + [f"{x:.15g}" for ev in row
-                                                  for x in (ev.real, ev.imag)])
-                       for v, row in zip(values, eigenvalues)]) + "\n"
+    columns = [f"{p}{k}" for k in range(1, n + 1) for p in ("re", "im")]
+    numbers = np.column_stack([np.asarray(values, dtype=float)]
+                              + [np.asarray(table[c], dtype=float) for c in columns])
+    csv = "\n".join([",".join([name] + columns)]
+                    + [",".join(f"{x:.15g}" for x in row) for row in numbers]) + "\n"
     print(csv, end="")
+    eigenvalues = numbers[:, 1::2] + 1j * numbers[:, 2::2]
     unsteady = [v for v, steady in zip(values, table["steady"]) if not steady]
     if unsteady:
         print(f"{path}: warning: not an equilibrium or a steady motion at {name} = "

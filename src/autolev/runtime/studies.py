@@ -13,6 +13,7 @@ Where the points are evaluated:
 """
 from __future__ import annotations
 
+import collections
 import hashlib
 import itertools
 import multiprocessing
@@ -114,17 +115,16 @@ def sweep(model, points, what: str = "linearize", *, executor=None,
     unknown = set(options) - _OPTIONS[what]
     if unknown:
         raise TypeError(f"sweep(what={what!r}) takes no option {', '.join(sorted(unknown))}")
-    rows = _as_points(points)
-    _check_names(model, rows, what)
+    rows = Points.of(points)
+    _check_names(model, rows.names, what)
     report = _Progress(len(rows), progress)
-    if not rows:
-        return _table([], [], as_frame)
-    if executor is not None:
-        results = _on_executor(model, executor, what, rows, options, collect,
-                               chunk_size, report)
-    else:
-        results = _on_local_cores(model, workers, what, rows, options, collect,
-                                  chunk_size, report)
+    results = Results(len(rows))
+    if len(rows) and executor is not None:
+        _on_executor(model, executor, what, rows, options, collect, chunk_size, report,
+                     results)
+    elif len(rows):
+        _on_local_cores(model, workers, what, rows, options, collect, chunk_size, report,
+                        results)
     report.done()
     return _table(rows, results, as_frame)
 
@@ -175,30 +175,32 @@ def _evaluate_chunk(model, what, chunk, options, collect) -> list:
 
 
 # -- where the points are evaluated --------------------------------------------------------
-def _on_local_cores(model, workers, what, rows, options, collect, chunk_size, report):
+def _on_local_cores(model, workers, what, rows, options, collect, chunk_size, report,
+                    results):
     """Here until the first point (which builds and compiles) and some more have shown
     what a point costs; the rest in forked workers when they would take more than a
     couple of seconds here."""
-    results = [_evaluate(model, what, rows[0], options, collect)]
+    results.put(0, _evaluate(model, what, rows.point(0), options, collect))
     report.advance(1)
+    done = 1
     count = _worker_count(workers, len(rows) - 1)
     start = time.perf_counter()
-    while len(results) < len(rows):
-        per_point = (time.perf_counter() - start) / max(len(results) - 1, 1)
-        if count > 1 and len(results) > 1 and \
-                per_point * (len(rows) - len(results)) > LOCAL_SECONDS:
+    while done < len(rows):
+        per_point = (time.perf_counter() - start) / max(done - 1, 1)
+        if count > 1 and done > 1 and per_point * (len(rows) - done) > LOCAL_SECONDS:
             break
-        results.append(_evaluate(model, what, rows[len(results)], options, collect))
+        results.put(done, _evaluate(model, what, rows.point(done), options, collect))
         report.advance(1)
-    rest = rows[len(results):]
-    if not rest:
-        return results
-    chunks = _chunks(rest, chunk_size or max(1, min(64, len(rest) // (4 * count))))
-    for chunk_results, chunk in zip(_in_workers(model, count, what, chunks, options, collect),
-                                    chunks):
-        results += chunk_results
-        report.advance(len(chunk))
-    return results
+        done += 1
+    if done == len(rows):
+        return
+    size = chunk_size or max(1, min(64, (len(rows) - done) // (4 * count)))
+    spans = _spans(done, len(rows), size)
+    chunks = (rows.points(lo, hi) for lo, hi in spans)
+    for (lo, hi), chunk_results in zip(spans, _in_workers(model, count, what, chunks,
+                                                          options, collect)):
+        results.put_all(lo, chunk_results)
+        report.advance(hi - lo)
 
 
 def _in_workers(model, count: int, what, chunks, options, collect):
@@ -212,10 +214,8 @@ def _in_workers(model, count: int, what, chunks, options, collect):
         try:
             with ProcessPoolExecutor(count, mp_context=multiprocessing.get_context("fork")) \
                     as pool:
-                futures = [pool.submit(_forked_chunk, token, what, chunk, options, collect)
-                           for chunk in chunks]
-                for future in futures:
-                    yield future.result()
+                yield from _in_order(pool, 4 * count, (
+                    (_forked_chunk, token, what, chunk, options, collect) for chunk in chunks))
         finally:
             _FORKED.pop(token, None)
         return
@@ -224,10 +224,22 @@ def _in_workers(model, count: int, what, chunks, options, collect):
     method = "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() \
         else "spawn"
     with ProcessPoolExecutor(count, mp_context=multiprocessing.get_context(method)) as pool:
-        futures = [pool.submit(_pickled_chunk, payload, digest, what, chunk, options, collect)
-                   for chunk in chunks]
-        for future in futures:
-            yield future.result()
+        yield from _in_order(pool, 4 * count, (
+            (_pickled_chunk, payload, digest, what, chunk, options, collect)
+            for chunk in chunks))
+
+
+def _in_order(pool, window: int, tasks):
+    """The results of `tasks` ((function, *arguments) each) in order, at most `window`
+    submitted and not yet taken: the points and results of a long study are never all
+    in memory at once."""
+    pending = collections.deque()
+    for task in tasks:
+        pending.append(pool.submit(*task))
+        if len(pending) >= window:
+            yield pending.popleft().result()
+    while pending:
+        yield pending.popleft().result()
 
 
 _SWEEPS = itertools.count()
@@ -261,7 +273,8 @@ def _pickled_chunk(payload: bytes, digest: str, what, chunk, options, collect) -
     return _evaluate_chunk(kept[1], what, chunk, options, collect)
 
 
-def _on_executor(model, executor, what, rows, options, collect, chunk_size, report):
+def _on_executor(model, executor, what, rows, options, collect, chunk_size, report,
+                 results):
     source = model.loaded.source if model.loaded is not None else None
     if source is None:
         raise AutolevModelError("this model was not loaded from a file (autolev.load): "
@@ -273,14 +286,13 @@ def _on_executor(model, executor, what, rows, options, collect, chunk_size, repo
             "as the study's points or options instead)")
     payload = pickle.dumps(source)
     digest = hashlib.sha256(payload).hexdigest()
-    chunks = _chunks(rows, chunk_size or max(1, min(64, len(rows) // 16 or 1)))
-    futures = [executor.submit(_remote_chunk, payload, digest, what, chunk, options, collect)
-               for chunk in chunks]
-    results = []
-    for future, chunk in zip(futures, chunks):
-        results += future.result()
-        report.advance(len(chunk))
-    return results
+    spans = _spans(0, len(rows), chunk_size or max(1, min(64, len(rows) // 16 or 1)))
+    tasks = ((_remote_chunk, payload, digest, what, rows.points(lo, hi), options, collect)
+             for lo, hi in spans)
+    # a cluster's workers are many: keep a good number of tasks queued for them
+    for (lo, hi), chunk_results in zip(spans, _in_order(executor, 256, tasks)):
+        results.put_all(lo, chunk_results)
+        report.advance(hi - lo)
 
 
 def _remote_chunk(payload: bytes, digest: str, what, chunk, options, collect) -> list:
@@ -308,31 +320,92 @@ def _worker_count(workers, n_points: int) -> int:
     return min(workers, n_points)
 
 
-def _chunks(rows: list, size: int) -> list:
-    return [rows[k:k + size] for k in range(0, len(rows), size)]
+def _spans(lo: int, hi: int, size: int) -> list:
+    return [(k, min(k + size, hi)) for k in range(lo, hi, size)]
 
 
 # -- the points and the table --------------------------------------------------------------
-def _as_points(points) -> list:
-    if isinstance(points, dict):
-        lengths = {len(np.atleast_1d(v)) for v in points.values()}
-        if len(lengths) > 1:
-            raise ValueError("points: every name needs as many values (or use grid() "
-                             "for every combination)")
-        names = list(points)
-        columns = [np.atleast_1d(np.asarray(v, dtype=float)) for v in points.values()]
-        return [dict(zip(names, (float(c[k]) for c in columns)))
-                for k in range(lengths.pop() if lengths else 0)]
-    rows = []
-    for point in points:
-        if not isinstance(point, dict):
-            raise TypeError(f"points: each point is a {{name: value}} dict, not {point!r}")
-        rows.append({str(k): float(v) for k, v in point.items()})
-    return rows
+@dataclass
+class Points:
+    """A study's points as one array (a row per point, a column per name) and which
+    names each point gives: 8 bytes a value, where a dict per point took some 200."""
+
+    names: list
+    values: np.ndarray
+    given: np.ndarray | None = None      # None: every point gives every name
+
+    @classmethod
+    def of(cls, points) -> "Points":
+        if isinstance(points, dict):
+            lengths = {len(np.atleast_1d(v)) for v in points.values()}
+            if len(lengths) > 1:
+                raise ValueError("points: every name needs as many values (or use grid() "
+                                 "for every combination)")
+            count = lengths.pop() if lengths else 0
+            values = np.empty((count, len(points)))
+            for k, v in enumerate(points.values()):
+                values[:, k] = np.atleast_1d(np.asarray(v, dtype=float))
+            return cls([str(n) for n in points], values)
+        rows = []
+        for point in points:
+            if not isinstance(point, dict):
+                raise TypeError(f"points: each point is a {{name: value}} dict, not "
+                                f"{point!r}")
+            rows.append({str(k): float(v) for k, v in point.items()})
+        names = list(dict.fromkeys(n for row in rows for n in row))
+        values = np.full((len(rows), len(names)), np.nan)
+        given = np.zeros((len(rows), len(names)), dtype=bool)
+        where = {n: k for k, n in enumerate(names)}
+        for j, row in enumerate(rows):
+            for n, v in row.items():
+                values[j, where[n]] = v
+                given[j, where[n]] = True
+        return cls(names, values, None if given.all() else given)
+
+    def __len__(self) -> int:
+        return len(self.values)
+
+    def point(self, j: int) -> dict:
+        row = self.values[j]
+        return {n: float(row[k]) for k, n in enumerate(self.names)
+                if self.given is None or self.given[j, k]}
+
+    def points(self, lo: int, hi: int) -> list:
+        return [self.point(j) for j in range(lo, hi)]
 
 
-def _check_names(model, rows: list, what: str) -> None:
-    names = {name for row in rows for name in row}
+class Results:
+    """Each point's columns, put into one array per column as they come."""
+
+    def __init__(self, count: int):
+        self.count = count
+        self.columns: dict = {}
+        self.booleans: dict = {}         # name -> how many of its values were booleans
+        self.failures: dict = {}         # point -> why the model refused it
+
+    def put(self, j: int, row: dict) -> None:
+        for name, value in row.items():
+            if name == "failure":
+                self.failures[j] = value
+                continue
+            column = self.columns.get(name)
+            if column is None:
+                column = self.columns[name] = np.full(self.count, np.nan)
+                self.booleans[name] = 0
+            column[j] = value
+            self.booleans[name] += isinstance(value, (bool, np.bool_))
+
+    def put_all(self, lo: int, rows: list) -> None:
+        for j, row in enumerate(rows, lo):
+            self.put(j, row)
+
+    def column(self, name: str) -> np.ndarray:
+        """A column; of booleans when every point gave a boolean."""
+        column = self.columns[name]
+        return column.astype(bool) if self.booleans[name] == self.count else column
+
+
+def _check_names(model, names: list, what: str) -> None:
     unknown = sorted(n for n in names if not names_a_quantity(model, n)
                      and not (what == "simulate" and n.upper() in INTEGRATION_PARAMETERS))
     if unknown:
@@ -340,17 +413,24 @@ def _check_names(model, rows: list, what: str) -> None:
                                 + ", ".join(unknown))
 
 
-def _table(rows: list, results: list, as_frame):
-    names = list(dict.fromkeys(n for row in rows for n in row))
-    names += [n for n in dict.fromkeys(k for r in results for k in r if k != "failure")
-              if n not in names]
+def _table(rows: Points, results: Results, as_frame):
     columns = {}
-    for name in names:
-        values = [r.get(name, row.get(name, np.nan)) for row, r in zip(rows, results)]
-        columns[name] = np.array(values, dtype=bool if all(
-            isinstance(v, (bool, np.bool_)) for v in values) and values else float)
-    if any("failure" in r for r in results):
-        columns["failure"] = np.array([r.get("failure", "") for r in results], dtype=object)
+    for k, name in enumerate(rows.names):
+        column = rows.values[:, k].copy()
+        if rows.given is not None:
+            column[~rows.given[:, k]] = np.nan
+        if name in results.columns:     # where a collect gives a point's own name, it wins
+            found = results.columns[name]
+            column = np.where(np.isnan(found), column, found)
+        columns[name] = column
+    for name in results.columns:
+        if name not in columns:
+            columns[name] = results.column(name)
+    if results.failures:
+        failure = np.full(len(rows), "", dtype=object)
+        for j, why in results.failures.items():
+            failure[j] = why
+        columns["failure"] = failure
     table = SweepTable(columns)
     if as_frame is False:
         return table

@@ -392,9 +392,10 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
             lu = scipy.linalg.lu_factor(mass, check_finite=False)
         if np.any(np.abs(np.diag(lu[0])) <= 1e-14):
             raise AutolevModelError("the mass matrix is singular at the operating point")
-        accelerations = scipy.linalg.lu_solve(lu, forcing)
-        daccel = scipy.linalg.lu_solve(lu, dforcing - np.einsum("ijk,j->ik", dmass,
-                                                                accelerations))
+        accelerations = scipy.linalg.lu_solve(lu, forcing, check_finite=False)
+        # in Fortran order: LAPACK's, which a C-ordered right side is first copied to
+        daccel = scipy.linalg.lu_solve(lu, np.asfortranarray(
+            dforcing - np.einsum("ijk,j->ik", dmass, accelerations)), check_finite=False)
         rates[system.unknown_positions] = accelerations
         jrates[system.unknown_positions] = daccel
     else:
