@@ -212,6 +212,37 @@ def test_kindiffs_constrain_and_explicit_show_what_they_define(tmp_path):
     assert "(V2 + R)" not in shown["E"]            # EXPAND rewrote E in place
 
 
+def test_a_declared_name_shows_its_definition_then_under_autorhs_too(tmp_path):
+    # AUTORHS ON reads Q' as its definition U: the response is still Q' = U
+    path = tmp_path / "autorhs.al"
+    path.write_text("AUTORHS ON\nVARIABLES Q'\nMOTIONVARIABLES U'\nCONSTANTS K\nQ' = U\n"
+                    "SPECIFIED F\nF = K*Q\nE = Q' + F\nF = 2*K\n")
+    responses = [x for x in transcript(path).splitlines() if x.startswith("->")]
+    assert responses == ["-> (6) Q' = U", "-> (9) F = K*Q", "-> (11) E = U + K*Q",
+                         "-> (13) F = 2*K"]
+
+
+def test_the_repeated_parts_of_a_large_value_are_shown_as_z_variables(tmp_path):
+    # A(k+1) = f(Ak) with f(Z) = Z^2*COS(Z) + Z*SIN(Z): A5 printed out has thousands of
+    # nodes, each level repeated four times in the next; as AUTOZ showed such values it
+    # is Z1 = A1, Z(k+1) = f(Zk), A5 = f(Z4)
+    path = tmp_path / "nested.al"
+    path.write_text("VARIABLES X, Y\nA1 = SIN(X) + X*COS(Y) + Y^3\n" + "".join(
+        f"A{k + 1} = A{k}*SIN(A{k}) + A{k}^2*COS(A{k})\n" for k in range(1, 5)))
+    text = transcript(path)
+    assert text.splitlines()[-6:] == [
+        "-> (11) Z1 = Y^3 + X*COS(Y) + SIN(X)",
+        "-> (12) Z2 = Z1^2*COS(Z1) + Z1*SIN(Z1)",
+        "-> (13) Z3 = Z2^2*COS(Z2) + Z2*SIN(Z2)",
+        "-> (14) Z4 = Z3^2*COS(Z3) + Z3*SIN(Z3)",
+        "-> (15) A5 = Z4^2*COS(Z4) + Z4*SIN(Z4)", ""]
+    assert "Z" not in text.split("(10) A5")[0]      # A4 is small enough to show whole
+    saved = tmp_path / "nested.all"
+    saved.write_text(text)
+    report = autolev.verify(saved)
+    assert report.ok and report.count("match") == len(report.outcomes) == 9
+
+
 @pytest.mark.corpus
 def test_every_corpus_model_without_code_transcribes_and_verifies(corpus):
     import corpus as corpus_bench        # bench/corpus.py, as tests/test_corpus.py reads it

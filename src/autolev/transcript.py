@@ -10,7 +10,8 @@ of a session" has the list and its evidence).  Values are written in Autolev's s
 decimal of 7 significant digits (`PI/2` is `1.570796`, a square root `X^0.5`), a matrix
 one element a line (`ZERO[2] = ...`) but a direction-cosine matrix or a 1x1 matrix
 whole (`[a, b; c, d]`).  Our Z variables are ours: their numbering need not be
-Autolev's, and `autolev verify` judges a transcript by value.
+Autolev's (and a large value's repeated parts get Z's of the transcript's own), and
+`autolev verify` judges a transcript by value.
 """
 from __future__ import annotations
 
@@ -24,7 +25,8 @@ from sympy.printing.str import StrPrinter
 from . import ir
 from .errors import AutolevError
 from .pipeline import parse
-from .runtime.symbols import TIME, Z
+from .runtime.calculus import is_small
+from .runtime.symbols import TIME, Z, new_z
 from .runtime.vector import Dyadic, Vector
 from .source import decode
 from .translate.commands import IN_PLACE
@@ -96,20 +98,22 @@ class AutolevPrinter(StrPrinter):
 _PRINTER = AutolevPrinter({"order": "none"})
 
 
-def expression(value) -> str:
-    """A value (scalar, Vector, Dyadic, matrix) as Autolev printed it."""
+def expression(value, scalar=sm.sympify) -> str:
+    """A value (scalar, Vector, Dyadic, matrix) as Autolev printed it; `scalar` gives
+    each of its scalars as printed (with Z's for the repeated parts of a large one)."""
     if isinstance(value, Vector):
-        return _terms([(c, f"{frame.name}{i + 1}>") for frame, comps in value.terms.items()
+        return _terms([(scalar(c), f"{frame.name}{i + 1}>")
+                       for frame, comps in value.terms.items()
                        for i, c in enumerate(comps)], "0>")
     if isinstance(value, Dyadic):
-        return _terms([(m[i, j], f"{a.name}{i + 1}>*{b.name}{j + 1}>")
+        return _terms([(scalar(m[i, j]), f"{a.name}{i + 1}>*{b.name}{j + 1}>")
                        for (a, b), m in value.terms.items()
                        for i in range(3) for j in range(3)], "0>>")
     if isinstance(value, (list, tuple)):
         value = sm.Matrix(value)
     if isinstance(value, sm.MatrixBase):
-        return _PRINTER.doprint(value.applyfunc(_decimal))
-    return _PRINTER.doprint(_decimal(sm.sympify(value)))
+        return _PRINTER.doprint(value.applyfunc(lambda e: _decimal(scalar(e))))
+    return _PRINTER.doprint(_decimal(scalar(sm.sympify(value))))
 
 
 def _decimal(expr):
@@ -160,9 +164,10 @@ class _Shown:
     """One response Autolev printed for an input: the name it displayed and the Autolev
     expression that reads our value of it right after that input."""
 
-    name: str             # N_A, I_A_AO>>, U1', FORCE_AO>, ZERO
-    capture: str          # N_A, RHS(U1'), ZERO
-    whole: bool = False   # a matrix shown whole (a direction-cosine matrix)
+    name: str                 # N_A, I_A_AO>>, U1', FORCE_AO>, ZERO
+    capture: str              # N_A, U1', ZERO
+    whole: bool = False       # a matrix shown whole (a direction-cosine matrix)
+    definition: bool = False  # a declared name: its definition then is shown
 
 
 def transcript(path) -> str:
@@ -193,18 +198,16 @@ def transcript(path) -> str:
     for k, r in enumerate(responses):
         if k in captured:
             after.setdefault(r.after, []).append(k)
-    out, number, shown = [], 0, set()
+    out, number, shown = [], 0, _Shower(model)
     for no, line in enumerate(lines, 1):
         if line.strip():                 # Autolev numbered no blank line (TD-all (3))
             number += 1
             out.append(f"   ({number}) {line}")
         for k in after.get(no, []):
-            value, _ = captured[k]
-            for z in _z_chain(model, value, shown):
-                number += 1
-                out.append(f"-> ({number}) {expression(z)} = "
-                           f"{expression(model.defs.rhs[z])}")
-            for name, text in _displayed(shown_as[k], value):
+            value, known = captured[k]
+            if shown_as[k].definition and isinstance(value, sm.Symbol) and value in known:
+                value = known[value]      # the definition then, not a later one
+            for name, text in shown.lines(shown_as[k], value):
                 number += 1
                 out.append(f"-> ({number}) {name} = {text}")
         if after.get(no):
@@ -212,18 +215,93 @@ def transcript(path) -> str:
     return "\n".join(out) + "\n"
 
 
-def _displayed(shown: _Shown, value) -> list[tuple[str, str]]:
-    """(name, value) of each line of a response: a matrix of more than one element one
-    element a line (`ZERO[1] = ...`, `A[1,2] = ...`), unless shown whole."""
-    if isinstance(value, (list, tuple)):
-        value = sm.Matrix(value)
-    if not isinstance(value, sm.MatrixBase) or shown.whole or len(value) == 1:
-        return [(shown.name, expression(value))]
-    if value.cols == 1:
-        return [(f"{shown.name}[{i + 1}]", expression(value[i, 0]))
-                for i in range(value.rows)]
-    return [(f"{shown.name}[{i + 1},{j + 1}]", expression(value[i, j]))
-            for i in range(value.rows) for j in range(value.cols)]
+# nodes of a scalar counted with every repetition (about 4 characters each printed):
+# above this, each part it repeats is shown as a Z of its own first
+LARGE = 2000
+
+
+class _Shower:
+    """The responses' lines: each value after the Z variables it uses that were not
+    shown yet.  Our model's Z's can be large where Autolev's were many and small (a
+    derivative of a solved speed has a million nodes, 900 of them distinct); a large
+    one is shown as AUTOZ showed such values, its repeated parts named by Z's of the
+    transcript's own, numbered after the model's."""
+
+    def __init__(self, model):
+        self.model = model
+        self.shown: set = set()                   # the model's Z's shown
+        self.named: dict = {}                     # a repeated part -> its added Z
+        self.pending: list = []                   # (Z, definition) to show next
+        numbers = [int(z.name[1:]) for z in model.defs.rhs
+                   if isinstance(z, Z) and z.name[1:].isdigit()]
+        self.next_z = max(numbers, default=0) + 1
+
+    def lines(self, shown: _Shown, value) -> list[tuple[str, str]]:
+        """(name, text) of each line of a response: the Z's first, then a matrix of more
+        than one element one element a line (`ZERO[1] = ...`, `A[1,2] = ...`), unless
+        shown whole."""
+        out = []
+        for z in _z_chain(self.model, value, self.shown):
+            out += self._line(expression(z), self.model.defs.rhs[z])
+        if isinstance(value, (list, tuple)):
+            value = sm.Matrix(value)
+        if not isinstance(value, sm.MatrixBase) or shown.whole or len(value) == 1:
+            return out + self._line(shown.name, value)
+        if value.cols == 1:
+            return out + [x for i in range(value.rows)
+                          for x in self._line(f"{shown.name}[{i + 1}]", value[i, 0])]
+        return out + [x for i in range(value.rows) for j in range(value.cols)
+                      for x in self._line(f"{shown.name}[{i + 1},{j + 1}]", value[i, j])]
+
+    def _line(self, name: str, value) -> list[tuple[str, str]]:
+        text = expression(value, self._named)
+        added, self.pending = self.pending, []
+        return [(expression(z), expression(d)) for z, d in added] + [(name, text)]
+
+    def _named(self, e):
+        """e with its repeated parts named (`pending` gets their definitions), if large."""
+        e = sm.sympify(e)
+        order = _post_order(e)
+        size: dict = {}
+        for node in order:
+            size[node] = 1 + sum(size[a] for a in node.args)
+        if size[e] <= LARGE:
+            return e
+        uses = dict.fromkeys(order, 0)
+        uses[e] = 1
+        for node in reversed(order):             # each part before its own parts
+            for a in node.args:
+                uses[a] += uses[node]
+        rebuilt: dict = {}
+        for node in order:
+            if node in self.named:
+                rebuilt[node] = self.named[node]
+                continue
+            new = node.func(*(rebuilt[a] for a in node.args)) if node.args else node
+            if uses[node] > 1 and not is_small(new):
+                z = new_z(self.next_z)
+                self.next_z += 1
+                self.named[node] = z
+                self.pending.append((z, new))
+                new = z
+            rebuilt[node] = new
+        return rebuilt[e]
+
+
+def _post_order(e) -> list:
+    """The distinct subexpressions of e, each after its arguments."""
+    order, seen, stack = [], set(), [(e, False)]
+    while stack:
+        node, done = stack.pop()
+        if done:
+            order.append(node)
+            continue
+        if node in seen:
+            continue
+        seen.add(node)
+        stack.append((node, True))
+        stack.extend((a, False) for a in node.args if a not in seen)
+    return order
 
 
 def _written(e: ir.Expr) -> str:
@@ -239,9 +317,8 @@ def _defined(program: ir.Program, name: str, target: ir.Expr) -> _Shown:
     """The response to a new value of `name`: a declared variable, constant or
     specified quantity shows its definition (`TORQUE = 10*SIN(...)`, SSOpt (287)),
     anything else its value."""
-    if isinstance(target, ir.Name) and program.symbols.scalar(target.name) is not None:
-        return _Shown(name, f"RHS({name})")
-    return _Shown(name, name)
+    declared = isinstance(target, ir.Name) and program.symbols.scalar(target.name) is not None
+    return _Shown(name, name, definition=declared)
 
 
 def _responses(st: ir.Statement, program: ir.Program, massive: list[str]) -> list[_Shown]:
@@ -260,7 +337,7 @@ def _responses(st: ir.Statement, program: ir.Program, massive: list[str]) -> lis
     if what in ("SIMPROT", "DIRCOS") and len(args) >= 2 and None not in names[:2]:
         return [_Shown(f"{names[0]}_{names[1]}", f"{names[0]}_{names[1]}", whole=True)]
     if what == "KINDIFFS":
-        return [_Shown(f"{n}'", f"RHS({n}')") for n in names[3:] if n is not None]
+        return [_Shown(f"{n}'", f"{n}'", definition=True) for n in names[3:] if n is not None]
     if what == "SOLVE":
         unknowns = []
         for a in args[1:]:
@@ -270,12 +347,12 @@ def _responses(st: ir.Statement, program: ir.Program, massive: list[str]) -> lis
                 unknowns += [x for row in a.rows for x in row]
             else:
                 unknowns.append(a)
-        return [_Shown(_written(u), f"RHS({_written(u)})") for u in unknowns
+        return [_Shown(_written(u), _written(u), definition=True) for u in unknowns
                 if isinstance(u, ir.Name)]
     if what in ("CONSTRAIN", "CONSTRAINT"):
         speeds = [_written(i) for a in args if isinstance(a, ir.Index)
                   for i in a.indices if isinstance(i, ir.Name)]
-        return [_Shown(n, f"RHS({n})") for n in speeds + [f"{n}'" for n in speeds]]
+        return [_Shown(n, n, definition=True) for n in speeds + [f"{n}'" for n in speeds]]
     if what == "ANGVEL" and len(args) >= 2 and None not in names[:2]:
         return [_Shown(f"W_{names[1]}_{names[0]}>", f"W_{names[1]}_{names[0]}>")]
     if what in ("V2PTS", "V1PT", "A2PTS", "A1PT") and len(args) == 4 \
