@@ -1,10 +1,8 @@
-"""What Autolev displayed for a model without a CODE command (issue 19, item 2): the
-numbered inputs and each assignment's response, in Autolev's syntax, that `autolev
+"""What Autolev displayed for a model (issue 19, item 2; issue 29): the numbered inputs
+and the responses of each assignment and command, in Autolev's syntax, that `autolev
 verify` can replay."""
 import subprocess
 import sys
-import tempfile
-from pathlib import Path
 
 import pytest
 import sympy as sm
@@ -243,9 +241,23 @@ def test_the_repeated_parts_of_a_large_value_are_shown_as_z_variables(tmp_path):
     assert report.ok and report.count("match") == len(report.outcomes) == 9
 
 
+def test_nicheck_shows_the_rate_of_its_work_integral_first(tmp_path):
+    # a particle on a spring: Fr = -K*Q, so WCHECK1' = -Fr*U = K*Q*U, and the check is
+    # the kinetic energy M*U^2/2 plus that integral (SSOpt (311)-(313))
+    path = tmp_path / "spring.al"
+    path.write_text("NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' Q', U'\nCONSTANTS M, K\n"
+                    "Q' = U\nP_NO_P> = Q*N1>\nV_P_N> = U*N1>\nMASS P = M\n"
+                    "FORCE_P> = -K*Q*N1>\nE = NICHECK()\n")
+    lines = transcript(path).splitlines()
+    assert lines[-3:] == ["-> (15) WCHECK1' = K*Q*U", "-> (16) E = WCHECK1 + 0.5*M*U^2", ""]
+
+
 @pytest.mark.corpus
-def test_every_corpus_model_without_code_transcribes_and_verifies(corpus):
-    import corpus as corpus_bench        # bench/corpus.py, as tests/test_corpus.py reads it
+def test_every_corpus_model_without_code_transcribes_and_verifies(corpus, tmp_path):
+    # bench/corpus.py lists the models as tests/test_corpus.py reads them; a model that
+    # does not translate is one test_corpus.py names with its reason
+    import corpus as corpus_bench
+    from test_corpus import NOT_BUILDING
     not_translating, checked = [], 0
     for ident, path in corpus_bench.corpus_models(corpus):
         try:
@@ -255,9 +267,10 @@ def test_every_corpus_model_without_code_transcribes_and_verifies(corpus):
         except autolev.AutolevError:
             not_translating.append(ident)
             continue
-        saved = Path(tempfile.mkdtemp()) / f"{path.stem}.all"
+        saved = tmp_path / f"{ident}.all"
         saved.write_text(text)
         report = autolev.verify(saved)
-        assert report.error is None and report.count("mismatch") == 0, report.summary()
+        assert report.error is None or not text.count("\n-> ("), report.summary()
+        assert report.count("mismatch") == 0, report.summary()
         checked += 1
-    assert checked >= 49 and len(not_translating) <= 3, not_translating
+    assert checked >= 49 and set(not_translating) <= set(NOT_BUILDING), not_translating

@@ -15,7 +15,8 @@ Autolev's (and a large value's repeated parts get Z's of the transcript's own), 
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import sympy as sm
@@ -26,7 +27,7 @@ from . import ir
 from .errors import AutolevError
 from .pipeline import parse
 from .runtime.calculus import is_small
-from .runtime.symbols import TIME, Z, new_z
+from .runtime.symbols import TIME, Z, derivative, new_z
 from .runtime.vector import Dyadic, Vector
 from .source import decode
 from .translate.commands import IN_PLACE
@@ -168,6 +169,7 @@ class _Shown:
     capture: str              # N_A, U1', ZERO
     whole: bool = False       # a matrix shown whole (a direction-cosine matrix)
     definition: bool = False  # a declared name: its definition then is shown
+    work: bool = False        # NICHECK() in it: WCHECK1' (its work integral's rate) first
 
 
 def transcript(path) -> str:
@@ -198,7 +200,7 @@ def transcript(path) -> str:
     for k, r in enumerate(responses):
         if k in captured:
             after.setdefault(r.after, []).append(k)
-    out, number, shown = [], 0, _Shower(model)
+    out, number, response_lines = [], 0, _ResponseLines(model)
     for no, line in enumerate(lines, 1):
         if line.strip():                 # Autolev numbered no blank line (TD-all (3))
             number += 1
@@ -207,9 +209,13 @@ def transcript(path) -> str:
             value, known = captured[k]
             if shown_as[k].definition and isinstance(value, sm.Symbol) and value in known:
                 value = known[value]      # the definition then, not a later one
-            for name, text in shown.lines(shown_as[k], value):
-                number += 1
-                out.append(f"-> ({number}) {name} = {text}")
+            # NICHECK() showed the rate of its work integral first (SSOpt (312))
+            work = [(_Shown(f"{w.name}'", ""), known[derivative(w)])
+                    for w in _work_integrals(value, known)] if shown_as[k].work else []
+            for response, v in work + [(shown_as[k], value)]:
+                for name, text in response_lines.lines(response, v):
+                    number += 1
+                    out.append(f"-> ({number}) {name} = {text}")
         if after.get(no):
             out.append("")
     return "\n".join(out) + "\n"
@@ -220,7 +226,7 @@ def transcript(path) -> str:
 LARGE = 2000
 
 
-class _Shower:
+class _ResponseLines:
     """The responses' lines: each value after the Z variables it uses that were not
     shown yet.  Our model's Z's can be large where Autolev's were many and small (a
     derivative of a solved speed has a million nodes, 900 of them distinct); a large
@@ -321,12 +327,22 @@ def _defined(program: ir.Program, name: str, target: ir.Expr) -> _Shown:
     return _Shown(name, name, definition=declared)
 
 
+def _work_integrals(value, known: dict) -> list:
+    """The integrals of NICHECK() in a value: WCHECK1, its rate defined (SSOpt (312))."""
+    symbols = getattr(value, "free_symbols", set())
+    return sorted((s for s in symbols if isinstance(s, sm.Symbol) and
+                   re.fullmatch(r"WCHECK\d+", s.name) and derivative(s) in known),
+                  key=lambda s: s.name)
+
+
 def _responses(st: ir.Statement, program: ir.Program, massive: list[str]) -> list[_Shown]:
     """What Autolev displayed after the statement (docs/language.md, "The responses of
     a session"): nothing for most commands and declarations."""
     if isinstance(st, ir.Assignment):
         name = st.text.partition("=")[0].rstrip(":+-*/^ ").strip()
-        return [_defined(program, name, st.target)]
+        nicheck = any(isinstance(e, ir.Call) and e.name.upper() == "NICHECK"
+                      for e in ir.walk(st.value))
+        return [replace(_defined(program, name, st.target), work=nicheck)]
     if isinstance(st, ir.InertiaStatement):
         return _inertia_responses(st, program)
     if not isinstance(st, ir.Command):
