@@ -215,3 +215,89 @@ def test_zee_not_is_answered_and_its_answer_compared(tmp_path):
     wrong.write_text(session.read_text().replace("-> (4) ZEE_NOT = [U1', U2', GRAV]",
                                                  "-> (4) ZEE_NOT = [U2', U1', GRAV]"))
     assert autolev.verify(wrong).count("mismatch") == 1
+
+
+# A session laid out as Autolev saved it, with the responses of commands written by hand
+# for a link A turning about N3> at the fixed point O, a particle P at its tip
+COMMAND_SESSION = """\
+   (1) NEWTONIAN N
+   (2) BODIES A
+   (3) FRAMES B
+   (4) PARTICLES P
+   (5) POINTS O
+   (6) MOTIONVARIABLES' Q', U'
+   (7) CONSTANTS L, M, K, G, IA
+   (8) SPECIFIED TAU
+   (9) SIMPROT(N, A, 3, Q)
+-> (10) N_A = [COS(Q), -SIN(Q), 0; SIN(Q), COS(Q), 0; 0, 0, 1]
+
+   (11) DIRCOS(N, B, BODY123, PI/2, 0, 0)
+-> (12) N_B = [1, 0, 0; 0, 0, -1; 0, 1, 0]
+
+   (13) Q' = U
+-> (14) Q' = U
+
+   (15) W_A_N> = U*A3>
+-> (16) W_A_N> = U*A3>
+
+   (17) MASS A = M, P = K
+   (18) INERTIA A, IA, IA, 2*IA
+-> (19) I_A_AO>> = IA*A1>*A1> + IA*A2>*A2> + 2*IA*A3>*A3>
+
+   (20) P_O_AO> = L*A1>
+-> (21) P_O_AO> = L*A1>
+
+   (22) P_O_P> = 2*L*A1>
+-> (23) P_O_P> = 2*L*A1>
+
+   (24) V_O_N> = 0>
+-> (25) V_O_N> = 0>
+
+   (26) V2PTS(N, A, O, AO)
+-> (27) V_AO_N> = L*U*A2>
+
+   (28) V2PTS(N, A, O, P)
+-> (29) V_P_N> = 2*L*U*A2>
+
+   (30) GRAVITY(-G*N2>)
+-> (31) FORCE_AO> = -G*M*N2>
+-> (32) FORCE_P> = -G*K*N2>
+
+   (33) TAU = 10*SIN(2*PI*T + PI/6)
+-> (34) TAU = 10*SIN(0.5235988+6.283185*T)
+
+   (35) TORQUE(A, TAU*A3>)
+   (36) ZERO = FR() + FRSTAR()
+-> (37) ZERO = [TAU - G*L*(M+2*K)*COS(Q) - (2*IA+M*L^2+4*K*L^2)*U']
+
+   (38) SOLVE(ZERO, U')
+-> (39) U' = (TAU-G*L*(M+2*K)*COS(Q))/(2*IA+M*L^2+4*K*L^2)
+
+"""
+
+
+def test_the_responses_of_commands_are_compared(tmp_path):
+    # by hand: about O the inertia is 2 IA + M L^2 + K (2L)^2 and gravity's moment
+    # -G L (M + 2K) COS(Q) N3>; TAU is shown by its definition, PI/6 and 2 PI as decimals
+    session = tmp_path / "link.all"
+    session.write_text(COMMAND_SESSION)
+    report = autolev.verify(session)
+    assert report.error is None and report.ok
+    assert report.count("match") == len(report.outcomes) == 15
+    assert {"N_A", "N_B", "I_A_AO>>", "V_P_N>", "FORCE_P>", "TAU", "ZERO", "U'"} <= \
+        {o.response.lhs for o in report.outcomes}
+
+
+def test_a_wrong_response_of_a_command_is_a_mismatch(tmp_path):
+    wrong = tmp_path / "wrong.all"
+    wrong.write_text(COMMAND_SESSION.replace(
+        "N_A = [COS(Q), -SIN(Q), 0; SIN(Q), COS(Q), 0; 0, 0, 1]",   # the transpose
+        "N_A = [COS(Q), SIN(Q), 0; -SIN(Q), COS(Q), 0; 0, 0, 1]").replace(
+        "IA*A1>*A1> + IA*A2>*A2> + 2*IA*A3>*A3>", "2*IA*A1>*A1> + IA*A2>*A2> + IA*A3>*A3>").replace(
+        "FORCE_P> = -G*K*N2>", "FORCE_P> = -G*M*N2>").replace(
+        "10*SIN(0.5235988+6.283185*T)", "10*SIN(6.283185+0.5235988*T)").replace(
+        "U' = (TAU-G*L*(M+2*K)", "U' = (TAU+G*L*(M+2*K)"))
+    report = autolev.verify(wrong)
+    bad = {o.response.lhs for o in report.outcomes if o.status == "mismatch"}
+    assert bad == {"N_A", "I_A_AO>>", "FORCE_P>", "TAU", "U'"} and not report.ok
+    assert report.count("not comparable") == 0

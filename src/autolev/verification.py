@@ -322,8 +322,8 @@ def _plain(v):
     return [[z.real, z.imag] for z in a.ravel()]
 
 
-# the generated module's dictionary of the definitions known at each capture (a dunder
-# name: the translation gives no user name that form)
+# the generated module's dictionary of the definitions (symbol -> right side) known at
+# each capture (a dunder name: the translation gives no user name that form)
 _KNOWN = "__verify_defs__"
 
 
@@ -469,7 +469,7 @@ def _build(session: Session, p: Path, refused: dict | None = None):
             if m and int(m.group(2)) in kinds:
                 # same line (the line map stays right): the definitions known then
                 code[n] = text + (f"; {_KNOWN}[{int(m.group(2))}] = "
-                                  "frozenset(model.defs.rhs)")
+                                  "dict(model.defs.rhs)")
         code.insert(0, f"{_KNOWN} = {{}}")
         tr.code = "\n".join(code) + "\n"
         tr.line_map = {k + 1: v for k, v in tr.line_map.items()}
