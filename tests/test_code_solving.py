@@ -105,6 +105,16 @@ CASES = [(LINEAR, "lin", check_linear), (NONLINEAR, "newton", check_nonlinear),
          (SWEEP, "sweep", check_sweep), (ODE, "ode", check_ode)]
 
 
+def test_run_solves_linear_equations_without_a_compiler_too(tmp_path):
+    # found by bench/fuzz.py --mode commands: the Python backend's function of the
+    # coefficients read the unknowns' slots from an empty array (an internal error)
+    model = tmp_path / "model.al"
+    model.write_text(LINEAR.format(name="lin.c"))
+    assert main(["run", str(model), "--out", str(tmp_path), "--backend", "python", "-q"]) == 0
+    found = rows(tmp_path / "lin.1")
+    check_linear(found, found)
+
+
 @needs_cc
 @pytest.mark.parametrize("text, stem, check", CASES, ids=[c[1] for c in CASES])
 def test_a_c_program_gives_the_values_derived_by_hand(text, stem, check, tmp_path):

@@ -1,8 +1,11 @@
-"""Fixed-seed handfuls of bench/fuzz.py's mutants and generated models: none may end in a
-traceback; a case over the time limit is reported as a hang."""
+"""Fixed-seed handfuls of bench/fuzz.py's cases in each mode: none may fail; and each
+check the modes make is shown to fail on what it is there to find (a case over the time
+limit is a hang, a write through a planted link an escape, rows of another model wrong)."""
 import importlib.util
 import random
 import sys
+
+import pytest
 
 from helpers import EXAMPLES, ROOT
 
@@ -78,3 +81,188 @@ def test_a_file_written_outside_the_case_folder_is_an_escape(tmp_path, monkeypat
     assert result["outcome"] == "escaped" and "escaped.c" in result["detail"]
     monkeypatch.setattr(fuzz, "load_case", really_loads)
     assert fuzz.check_case(case, tmp_path / "worker")["outcome"] == "ok"
+
+
+# -- files mode ---------------------------------------------------------------------
+def test_files_cases_are_deterministic_with_files_beside_the_model():
+    cases = [fuzz.files_case(5, i) for i in range(60)]
+    assert cases == [fuzz.files_case(5, i) for i in range(60)]
+    assert {c.generator for c in cases} == set(fuzz.FILES_GENERATORS)
+    assert all(c.mode == "files" and c.files for c in cases)
+    assert any(c.strays for c in cases) and any(c.links for c in cases)
+    # RUN files that include each other, some of them many times over
+    assert any(c.files[name].count("RUN ") >= 4 for c in cases for name in c.files)
+
+
+def test_fixed_seed_files_cases_in_a_worker_never_fail():
+    cases = [fuzz.files_case(2024, i) for i in range(8)]
+    results = fuzz.run_cases(cases, jobs=1, timeout=60)
+    assert not {r.outcome for r in results} & set(fuzz.FAILURES), \
+        [(r.index, r.outcome, r.detail) for r in results if r.outcome in fuzz.FAILURES]
+    assert {"ok", "diagnosed"} <= {r.outcome for r in results}
+
+
+def test_a_file_read_through_a_link_leading_outside_is_seen(tmp_path):
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "bait.al").write_text("BAIT = 1\n")
+    (tmp_path / "link.al").symlink_to(outside / "bait.al")
+    watch = fuzz.Watch()
+    watch.start(outside, writes_only=False)
+    watch("open", (str(tmp_path / "link.al"), "r", 0))
+    watch("open", (str(tmp_path / "inside.al"), "r", 0))
+    assert watch.stop() == [f"{tmp_path / 'link.al'} (read)"]
+    watch.start(outside, writes_only=True)          # commands: only writes count
+    watch("open", (str(tmp_path / "link.al"), "r", 0))
+    assert watch.stop() == []
+
+
+def test_a_stray_file_that_changes_the_model_is_wrong(tmp_path):
+    # fx.r is the model's own function: taken for a stray file, moving it away changes
+    # what the model means, which the check must call wrong
+    case = fuzz.Case(0, "stray", "model.al", fuzz._FILES_HEAD + "EF = FX(Q)\n" +
+                     fuzz._FILES_TAIL, mode="files", files={"fx.r": "#1# + 1\n"},
+                     strays=["fx.r"])
+    (tmp_path / "cwd").mkdir()
+    result = fuzz.check_files_case(case, tmp_path)
+    assert result["outcome"] == "wrong" and "fx.r" in result["detail"]
+    case.strays = []
+    assert fuzz.check_files_case(case, tmp_path)["outcome"] == "ok"
+
+
+def test_a_file_written_outside_by_a_files_case_is_an_escape(tmp_path, monkeypatch):
+    case = fuzz.files_case(2024, 0)
+    (tmp_path / "cwd").mkdir()
+
+    def writes_outside(path, text):
+        (tmp_path / "outside" / "new.al").write_text("")
+        return "ok", "load", None, ""
+    monkeypatch.setattr(fuzz, "load_stages", writes_outside)
+    case.commands = []
+    result = fuzz.check_files_case(case, tmp_path)
+    assert result["outcome"] == "escaped" and "outside/new.al new" in result["detail"]
+
+
+# -- commands mode ------------------------------------------------------------------
+def test_commands_cases_are_deterministic_and_plant_things_at_output_names():
+    cases = [fuzz.commands_case(5, i) for i in range(40)]
+    assert cases == [fuzz.commands_case(5, i) for i in range(40)]
+    assert {"example", "chain", "generated"} <= {c.generator for c in cases}
+    assert all(c.commands and all("{model}" in argv for argv in c.commands) for c in cases)
+    kinds = {kind for c in cases for kind, _ in c.links.values()}
+    assert {"symlink", "hardlink", "file"} <= kinds
+    assert all(name.startswith("out/") for c in cases for name in c.links)
+
+
+def pendulum_case(**planted):
+    """The shipped pendulum, `autolev code` into out/, things planted at its outputs."""
+    text = (EXAMPLES / "simple_pendulum.al").read_text()
+    return fuzz.Case(0, "example", "simple_pendulum.al", text, mode="commands",
+                     links=planted, outside=dict(fuzz._VICTIMS),
+                     commands=[["code", "--out", "{out}", "-q", "{model}"]])
+
+
+def careless_write(target, data, mode=0o666):
+    """A writer that opens its target: through a link planted there."""
+    with open(target, "w") as f:
+        f.write(data if isinstance(data, str) else data.decode())
+    return target
+
+
+def test_a_write_through_a_planted_link_is_an_escape(tmp_path, monkeypatch):
+    from autolev.runtime import outputs
+    case = pendulum_case(**{"out/simple_pendulum.in": ["symlink", "@OUTSIDE@/victim1"]})
+    (tmp_path / "cwd").mkdir()
+    assert fuzz.check_commands_case(case, tmp_path)["outcome"] == "ok"
+    monkeypatch.setattr(outputs, "write_whole", careless_write)
+    result = fuzz.check_commands_case(case, tmp_path)
+    assert result["outcome"] == "escaped" and "outside/victim1 changed" in result["detail"]
+
+
+def test_a_users_file_replaced_without_overwrite_is_clobbered(tmp_path, monkeypatch):
+    from autolev.runtime import outputs
+    case = pendulum_case(**{"out/simple_pendulum.c": ["file", "my own program\n"]})
+    (tmp_path / "cwd").mkdir()
+    assert fuzz.check_commands_case(case, tmp_path)["outcome"] == "diagnosed"
+    monkeypatch.setattr(outputs.Written, "check", lambda self, names, overwrite=False: None)
+    result = fuzz.check_commands_case(case, tmp_path)
+    assert result["outcome"] == "clobbered" and "out/simple_pendulum.c" in result["detail"]
+
+
+def test_a_temporary_left_behind_is_a_failure(tmp_path, monkeypatch):
+    from autolev.runtime import outputs
+    really_writes = outputs.write_whole
+
+    def leaves_one(target, data, mode=0o666):
+        outputs.temporary_beside(target).write_text("")
+        return really_writes(target, data, mode)
+    monkeypatch.setattr(outputs, "write_whole", leaves_one)
+    (tmp_path / "cwd").mkdir()
+    result = fuzz.check_commands_case(pendulum_case(), tmp_path)
+    assert result["outcome"] == "leftover" and ".autolev-part" in result["detail"]
+
+
+def test_a_c_program_that_does_not_compile_is_named(tmp_path):
+    if fuzz.shutil.which("cc") is None and fuzz.shutil.which("gcc") is None:
+        pytest.skip("no C compiler")
+    good, bad = tmp_path / "good.c", tmp_path / "bad.c"
+    good.write_text("#include <math.h>\nint main(void) { return (int) sqrt(4.0) - 2; }\n")
+    bad.write_text("int main(void) { return gamma; }\n")
+    assert fuzz.compile_problem(good, tmp_path) is None
+    assert "bad.c does not compile" in fuzz.compile_problem(bad, tmp_path)
+
+
+def test_fixed_seed_commands_cases_in_a_worker_never_fail():
+    cases = [fuzz.commands_case(2024, i) for i in (0, 1, 2)]
+    results = fuzz.run_cases(cases, jobs=1, timeout=120)
+    assert not {r.outcome for r in results} & set(fuzz.FAILURES), \
+        [(r.index, r.outcome, r.detail) for r in results if r.outcome in fuzz.FAILURES]
+
+
+# -- threads mode -------------------------------------------------------------------
+def test_threads_cases_sweep_different_models():
+    cases = [fuzz.threads_case(5, i) for i in range(30)]
+    assert cases == [fuzz.threads_case(5, i) for i in range(30)]
+    assert {c.generator for c in cases} == set(fuzz.THREADS_GENERATORS)
+    for c in cases:
+        assert 2 <= len(c.files) <= 3 and len(set(c.files.values())) == len(c.files)
+        assert all(spec["model"] in c.files and len(spec["points"]) >= 3
+                   for spec in c.sweeps)
+
+
+def test_rows_of_another_model_are_wrong(tmp_path):
+    import autolev
+    case = fuzz.threads_case(2024, 0)
+    fuzz.set_up(case, tmp_path)
+    specs = [s for s in case.sweeps if s["how"] != "forked"][:2]
+    case.sweeps = specs
+    truths = [fuzz._sweep_table(autolev.load(tmp_path / "case" / s["model"]), s, "alone")
+              for s in specs]
+    assert fuzz._worst(fuzz.judge_sweeps(case, truths, [None, None], truths))[0] == "ok"
+    # the second sweep's points evaluated on the first model: rows of the wrong model
+    swapped = dict(specs[1], model=specs[0]["model"])
+    wrong = fuzz._sweep_table(autolev.load(tmp_path / "case" / specs[0]["model"]),
+                              swapped, "alone")
+    outcome, _, detail = fuzz._worst(fuzz.judge_sweeps(case, [truths[0], wrong],
+                                                       [None, None], truths))
+    assert outcome == "wrong" and specs[1]["model"] in detail
+    crashed = fuzz.judge_sweeps(case, truths, [None, "Traceback ..."], truths)
+    assert fuzz._worst(crashed)[0] == "crash"
+
+
+def test_a_fixed_seed_threads_case_in_a_worker_never_fails():
+    # case 0: two sweeps on worker processes and one on a thread pool at once, then one
+    # on workers forked from the worker
+    case = fuzz.threads_case(2024, 0)
+    assert {s["how"] for s in case.sweeps} == {"workers", "thread-pool", "forked"}
+    [result] = fuzz.run_cases([case], jobs=1, timeout=120)
+    assert result.outcome == "ok", result.detail
+
+
+def test_replay_writes_a_case_and_its_commands(tmp_path):
+    commands = fuzz.write_case(fuzz.commands_case(2024, 0), tmp_path)
+    assert commands and all(c.startswith("autolev ") for c in commands)
+    case = fuzz.commands_case(2024, 0)
+    assert (tmp_path / "case" / case.filename).is_file()
+    for name, (kind, _) in case.links.items():
+        assert (tmp_path / "case" / name).is_symlink() == (kind == "symlink")

@@ -72,6 +72,13 @@ def test_user_functions_nest_through_their_arguments(tmp_path):
                              ir.BinOp("+", ir.Name("A"), ir.Number("1")))
 
 
+def test_a_run_file_that_is_a_link_to_itself_is_no_file(tmp_path):
+    # found by bench/fuzz.py --mode files: a RuntimeError ("Symlink loop") from resolve()
+    (tmp_path / "loop.al").symlink_to("loop.al")
+    f = write(tmp_path / "m.al", "CONSTANTS A\nRUN loop.al\n")
+    assert [(d.code, d.line) for d in errors(f)] == [("E022", 2)]
+
+
 def test_a_function_calling_itself_and_one_with_two_statements(tmp_path):
     write(tmp_path / "loop.r", "loop(#1#)\n")
     write(tmp_path / "two.r", "#1# + 1; #1# + 2\n")

@@ -218,11 +218,9 @@ def find_file(base: Path, relative: str) -> Path | None:
 
 
 def is_within(path: Path, root: Path) -> bool:
-    try:
-        path.resolve().relative_to(root.resolve())
-        return True
-    except ValueError:
-        return False
+    # realpath, not Path.resolve: a link that leads to itself is a name, not an exception
+    real, real_root = os.path.realpath(path), os.path.realpath(root)
+    return real == real_root or real.startswith(real_root.rstrip(os.sep) + os.sep)
 
 
 class RunRefused(Exception):

@@ -43,7 +43,9 @@ def run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_pa
             p[target_pos] = point[0]
             system.set_parameters(p)
         if kind is CodeKind.ALGEBRAIC and n:
-            ab = system.extra("linear", t)
+            # the coefficients hold no unknown, but the compiled function takes their
+            # slots (Python's reads them; C's read past an empty array)
+            ab = system.extra("linear", t, solved=np.zeros(n))
             a = ab[:n * n].reshape(n, n)
             b = ab[n * n:]
             x = _linear_solve(a, -b, zero_params)
