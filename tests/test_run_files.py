@@ -1,6 +1,7 @@
 """A run's files are written as a set (issue 15, item 3): a refused, interrupted or
 failed-to-write run leaves the previous run's files as they were, with no temporaries,
 and two runs cannot write into one folder at once."""
+import collections
 import errno
 import os
 import signal
@@ -213,3 +214,47 @@ def test_a_full_disk_is_the_users_error_and_leaves_no_temporary(tmp_path, monkey
                        match=f"cannot write the output files into {out}: No space left"):
         model.simulate(out_dir=out)
     assert list(out.iterdir()) == []
+
+
+Usage = collections.namedtuple("Usage", "total used free")     # as shutil.disk_usage's
+DECAY = "VARIABLES X'\nX' = -X\nINPUT X=1, TINITIAL=0, TFINAL={tfinal}, INTEGSTP={step}, " \
+        "PRINTINT={printint}\nOUTPUT T, X\nCODE ODE() decay.c\n"
+
+
+@pytest.mark.parametrize("tfinal, step, printint", [(1, 0.1, 1), (1, 0.1, 3), (2, 0.25, 8),
+                                                    (1, 0.3, 1)])
+def test_the_rows_a_run_expects_are_the_rows_it_writes(tmp_path, tfinal, step, printint):
+    from autolev.runtime.numerics.integrate import Schedule
+    path = tmp_path / "decay.al"
+    path.write_text(DECAY.format(tfinal=tfinal, step=step, printint=printint))
+    result = autolev.load(path).simulate(out_dir=tmp_path / "o")
+    written = [line for line in (tmp_path / "o" / "decay.1").read_text().splitlines()
+               if line.strip() and not line.startswith("%")]
+    expected = Schedule(0.0, tfinal, step, printint).printed_rows()
+    assert expected == len(written) == len(result.t)
+
+
+def test_a_run_too_big_for_the_disk_is_refused_before_it_computes(tmp_path, monkeypatch,
+                                                                   capsys):
+    from autolev.cli import main
+    path = tmp_path / "decay.al"
+    # 10001 rows of two 15-character values and a newline: 310 kB, where 100 kB is free
+    path.write_text(DECAY.format(tfinal=10, step=0.001, printint=1))
+    monkeypatch.setattr(files, "ANNOUNCED_BYTES", 1000)
+    monkeypatch.setattr(files.shutil, "disk_usage",
+                        lambda folder: Usage(10 ** 9, 10 ** 9, 100_000))
+    assert main(["run", str(path), "--out", str(tmp_path / "o"), "-q"]) == 1
+    err = capsys.readouterr().err
+    assert "would write about 310 kB (1e+04 rows, 2 value(s) a row" in err
+    assert "100 kB is free" in err and "decay.al:5:" in err
+    assert not (tmp_path / "o").exists() or not any((tmp_path / "o").iterdir())
+
+
+def test_a_run_that_writes_much_says_so_first(tmp_path, monkeypatch, capsys):
+    from autolev.cli import main
+    path = tmp_path / "decay.al"
+    path.write_text(DECAY.format(tfinal=1, step=0.01, printint=1))
+    monkeypatch.setattr(files, "ANNOUNCED_BYTES", 1000)
+    assert main(["run", str(path), "--out", str(tmp_path / "o"), "-q"]) == 0
+    # 101 rows of two 15-character values and a newline
+    assert f"this run writes about {101 * 31 / 1000:.3g} kB" in capsys.readouterr().err

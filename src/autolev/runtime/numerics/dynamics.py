@@ -104,7 +104,7 @@ class _Rows:
         result.encoded = self.encoded
 
 
-def _schedule(inputs, program: str) -> Schedule:
+def print_schedule(inputs, program: str) -> Schedule:
     """The print schedule of the INPUT integration parameters, integrated the way
     Autolev's program in that language integrated."""
     sched = Schedule(inputs.internal("TINITIAL"), inputs.internal("TFINAL"),
@@ -128,7 +128,7 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
     y0 = np.array(inputs.vector(system.states))
-    sched = _schedule(inputs, program)
+    sched = print_schedule(inputs, program)
     on_row = _Rows(system, result, writer, keep_rows)
 
     def f(t, y):

@@ -19,8 +19,10 @@ from __future__ import annotations
 import errno
 import math
 import os
+import shutil
 import signal
 import threading
+import warnings
 from contextlib import contextmanager
 from pathlib import Path, PureWindowsPath
 
@@ -64,6 +66,33 @@ def header(filename: str, labels: list[str], units: list[str | None]) -> str:
     brackets = [f"({u or 'UNITS'})" for u in units]
     return "\n".join([f"% FILE: {filename}", "%", _centred(names) if names else "%",
                       _centred(brackets) if names else "%", ""]) + "\n"
+
+
+# a run that would write more than this says so before it starts
+ANNOUNCED_BYTES = 1 << 30
+
+
+def check_room(folder: Path, rows: int, columns: list[int]) -> None:
+    """Before a run computes anything: refuse one whose tables would not fit in the
+    free space of `folder`, and announce one that writes more than ANNOUNCED_BYTES."""
+    expected = rows * sum(len(row([0.0] * n)) for n in columns)
+    if expected <= ANNOUNCED_BYTES:
+        return
+    free = shutil.disk_usage(folder).free
+    what = (f"about {_size(expected)} ({rows:.3g} rows, {sum(columns)} value(s) a row, in "
+            f"{len(columns)} file(s))")
+    if expected > free:
+        raise AutolevModelError(
+            f"this run would write {what} into {folder}, where {_size(free)} is free; "
+            "lower TFINAL, raise PRINTINT or INTEGSTP, or narrow the sweep")
+    warnings.warn(f"this run writes {what} into {folder}")
+
+
+def _size(count: float) -> str:
+    for unit in ("bytes", "kB", "MB", "GB", "TB"):
+        if count < 1000 or unit == "TB":
+            return f"{count:.3g} {unit}"
+        count /= 1000
 
 
 def row(values) -> str:

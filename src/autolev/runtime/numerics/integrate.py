@@ -74,6 +74,14 @@ class Schedule:
                 raise ValueError(f"INTEGSTP ({h:g}) is too small to advance the time from "
                                  f"T = {t:g} in floating point")
 
+    def printed_rows(self) -> int:
+        """How many rows the schedule prints (the first, every PRINTINT-th step, the last)."""
+        span = self.tfinal - self.tinitial
+        if span == 0 or not math.isfinite(span):
+            return 1
+        steps = math.ceil(span / self.integstp - 1e-9)
+        return 1 + steps // self.printint + (steps % self.printint != 0)
+
     # steps per block of the schedule: its memory is this, whatever TFINAL is
     BLOCK = 1 << 16
 

@@ -15,8 +15,8 @@ import numpy as np
 from ..errors import AutolevModelError
 from .algebraic import run_algebraic
 from .command import program_language, program_method
-from .dynamics import run_dynamics
-from .files import RunFiles, dir_text, encoded_text, termination_cleans_up
+from .dynamics import print_schedule, run_dynamics
+from .files import RunFiles, check_room, dir_text, encoded_text, termination_cleans_up
 from .inputs import display_name
 from .options import RunOptions
 from .prepare import prepare_command
@@ -62,6 +62,8 @@ def run_command(model, command, out_dir=None,
             Path(options.infile).resolve() != own_in.resolve()
         try:
             with _writing(folder):
+                check_room(folder, _rows_expected(prepared, command),
+                           [len(cols) for cols in files])
                 run_files.claim([own_in.name] * writes_in + [f"{stem}.dir", f"{stem}.encode"]
                                 + [f"{stem}.{k}" for k in range(1, len(files) + 1)])
                 if writes_in:
@@ -85,6 +87,14 @@ def run_command(model, command, out_dir=None,
         finally:
             run_files.release()
     return result
+
+
+def _rows_expected(prepared, command) -> int:
+    """The rows each table of the run will have, known before it computes."""
+    if command.kind.integrates:
+        return print_schedule(prepared.inputs,
+                              program_language(command.filename)).printed_rows()
+    return 1 if prepared.sweep is None else prepared.sweep.count
 
 
 @contextmanager
