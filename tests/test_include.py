@@ -154,7 +154,7 @@ def test_files_that_include_each_other_many_times_stop_at_the_budget(tmp_path):
     top = write(tmp_path / "top.al", "RUN f1.al\n")
     found = errors(top)
     assert [d.code for d in found] == ["E033"]
-    assert (f"more than 2 MB of text or {MAX_EXPANDED_STATEMENTS} statements (here: top.al "
+    assert (f"more than 1 MB of text or {MAX_EXPANDED_STATEMENTS} statements (here: top.al "
             "-> f1.al -> f2.al -> f3.al -> f4.al -> f5.al -> f6.al") in found[0].message
 
 
@@ -169,3 +169,19 @@ def test_a_file_included_many_times_is_read_and_parsed_once(tmp_path, monkeypatc
     program = autolev.parse(top)
     assert [Path(n).name for n in reads].count("part.al") == 1
     assert sum(st.kind == "assignment" for st in program.statements) == 6
+
+
+def test_a_file_past_the_statement_budget_is_refused_before_it_is_parsed(tmp_path,
+                                                                         monkeypatch):
+    # a parse holds some 500 bytes a byte of text: the budget is judged on the lines
+    # that hold code (comments and blank lines free), before the parser sees the file
+    from autolev import include
+    monkeypatch.setattr(include, "MAX_EXPANDED_STATEMENTS", 50)
+    text = "% a comment\n\nVARIABLES X\n" + "".join(f"E{k} = {k}*X % note\n" for k in range(60))
+    top = write(tmp_path / "top.al", text)
+    seen = []
+    monkeypatch.setattr(include.Parser, "parse", lambda self, mapped: seen.append(mapped))
+    found = errors(top)
+    assert [d.code for d in found] == ["E033"] and seen == []
+    # the 51st statement (VARIABLES, then E0 ... E49) is the first past the budget: line 53
+    assert found[0].line == 53

@@ -66,7 +66,7 @@ _ALL = (
     Code("E032", "a function file that is not one expression",
          "function F (f.r) must hold one expression"),
     Code("E033", "expansion beyond the budget of text or statements",
-         "the model with its RUN files, macros and functions expands to more than 2 MB "
+         "the model with its RUN files, macros and functions expands to more than 1 MB "
          "of text or 20000 statements"),
     Code("E040", "an empty range of names", "empty range {3:1}: 3 is above 1"),
     Code("E041", "a range that declares too many names",

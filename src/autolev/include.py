@@ -35,8 +35,18 @@ from .syntax import ParsedText, Parser
 # the most text and statements a model expands to with its RUN files, macros and
 # functions (the largest corpus model: 23 KB, 310 statements); beyond, files that include
 # each other many times would take minutes and gigabytes
-MAX_EXPANDED_BYTES = 2_000_000
+MAX_EXPANDED_BYTES = 1_000_000
 MAX_EXPANDED_STATEMENTS = 20_000
+
+
+def statement_starts(text: str) -> list[int]:
+    """The offsets of the lines of `text` (continuations joined) that hold code."""
+    starts, offset = [], 0
+    for line in text.splitlines(keepends=True):
+        if line.split("%", 1)[0].strip():
+            starts.append(offset)
+        offset += len(line)
+    return starts
 
 
 @dataclass(frozen=True)
@@ -119,7 +129,8 @@ class Includes:
     # -- the stream ----------------------------------------------------------------
     def _pieces(self, mapped: MappedText, path: Path | None, display: str) -> Iterator[Piece]:
         origin = Origin(mapped, path, display)
-        if not self._spend(origin, len(mapped.text), 0):
+        # the budget is judged before parsing: a parse holds some 500 bytes a byte of text
+        if not self._spend(origin, len(mapped.text), statement_starts(mapped.text)):
             return
         for line in self._parse(mapped).lines:
             body = line.tree.statementLine()
@@ -127,8 +138,6 @@ class Includes:
                 continue
             calls = self._may_call_functions(line.tokens, path)
             for statement in body.statement():
-                if not self._spend(origin, 0, statement.start.start):
-                    return
                 piece = Piece(statement, origin)
                 if calls:
                     self._find_functions(statement, origin, piece.functions)
@@ -148,19 +157,18 @@ class Includes:
             self.diagnostics.extend(parsed.diagnostics)
         return parsed
 
-    def _spend(self, origin: Origin, size: int, offset: int) -> bool:
-        """Count `size` bytes of text to read (or, with 0, one more statement) against the
-        model's budget; False, after the one diagnostic naming the chain of files, when
+    def _spend(self, origin: Origin, size: int, starts: list[int]) -> bool:
+        """Count a text of `size` bytes whose statements start at `starts` (offsets in
+        `origin`: a function's body counts at its call) against the model's budget; False, after the one diagnostic naming the chain of files, when
         it is spent."""
         if self._exhausted:
             return False
-        if size:
-            self._expanded_bytes += size
-        else:
-            self._expanded_statements += 1
-        if self._expanded_bytes <= MAX_EXPANDED_BYTES and \
-                self._expanded_statements <= MAX_EXPANDED_STATEMENTS:
+        self._expanded_bytes += size
+        room = MAX_EXPANDED_STATEMENTS - self._expanded_statements
+        self._expanded_statements += len(starts)
+        if self._expanded_bytes <= MAX_EXPANDED_BYTES and len(starts) <= room:
             return True
+        offset = starts[min(room, len(starts) - 1)] if starts else 0
         self._exhausted = True
         chain = " -> ".join(os.path.relpath(p, self.model_root) for p in self._stack) \
             if self.model_root is not None else origin.display
@@ -371,7 +379,7 @@ class Includes:
         found, src, display = got
         where = origin.mapped.locate(call.start.start)
         mapped = expand_macro(src, args, where, f"function {name}({', '.join(args)})")
-        if not self._spend(origin, len(mapped.text), call.start.start):
+        if not self._spend(origin, len(mapped.text), [call.start.start]):
             return None
         parsed = self._parse(mapped)
         bodies = [st.getChild(0) for line in parsed.lines
