@@ -159,8 +159,8 @@ class Includes:
 
     def _spend(self, origin: Origin, size: int, starts: list[int]) -> bool:
         """Count a text of `size` bytes whose statements start at `starts` (offsets in
-        `origin`: a function's body counts at its call) against the model's budget; False, after the one diagnostic naming the chain of files, when
-        it is spent."""
+        `origin`: a function's body counts at its call) against the model's budget;
+        False, after the one diagnostic naming the chain of files, when it is spent."""
         if self._exhausted:
             return False
         self._expanded_bytes += size
