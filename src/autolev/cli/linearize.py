@@ -92,13 +92,17 @@ def _report_eigenvalues(path: Path, lin, out_dir: str | None, overwrite: bool = 
         out = Path(out_dir)
         try:
             out.mkdir(parents=True, exist_ok=True)
-            target = write_output(out, f"{safe_stem(path.stem)}-eigenvalues.csv", table,
-                                  overwrite)
+            stem = safe_stem(path.stem)
+            contents = [(f"{stem}-eigenvalues.csv", table)]
+            contents += [(f"{stem}-{m}.csv", lin.matrix_csv(m)) for m in "ABCD"]
+            contents.append((f"{stem}-linear.mat", lin.mat_bytes()))
+            written = [write_output(out, name, data, overwrite) for name, data in contents]
         except OSError as exc:
-            print(f"autolev linearize: cannot write into {out}: {exc.strerror}",
+            print(f"autolev linearize: cannot write into {out}: {exc.strerror or exc}",
                   file=sys.stderr)
             return 1
-        print(f"  wrote {target}")
+        for target in written:
+            print(f"  wrote {target}")
     return 0
 
 
@@ -208,6 +212,8 @@ def add_linearize(sub) -> None:
                      help="with --sweep: also draw NAME-sweep.png, real and imaginary parts "
                      "against the swept quantity (needs matplotlib)")
     lin.add_argument("--out", metavar="DIR",
-                     help="also write NAME-eigenvalues.csv (or NAME-sweep.csv) there")
+                     help="also write there NAME-eigenvalues.csv, A, B, C and D as "
+                     "NAME-A.csv ... NAME-D.csv and all in NAME-linear.mat (with a --sweep: "
+                     "NAME-sweep.csv)")
     overwrite_option(lin)
     lin.set_defaults(func=cmd_linearize)

@@ -96,7 +96,8 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
     runs = model.run_commands(commands, out_dir, keep_going=True, options=RunOptions(
         method=ns.method, backend=ns.backend, infile=ns.infile,
         progress=None if ns.quiet else sys.stderr, overrides=overrides, specified=specified,
-        quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate), overwrite=ns.overwrite,
+        quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate or ns.csv or ns.mat),
+        overwrite=ns.overwrite,
         missing_values="zero" if ns.zero_missing else "refuse"))
     for done in runs:
         if done.error is not None:
@@ -132,6 +133,19 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
             print(f"{label}: error: cannot write the animation into {out_dir}: "
                   f"{exc.strerror or exc}", file=sys.stderr)
             status = 1
+    tables = [(f"{result.name}.csv", result.csv_text)] * ns.csv \
+        + [(f"{result.name}.mat", result.mat_bytes)] * ns.mat
+    if tables and result.outputs:
+        from ..runtime.tools import write_output
+        try:
+            for name, content in tables:
+                written = write_output(out_dir, name, content(), ns.overwrite)
+                if not ns.quiet:
+                    print(f"  wrote {written}")
+        except OSError as exc:
+            print(f"{label}: error: cannot write {name} into {out_dir}: "
+                  f"{exc.strerror or exc}", file=sys.stderr)
+            return 1
     if ns.plot and result.outputs:
         from ..plots import write_pngs
         try:
@@ -188,6 +202,12 @@ def add_run(sub) -> None:
     run_options(run)
     run.add_argument("--plot", action="store_true",
                      help="also write a PNG per output file (needs matplotlib)")
+    run.add_argument("--csv", action="store_true",
+                     help="also write NAME.csv: every output column (T once), a row per "
+                     "printed row, the labels as its header")
+    run.add_argument("--mat", action="store_true",
+                     help="also write NAME.mat (Matlab): a column vector per output label, "
+                     "with `labels` and `units`")
     run.add_argument("--animate", action="store_true",
                      help="also write the motion of each CODE DYNAMICS: NAME.html (a 3-D "
                      "view to rotate and scrub) and, with matplotlib, NAME.gif")
@@ -213,4 +233,5 @@ def add_animate(sub) -> None:
                       "matplotlib is installed)")
     anim.add_argument("--frames", type=positive_int, default=None, metavar="N",
                       help="frames at most (default 400; the rows are sampled evenly)")
-    anim.set_defaults(func=cmd_animate, plot=False, animate=True, first_dynamics=True)
+    anim.set_defaults(func=cmd_animate, plot=False, csv=False, mat=False, animate=True,
+                      first_dynamics=True)

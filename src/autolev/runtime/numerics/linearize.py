@@ -60,6 +60,30 @@ class Linearization:
         """The eigenvalues of A, by real part, then imaginary part."""
         return self.modes()[0]
 
+    def matrix_csv(self, which: str) -> str:
+        """A, B, C or D as CSV: a header naming the columns, each row led by its name."""
+        matrix = getattr(self, which)
+        rows = self.outputs if which in "CD" else self.states
+        columns = self.inputs if which in "BD" else self.states
+        lines = [",".join([which] + list(columns))]
+        lines += [",".join([name] + [f"{x:.17g}" for x in row])
+                  for name, row in zip(rows, matrix)]
+        return "\n".join(lines) + "\n"
+
+    def mat_bytes(self) -> bytes:
+        """A, B, C, D with the names of states, inputs and outputs and the operating
+        point, as a Matlab .mat file (scipy.io)."""
+        import io
+        import scipy.io
+        contents = {"A": self.A, "B": self.B, "C": self.C, "D": self.D}
+        for key in ("states", "inputs", "outputs"):
+            contents[key] = np.array(list(getattr(self, key)), dtype=object)
+        contents["point_names"] = np.array([str(n) for n in self.point], dtype=object)
+        contents["point_values"] = np.array([float(v) for v in self.point.values()])
+        buffer = io.BytesIO()
+        scipy.io.savemat(buffer, contents)
+        return buffer.getvalue()
+
     def eigenvalue_table(self) -> str:
         """The eigenvalues as CSV: real part, imaginary part, and for a complex pair the
         frequency (Hz) and damping ratio."""

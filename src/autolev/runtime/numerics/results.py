@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -75,10 +76,86 @@ class Result:
                 return v
         raise KeyError(name)
 
+    def columns(self) -> list[tuple[str, str, np.ndarray]]:
+        """Every output column once, in file order: (label, unit, values); a label that
+        several files hold (T) is kept from the first."""
+        seen, out = set(), []
+        for table in self.outputs:
+            for j, (label, unit) in enumerate(zip(table.labels, table.units)):
+                if label.upper() not in seen:
+                    seen.add(label.upper())
+                    out.append((label, unit or "", table.data[:, j]))
+        return out
+
+    def to_frame(self):
+        """The output columns as a pandas DataFrame (pandas is an optional extra), their
+        units in `frame.attrs["units"]`."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise ImportError("Result.to_frame needs pandas (pip install pandas)") from None
+        columns = self.columns()
+        frame = pd.DataFrame({label: values for label, _, values in columns})
+        frame.attrs["units"] = {label: unit for label, unit, _ in columns}
+        return frame
+
+    def csv_text(self) -> str:
+        """The output columns as CSV: a header of labels, a row per printed row."""
+        columns = self.columns()
+        header = ",".join(_csv_field(label) for label, _, _ in columns)
+        if not columns:
+            return header + "\n"
+        data = np.column_stack([values for _, _, values in columns])
+        return "\n".join([header] + [",".join(f"{x:.17g}" for x in row) for row in data]) + "\n"
+
+    def mat_bytes(self) -> bytes:
+        """The output columns as a Matlab .mat file (scipy.io): a column vector per
+        label (made a Matlab name), and `labels` and `units` as cell arrays."""
+        import io
+        import scipy.io
+        columns = self.columns()
+        names = matlab_names([label for label, _, _ in columns])
+        contents = {name: values.reshape(-1, 1) for name, (_, _, values) in zip(names, columns)}
+        contents["labels"] = np.array([label for label, _, _ in columns], dtype=object)
+        contents["units"] = np.array([unit for _, unit, _ in columns], dtype=object)
+        buffer = io.BytesIO()
+        scipy.io.savemat(buffer, contents, do_compression=True)
+        return buffer.getvalue()
+
     def __repr__(self) -> str:
         status = "ok" if self.ok else f"failed: {self.failure}"
         return (f"<autolev Result {self.kind} {self.name}: {len(self.t)} rows, "
                 f"{len(self.outputs)} output files, {status}>")
+
+
+# Matlab's namelengthmax
+MATLAB_NAME_LENGTH = 63
+
+
+def matlab_names(labels: list[str]) -> list[str]:
+    """A Matlab variable name for each label (letters, digits and _, a letter first),
+    distinct from each other and from `labels` and `units`."""
+    taken = {"labels", "units"}
+    out = []
+    for label in labels:
+        name = re.sub(r"\W", "_", label.strip(), flags=re.ASCII).strip("_") or "column"
+        if not name[0].isalpha():
+            name = "x" + name
+        name = base = name[:MATLAB_NAME_LENGTH]
+        k = 1
+        while name.lower() in taken:
+            k += 1
+            name = f"{base[:MATLAB_NAME_LENGTH - len(str(k)) - 1]}_{k}"
+        taken.add(name.lower())
+        out.append(name)
+    return out
+
+
+def _csv_field(text: str) -> str:
+    """A CSV field: quoted (quotes doubled) when it holds a comma, a quote or a line end."""
+    if any(c in text for c in ',"\n\r'):
+        return '"' + text.replace('"', '""') + '"'
+    return text
 
 
 def split_outputs(system, values, result_rows, writer, encoded_out: dict) -> None:
