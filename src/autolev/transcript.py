@@ -31,7 +31,7 @@ from .runtime.symbols import TIME, Z, derivative, new_z
 from .runtime.vector import Dyadic, Vector
 from .source import decode
 from .translate.commands import IN_PLACE
-from .verification import Response, Session, _build
+from .verification import Response, Session, parse_responses, replay
 
 
 class AutolevPrinter(StrPrinter):
@@ -193,9 +193,13 @@ def transcript(path) -> str:
                                       span.end.line))
             shown_as.append(s)
     session = Session("\n".join(lines) + "\n", responses, str(p))
-    model, captured, skipped = _build(session, p)
-    if model is None:
-        raise AutolevError(skipped)
+    parsed, refused = parse_responses(session)
+    if refused:
+        raise AutolevError(next(iter(refused.values())))
+    replayed = replay(session, p, parsed)
+    if replayed.error is not None:
+        raise AutolevError(replayed.error)
+    model, captured = replayed.model, replayed.ours
     after: dict[int, list[int]] = {}
     for k, r in enumerate(responses):
         if k in captured:
