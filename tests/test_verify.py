@@ -112,6 +112,36 @@ def test_a_file_without_responses_is_an_error(tmp_path):
     assert report.error and not report.ok
 
 
+def test_a_session_of_declarations_has_nothing_to_compare_and_is_not_wrong(tmp_path, capsys):
+    # Autolev printed nothing for a declaration (SSOpt's session, its inputs (7)-(12))
+    f = tmp_path / "decl.all"
+    f.write_text("   (1) % declarations only\n   (2) VARIABLES X1,X2\n   (3) CONSTANTS A\n")
+    report = autolev.verify(f)
+    assert report.ok and report.error is None and report.outcomes == []
+    assert main(["verify", str(f)]) == 0
+    assert "nothing to compare" in capsys.readouterr().out
+
+
+def test_the_elements_of_a_column_assigned_one_by_one_are_each_compared(tmp_path):
+    # X[1] = L, X[2] = 2*L is one column of the translation, written at its last element
+    f = tmp_path / "col.all"
+    f.write_text("   (1) CONSTANTS L\n   (2) X[1] = L\n-> (3) X[1] = L\n\n"
+                 "   (4) X[2] = 2*L\n-> (5) X[2] = 3*L\n\n")
+    report = autolev.verify(f)
+    assert [(o.response.lhs, o.status) for o in report.outcomes] == [
+        ("X[1]", "match"), ("X[2]", "mismatch")]
+
+
+def test_a_response_the_grammar_cannot_read_names_its_line(tmp_path):
+    f = tmp_path / "bad.all"
+    f.write_text("   (1) CONSTANTS L\n   (2) X = L\n-> (3) X = L +* 2\n\n"
+                 "   (4) Y = L\n-> (5) Y = L\n\n")
+    x, y = autolev.verify(f).outcomes
+    assert x.status == "not comparable" and x.detail.startswith(
+        f"Autolev's response does not read: {f}:3: unexpected '*'")
+    assert y.status == "match"
+
+
 @pytest.mark.corpus
 def test_every_corpus_session_verifies(corpus):
     files = sorted(corpus.rglob("*.all"))

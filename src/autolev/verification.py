@@ -57,6 +57,7 @@ class Session:
     source: str           # the model's statements, each at its line of the file
     responses: list
     path: str
+    saved: bool = False   # laid out as Autolev's SAVE wrote it: inputs numbered (n)
 
 
 def read_session(text: str, path: str = "<session>") -> Session:
@@ -65,8 +66,11 @@ def read_session(text: str, path: str = "<session>") -> Session:
     keeps every input at its line of the file (the rest blank), so the model's
     diagnostics name the file's lines."""
     lines = text.splitlines()
+    # a response, or every line but blank ones an input (a session of declarations)
     is_all = any(_RESPONSE.match(ln) for ln in lines) or \
-        sum(bool(_INPUT.match(ln)) for ln in lines[:20]) > 5
+        sum(bool(_INPUT.match(ln)) for ln in lines[:20]) > 5 or \
+        (any(ln.strip() for ln in lines) and
+         all(_INPUT.match(ln) for ln in lines if ln.strip()))
     src: list[str] = []
     responses: list[Response] = []
     current: Response | None = None
@@ -108,7 +112,7 @@ def read_session(text: str, path: str = "<session>") -> Session:
         lhs, _, rhs = r.expr.partition("=")
         r.lhs, r.expr = lhs.strip(), rhs.strip()
         out.append(r)
-    return Session("\n".join(src) + "\n", out, path)
+    return Session("\n".join(src) + "\n", out, path, is_all)
 
 
 # -- reading the responses -----------------------------------------------------------------
@@ -175,6 +179,7 @@ class Report:
     path: str
     outcomes: list = field(default_factory=list)
     error: str | None = None
+    note: str | None = None       # why a session that is not wrong has nothing compared
 
     def count(self, status: str) -> int:
         return sum(o.status == status for o in self.outcomes)
@@ -184,12 +189,15 @@ class Report:
         return self.error is None and self.count("mismatch") == 0
 
     def summary(self) -> str:
+        if self.note is not None:
+            return f"{self.path}: {self.note}"
         return (f"{self.path}: {self.count('match')} match, {self.count('mismatch')} "
                 f"mismatch, {self.count('not comparable')} not comparable "
                 f"({len(self.outcomes)} responses)")
 
     def as_dict(self) -> dict:
-        return {"file": self.path, "error": self.error, "match": self.count("match"),
+        return {"file": self.path, "error": self.error, "note": self.note,
+                "match": self.count("match"),
                 "mismatch": self.count("mismatch"),
                 "not_comparable": self.count("not comparable"),
                 "responses": [o.as_dict() for o in self.outcomes]}
@@ -298,6 +306,11 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
     p = Path(path)
     session = read_session(decode(p.read_bytes()), str(p))
     report = Report(str(p))
+    if not session.responses and session.saved:
+        # no input of the session printed a response (declarations only): nothing to
+        # compare, and nothing wrong (docs/language.md, "autolev verify")
+        report.note = "no input of this session printed a response: nothing to compare"
+        return report
     if not session.responses:
         report.error = "no responses recorded (an .all transcript, or % -> comments)"
         return report
