@@ -163,7 +163,7 @@ def test_the_models_own_names_never_stand_for_the_captures(tmp_path):
 
 
 @pytest.mark.parametrize("response, reason", [
-    ("(" * 5000 + "L" + ")" * 5000, f"{{f}}:3: this statement is nested too deeply to read"),
+    ("(" * 5000 + "L" + ")" * 5000, "{f}:3: this statement is nested too deeply to read"),
     ("L +* 2", "{f}:3: unexpected '*'"),
     ("ATAN2(L)", "does not translate: ATAN2 takes 2 arguments, not 1 [T007]"),
     ("SIN(L, L)", "does not translate: SIN takes 1 argument, not 2 [T007]"),
