@@ -321,3 +321,18 @@ def test_a_wrong_response_of_a_command_is_a_mismatch(tmp_path):
     bad = {o.response.lhs for o in report.outcomes if o.status == "mismatch"}
     assert bad == {"N_A", "I_A_AO>>", "FORCE_P>", "TAU", "U'"} and not report.ok
     assert report.count("not comparable") == 0
+
+
+def test_responses_read_in_chunks_keep_their_places(tmp_path, monkeypatch):
+    # a large transcript is read a chunk at a time (a model's reading budget holds for
+    # each): every response stays with its own line
+    import autolev.verification as verification
+    monkeypatch.setattr(verification, "_CHUNK_RESPONSES", 3)
+    lines = ["   (1) CONSTANTS L"]
+    for k in range(1, 9):
+        shown = 9 * k if k == 5 else k           # the fifth response is wrong
+        lines += [f"   ({2 * k}) X{k} = {k}*L", f"-> ({2 * k + 1}) X{k} = {shown}*L", ""]
+    f = tmp_path / "chunks.all"
+    f.write_text("\n".join(lines) + "\n")
+    report = autolev.verify(f)
+    assert [o.status for o in report.outcomes] == ["match"] * 4 + ["mismatch"] + ["match"] * 3

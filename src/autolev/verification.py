@@ -115,6 +115,12 @@ def read_session(text: str, path: str = "<session>") -> Session:
     return Session("\n".join(src) + "\n", out, path, is_all)
 
 
+# responses read by one builder: at most this many characters and responses (a model's
+# reading budget, include.MAX_EXPANDED_BYTES and _STATEMENTS, is 2 MB and 20 000)
+_CHUNK = 1_000_000
+_CHUNK_RESPONSES = 10_000
+
+
 # -- reading the responses -----------------------------------------------------------------
 @dataclass
 class ParsedResponse:
@@ -126,19 +132,37 @@ def parse_responses(session: Session) -> tuple[dict[int, ParsedResponse], dict[i
     """Each response read by the grammar as `NAME = expression` (or `NAME` alone when
     the response records no expression): {index: ParsedResponse}, and {index: why} for
     those that cannot be read, naming the file's line."""
-    text = "".join((f"{r.lhs} = {r.expr}" if r.expr else r.lhs).replace("\n", " ") + "\n"
-                   for r in session.responses)
-    builder = Builder(session.path, None, reserved=vocabulary())
-    builder.build_source(SourceFile(session.path, text))
-    refused: dict[int, str] = {}
-    for d in builder.errors:
-        k = d.location.line - 1
-        r = session.responses[k]
-        refused.setdefault(k, f"Autolev's response does not read: "
-                              f"{printable(session.path)}:{r.line}: {d.message} [{d.code}]")
     parsed: dict[int, ParsedResponse] = {}
+    refused: dict[int, str] = {}
+    texts = [(f"{r.lhs} = {r.expr}" if r.expr else r.lhs) for r in session.responses]
+    first = 0
+    while first < len(texts):
+        last, size = first, 0
+        while last < len(texts) and last - first < _CHUNK_RESPONSES and \
+                (last == first or size + len(texts[last]) < _CHUNK):
+            size += len(texts[last]) + 1
+            last += 1
+        _parse_chunk(session, texts, first, last, parsed, refused)
+        first = last
+    for k, r in enumerate(session.responses):
+        if k not in parsed and k not in refused:    # a line the builder made nothing of
+            refused[k] = f"its left side '{printable(r.lhs)}' is not a name (NAME, NAME', " \
+                "NAME[i], NAME>, NAME>>)"
+    return parsed, refused
+
+
+def _parse_chunk(session: Session, texts: list[str], first: int, last: int,
+                 parsed: dict[int, ParsedResponse], refused: dict[int, str]) -> None:
+    """Responses first..last-1, one a line, read by one builder."""
+    builder = Builder(session.path, None, reserved=vocabulary())
+    builder.build_source(SourceFile(session.path, "\n".join(texts[first:last]) + "\n"))
+    for d in builder.errors:
+        k = first + d.location.line - 1
+        refused.setdefault(k, f"Autolev's response does not read: "
+                              f"{printable(session.path)}:{session.responses[k].line}: "
+                              f"{d.message} [{d.code}]")
     for st in builder.statements:
-        k = st.span.start.line - 1
+        k = first + st.span.start.line - 1
         if k in refused:
             continue
         if isinstance(st, ir.Assignment) and st.op == "=":
@@ -152,11 +176,6 @@ def parse_responses(session: Session) -> tuple[dict[int, ParsedResponse], dict[i
                           "name (NAME, NAME', NAME[i], NAME>, NAME>>)")
             continue
         parsed[k] = ParsedResponse(target, value)
-    for k, r in enumerate(session.responses):
-        if k not in parsed and k not in refused:    # a line the builder made nothing of
-            refused[k] = f"its left side '{printable(r.lhs)}' is not a name (NAME, NAME', " \
-                "NAME[i], NAME>, NAME>>)"
-    return parsed, refused
 
 
 # -- verification ------------------------------------------------------------------------------
