@@ -274,3 +274,22 @@ def test_every_corpus_model_without_code_transcribes_and_verifies(corpus, tmp_pa
         assert report.count("mismatch") == 0, report.summary()
         checked += 1
     assert checked >= 49 and set(not_translating) <= set(NOT_BUILDING), not_translating
+
+
+def test_run_files_and_macros_are_shown_as_they_ran_and_the_transcript_replays(tmp_path):
+    # SAVE recorded the lines of a file run, not the RUN (SSOpt's session begins with its
+    # model's lines): the transcript replays away from the model's folder
+    model = tmp_path / "model"
+    model.mkdir()
+    (model / "parts.al").write_text("CONSTANTS L\nX = 2*L\n")
+    (model / "twice.a").write_text("#2# = 2*#1#\n")
+    (model / "main.al").write_text("RUN parts.al\ntwice(X, Y)\nW = Y + 1\n")
+    text = transcript(model / "main.al")
+    assert text.splitlines() == [
+        "   (1) CONSTANTS L", "   (2) X = 2*L", "-> (3) X = 2*L", "",
+        "   (4) Y = 2*X", "-> (5) Y = 4*L", "", "   (6) W = Y + 1", "-> (7) W = 1 + 4*L", ""]
+    elsewhere = tmp_path / "tr"
+    elsewhere.mkdir()
+    (elsewhere / "main.all").write_text(text)
+    report = autolev.verify(elsewhere / "main.all")
+    assert report.error is None and report.count("match") == 3

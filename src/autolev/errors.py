@@ -66,6 +66,12 @@ class Span:
         return self.start.file
 
     @property
+    def text(self) -> str | None:
+        """The text as it was read (a macro's with its #k# replaced), when known."""
+        return self._mapped.slice(self._lo, self._hi + 1) if self._mapped is not None \
+            else None
+
+    @property
     def line(self) -> int:
         return self.start.line
 

@@ -9,7 +9,7 @@ from .errors import AutolevSyntaxError, AutolevTranslationError
 from .ir import Program
 from .irbuild import Builder, sort_key
 from .source import SourceFile
-from .translate import Translation, translate, vocabulary
+from .translate import Probe, Translation, translate, vocabulary
 
 
 def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
@@ -47,11 +47,13 @@ def _as_path(source):
     return source
 
 
-def translation(source: str | os.PathLike, filename: str | None = None) -> Translation:
-    """Parse and translate; returns the `Translation` (code, line map, diagnostics).
-    Raises AutolevSyntaxError or AutolevTranslationError."""
+def translation(source: str | os.PathLike, filename: str | None = None,
+                probes: tuple[Probe, ...] = ()) -> Translation:
+    """Parse and translate; returns the `Translation` (code, line map, diagnostics), with
+    the lines keeping `probes` (translate.Probe).  Raises AutolevSyntaxError or
+    AutolevTranslationError."""
     program = source if isinstance(source, Program) else parse(source, filename)
-    result = translate(program)
+    result = translate(program, probes=probes)
     errors = [d for d in result.diagnostics if d.severity == "error"]
     if errors:
         raise AutolevTranslationError(result.diagnostics)

@@ -31,7 +31,7 @@ from .runtime.symbols import TIME, Z, derivative, new_z
 from .runtime.vector import Dyadic, Vector
 from .source import decode
 from .translate.commands import IN_PLACE
-from .verification import Response, Session, _build
+from .verification import Response, Session, parse_responses, replay
 
 
 class AutolevPrinter(StrPrinter):
@@ -175,9 +175,8 @@ class _Shown:
 def transcript(path) -> str:
     """The `.all` transcript of the model at `path` (raises as autolev.load does)."""
     p = Path(path)
-    text = decode(p.read_bytes())
-    lines = text.splitlines()
     program = parse(p)
+    lines, line_of = _as_run(decode(p.read_bytes()).splitlines(), program)
     responses: list[Response] = []
     shown_as: list[_Shown] = []
     massive: list[str] = []         # the mass centres and particles declared so far
@@ -185,17 +184,20 @@ def transcript(path) -> str:
         if isinstance(st, ir.Declaration) and st.what in ("bodies", "particles"):
             massive += [n + "O" if st.what == "bodies" else n
                         for item in st.items for n in item.names]
-        span = st.span
-        if span is None or Path(span.start.file) != p:
+        if id(st) not in line_of:
             continue
         for s in _responses(st, program, massive):
-            responses.append(Response(len(responses) + 1, span.end.line, s.capture, "",
-                                      span.end.line))
+            responses.append(Response(len(responses) + 1, line_of[id(st)], s.capture, "",
+                                      line_of[id(st)]))
             shown_as.append(s)
     session = Session("\n".join(lines) + "\n", responses, str(p))
-    model, captured, skipped = _build(session, p)
-    if model is None:
-        raise AutolevError(skipped)
+    parsed, refused = parse_responses(session)
+    if refused:
+        raise AutolevError(next(iter(refused.values())))
+    replayed = replay(session, p, parsed)
+    if replayed.error is not None:
+        raise AutolevError(replayed.error)
+    model, captured = replayed.model, replayed.ours
     after: dict[int, list[int]] = {}
     for k, r in enumerate(responses):
         if k in captured:
@@ -219,6 +221,36 @@ def transcript(path) -> str:
         if after.get(no):
             out.append("")
     return "\n".join(out) + "\n"
+
+
+def _as_run(lines: list[str], program: ir.Program) -> tuple[list[str], dict[int, int]]:
+    """The session's input lines as Autolev ran them: a RUN or a macro call replaced
+    by the statements it brought in, one a line (a macro's with its #k# replaced), as
+    SAVE recorded the lines of a file run (docs/language.md, "The responses of a
+    session"); and the line each statement ends at, by the statement's id."""
+    brought: dict[int, list[ir.Statement]] = {}     # by the RUN's or the call's line
+    for st in program.statements:
+        if st.span is not None and st.span.start.via is not None:
+            where = st.span.start.via
+            while where.via is not None:
+                where = where.via
+            brought.setdefault(where.line, []).append(st)
+    ends: dict[int, list[ir.Statement]] = {}
+    for st in program.statements:
+        if st.span is not None and st.span.start.via is None:
+            ends.setdefault(st.span.end.line, []).append(st)
+    out: list[str] = []
+    line_of: dict[int, int] = {}
+    for no, line in enumerate(lines, 1):
+        if no in brought:
+            for st in brought[no]:
+                out.append(" ".join(st.span.text.split("\n")))
+                line_of[id(st)] = len(out)
+            continue
+        out.append(line)
+        for st in ends.get(no, []):
+            line_of[id(st)] = len(out)
+    return out, line_of
 
 
 # nodes of a scalar counted with every repetition (about 4 characters each printed):

@@ -147,6 +147,17 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
                 return S.derivative(sym, len(name) - len(base))
         raise KeyError(name)
 
+    def engine_symbol(self, name: str):
+        """The scalar `name` (WCHECK1, WCHECK1') where the translation cannot know it:
+        the engine declared it (NICHECK's work integral).  Autolev's responses name it."""
+        try:
+            value = self.quantity(name)
+        except KeyError:
+            raise AutolevModelError(f"'{name}' is not a name of this model") from None
+        if not isinstance(value, sm.Symbol):
+            raise AutolevModelError(f"'{name}' is not a scalar of this model")
+        return value
+
     def entity(self, name: str):
         """The frame, body, point or particle named `name` (NO, BO, AO included)."""
         for table in (self.frames_by_name, self.points_by_name):

@@ -8,9 +8,9 @@ from . import (  # noqa: F401
     assignments, commands, declarations, dynamics, expressions, functions, io, kinematics,
     session, special,
 )
-from .core import Translation, Translator
+from .core import PROBES, Probe, Translation, Translator
 
-__all__ = ["translate", "Translation", "vocabulary"]
+__all__ = ["translate", "Translation", "vocabulary", "Probe", "PROBES"]
 
 
 def vocabulary() -> frozenset[str]:
@@ -19,10 +19,12 @@ def vocabulary() -> frozenset[str]:
     return frozenset(functions.FUNCTIONS) | frozenset(commands.COMMANDS) | commands.IN_PLACE
 
 
-def translate(program: ir.Program, module_name: str | None = None) -> Translation:
-    """The Python text of a program, its line map and its diagnostics."""
+def translate(program: ir.Program, module_name: str | None = None,
+              probes: tuple[Probe, ...] = ()) -> Translation:
+    """The Python text of a program, its line map and its diagnostics; with the lines
+    keeping each of `probes` (see Probe)."""
     name = module_name or _stem(program.filename)
-    return Translator(program, name).translate()
+    return Translator(program, name, probes).translate()
 
 
 def _stem(filename: str) -> str:

@@ -150,6 +150,27 @@ class Translation:
     # {NAME: "file:line: statement"}: the statement that last defines each scalar (X' as
     # XP, upper case), for the comment before its line in a written program
     defined_at: dict[str, str] = field(default_factory=dict)
+    # the probes the translator could not write: {key: why}
+    probe_errors: dict[str, str] = field(default_factory=dict)
+
+
+# the generated module's dictionary of probes' values (a dunder name: no Autolev name
+# is translated to one)
+PROBES = "__probes__"
+
+
+@dataclass(frozen=True)
+class Probe:
+    """A value a consumer of the module reads from it (autolev verify, transcript): the
+    value of `expr` after the model's statements up to line `after` of its file, kept
+    with the definitions known then as `PROBES[key] = (value, {symbol: definition})`.
+    `binds` names the value for the probes after it (Autolev's Z7 of a response)."""
+
+    key: str
+    after: int
+    expr: ir.Expr
+    span: Span
+    binds: str | None = None
 
 
 def _unsupported_statement(tr: Translator, st: ir.Statement) -> None:
@@ -179,9 +200,15 @@ class Session:
 
 
 class Translator:
-    def __init__(self, program: ir.Program, module_name: str = "model"):
+    def __init__(self, program: ir.Program, module_name: str = "model",
+                 probes: tuple[Probe, ...] = ()):
         self.program = program
         self.module_name = module_name
+        self.probes = sorted(probes, key=lambda probe: probe.after)    # stable
+        self.probe_errors: dict[str, str] = {}
+        # the names probes bind, seen by the probes only (not by the model's statements)
+        self.probe_names: dict[str, Entry] = {}
+        self._probing = False
         self.names = NameTable()
         self.scalars: dict[str, Entry] = {}
         self.values: dict[str, Entry] = {}
@@ -295,7 +322,13 @@ class Translator:
         self._header()
         previous_end: dict[str, int] = {}
         statements = self.program.statements
+        probes = iter(self.probes)
+        probe = next(probes, None)
         for n, st in enumerate(statements):
+            while probe is not None and st.span is not None and \
+                    probe.after < _line_in_model(st.span) and not self._within_run(st):
+                self._write_probe(probe)
+                probe = next(probes, None)
             if self.session.exited:
                 self.warn(f"{len(statements) - n} statement(s) after EXIT are ignored, as "
                           "Autolev ignored them", st, "W103")
@@ -316,12 +349,40 @@ class Translator:
                 if exc.code == "T002":
                     self._report_other_undeclared(st, exc.node)
                 self._known_after_failure(st)
+        while probe is not None:
+            self._write_probe(probe)
+            probe = next(probes, None)
         self._span = None
         code, line_map = self._render()
         return Translation(code, line_map, self.diagnostics, dict(self.autolev_names),
                            {k: dict(v) for k, v in self.namespaces.items()},
                            list(self.program.files), list(self.code_spans),
-                           dict(self.defined_at))
+                           dict(self.defined_at), dict(self.probe_errors))
+
+    def _within_run(self, st: ir.Statement) -> bool:
+        """Whether st continues a run X[1] = a, X[2] = b, ... (assignments.py): X is
+        written with the run's last statement, so a probe waits for it."""
+        run = self.column_runs.get(id(st)) if self.column_runs else None
+        return run is not None and st is not run[0]
+
+    def _write_probe(self, probe: Probe) -> None:
+        """The line keeping a probe's value, or why there is none (`probe_errors`)."""
+        self._span = probe.span
+        self._probing = True
+        try:
+            value = self.expr(probe.expr)
+        except TranslationError as exc:
+            self.probe_errors[probe.key] = f"{exc} [{exc.code}]"
+            return
+        except RecursionError:
+            self.probe_errors[probe.key] = "nested too deeply to translate"
+            return
+        finally:
+            self._probing = False
+        self.emit(f"{PROBES}[{probe.key!r}] = ({value.code}, dict(model.defs.rhs))")
+        if probe.binds is not None:
+            self.probe_names[probe.binds.lower()] = Entry(
+                f"{PROBES}[{probe.key!r}][0]", NameKind.VALUE, value.type)
 
     def _report_other_undeclared(self, st: ir.Statement, first) -> None:
         """The names after the first undeclared one in the statement that are not
@@ -414,6 +475,8 @@ class Translator:
         self.emit("")
         self.emit(f"model = al.Model({quote(self.module_name)})")
         self.emit("t = model.t")
+        if self.probes:
+            self.emit(f"{PROBES} = {{}}")
         self.emit("")
 
     def _render(self) -> tuple[str, dict[int, Span]]:
@@ -443,6 +506,9 @@ class Translator:
 
     def name(self, name: str, primes: int, node, want: str = "value") -> Typed:
         key = name.lower()
+        if self._probing and not primes and key in self.probe_names:
+            entry = self.probe_names[key]
+            return Typed(entry.py, entry.type)
         if want in ("frame", "point", "entity") and key in self.entities:
             ent = self.entities[key]
             return Typed(ent.py, ent.type)
@@ -474,6 +540,10 @@ class Translator:
         dcm = self.dcm_name(name)
         if dcm is not None:
             return dcm
+        if self._probing:
+            # a response may name what the engine declared (NICHECK's WCHECK1)
+            return Typed(f"model.engine_symbol({quote(name + chr(39) * primes)})",
+                         ValueType.SCALAR)
         raise self.error(f"'{name}' is not declared or defined", node, "T002")
 
     def symbol(self, e: ir.Expr) -> str:
@@ -535,6 +605,15 @@ class Translator:
                 return ent
         raise self.error("a " + " or ".join(sorted(set(kinds) - {NameKind.NEWTONIAN})) +
                          " is needed here", e, "T008")
+
+
+def _line_in_model(span: Span) -> int:
+    """The line of the model's own file a statement is at (a RUN's or a macro call's
+    line for the statements it brought in)."""
+    where = span.start
+    while where.via is not None:
+        where = where.via
+    return where.line
 
 
 def _primes_used(program: ir.Program) -> set[tuple[str, int]]:
