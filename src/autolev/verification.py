@@ -29,6 +29,7 @@ from sympy import Symbol
 from . import ir
 from .errors import (AutolevInternalError, AutolevRuntimeError, AutolevSyntaxError,
                      AutolevTranslationError, Location, Span, printable)
+from .include import MAX_EXPANDED_BYTES, MAX_EXPANDED_STATEMENTS
 from .irbuild import Builder
 from .loader import load_translation
 from .pipeline import translation
@@ -115,10 +116,9 @@ def read_session(text: str, path: str = "<session>") -> Session:
     return Session("\n".join(src) + "\n", out, path, is_all)
 
 
-# responses read by one builder: at most this many characters and responses (a model's
-# reading budget, include.MAX_EXPANDED_BYTES and _STATEMENTS, is 2 MB and 20 000)
-_CHUNK = 1_000_000
-_CHUNK_RESPONSES = 10_000
+# responses read by one builder: half a model's reading budget of characters and statements
+_CHUNK = MAX_EXPANDED_BYTES // 2
+_CHUNK_RESPONSES = MAX_EXPANDED_STATEMENTS // 2
 
 
 # -- reading the responses -----------------------------------------------------------------

@@ -15,6 +15,8 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     from ..pipeline import translation
 
     path = Path(ns.file)
+    if ns.to == "sympy":
+        return _convert_to_sympy(path, ns)
     try:
         result = translation(path)
     except (AutolevSyntaxError, AutolevTranslationError) as exc:
@@ -39,6 +41,37 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     return 0
 
 
+def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
+    """The model's equations of motion as a standalone SymPy script."""
+    from ..export import export_sympy
+    from ..runtime.errors import AutolevModelError
+    from ..runtime.tools import write_output
+    from .common import load_model
+
+    out = Path(ns.output) if ns.output else path.with_name(path.stem + "_sympy.py")
+    if out.is_dir():
+        raise UsageError(f"{out} is a folder; -o names the script's file")
+    if out.resolve() == path.resolve():
+        raise UsageError(f"refusing to overwrite the model {path}")
+    model = load_model(path)
+    if model is None:
+        print(f"{path}: not converted", file=sys.stderr)
+        return 1
+    try:
+        text = export_sympy(model, path.name)
+    except AutolevModelError as exc:
+        print(f"{path}: error: {exc}", file=sys.stderr)
+        return 1
+    try:
+        write_output(out.parent, out.name, text, ns.overwrite)
+    except OSError as exc:
+        print(f"autolev convert: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)
+        return 1
+    if not ns.quiet:
+        print(f"wrote {out}")
+    return 0
+
+
 def add_convert(sub) -> None:
     convert = sub.add_parser("convert", help="translate a model into a Python module",
                              description="Translate FILE into a Python module on "
@@ -47,7 +80,12 @@ def add_convert(sub) -> None:
                              "the model has errors.")
     convert.add_argument("file", metavar="FILE", help=".al model")
     convert.add_argument("-o", "--output", metavar="OUT.py",
-                         help="where to write the module (default: FILE with .py)")
+                         help="where to write the module (default: FILE with .py; with "
+                         "--to sympy, FILE_sympy.py)")
+    convert.add_argument("--to", choices=("autolev", "sympy"), default="autolev",
+                         help="autolev (default): a module on autolev.runtime; sympy: a "
+                         "standalone script of the equations of motion that needs only "
+                         "sympy, numpy and scipy (see its docstring)")
     convert.add_argument("-q", "--quiet", action="store_true")
     overwrite_option(convert)
     convert.set_defaults(func=cmd_convert)

@@ -1,0 +1,381 @@
+"""`autolev convert --to sympy`: a model as a standalone SymPy script, runnable without
+autolev (it imports only sympy, numpy and scipy).
+
+The script is written at the equations level: the CODE command's state, its rates
+(the kinematical and other explicit differential equations) and the mass matrix and
+forcing from which the other rates are solved, with every intermediate (Autolev's Z's,
+the model's definitions) a named assignment in the order it is computed, as sympy
+expressions in dynamicsymbols.  It reads what `autolev run` integrates (the command's
+NumericSystem and inputs), so the two agree by construction of the same equations, not
+by a second formulation.  Names stay the model's (`K` is `sm.Symbol('K')`, no
+assumptions), made into Python identifiers; text from the model reaches the script only
+as identifiers it checked or as quoted strings.
+"""
+from __future__ import annotations
+
+import keyword
+import math
+import re
+from dataclasses import dataclass
+
+import sympy as sm
+from sympy.printing.precedence import precedence
+from sympy.printing.str import StrPrinter
+
+from .runtime import symbols as S
+from .runtime import units
+from .runtime.errors import AutolevModelError
+
+# names the script itself defines: a model's quantity of the same name is renamed
+SCRIPT_NAMES = frozenset({
+    "sys", "np", "sm", "me", "solve_ivp", "t", "states", "rates", "unknowns",
+    "unknown_states", "mass_matrix", "forcing", "full_mass", "full_forcing", "system",
+    "constants", "initial_conditions", "specified", "integration", "outputs",
+    "numeric_functions", "integrate", "main", "row", "column", "k", "j", "intermediates",
+    "expanded", "after_solving"})
+
+
+@dataclass(frozen=True)
+class Equations:
+    """What the script holds: a CODE command's equations, values and outputs."""
+
+    model_name: str
+    command: str
+    states: list            # our symbols, in the run's order
+    rates: list             # each state's rate, None where it is solved
+    unknowns: list          # the derivatives solved from mass * unknowns = forcing
+    mass: list              # rows of the mass matrix
+    forcing: list
+    definitions: list       # (symbol, expression), dependencies first
+    constants: dict         # symbol -> value (SI units, radians)
+    initial: dict           # state -> value
+    specified: list         # symbols given as functions of time
+    integration: dict       # TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR
+    outputs: list           # (label, unit, expression, in degrees)
+
+
+def equations_of(model, command) -> Equations:
+    """The equations, values and outputs `autolev run` uses for an integrating CODE
+    command (DYNAMICS or ODE)."""
+    from .runtime.numerics.command import equations_and_unknowns, output_columns
+    from .runtime.numerics.prepare import InputsWanted, numeric_system, take_inputs
+    from .runtime.numerics.files import safe_stem
+    from .runtime.tools import RunOptions
+
+    kind = command.kind
+    if not kind.integrates:
+        raise AutolevModelError(f"CODE {kind.upper()} {command.filename}: the SymPy export "
+                                "writes equations of motion (CODE DYNAMICS or ODE)")
+    files = output_columns(model, command)
+    solving = equations_and_unknowns(command.args, kind.upper())
+    system = numeric_system(model, command, files, [], solving, "python", False, ())
+    options = RunOptions()
+    ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], None, None,
+                       None, None, options.missing_values, None)
+    with model.defs.as_of(command.definitions):
+        inputs, _, _, _ = take_inputs(ask, system)
+        n = len(system.implicit_unknowns)
+        rows, nstate = system.rhs_exprs, system.nstate
+        solved = {_state_of(u) for u in system.implicit_unknowns}
+        rates = [None if x in solved else sm.sympify(rows[k])
+                 for k, x in enumerate(system.states)]
+        mass = [[sm.sympify(e) for e in rows[nstate + r * n:nstate + (r + 1) * n]]
+                for r in range(n)]
+        forcing = [sm.sympify(e) for e in rows[nstate + n * n:nstate + n * n + n]]
+        columns = [c for cols in system.files for c in cols]
+        outputs = [(c.label, c.unit or "", sm.sympify(e), units.is_degrees(c.unit))
+                   for c, e in zip(columns, system.output_exprs)]
+        roots = [e for e in rates if e is not None] + [e for r in mass for e in r] \
+            + forcing + [e for _, _, e, _ in outputs]
+        given = set(system.states) | {S.TIME} | set(system.params) | set(system.specified) \
+            | set(system.implicit_unknowns)
+        order = model.defs.evaluation_order(
+            {s for e in roots for s in e.free_symbols}, given)
+        definitions = [(s, sm.Integer(0) if s in system.aux_fixed else model.defs.rhs[s])
+                       for s in order]
+    definitions = [(s, sm.sympify(system.aux_fixed[s])) for s in system.aux_fixed
+                   if s not in dict(definitions)] + definitions
+    return Equations(
+        model_name=model.name, command=f"CODE {kind.upper()} {command.filename}",
+        states=list(system.states), rates=rates, unknowns=list(system.implicit_unknowns),
+        mass=mass, forcing=forcing, definitions=definitions,
+        constants={p: inputs.internal(p) for p in system.params},
+        initial={x: inputs.internal(x) for x in system.states},
+        specified=list(system.specified),
+        integration={name: inputs.internal(name) for name in
+                     ("TINITIAL", "TFINAL", "INTEGSTP", "ABSERR", "RELERR")}
+        | {"PRINTINT": int(inputs.values["PRINTINT"].given)},
+        outputs=outputs)
+
+
+def _state_of(unknown):
+    """The state whose rate `unknown` is (U1 for U1', X' for X'')."""
+    base, order = S.base_and_order(unknown)
+    return base if order == 1 else S.derivative(base, order - 1)
+
+
+class ScriptPrinter(StrPrinter):
+    """Expressions as Python that builds them with sympy (`sm.sin(Q1)`,
+    `sm.Rational(1, 2)`), each symbol by the identifier the script gave it."""
+
+    def __init__(self, names: dict):
+        super().__init__({"full_prec": True})
+        self.names = names
+
+    def _print_Symbol(self, expr):
+        if expr not in self.names:
+            raise AutolevModelError(f"the SymPy export has no value for {expr}")
+        return self.names[expr]
+
+    def _print_Function(self, expr):
+        name = type(expr).__name__
+        if getattr(sm, name, None) is not type(expr):
+            raise AutolevModelError(f"the SymPy export cannot write the function {name}")
+        return f"sm.{name}({', '.join(self._print(a) for a in expr.args)})"
+
+    def _print_Rational(self, expr):
+        return f"sm.Rational({expr.p}, {expr.q})"
+
+    def _print_Float(self, expr):
+        return repr(float(expr))
+
+    def _print_Pow(self, expr, rational=False):
+        prec = precedence(expr)
+        return (f"{self.parenthesize(expr.base, prec, strict=True)}**"
+                f"{self.parenthesize(expr.exp, prec, strict=True)}")
+
+    def _print_Pi(self, expr):
+        return "sm.pi"
+
+    def _print_Exp1(self, expr):
+        return "sm.E"
+
+    def _print_ImaginaryUnit(self, expr):
+        return "sm.I"
+
+    def _print_BooleanTrue(self, expr):
+        return "sm.true"
+
+    def _print_BooleanFalse(self, expr):
+        return "sm.false"
+
+
+def identifier(name: str, taken: set) -> str:
+    """A Python identifier for a model's name, distinct from `taken` (then added)."""
+    base = re.sub(r"\W", "_", name.replace("'", "p"), flags=re.ASCII) or "q"
+    if base[0].isdigit():
+        base = "_" + base
+    out, k = base, 1
+    while out in taken or keyword.iskeyword(out) or out in SCRIPT_NAMES:
+        k += 1
+        out = f"{base}_{k}"
+    taken.add(out)
+    return out
+
+
+def sympy_script(eqs: Equations, source: str) -> str:
+    """The standalone script of `eqs` (see the module's docstring)."""
+    taken: set = set()
+    names: dict = {S.TIME: "t"}
+    for s in eqs.states + eqs.specified + list(eqs.constants) + [s for s, _ in eqs.definitions]:
+        names[s] = identifier(S.base_and_order(s)[0].name + "p" * S.base_and_order(s)[1],
+                              taken)
+    unknown_names = {}
+    for u in eqs.unknowns:
+        unknown_names[u] = names[u] = identifier(
+            S.base_and_order(u)[0].name + "p" * S.base_and_order(u)[1], taken)
+    printer = ScriptPrinter(names)
+    p = printer.doprint
+    out = [f'"""{_quoted_text(eqs.model_name)}: its equations of motion as SymPy expressions, '
+           f"written by autolev from\n{_quoted_text(source)} ({_quoted_text(eqs.command)}).",
+           "",
+           "Level: equations.  The state, the rates given explicitly, and the mass matrix and",
+           "forcing from which the other rates (`unknowns`) are solved, as Autolev's Kane's",
+           "method formed them, with every intermediate (Autolev's Z's) a named assignment.",
+           "Importing defines `system` (a sympy.physics.mechanics.SymbolicSystem: full_mass *",
+           "d(states)/dt = full_forcing, in the intermediates), `constants`,",
+           "`initial_conditions` and `specified`;",
+           "`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy (DOP853,",
+           "RELERR and ABSERR) and writes the OUTPUT columns as CSV.",
+           '"""',
+           "import sys", "", "import numpy as np", "import sympy as sm",
+           "import sympy.physics.mechanics as me", "from scipy.integrate import solve_ivp", "",
+           "t = me.dynamicsymbols._t", ""]
+    out += ["# the state: functions of time"]
+    out += [f"{names[x]} = me.dynamicsymbols({names[x]!r})" for x in eqs.states]
+    if eqs.specified:
+        out += ["", "# specified quantities: functions of time (values in `specified`)"]
+        out += [f"{names[s]} = me.dynamicsymbols({names[s]!r})" for s in eqs.specified]
+    if eqs.constants:
+        out += ["", "# constants"]
+        out += [f"{names[c]} = sm.Symbol({names[c]!r})" for c in eqs.constants]
+    if eqs.unknowns:
+        out += ["", "# the rates solved from the mass matrix"]
+        out += [f"{unknown_names[u]} = {names[_state_of(u)]}.diff(t)" for u in eqs.unknowns]
+    before, after = _split_at_the_unknowns(eqs)
+    if eqs.definitions:
+        out += ["", "# intermediates (Autolev's Z's) and the model's definitions, as functions of",
+                "# time, and what each is, in the order they are computed; `expanded(expr)`",
+                "# replaces them in an expression"]
+        out += [f"{names[z]} = me.dynamicsymbols({names[z]!r})" for z, _ in eqs.definitions]
+    out += ["intermediates = ["] + [f"    ({names[z]}, {_expression(p, e)})," for z, e in before]
+    out += ["]", "# those that need the solved rates (outputs only)", "after_solving = ["]
+    out += [f"    ({names[z]}, {_expression(p, e)})," for z, e in after] + ["]"]
+    out += ["", "states = [" + ", ".join(names[x] for x in eqs.states) + "]",
+            "# d(state)/dt where it is given; None where it is solved (`unknowns`)",
+            "rates = [" + ", ".join("None" if r is None else p(r) for r in eqs.rates) + "]",
+            "unknowns = [" + ", ".join(unknown_names[u] for u in eqs.unknowns) + "]",
+            "unknown_states = [" + ", ".join(
+                str(eqs.states.index(_state_of(u))) for u in eqs.unknowns) + "]",
+            f"mass_matrix = sm.Matrix({len(eqs.mass)}, {len(eqs.mass)}, ["
+            + ", ".join(p(e) for r in eqs.mass for e in r) + "])",
+            f"forcing = sm.Matrix({len(eqs.forcing)}, 1, ["
+            + ", ".join(p(e) for e in eqs.forcing) + "])",
+            "",
+            "# as one system: full_mass * d(states)/dt = full_forcing",
+            "full_mass = sm.eye(len(states))",
+            "full_forcing = sm.Matrix([0 if r is None else r for r in rates])",
+            "for row, k in enumerate(unknown_states):",
+            "    full_mass[k, k] = 0",
+            "    for column, j in enumerate(unknown_states):",
+            "        full_mass[k, j] = mass_matrix[row, column]",
+            "    full_forcing[k] = forcing[row]",
+            "system = me.SymbolicSystem(states, full_forcing, mass_matrix=full_mass)",
+            "",
+            "# values (SI units, radians) from the model's INPUT statements",
+            "constants = {" + ", ".join(f"{names[c]}: {_number(v)}"
+                                        for c, v in eqs.constants.items()) + "}",
+            "initial_conditions = {" + ", ".join(f"{names[x]}: {_number(v)}"
+                                                 for x, v in eqs.initial.items()) + "}",
+            "# each a number or a function of time; 0 unless given",
+            "specified = {" + ", ".join(f"{names[s]}: 0.0" for s in eqs.specified) + "}",
+            "integration = {" + ", ".join(f"{k!r}: {_number(v)}"
+                                          for k, v in eqs.integration.items()) + "}",
+            "# OUTPUT columns: (label, unit, expression in the unit)",
+            "outputs = ["]
+    for label, unit, expr, degrees in eqs.outputs:
+        shown = p(expr) + (" * 180 / sm.pi" if degrees else "")
+        out.append(f"    ({label!r}, {unit!r}, {shown}),")
+    out += ["]", "", "", _RUNNER]
+    return "\n".join(out) + "\n"
+
+
+def _split_at_the_unknowns(eqs: Equations) -> tuple[list, list]:
+    """The definitions the equations need (in order), and those that need the solved
+    rates, which only the outputs use."""
+    late = set(eqs.unknowns)
+    before, after = [], []
+    for name, value in eqs.definitions:
+        if sm.sympify(value).free_symbols & late:
+            late.add(name)
+            after.append((name, value))
+        else:
+            before.append((name, value))
+    return before, after
+
+
+def _expression(p, e) -> str:
+    """An assignment's right side: always a sympy object (a plain 0 would be an int)."""
+    text = p(e)
+    return f"sm.sympify({text})" if sm.sympify(e).is_Number else text
+
+
+def _number(value) -> str:
+    if isinstance(value, int):
+        return repr(value)
+    if math.isfinite(value):
+        return repr(float(value))
+    return f"float({str(value)!r})"
+
+
+def _quoted_text(text: str) -> str:
+    """Text from the model inside the script's docstring: no quotes or backslashes."""
+    return "".join(c if c.isprintable() and c not in '"\\' else "?" for c in text)
+
+
+_RUNNER = '''def expanded(expr):
+    """`expr` with every intermediate replaced by what it is (large for large models)."""
+    for name, value in reversed(intermediates + after_solving):
+        expr = expr.xreplace({name: value})
+    return expr
+
+
+def numeric_functions():
+    """full_mass, full_forcing and the outputs as numpy functions of (t, state, constants,
+    specified values[, unknowns]), each computing the intermediates in order."""
+    plain = {f: sm.Dummy() for f in states + list(specified) + unknowns
+             + [name for name, _ in intermediates + after_solving]}
+    steps = [(plain[name], value.xreplace(plain)) for name, value in intermediates]
+    late = [(plain[name], value.xreplace(plain)) for name, value in after_solving]
+    arguments = [t, [plain[x] for x in states], list(constants),
+                 [plain[s] for s in specified]]
+
+    def function(expr, more=(), after=()):
+        return sm.lambdify(arguments + list(more), expr.xreplace(plain), "numpy",
+                           cse=lambda e: (steps + list(after), e))
+    columns = sm.Matrix([e for _, _, e in outputs])
+    return (function(full_mass), function(full_forcing),
+            function(columns, [[plain[u] for u in unknowns]], late))
+
+
+def integrate(tfinal=None):
+    """The OUTPUT rows from TINITIAL to TFINAL (or `tfinal`), one every PRINTINT steps
+    of INTEGSTP and at the end, as an array (a column per output)."""
+    mass, force, columns = numeric_functions()
+    p = [constants[c] for c in constants]
+    x0 = np.array([initial_conditions[x] for x in states], dtype=float)
+    t0, t1 = integration["TINITIAL"], tfinal if tfinal is not None else integration["TFINAL"]
+
+    def values_of_specified(time):
+        return [v(time) if callable(v) else v for v in specified.values()]
+
+    def rates_of(time, x):
+        s = values_of_specified(time)
+        return np.linalg.solve(np.asarray(mass(time, x, p, s), dtype=float),
+                               np.asarray(force(time, x, p, s), dtype=float).ravel())
+
+    step = integration["INTEGSTP"] * integration["PRINTINT"]
+    count = int(np.floor((t1 - t0) / step + 1e-9))
+    times = t0 + step * np.arange(count + 1)
+    if times[-1] < t1 - 1e-12 * max(1.0, abs(t1)):
+        times = np.append(times, t1)
+    solution = solve_ivp(rates_of, (t0, t1), x0, method="DOP853", t_eval=times,
+                         rtol=integration["RELERR"], atol=integration["ABSERR"])
+    if not solution.success:
+        raise RuntimeError(solution.message)
+    rows = []
+    for time, x in zip(solution.t, solution.y.T):
+        rate = rates_of(time, x)
+        solved = [rate[k] for k in unknown_states]
+        rows.append(np.asarray(columns(time, x, p, values_of_specified(time), solved),
+                               dtype=float).ravel())
+    return np.array(rows)
+
+
+def main(argv):
+    rows = integrate()
+    text = ",".join(label for label, _, _ in outputs) + "\\n" + "".join(
+        ",".join(repr(float(v)) for v in row) + "\\n" for row in rows)
+    if argv:
+        with open(argv[0], "w") as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))'''
+
+
+def export_sympy(model, source: str, command=None) -> str:
+    """The SymPy script of the model's first integrating CODE command (or `command`);
+    `source`: the model's file, named in the script."""
+    if command is None:
+        integrating = [c for c in model.code_commands if c.kind.integrates]
+        if not integrating:
+            raise AutolevModelError("the model has no CODE DYNAMICS or ODE to export "
+                                    "(its equations of motion)")
+        command = integrating[0]
+    return sympy_script(equations_of(model, command), source)
+

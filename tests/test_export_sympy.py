@@ -1,0 +1,93 @@
+"""`autolev convert --to sympy` (issue 33): every shipped example with equations of
+motion becomes a script that needs only sympy, numpy and scipy; its equations give our
+compiled right-hand side's rates at random states and constants, and its integration
+gives `simulate`'s rows (the same method and tolerances)."""
+import runpy
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import autolev
+from autolev.cli import main
+from autolev.runtime.numerics.prepare import prepare_command
+from helpers import EXAMPLES
+
+EXAMPLES_WITH_DYNAMICS = ["simple_pendulum", "double_pendulum", "cart_pendulum",
+                          "mass_spring_damper", "block_pendulums", "nlink_pendulum",
+                          "rolling_disc", "euler_parameters_body", "fourbar",
+                          "whipple_benchmark"]
+
+# a script run with autolev made unimportable: it must not need it
+WITHOUT_AUTOLEV = ("import runpy, sys; sys.modules['autolev'] = None; "
+                   "sys.argv = sys.argv[1:]; runpy.run_path(sys.argv[0], run_name='__main__')")
+
+
+@pytest.fixture(scope="module")
+def scripts(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("sympy")
+    for name in EXAMPLES_WITH_DYNAMICS:
+        assert main(["convert", "--to", "sympy", str(EXAMPLES / f"{name}.al"),
+                     "-o", str(folder / f"{name}_sympy.py"), "-q"]) == 0
+    return folder
+
+
+@pytest.mark.parametrize("name", EXAMPLES_WITH_DYNAMICS)
+def test_the_scripts_equations_give_our_rates(scripts, name):
+    script = runpy.run_path(str(scripts / f"{name}_sympy.py"))     # defines, integrates not
+    model = autolev.load(EXAMPLES / f"{name}.al")
+    command = next(c for c in model.code_commands if c.kind.integrates)
+    system = prepare_command(model, command).system
+    states, constants = script["states"], list(script["constants"])
+    assert [str(s.func) for s in states] == [str(x).replace("'", "p") for x in system.states]
+    assert [str(c) for c in constants] == [str(p) for p in system.params]
+    mass, force, _ = script["numeric_functions"]()
+    rng = np.random.default_rng(7)
+    for _ in range(20):
+        p = rng.uniform(0.5, 1.5, len(constants))
+        x = rng.uniform(-1.0, 1.0, len(states))
+        t = rng.uniform(0.0, 2.0)
+        system.set_parameters(p)
+        ours = system.derivatives(t, x)
+        specified = [0.0] * len(script["specified"])
+        theirs = np.linalg.solve(np.asarray(mass(t, x, list(p), specified), dtype=float),
+                                 np.asarray(force(t, x, list(p), specified),
+                                            dtype=float).ravel())
+        assert np.allclose(theirs, ours, rtol=0, atol=1e-10 * max(1.0, np.abs(ours).max()))
+
+
+@pytest.mark.parametrize("name", ["double_pendulum", "mass_spring_damper", "cart_pendulum"])
+def test_the_script_integrates_as_autolev_run_does(scripts, name, tmp_path):
+    csv = tmp_path / "rows.csv"
+    done = subprocess.run([sys.executable, "-c", WITHOUT_AUTOLEV,
+                           str(scripts / f"{name}_sympy.py"), str(csv)],
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    rows = np.loadtxt(csv, delimiter=",", skiprows=1, ndmin=2)
+    result = autolev.load(EXAMPLES / f"{name}.al").simulate(method="dop853")
+    ours = np.column_stack([t.data for t in result.outputs])
+    header = csv.read_text().splitlines()[0].split(",")
+    labels = [label for t in result.outputs for label in t.labels]
+    assert header == labels and rows.shape == ours.shape
+    scale = np.maximum(1.0, np.abs(ours).max(axis=0))
+    assert np.all(np.abs(rows - ours) <= 1e-6 * scale)
+
+
+def test_a_model_without_equations_of_motion_is_refused(tmp_path, capsys):
+    path = tmp_path / "algebra.al"
+    path.write_text("CONSTANTS A\nVARIABLES X\nX = 2*A\nINPUT A = 1\nOUTPUT X\n"
+                    "CODE ALGEBRAIC() algebra.c\n")
+    assert main(["convert", "--to", "sympy", str(path), "-o", str(tmp_path / "x.py")]) == 1
+    assert "no CODE DYNAMICS or ODE to export" in capsys.readouterr().err
+    assert not (tmp_path / "x.py").exists()
+
+
+def test_names_from_the_model_become_identifiers_never_code():
+    from autolev.export import identifier
+    taken: set = set()
+    assert identifier("K", taken) == "K" and identifier("K", taken) == "K_2"
+    assert identifier("Q1'", taken) == "Q1p"
+    assert identifier("lambda", taken) == "lambda_2"        # a keyword
+    assert identifier("t", taken) == "t_2"                  # the script's time
+    assert identifier("x); import os", taken).isidentifier()
