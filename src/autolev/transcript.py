@@ -25,6 +25,7 @@ from sympy.printing.str import StrPrinter
 
 from . import ir
 from .errors import AutolevError
+from .loader import load
 from .pipeline import parse
 from .runtime.calculus import is_small
 from .runtime.symbols import TIME, Z, derivative, new_z
@@ -195,6 +196,7 @@ def transcript(path) -> str:
     session = Session("\n".join(lines) + "\n", responses, str(p))
     model, captured, skipped = _build(session, p)
     if model is None:
+        _raise_the_models_own_fault(p)
         raise AutolevError(skipped)
     after: dict[int, list[int]] = {}
     for k, r in enumerate(responses):
@@ -219,6 +221,13 @@ def transcript(path) -> str:
         if after.get(no):
             out.append("")
     return "\n".join(out) + "\n"
+
+
+def _raise_the_models_own_fault(p: Path) -> None:
+    """Raise what loading the model itself raises, at the statement at fault: the text
+    run with the captures has a line of its own after each response, so its lines are
+    not the model's."""
+    load(p)
 
 
 # nodes of a scalar counted with every repetition (about 4 characters each printed):
