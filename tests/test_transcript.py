@@ -274,3 +274,23 @@ def test_every_corpus_model_without_code_transcribes_and_verifies(corpus, tmp_pa
         assert report.count("mismatch") == 0, report.summary()
         checked += 1
     assert checked >= 49 and set(not_translating) <= set(NOT_BUILDING), not_translating
+
+
+
+@pytest.mark.parametrize("text, said", [
+    ("CONSTANTS A, B\nX = A + B\nY = A*B\n\nM = [1, 2, 3]\nN = INV(M)\n",
+     ":6:9: error: INV takes a square matrix"),
+    ("NEWTONIAN N\nFRAMES A\nPOINTS O, P\nCONSTANTS L\nX = 2*L\nY = 3*L\n"
+     "P_O_P> = L*A1>\nV2PTS(N, A, O, P)\n",
+     ":8:1: error: the velocity of O in N is not defined")])
+def test_a_model_that_does_not_load_is_refused_at_the_statement_at_fault(text, said,
+                                                                          tmp_path, capsys):
+    """The statement at fault (a translation's error, then a run's) is named at its own
+    line, however many responses come before it (the text run with the captures has a
+    line of its own after each of X, Y, M or P_O_P>)."""
+    from autolev.cli import main
+    path = tmp_path / "bad.al"
+    path.write_text(text)
+    assert main(["transcript", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert f"{path}{said}" in err, err
