@@ -42,9 +42,13 @@ def test_a_length_only_the_figure_uses_comes_from_input(tmp_path):
                     "INPUT TH = 0, D = 2\nOUTPUT T, TH\nCODE ODE() arm.c\n")
     model = autolev.load(path)
     result = model.simulate(TFINAL=1)
-    with pytest.raises(AutolevModelError, match="the figure needs values the run does "
-                       "not: E"):
-        animation.motion(model, result)
+    # E given nowhere: P_P_Q> is left out, the arm NO-P is drawn
+    m = animation.motion(model, result)
+    assert m.names == ["NO", "P"] and m.edges == [(0, 1)]
+    assert m.notes == ["E has no value (no INPUT gives it and the run does not need it): "
+                       "P_P_Q> not drawn"]
+    th = m.times[-1]
+    assert np.allclose(m.xyz[-1, 1], [2 * math.cos(th), 2 * math.sin(th), 0])
     path.write_text(path.read_text().replace("D = 2", "D = 2, E = 0.5"))
     model = autolev.load(path)
     m = animation.motion(model, model.simulate(TFINAL=1))
@@ -338,6 +342,30 @@ def test_a_body_with_no_positioned_points_shows_its_axes_turning(tmp_path):
     model = autolev.load(EXAMPLES / "euler_parameters_body.al")
     m = animation.motion(model, model.simulate(TFINAL=0.1), max_frames=2)
     assert m.names == ["B", "B1>", "B2>", "B3>"] and m.kinds == [1, 2, 3]
+
+
+@pytest.mark.parametrize("rate, final", [
+    # a constant rate about A's axis (1, 0, 2)/sqrt(5): turned by that rate times T
+    ("W_A_N> = U*A1> + 2*U*A3>\nU' = 0\nINPUT U = 1.5", lambda t: [1.5 * t, 0, 3 * t]),
+    # about A3 at the rate T^2: turned by T^3/3 about N3
+    ("W_A_N> = U*A3>\nU' = 2*T\nINPUT U = 0", lambda t: [0, 0, t ** 3 / 3])])
+def test_a_body_known_by_its_angular_velocity_alone_turns_with_it(rate, final, tmp_path):
+    """No orientation, only W_A_N> in A's axes (Kane's gyrostat, example 5.9): the axes
+    start along N's and turn with the rate; by hand, the rotation exp([v x]) of the
+    rotation vector v above (scipy's Rotation), A's axes its columns."""
+    from scipy.spatial.transform import Rotation
+    path = tmp_path / "gyro.al"
+    path.write_text(f"NEWTONIAN N\nBODIES A\nVARIABLES U'\n{rate}\nINPUT TFINAL = 1, "
+                    "INTEGSTP = 0.01\nOUTPUT T, U\nCODE ODE() gyro.c\n")
+    model = autolev.load(path)
+    m = animation.motion(model, model.simulate(), max_frames=11)
+    assert m.names == ["A", "A1>", "A2>", "A3>"] and m.kinds == [1, 2, 3]
+    assert m.notes == ["A's orientation in N is not defined: its axes start along N's "
+                       "and turn with its angular velocity"]
+    assert np.allclose(m.xyz[0, 1:], np.eye(3), atol=1e-12)
+    t = m.times[-1]
+    axes = Rotation.from_rotvec(final(t)).as_matrix()
+    assert np.allclose(m.xyz[-1, 1:], axes.T, atol=1e-4)
 
 
 def test_a_figure_with_no_fixed_point_or_several_says_where_it_is_drawn(tmp_path):

@@ -293,3 +293,22 @@ def test_run_files_and_macros_are_shown_as_they_ran_and_the_transcript_replays(t
     (elsewhere / "main.all").write_text(text)
     report = autolev.verify(elsewhere / "main.all")
     assert report.error is None and report.count("match") == 3
+
+
+@pytest.mark.parametrize("text, said", [
+    ("CONSTANTS A, B\nX = A + B\nY = A*B\n\nM = [1, 2, 3]\nN = INV(M)\n",
+     ":6:9: error: INV takes a square matrix"),
+    ("NEWTONIAN N\nFRAMES A\nPOINTS O, P\nCONSTANTS L\nX = 2*L\nY = 3*L\n"
+     "P_O_P> = L*A1>\nV2PTS(N, A, O, P)\n",
+     ":8:1: error: the velocity of O in N is not defined")])
+def test_a_model_that_does_not_load_is_refused_at_the_statement_at_fault(text, said,
+                                                                          tmp_path, capsys):
+    """The statement at fault (a translation's error, then a run's) is named at its own
+    line, however many responses come before it (the text run with the captures has a
+    line of its own after each of X, Y, M or P_O_P>)."""
+    from autolev.cli import main
+    path = tmp_path / "bad.al"
+    path.write_text(text)
+    assert main(["transcript", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert f"{path}{said}" in err, err

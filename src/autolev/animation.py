@@ -27,7 +27,13 @@ What is drawn follows rules of this tool (Autolev drew nothing itself):
   would cover one already placed in that frame is left out.
 * **No figure.** When there is no segment (a spacecraft with reaction wheels, a body
   at its fixed mass centre), each oriented body's axes are drawn instead, side by
-  side: unit lines along B1>, B2>, B3> turning with B's orientation in N.
+  side: unit lines along B1>, B2>, B3> turning with B's orientation in N.  A body
+  whose orientation the model never defines but whose angular velocity in N it does
+  (W_B_N> in B's own axes, a torque-free gyrostat) starts along N's axes and turns
+  with that angular velocity, integrated over the run's rows.
+* **Values given nowhere.** A link (or the GRAVITY that gives down) that needs a
+  constant the run does not need and no INPUT gives is left out, with a note; the
+  rest is drawn.
 * **The view.** Down is where the first GRAVITY statement's vector points, with the
   run's values.  When the drawn points keep their coordinate along an axis of N (a plane
   motion) the picture looks along that axis (the one gravity is not along, N3 before N2
@@ -49,6 +55,7 @@ from __future__ import annotations
 import html
 import io
 import json
+import math
 import os
 from time import monotonic
 from dataclasses import dataclass, field
@@ -201,6 +208,27 @@ def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
     points = [p for p in model.points_by_name.values() if p.linked_points()]
     links = _links(points)
     gravity = model.gravity_vectors[:1]
+    unknown = _given_nowhere(model, result.system,
+                             [e for link in links for e in link.vector.to_matrix(newtonian)]
+                             + [e for g in gravity for e in g.to_matrix(newtonian)])
+    notes = []
+    if unknown:             # leave out what needs them: the rest of the figure is drawn
+
+        def usable(vector) -> bool:
+            return not unknown & set(result.system.lacking(list(vector.to_matrix(newtonian))))
+        left_out = [f"P_{points[link.a].name}_{points[link.b].name}>" for link in links
+                    if not usable(link.vector)]
+        points = [p for p in points if any(usable(q.pos_from(p)) for q in p.linked_points())]
+        links = _links(points, usable)
+        down_unknown = bool(gravity) and not usable(gravity[0])
+        gravity = [g for g in gravity if usable(g)]
+        names = sorted(display_name(k) for k in unknown)
+        one = len(names) == 1
+        notes.append(f"{', '.join(names)} {'has' if one else 'have'} no value (no INPUT "
+                     f"gives {'it' if one else 'them'} and the run does not need "
+                     f"{'it' if one else 'them'}): "
+                     + "; ".join(([f"{_some(left_out)} not drawn"] if left_out else [])
+                                 + (["down not known from GRAVITY"] if down_unknown else [])))
     exprs = [e for link in links for e in _link_expressions(link.vector, newtonian)]
     exprs += [e for g in gravity for e in g.to_matrix(newtonian)]
     rows = np.unique(np.linspace(0, len(result.t) - 1, min(max_frames, len(result.t)))
@@ -214,18 +242,18 @@ def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
         raise AutolevModelError("the figure's positions are not finite along the run")
     per_link = values[:, :6 * len(links)].reshape(len(rows), len(links), 6)
     figure = _Figure(model, points, links, per_link, probe[:6 * len(links)])
-    triads = not figure.segments and bool(_oriented_bodies(model))
+    triads = not figure.segments and bool(_turning_bodies(model))
     d = _triads(model, result, rows) if triads else figure.drawing()
     if not d.names:
         raise AutolevModelError(
             "there is no figure to draw: no positions link the points (P_A_B>) and no body "
-            f"is oriented in {newtonian.name}")
+            f"has an orientation or angular velocity in {newtonian.name}")
     basis = view_basis(down, d.xyz)
     xyz = d.xyz
     if triads:                                 # side by side, along the picture's right
         xyz = xyz + TRIAD_SPACING * (np.arange(len(d.names)) // 4)[:, None] * basis[0]
     return Motion(newtonian.name, d.names, d.edges, d.centers, times, xyz, d.kinds,
-                  d.label_order(), basis, d.notes)
+                  d.label_order(), basis, notes + d.notes)
 
 
 @dataclass
@@ -252,15 +280,16 @@ class _Drawing:
 
 
 # -- the links and the figure they make ------------------------------------------------------
-def _links(points) -> list[_Link]:
-    """Each position between the points defined once, most local first."""
+def _links(points, usable=None) -> list[_Link]:
+    """Each position between the points defined once (and `usable`), most local first."""
     index = {p: k for k, p in enumerate(points)}
     found = []
     for a, p in enumerate(points):
         for q in p.linked_points():
-            if index[q] > a:
+            if index.get(q, -1) > a:
                 vector = q.pos_from(p)
-                found.append(_Link(a, index[q], vector, _locality(vector)))
+                if usable is None or usable(vector):
+                    found.append(_Link(a, index[q], vector, _locality(vector)))
     return sorted(found, key=lambda link: link.locality)
 
 
@@ -437,25 +466,66 @@ def _fixed_points(model, points) -> set:
     return fixed
 
 
-def _oriented_bodies(model) -> list:
-    return [b for b in model.bodies_list if model.newtonian_frame.orientation_known(b)]
+def _turning_bodies(model) -> list:
+    """(body, how its axes are found) for each body whose axes can be drawn: its
+    direction cosines with N where its orientation is defined, else its angular velocity
+    in N in its own basis (integrated over the run)."""
+    newtonian = model.newtonian_frame
+    found = []
+    for body in model.bodies_list:
+        if newtonian.orientation_known(body):
+            found.append((body, "dcm", list(newtonian.dcm(body))))
+            continue
+        try:
+            rate = list(body.ang_vel_in(newtonian).to_matrix(body))
+        except AutolevModelError:
+            continue           # no angular velocity, or one not in terms of its own axes
+        found.append((body, "rate", rate))
+    return found
 
 
 def _triads(model, result, rows) -> _Drawing:
-    """Each oriented body's unit axes over the rows, drawn from one point per body."""
-    newtonian = model.newtonian_frame
-    bodies = _oriented_bodies(model)
-    exprs = [e for b in bodies for e in newtonian.dcm(b)]
-    evaluate = _evaluator(model, result.system, exprs, "autolev_triads")
-    dcm = np.array([evaluate(result.t[k], result.states[k]) for k in rows])
-    dcm = dcm.reshape(len(rows), len(bodies), 3, 3)        # [.., i, j] = Ni . Bj
+    """Each body's unit axes over the rows, drawn from one point per body."""
+    bodies = _turning_bodies(model)
+    every = np.arange(len(result.t))
+    axes = []                                              # [.., i, j] = Ni . Bj
+    for body, how, exprs in bodies:
+        evaluate = _evaluator(model, result.system, exprs, "autolev_triads")
+        if how == "dcm":
+            axes.append(np.array([evaluate(result.t[k], result.states[k]) for k in rows])
+                        .reshape(len(rows), 3, 3))
+        else:
+            rates = np.array([evaluate(result.t[k], result.states[k]) for k in every])
+            axes.append(_turned_by(rates, np.asarray(result.t, dtype=float))[rows])
     names, xyz, edges = [], [], []
-    for n, body in enumerate(bodies):
+    for n, (body, _, _) in enumerate(bodies):
         names += [body.name] + [f"{body.name}{j}>" for j in (1, 2, 3)]
-        xyz += [np.zeros((len(rows), 3))] + [dcm[:, n, :, j] for j in range(3)]
+        xyz += [np.zeros((len(rows), 3))] + [axes[n][:, :, j] for j in range(3)]
         edges += [(4 * n, 4 * n + j) for j in (1, 2, 3)]
+    notes = [f"{body.name}'s orientation in {model.newtonian_frame.name} is not defined: its "
+             "axes start along N's and turn with its angular velocity"
+             for body, how, _ in bodies if how == "rate"]
     return _Drawing(names, np.stack(xyz, axis=1), edges, [AXIS_1, AXIS_2, AXIS_3] * len(bodies),
-                    [], set(range(0, 4 * len(bodies), 4)), [])
+                    [], set(range(0, 4 * len(bodies), 4)), notes)
+
+
+def _turned_by(rates, times) -> np.ndarray:
+    """(rows, 3, 3) direction cosines N_B from the identity at the first row, B turning
+    with the angular velocity `rates` (rows, 3) in its own basis: dN_B/dt = N_B [w x],
+    each step turned exactly by the mean of the rates at its ends."""
+    out = np.empty((len(times), 3, 3))
+    out[0] = np.eye(3)
+    for k in range(1, len(times)):
+        turn = 0.5 * (rates[k - 1] + rates[k]) * (times[k] - times[k - 1])
+        angle = float(np.linalg.norm(turn))
+        cross = np.array([[0, -turn[2], turn[1]], [turn[2], 0, -turn[0]],
+                          [-turn[1], turn[0], 0]])
+        step = np.eye(3)
+        if angle > 0:          # Rodrigues: exp([v x]) for v = turn
+            step += (math.sin(angle) / angle) * cross \
+                + ((1 - math.cos(angle)) / angle ** 2) * cross @ cross
+        out[k] = out[k - 1] @ step
+    return out
 
 
 def view_basis(down, xyz) -> np.ndarray:
@@ -484,6 +554,12 @@ def view_basis(down, xyz) -> np.ndarray:
 def _evaluator(model, system, exprs, name):
     """f(t, x) -> values of exprs, with INPUT values for constants only they use."""
     return system.evaluator(exprs, name, _geometry_values(model, system, exprs))
+
+
+def _given_nowhere(model, system, exprs) -> set:
+    """The constants exprs need that neither the run nor an INPUT statement gives."""
+    lacking = system.lacking(exprs)
+    return set(Inputs(model, lacking, ()).missing(lacking)) if lacking else set()
 
 
 def _geometry_values(model, system, exprs) -> dict:

@@ -25,6 +25,7 @@ from sympy.printing.str import StrPrinter
 
 from . import ir
 from .errors import AutolevError
+from .loader import load
 from .pipeline import parse
 from .runtime.calculus import is_small
 from .runtime.symbols import TIME, Z, derivative, new_z
@@ -196,6 +197,7 @@ def transcript(path) -> str:
         raise AutolevError(next(iter(refused.values())))
     replayed = replay(session, p, parsed)
     if replayed.error is not None:
+        _raise_the_models_own_fault(p)
         raise AutolevError(replayed.error)
     model, captured = replayed.model, replayed.ours
     after: dict[int, list[int]] = {}
@@ -251,6 +253,13 @@ def _as_run(lines: list[str], program: ir.Program) -> tuple[list[str], dict[int,
         for st in ends.get(no, []):
             line_of[id(st)] = len(out)
     return out, line_of
+
+
+def _raise_the_models_own_fault(p: Path) -> None:
+    """Raise what loading the model itself raises, at the statement at fault: the text
+    run with the captures has a line of its own after each response, so its lines are
+    not the model's."""
+    load(p)
 
 
 # nodes of a scalar counted with every repetition (about 4 characters each printed):

@@ -46,11 +46,14 @@ def add_code(sub) -> None:
     code = sub.add_parser(
         "code", help="write the programs of a model's CODE commands (Autolev's layout)",
         description="Write, for every CODE command of FILE, the program it names, in the "
-        "layout of the programs Autolev 4.1 wrote (the same global names, functions and "
-        "section comments, reading the same .in file), and the .in file itself.  Written "
-        "now: CODE ALGEBRAIC() and CODE DYNAMICS() into .c and .m files; the others are "
-        "reported and not written.  Folders in a CODE file name are kept under --out; a name "
-        "that would leave it is refused.")
+        "layout of the programs Autolev wrote (the same global names, functions and "
+        "section comments, reading the same .in file), and the .in file itself.  Written: "
+        "CODE ALGEBRAIC and NONLINEAR into C (.c) and Matlab (.m); CODE DYNAMICS and ODE "
+        "into C (.c), Matlab (.m) and Fortran 77 (.f, .for: Autolev 3.2's layout, with a "
+        ".dir file, the file names in lower case).  Any other kind or language (a Fortran "
+        "ALGEBRAIC program, CODE DYNAMICS with arguments) is reported and not written.  "
+        "Folders in a CODE file name are kept under --out; a name that would leave it is "
+        "refused.")
     code.add_argument("file", metavar="FILE", help=".al model")
     code.add_argument("--out", metavar="DIR", default=".",
                       help="folder for the programs (default: the current folder)")

@@ -76,20 +76,20 @@ def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list:
 def _run_and_report(model, commands: list, overrides: dict, specified: dict,
                     ns: argparse.Namespace, path: Path) -> int:
     from ..runtime.errors import AutolevModelError
-    from ..runtime.tools import safe_stem
+    from ..runtime.tools import program_file_name, safe_stem
     label = statement_label(model, path)
     written_by: dict[str, str] = {}
     for command in commands:
         try:
-            stem = safe_stem(command.filename).lower()
+            stem = safe_stem(program_file_name(command.filename))
         except AutolevModelError:
             continue                # an unusable name: its run says so
-        if stem in written_by:
+        if stem.lower() in written_by:
             print(f"{label(command)}: warning: CODE {command.filename} writes the same "
-                  f"files ({safe_stem(command.filename)}.1, ...) as CODE {written_by[stem]}; "
+                  f"files ({stem}.1, ...) as CODE {written_by[stem.lower()]}; "
                   "its run replaces them (give --out per program to keep both)",
                   file=sys.stderr)
-        written_by[stem] = command.filename
+        written_by[stem.lower()] = command.filename
     out_dir = Path(ns.out)
     status = 0
     from ..runtime.tools import RunOptions

@@ -19,8 +19,9 @@ from ..runtime.io import CodeKind
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs
 from ..runtime.numerics.command import (encoded_values, equations_and_unknowns,
-                                         output_columns, solution_columns, solver_expressions,
-                                         sweep_of, take_time, time_dependence)
+                                         output_columns, program_file_name, solution_columns,
+                                         solver_expressions, sweep_of, take_time,
+                                         time_dependence)
 from ..runtime.numerics.system import NumericSystem, lower_derivative, read_order
 
 
@@ -260,9 +261,7 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     files = output_columns(model, command)
     encoded = encoded_values(model, command)
     defs = model.defs
-    # Autolev 3.2 wrote its Fortran programs' file names in lower case
-    filename = command.filename.lower() if is_fortran(command.filename) else \
-        command.filename
+    filename = program_file_name(command.filename)
     with defs.as_of(command.definitions):
         system = NumericSystem(model, files, encoded, integrate=True, ode=ode,
                                zero=command.zero if command.kind is CodeKind.DYNAMICS else None,

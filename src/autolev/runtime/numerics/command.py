@@ -89,6 +89,13 @@ def program_language(filename: str) -> str:
     return filename.lower().rsplit(".", 1)[-1] if "." in filename else ""
 
 
+def program_file_name(filename: str) -> str:
+    """A CODE command's file name as Autolev wrote its files: a Fortran program's in
+    lower case (`CODE DYNAMICS() 7segSprint.f` wrote 7segsprint.f, which reads
+    7segsprint.in and writes 7segsprint.1 ...; docs/language.md), any other as written."""
+    return filename.lower() if program_language(filename) in ("f", "for") else filename
+
+
 def program_method(filename: str) -> str:
     """The integrator of the program Autolev wrote for a CODE file: Matlab's programs
     call ode45 (Dormand-Prince 5(4), which is scipy's RK45), the C and Fortran ones

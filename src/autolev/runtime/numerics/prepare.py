@@ -15,8 +15,9 @@ from ..errors import AutolevModelError, MissingValues
 from ..io import CodeKind
 from .advice import inertia_problems
 from .command import (encoded_values, equations_and_unknowns, find_symbol, given_specified,
-                      hidden_in_outputs, names_a_quantity, output_columns, solution_columns,
-                      solver_expressions, sweep_values, take_time, time_dependence)
+                      hidden_in_outputs, names_a_quantity, output_columns, program_file_name,
+                      solution_columns, solver_expressions, sweep_values, take_time,
+                      time_dependence)
 from .files import safe_stem
 from .inputs import INTEGRATION, Inputs, display_name, some_names
 from .projection import constants_needed
@@ -143,7 +144,7 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
     command, specified, overrides = given_specified(model, command, options.specified,
                                                     options.overrides)
     kind = command.kind
-    stem = safe_stem(command.filename)
+    stem = safe_stem(program_file_name(command.filename))
     files = output_columns(model, command)
     encoded = encoded_values(model, command)
     equations, unknowns = equations_and_unknowns(command.args, kind.upper())

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..errors import AutolevModelError
 from .algebraic import run_algebraic
-from .command import program_language, program_method
+from .command import program_file_name, program_language, program_method
 from .dynamics import print_schedule, run_dynamics
 from .files import RunFiles, check_room, dir_text, encoded_text, termination_cleans_up
 from .inputs import display_name
@@ -78,8 +78,8 @@ def run_command(model, command, out_dir=None,
                     extra_files.append((f"{stem}.encode", ",".join(n for n, _ in encoded)))
                 # the `.dir` names the program whose files these are
                 run_files.text(f"{stem}.dir", dir_text(
-                    stem, command.filename, [[c.label for c in cols] for cols in files],
-                    extra_files))
+                    stem, program_file_name(command.filename),
+                    [[c.label for c in cols] for cols in files], extra_files))
                 result.files = run_files.commit()
         except BaseException:
             run_files.discard()
