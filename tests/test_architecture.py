@@ -29,9 +29,10 @@ def test_the_graph_tool_sees_a_cycle_and_layers_a_chain():
 
 
 def test_the_graph_holds_function_level_imports_but_not_type_checking_ones():
-    # vector.py imports Model for type checking only; numerics/run.py is imported by
-    # simulation.py at module level
-    assert "autolev.runtime.model" not in GRAPH["autolev.runtime.vector"]
+    # vector.py imports Frame (frame.py) for type checking only; numerics/run.py is
+    # imported by simulation.py at module level
+    assert "autolev.runtime.frame" not in GRAPH["autolev.runtime.vector"]
+    assert "autolev.runtime.vector" in GRAPH["autolev.runtime.frame"]
     assert "autolev.runtime.numerics.run" in GRAPH["autolev.runtime.simulation"]
 
 

@@ -24,8 +24,9 @@ from .functions import VectorColumn
 from .interop import symbolic_system, to_sympy_expr, to_sympy_vector
 from .point import Body, Particle, Point, point_mass_inertia
 from .simulation import SimulationMixin
-from .vector import (AutolevModelError, Dyadic, Frame, Scene, UnitDyadic, Vector, _vector,
-                     body_fixed, euler_parameter_rates, space_fixed)
+from .errors import AutolevModelError
+from .frame import Frame, Scene, body_fixed, euler_parameter_rates, space_fixed
+from .vector import Dyadic, UnitDyadic, Vector, _vector
 
 
 @dataclass
