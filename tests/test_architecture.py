@@ -14,7 +14,8 @@ _spec.loader.exec_module(import_graph)
 
 GRAPH = import_graph.import_graph()
 SYMBOLIC_ENGINE_TOP = {"autolev.runtime.model", "autolev.runtime.simulation",
-                       "autolev.runtime.studies", "autolev.runtime.algebra"}
+                       "autolev.runtime.studies", "autolev.runtime.algebra",
+                       "autolev.runtime.equations", "autolev.runtime.mass_properties"}
 
 
 def _under(package: str) -> list[str]:
