@@ -16,7 +16,8 @@ import autolev
 from autolev.cli import main
 from autolev.loader import load_for_run
 from autolev.programs import program_texts
-from autolev.programs.f import FortranPrinter, kutta_and_solve, statement
+from autolev.programs.f import FortranPrinter, statement
+from autolev.programs.f_subroutines import kutta_and_solve
 from autolev.runtime.errors import AutolevModelError
 from helpers import CORPUS, EXAMPLES, ROOT, SHARED
 

@@ -233,7 +233,7 @@ def test_fast_path_returns_fresh_arrays_and_reports_singularity():
     assert a is not b and np.array_equal(a, b)
     a[:] = 0.0                                # the caller may keep or change it
     assert np.array_equal(system.derivatives(0.0, x), b)
-    from autolev.runtime.numerics.system import SingularMassMatrix
+    from autolev.runtime.numerics.massmatrix import SingularMassMatrix
     zero = load("zero_inputs")                # L = 0: a singular mass matrix
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

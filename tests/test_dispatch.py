@@ -66,11 +66,11 @@ def ir_classes(base):
 
 def ir_passes():
     from autolev import ir
-    from autolev.translate import core, io
+    from autolev.translate import core, io, reads
     return [("translator statements", core.STATEMENTS, ir.Statement),
             ("translator expressions", core.EXPRESSIONS, ir.Expr),
             ("ir.walk", ir.CHILDREN, ir.Expr),
-            ("names read", core._READS, ir.Expr),
+            ("names read", reads.READS, ir.Expr),
             ("heading text", io._TEXT, ir.Expr)]
 
 

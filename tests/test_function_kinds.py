@@ -15,7 +15,7 @@ import sympy as sm
 import autolev
 from autolev.loader import load_translation
 from autolev.translate import translate
-from autolev.translate.functions import FUNCTIONS
+from autolev.translate.functions.table import FUNCTIONS
 
 # one name of every kind: Q a variable, K a constant, V> a vector, N1> a unit vector, D>> a
 # dyadic, M a matrix, C a column, A a frame, B a body, P a point, Q' a derivative

@@ -7,7 +7,7 @@ import sympy.physics.mechanics as me
 
 import autolev.runtime as al
 from autolev.runtime.calculus import NumericPoint
-from autolev.runtime.vector import rodrigues
+from autolev.runtime.frame import rodrigues
 
 
 def num(model, expr, values):
@@ -335,7 +335,7 @@ def test_body_and_space_fixed_rotations_agree_with_sympys_frames(sequence):
     """Direction cosines and angular velocity of both kinds of sequence, against
     sympy.physics.vector's own orientation (a second derivation)."""
     import sympy.physics.mechanics as me
-    from autolev.runtime.vector import body_fixed, space_fixed
+    from autolev.runtime.frame import body_fixed, space_fixed
 
     q = me.dynamicsymbols("q1:4")
     t = me.dynamicsymbols._t

@@ -13,7 +13,7 @@ import pytest
 import autolev
 from helpers import load_model
 from autolev.runtime.errors import AutolevModelError
-from autolev.runtime.numerics.system import scaled_condition
+from autolev.runtime.numerics.massmatrix import scaled_condition
 
 from helpers import NUMERICS_DATA as DATA
 

@@ -3,6 +3,10 @@
 The statements come from the include stage (`include.py`), with RUN files, macros
 and user functions already read and parsed; every span points into the file its
 text came from and back to the statement that brought it in.
+
+Over 600 lines on purpose: one `Builder` is one walk of a parse tree, its statement and
+expression handlers sharing the symbol table, the diagnostics and the spans; split, each
+half would reach into the other's state.
 """
 from __future__ import annotations
 

@@ -17,7 +17,7 @@ from . import ir, pipeline
 from .dispatch import Dispatch
 from .errors import AutolevError, Diagnostic, Location
 from .runtime import symbols as S
-from .translate.functions import ELEMENTARY
+from .translate.functions.scalars import ELEMENTARY
 
 
 class SpecifiedValueError(AutolevError):

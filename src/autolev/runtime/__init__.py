@@ -3,12 +3,13 @@
     import autolev.runtime as al
     model = al.Model("pendulum")
 """
-from .errors import MissingValues
+from .errors import AutolevModelError, MissingValues
+from .frame import Frame
 from .kane import KaneEquations
 from .model import Model
 from .point import Body, Particle, Point
 from .symbols import TIME, Z, derivative, derivatives
-from .vector import AutolevModelError, Dyadic, Frame, Vector, outer
+from .vector import Dyadic, Vector, outer
 
 __all__ = ["Model", "KaneEquations", "Frame", "Vector", "Dyadic", "Point", "Particle",
            "Body", "AutolevModelError", "MissingValues", "TIME", "Z", "derivative", "derivatives",

@@ -7,7 +7,9 @@ import sympy as sm
 from . import symbols as S
 from .functions import scalar_values, whole_number
 from .linalg import coefficients, solve_linear
-from .vector import AutolevModelError, Dyadic, Vector, body_fixed, rodrigues, space_fixed
+from .errors import AutolevModelError
+from .frame import body_fixed, rodrigues, space_fixed
+from .vector import Dyadic, Vector
 
 
 class AlgebraMixin:

@@ -15,7 +15,8 @@ from . import symbols as S
 from .errors import AutolevModelError
 
 if TYPE_CHECKING:
-    from .vector import Frame, Scene, Vector
+    from .frame import Frame, Scene
+    from .vector import Vector
 
 
 def _mechanics():

@@ -16,7 +16,8 @@ from . import symbols as S
 from .calculus import Definitions
 from .errors import AutolevModelError
 from .point import Body, Particle, Point
-from .vector import Frame, Vector
+from .frame import Frame
+from .vector import Vector
 
 MOTION_KINDS = ("variable", "motionvariable")
 

@@ -1,8 +1,11 @@
 """The model: everything a translated .al file declares and computes.
 
-Generated code creates one `Model` and calls it statement by statement.  The model
-keeps the symbol kinds, the definitions table, frames, points and bodies, the loads,
-the constraints, and forms Kane's equations with Autolev's conventions.
+Generated code creates one `Model` and calls it statement by statement.  Here is what
+the model declares and holds: the symbol kinds, the definitions table, frames, points
+and bodies, the loads, the constraints; the commands it runs are its mixins': Kane's
+method and its equations (equations.py), mass properties (mass_properties.py), the
+algebra functions (algebra.py), INPUT/OUTPUT/CODE (io.py) and running them
+(simulation.py).
 """
 from __future__ import annotations
 
@@ -14,19 +17,19 @@ import sympy as sm
 
 from . import symbols as S
 from .algebra import AlgebraMixin
-from .derived import DerivedCache, Revision
-from .io import IOMixin
 from .calculus import Definitions
-from . import kane
+from .derived import DerivedCache, Revision
+from .equations import EquationsMixin
+from .errors import AutolevModelError
+from .frame import Frame, Scene, body_fixed, euler_parameter_rates, space_fixed
+from .interop import to_sympy_expr, to_sympy_vector
+from .io import IOMixin
 from .kane import KaneEquations, SymbolInfo
 from .linalg import coefficients, solve_linear
-from .functions import VectorColumn
-from .interop import symbolic_system, to_sympy_expr, to_sympy_vector
-from .point import Body, Particle, Point, point_mass_inertia
+from .mass_properties import MassPropertiesMixin
+from .point import Body, Particle, Point
 from .simulation import SimulationMixin
-from .vector import (AutolevModelError, Dyadic, Frame, Scene, UnitDyadic, Vector, _vector,
-                     body_fixed, euler_parameter_rates, space_fixed)
-
+from .vector import Dyadic, Vector, _vector
 
 @dataclass
 class Loaded:
@@ -46,7 +49,7 @@ class Loaded:
     keeper: object = None
 
 
-class Model(AlgebraMixin, IOMixin, SimulationMixin):
+class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, SimulationMixin):
     def __init__(self, name: str = "model", degrees: bool = True, complex: bool = False):
         self.name = name
         # every change to the model bumps it: what is derived is keyed on it alone
@@ -206,6 +209,11 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
         origin.set_acc(frame, Vector())
         frame.origin = origin
         return frame
+
+    def _newtonian(self) -> Frame:
+        if self.newtonian_frame is None:
+            raise AutolevModelError("no NEWTONIAN frame was declared")
+        return self.newtonian_frame
 
     def frame(self, name: str) -> Frame:
         f = Frame(name, self.scene)
@@ -535,298 +543,11 @@ class Model(AlgebraMixin, IOMixin, SimulationMixin):
             if d not in self.defs.rhs:
                 self.define(d, self.defs.zify(self.defs.dt(v)))
 
-    # -- Kane's method ------------------------------------------------------------------
-    def _newtonian(self) -> Frame:
-        if self.newtonian_frame is None:
-            raise AutolevModelError("no NEWTONIAN frame was declared")
-        return self.newtonian_frame
-
-    def kane_system(self) -> kane.System:
-        """What Kane's method reads from this model."""
-        return kane.System(self._newtonian(), self.forces, self.torques,
-                           self.particles_list, self.bodies_list, self.defs)
-
-    def generalized_speeds(self, complete: bool = True) -> tuple[list, list, list]:
-        """(independent, dependent, auxiliary) generalized speeds (see kane.py); with
-        `complete`, the kinematical equations must determine every coordinate's rate."""
-        if complete and self._kinematics_pending:
-            raise AutolevModelError(
-                "the kinematical equations written as U = f(Q') do not determine every Q'"
-                f" ({', '.join(f'{u} = {v}' for u, v in self._kinematics_pending.items())})")
-        declared = kane.SpeedDeclarations(self.info, self.solved_speeds,
-                                          self.dependent_speeds, self.auxiliary_speeds)
-        return kane.generalized_speeds(self.kane_system(), declared)
-
-    def _form(self, inertia: bool = True) -> KaneEquations:
-        key = (self.revision(), inertia)
-        if self._formed is not None and self._formed[0][0] == key[0] and \
-                (self._formed[0][1] or not inertia):
-            return self._formed[1]
-        speeds = self.generalized_speeds()
-        eqs = kane.form(self.kane_system(), speeds, inertia)
-        self._formed = (key, eqs)
-        return eqs
-
-    def speed_column(self, which: str, order: int = 0) -> sm.Matrix:
-        """U_INDEPENDENT, U_DEPENDENT, U_AUXILIARY (primed: their derivatives)."""
-        indep, dep, aux = self.generalized_speeds()
-        speeds = {"independent": indep, "dependent": dep, "auxiliary": aux}[which]
-        return sm.Matrix([S.derivative(u, order) for u in speeds])
-
-    def partials(self, value, *speeds):
-        """PARTIALS(V>, u1, ...): the partial velocities of V> with respect to the speeds."""
-        if len(speeds) == 1 and isinstance(speeds[0], (sm.MatrixBase, list, tuple)):
-            speeds = tuple(speeds[0])
-        if not speeds:
-            speeds = tuple(self.generalized_speeds()[0])
-        return VectorColumn([kane.partial_velocity(value, u, self.defs) for u in speeds])
-
-    def fr(self) -> sm.Matrix:
-        """FR(): generalized active forces, one row per independent (then auxiliary) speed."""
-        return self._form(inertia=False).fr
-
-    def frstar(self) -> sm.Matrix:
-        """FRSTAR(): generalized inertia forces."""
-        return self._form().frstar
-
-    def kane(self, *unknowns) -> KaneEquations:
-        """KANE(): take Fr + Fr* = 0 as the dynamical equations; KANE(F1, ...) also solves
-        the auxiliary rows for the listed unknowns (noncontributing forces)."""
-        eqs = self._formed_for(unknowns)
-        if unknowns:
-            # the auxiliary rows, linear in the unknowns, define them (in terms of the
-            # state and the speeds' derivatives, which the dynamics give)
-            aux_rows = list(eqs.rows[len(eqs.speeds):, 0])
-            a, r = coefficients(aux_rows, eqs.unknowns, self.defs)
-            solution = solve_linear(a, -r, self.defs, "the auxiliary equations (KANE)")
-            for sym, val in zip(eqs.unknowns, solution):
-                self.define(sym, val)
-        self.kane_equations = eqs
-        self.note_change()
-        return eqs
-
-    def _formed_for(self, unknowns) -> KaneEquations:
-        """Kane's equations formed now, for KANE(unknowns): one unknown per auxiliary
-        speed."""
-        eqs = self._form()
-        eqs.unknowns = list(unknowns)
-        if len(unknowns) != len(eqs.auxiliary):
-            raise AutolevModelError(f"KANE solves one unknown per auxiliary speed: "
-                                    f"{len(unknowns)} unknowns, {len(eqs.auxiliary)} "
-                                    "auxiliary speeds")
-        return eqs
-
-    # the equations, in the forms sympy users know ---------------------------------------
-    def equations(self) -> KaneEquations:
-        """Kane's equations: those KANE() took, else formed from the model as it stands
-        (asking changes nothing: they are kept with the model's revision)."""
-        if self.kane_equations is None:
-            return self._formed_for(())
-        return self.kane_equations
-
-    @property
-    def speeds(self) -> list:
-        return self.equations().speeds
-
-    @property
-    def speed_derivatives(self) -> list:
-        return [self._speed_derivative(u) for u in self.speeds]
-
-    def _speed_derivative(self, u):
-        return S.derivative(u)
-
-    @property
-    def coordinates(self) -> list:
-        """Every variable the integration carries besides the speeds: those whose first
-        derivative is defined (q' = ...) or is itself a speed (q''-only models), in
-        declaration order.  Dependent and auxiliary speeds are not among them."""
-        speeds = set(self.speeds)
-        not_coordinates = set(self.dependent_speeds) | set(self.auxiliary_speeds) | speeds
-        out = []
-        for sym, info in sorted(self.info.items(), key=lambda kv: kv[1].index):
-            if info.kind not in ("variable", "motionvariable") or \
-                    S.base_and_order(sym)[1] != 0 or sym in not_coordinates:
-                continue
-            d = S.derivative(sym)
-            if d in self.defs.rhs or d in speeds:
-                out.append(sym)
-        return out
-
-    @property
-    def kinematical_equations(self) -> dict:
-        """{q': f(q, u)} for every coordinate (q' itself when q' is a speed)."""
-        return {S.derivative(q): self.defs.rhs.get(S.derivative(q), S.derivative(q))
-                for q in self.coordinates}
-
-    @property
-    def mass_matrix(self) -> sm.Matrix:
-        """M in M*u' = forcing (independent speeds; Z-named entries)."""
-        eqs = self.equations()
-        rows = eqs.rows[:len(eqs.speeds), 0]
-        ud = self.speed_derivatives
-        jac = self.defs.jacobian(rows, ud)
-        return sm.Matrix(len(ud), len(ud), lambda i, j: -jac[i][j])
-
-    @property
-    def forcing(self) -> sm.Matrix:
-        eqs = self.equations()
-        rows = eqs.rows[:len(eqs.speeds), 0]
-        zero = {u: 0 for u in self.speed_derivatives}
-        return sm.Matrix([self.defs.substitute(e, zero) for e in rows])
-
-    @property
-    def mass_matrix_full(self) -> sm.Matrix:
-        """[[K, 0], [0, M]] for the state [q; u], K from the kinematical equations."""
-        qs = self.coordinates
-        m = self.mass_matrix
-        k = len(qs)
-        full = sm.zeros(k + m.rows, k + m.cols)
-        full[:k, :k] = sm.eye(k)
-        full[k:, k:] = m
-        return full
-
-    @property
-    def forcing_full(self) -> sm.Matrix:
-        kin = self.kinematical_equations
-        return sm.Matrix([kin[S.derivative(q)] for q in self.coordinates] + list(self.forcing))
-
-    def explicit_form(self) -> sm.Matrix:
-        """[q'; u'] as functions of the state: the kinematical equations over the
-        accelerations solved from M u' = forcing (Z-named Gaussian elimination)."""
-        kin = self.kinematical_equations
-        udot = solve_linear(self.mass_matrix, self.forcing, self.defs, "the dynamics")
-        return sm.Matrix([kin[S.derivative(q)] for q in self.coordinates] + udot)
-
-    def symbolic_system(self, form: str = "combined"):
-        """A sympy SymbolicSystem ('explicit', 'combined' or 'separate'), in
-        dynamicsymbols with every definition expanded."""
-        return symbolic_system(self, form)
-
     def to_sympy(self, value):
         """An expression, matrix or vector as plain sympy (dynamicsymbols, expanded)."""
         if isinstance(value, Vector):
             return to_sympy_vector(value)
         return to_sympy_expr(self.scene, self.explicit(value))
-
-    # -- energy, momentum, mass properties ---------------------------------------------------
-    def _items(self, items):
-        return list(items) or (self.bodies_list + self.particles_list)
-
-    def ke(self, *items):
-        """KE(): kinetic energy in the Newtonian frame (of everything, or of the listed
-        bodies and particles)."""
-        n = self._newtonian()
-        total = sm.S.Zero
-        for it in self._items(items):
-            if isinstance(it, Body):
-                v = it.masscenter.vel(n)
-                w = it.ang_vel_in(n)
-                total += it.mass_checked() * v.dot(v) / 2 + w.dot(it.central_inertia.dot(w)) / 2
-            else:
-                v = it.vel(n)
-                total += self._particle_mass(it) * v.dot(v) / 2
-        return self.defs.zify(total)
-
-    def _particle_mass(self, p: Particle):
-        if p.mass is None:
-            raise AutolevModelError(f"the mass of particle {p.name} is not given")
-        return p.mass
-
-    def momentum(self, kind: str, *args):
-        """MOMENTUM(LINEAR[, B...]) or MOMENTUM(ANGULAR, O[, B...]) in the Newtonian frame."""
-        n = self._newtonian()
-        if kind.lower() == "linear":
-            total = Vector()
-            for it in self._items(args):
-                if isinstance(it, Body):
-                    total = total + it.mass_checked() * it.masscenter.vel(n)
-                else:
-                    total = total + self._particle_mass(it) * it.vel(n)
-            return total.zified()
-        point, items = args[0], args[1:]
-        total = Vector()
-        for it in self._items(items):
-            if isinstance(it, Body):
-                r = it.masscenter.pos_from(point)
-                w = it.ang_vel_in(n)
-                if r.terms:      # about its own mass centre the velocity is not needed
-                    total = total + r.cross(it.mass_checked() * it.masscenter.vel(n))
-                total = total + it.central_inertia.dot(w)
-            else:
-                total = total + it.pos_from(point).cross(self._particle_mass(it) * it.vel(n))
-        return total.zified()
-
-    def gyrostat_angmom(self, carrier: Frame, rotor: Frame, j) -> Vector:
-        """GYROSTAT(ANGMOM, CYLINDER, A, B, J): the angular momentum that a rotor B,
-        a cylinder with axial moment of inertia J spinning in carrier A, adds to the
-        carrier's (whose inertia already holds the rotor's mass and transverse
-        inertia): J times the rotor's spin.  The spin is W_B_A> when the model assigned
-        it, otherwise the W_B_N> it assigned (tutorial 9 writes W_B_N> = Omega*A3> for
-        a rotor spinning at Omega relative to A).  No Autolev source defines GYROSTAT;
-        this is the textbook gyrostat term H = I.w + J*Omega*a3 it is used for."""
-        n = self._newtonian()
-        if rotor.ang_vel_assigned(carrier):
-            spin = rotor.ang_vel_in(carrier)
-        elif rotor.ang_vel_assigned(n):
-            spin = rotor.ang_vel_in(n)
-        else:
-            raise AutolevModelError(
-                f"GYROSTAT: the spin of rotor {rotor.name} is not given "
-                f"(W_{rotor.name}_{carrier.name}> = ...)")
-        return (j * spin).zified()
-
-    def cm(self, point: Point, *items) -> Vector:
-        """CM(O[, B...]): position of the mass center (of the listed bodies) from O."""
-        total_m = sm.S.Zero
-        total = Vector()
-        for it in self._items(items):
-            if isinstance(it, Body):
-                m, p = it.mass_checked(), it.masscenter
-            else:
-                m, p = self._particle_mass(it), it
-            total = total + m * p.pos_from(point)
-            total_m += m
-        if total_m == 0:
-            raise AutolevModelError("CM of a system with no mass")
-        return (total / total_m).zified()
-
-    def inertia_of(self, point: Point, *items) -> Dyadic:
-        """INERTIA(O[, B...]): inertia dyadic about O of the system (or listed items)."""
-        n = self._some_frame()
-        total = Dyadic()
-        for it in self._items(items):
-            if isinstance(it, Body):
-                total = total + it.inertia_about(point)
-            else:
-                total = total + point_mass_inertia(self._particle_mass(it), it.pos_from(point),
-                                                   n)
-        return total
-
-    def particle_inertia(self, particle: Particle, point: Point) -> Dyadic:
-        """I_P_O>>: inertia dyadic of particle P about point O."""
-        return point_mass_inertia(self._particle_mass(particle), particle.pos_from(point),
-                                  self._some_frame())
-
-    def _some_frame(self) -> Frame:
-        frame = self.newtonian_frame or next(iter(self.frames_by_name.values()), None)
-        if frame is None:
-            raise AutolevModelError("no frame is declared")
-        return frame
-
-    def unit_dyadic(self) -> Dyadic:
-        """1>>: the unit dyadic (the same in every frame's basis)."""
-        return UnitDyadic(self._some_frame())
-
-    def mass_of(self, *items):
-        """MASS(): total mass (of everything, or of the bodies and particles listed)."""
-        items = items or tuple(self.bodies_list) + tuple(self.particles_list)
-        total = sm.S.Zero
-        for it in items:
-            m = it.mass_checked() if isinstance(it, Body) else it.mass
-            if m is None:
-                raise AutolevModelError(f"the mass of {it.name} is not given")
-            total += m
-        return total
 
 
 def _split(names) -> list[str]:

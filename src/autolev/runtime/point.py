@@ -12,7 +12,9 @@ from collections import deque
 import sympy as sm
 
 from .interop import to_sympy_point
-from .vector import AutolevModelError, Dyadic, Frame, Scene, Vector, _vector, outer
+from .errors import AutolevModelError
+from .frame import Frame, Scene
+from .vector import Dyadic, Vector, _vector, outer
 
 
 class Point:

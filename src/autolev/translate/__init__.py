@@ -9,6 +9,7 @@ from . import (  # noqa: F401
     session, special,
 )
 from .core import PROBES, Probe, Translation, Translator
+from .functions.table import FUNCTIONS
 
 __all__ = ["translate", "Translation", "vocabulary", "Probe", "PROBES"]
 
@@ -16,7 +17,7 @@ __all__ = ["translate", "Translation", "vocabulary", "Probe", "PROBES"]
 def vocabulary() -> frozenset[str]:
     """Autolev's own commands and functions (upper case): names no macro or user
     function file replaces."""
-    return frozenset(functions.FUNCTIONS) | frozenset(commands.COMMANDS) | commands.IN_PLACE
+    return frozenset(FUNCTIONS) | frozenset(commands.COMMANDS) | commands.IN_PLACE
 
 
 def translate(program: ir.Program, module_name: str | None = None,

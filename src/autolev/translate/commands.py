@@ -6,7 +6,7 @@ from __future__ import annotations
 from .. import ir
 from .assignments import assign
 from .core import STATEMENTS, Entry, NameKind, Translator, ValueType
-from .functions import FUNCTIONS, did_you_mean
+from .functions.table import FUNCTIONS, did_you_mean
 
 
 # command name -> handler(translator, call); filled by @command here and in the families

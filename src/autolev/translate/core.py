@@ -6,7 +6,7 @@ writing a line or two of Python per statement, preceded by the Autolev line as a
 comment.  Expressions are written with their type (scalar, vector, dyadic, matrix,
 frame, point) so each construct can be checked and written the way its types need.
 Expressions, functions and vector names are written by handlers in `expressions.py`,
-`functions.py` and `special.py`, statements by one module per family (`declarations.py`,
+`functions/` and `special.py`, statements by one module per family (`declarations.py`,
 `assignments.py`, `commands.py`, `kinematics.py`, `dynamics.py`, `io.py`, `session.py`),
 registered in the tables `EXPRESSIONS` and `STATEMENTS` defined here (importing the
 package imports them).
@@ -25,6 +25,7 @@ from ..dispatch import Dispatch
 from ..errors import Diagnostic, Location, Span
 from .emit import comment, docstring, quote
 from .names import NameTable, UnsafeName
+from .reads import expression_names, primes_used, statement_exprs
 
 # precedence of the Python written for an expression
 ATOM, POW, UNARY, MUL, ADD = 9, 7, 6, 5, 4
@@ -230,7 +231,7 @@ class Translator:
         self.code_spans: list[Span] = []           # see Translation
         self.defined_at: dict[str, str] = {}
         self._span: Span | None = None
-        self._used_primes = _primes_used(program)
+        self._used_primes = primes_used(program)
         self.autolev_names: dict[str, str] = {}
         self.namespaces: dict[str, dict[str, str]] = {}
         # declared scalars keep their names: they are allocated before anything that
@@ -392,9 +393,9 @@ class Translator:
             target = st.target
             read = [st.value] + (list(target.indices) if isinstance(target, ir.Index) else [])
         else:
-            read = list(_statement_exprs(st))
+            read = list(statement_exprs(st))
         for e in read:
-            for node in _expression_names(e):
+            for node in expression_names(e):
                 key = node.name.lower()
                 if node is first or key in seen or self._resolvable(node):
                     continue
@@ -614,58 +615,6 @@ def _line_in_model(span: Span) -> int:
     while where.via is not None:
         where = where.via
     return where.line
-
-
-def _primes_used(program: ir.Program) -> set[tuple[str, int]]:
-    used = set()
-    for st in program.statements:
-        for e in _statement_exprs(st):
-            for node in ir.walk(e):
-                if isinstance(node, (ir.Name, ir.Index)) and node.primes:
-                    used.add((node.name.lower(), node.primes))
-    return used
-
-
-def _statement_exprs(st: ir.Statement):
-    for value in vars(st).values():
-        yield from _exprs_in(value)
-
-
-def _exprs_in(value):
-    if isinstance(value, ir.Expr):
-        yield value
-    elif isinstance(value, (list, tuple)):
-        for v in value:
-            yield from _exprs_in(v)
-    elif hasattr(value, "__dataclass_fields__") and not isinstance(value, (ir.Unit,)):
-        for v in vars(value).values():
-            yield from _exprs_in(v)
-
-
-# functions whose arguments hold words that are not names of the model (units,
-# LINEAR/ANGULAR, rotation types, rotor shapes)
-_WORD_ARGUMENTS = {"UNITS", "MOMENTUM", "GYROSTAT", "DIRCOS", "KINDIFFS", "ANGVEL"}
-
-
-# the sub-expressions whose names an expression reads: its children, except as below
-_READS: Dispatch[Callable[[ir.Expr], tuple[ir.Expr, ...]]] = \
-    Dispatch("names read", ir.no_children)
-_READS.register(ir.Expr)(ir.children)
-# a range's generated names are not reported one by one
-_READS.register(ir.NameRange)(ir.no_children)
-# the left side of x=v names what is substituted, not something read
-_READS.register(ir.Equation)(lambda e: (e.rhs,))
-
-
-@_READS.register(ir.Call)
-def _arguments_read(c: ir.Call) -> tuple[ir.Expr, ...]:
-    return () if c.name.upper() in _WORD_ARGUMENTS else c.args
-
-
-def _expression_names(e: ir.Expr):
-    """The plain names read by an expression, in order (not the words some functions
-    take as arguments, nor the left sides of x=v arguments)."""
-    return (node for node in ir.walk(e, _READS) if isinstance(node, ir.Name))
 
 
 def _split_into(pieces: list[str], count: int, accept) -> list | None:

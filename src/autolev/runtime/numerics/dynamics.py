@@ -15,7 +15,7 @@ from .advice import failure_message, loose_tolerance_note, stiff_note, switch_wh
 from .integrate import IntegrationFailure, Progress, Schedule, integrate
 from .projection import Projector, integrate_projected
 from .results import split_outputs, tables_of
-from .system import SingularMassMatrix, scaled_condition
+from .massmatrix import SingularMassMatrix, scaled_condition
 
 # the scaled condition number of the mass matrix beyond which a run warns (the
 # accelerations then keep fewer than 6 of their 16 significant digits)

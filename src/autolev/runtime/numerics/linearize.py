@@ -35,7 +35,8 @@ from .projection import Projector
 from .command import given_specified
 from .options import RunOptions
 from .prepare import prepare_command
-from .system import NumericSystem, compile_program
+from .compiled import compile_program
+from .system import NumericSystem
 
 
 @dataclass

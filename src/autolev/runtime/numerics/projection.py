@@ -17,7 +17,8 @@ from .. import symbols as S
 from ..errors import AutolevModelError
 from . import codegen
 from .integrate import IntegrationFailure, Schedule, integrate
-from .system import alphabetical, compile_program
+from .compiled import compile_program
+from .system import alphabetical
 
 
 class Projector:

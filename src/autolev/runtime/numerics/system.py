@@ -17,8 +17,6 @@ ENCODE values, evaluated at print times only, with the accelerations found there
 from __future__ import annotations
 
 import inspect
-import marshal
-import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -30,6 +28,8 @@ from ..errors import AutolevModelError
 from . import codegen
 from .cloop import CompiledLoop
 from .cloop import extra_source as loop_extra_source
+from .compiled import compile_program
+from .massmatrix import SingularMassMatrix, solve_mass_matrix
 
 
 def alphabetical(syms) -> list:
@@ -45,54 +45,6 @@ def read_order(syms, model) -> list:
         base, order = S.base_and_order(s)
         return (order, model.kind_of(base) != "constant", base.name.lower(), base.name)
     return sorted(syms, key=key)
-
-
-@dataclass
-class Function:
-    """A compiled numeric function with its backend and source; pickled as its source,
-    compiled again (or found in the build cache) when it is read back."""
-
-    call: object
-    backend: str            # "c" or "python"
-    source: str
-    recipe: tuple = ()      # the rest of what builds `call` from `source`
-
-    def __getstate__(self) -> dict:
-        state = {"backend": self.backend, "source": self.source, "recipe": self.recipe}
-        if self.backend == "python":       # Python's compiled code: faster to read back
-            state["code"] = marshal.dumps(self.call.code)
-        return state
-
-    def __setstate__(self, state: dict) -> None:
-        code = state.pop("code", None)
-        self.__dict__.update(state)
-        if self.backend == "c":
-            self.call = codegen.c_function(self.source, *self.recipe)
-        else:
-            self.call = codegen.python_function(
-                self.source, *self.recipe, code=marshal.loads(code) if code else None)
-
-
-def compile_program(prog: codegen.Program, backend: str, name: str,
-                    extra_source: str = "", extra_flags: tuple = ()) -> Function:
-    if backend in ("auto", "c") and codegen.compiler() is not None:
-        try:
-            call, source, recipe = codegen.compile_c(prog, name, extra_source, extra_flags)
-            return Function(call, "c", source, recipe)
-        except codegen.CompileError as exc:
-            if backend == "c":
-                raise AutolevModelError(f"the C compiler failed: {exc}") from None
-            warnings.warn(f"compiling {name} failed; using Python ({exc})")
-    elif backend == "c":
-        raise AutolevModelError("no C compiler found (set CC, or use backend='python')")
-    call, source, recipe = codegen.compile_python(prog, name)
-    return Function(call, "python", source, recipe)
-
-
-class SingularMassMatrix(ArithmeticError):
-    def __init__(self, t):
-        super().__init__(f"the mass matrix is singular at T = {t:.6g}")
-        self.t = t
 
 
 @dataclass
@@ -584,75 +536,12 @@ class NumericSystem:
         return self._call(fn, size, t, x, None, solved)
 
 
-def scaled_condition(mm: np.ndarray) -> np.ndarray | float:
-    """The 2-norm condition number of M after scaling by its diagonal (D^-1/2 M D^-1/2):
-    free of the units the speeds happen to have, so that a large value means the
-    equations are nearly singular, not that a rotor is light.  `mm`: one matrix, or a
-    stack of them (one number each); inf for a singular or non-finite matrix."""
-    a = np.asarray(mm, dtype=float)
-    single = a.ndim == 2
-    if single:
-        a = a[None]
-    d = np.abs(np.diagonal(a, axis1=1, axis2=2))
-    s = np.where(d > 0, 1.0 / np.sqrt(np.where(d > 0, d, 1.0)), 1.0)
-    scaled = a * s[:, :, None] * s[:, None, :]
-    finite = np.all(np.isfinite(scaled), axis=(1, 2))
-    out = np.full(len(a), np.inf)
-    if finite.any():
-        sv = np.linalg.svd(scaled[finite], compute_uv=False)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            out[finite] = np.where(sv[:, -1] > 0, sv[:, 0] / sv[:, -1], np.inf)
-    return float(out[0]) if single else out
-
-
 def lower_derivative(d):
     """Q' for Q'' (the symbol one derivative lower)."""
     base, k = S.base_and_order(d)
     if k == 0:
         raise AutolevModelError(f"{d} is not a derivative")
     return S.derivative(base, k - 1)
-
-
-def solve_mass_matrix(mm: np.ndarray, f: np.ndarray, t: float) -> np.ndarray:
-    """u' from M u' = f by Gaussian elimination with partial pivoting: the operations
-    of loop.c's solve in the same order (each pivot inverted once and multiplied by),
-    so that the Python and C back ends give the same numbers.  SingularMassMatrix when
-    a pivot is exactly zero."""
-    m = len(f)
-    if m == 1:
-        if mm[0, 0] == 0 or not np.isfinite(mm[0, 0]):
-            raise SingularMassMatrix(t)
-        return f / mm[0, 0]
-    a = np.array(mm, dtype=float)
-    b = [float(v) for v in f]
-    inv = [0.0] * m
-    for k in range(m):
-        col = np.abs(a[k:, k]).tolist()
-        p, amax = k, col[0]
-        for i in range(1, m - k):
-            if col[i] > amax:
-                p, amax = k + i, col[i]
-        if amax == 0.0:
-            raise SingularMassMatrix(t)
-        if p != k:
-            a[[k, p]] = a[[p, k]]
-            b[k], b[p] = b[p], b[k]
-        r = 1.0 / float(a[k, k])
-        inv[k] = r
-        for i in range(k + 1, m):
-            li = float(a[i, k]) * r
-            if li != 0.0:
-                a[i, k + 1:] -= li * a[k, k + 1:]
-                b[i] -= li * b[k]
-    x = [0.0] * m
-    rows = a.tolist()
-    for i in range(m - 1, -1, -1):
-        acc = b[i]
-        ri = rows[i]
-        for j in range(i + 1, m):
-            acc -= ri[j] * x[j]
-        x[i] = acc * (inv[i] if m <= 64 else 1.0 / ri[i])
-    return np.array(x)
 
 
 def _as_time_state_function(fn):
