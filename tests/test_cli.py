@@ -200,3 +200,19 @@ def test_run_warns_when_two_code_commands_write_the_same_files(tmp_path, capsys)
     assert code == 0
     assert "two.al:6: warning: CODE two.m writes the same files (two.1, ...)" in err
     assert "as CODE two.c" in err
+
+
+def test_a_converted_module_without_code_says_there_is_nothing_to_run(tmp_path):
+    # shanecelis/sussex-thesis-doc's frog.al has no CODE: `python frog.py` exited 2 with
+    # "a transcript is made from the .al model", a usage error the user did not make
+    model = tmp_path / "nocode.al"
+    model.write_text("CONSTANTS K\nX = 2*K\n")
+    assert main(["convert", str(model), "-o", str(tmp_path / "nocode.py"), "-q"]) == 0
+    done = subprocess.run([sys.executable, str(tmp_path / "nocode.py")],
+                          capture_output=True, text=True)
+    assert done.returncode == 0 and done.stdout == ""
+    assert "no CODE command: nothing to run" in done.stderr
+    # the .al model itself still shows its responses
+    shown = subprocess.run([sys.executable, "-m", "autolev", "run", str(model)],
+                           capture_output=True, text=True)
+    assert shown.returncode == 0 and "-> (3) X = 2*K" in shown.stdout

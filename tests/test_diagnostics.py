@@ -104,3 +104,15 @@ def test_diagnostic_as_dict():
     assert d.as_dict() == {"file": "m.al", "line": 1, "col": 5, "severity": "error",
                            "code": "E002", "message": d.message, "expanded_from": [],
                            "notes": []}
+
+
+def test_a_name_declared_again_is_pointed_at_not_its_keyword(tmp_path, capsys):
+    # `points No,J{6}` (a planar robot model) pointed at POINTS, column 1
+    from autolev.cli import main
+    path = tmp_path / "w.al"
+    path.write_text("NEWTONIAN N\nPOINTS   P, NO\n")
+    assert main(["check", str(path)]) == 0
+    out = capsys.readouterr()
+    said = out.out + out.err
+    assert f"{path}:2:13: warning: 'NO' is declared again" in said
+    assert "    POINTS   P, NO\n                ^" in said

@@ -312,3 +312,17 @@ def test_a_model_that_does_not_load_is_refused_at_the_statement_at_fault(text, s
     assert main(["transcript", str(path)]) == 1
     err = capsys.readouterr().err
     assert f"{path}{said}" in err, err
+
+
+def test_a_column_of_vectors_is_shown_an_element_a_line_and_verifies(tmp_path):
+    # hazelnusse/Slotted-Discs builds [COEF(V>, U2), ...] columns of vectors; the
+    # transcript stopped with an internal error (a vector is not a matrix element)
+    path = tmp_path / "m.al"
+    path.write_text("NEWTONIAN N\nM = [N1>, N2>]\nVARIABLES U\n"
+                    "K = [COEF(N1> + U*N2>, U), N3>]\n")
+    lines = transcript(path).splitlines()
+    assert lines[2:4] == ["-> (3) M[1] = N1>", "-> (4) M[2] = N2>"]
+    assert lines[7:9] == ["-> (7) K[1] = N2>", "-> (8) K[2] = N3>"]
+    (tmp_path / "m.all").write_text("\n".join(lines) + "\n")
+    report = autolev.verify(tmp_path / "m.all")
+    assert report.error is None and report.count("match") == 4

@@ -147,18 +147,22 @@ def _terms(terms, zero: str) -> str:
 
 def _z_used(value) -> list:
     """The Z variables a value's expressions name directly."""
-    if isinstance(value, Vector):
-        exprs = [c for comps in value.terms.values() for c in comps]
-    elif isinstance(value, Dyadic):
-        exprs = [x for m in value.terms.values() for x in m]
-    elif isinstance(value, (sm.MatrixBase, list, tuple)):
-        exprs = list(sm.Matrix(value))
-    else:
-        exprs = [sm.sympify(value)]
-    found = set()
-    for e in exprs:
-        found |= {s for s in getattr(e, "free_symbols", ()) if isinstance(s, Z)}
+    found = {s for e in _scalars_of(value) for s in getattr(e, "free_symbols", ())
+             if isinstance(s, Z)}
     return sorted(found, key=lambda z: int(z.name[1:]) if z.name[1:].isdigit() else 0)
+
+
+def _scalars_of(value) -> list:
+    """The scalar expressions a value holds: a vector's or dyadic's measure numbers, a
+    matrix's elements (which may themselves be vectors: `M = [N1>, N2>]`)."""
+    if isinstance(value, Vector):
+        return [c for comps in value.terms.values() for c in comps]
+    if isinstance(value, Dyadic):
+        return [x for m in value.terms.values() for x in m]
+    if isinstance(value, (sm.MatrixBase, list, tuple)):
+        elements = value if isinstance(value, (list, tuple)) else list(value)
+        return [x for element in elements for x in _scalars_of(element)]
+    return [sm.sympify(value)]
 
 
 @dataclass(frozen=True)
@@ -290,6 +294,11 @@ class _ResponseLines:
         out = []
         for z in _z_chain(self.model, value, self.shown):
             out += self._line(expression(z), self.model.defs.rhs[z])
+        if isinstance(value, (list, tuple)) and \
+                any(isinstance(x, (Vector, Dyadic)) for x in value):
+            # a column of vectors ([N1>; N2>]): one element a line, as a matrix's
+            return out + [x for i, v in enumerate(value)
+                          for x in self._line(f"{shown.name}[{i + 1}]", v)]
         if isinstance(value, (list, tuple)):
             value = sm.Matrix(value)
         if not isinstance(value, sm.MatrixBase) or shown.whole or len(value) == 1:

@@ -25,6 +25,11 @@ def cmd_run(ns: argparse.Namespace) -> int:
         return 1
     if not ns.quiet and (model.code_commands or ns.first_dynamics):
         print(f"{path}: built in {time.monotonic() - start:.1f} s")
+    if not model.code_commands and not ns.first_dynamics and path.suffix.lower() == ".py":
+        # a converted module runs; the responses are read from the .al model
+        print(f"{path}: no CODE command: nothing to run (`autolev transcript` of the .al "
+              "model shows the responses Autolev displayed)", file=sys.stderr)
+        return 0
     if not model.code_commands and not ns.first_dynamics:
         # what Autolev showed for a model that writes no program: its responses
         print(f"{path}: no CODE command: the responses Autolev displayed follow "

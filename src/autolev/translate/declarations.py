@@ -53,9 +53,9 @@ def _declare_entities(tr: Translator, st: ir.Declaration) -> None:
         _implicit_point(tr, n + "O", f"{py}.origin")
         return
     pys = []
-    for n in names:
+    for n, item in ((n, item) for item in st.items for n in item.names):
         if n.lower() in tr.entities:
-            tr.warn(f"'{n}' is declared again; the new {kind} replaces it", st)
+            tr.warn(f"'{n}' is declared again; the new {kind} replaces it", item)
         py = tr.py_name("entity", n, kind.value)     # the name table keeps its own words
         tr.entities[n.lower()] = Entry(py, kind, ValueType.FRAME if kind in
                                        (NameKind.FRAME, NameKind.BODY) else ValueType.POINT)
