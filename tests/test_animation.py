@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import autolev
-from autolev import animation
+from autolev import animation, animation_output
 from autolev.runtime import AutolevModelError
 from helpers import EXAMPLES
 
@@ -74,7 +74,7 @@ def hostile_motion():
 
 
 def test_names_and_titles_from_outside_never_become_markup(tmp_path):
-    page = animation.write_html(hostile_motion(), tmp_path / "m.html",
+    page = animation_output.write_html(hostile_motion(), tmp_path / "m.html",
                                 'x"><script>alert(2)</script>').read_text()
     assert page.count("<script") == 2 and page.count("</script>") == 2
     assert "<title>x&quot;&gt;&lt;script&gt;alert(2)&lt;/script&gt;</title>" in page
@@ -86,7 +86,7 @@ def test_the_gif_has_a_frame_per_drawn_row(pendulum_run, tmp_path):
     from PIL import Image
     model, result = pendulum_run
     m = animation.motion(model, result, max_frames=30)
-    gif = animation.write_movie(m, tmp_path / "p.gif")
+    gif = animation_output.write_movie(m, tmp_path / "p.gif")
     with Image.open(gif) as im:
         assert im.n_frames == 30
 
@@ -114,7 +114,7 @@ def colour_count(png, rgb, tolerance=30) -> int:
 def test_the_page_shows_the_figure_in_a_real_browser(pendulum_run, tmp_path):
     pytest.importorskip("PIL", reason="reading the screenshot needs Pillow")
     model, result = pendulum_run
-    page = animation.write_html(animation.motion(model, result), tmp_path / "p.html",
+    page = animation_output.write_html(animation.motion(model, result), tmp_path / "p.html",
                                 "double pendulum")
     png = tmp_path / "shot.png"
     screenshot(page, png)
@@ -125,7 +125,7 @@ def test_the_page_shows_the_figure_in_a_real_browser(pendulum_run, tmp_path):
     assert links > 600 and joints > 20 and masses > 2 * joints, (links, joints, masses)
     # a page with no figure in it draws none of them
     empty = animation.Motion("N", ["NO"], [], [], np.array([0.0]), np.zeros((1, 1, 3)))
-    bare = animation.write_html(empty, tmp_path / "bare.html", "nothing")
+    bare = animation_output.write_html(empty, tmp_path / "bare.html", "nothing")
     screenshot(bare, tmp_path / "bare.png")
     assert colour_count(tmp_path / "bare.png", (0x1f, 0x77, 0xb4)) == 0
 
@@ -304,7 +304,7 @@ def test_labels_go_to_joints_first_and_never_cover_each_other(tmp_path):
     assert {m.names[k] for k in m.centers} == {"AO", "BO", "CO", "DO"}
     # a label is left out where it would cover one placed before it
     boxes = [(0, 0, 10, 5), (8, 3, 18, 8), (11, 0, 20, 5), (0, 6, 5, 9)]
-    assert animation.shown_labels(boxes) == [True, False, True, True]
+    assert animation_output.shown_labels(boxes) == [True, False, True, True]
 
 
 SPIN = """NEWTONIAN N
@@ -391,9 +391,9 @@ def test_a_figure_with_no_fixed_point_or_several_says_where_it_is_drawn(tmp_path
 def test_the_gif_says_how_far_it_is(monkeypatch):
     import io
     clock = iter(range(0, 1000, 3))               # three seconds between two looks
-    monkeypatch.setattr(animation, "monotonic", lambda: next(clock))
+    monkeypatch.setattr(animation_output, "monotonic", lambda: next(clock))
     stream = io.StringIO()                        # not a terminal: a line every 5 s
-    report = animation._Progress(stream, "p.gif", 40)
+    report = animation_output._Progress(stream, "p.gif", 40)
     for k in range(1, 41):
         report.update(k)
     report.done()
@@ -436,7 +436,7 @@ def page_calls(m, tmp_path) -> list:
     """The canvas calls of the page's script drawing its first frame, under Node.js."""
     import json
     import re
-    page = animation.write_html(m, tmp_path / "m.html", "m").read_text()
+    page = animation_output.write_html(m, tmp_path / "m.html", "m").read_text()
     data = re.search(r'<script id="motion" type="application/json">(.*?)</script>', page,
                      re.S).group(1)
     script = page.rsplit("<script>", 1)[1].split("</script>")[0]
@@ -459,8 +459,8 @@ def test_the_pages_script_draws_the_segments_and_the_labels_that_fit(tmp_path):
                                                      [2.001, 0, 0]]]), labelled=[1, 0, 2, 3])
     calls = page_calls(m, tmp_path)
     strokes = [c[1] for c in calls if c[0] == "strokeStyle"]
-    assert strokes.count(animation.COLOURS[animation.SEGMENT]) == 2
-    assert not set(animation.GRID_COLOURS.values()) & set(strokes)   # a view that stays
+    assert strokes.count(animation_output.COLOURS[animation.SEGMENT]) == 2
+    assert not set(animation_output.GRID_COLOURS.values()) & set(strokes)   # a view that stays
     texts = [c[1] for c in calls if c[0] == "fillText"]
     # P3 sits 1 mm from P2: its label would cover P2's, drawn before it is not;
     # N's axes in the corner: N1> and N2> as lines, N3> toward the viewer as a dot
@@ -479,8 +479,8 @@ def test_the_pages_script_draws_the_grid_a_following_view_moves_over(tmp_path):
     m = animation.Motion("N", ["A", "B"], [(0, 1)], [], times, xyz)
     assert m.follows and m.grid()["step"] == 0.2
     strokes = [c[1] for c in page_calls(m, tmp_path) if c[0] == "strokeStyle"]
-    grid = [c for c in strokes if c in animation.GRID_COLOURS.values()]
-    assert len(grid) == 12 + 11 and grid.count(animation.GRID_COLOURS[True]) == 2 + 3
+    grid = [c for c in strokes if c in animation_output.GRID_COLOURS.values()]
+    assert len(grid) == 12 + 11 and grid.count(animation_output.GRID_COLOURS[True]) == 2 + 3
 
 
 # -- real sprint and gait models -------------------------------------------------------------

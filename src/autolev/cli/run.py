@@ -175,7 +175,8 @@ def cmd_animate(ns: argparse.Namespace) -> int:
 
 
 def _animate(model, result, out_dir: Path, ns, label: str) -> list[Path]:
-    from ..animation import MAX_FRAMES, motion, write_html, write_movie
+    from ..animation import MAX_FRAMES, motion
+    from ..animation_output import write_html, write_movie
     m = motion(model, result, ns.frames or MAX_FRAMES)
     for note in m.notes:
         print(f"{label}: note: {note}", file=sys.stderr)

@@ -5,7 +5,8 @@ import re
 from pathlib import Path
 
 from .. import ir
-from .core import FRAME_KINDS, STATEMENTS, Entry, NameKind, Translator, Typed, ValueType
+from .core import STATEMENTS, Translator
+from .kinds import FRAME_KINDS, Entry, NameKind, Typed, ValueType
 from .emit import call_lines
 from .special import assign_vector
 

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from .. import ir
 from .assignments import assign
-from .core import STATEMENTS, Entry, NameKind, Translator, ValueType
+from .core import STATEMENTS, Translator
+from .kinds import Entry, NameKind, ValueType
 from .functions.table import FUNCTIONS, did_you_mean
 
 

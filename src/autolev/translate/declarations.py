@@ -5,7 +5,8 @@ from __future__ import annotations
 import re
 
 from .. import ir
-from .core import STATEMENTS, Entry, NameKind, Translator, ValueType
+from .core import STATEMENTS, Translator
+from .kinds import Entry, NameKind, ValueType
 from .emit import assign_names, quote, quoted_names
 
 

@@ -3,7 +3,8 @@ from __future__ import annotations
 
 from .. import ir
 from .commands import arguments, command
-from .core import FRAME_KINDS, STATEMENTS, Entry, NameKind, Translator, ValueType
+from .core import STATEMENTS, Translator
+from .kinds import FRAME_KINDS, Entry, NameKind, ValueType
 from .emit import quote
 
 

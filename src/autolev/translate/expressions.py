@@ -11,7 +11,8 @@ from fractions import Fraction
 
 from .. import ir
 from ..errors import MAX_EXACT_DIGITS
-from .core import ADD, ATOM, EXPRESSIONS, MUL, POW, UNARY, Translator, Typed, ValueType
+from .core import EXPRESSIONS, Translator
+from .kinds import ADD, ATOM, MUL, POW, UNARY, Typed, ValueType
 
 # Python cannot compile a longer chain A + B + ... (its nesting limit is about 3000)
 MAX_CHAIN_TERMS = 2000

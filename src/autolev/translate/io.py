@@ -5,7 +5,8 @@ from typing import Callable
 
 from .. import ir
 from ..dispatch import Dispatch
-from .core import STATEMENTS, Translator, ValueType
+from .core import STATEMENTS, Translator
+from .kinds import ValueType
 from .emit import call_lines, comment, quote
 
 

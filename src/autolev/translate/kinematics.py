@@ -6,7 +6,8 @@ import re
 
 from .. import ir
 from .commands import COMMANDS, arguments, command
-from .core import Translator, ValueType
+from .core import Translator
+from .kinds import ValueType
 from .emit import comment, quote
 
 

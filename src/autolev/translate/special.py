@@ -18,9 +18,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .. import ir
-from .core import (
-    ATOM, EXPRESSIONS, FRAME_KINDS, POINT_KINDS, Entry, NameKind, Translator, Typed, ValueType,
-)
+from .core import EXPRESSIONS, Translator
+from .kinds import ATOM, FRAME_KINDS, POINT_KINDS, Entry, NameKind, Typed, ValueType
 
 _AXES = {"1": "x", "2": "y", "3": "z"}
 

@@ -4,7 +4,7 @@ POLYNOMIAL, ROOTS, EPSILON."""
 from __future__ import annotations
 
 from ... import ir
-from ..core import Typed, ValueType
+from ..kinds import Typed, ValueType
 from .arguments import (declared_in, describe, is_unit_vector, matrix_arg, names_arg,
                         number_arg, value_arg, variable_arg)
 from .table import function, nargs

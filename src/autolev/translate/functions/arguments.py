@@ -4,7 +4,8 @@ with a message saying what the argument is instead."""
 from __future__ import annotations
 
 from ... import ir
-from ..core import NameKind, Translator, Typed, ValueType
+from ..core import Translator
+from ..kinds import NameKind, Typed, ValueType
 from ..special import classify
 
 # what no function takes where it wants an expression

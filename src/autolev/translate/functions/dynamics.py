@@ -3,7 +3,7 @@ MOMENTUM, GYROSTAT, PARTIALS, NICHECK."""
 from __future__ import annotations
 
 from ... import ir
-from ..core import NameKind, Typed, ValueType
+from ..kinds import NameKind, Typed, ValueType
 from .arguments import variable_arg
 from .table import function, nargs
 

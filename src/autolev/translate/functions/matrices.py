@@ -3,7 +3,7 @@ EIG."""
 from __future__ import annotations
 
 from ... import ir
-from ..core import ATOM, Typed, ValueType
+from ..kinds import ATOM, Typed, ValueType
 from .arguments import declared_in, matrix_arg, number_arg
 from .table import function, nargs
 

@@ -5,7 +5,8 @@ from __future__ import annotations
 import math
 
 from ... import ir
-from ..core import ATOM, Translator, Typed, ValueType
+from ..core import Translator
+from ..kinds import ATOM, Typed, ValueType
 from ..emit import quote
 from .arguments import describe_not_a_name
 from .table import function, nargs

@@ -5,7 +5,8 @@ from __future__ import annotations
 import difflib
 
 from ... import ir
-from ..core import EXPRESSIONS, Translator, Typed
+from ..core import EXPRESSIONS, Translator
+from ..kinds import Typed
 
 FUNCTIONS: dict = {}
 # functions nested deeper than this make sympy's automatic evaluation exponential (the

@@ -2,7 +2,7 @@
 DYADIC."""
 from __future__ import annotations
 
-from ..core import Typed, ValueType
+from ..kinds import Typed, ValueType
 from .arguments import matrix_arg
 from .table import function, nargs
 
