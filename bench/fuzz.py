@@ -580,7 +580,7 @@ class ModelWriter:
         for k, f in enumerate(self.frames):
             if f == n or r.random() < 0.03:
                 continue
-            parent = r.choice(self.frames[:k])
+            parent = r.choice(self.frames[:k] or [n])     # N may come later in the list
             angle = angles.pop(0) if angles and r.random() < 0.8 else self.scalar(2)
             self.emit(f"SIMPROT({parent}, {f}, {r.choice(('1', '2', '3', '-3'))}, {angle})")
         for q, u in zip(self.coordinates, self.speeds):
