@@ -343,9 +343,11 @@ class ModelWriter:
         return "\n".join(self.lines) + ("\n" if self.rng.random() < 0.9 else "")
 
     # -- declarations --------------------------------------------------------------
-    def declare(self) -> None:
+    def declare(self, newtonian: bool = False) -> None:
+        """The declarations; `newtonian`: always a Newtonian frame (else now and then
+        none, which a model may lack)."""
         r = self.rng
-        if r.random() < 0.97:
+        if newtonian or r.random() < 0.97:
             self.newtonian = "N" if r.random() < 0.6 else self.fresh("N")
             self.emit(f"NEWTONIAN {self.newtonian}")
             self.frames.append(self.newtonian)
@@ -580,7 +582,7 @@ class ModelWriter:
         for k, f in enumerate(self.frames):
             if f == n or r.random() < 0.03:
                 continue
-            parent = r.choice(self.frames[:k] or [n])     # N may come later in the list
+            parent = r.choice(self.frames[:k])
             angle = angles.pop(0) if angles and r.random() < 0.8 else self.scalar(2)
             self.emit(f"SIMPROT({parent}, {f}, {r.choice(('1', '2', '3', '-3'))}, {angle})")
         for q, u in zip(self.coordinates, self.speeds):
@@ -1240,7 +1242,7 @@ def runnable_model(rng: random.Random) -> str:
     """A generated model that means to run: Kane's equations, every constant and
     state given a value, outputs; its CODE line is added by the caller."""
     w = ModelWriter(rng)
-    w.declare()
+    w.declare(newtonian=True)        # the kinematics hang from it
     w.kinematics()
     for _ in range(rng.randint(0, 4)):
         w.statement()
