@@ -1628,6 +1628,10 @@ def set_up(case: Case, folder: Path) -> tuple[Path, Path]:
         (case_dir / "out").mkdir(exist_ok=True)
     for name, (kind, target) in case.links.items():
         path = case_dir / name
+        if any(a.is_symlink() for a in path.parents if a.is_relative_to(case_dir)) or \
+                os.path.lexists(path):
+            continue        # under a link planted before it (it would land outside), or
+            #                 a folder made for one planted before it
         path.parent.mkdir(parents=True, exist_ok=True)
         if not path.parent.resolve().is_relative_to(case_dir.resolve()):
             raise RuntimeError(f"the case plants {name} outside its folder")
