@@ -17,6 +17,7 @@ computed iteratively in dependency order (no recursion on the depth of the chain
 """
 from __future__ import annotations
 
+import cmath
 import math
 import zlib
 from collections.abc import Iterable, Mapping
@@ -87,11 +88,71 @@ class NumericPoint:
 
 def _number_at(e, values: dict) -> complex:
     """The value of e with numbers for its symbols; NaN where it has none there (a
-    symbol left, or a function refusing the argument it gets, as MIN a complex one)."""
+    symbol left, or a function refusing the argument it gets, as MIN a complex one).
+    Taken in complex double precision where every node is elementary, else by sympy."""
+    try:
+        return _fast_number(e, values, {})
+    except (_NotFast, ArithmeticError, ValueError, TypeError, RecursionError):
+        pass
     try:
         return complex(e.xreplace(values))
     except (TypeError, ValueError):
         return complex("nan")
+
+
+class _NotFast(Exception):
+    """A node the double-precision walk leaves to sympy."""
+
+
+# one-argument functions taken in complex double precision (principal branches, as
+# sympy's numbers take them)
+_ELEMENTARY = {sm.sin: cmath.sin, sm.cos: cmath.cos, sm.tan: cmath.tan,
+               sm.exp: cmath.exp, sm.asin: cmath.asin, sm.acos: cmath.acos,
+               sm.atan: cmath.atan, sm.sinh: cmath.sinh, sm.cosh: cmath.cosh,
+               sm.tanh: cmath.tanh, sm.Abs: abs}
+
+
+# arguments on a branch cut of these, where the two conventions part
+_ON_A_CUT = {sm.asin: lambda a: a.imag == 0 and abs(a.real) > 1,
+             sm.acos: lambda a: a.imag == 0 and abs(a.real) > 1,
+             sm.atan: lambda a: a.real == 0 and abs(a.imag) > 1}
+
+
+def _fast_number(e, values: dict, memo: dict) -> complex:
+    """e's value by a walk of its tree, each repeated part once; _NotFast for a node
+    that is not elementary, or a symbol without a value (sympy then decides)."""
+    if e in memo:
+        return memo[e]
+    if e.is_Symbol:
+        if e not in values:
+            raise _NotFast(e)
+        out = complex(values[e])
+    elif e.is_Number or e.is_NumberSymbol or e is sm.I:
+        out = complex(e)
+    elif e.is_Add:
+        out = sum((_fast_number(a, values, memo) for a in e.args), 0j)
+    elif e.is_Mul:
+        out = 1 + 0j
+        for a in e.args:
+            out *= _fast_number(a, values, memo)
+    elif e.is_Pow:
+        base = _fast_number(e.base, values, memo)
+        out = base ** (int(e.exp) if e.exp.is_Integer else _fast_number(e.exp, values, memo))
+    elif e.func in _ELEMENTARY:
+        arg = _fast_number(e.args[0], values, memo)
+        if e.func in _ON_A_CUT and _ON_A_CUT[e.func](arg):
+            raise _NotFast(e)      # cmath and sympy take opposite sides of the cut there
+        out = complex(_ELEMENTARY[e.func](arg))
+    elif e.func is sm.log and len(e.args) == 1:
+        out = cmath.log(_fast_number(e.args[0], values, memo))
+    else:
+        raise _NotFast(e)
+    if not (math.isfinite(out.real) and math.isfinite(out.imag)):
+        raise _NotFast(e)          # infinities and NaN as sympy's numbers take them
+    if out.imag == 0:
+        out = complex(out.real, 0.0)   # a real number: no -0j to turn a root's branch
+    memo[e] = out
+    return out
 
 
 class _CachedFor:
