@@ -88,6 +88,9 @@ slowest cases of each mode and seed.  The exit status is 1 on any failure.
     python bench/fuzz.py --mode M --replay SEED:INDEX [--into DIR]
         # a case of mode M run alone, its outcome shown; or its files written into DIR
         # (DIR/case, DIR/outside) and its commands printed
+
+One file over 600 lines on purpose: the script is also its own worker subprocess
+(`--worker`), which must run from a checkout with nothing of the bench but itself.
 """
 from __future__ import annotations
 

@@ -58,6 +58,10 @@ ok).  Prints the table, the reason of every cell that is not ok, a summary per c
 and the time; --json writes every cell (status, reason, seconds, the end of stderr);
 --compare OLD.json prints what changed since another run.  Exit status 1 when a cell
 is FAIL.
+
+One file over 600 lines on purpose: a bench script runs from a checkout alone
+(`python bench/journeys.py`), and its parts (the models' values, the commands, the table)
+share one record of each model's journey.
 """
 from __future__ import annotations
 

@@ -61,6 +61,9 @@ Kutta-Merson C and DOP853 C at 1e-6 ... 1e-12 and RK45 at 1e-3; E computed from 
 states, checked against the model's own ENERGY output; RK45 at 1e-3 is also run
 with INTEGSTP = 1, where its steps are no longer capped, from Q1 = 30 deg and from
 1e-12 deg either side: its drift there changes with round-off).
+
+One file over 600 lines on purpose: a bench script runs from a checkout alone, and its
+reference solutions, integrators and plot share one table of runs.
 """
 from __future__ import annotations
 
