@@ -43,7 +43,7 @@ MAKERS = {
     "E045": ("X = " + "9" * 5000 + "\n", {}),
     "W001": ("VARIABLES Q\nVARIABLES Q\n", {}),
     "W002": ("VARIABLES Q\nCONSTANTS Q\n", {}),
-    "W101": ("NEWTONIAN N\nFRAMES A\nFRAMES A\n", {}),
+    "W101": ("NEWTONIAN N\nPOINTS P, NO\n", {}),
     "W103": ("X = 1\nEXIT\nY = 2\n", {}),
     "W104": ("INPUT ZZ = 1\n", {}),
     "W105": ("VARIABLES T\n", {}),

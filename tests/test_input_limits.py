@@ -115,4 +115,6 @@ def test_a_models_control_characters_never_reach_the_terminal(tmp_path):
     session.write_text("   (1) VARIABLES X\n-> (2) \x1b[2JX = 1\n")
     v = cli("verify", session)
     assert "\x1b" not in v.stdout + v.stderr
-    assert "its left side '\\x1b[2JX' is not a name" in v.stdout
+    # the response is read by the grammar, which names the character it cannot read
+    assert "(2) \\x1b[2JX: not comparable" in v.stdout
+    assert "unexpected character U+001B [E001]" in v.stdout
