@@ -1416,9 +1416,14 @@ def commands_case(seed: int, index: int) -> Case:
             ["DYNAMICS"] * (rng.random() < 0.15):
         code_names.append(_code_name(rng, stem))
         text = text.rstrip("\n") + f"\nCODE {kind}() {code_names[-1]}\n"
+    links, commands = _plants(rng, code_names, stem), _commands(rng)
+    if generator == "corpus":
+        # a corpus model's own TFINAL may be hours of motion (SSOpt's 25200 s): runs of
+        # it are cut to a second, as the others' are chosen
+        commands = [c if c[0] not in ("run", "animate") or "--tfinal" in c
+                    else c[:-1] + ["--tfinal", "1", c[-1]] for c in commands]
     return Case(index, generator, f"{stem}.al", text, mode="commands", files=files,
-                links=_plants(rng, code_names, stem), outside=dict(_VICTIMS),
-                commands=_commands(rng))
+                links=links, outside=dict(_VICTIMS), commands=commands)
 
 
 # ---------------------------------------------------------------------------------
