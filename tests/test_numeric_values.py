@@ -60,3 +60,13 @@ def test_products_of_negative_numbers_keep_the_principal_branch(e):
     values = {x: sm.Float(-1.3), y: sm.Float(-1.0), z: sm.Float(-2.0)}
     expected = complex(e.xreplace(values).evalf())
     assert cmath.isclose(_number_at(e, values), expected, rel_tol=1e-13)
+
+
+def test_the_symbols_of_an_expression_of_shared_parts_are_found_in_one_visit_each():
+    from autolev.runtime.calculus import symbols_in
+    # 40 levels, each part used twice: 2^40 occurrences, 80 distinct nodes
+    e = x + y
+    for k in range(40):
+        e = sm.Mul(e, sm.Add(e, z, evaluate=False), evaluate=False)
+    assert symbols_in(e) == {x, y, z}
+    assert symbols_in(sm.sin(x) + 3) == {x} and symbols_in(sm.Integer(2)) == set()

@@ -100,6 +100,22 @@ def _number_at(e, values: dict) -> complex:
         return complex("nan")
 
 
+def symbols_in(expr) -> set:
+    """expr's symbols, each shared part visited once (free_symbols walks a part as
+    often as it occurs: a response built of repeated parts took minutes)."""
+    seen, found, stack = set(), set(), [expr]
+    while stack:
+        e = stack.pop()
+        if e in seen:
+            continue
+        seen.add(e)
+        if e.is_Symbol:
+            found.add(e)
+        else:
+            stack.extend(e.args)
+    return found
+
+
 class _NotFast(Exception):
     """A node the double-precision walk leaves to sympy."""
 
@@ -599,10 +615,11 @@ class Definitions:
         the definitions it uses once per point."""
         expr = sm.sympify(expr)
         cache = point.cache
-        for s in self._post_order(self._defined_in(expr), cache):
+        free = symbols_in(expr)
+        for s in self._post_order(ordered(s for s in free if s in self.rhs), cache):
             rhs = self.rhs[s]
             cache[s] = _number_at(rhs, {f: point.value(f, cache) for f in self.free(s)})
-        return _number_at(expr, {f: point.value(f, cache) for f in expr.free_symbols})
+        return _number_at(expr, {f: point.value(f, cache) for f in free})
 
     def evaluation_order(self, roots: Iterable[sm.Symbol], given=()) -> list[sm.Symbol]:
         """Defined symbols needed to evaluate `roots`, dependencies first; symbols in
