@@ -8,8 +8,8 @@ bit for bit.
                                           # the corpus's WhipplePlusRiderLean.AL (massless
                                           # rider, lean locked) when the corpus is there
     python bench/sweep.py --points 1000 --workers 2
-    python bench/sweep.py --memory 20000  # what a sweep holds: the pendulum's peak
-                                          # Python memory per point (tracemalloc)
+    python bench/sweep.py --memory 20000  # what a sweep holds: the shipped simple
+                                          # pendulum's peak Python memory per point
 
 Each model is loaded (translated and executed), linearized once at 5 m/s (which
 builds and compiles the Jacobians: "build"), then swept over rear-wheel rates for
@@ -63,41 +63,18 @@ def same(a, b) -> bool:
     return a.names == b.names and all(np.array_equal(a[n], b[n]) for n in a.names)
 
 
-PENDULUM = """NEWTONIAN N
-BODIES A
-MOTIONVARIABLES' Q', U'
-CONSTANTS G, L, M
-SIMPROT(N, A, 3, Q)
-Q' = U
-W_A_N> = U*A3>
-P_NO_AO> = L*A1>
-V_AO_N> = DT(P_NO_AO>, N)
-MASS A = M
-INERTIA A, 0, 0, 0
-GRAVITY(G*N1>)
-ZERO = FR() + FRSTAR()
-KANE()
-INPUT G = 9.81, L = 2, M = 3, Q = 0, U = 0, TFINAL = 1
-CODE DYNAMICS() pendulum.c
-"""
-
-
 def memory(count: int) -> None:
-    """Peak Python memory and time of a linearization sweep of `count` pendulum points
-    in this process, per point."""
-    import tempfile
+    """Peak Python memory and time of a linearization sweep of `count` points of the
+    shipped simple pendulum in this process, per point."""
     import tracemalloc
-    with tempfile.TemporaryDirectory() as folder:
-        path = Path(folder) / "pendulum.al"
-        path.write_text(PENDULUM)
-        model = autolev.load(path)
-        model.linearize({"Q": 0.0})                    # build and compile once
-        points = {"L": np.linspace(1.0, 2.0, count), "Q": np.zeros(count)}
-        tracemalloc.start()
-        table, seconds = timed(lambda: model.sweep(points, workers=1, as_frame=False,
-                                                   progress=False))
-        held, peak = tracemalloc.get_traced_memory()
-        tracemalloc.stop()
+    model = autolev.load(ROOT / "autolev_examples" / "simple_pendulum.al")
+    model.linearize({"THETA": 0.0})                 # build and compile once
+    points = {"L": np.linspace(1.0, 2.0, count), "THETA": np.zeros(count)}
+    tracemalloc.start()
+    table, seconds = timed(lambda: model.sweep(points, workers=1, as_frame=False,
+                                               progress=False))
+    held, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
     print(f"{count} points: peak {peak / 1e6:.2f} MB ({peak / count:.0f} B a point), "
           f"table {held / 1e6:.2f} MB, {seconds:.2f} s ({1e3 * seconds / count:.2f} ms a "
           f"point), {len(table['L'])} rows")
