@@ -32,6 +32,7 @@ from ..io import CodeKind
 from . import codegen
 from .inputs import display_name
 from .projection import Projector
+from .results import mat_file
 from .command import given_specified
 from .options import RunOptions
 from .prepare import prepare_command
@@ -74,16 +75,12 @@ class Linearization:
     def mat_bytes(self) -> bytes:
         """A, B, C, D with the names of states, inputs and outputs and the operating
         point, as a Matlab .mat file (scipy.io)."""
-        import io
-        import scipy.io
         contents = {"A": self.A, "B": self.B, "C": self.C, "D": self.D}
         for key in ("states", "inputs", "outputs"):
             contents[key] = np.array(list(getattr(self, key)), dtype=object)
         contents["point_names"] = np.array([str(n) for n in self.point], dtype=object)
         contents["point_values"] = np.array([float(v) for v in self.point.values()])
-        buffer = io.BytesIO()
-        scipy.io.savemat(buffer, contents)
-        return buffer.getvalue()
+        return mat_file(contents)
 
     def eigenvalue_table(self) -> str:
         """The eigenvalues as CSV: real part, imaginary part, and for a complex pair the

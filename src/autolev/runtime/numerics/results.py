@@ -111,21 +111,26 @@ class Result:
     def mat_bytes(self) -> bytes:
         """The output columns as a Matlab .mat file (scipy.io): a column vector per
         label (made a Matlab name), and `labels` and `units` as cell arrays."""
-        import io
-        import scipy.io
         columns = self.columns()
         names = matlab_names([label for label, _, _ in columns])
         contents = {name: values.reshape(-1, 1) for name, (_, _, values) in zip(names, columns)}
         contents["labels"] = np.array([label for label, _, _ in columns], dtype=object)
         contents["units"] = np.array([unit for _, unit, _ in columns], dtype=object)
-        buffer = io.BytesIO()
-        scipy.io.savemat(buffer, contents, do_compression=True)
-        return buffer.getvalue()
+        return mat_file(contents)
 
     def __repr__(self) -> str:
         status = "ok" if self.ok else f"failed: {self.failure}"
         return (f"<autolev Result {self.kind} {self.name}: {len(self.t)} rows, "
                 f"{len(self.outputs)} output files, {status}>")
+
+
+def mat_file(contents: dict) -> bytes:
+    """A Matlab .mat file (scipy.io, compressed) of {Matlab name: array}."""
+    import io
+    import scipy.io
+    buffer = io.BytesIO()
+    scipy.io.savemat(buffer, contents, do_compression=True)
+    return buffer.getvalue()
 
 
 # Matlab's namelengthmax
