@@ -91,10 +91,9 @@ def equations_of(model, command) -> Equations:
             | set(system.implicit_unknowns)
         order = model.defs.evaluation_order(
             {s for e in roots for s in e.free_symbols}, given)
-        definitions = [(s, sm.Integer(0) if s in system.aux_fixed else model.defs.rhs[s])
-                       for s in order]
-    definitions = [(s, sm.sympify(system.aux_fixed[s])) for s in system.aux_fixed
-                   if s not in dict(definitions)] + definitions
+        # speeds fixed for the run (auxiliary ones at 0) first, then what is defined
+        definitions = [(s, sm.sympify(v)) for s, v in system.aux_fixed.items()] + \
+            [(s, model.defs.rhs[s]) for s in order if s not in system.aux_fixed]
     return Equations(
         model_name=model.name, command=f"CODE {kind.upper()} {command.filename}",
         states=list(system.states), rates=rates, unknowns=list(system.implicit_unknowns),
