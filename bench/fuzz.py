@@ -2273,10 +2273,11 @@ def describe(case: Case) -> str:
 
 
 def mode_rows(mode: str, seed: int, n: int, jobs: int, timeout: float, memory_mb: int,
-              shown: int = 3, minutes: float | None = None) -> tuple[Row, list[Row]]:
-    """Run n cases of a mode and seed (those that start within `minutes`): its row and
-    its rows per generator."""
-    cases = [make_case(mode, seed, i) for i in range(n)]
+              shown: int = 3, minutes: float | None = None,
+              first: int = 0) -> tuple[Row, list[Row]]:
+    """Run cases first..n-1 of a mode and seed (those that start within `minutes`): its
+    row and its rows per generator."""
+    cases = {i: make_case(mode, seed, i) for i in range(first, n)}
     t0 = time.perf_counter()
     step = 500 if mode == "grammar" else 100
 
@@ -2285,7 +2286,7 @@ def mode_rows(mode: str, seed: int, n: int, jobs: int, timeout: float, memory_mb
             print(f"  {mode} seed {seed}: {done}/{total} cases, "
                   f"{time.perf_counter() - t0:.0f} s", file=sys.stderr, flush=True)
     deadline = None if minutes is None else time.monotonic() + 60 * minutes
-    results = run_cases(cases, jobs, timeout, memory_mb, progress, deadline)
+    results = run_cases(list(cases.values()), jobs, timeout, memory_mb, progress, deadline)
     total = time.perf_counter() - t0
     failures = [r for r in results if r.outcome in FAILURES]
     mode_option = "" if mode == "grammar" else f" --mode {mode}"
@@ -2362,6 +2363,8 @@ def main() -> int:
                     "comma-separated; all: every one")
     ap.add_argument("--mutants", type=int, default=10000, help="mutation mode: mutants")
     ap.add_argument("--cases", type=int, default=10000, help="other modes: cases per seed")
+    ap.add_argument("--first", type=int, default=0,
+                    help="other modes: start at this case (a run stopped part way goes on)")
     ap.add_argument("--minutes", type=float,
                     help="other modes: start no case after this many minutes per seed")
     ap.add_argument("--seed", type=int, default=1)
@@ -2414,11 +2417,11 @@ def main() -> int:
     for mode in (m for m in MODES if m in modes):
         timeout = ns.timeout or TIMEOUTS[mode]
         for seed in seed_list:
-            print(f"{mode}: {ns.cases} cases; seed {seed}; {ns.jobs} worker(s); "
+            print(f"{mode}: cases {ns.first}..{ns.cases - 1}; seed {seed}; {ns.jobs} worker(s); "
                   f"timeout {timeout:g} s; memory {ns.memory_mb} MB"
                   + (f"; at most {ns.minutes:g} minutes" if ns.minutes else ""), flush=True)
             row, by_generator = mode_rows(mode, seed, ns.cases, ns.jobs, timeout,
-                                          ns.memory_mb, minutes=ns.minutes)
+                                          ns.memory_mb, minutes=ns.minutes, first=ns.first)
             rows.append(row)
             generator_rows.extend(by_generator)
     if modes != ["mutation"] or len(seed_list) > 1:
