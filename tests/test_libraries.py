@@ -40,6 +40,25 @@ def test_the_dop853_tableau_is_the_published_one():
     assert k.c[1] == pytest.approx(0.0526001519587677318785587544488)   # Hairer's c2
 
 
+def test_the_shipped_dop853_tableau_is_scipys_to_the_last_bit():
+    from autolev.runtime.numerics import dop853_tableau as shipped
+    k = dormand_prince_853()
+    assert (shipped.STAGES, shipped.EXTENDED) == (k.stages, k.extended)
+    for name, theirs in (("A", k.a), ("B", k.b), ("C", k.c), ("E3", k.e3), ("E5", k.e5),
+                         ("D", k.d)):
+        assert np.array_equal(np.array(getattr(shipped, name)), theirs.ravel()), name
+
+
+def test_the_compiled_loop_reads_the_tableau_without_importing_scipy_integrate():
+    import subprocess
+    import sys
+    code = ("import sys; from autolev.runtime.numerics import cloop; t = cloop._table(); "
+            "print(len(t), 'scipy.integrate' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out == [str(16 * 16 + 12 + 16 + 13 + 13 + 4 * 16), "False"]
+
+
 def test_the_dop853_tableau_integrates_to_eighth_order():
     # one step of y' = y from y(0) = 1 with the tableau: e^h to within h^9
     k, h = dormand_prince_853(), 0.1

@@ -214,6 +214,24 @@ def test_a_translation_is_read_back_until_a_file_it_read_or_a_folder_changes(
     assert len(translated) == 4
 
 
+def test_outputs_written_beside_the_model_keep_its_translation(cache, tmp_path,
+                                                              monkeypatch):
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nX = 2*A\n")
+    translated = []
+    real = loader.translation
+    monkeypatch.setattr(loader, "translation", lambda p: translated.append(p) or real(p))
+    autolev.load(model)
+    for name in ("m.1", "m.dir", "m.in", "m-plot.png"):
+        (tmp_path / name).write_text("written by a run\n")
+    (tmp_path / "o1").mkdir()                    # an --out folder beside it
+    assert str(autolev.load(model)["X"]) == "2*A"
+    assert len(translated) == 1                 # read back: no macro or function added
+    (tmp_path / "M.A").write_text("Z = 1\n")     # a macro file, any case: looked at again
+    autolev.load(model)
+    assert len(translated) == 2
+
+
 def test_a_file_added_where_the_translation_looked_is_seen(cache, tmp_path):
     model = tmp_path / "m.al"
     model.write_text("CONSTANTS A\nsin(A)\n")

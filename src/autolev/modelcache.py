@@ -157,12 +157,16 @@ def translation(path: Path, make):
 
 
 def _manifest(root: Path, files: list[str]) -> tuple:
-    """The digest of every file read and the names in every folder looked in (each
-    read file's folder and those up to the model's own)."""
+    """The digest of every file read, and in every folder looked in (each read file's
+    folder and those up to the model's own) the names that could change what is read:
+    macros and functions (NAME.A, NAME.R) and any name a read file has, in any case
+    (outputs written beside the model change nothing)."""
     base = root.parent.resolve()
     digests, folders = [], {base}
+    named = {root.name.lower()}
     for name in files:
         path = Path(name)
+        named.update(part.lower() for part in path.parts)
         try:
             digests.append((name, hashlib.sha256(path.read_bytes()).hexdigest()))
         except OSError:
@@ -174,7 +178,9 @@ def _manifest(root: Path, files: list[str]) -> tuple:
     listings = []
     for folder in sorted(folders):
         try:
-            listings.append((str(folder), tuple(sorted(os.listdir(folder)))))
+            listings.append((str(folder), tuple(sorted(
+                n for n in os.listdir(folder)
+                if n.lower().endswith((".a", ".r")) or n.lower() in named))))
         except OSError:
             listings.append((str(folder), None))
     return tuple(digests), tuple(listings)

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..libraries import dormand_prince_853
+from . import dop853_tableau
 
 LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
 PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
@@ -77,22 +77,17 @@ class _Context(ctypes.Structure):
                 ("yfail", _P), ("nfev", ctypes.c_double)]
 
 
-def _dop853_table() -> np.ndarray:
+def _table() -> np.ndarray:
     """The Dormand-Prince 8(5,3) tables (A 16x16, B, C, E3, E5, D 4x16) as one array,
-    in the order the C loop reads them."""
-    k = dormand_prince_853()
-    return np.ascontiguousarray(np.concatenate([k.a.ravel(), k.b, k.c, k.e3, k.e5,
-                                                k.d.ravel()]))
+    in the order the C loop reads them (the shipped tableau: no scipy import)."""
+    global _TABLE
+    if _TABLE is None:
+        k = dop853_tableau
+        _TABLE = np.array(k.A + k.B + k.C + k.E3 + k.E5 + k.D, dtype=float)
+    return _TABLE
 
 
 _TABLE = None
-
-
-def _table() -> np.ndarray:
-    global _TABLE
-    if _TABLE is None:
-        _TABLE = _dop853_table()
-    return _TABLE
 
 
 class CompiledLoop:
