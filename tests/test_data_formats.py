@@ -100,3 +100,49 @@ def test_linearize_out_writes_a_b_c_d(tmp_path, capsys):
         assert np.allclose(mat[which], matrix, rtol=1e-14, atol=1e-14), which
     assert [str(x[0]) for x in mat["states"].ravel()] == ["Q", "U"]
     assert [str(x[0]) for x in mat["inputs"].ravel()] == ["TQ"]
+
+
+def test_plot_draws_the_chosen_columns_against_the_runs_time(tmp_path, capsys,
+                                                              monkeypatch):
+    pytest.importorskip("matplotlib", reason="--plot needs the optional matplotlib")
+    from autolev import plots
+    drawn = []
+    real = plots.figure
+    monkeypatch.setattr(plots, "figure", lambda table, times=None:
+                        drawn.append((table, times)) or real(table, times))
+    out = tmp_path / "o"
+    assert main(["run", str(EXAMPLES / "double_pendulum.al"), "--out", str(out),
+                 "--tfinal", "0.5", "--plot", "q2,Q1", "-q"]) == 0
+    assert sorted(p.name for p in out.glob("*.png")) == ["double_pendulum.plot.png"]
+    (table, times), = drawn
+    assert table.labels == ["Q2", "Q1"]             # as asked, from the first table
+    labels, rows = autolev_table(out / "double_pendulum.1")
+    # the file prints 7 significant digits
+    assert np.allclose(times, rows[:, labels.index("T")], rtol=1e-6, atol=1e-12)
+    assert np.allclose(table.data[:, 1], rows[:, labels.index("Q1")], rtol=1e-6)
+
+
+def test_plot_of_a_column_no_run_writes_is_refused_before_the_run(tmp_path, capsys):
+    out = tmp_path / "o"
+    assert main(["run", str(EXAMPLES / "double_pendulum.al"), "--out", str(out),
+                 "--plot", "Q1,Q9", "-q"]) == 2
+    err = capsys.readouterr().err
+    assert "--plot: no output column Q9; the runs write T, Q1, Q2" in err
+    assert not out.exists()                         # nothing ran
+
+
+def test_pictures_and_tables_of_an_earlier_run_do_not_linger(tmp_path, capsys):
+    pytest.importorskip("matplotlib", reason="--plot needs the optional matplotlib")
+    out = tmp_path / "o"
+    model = str(EXAMPLES / "double_pendulum.al")
+    assert main(["run", model, "--out", str(out), "--tfinal", "0.2", "--plot", "--csv",
+                 "-q"]) == 0
+    assert {p.name for p in out.glob("*.png")} == {"double_pendulum.1.png",
+                                                   "double_pendulum.2.png"}
+    (out / "notes.png").write_bytes(b"mine")        # not the run's: kept
+    (out / "double_pendulum.mat").write_bytes(b"not written by autolev")
+    assert main(["run", model, "--out", str(out), "--tfinal", "0.3", "-q"]) == 0
+    left = {p.name for p in out.iterdir()}
+    assert not {"double_pendulum.1.png", "double_pendulum.2.png",
+                "double_pendulum.csv"} & left
+    assert {"notes.png", "double_pendulum.mat", "double_pendulum.1"} <= left

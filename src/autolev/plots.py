@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .runtime.numerics.results import OutputTable
 from .runtime.outputs import write_output
 
 
@@ -89,6 +90,37 @@ def write_pngs(result, out_dir: Path, overwrite: bool = False) -> list[Path]:
         written.append(_save(fig, Path(out_dir) / f"{table.filename}.png", overwrite))
         plt.close(fig)
     return written
+
+
+def write_chosen_png(result, out_dir: Path, labels: list[str],
+                     overwrite: bool = False) -> list[Path]:
+    """NAME.plot.png: the output columns named `labels` (any case; those this run
+    wrote) against the integration's time (else the T column, else the swept input);
+    returns the file written, none when the run wrote none of them."""
+    import matplotlib.pyplot as plt
+
+    columns = {label.upper(): (label, unit, values) for label, unit, values in result.columns()}
+    chosen = [columns[name.upper()] for name in labels if name.upper() in columns]
+    if not chosen:
+        return []
+    times = result.t if result.kind.integrates else None
+    rows = len(chosen[0][2])
+    if times is None or len(times) != rows:
+        times = None
+        time_column = columns.get("T") or columns.get("TIME")
+        if time_column is None and len(result.t) == rows:
+            time_column = ("the swept input", "", result.t)
+        chosen = ([time_column] if time_column is not None else []) + \
+            [c for c in chosen if c is not time_column]
+    table = OutputTable(f"{result.name}.plot", [c[0] for c in chosen],
+                        [c[1] or None for c in chosen], np.column_stack([c[2] for c in chosen]))
+    fig = figure(table, times)
+    if fig is None:
+        return []
+    try:
+        return [_save(fig, Path(out_dir) / f"{result.name}.plot.png", overwrite)]
+    finally:
+        plt.close(fig)
 
 
 def _save(fig, path: Path, overwrite: bool = False) -> Path:

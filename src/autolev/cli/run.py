@@ -43,6 +43,8 @@ def cmd_run(ns: argparse.Namespace) -> int:
     if not commands:
         print(f"{path}: error: no CODE DYNAMICS or ODE to animate", file=sys.stderr)
         return 1
+    if isinstance(ns.plot, str):
+        ns.plot = _plotted_columns(model, commands, ns.plot)
     return _run_and_report(model, commands, overrides, specified_values(model, ns), ns, path)
 
 
@@ -58,6 +60,30 @@ def _run_overrides(ns: argparse.Namespace) -> dict:
     if ns.plot and not has_matplotlib():
         raise UsageError("--plot needs matplotlib (pip install 'autolev[plot]')")
     return overrides
+
+
+def _plotted_columns(model, commands: list, text: str) -> list[str]:
+    """--plot COLUMNS as output labels, each one at least one of the commands writes
+    (UsageError naming those they write, before anything runs)."""
+    from ..runtime.errors import AutolevModelError
+    from ..runtime.numerics.command import output_columns
+    wanted = [name.strip() for name in text.split(",") if name.strip()]
+    if not wanted:
+        raise UsageError("--plot: name the output columns to draw (e.g. --plot Q1,U1), "
+                         "or give --plot alone for every output file")
+    labels: list[str] = []
+    for command in commands:
+        try:
+            files = output_columns(model, command)
+        except AutolevModelError:
+            continue                # its run reports the OUTPUT it cannot write
+        labels += [c.label for cols in files for c in cols
+                   if c.label.upper() not in {x.upper() for x in labels}]
+    unknown = [name for name in wanted if name.upper() not in {x.upper() for x in labels}]
+    if unknown:
+        raise UsageError(f"--plot: no output column {', '.join(unknown)}; the runs write "
+                         + (", ".join(labels) if labels else "no output column"))
+    return wanted
 
 
 def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list:
@@ -152,9 +178,10 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
                   f"{exc.strerror or exc}", file=sys.stderr)
             return 1
     if ns.plot and result.outputs:
-        from ..plots import write_pngs
+        from ..plots import write_chosen_png, write_pngs
         try:
-            pictures = write_pngs(result, out_dir, ns.overwrite)
+            pictures = write_pngs(result, out_dir, ns.overwrite) if ns.plot is True \
+                else write_chosen_png(result, out_dir, ns.plot, ns.overwrite)
         except OSError as exc:
             print(f"{label}: error: cannot write the plots into {out_dir}: "
                   f"{exc.strerror or exc}", file=sys.stderr)
@@ -206,8 +233,10 @@ def add_run(sub) -> None:
                          "ALGEBRAIC and NONLINEAR solved.  Writes Autolev's files NAME.in, "
                          "NAME.1 ... NAME.k (one per OUTPUT) and NAME.dir into --out.")
     run_options(run)
-    run.add_argument("--plot", action="store_true",
-                     help="also write a PNG per output file (needs matplotlib)")
+    run.add_argument("--plot", nargs="?", const=True, metavar="COLUMNS",
+                     help="also write a PNG per output file; with COLUMNS (e.g. Q1,U1: "
+                     "output labels, any case) one picture NAME.plot.png of those "
+                     "columns against time (needs matplotlib)")
     run.add_argument("--csv", action="store_true",
                      help="also write NAME.csv: every output column (T once), a row per "
                      "printed row, the labels as its header")

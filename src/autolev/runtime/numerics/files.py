@@ -198,13 +198,14 @@ class RunFiles:
 
     def _remove_superseded(self, written: list[Path]) -> None:
         """The previous run's tables and `.encode` this run did not write (fewer OUTPUT
-        statements, no ENCODE): they would pass for this run's.  Only files autolev
-        wrote and nobody changed since."""
+        statements, no ENCODE), and what was drawn or converted from its results (plots,
+        CSV, Matlab files, animations; written again after this run when asked): they
+        would pass for this run's.  Only files autolev wrote and nobody changed since."""
         names = {p.name for p in written}
         gone = []
         for path in self.folder.glob(f"{glob_escape(self.stem)}.*"):
             suffix = path.name[len(self.stem) + 1:]
-            if path.name in names or not (suffix.isdigit() or suffix == "encode"):
+            if path.name in names or not _superseded_suffix(suffix):
                 continue
             if path.is_file() and not path.is_symlink() and path.name in \
                     self._written.records and self._written.ours(path.name):
@@ -230,6 +231,17 @@ class RunFiles:
         if self._lock is not None:
             os.close(self._lock)
             self._lock = None
+
+
+# what autolev makes from a run's results: NAME.k.png, NAME.plot.png, NAME.csv, ...
+_DERIVED = ("plot.png", "csv", "mat", "html", "gif", "mp4")
+
+
+def _superseded_suffix(suffix: str) -> bool:
+    """Whether NAME.<suffix> is one of a run's tables or made from its results."""
+    lowered = suffix.lower()
+    return suffix.isdigit() or lowered == "encode" or lowered in _DERIVED or (
+        lowered.endswith(".png") and lowered[:-4].isdigit())
 
 
 def glob_escape(text: str) -> str:
