@@ -33,6 +33,7 @@ from .include import MAX_EXPANDED_BYTES, MAX_EXPANDED_STATEMENTS
 from .irbuild import Builder
 from .loader import load_translation
 from .pipeline import translation
+from .printed import read_plain
 from .runtime.calculus import NumericPoint
 from .runtime.symbols import Z
 from .runtime.vector import Dyadic, Vector
@@ -129,20 +130,30 @@ class ParsedResponse:
 
 
 def parse_responses(session: Session) -> tuple[dict[int, ParsedResponse], dict[int, str]]:
-    """Each response read by the grammar as `NAME = expression` (or `NAME` alone when
-    the response records no expression): {index: ParsedResponse}, and {index: why} for
-    those that cannot be read, naming the file's line."""
+    """Each response read as `NAME = expression` (or `NAME` alone when the response
+    records no expression): plain arithmetic by printed.read_plain, the rest by the
+    grammar; {index: ParsedResponse}, and {index: why} for those that cannot be read,
+    naming the file's line."""
     parsed: dict[int, ParsedResponse] = {}
     refused: dict[int, str] = {}
-    texts = [(f"{r.lhs} = {r.expr}" if r.expr else r.lhs) for r in session.responses]
+    by_grammar: list[int] = []
+    for k, r in enumerate(session.responses):
+        plain = read_plain(r.lhs, r.expr, Span(Location(session.path, r.line, 1))) \
+            if r.expr else None
+        if plain is None:
+            by_grammar.append(k)
+        else:
+            parsed[k] = ParsedResponse(*plain)
+    texts = {k: (f"{r.lhs} = {r.expr}" if r.expr else r.lhs)
+             for k, r in ((k, session.responses[k]) for k in by_grammar)}
     first = 0
-    while first < len(texts):
+    while first < len(by_grammar):
         last, size = first, 0
-        while last < len(texts) and last - first < _CHUNK_RESPONSES and \
-                (last == first or size + len(texts[last]) < _CHUNK):
-            size += len(texts[last]) + 1
+        while last < len(by_grammar) and last - first < _CHUNK_RESPONSES and \
+                (last == first or size + len(texts[by_grammar[last]]) < _CHUNK):
+            size += len(texts[by_grammar[last]]) + 1
             last += 1
-        _parse_chunk(session, texts, first, last, parsed, refused)
+        _parse_chunk(session, by_grammar[first:last], texts, parsed, refused)
         first = last
     for k, r in enumerate(session.responses):
         if k not in parsed and k not in refused:    # a line the builder made nothing of
@@ -151,18 +162,18 @@ def parse_responses(session: Session) -> tuple[dict[int, ParsedResponse], dict[i
     return parsed, refused
 
 
-def _parse_chunk(session: Session, texts: list[str], first: int, last: int,
+def _parse_chunk(session: Session, chunk: list[int], texts: dict[int, str],
                  parsed: dict[int, ParsedResponse], refused: dict[int, str]) -> None:
-    """Responses first..last-1, one a line, read by one builder."""
+    """The responses `chunk` (indices), one a line, read by one builder."""
     builder = Builder(session.path, None, reserved=vocabulary())
-    builder.build_source(SourceFile(session.path, "\n".join(texts[first:last]) + "\n"))
+    builder.build_source(SourceFile(session.path, "\n".join(texts[k] for k in chunk) + "\n"))
     for d in builder.errors:
-        k = first + d.location.line - 1
+        k = chunk[d.location.line - 1]
         refused.setdefault(k, f"Autolev's response does not read: "
                               f"{printable(session.path)}:{session.responses[k].line}: "
                               f"{d.message} [{d.code}]")
     for st in builder.statements:
-        k = first + st.span.start.line - 1
+        k = chunk[st.span.start.line - 1]
         if k in refused:
             continue
         if isinstance(st, ir.Assignment) and st.op == "=":
