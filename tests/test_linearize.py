@@ -155,9 +155,9 @@ def test_the_command_prints_and_writes_the_eigenvalues(pendulum, tmp_path, capsy
     printed = capsys.readouterr().out
     assert "2 states (Q, U); inputs: TQ" in printed
     rows = (tmp_path / "out" / "pendulum-eigenvalues.csv").read_text().splitlines()
-    assert rows[0] == "real,imaginary,frequency_hz,damping_ratio"
+    assert rows[0] == "real,imaginary,frequency_hz,damping_ratio,note"
     w = math.sqrt(9.81 / 8)                              # --set L=8 (metres, as given)
-    values = [[float(v) for v in row.split(",")] for row in rows[1:]]
+    values = [[float(v) for v in row.split(",")[:4]] for row in rows[1:]]
     assert [v[1] for v in values] == pytest.approx([-w, w], rel=1e-14)
     assert [v[2] for v in values] == pytest.approx([w / (2 * math.pi)] * 2, rel=1e-12)
     assert [v[3] for v in values] == [0.0, 0.0]
@@ -375,3 +375,38 @@ def test_the_command_locks_and_names_constraints(tmp_path, capsys):
     # L1 sin(Q1) = 0 fixes Q1 (at 0): the state is Q2 and the two speeds
     assert main(["linearize", str(path), "--constraint", "LOOP", "--dependent", "Q1"]) == 0
     assert capsys.readouterr().out.startswith("3 states (Q2, U1, U2)")
+
+
+CART = """NEWTONIAN N
+FRAMES A
+PARTICLES C, P
+MOTIONVARIABLES' X'', Q''
+CONSTANTS G, L, MC, MP
+SIMPROT(N, A, 3, Q)
+P_NO_C> = X*N1>
+P_C_P> = L*A1>
+V_C_N> = DT(P_NO_C>, N)
+V_P_N> = DT(P_NO_C> + P_C_P>, N)
+MASS C = MC, P = MP
+GRAVITY(G*N1>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT G = 9.81, L = 0.5, MC = 2, MP = 1
+CODE DYNAMICS() cart.c
+"""
+
+
+def test_eigenvalues_show_roundoff_as_zero_and_name_the_ignorable_coordinate(tmp_path):
+    # a pendulum (gravity along N1) on a free cart: the cart's position is ignorable;
+    # by hand, the swing's frequency is sqrt(g (mc + mp) / (mc L))
+    path = tmp_path / "cart.al"
+    path.write_text(CART.replace("GRAVITY(G*N1>)", "GRAVITY(G*N2>)"))
+    lin = autolev.load(path).linearize({"X": 0, "Q": math.pi / 2})   # hanging
+    rows = [row.split(",") for row in lin.eigenvalue_table().splitlines()[1:]]
+    w = math.sqrt(9.81 * 3 / (2 * 0.5))
+    swing = [complex(float(r[0]), float(r[1])) for r in rows if r[1] != "0"]
+    assert swing == pytest.approx([-1j * w, 1j * w], rel=1e-12)
+    zeros = [r for r in rows if r[:2] == ["0", "0"]]
+    assert len(zeros) == 2                   # X and its speed: a double zero, shown as 0
+    assert any(r[4] == "X is ignorable (nothing depends on it)" for r in zeros)
+    assert 1e-9 < lin.zero_tolerance() < 1e-5

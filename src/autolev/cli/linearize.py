@@ -86,7 +86,8 @@ def _report_eigenvalues(path: Path, lin, out_dir: str | None, overwrite: bool = 
               "(the eigenvalues describe only the motion near this instant)", file=sys.stderr)
     table = lin.eigenvalue_table()
     print(f"{len(lin.states)} states ({', '.join(lin.states)}); inputs: "
-          f"{', '.join(lin.inputs) or 'none'}")
+          f"{', '.join(lin.inputs) or 'none'}; parts of eigenvalues within "
+          f"{lin.zero_tolerance():.2g} of 0 are shown as 0 (roundoff)")
     print(table, end="")
     if out_dir:
         out = Path(out_dir)

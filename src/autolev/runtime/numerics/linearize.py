@@ -82,16 +82,36 @@ class Linearization:
         contents["point_values"] = np.array([float(v) for v in self.point.values()])
         return mat_file(contents)
 
+    def zero_tolerance(self) -> float:
+        """Parts of eigenvalues smaller than this are shown as 0: roundoff, not motion (a
+        double zero, an ignorable coordinate and its speed, splits into about
+        +-sqrt(eps |A|)); sqrt(eps) times A's 1-norm, at least sqrt(eps)."""
+        return float(np.sqrt(np.finfo(float).eps) * max(1.0, np.linalg.norm(self.A, 1)))
+
     def eigenvalue_table(self) -> str:
         """The eigenvalues as CSV: real part, imaginary part, and for a complex pair the
-        frequency (Hz) and damping ratio."""
-        lines = ["real,imaginary,frequency_hz,damping_ratio"]
-        for ev in self.eigenvalues():
+        frequency (Hz) and damping ratio; parts within `zero_tolerance()` of 0 shown as 0,
+        and a zero eigenvalue whose mode is a coordinate nothing depends on noted."""
+        tol = self.zero_tolerance()
+        values, vectors = self.modes()
+        lines = ["real,imaginary,frequency_hz,damping_ratio,note"]
+        for k, ev in enumerate(values):
+            ev = complex(ev.real if abs(ev.real) >= tol else 0.0,
+                         ev.imag if abs(ev.imag) >= tol else 0.0)
             mag = abs(ev)
             freq = f"{abs(ev.imag) / (2 * np.pi):.12g}" if ev.imag != 0 else ""
             zeta = f"{0.0 - ev.real / mag:.12g}" if ev.imag != 0 and mag > 0 else ""
-            lines.append(f"{ev.real:.15g},{ev.imag:.15g},{freq},{zeta}")
+            note = self._zero_mode(vectors[:, k], tol) if ev == 0 else ""
+            lines.append(f"{ev.real:.15g},{ev.imag:.15g},{freq},{zeta},{note}")
         return "\n".join(lines) + "\n"
+
+    def _zero_mode(self, vector: np.ndarray, tol: float) -> str:
+        """What a zero eigenvalue is: the coordinate its mode moves when nothing depends
+        on that coordinate (its column of A is zero), else plain zero."""
+        j = int(np.argmax(np.abs(vector)))
+        if np.all(np.abs(self.A[:, j]) <= tol):
+            return f"{self.states[j]} is ignorable (nothing depends on it)"
+        return "zero"
 
     def modes(self) -> tuple[np.ndarray, np.ndarray]:
         """(eigenvalues, eigenvectors as columns, each of unit norm), in the order of
