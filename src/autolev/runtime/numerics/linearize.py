@@ -35,7 +35,7 @@ from .projection import Projector
 from .results import mat_file
 from .command import given_specified
 from .options import RunOptions
-from .prepare import prepare_command
+from .prepare import prepare_command, to_be_kept
 from .compiled import compile_program
 from .system import NumericSystem
 
@@ -176,12 +176,13 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
                                 f"{command.filename}: {', '.join(unused)}")
     chosen = _chosen_inputs(model, system, inputs)
     n_columns = sum(len(cols) for cols in system.files)
-    key = ("linearize", tuple(chosen), n_columns, backend)
-    jacobians = system.derived.get(key)
-    if jacobians is None:           # once per system: a sweep reuses them
+    key = (tuple(display_name(s) for s in chosen), n_columns, backend)
+    jacobians = system.jacobians.get(key)
+    if jacobians is None:           # once per system: a sweep, and a later process, reuse them
         with model.defs.as_of(command.definitions):
-            jacobians = system.derived[key] = _jacobian_functions(system, chosen,
-                                                                  n_columns, backend)
+            jacobians = system.jacobians[key] = _jacobian_functions(system, chosen,
+                                                                    n_columns, backend)
+        to_be_kept(model)
     t0 = prepared.inputs.internal("TINITIAL")
     x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
     s0 = np.array([specified_values.get(s, 0.0) for s in system.specified], dtype=float)

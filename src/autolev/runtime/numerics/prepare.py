@@ -211,6 +211,12 @@ def keep_system(model, command, backend: str, quirks: bool, locked, system) -> N
     may have formed KANE), and for the cache of built models (keep_built)."""
     model.derived.table("numeric systems")[
         _system_key(model, command, backend, quirks, locked)] = (command, system)
+    to_be_kept(model)
+
+
+def to_be_kept(model) -> None:
+    """The model's numeric systems changed (one built, Jacobians added): its entry in
+    the cache of built models is written again once the work is done (keep_built)."""
     if model.loaded is not None and model.loaded.keeper is not None:
         model.loaded.keeper.added()
 

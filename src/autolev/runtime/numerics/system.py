@@ -93,8 +93,9 @@ class NumericSystem:
                       for x in self.states]
         # rates (0 where solved), then M row by row, then F
         self.rhs_exprs = rhs_exprs = rate_exprs + dyn
-        # functions compiled from this system later (a linearization's Jacobians), by key
-        self.derived: dict = {}
+        # a linearization's compiled Jacobians, by (inputs, output columns, backend):
+        # kept with the system in the cache of built models
+        self.jacobians: dict = {}
         out_exprs, extra = self._output_expressions(outputs, encoded, extra)
         self.extra_exprs = extra
         # what is given: time, state, solved derivatives and unknowns, fixed speeds
@@ -223,17 +224,17 @@ class NumericSystem:
         self._py_ctx = self.loop.context_address if self.loop is not None else None
 
     # -- pickling (with the model, in the cache of built models) ------------------------
-    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions", "derived")
+    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions")
 
     def __getstate__(self) -> dict:
-        """What rebuilds the system: its expressions and its functions' sources; not
-        the loaded libraries, a run's specified functions, nor Jacobians derived later."""
+        """What rebuilds the system: its expressions and its functions' sources (the
+        linearizations' Jacobians too); not the loaded libraries, nor a run's specified
+        functions."""
         return {k: v for k, v in self.__dict__.items() if k not in self._UNPICKLED}
 
     def __setstate__(self, state: dict) -> None:
         self.__dict__.update(state)
         self.specified_functions = []
-        self.derived = {}
         self._bind_loop()
 
     # -- structure ------------------------------------------------------------------------
