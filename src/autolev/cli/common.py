@@ -33,14 +33,17 @@ def print_warning(message, category, filename, lineno, file=None, line=None):
     print(f"autolev: warning: {message}", file=sys.stderr)
 
 
-def load_model(path: Path):
-    """The model, or None after printing its diagnostics."""
+def load_model(path: Path, progress=None):
+    """The model, or None after printing its diagnostics; a load past two seconds is
+    announced on `progress` (a stream, or None)."""
     from ..loader import load_for_run, load_python
+    from ..runtime.steps import SlowStep
     try:
-        if path.suffix.lower() == ".py":      # a converted model, as it now reads
-            model, notes = load_python(path), []
-        else:
-            model, notes = load_for_run(path)
+        with SlowStep(progress, f"{path}: reading and forming the model"):
+            if path.suffix.lower() == ".py":      # a converted model, as it now reads
+                model, notes = load_python(path), []
+            else:
+                model, notes = load_for_run(path)
     except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
         print_diagnostics(exc.diagnostics)
         return None

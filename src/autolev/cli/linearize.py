@@ -19,7 +19,7 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
 
     path = Path(ns.file)
     overrides, point, sweep = _linearize_request(ns)
-    model = load_model(path)
+    model = load_model(path, sys.stderr)
     if model is None:
         print(f"{path}: not linearized", file=sys.stderr)
         return 1
@@ -33,7 +33,7 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
     if sweep is not None:
         return _linearize_sweep(path, model, sweep, point, options, ns)
     try:
-        lin = model.linearize(point, **options)
+        lin = model.linearize(point, progress=sys.stderr, **options)
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1

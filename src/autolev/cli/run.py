@@ -19,7 +19,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
     path = Path(ns.file)
     overrides = _run_overrides(ns)
     start = time.monotonic()
-    model = load_model(path)
+    model = load_model(path, None if ns.quiet else sys.stderr)
     if model is None:
         print(f"{path}: not run", file=sys.stderr)
         return 1

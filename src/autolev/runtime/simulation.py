@@ -28,14 +28,20 @@ class CommandRun:
     seconds: float
 
     def summary(self) -> str:
-        """`CODE DYNAMICS bike.c: 101 rows in 0.21 s (kutta-merson, 412 steps)`."""
+        """`CODE DYNAMICS bike.c: 101 rows in 1.30 s (building 1.02 s; integrating
+        0.21 s: kutta-merson, 412 steps)`: the whole command, then what took the time
+        (building: forming and compiling its numeric system, or reading it back)."""
         result, stats = self.result, self.result.stats
         what = (f"{stats.get('rows', 0)} rows" if result.kind.integrates
                 else "solved" if result.kind is not CodeKind.ALGEBRAIC or result.solution
                 else "evaluated")
+        parts = [f"building {stats.get('build_seconds', 0.0):.2f} s"]
+        if "seconds" in stats:
+            parts.append(f"integrating {stats['seconds']:.2f} s" + (
+                f": {stats['method']}, {stats.get('steps')} steps" if stats.get("method")
+                else ""))
         return (f"CODE {self.command.kind.upper()} {self.command.filename}: {what} in "
-                f"{self.seconds:.2f} s" + (f" ({stats['method']}, {stats.get('steps')} steps)"
-                                          if stats.get("method") else ""))
+                f"{self.seconds:.2f} s ({'; '.join(parts)})")
 
 
 class SimulationMixin:
@@ -184,7 +190,7 @@ class SimulationMixin:
     def linearize(self, operating_point=None, inputs=None, *, code=None,
                   backend: str = "auto", infile=None, missing_values: str = "refuse",
                   overrides=None, constraints=None, dependent=None, locked=None,
-                  specified=None):
+                  specified=None, progress=None):
         """The equations of motion linearized at `operating_point` ({name: value} for
         constants, coordinates, speeds and specified quantities, in SI units and
         radians; the rest from INPUT, the .in file, or 0 for states and specified
@@ -200,13 +206,14 @@ class SimulationMixin:
         `locked`: names of coordinates held at their values (with Q' = U: U = U' = 0,
         U's row of Kane's equations dropped), as a rigid joint would.  `specified`:
         {name: number or sympy expression in the model's symbols} defining specified
-        quantities the model leaves undefined, as simulate's values for them."""
+        quantities the model leaves undefined, as simulate's values for them.
+        `progress`: a stream told of steps past two seconds (forming, compiling)."""
         from .numerics.linearize import linearize   # scipy.linalg: see linearize_symbolic
         try:
             return linearize(self, self.command_to_linearize(code), operating_point,
                              inputs, backend=backend, infile=infile,
                              missing_values=missing_values, overrides=overrides,
                              constraints=constraints, dependent=dependent, locked=locked,
-                             specified=specified)
+                             specified=specified, progress=progress)
         finally:
             keep_built(self)

@@ -35,6 +35,7 @@ from .projection import Projector
 from .results import mat_file
 from .command import given_specified
 from .options import RunOptions
+from ..steps import SlowStep
 from .prepare import prepare_command, to_be_kept
 from .compiled import compile_program
 from .system import NumericSystem
@@ -131,7 +132,7 @@ class Linearization:
 def linearize(model, command, operating_point=None, inputs=None, backend: str = "auto",
               infile=None, missing_values: str = "refuse", overrides=None,
               constraints=None, dependent=None, locked=None,
-              specified=None) -> Linearization:
+              specified=None, progress=None) -> Linearization:
     """The linearization of `command` (a CODE DYNAMICS) at `operating_point`: {name:
     value} for the model's constants, coordinates, speeds and specified quantities, in
     SI units and radians.  Names it leaves out take their INPUT (or .in) values;
@@ -145,7 +146,7 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     at their values (a rigid joint: Q' = U, with U and U' then 0 and U's row of Kane's
     equations dropped); the state leaves them out.  `specified`: {name: number or sympy
     expression} defining specified quantities (see run.given_specified); they are then
-    no inputs."""
+    no inputs.  `progress`: a stream told of steps past two seconds."""
     command, held = _program_to_linearize(model, command, locked)
     command, functions, overrides = given_specified(model, command, specified, overrides)
     if functions:
@@ -164,8 +165,8 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
             specified_values[sym] = float(point.pop(name))
     prepared = prepare_command(model, command, RunOptions(
         backend=backend, infile=infile, overrides=overrides, constraints=constraints,
-        missing_values=missing_values), internal_values=point, warn_unassigned=False,
-        locked=held)
+        missing_values=missing_values, progress=progress), internal_values=point,
+        warn_unassigned=False, locked=held)
     system = prepared.system
     if not system.nstate:
         raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "
@@ -179,7 +180,9 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     key = (tuple(display_name(s) for s in chosen), n_columns, backend)
     jacobians = system.jacobians.get(key)
     if jacobians is None:           # once per system: a sweep, and a later process, reuse them
-        with model.defs.as_of(command.definitions):
+        with model.defs.as_of(command.definitions), SlowStep(
+                progress, f"CODE DYNAMICS {command.filename}: forming and compiling the "
+                "Jacobians"):
             jacobians = system.jacobians[key] = _jacobian_functions(system, chosen,
                                                                     n_columns, backend)
         to_be_kept(model)

@@ -13,6 +13,7 @@ from .. import symbols as S
 from .. import units
 from ..errors import AutolevModelError, MissingValues
 from ..io import CodeKind
+from ..steps import SlowStep
 from .advice import inertia_problems
 from .command import (encoded_values, equations_and_unknowns, find_symbol, given_specified,
                       hidden_in_outputs, names_a_quantity, output_columns, program_file_name,
@@ -152,13 +153,16 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
     ask = InputsWanted(model, command, stem, unknowns, options.infile, overrides,
                        internal_values, options.constraints, options.missing_values, out_dir)
     build_start = time.perf_counter()
-    system = numeric_system(model, command, files, encoded, (equations, unknowns),
-                            options.backend, options.quirks, locked)
+    what = f"CODE {kind.upper()} {command.filename}"
+    with SlowStep(options.progress, f"{what}: forming its equations"):
+        system = numeric_system(model, command, files, encoded, (equations, unknowns),
+                                options.backend, options.quirks, locked)
     fresh = not system.compiled
     with model.defs.as_of(command.definitions):
         inputs, kinds, names, extra_constants = take_inputs(ask, system)
         if fresh:                    # inputs first: a refusal costs no compilation
-            system.compile()
+            with SlowStep(options.progress, f"{what}: generating and compiling its code"):
+                system.compile()
     if fresh:                        # kept at the model's own revision, not as_of's view
         keep_system(model, command, options.backend, options.quirks, locked, system)
     build_seconds = time.perf_counter() - build_start
