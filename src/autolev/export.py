@@ -16,14 +16,13 @@ from __future__ import annotations
 import keyword
 import math
 import re
-from dataclasses import dataclass
 
 import sympy as sm
 from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
 from .runtime import symbols as S
-from .runtime import units
+from .runtime.equations_of import Equations, equations_of, state_of
 from .runtime.errors import AutolevModelError
 
 # names the script itself defines: a model's quantity of the same name is renamed
@@ -33,84 +32,6 @@ SCRIPT_NAMES = frozenset({
     "constants", "initial_conditions", "specified", "integration", "outputs",
     "numeric_functions", "integrate", "main", "row", "column", "k", "j", "intermediates",
     "expanded", "after_solving"})
-
-
-@dataclass(frozen=True)
-class Equations:
-    """What the script holds: a CODE command's equations, values and outputs."""
-
-    model_name: str
-    command: str
-    states: list            # our symbols, in the run's order
-    rates: list             # each state's rate, None where it is solved
-    unknowns: list          # the derivatives solved from mass * unknowns = forcing
-    mass: list              # rows of the mass matrix
-    forcing: list
-    definitions: list       # (symbol, expression), dependencies first
-    constants: dict         # symbol -> value (SI units, radians)
-    initial: dict           # state -> value
-    specified: list         # symbols given as functions of time
-    integration: dict       # TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR
-    outputs: list           # (label, unit, expression, in degrees)
-
-
-def equations_of(model, command) -> Equations:
-    """The equations, values and outputs `autolev run` uses for an integrating CODE
-    command (DYNAMICS or ODE)."""
-    from .runtime.numerics.command import equations_and_unknowns, output_columns
-    from .runtime.numerics.prepare import InputsWanted, numeric_system, take_inputs
-    from .runtime.numerics.files import safe_stem
-    from .runtime.tools import RunOptions
-
-    kind = command.kind
-    if not kind.integrates:
-        raise AutolevModelError(f"CODE {kind.upper()} {command.filename}: the SymPy export "
-                                "writes equations of motion (CODE DYNAMICS or ODE)")
-    files = output_columns(model, command)
-    solving = equations_and_unknowns(command.args, kind.upper())
-    system = numeric_system(model, command, files, [], solving, "python", False, ())
-    options = RunOptions()
-    ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], None, None,
-                       None, None, options.missing_values, None)
-    with model.defs.as_of(command.definitions):
-        inputs, _, _, _ = take_inputs(ask, system)
-        n = len(system.implicit_unknowns)
-        rows, nstate = system.rhs_exprs, system.nstate
-        solved = {_state_of(u) for u in system.implicit_unknowns}
-        rates = [None if x in solved else sm.sympify(rows[k])
-                 for k, x in enumerate(system.states)]
-        mass = [[sm.sympify(e) for e in rows[nstate + r * n:nstate + (r + 1) * n]]
-                for r in range(n)]
-        forcing = [sm.sympify(e) for e in rows[nstate + n * n:nstate + n * n + n]]
-        columns = [c for cols in system.files for c in cols]
-        outputs = [(c.label, c.unit or "", sm.sympify(e), units.is_degrees(c.unit))
-                   for c, e in zip(columns, system.output_exprs)]
-        roots = [e for e in rates if e is not None] + [e for r in mass for e in r] \
-            + forcing + [e for _, _, e, _ in outputs]
-        given = set(system.states) | {S.TIME} | set(system.params) | set(system.specified) \
-            | set(system.implicit_unknowns)
-        order = model.defs.evaluation_order(
-            {s for e in roots for s in e.free_symbols}, given)
-        # speeds fixed for the run (auxiliary ones at 0) first, then what is defined
-        definitions = [(s, sm.sympify(v)) for s, v in system.aux_fixed.items()] + \
-            [(s, model.defs.rhs[s]) for s in order if s not in system.aux_fixed]
-    return Equations(
-        model_name=model.name, command=f"CODE {kind.upper()} {command.filename}",
-        states=list(system.states), rates=rates, unknowns=list(system.implicit_unknowns),
-        mass=mass, forcing=forcing, definitions=definitions,
-        constants={p: inputs.internal(p) for p in system.params},
-        initial={x: inputs.internal(x) for x in system.states},
-        specified=list(system.specified),
-        integration={name: inputs.internal(name) for name in
-                     ("TINITIAL", "TFINAL", "INTEGSTP", "ABSERR", "RELERR")}
-        | {"PRINTINT": int(inputs.values["PRINTINT"].given)},
-        outputs=outputs)
-
-
-def _state_of(unknown):
-    """The state whose rate `unknown` is (U1 for U1', X' for X'')."""
-    base, order = S.base_and_order(unknown)
-    return base if order == 1 else S.derivative(base, order - 1)
 
 
 class ScriptPrinter(StrPrinter):
@@ -210,7 +131,7 @@ def sympy_script(eqs: Equations, source: str) -> str:
         out += [f"{names[c]} = sm.Symbol({names[c]!r})" for c in eqs.constants]
     if eqs.unknowns:
         out += ["", "# the rates solved from the mass matrix"]
-        out += [f"{unknown_names[u]} = {names[_state_of(u)]}.diff(t)" for u in eqs.unknowns]
+        out += [f"{unknown_names[u]} = {names[state_of(u)]}.diff(t)" for u in eqs.unknowns]
     before, after = _split_at_the_unknowns(eqs)
     if eqs.definitions:
         out += ["", "# intermediates (Autolev's Z's) and the model's definitions, as functions of",
@@ -225,7 +146,7 @@ def sympy_script(eqs: Equations, source: str) -> str:
             "rates = [" + ", ".join("None" if r is None else p(r) for r in eqs.rates) + "]",
             "unknowns = [" + ", ".join(unknown_names[u] for u in eqs.unknowns) + "]",
             "unknown_states = [" + ", ".join(
-                str(eqs.states.index(_state_of(u))) for u in eqs.unknowns) + "]",
+                str(eqs.states.index(state_of(u))) for u in eqs.unknowns) + "]",
             f"mass_matrix = sm.Matrix({len(eqs.mass)}, {len(eqs.mass)}, ["
             + ", ".join(p(e) for r in eqs.mass for e in r) + "])",
             f"forcing = sm.Matrix({len(eqs.forcing)}, 1, ["

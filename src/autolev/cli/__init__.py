@@ -13,6 +13,7 @@ from .check import add_check
 from .code import add_code
 from .common import UsageError, print_diagnostics, print_warning
 from .convert import add_convert
+from .equations import add_equations
 from .linearize import add_linearize
 from .responses import add_transcript, add_verify
 from .run import add_animate, add_run
@@ -32,7 +33,7 @@ traceback); 130 interrupted."""
 
 
 COMMANDS = (add_check, add_convert, add_run, add_code, add_linearize, add_animate,
-            add_transcript, add_verify, add_cache)
+            add_equations, add_transcript, add_verify, add_cache)
 
 
 def build_parser() -> argparse.ArgumentParser:

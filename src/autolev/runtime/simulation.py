@@ -159,6 +159,15 @@ class SimulationMixin:
         return next((c for c in self.code_commands if c.kind is CodeKind.DYNAMICS),
                     None) or self.plain_dynamics()
 
+    def latex(self, code=None) -> str:
+        """The equations of motion of a CODE DYNAMICS or ODE (`code`: which, as
+        code_command takes it; default: the first CODE DYNAMICS, else the model's
+        equations as they stand) in LaTeX a paper can paste (amsmath): the
+        intermediates as definitions, the explicit rates, and M u' = F."""
+        from .equations_of import equations_of
+        from .equations_text import latex
+        return latex(equations_of(self, self.command_to_linearize(code), values=False))
+
     def plain_dynamics(self) -> CodeCommand:
         """CODE DYNAMICS of the model as it stands (for a model that writes none); the
         same object while the model is unchanged, so its numeric system is reused."""
