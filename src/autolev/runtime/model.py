@@ -92,6 +92,11 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
     def __repr__(self) -> str:
         return f"<autolev Model {self.name}>"
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: what the model declares, with its INPUT values."""
+        from .notebook import model_html
+        return model_html(self)
+
     # -- pickling (the cache of built models) --------------------------------------
     def __getstate__(self) -> dict:
         """The model as its statements left it, with the numeric systems built for its

@@ -83,6 +83,11 @@ class Linearization:
         contents["point_values"] = np.array([float(v) for v in self.point.values()])
         return mat_file(contents)
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the state, the inputs and the eigenvalue table."""
+        from ..notebook import linearization_html
+        return linearization_html(self)
+
     def zero_tolerance(self) -> float:
         """Parts of eigenvalues smaller than this are shown as 0: roundoff, not motion (a
         double zero, an ignorable coordinate and its speed, splits into about

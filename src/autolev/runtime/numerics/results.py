@@ -76,6 +76,11 @@ class Result:
                 return v
         raise KeyError(name)
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the run, and its output columns drawn against time."""
+        from ..notebook import result_html
+        return result_html(self)
+
     def columns(self) -> list[tuple[str, str, np.ndarray]]:
         """Every output column once, in file order: (label, unit, values); a label that
         several files hold (T) is kept from the first."""
