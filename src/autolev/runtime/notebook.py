@@ -28,7 +28,8 @@ def _names(items, limit: int = 40) -> str:
 
 def model_html(model) -> str:
     """The model's frames, bodies and particles with their masses, its motion variables
-    with their initial values and its constants with their values (INPUT), its specified quantities and CODE commands."""
+    with their initial values and its constants with their values (INPUT), its
+    specified quantities and CODE commands."""
     by_kind: dict[str, list] = {}
     for symbol, info in sorted(model.info.items(), key=lambda item: item[1].index):
         if not str(symbol).endswith("'"):
