@@ -91,3 +91,18 @@ def test_names_from_the_model_become_identifiers_never_code():
     assert identifier("lambda", taken) == "lambda_2"        # a keyword
     assert identifier("t", taken) == "t_2"                  # the script's time
     assert identifier("x); import os", taken).isidentifier()
+
+
+def test_values_come_from_an_in_file_and_set_as_a_run_takes_them(tmp_path, capsys):
+    source = EXAMPLES / "double_pendulum.al"
+    assert main(["run", str(source), "--out", str(tmp_path / "run"), "-q",
+                 "--set", "L2=2"]) == 0
+    script = tmp_path / "dp_sympy.py"
+    # the .in the run wrote has L2 = 2; --set then makes M1 3 (kg)
+    assert main(["convert", "--to", "sympy", str(source), "--in",
+                 str(tmp_path / "run" / "double_pendulum.in"), "--set", "M1=3",
+                 "-o", str(script), "-q"]) == 0
+    constants = {str(k): v for k, v in runpy.run_path(str(script))["constants"].items()}
+    assert constants["L2"] == 2.0 and constants["M1"] == 3.0 and constants["L1"] == 1.0
+    assert main(["convert", str(source), "--in", "x.in"]) == 2
+    assert "--in and --set give the values of a --to sympy script" in capsys.readouterr().err

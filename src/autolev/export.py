@@ -288,14 +288,16 @@ if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))'''
 
 
-def export_sympy(model, source: str, command=None) -> str:
+def export_sympy(model, source: str, command=None, infile=None, overrides=None) -> str:
     """The SymPy script of the model's first integrating CODE command (or `command`);
-    `source`: the model's file, named in the script."""
+    `source`: the model's file, named in the script; its values as a run takes them
+    (INPUT, then the .in file `infile`, then `overrides` in the quantities' units)."""
     if command is None:
         integrating = [c for c in model.code_commands if c.kind.integrates]
         if not integrating:
             raise AutolevModelError("the model has no CODE DYNAMICS or ODE to export "
                                     "(its equations of motion)")
         command = integrating[0]
-    return sympy_script(equations_of(model, command), source)
+    return sympy_script(equations_of(model, command, infile=infile, overrides=overrides),
+                        source)
 

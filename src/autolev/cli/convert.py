@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from ..errors import AutolevSyntaxError, AutolevTranslationError
-from .common import UsageError, overwrite_option, print_diagnostics
+from .common import UsageError, name_values, overwrite_option, print_diagnostics
 
 
 def cmd_convert(ns: argparse.Namespace) -> int:
@@ -17,6 +17,9 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     path = Path(ns.file)
     if ns.to == "sympy":
         return _convert_to_sympy(path, ns)
+    if ns.infile is not None or ns.set:
+        raise UsageError("--in and --set give the values of a --to sympy script; a "
+                         "module on autolev.runtime takes them when it runs")
     try:
         result = translation(path)
     except (AutolevSyntaxError, AutolevTranslationError) as exc:
@@ -53,12 +56,19 @@ def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
         raise UsageError(f"{out} is a folder; -o names the script's file")
     if out.resolve() == path.resolve():
         raise UsageError(f"refusing to overwrite the model {path}")
+    overrides = name_values(ns.set, "--set", numbers=True)
+    if ns.infile is not None and not Path(ns.infile).is_file():
+        raise UsageError(f"--in {ns.infile}: no such file")
     model = load_model(path)
     if model is None:
         print(f"{path}: not converted", file=sys.stderr)
         return 1
+    unknown = [name for name in overrides if not model.names_a_quantity(name)]
+    if unknown:
+        raise UsageError(f"--set {', '.join(unknown)}: the model has no quantity of "
+                         f"{'that name' if len(unknown) == 1 else 'those names'}")
     try:
-        text = export_sympy(model, path.name)
+        text = export_sympy(model, path.name, infile=ns.infile, overrides=overrides)
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
@@ -86,6 +96,12 @@ def add_convert(sub) -> None:
                          help="autolev (default): a module on autolev.runtime; sympy: a "
                          "standalone script of the equations of motion that needs only "
                          "sympy, numpy and scipy (see its docstring)")
+    convert.add_argument("--in", dest="infile", metavar="FILE",
+                         help="with --to sympy: values from an Autolev .in file, as "
+                         "`autolev run --in` takes them")
+    convert.add_argument("--set", action="append", metavar="NAME=VALUE", default=[],
+                         help="with --to sympy: a value in the quantity's own unit "
+                         "(repeatable; after --in)")
     convert.add_argument("-q", "--quiet", action="store_true")
     overwrite_option(convert)
     convert.set_defaults(func=cmd_convert)

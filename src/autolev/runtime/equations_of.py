@@ -33,10 +33,13 @@ class Equations:
     outputs: list           # (label, unit, expression, in degrees)
 
 
-def equations_of(model, command, values: bool = True) -> Equations:
+def equations_of(model, command, values: bool = True, infile=None,
+                 overrides=None) -> Equations:
     """The equations, values and outputs `autolev run` uses for an integrating CODE
-    command (DYNAMICS or ODE); without `values`, the equations alone (no constant needs
-    a value, and constants, initial values and integration are left empty)."""
+    command (DYNAMICS or ODE), its values taken as a run takes them (INPUT, then the .in
+    file `infile`, then `overrides` in the quantities' units); without `values`, the
+    equations alone (no constant needs a value; constants, initial values and
+    integration are left empty)."""
     from .numerics.command import equations_and_unknowns, output_columns
     from .numerics.files import safe_stem
     from .numerics.options import RunOptions
@@ -50,8 +53,8 @@ def equations_of(model, command, values: bool = True) -> Equations:
     solving = equations_and_unknowns(command.args, kind.upper())
     system = numeric_system(model, command, files, [], solving, "python", False, ())
     options = RunOptions()
-    ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], None, None,
-                       None, None, options.missing_values, None)
+    ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], infile,
+                       overrides, None, None, options.missing_values, None)
     with model.defs.as_of(command.definitions):
         inputs = take_inputs(ask, system)[0] if values else None
         n = len(system.implicit_unknowns)

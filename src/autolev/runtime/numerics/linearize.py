@@ -90,8 +90,9 @@ class Linearization:
 
     def zero_tolerance(self) -> float:
         """Parts of eigenvalues smaller than this are shown as 0: roundoff, not motion (a
-        double zero, an ignorable coordinate and its speed, splits into about
-        +-sqrt(eps |A|)); sqrt(eps) times A's 1-norm, at least sqrt(eps)."""
+        double zero, an ignorable coordinate and its speed, splits into about plus and
+        minus the square root of eps times the norm of A); sqrt(eps) times A's 1-norm,
+        at least sqrt(eps)."""
         return float(np.sqrt(np.finfo(float).eps) * max(1.0, np.linalg.norm(self.A, 1)))
 
     def eigenvalue_table(self) -> str:
