@@ -410,3 +410,52 @@ def test_eigenvalues_show_roundoff_as_zero_and_name_the_ignorable_coordinate(tmp
     assert len(zeros) == 2                   # X and its speed: a double zero, shown as 0
     assert any(r[4] == "X is ignorable (nothing depends on it)" for r in zeros)
     assert 1e-9 < lin.zero_tolerance() < 1e-5
+
+
+TWO_SPRINGS = """NEWTONIAN N
+PARTICLES P1, P2
+MOTIONVARIABLES' X1'', X2''
+CONSTANTS K1, K2, M, C
+P_NO_P1> = X1*N1>
+P_NO_P2> = X2*N2>
+MASS P1 = M, P2 = M
+FORCE_P1> = -K1*X1*N1> - C*X1'*N1>
+FORCE_P2> = -K2*X2*N2> - C*X2'*N2>
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT K1 = 1, K2 = 4, M = 1, C = 0.01
+CODE DYNAMICS() springs.c
+"""
+
+
+def test_a_sweep_follows_each_mode_across_a_crossing(tmp_path, capsys):
+    # two uncoupled oscillators of equal damping: as K1 passes K2 = 4 their frequencies
+    # cross, and sorted by value the columns would swap; by hand, the first
+    # oscillator's eigenvalues are -C/2M +- i sqrt(K1/M - (C/2M)^2) all along
+    from autolev.cli import main
+    path = tmp_path / "springs.al"
+    path.write_text(TWO_SPRINGS)
+    assert main(["linearize", str(path), "--sweep", "K1=1:9:10"]) == 0
+    rows = [[float(x) for x in line.split(",")]
+            for line in capsys.readouterr().out.splitlines()[1:]]
+    first = [k for k in range(4) if math.isclose(abs(rows[0][2 + 2 * k]), 1, rel_tol=1e-3)]
+    assert len(first) == 2                    # the first oscillator's pair, at K1 = 1
+    for row in rows:
+        w = math.sqrt(row[0] - 0.005 ** 2)
+        assert [row[1 + 2 * k] for k in first] == pytest.approx([-0.005] * 2, abs=1e-9)
+        assert sorted(row[2 + 2 * k] for k in first) == pytest.approx([-w, w], rel=1e-9)
+    # sorted by value the pair would have moved: at K1 = 9 it is the outermost
+    last = sorted(rows[-1][2::2])
+    assert [last.index(rows[-1][2 + 2 * k]) for k in first] != first
+
+
+def test_follow_modes_keeps_a_mode_in_its_column_where_sorting_swaps_them():
+    from autolev.runtime.studies import follow_modes
+    p = np.linspace(0, 1, 11)
+    values = np.column_stack([np.minimum(p, 1 - p), np.maximum(p, 1 - p)]).astype(complex)
+    # the mode of eigenvalue p is e1, that of 1 - p is e2: sorted, they swap at 0.5
+    vectors = np.array([np.eye(2) if pk <= 0.5 else np.eye(2)[:, ::-1] for pk in p],
+                       dtype=complex)
+    order = follow_modes(values, vectors)
+    followed = np.take_along_axis(values, order, axis=1)
+    assert np.allclose(followed[:, 0].real, p) and np.allclose(followed[:, 1].real, 1 - p)

@@ -137,22 +137,31 @@ def _linearize_sweep(path: Path, model, sweep, point: dict, options: dict,
     NAME-sweep.csv; with --plot, NAME-sweep.png in --out or here)."""
     from ..runtime.tools import safe_stem
     from ..runtime.tools import write_output
+    from ..runtime.studies import eigenvalues_and_modes, follow_modes
     name, values = sweep
     table = model.sweep([dict(point, **{name: v}) for v in values], what="linearize",
-                        as_frame=False, **options)
+                        as_frame=False, collect=eigenvalues_and_modes, **options)
     if "failure" in table.names:
         first = next(k for k, why in enumerate(table["failure"]) if why)
         print(f"{path}: error: at {name} = {values[first]:.6g}: {table['failure'][first]}",
               file=sys.stderr)
         return 1
     n = sum(c.startswith("re") for c in table.names)
+    eigenvalues = np.column_stack([np.asarray(table[f"re{k}"], dtype=float)
+                                   + 1j * np.asarray(table[f"im{k}"], dtype=float)
+                                   for k in range(1, n + 1)])
+    vectors = np.stack([np.column_stack([
+        np.asarray(table[f"vre{k}_{j}"], dtype=float)
+        + 1j * np.asarray(table[f"vim{k}_{j}"], dtype=float) for j in range(1, n + 1)])
+        for k in range(1, n + 1)], axis=2)          # points x components x modes
+    order = follow_modes(eigenvalues, vectors)
+    eigenvalues = np.take_along_axis(eigenvalues, order, axis=1)
     columns = [f"{p}{k}" for k in range(1, n + 1) for p in ("re", "im")]
-    numbers = np.column_stack([np.asarray(values, dtype=float)]
-                              + [np.asarray(table[c], dtype=float) for c in columns])
+    numbers = np.column_stack([np.asarray(values, dtype=float)] + [
+        part(eigenvalues[:, k]) for k in range(n) for part in (np.real, np.imag)])
     csv = "\n".join([",".join([name] + columns)]
                     + [",".join(f"{x:.15g}" for x in row) for row in numbers]) + "\n"
     print(csv, end="")
-    eigenvalues = numbers[:, 1::2] + 1j * numbers[:, 2::2]
     unsteady = [v for v, steady in zip(values, table["steady"]) if not steady]
     if unsteady:
         print(f"{path}: warning: not an equilibrium or a steady motion at {name} = "

@@ -156,6 +156,43 @@ def _eigenvalue_columns(lin) -> dict:
     return columns
 
 
+def eigenvalues_and_modes(lin) -> dict:
+    """A `collect` for what="linearize" that keeps the modes for `follow_modes`: the
+    eigenvalue columns (re_k, im_k, steady) and each eigenvector's components
+    (vre_k_j, vim_k_j)."""
+    columns = _eigenvalue_columns(lin)
+    _, vectors = lin.modes()
+    for k in range(vectors.shape[1]):
+        for j in range(vectors.shape[0]):
+            columns[f"vre{k + 1}_{j + 1}"] = float(vectors[j, k].real)
+            columns[f"vim{k + 1}_{j + 1}"] = float(vectors[j, k].imag)
+    return columns
+
+
+def follow_modes(eigenvalues: np.ndarray, vectors: np.ndarray) -> np.ndarray:
+    """Each row of `eigenvalues` (points x n) reordered so that a column follows one
+    mode along the points: row k's modes are matched to row k-1's by the overlap of
+    their eigenvectors (`vectors`: points x n x n, one mode per column), the distance
+    of the eigenvalues breaking ties (a conjugate pair's vectors overlap).  Returns the
+    permutation of each row (points x n)."""
+    from scipy.optimize import linear_sum_assignment
+    count, n = eigenvalues.shape
+    order = np.tile(np.arange(n), (count, 1))
+    for k in range(1, count):
+        before = vectors[k - 1][:, order[k - 1]]
+        values_before = eigenvalues[k - 1, order[k - 1]]
+        now, values_now = vectors[k], eigenvalues[k]
+        if not (np.all(np.isfinite(before)) and np.all(np.isfinite(now))):
+            continue                     # a failed point: keep the sorted order
+        norms = np.linalg.norm(before, axis=0)[:, None] * np.linalg.norm(now, axis=0)[None]
+        overlap = np.abs(before.conj().T @ now) / np.where(norms > 0, norms, 1.0)
+        distance = np.abs(values_before[:, None] - values_now[None]) / (
+            np.abs(values_before[:, None]) + np.abs(values_now[None]) + 1.0)
+        _, matched = linear_sum_assignment(1.0 - overlap + distance)
+        order[k] = matched
+    return order
+
+
 def _last_row(result) -> dict:
     columns = {}
     if len(result.states):
