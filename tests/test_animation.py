@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import autolev
-from autolev import animation, animation_output
+from autolev.runtime import animation, animation_output
 from autolev.runtime import AutolevModelError
 from helpers import EXAMPLES
 

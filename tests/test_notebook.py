@@ -44,6 +44,17 @@ def test_a_result_shows_its_rows_and_columns_and_a_linearization_its_eigenvalues
     assert "<th>damping ratio</th>" in page and math.isfinite(lin.zero_tolerance())
 
 
+def test_a_models_motion_shows_inline_in_its_own_frame_and_saves(tmp_path):
+    import html
+    view = autolev.load(PENDULUM).animate(TFINAL=0.5)
+    shown = view._repr_html_()
+    assert shown.startswith('<iframe srcdoc="') and "<script" not in shown  # quoted whole
+    assert html.unescape(shown.split('srcdoc="')[1].split('" width')[0]) == view.page
+    assert "double_pendulum (double_pendulum)" in view.page and '"times":[0.0,' in view.page
+    saved = view.save(tmp_path / "motion.html")
+    assert saved.read_text() == view.page
+
+
 @pytest.mark.skipif(importlib.util.find_spec("nbclient") is None or
                     importlib.util.find_spec("nbconvert") is None or
                     importlib.util.find_spec("ipykernel") is None,
@@ -55,13 +66,14 @@ def test_a_notebook_runs_and_renders_the_views(tmp_path):
     from nbconvert import HTMLExporter
     cells = [f"import autolev\nmodel = autolev.load({str(PENDULUM)!r})\nmodel",
              "model.simulate(TFINAL=0.2)",
-             "model.linearize({'Q1': 0, 'Q2': 0})"]
+             "model.linearize({'Q1': 0, 'Q2': 0})",
+             "model.animate(TFINAL=0.2)"]
     book = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
     NotebookClient(book, timeout=300, kernel_name="python3",
                    resources={"metadata": {"path": str(tmp_path)}}).execute()
     shown = [output["data"]["text/html"] for cell in book.cells for output in cell.outputs
              if output.get("output_type") == "execute_result"]
-    assert len(shown) == 3
+    assert len(shown) == 4 and shown[3].startswith("<iframe srcdoc=")
     assert "autolev model double_pendulum" in shown[0]
     assert "autolev result" in shown[1] and "autolev linearization" in shown[2]
     page, _ = HTMLExporter().from_notebook_node(book)

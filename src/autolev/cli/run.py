@@ -202,8 +202,8 @@ def cmd_animate(ns: argparse.Namespace) -> int:
 
 
 def _animate(model, result, out_dir: Path, ns, label: str) -> list[Path]:
-    from ..animation import MAX_FRAMES, motion
-    from ..animation_output import write_html, write_movie
+    from ..runtime.animation import MAX_FRAMES, motion
+    from ..runtime.animation_output import write_html, write_movie
     m = motion(model, result, ns.frames or MAX_FRAMES)
     for note in m.notes:
         print(f"{label}: note: {note}", file=sys.stderr)

@@ -2,10 +2,12 @@
 swept (a mixin of Model).  This layer sits on the numerics, which never import it."""
 from __future__ import annotations
 
+import html
 import sys
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass
+from pathlib import Path
 
 from . import studies
 from .errors import AutolevModelError
@@ -16,6 +18,7 @@ from .numerics.results import Result
 from .numerics.command import names_a_quantity
 from .numerics.options import RunOptions
 from .numerics.run import run_command
+from .outputs import write_output
 
 
 @dataclass
@@ -42,6 +45,24 @@ class CommandRun:
                 else ""))
         return (f"CODE {self.command.kind.upper()} {self.command.filename}: {what} in "
                 f"{self.seconds:.2f} s ({'; '.join(parts)})")
+
+
+@dataclass
+class AnimationView:
+    """A model's motion as a self-contained HTML page; shown inline in a notebook (in an
+    iframe of its own, so that its script and styles stay in it)."""
+
+    page: str
+    notes: list
+
+    def _repr_html_(self) -> str:
+        return (f'<iframe srcdoc="{html.escape(self.page, quote=True)}" width="100%" '
+                'height="540" style="border: 0"></iframe>')
+
+    def save(self, path) -> Path:
+        """Write the page to `path` (whole, never through a link at its name)."""
+        target = Path(path)
+        return write_output(target.parent, target.name, self.page)
 
 
 class SimulationMixin:
@@ -158,6 +179,21 @@ class SimulationMixin:
             return self.code_command(code)
         return next((c for c in self.code_commands if c.kind is CodeKind.DYNAMICS),
                     None) or self.plain_dynamics()
+
+    def animate(self, result=None, frames: int | None = None, **given) -> AnimationView:
+        """The motion of a CODE DYNAMICS run as the HTML view `autolev animate` writes (a
+        stick figure to rotate, a time slider), shown inline in a notebook; `.save(path)`
+        writes the page.  `result`: a finished dynamics run (default: `simulate(**given)`
+        with every row kept); `frames`: at most this many frames."""
+        from .animation import MAX_FRAMES, motion
+        from .animation_output import html_page
+        if result is None:
+            result = self.simulate(**dict(given, keep_rows=True))
+        if not result.kind.integrates or not len(result.t):
+            raise AutolevModelError("animate: a run of a CODE DYNAMICS or ODE with rows "
+                                    "is drawn")
+        m = motion(self, result, frames or MAX_FRAMES)
+        return AnimationView(html_page(m, f"{result.name} ({self.name})"), list(m.notes))
 
     def latex(self, code=None) -> str:
         """The equations of motion of a CODE DYNAMICS or ODE (`code`: which, as

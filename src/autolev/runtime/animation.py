@@ -57,9 +57,9 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sm
 
-from .runtime.errors import AutolevModelError
-from .runtime.numerics.inputs import Inputs, display_name
-from .runtime.vector import Vector
+from .errors import AutolevModelError
+from .numerics.inputs import Inputs, display_name
+from .vector import Vector
 
 # frames drawn at most: more rows are sampled evenly (the page and the GIF stay small)
 MAX_FRAMES = 400

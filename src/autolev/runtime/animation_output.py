@@ -15,8 +15,8 @@ from time import monotonic
 import numpy as np
 
 from .animation import MARGIN, Motion, grid_lines
-from .runtime.errors import AutolevModelError
-from .runtime.outputs import temporary_beside, write_whole
+from .errors import AutolevModelError
+from .outputs import temporary_beside, write_whole
 
 # the 3-D view the GIF is drawn in (the page starts from it too): radians about up, right
 YAW, PITCH = 0.6, 0.4
@@ -151,6 +151,11 @@ window.onresize = resize; resize();
 
 
 def write_html(m: Motion, path: Path, title: str) -> Path:
+    return write_whole(Path(path), html_page(m, title))
+
+
+def html_page(m: Motion, title: str) -> str:
+    """The self-contained page of the motion: a 3-D view to rotate, a time slider."""
     centres, width = m.view()
     data = {"frame": m.frame, "names": m.names, "edges": m.edges, "kinds": m.kinds,
             "colours": COLOURS, "centers": m.centers, "labelled": m.labelled,
@@ -159,8 +164,7 @@ def write_html(m: Motion, path: Path, title: str) -> Path:
             "grid": m.grid(), "gridColours": [GRID_COLOURS[False], GRID_COLOURS[True]],
             "axes": m.basis.T.tolist(),
             "xyz": np.round(m.picture, 12).tolist()}
-    page = PAGE.replace("@TITLE@", html.escape(title)).replace("@DATA@", _script_json(data))
-    return write_whole(Path(path), page)
+    return PAGE.replace("@TITLE@", html.escape(title)).replace("@DATA@", _script_json(data))
 
 
 # -- GIF and MP4 ------------------------------------------------------------------------------
