@@ -68,12 +68,13 @@ def to_sympy_frame(frame: "Frame"):
             sg = me.ReferenceFrame(g.name)
             dcm = to_sympy_expr(scene, f.dcm(g), mapping)     # f_i . g_j
             sg.orient_explicit(cache[f], dcm.T)               # sympy: g.dcm(f) = dcm^T
+            # kept before its angular velocity is read: W_B_N> is often given in B itself
+            cache[g] = sg
             try:
                 w = to_sympy_vector(g.ang_vel_in(f), mapping=mapping)
                 sg.set_ang_vel(cache[f], w)
             except AutolevModelError:
                 pass
-            cache[g] = sg
             todo.append(g)
     return cache[frame]
 

@@ -548,6 +548,20 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
             if d not in self.defs.rhs:
                 self.define(d, self.defs.zify(self.defs.dt(v)))
 
+    def to_mechanics(self):
+        """The model as sympy.physics.mechanics objects (frames, points, particles and
+        rigid bodies, loads, kinematical equations) with a KanesMethod whose equations
+        sympy formed itself: a Handoff (runtime/handoff.py)."""
+        from .handoff import handoff
+        return handoff(self)
+
+    def to_pydy(self, infile=None, **overrides):
+        """A pydy.system.System (PyDy is an optional extra) of to_mechanics()'s
+        KanesMethod, with the constants and initial conditions a run takes (INPUT, the
+        .in file `infile`, then `overrides` in the quantities' units)."""
+        from .handoff import to_pydy
+        return to_pydy(self, infile, overrides or None)
+
     def to_sympy(self, value):
         """An expression, matrix or vector as plain sympy (dynamicsymbols, expanded)."""
         if isinstance(value, Vector):

@@ -1,0 +1,153 @@
+"""A model handed over to sympy.physics.mechanics (and PyDy): its frames oriented as the
+model orients them, its points with their velocities, its particles and rigid bodies
+with masses and central inertias, its loads, the kinematical differential equations,
+and a KanesMethod with Kane's equations formed by sympy itself.
+
+Everything is plain sympy: variables become dynamicsymbols, every definition and Z is
+expanded (interop.py).  A model whose speeds are constrained (dependent or auxiliary
+speeds) is refused here; its equations go over at the equations level
+(`autolev convert --to sympy`, `Model.symbolic_system()`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import symbols as S
+from .errors import AutolevModelError
+from .interop import dynamic_map, to_sympy_expr, to_sympy_frame, to_sympy_vector
+
+
+@dataclass
+class Handoff:
+    """The model as sympy.physics.mechanics objects; `kane` has its equations formed."""
+
+    newtonian: object           # the Newtonian ReferenceFrame
+    frames: dict                # name -> ReferenceFrame
+    points: dict                # name -> Point (those with a mass, or a load)
+    bodies: list                # Particle and RigidBody objects
+    loads: list                 # (Point, force) and (ReferenceFrame, torque)
+    coordinates: list           # dynamicsymbols
+    speeds: list                # dynamicsymbols
+    kinematical_equations: list  # q' - f(q, u), each 0
+    kane: object                # KanesMethod, kanes_equations done
+    specified: list             # dynamicsymbols of the specified quantities
+    states: dict                # the model's coordinate or speed -> its dynamicsymbol
+
+
+def _dyadic(model, dyadic, frames: dict, mapping: dict):
+    """A sympy dyadic equal to the model's: sum m_ij a_i|b_j over its frame pairs."""
+    import sympy.physics.mechanics as me
+    total = me.Dyadic(0)
+    for (fa, fb), m in dyadic.terms.items():
+        sa, sb = frames[fa.name], frames[fb.name]
+        units_a, units_b = (sa.x, sa.y, sa.z), (sb.x, sb.y, sb.z)
+        for i in range(3):
+            for j in range(3):
+                value = to_sympy_expr(model.scene, m[i, j], mapping)
+                if value != 0:
+                    total += value * (units_a[i] | units_b[j])
+    return total
+
+
+def _frames(model) -> dict:
+    """Every frame reachable from the Newtonian one, by name."""
+    from .frame import Frame
+    newtonian = to_sympy_frame(model.newtonian_frame)
+    known = model.scene.derived.table("sympy frames")
+    return {f.name: sf for f, sf in known.items() if isinstance(f, Frame)} | \
+        {model.newtonian_frame.name: newtonian}
+
+
+def handoff(model) -> Handoff:
+    """The model as sympy.physics.mechanics objects, Kane's equations formed by sympy's
+    KanesMethod (AutolevModelError for what it does not take: constrained speeds, a
+    body or load in a frame not oriented in the Newtonian frame)."""
+    import sympy.physics.mechanics as me
+    if model.newtonian_frame is None:
+        raise AutolevModelError("the mechanics hand-off needs a NEWTONIAN frame")
+    if model.dependent_speeds or model.auxiliary_speeds:
+        raise AutolevModelError(
+            "the mechanics hand-off takes models without dependent or auxiliary speeds; "
+            "this model's equations go over at the equations level (autolev convert --to "
+            "sympy, Model.symbolic_system())")
+    mapping = dynamic_map(model.scene)
+    frames = _frames(model)
+    newtonian = frames[model.newtonian_frame.name]
+    n_frame = model.newtonian_frame
+
+    def frame_of(f):
+        if f.name not in frames:
+            raise AutolevModelError(f"frame {f.name} is not oriented in the Newtonian "
+                                    f"frame {n_frame.name}")
+        return frames[f.name]
+    points: dict = {}
+
+    def point_of(p):
+        if p.name not in points:
+            sp = me.Point(p.name)
+            sp.set_vel(newtonian, to_sympy_vector(p.vel(n_frame), mapping=mapping))
+            points[p.name] = sp
+        return points[p.name]
+    bodies = []
+    for particle in model.particles_list:
+        if particle.mass is None:
+            raise AutolevModelError(f"the mass of particle {particle.name} is not given")
+        bodies.append(me.Particle(particle.name, point_of(particle.point),
+                                  to_sympy_expr(model.scene, particle.mass, mapping)))
+    for body in model.bodies_list:
+        frame_of(body)
+        inertia = _dyadic(model, body.central_inertia, frames, mapping)
+        bodies.append(me.RigidBody(body.name, point_of(body.masscenter), frames[body.name],
+                                   to_sympy_expr(model.scene, body.mass_checked(), mapping),
+                                   (inertia, point_of(body.masscenter))))
+    loads = [(point_of(p), to_sympy_vector(v, mapping=mapping))
+             for p, v in model.forces.items()]
+    loads += [(frame_of(f), to_sympy_vector(v, mapping=mapping))
+              for f, v in model.torques.items()]
+    coordinates = [mapping[q] for q in model.coordinates]
+    speeds, kinematics = [], []
+    kin = model.kinematical_equations
+    time = me.dynamicsymbols._t
+    for u in model.speeds:
+        base, order = S.base_and_order(u)
+        # a speed that is a coordinate's rate (Q'' declared): a speed of its own in sympy
+        speeds.append(me.dynamicsymbols(f"{base.name}_rate") if order else mapping[u])
+    for q in model.coordinates:
+        rate = kin[S.derivative(q)]
+        if rate in model.speeds:
+            rate_expr = speeds[model.speeds.index(rate)]
+        else:
+            rate_expr = to_sympy_expr(model.scene, rate, mapping)
+        kinematics.append(mapping[q].diff(time) - rate_expr)
+    kane = me.KanesMethod(newtonian, q_ind=coordinates, u_ind=speeds, kd_eqs=kinematics)
+    kane.kanes_equations(bodies, loads)
+    specified = [mapping[s] for s, info in model.info.items()
+                 if info.kind == "specified" and not S.base_and_order(s)[1]]
+    states = {q: mapping[q] for q in model.coordinates} | dict(zip(model.speeds, speeds))
+    return Handoff(newtonian, frames, points, bodies, loads, coordinates, speeds,
+                   kinematics, kane, specified, states)
+
+
+def to_pydy(model, infile=None, overrides=None):
+    """A pydy.system.System of the model (PyDy is an optional extra): sympy's
+    KanesMethod of `handoff`; the constants and initial conditions a run of its first
+    CODE DYNAMICS takes (INPUT, then the .in file `infile`, then `overrides` in the
+    quantities' units: AutolevModelError naming those without a value); specified
+    quantities 0; times from TINITIAL to TFINAL every INTEGSTP."""
+    try:
+        from pydy.system import System
+    except ImportError:
+        raise ImportError("Model.to_pydy needs PyDy (pip install pydy)") from None
+    from .equations_of import equations_of
+    h = handoff(model)
+    eqs = equations_of(model, model.command_to_linearize(), infile=infile,
+                      overrides=overrides)
+    run = eqs.integration
+    steps = max(1, int(round((run["TFINAL"] - run["TINITIAL"]) / run["INTEGSTP"])))
+    return System(h.kane, constants=dict(eqs.constants),
+                  specifieds={s: 0.0 for s in h.specified} or None,
+                  initial_conditions={h.states[x]: v for x, v in eqs.initial.items()
+                                      if x in h.states},
+                  times=np.linspace(run["TINITIAL"], run["TFINAL"], steps + 1))
