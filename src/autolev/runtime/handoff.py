@@ -52,12 +52,17 @@ def _dyadic(model, dyadic, frames: dict, mapping: dict):
 
 
 def _frames(model) -> dict:
-    """Every frame reachable from the Newtonian one, by name."""
-    from .frame import Frame
-    newtonian = to_sympy_frame(model.newtonian_frame)
+    """Every frame oriented, through others, in the Newtonian one: its sympy frame, by
+    name (one tree of orientations, rooted at the Newtonian frame)."""
+    to_sympy_frame(model.newtonian_frame)
     known = model.scene.derived.table("sympy frames")
-    return {f.name: sf for f, sf in known.items() if isinstance(f, Frame)} | \
-        {model.newtonian_frame.name: newtonian}
+    reached, todo = {model.newtonian_frame}, [model.newtonian_frame]
+    while todo:
+        for g in todo.pop().oriented_neighbours():
+            if g not in reached and g in known:
+                reached.add(g)
+                todo.append(g)
+    return {f.name: known[f] for f in reached}
 
 
 def handoff(model) -> Handoff:
