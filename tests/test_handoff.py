@@ -33,7 +33,10 @@ def test_sympys_kanes_method_gives_our_rates(name):
     specified = {s: 0 for s in h.specified}
     rng = np.random.default_rng(11)
     dummy = sm.symbols(f"x0:{len(x)}")
-    fn = sm.lambdify([*dummy, *system.params, time],
+    # constants are plain symbols of their names, as a SymPy user writes them
+    params = [sm.Symbol(str(c)) for c in system.params]
+    assert h.kane.forcing_full.free_symbols - {time} <= set(params)
+    fn = sm.lambdify([*dummy, *params, time],
                      sm.Matrix(rates).xreplace(dict(zip(x, dummy))).xreplace(specified))
     for _ in range(5):
         p = rng.uniform(0.5, 1.5, len(system.params))
@@ -64,3 +67,43 @@ def test_pydy_integrates_the_handed_model_as_simulate_does():
     for j, state in enumerate(system.states):
         ours_name = next(str(s) for s, v in h.states.items() if v == state)
         assert np.allclose(rows[:, j], ours[ours_name], atol=1e-5), ours_name
+
+
+INCLINE = """NEWTONIAN N
+FRAMES P
+PARTICLES B
+MOTIONVARIABLES' X''
+CONSTANTS THETA, G, M
+SIMPROT(N, P, 3, THETA)
+P_NO_B> = X*P1>
+V_B_N> = DT(P_NO_B>, N)
+MASS B = M
+GRAVITY(-G*N2>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT THETA = 30 DEG, G = 9.81, M = 2
+CODE DYNAMICS() incline.c
+"""
+
+
+def test_a_constant_in_an_orientation_is_the_same_plain_symbol_everywhere(tmp_path):
+    # a block sliding down a plane tilted by THETA: by hand, X'' = -G sin(THETA)
+    path = tmp_path / "incline.al"
+    path.write_text(INCLINE)
+    h = autolev.load(path).to_mechanics()
+    theta, g = sm.Symbol("THETA"), sm.Symbol("G")
+    rates = h.kane.mass_matrix_full.LUsolve(h.kane.forcing_full)
+    assert sm.simplify(rates[1] + g * sm.sin(theta)) == 0
+    assert {s.name for s in rates.free_symbols} == {"THETA", "G", "t"}   # M cancels
+
+
+def test_a_frame_goes_over_turned_the_way_the_model_turns_it(tmp_path):
+    # SIMPROT(N, A, 3, Q): by the right-hand rule A1> = cos(Q) N1> + sin(Q) N2>
+    path = tmp_path / "turned.al"
+    path.write_text("NEWTONIAN N\nFRAMES A\nVARIABLES Q\nSIMPROT(N, A, 3, Q)\n")
+    model = autolev.load(path)
+    a = model.to_sympy(model.entity("A").unit(1))
+    n = model.entity("N").to_sympy()
+    q = sm.Function("Q")(sm.Symbol("t"))
+    assert sm.simplify(a.dot(n.x) - sm.cos(q)) == 0
+    assert sm.simplify(a.dot(n.y) - sm.sin(q)) == 0

@@ -3,8 +3,9 @@ model orients them, its points with their velocities, its particles and rigid bo
 with masses and central inertias, its loads, the kinematical differential equations,
 and a KanesMethod with Kane's equations formed by sympy itself.
 
-Everything is plain sympy: variables become dynamicsymbols, every definition and Z is
-expanded (interop.py).  A model whose speeds are constrained (dependent or auxiliary
+Everything is plain sympy: variables become dynamicsymbols, constants plain symbols of
+their names (`sm.Symbol('K')` is the model's K), every definition and Z is expanded
+(interop.py).  A model whose speeds are constrained (dependent or auxiliary
 speeds) is refused here; its equations go over at the equations level
 (`autolev convert --to sympy`, `Model.symbolic_system()`).
 """
@@ -13,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import sympy as sm
 
 from . import symbols as S
 from .errors import AutolevModelError
@@ -36,12 +38,15 @@ class Handoff:
     states: dict                # the model's coordinate or speed -> its dynamicsymbol
 
 
-def _dyadic(model, dyadic, frames: dict, mapping: dict):
+def _dyadic(model, dyadic, made: dict, mapping: dict):
     """A sympy dyadic equal to the model's: sum m_ij a_i|b_j over its frame pairs."""
     import sympy.physics.mechanics as me
     total = me.Dyadic(0)
     for (fa, fb), m in dyadic.terms.items():
-        sa, sb = frames[fa.name], frames[fb.name]
+        if fa not in made or fb not in made:
+            raise AutolevModelError(f"an inertia is given in frame {fa.name} or {fb.name}, "
+                                    "not oriented in the Newtonian frame")
+        sa, sb = made[fa], made[fb]
         units_a, units_b = (sa.x, sa.y, sa.z), (sb.x, sb.y, sb.z)
         for i in range(3):
             for j in range(3):
@@ -51,18 +56,12 @@ def _dyadic(model, dyadic, frames: dict, mapping: dict):
     return total
 
 
-def _frames(model) -> dict:
-    """Every frame oriented, through others, in the Newtonian one: its sympy frame, by
-    name (one tree of orientations, rooted at the Newtonian frame)."""
-    to_sympy_frame(model.newtonian_frame)
-    known = model.scene.derived.table("sympy frames")
-    reached, todo = {model.newtonian_frame}, [model.newtonian_frame]
-    while todo:
-        for g in todo.pop().oriented_neighbours():
-            if g not in reached and g in known:
-                reached.add(g)
-                todo.append(g)
-    return {f.name: known[f] for f in reached}
+def _frames(model, mapping: dict) -> dict:
+    """Every frame oriented, through others, in the Newtonian one: {Frame: its sympy
+    ReferenceFrame}, made with `mapping` (one tree of orientations from N)."""
+    made: dict = {}
+    to_sympy_frame(model.newtonian_frame, mapping, made)
+    return made
 
 
 def handoff(model) -> Handoff:
@@ -78,21 +77,30 @@ def handoff(model) -> Handoff:
             "this model's equations go over at the equations level (autolev convert --to "
             "sympy, Model.symbolic_system())")
     mapping = dynamic_map(model.scene)
-    frames = _frames(model)
-    newtonian = frames[model.newtonian_frame.name]
+    # constants as a SymPy user writes them: sm.Symbol('K') is the model's K
+    mapping.update({c: sm.Symbol(c.name) for c, info in model.info.items()
+                    if info.kind == "constant"})
+    made = _frames(model, mapping)
+    frames = {f.name: sf for f, sf in made.items()}
     n_frame = model.newtonian_frame
+    newtonian = made[n_frame]
 
     def frame_of(f):
-        if f.name not in frames:
+        if f not in made:
             raise AutolevModelError(f"frame {f.name} is not oriented in the Newtonian "
                                     f"frame {n_frame.name}")
-        return frames[f.name]
+        return made[f]
+
+    def vector(v):
+        for f in v.terms:
+            frame_of(f)
+        return to_sympy_vector(v, frames=made, mapping=mapping)
     points: dict = {}
 
     def point_of(p):
         if p.name not in points:
             sp = me.Point(p.name)
-            sp.set_vel(newtonian, to_sympy_vector(p.vel(n_frame), mapping=mapping))
+            sp.set_vel(newtonian, vector(p.vel(n_frame)))
             points[p.name] = sp
         return points[p.name]
     bodies = []
@@ -102,15 +110,12 @@ def handoff(model) -> Handoff:
         bodies.append(me.Particle(particle.name, point_of(particle.point),
                                   to_sympy_expr(model.scene, particle.mass, mapping)))
     for body in model.bodies_list:
-        frame_of(body)
-        inertia = _dyadic(model, body.central_inertia, frames, mapping)
-        bodies.append(me.RigidBody(body.name, point_of(body.masscenter), frames[body.name],
+        inertia = _dyadic(model, body.central_inertia, made, mapping)
+        bodies.append(me.RigidBody(body.name, point_of(body.masscenter), frame_of(body),
                                    to_sympy_expr(model.scene, body.mass_checked(), mapping),
                                    (inertia, point_of(body.masscenter))))
-    loads = [(point_of(p), to_sympy_vector(v, mapping=mapping))
-             for p, v in model.forces.items()]
-    loads += [(frame_of(f), to_sympy_vector(v, mapping=mapping))
-              for f, v in model.torques.items()]
+    loads = [(point_of(p), vector(v)) for p, v in model.forces.items()]
+    loads += [(frame_of(f), vector(v)) for f, v in model.torques.items()]
     coordinates = [mapping[q] for q in model.coordinates]
     speeds, kinematics = [], []
     kin = model.kinematical_equations
@@ -151,7 +156,7 @@ def to_pydy(model, infile=None, overrides=None):
                       overrides=overrides)
     run = eqs.integration
     steps = max(1, int(round((run["TFINAL"] - run["TINITIAL"]) / run["INTEGSTP"])))
-    return System(h.kane, constants=dict(eqs.constants),
+    return System(h.kane, constants={sm.Symbol(c.name): v for c, v in eqs.constants.items()},
                   specifieds={s: 0.0 for s in h.specified} or None,
                   initial_conditions={h.states[x]: v for x, v in eqs.initial.items()
                                       if x in h.states},

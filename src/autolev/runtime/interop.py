@@ -48,14 +48,17 @@ def to_sympy_expr(scene: "Scene", expr, mapping: dict | None = None):
     return scene.defs.explicit(expr).xreplace(mapping)
 
 
-def to_sympy_frame(frame: "Frame"):
-    """A sympy ReferenceFrame oriented as `frame` is (through the model's frames)."""
+def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | None = None):
+    """A sympy ReferenceFrame oriented as `frame` is (through the model's frames).
+    `mapping` and `cache` ({Frame: ReferenceFrame}): a translation of the symbols of
+    one's own, with the frames it makes (default: the model's, kept with it)."""
     me = _mechanics()
     scene = frame.scene
-    cache = scene.derived.table("sympy frames")
+    if cache is None:
+        cache = scene.derived.table("sympy frames")
     if frame in cache:
         return cache[frame]
-    mapping = dynamic_map(scene)
+    mapping = mapping if mapping is not None else dynamic_map(scene)
     # orient every frame reachable from this one along a spanning tree of the edges
     root = frame
     todo = [root]
@@ -67,11 +70,11 @@ def to_sympy_frame(frame: "Frame"):
                 continue
             sg = me.ReferenceFrame(g.name)
             dcm = to_sympy_expr(scene, f.dcm(g), mapping)     # f_i . g_j
-            sg.orient_explicit(cache[f], dcm.T)               # sympy: g.dcm(f) = dcm^T
+            sg.orient_explicit(cache[f], dcm)                 # sympy: f.dcm(g) = dcm
             # kept before its angular velocity is read: W_B_N> is often given in B itself
             cache[g] = sg
             try:
-                w = to_sympy_vector(g.ang_vel_in(f), mapping=mapping)
+                w = to_sympy_vector(g.ang_vel_in(f), frames=cache, mapping=mapping)
                 sg.set_ang_vel(cache[f], w)
             except AutolevModelError:
                 pass
@@ -84,7 +87,7 @@ def to_sympy_vector(v: "Vector", frames: dict | None = None, mapping: dict | Non
     me = _mechanics()
     total = me.Vector(0)
     for f, comps in v.terms.items():
-        sf = (frames or {}).get(f) or to_sympy_frame(f)
+        sf = (frames or {}).get(f) or to_sympy_frame(f, mapping, frames)
         m = mapping if mapping is not None else dynamic_map(f.scene)
         c = [to_sympy_expr(f.scene, x, m) for x in comps]
         total += c[0] * sf.x + c[1] * sf.y + c[2] * sf.z
