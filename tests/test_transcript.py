@@ -295,6 +295,25 @@ def test_run_files_and_macros_are_shown_as_they_ran_and_the_transcript_replays(t
     assert report.error is None and report.count("match") == 3
 
 
+def test_a_run_file_run_by_a_run_file_is_shown_once_as_it_ran(tmp_path):
+    # BioMAC's gait2dc_stick.al RUNs gait2dc_FK.al, which RUNs gait2dc_kin.al: the inner
+    # RUN's statements stand in its place, the RUN itself is not shown (it would run the
+    # file a second time, declaring every body again, or not be found elsewhere)
+    model = tmp_path / "model"
+    model.mkdir()
+    (model / "kin.al").write_text("CONSTANTS L\n")
+    (model / "fk.al").write_text("RUN kin.al\nX = 3*L\n")
+    (model / "main.al").write_text("RUN fk.al\nW = X + 1\n")
+    text = transcript(model / "main.al")
+    assert "RUN" not in text
+    assert text.splitlines()[:3] == ["   (1) CONSTANTS L", "   (2) X = 3*L", "-> (3) X = 3*L"]
+    elsewhere = tmp_path / "tr"
+    elsewhere.mkdir()
+    (elsewhere / "main.all").write_text(text)
+    report = autolev.verify(elsewhere / "main.all")
+    assert report.error is None and report.count("match") == 2
+
+
 @pytest.mark.parametrize("text, said", [
     ("CONSTANTS A, B\nX = A + B\nY = A*B\n\nM = [1, 2, 3]\nN = INV(M)\n",
      ":6:9: error: INV takes a square matrix"),

@@ -236,6 +236,8 @@ def _as_run(lines: list[str], program: ir.Program) -> tuple[list[str], dict[int,
     session"); and the line each statement ends at, by the statement's id."""
     brought: dict[int, list[ir.Statement]] = {}     # by the RUN's or the call's line
     for st in program.statements:
+        if isinstance(st, (ir.Run, ir.MacroCall)):
+            continue      # a RUN or call inside a RUN file: its statements are brought too
         if st.span is not None and st.span.start.via is not None:
             where = st.span.start.via
             while where.via is not None:
