@@ -336,3 +336,18 @@ def test_responses_read_in_chunks_keep_their_places(tmp_path, monkeypatch):
     f.write_text("\n".join(lines) + "\n")
     report = autolev.verify(f)
     assert [o.status for o in report.outcomes] == ["match"] * 4 + ["mismatch"] + ["match"] * 3
+
+
+def test_a_sum_printed_with_rounded_coefficients_matches_its_zero(tmp_path):
+    # X is 0 for every A; Autolev printed it with eight digits, so it cancels only to
+    # about 1e-8 of its largest term: equal as far as the printed digits go.  A sum whose
+    # difference is larger than that stays a mismatch.
+    f = tmp_path / "zero.al"
+    f.write_text("CONSTANTS A\nX = SIN(A)^2 + COS(A)^2 - 1\n"
+                 "% -> X = 1.0000000*SIN(A)^2 + 0.99999999*COS(A)^2 - 1\n"
+                 "Y = SIN(A)^2 + COS(A)^2 - 1\n"
+                 "% -> Y = SIN(A)^2 + 0.999*COS(A)^2 - 1\n")
+    report = autolev.verify(f)
+    x, y = report.outcomes
+    assert x.status == "match" and "largest term" in x.detail
+    assert y.status == "mismatch"
