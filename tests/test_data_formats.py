@@ -123,6 +123,7 @@ def test_plot_draws_the_chosen_columns_against_the_runs_time(tmp_path, capsys,
 
 
 def test_plot_of_a_column_no_run_writes_is_refused_before_the_run(tmp_path, capsys):
+    pytest.importorskip("matplotlib", reason="without matplotlib --plot is refused first")
     out = tmp_path / "o"
     assert main(["run", str(EXAMPLES / "double_pendulum.al"), "--out", str(out),
                  "--plot", "Q1,Q9", "-q"]) == 2
