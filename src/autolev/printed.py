@@ -74,11 +74,17 @@ class _Reader:
     def peek(self) -> tuple[str, str, int] | None:
         return self.tokens[self.at] if self.at < len(self.tokens) else None
 
-    def take(self, mark: str) -> None:
+    def skip(self, mark: str) -> bool:
+        """Consume `mark` when it is the next token; whether it was."""
         token = self.peek()
-        if token is None or token[0] != "mark" or token[1] != mark:
+        if token is not None and token[0] == "mark" and token[1] == mark:
+            self.at += 1
+            return True
+        return False
+
+    def take(self, mark: str) -> None:
+        if not self.skip(mark):
             raise _NotPlain
-        self.at += 1
 
     def expr(self, level: int = 1) -> ir.Expr:
         left = self.operand()
@@ -113,25 +119,19 @@ class _Reader:
             return ir.Number(text, span=self.span)
         if kind == "vector":
             name = text.rstrip(">")
-            if name not in "01" and not _plain_name(name):
+            if name not in ("0", "1") and not _plain_name(name):
                 raise _NotPlain
             return ir.VectorName(name, text.endswith(">>"), span=self.span)
         if kind != "name" or not _plain_name(text):
             raise _NotPlain
-        following = self.peek()
-        if following is not None and following[:2] == ("mark", "("):
-            self.at += 1
+        if self.skip("("):
             args = []
-            if self.peek() is not None and self.peek()[:2] == ("mark", ")"):
-                self.at += 1
-                return ir.Call(text, (), span=self.span)
-            while True:
+            if not self.skip(")"):
                 args.append(self.expr())
-                if self.peek() is not None and self.peek()[:2] == ("mark", ","):
-                    self.at += 1
-                    continue
+                while self.skip(","):
+                    args.append(self.expr())
                 self.take(")")
-                return ir.Call(text, tuple(args), span=self.span)
+            return ir.Call(text, tuple(args), span=self.span)
         primes, end = 0, start + len(text)
         while (following := self.peek()) is not None and following[:2] == ("mark", "'"):
             if following[2] != end:       # a prime must follow the name directly

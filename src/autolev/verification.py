@@ -145,8 +145,9 @@ def parse_responses(session: Session) -> tuple[dict[int, ParsedResponse], dict[i
             by_grammar.append(k)
         else:
             parsed[k] = ParsedResponse(*plain)
-    texts = {k: (f"{r.lhs} = {r.expr}" if r.expr else r.lhs)
-             for k, r in ((k, session.responses[k]) for k in by_grammar)}
+    responses = session.responses
+    texts = {k: f"{responses[k].lhs} = {responses[k].expr}" if responses[k].expr
+             else responses[k].lhs for k in by_grammar}
     first = 0
     while first < len(by_grammar):
         last, size = first, 0
