@@ -351,3 +351,43 @@ def test_a_sum_printed_with_rounded_coefficients_matches_its_zero(tmp_path):
     x, y = report.outcomes
     assert x.status == "match" and "largest term" in x.detail
     assert y.status == "mismatch"
+
+
+def test_a_speed_defined_after_a_response_is_free_there(tmp_path):
+    # (3) printed U1 + U2 before CONSTRAIN defined U2 = K*U1: Autolev's response keeps
+    # U2 a name of its own, so ours is taken with U2 free there, not with its later value
+    session = tmp_path / "later.all"
+    session.write_text(
+        "   (1) NEWTONIAN N\n"
+        "   (2) VARIABLES U{2}'\n"
+        "   (3) CONSTANTS K\n"
+        "   (4) W = U1 + U2\n"
+        "-> (5) W = U1 + U2\n\n"
+        "   (6) DEPENDENT[1] = U2 - K*U1\n"
+        "-> (7) DEPENDENT[1] = U2 - K*U1\n\n"
+        "   (8) CONSTRAIN(DEPENDENT[U2])\n"
+        "-> (9) U2 = K*U1\n\n"
+        "  (10) V = U1 + U2\n"
+        "-> (11) V = U1 + K*U1\n\n")
+    report = autolev.verify(session)
+    assert report.error is None
+    by_name = {o.response.lhs: o.status for o in report.outcomes}
+    # V's response, after the CONSTRAIN, is U2 = K*U1 worked in: were the value U2 was
+    # given free at (5) kept for (11), ours (U1 + U2, U2 free) would differ from it
+    assert by_name["W"] == "match" and by_name["V"] == "match"
+
+
+def test_responses_share_one_record_of_the_definitions_known_between_definitions():
+    # thousands of responses each kept the whole table (3 GB for BioMAC's gait3d FK)
+    from autolev.runtime.calculus import Definitions
+    from autolev.runtime.symbols import Z
+    import sympy as sm
+    defs = Definitions()
+    a, b, x = sm.symbols("a b x")
+    defs.define(a, x + 1)
+    first = defs.user_definitions()
+    defs.define(Z("Z1"), x ** 2)                  # a Z names an expression: no new record
+    assert defs.user_definitions() is first and first == {a: x + 1}
+    defs.define(b, 2 * a)
+    assert defs.user_definitions() == {a: x + 1, b: 2 * a}
+    assert first == {a: x + 1}                    # the earlier record as it was

@@ -352,6 +352,7 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
         report.error = replayed.error
         return report
     model = replayed.model
+    points = _SamplePoints(model, points)
     for k, r in enumerate(session.responses):
         if k in refused:
             report.outcomes.append(Outcome(r, "not comparable", refused[k]))
@@ -366,14 +367,14 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
             if sym is None:
                 report.outcomes.append(Outcome(r, "not comparable", replayed.ours_missing[k]))
                 continue
-            o = _compare(model, r, sym, replayed.theirs[k], None, session.path, points,
+            o = _compare(points.wanted(None), r, sym, replayed.theirs[k], session.path,
                          tolerance)
             o.detail += " (a name the engine defines, compared with its definition)"
             report.outcomes.append(o)
         else:
             ours, known = replayed.ours[k]
-            report.outcomes.append(_compare(model, r, ours, replayed.theirs[k], known,
-                                            session.path, points, tolerance))
+            report.outcomes.append(_compare(points.wanted(known), r, ours,
+                                            replayed.theirs[k], session.path, tolerance))
     _judge_z_responses(session, parsed, report)
     return report
 
@@ -431,25 +432,70 @@ class NotComparable(Exception):
     pass
 
 
+class _SamplePoints:
+    """The points of one verification, each with the values of the definitions taken
+    there: responses printed with the same definitions known share them (a definition
+    is evaluated once per point, not once per response using it).  Only the points of
+    the latest set of definitions are kept: responses come in the session's order."""
+
+    def __init__(self, model, count: int):
+        self.model, self.count = model, count
+        self.newton = model.newtonian_frame or next(iter(model.frames_by_name.values()),
+                                                    None)
+        self.user_symbols = [s for s in model.defs.rhs if not isinstance(s, Z)]
+        self._free_of: tuple = (None, frozenset())   # (known, the definitions not in it)
+        self._points: dict[frozenset, list[NumericPoint]] = {}
+
+    def wanted(self, known: dict | None) -> "_PointSet":
+        """The points for a response printed with the definitions `known` made (None:
+        every definition counts).  A definition made only after the response is free
+        there (a later CONSTRAIN defines the dependent speeds): it gets a value of its
+        own.  Z's keep their values: each names an expression, whatever is defined."""
+        if known is None:
+            free = frozenset()
+        elif self._free_of[0] is known:
+            free = self._free_of[1]
+        else:
+            free = frozenset(s for s in self.user_symbols if s not in known)
+            self._free_of = (known, free)
+        if free not in self._points:
+            self._points = {free: [self._point(seed, span, free) for seed, span in _POINTS]}
+        return _PointSet(self.newton, self._points[free], self.count)
+
+    def _point(self, seed: int, span: tuple, free: frozenset) -> NumericPoint:
+        point = NumericPoint(self.model.defs, seed=seed, span=span)
+        # Euler parameters of unit length, as Autolev's responses assume
+        for quaternion in self.model.unit_quaternions:
+            parameters = [e for e in quaternion
+                          if isinstance(e, Symbol) and e not in self.model.defs.rhs]
+            if len(parameters) == 4:
+                values = [float(point.value(e, {})) for e in parameters]
+                norm = math.sqrt(sum(v * v for v in values))
+                point.values.update({e: v / norm for e, v in zip(parameters, values)})
+        for s in free:
+            point.cache[s] = point.value(s, {})
+        return point
+
+
+@dataclass(frozen=True)
+class _PointSet:
+    """The points a response is compared at, in order (it is compared at the first
+    `count` where both values are real), and the frame vectors are measured in."""
+
+    newton: object
+    points: list
+    count: int
+
+
 class _Comparison:
     """One response against our value: what evaluating both needs at every point."""
 
-    def __init__(self, model, r: Response, ours, theirs, known):
-        self.model, self.defs = model, model.defs
-        self.response, self.ours, self.theirs, self.known = r, ours, theirs, known
-        self.newton = model.newtonian_frame or next(iter(model.frames_by_name.values()),
-                                                    None)
+    def __init__(self, at: _PointSet, r: Response, ours, theirs):
+        self.at, self.newton, self.defs = at, at.newton, at.points[0].defs
+        self.response, self.ours, self.theirs = r, ours, theirs
 
     def values_at(self, point: NumericPoint):
         """(ours, Autolev's) at one point, as complex arrays of the same shape."""
-        self._normalize_quaternions(point)
-        if self.known is not None:
-            # names defined only after the response are free there (a later CONSTRAIN
-            # defines the dependent speeds): they get values of their own.  Z's made
-            # later name expressions, whatever is defined: they keep their values
-            for s in self.defs.rhs:
-                if s not in self.known and not isinstance(s, Z):
-                    point.cache[s] = point.value(s, {})
         at = _AtPoint(self, point)
         theirs = np.asarray(at.value(self.theirs), dtype=complex)
         mine = np.asarray(at.value(self.ours), dtype=complex)
@@ -459,15 +505,6 @@ class _Comparison:
                                     f"{theirs.shape}")
             mine = mine.reshape(theirs.shape)
         return mine, theirs
-
-    def _normalize_quaternions(self, point: NumericPoint) -> None:
-        """Euler parameters of unit length, as Autolev's responses assume."""
-        for quaternion in self.model.unit_quaternions:
-            free = [e for e in quaternion if isinstance(e, Symbol) and e not in self.defs.rhs]
-            if len(free) == 4:
-                values = [float(point.value(e, {})) for e in free]
-                norm = math.sqrt(sum(v * v for v in values))
-                point.values.update({e: v / norm for e, v in zip(free, values)})
 
 
 class _AtPoint:
@@ -505,12 +542,11 @@ class _AtPoint:
         return self.num(v)
 
 
-def _compare(model, r: Response, ours, theirs, known, path: str, points: int,
-             tol: float) -> Outcome:
+def _compare(at: _PointSet, r: Response, ours, theirs, path: str, tol: float) -> Outcome:
     """Our value against Autolev's response at sample points: match within `tol`,
     mismatch, or not comparable."""
-    comparison = _Comparison(model, r, ours, theirs, known)
-    sampled = _sample(comparison, path, points)
+    comparison = _Comparison(at, r, ours, theirs)
+    sampled = _sample(comparison, path)
     if isinstance(sampled, Outcome):
         return sampled
     a, b = sampled
@@ -522,7 +558,7 @@ def _compare(model, r: Response, ours, theirs, known, path: str, points: int,
         return Outcome(r, "match", f"relative difference {err:.1e}", a[0], b[0])
     # a sum printed with rounded coefficients cancels to zero only as far as they go:
     # its difference is judged against its largest term (a constraint's zero[1])
-    largest = _largest_term(comparison, points)
+    largest = _largest_term(comparison)
     if largest > scale and difference <= tol * largest:
         return Outcome(r, "match", f"relative difference {difference / largest:.1e} of its "
                        "largest term (a sum that cancels to zero)", a[0], b[0])
@@ -530,15 +566,15 @@ def _compare(model, r: Response, ours, theirs, known, path: str, points: int,
                    a[0], b[0])
 
 
-def _largest_term(comparison: _Comparison, points: int) -> float:
+def _largest_term(comparison: _Comparison) -> float:
     """The largest magnitude of a term of Autolev's value (a scalar sum) at the first
     sample points; 0 for any other value."""
     theirs = comparison.theirs
     if not isinstance(theirs, sm.Add):
         return 0.0
     largest = 0.0
-    for seed, span in _POINTS[:points]:
-        at = _AtPoint(comparison, NumericPoint(comparison.defs, seed=seed, span=span))
+    for point in comparison.at.points[:comparison.at.count]:
+        at = _AtPoint(comparison, point)
         try:
             largest = max(largest, max(abs(at.num(term)) for term in theirs.args))
         except (NotComparable, ZeroDivisionError, OverflowError, ValueError):
@@ -546,17 +582,17 @@ def _largest_term(comparison: _Comparison, points: int) -> float:
     return largest if math.isfinite(largest) else 0.0
 
 
-def _sample(comparison: _Comparison, path: str, points: int):
-    """(ours, Autolev's) at up to `points` points, as arrays, or the Outcome of a
+def _sample(comparison: _Comparison, path: str):
+    """(ours, Autolev's) at up to `count` points, as arrays, or the Outcome of a
     response that cannot be evaluated.  The points are those where both values are
     real: equal expressions may take different branches of a root or logarithm where
     they are complex (Euler parameters far from unit length make 1 - Z10^2 negative)."""
     r = comparison.response
+    count = comparison.at.count
     ours_all, theirs_all, complex_pairs = [], [], []
-    for seed, span in _POINTS:
+    for point in comparison.at.points:
         try:
-            mine, theirs = comparison.values_at(NumericPoint(comparison.defs, seed=seed,
-                                                             span=span))
+            mine, theirs = comparison.values_at(point)
         except NotComparable as exc:
             return Outcome(r, "not comparable", str(exc))
         except (ZeroDivisionError, OverflowError) as exc:
@@ -571,9 +607,9 @@ def _sample(comparison: _Comparison, path: str, points: int):
         if _is_real(mine) and _is_real(theirs):
             ours_all.append(mine)
             theirs_all.append(theirs)
-            if len(ours_all) == points:
+            if len(ours_all) == count:
                 break
-        elif len(complex_pairs) < points:
+        elif len(complex_pairs) < count:
             complex_pairs.append((mine, theirs))
     if not ours_all:
         if any(np.isnan(m).any() or np.isnan(t).any() for m, t in complex_pairs):

@@ -266,6 +266,7 @@ class Definitions:
         self.user_version = 0
         self._views: dict = {}      # id of an as_of snapshot -> (snapshot, its version)
         self._view_count = 0
+        self._user_definitions: tuple = (None, {})   # (user_version, the definitions then)
 
     # -- the table -------------------------------------------------------------
     def define(self, sym: sm.Symbol, expr) -> None:
@@ -285,8 +286,13 @@ class Definitions:
         self._fo.pop(sym, None)
 
     def user_definitions(self) -> dict:
-        """The definitions the model made (not the Z's), as they stand now."""
-        return {s: e for s, e in self.rhs.items() if not isinstance(s, Z)}
+        """The definitions the model made (not the Z's), as they stand now: one dict while
+        no definition is made, never to be changed (verify keeps one with each of
+        thousands of responses, and as_of knows a snapshot by its identity)."""
+        if self._user_definitions[0] != self.user_version:
+            self._user_definitions = (self.user_version, {
+                s: e for s, e in self.rhs.items() if not isinstance(s, Z)})
+        return self._user_definitions[1]
 
     @contextmanager
     def as_of(self, user_definitions: Mapping | None):

@@ -78,7 +78,7 @@ PROBES = "__probes__"
 class Probe:
     """A value a consumer of the module reads from it (autolev verify, transcript): the
     value of `expr` after the model's statements up to line `after` of its file, kept
-    with the definitions known then as `PROBES[key] = (value, {symbol: definition})`.
+    with the definitions made then as `PROBES[key] = (value, model.defs.user_definitions())`.
     `binds` names the value for the probes after it (Autolev's Z7 of a response)."""
 
     key: str
@@ -294,7 +294,7 @@ class Translator:
             return
         finally:
             self._probing = False
-        self.emit(f"{PROBES}[{probe.key!r}] = ({value.code}, dict(model.defs.rhs))")
+        self.emit(f"{PROBES}[{probe.key!r}] = ({value.code}, model.defs.user_definitions())")
         if probe.binds is not None:
             self.probe_names[probe.binds.lower()] = Entry(
                 f"{PROBES}[{probe.key!r}][0]", NameKind.VALUE, value.type)
