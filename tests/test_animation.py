@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import autolev
+from autolev.cli import main as cli_main
 from autolev.runtime import animation, animation_output
 from autolev.runtime import AutolevModelError
 from helpers import EXAMPLES
@@ -45,8 +46,8 @@ def test_a_length_only_the_figure_uses_comes_from_input(tmp_path):
     # E given nowhere: P_P_Q> is left out, the arm NO-P is drawn
     m = animation.motion(model, result)
     assert m.names == ["NO", "P"] and m.edges == [(0, 1)]
-    assert m.notes == ["E has no value (no INPUT gives it and the run does not need it): "
-                       "P_P_Q> not drawn"]
+    assert m.notes == ["E has no value (neither INPUT nor --set gives it and the run does "
+                       "not need it): P_P_Q> not drawn"]
     th = m.times[-1]
     assert np.allclose(m.xyz[-1, 1], [2 * math.cos(th), 2 * math.sin(th), 0])
     path.write_text(path.read_text().replace("D = 2", "D = 2, E = 0.5"))
@@ -56,6 +57,29 @@ def test_a_length_only_the_figure_uses_comes_from_input(tmp_path):
     assert np.allclose(m.xyz[-1, 1], [2 * math.cos(th), 2 * math.sin(th), 0])
     assert np.allclose(m.xyz[-1, 2], m.xyz[-1, 1] + 0.5 * np.array(
         [-math.sin(th), math.cos(th), 0]))
+
+
+def test_a_length_only_the_figure_uses_comes_from_set(tmp_path, capsys):
+    # --set E=0.5 reached the run only ("not an input ... ignored there"): the figure
+    # left P_P_Q> out for want of E, though the user gave it
+    path = tmp_path / "arm.al"
+    path.write_text("NEWTONIAN N\nFRAMES A\nPOINTS P, Q\nVARIABLES TH'\nCONSTANTS D, E\n"
+                    "SIMPROT(N, A, 3, TH)\nTH' = 1\nP_NO_P> = D*A1>\nP_P_Q> = E*A2>\n"
+                    "INPUT TH = 0, D = 2, TFINAL = 1\nOUTPUT T, TH\nCODE ODE() arm.c\n")
+    model = autolev.load(path)
+    result = model.simulate(keep_rows=True)
+    m = animation.motion(model, result, overrides={"e": "0.5", "D": 3})
+    assert m.names == ["NO", "P", "Q"] and not m.notes
+    th = m.times[-1]
+    # INPUT D = 2 is the run's (D enters no equation either: the figure takes --set's 3)
+    assert np.allclose(m.xyz[-1, 1], [3 * math.cos(th), 3 * math.sin(th), 0])
+    assert np.allclose(m.xyz[-1, 2] - m.xyz[-1, 1], [-0.5 * math.sin(th),
+                                                     0.5 * math.cos(th), 0])
+    out = tmp_path / "out"
+    assert cli_main(["animate", str(path), "--out", str(out), "--format", "html",
+                             "--set", "E=0.5"]) == 0
+    assert "P_P_Q> not drawn" not in capsys.readouterr().err
+    assert '"Q"' in (out / "arm.html").read_text()
 
 
 def test_a_model_with_nothing_located_says_so(tmp_path):

@@ -204,7 +204,7 @@ def cmd_animate(ns: argparse.Namespace) -> int:
 def _animate(model, result, out_dir: Path, ns, label: str) -> list[Path]:
     from ..runtime.animation import MAX_FRAMES, motion
     from ..runtime.animation_output import write_html, write_movie
-    m = motion(model, result, ns.frames or MAX_FRAMES)
+    m = motion(model, result, ns.frames or MAX_FRAMES, _run_overrides(ns))
     for note in m.notes:
         print(f"{label}: note: {note}", file=sys.stderr)
     formats = ns.formats or ["html"] + (["gif"] if has_matplotlib() else [])

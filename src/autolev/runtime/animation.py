@@ -186,8 +186,10 @@ class _Link:
     locality: tuple                  # smaller is more local (see _locality)
 
 
-def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
-    """The figure's motion over a run's rows (at most max_frames of them, evenly)."""
+def motion(model, result, max_frames: int = MAX_FRAMES, overrides=None) -> Motion:
+    """The figure's motion over a run's rows (at most max_frames of them, evenly).
+    `overrides` {NAME: value in the quantity's unit}: the values given to the run
+    (`--set`), for constants only the figure uses (a drawn link's length)."""
     if result.system is None or not len(result.t):
         raise AutolevModelError("the run has no rows to animate")
     if len(result.t) != len(result.states):
@@ -200,7 +202,8 @@ def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
     gravity = model.gravity_vectors[:1]
     unknown = _given_nowhere(model, result.system,
                              [e for link in links for e in link.vector.to_matrix(newtonian)]
-                             + [e for g in gravity for e in g.to_matrix(newtonian)])
+                             + [e for g in gravity for e in g.to_matrix(newtonian)],
+                             overrides)
     notes = []
     if unknown:             # leave out what needs them: the rest of the figure is drawn
 
@@ -214,8 +217,9 @@ def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
         gravity = [g for g in gravity if usable(g)]
         names = sorted(display_name(k) for k in unknown)
         one = len(names) == 1
-        notes.append(f"{', '.join(names)} {'has' if one else 'have'} no value (no INPUT "
-                     f"gives {'it' if one else 'them'} and the run does not need "
+        notes.append(f"{', '.join(names)} {'has' if one else 'have'} no value (neither "
+                     f"INPUT nor --set gives {'it' if one else 'them'} and the run does "
+                     f"not need "
                      f"{'it' if one else 'them'}): "
                      + "; ".join(([f"{_some(left_out)} not drawn"] if left_out else [])
                                  + (["down not known from GRAVITY"] if down_unknown else [])))
@@ -224,7 +228,7 @@ def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
     rows = np.unique(np.linspace(0, len(result.t) - 1, min(max_frames, len(result.t)))
                      .round().astype(int))
     times = np.asarray(result.t)[rows]
-    evaluate = _evaluator(model, result.system, exprs, "autolev_figure")
+    evaluate = _evaluator(model, result.system, exprs, "autolev_figure", overrides)
     values = np.array([evaluate(result.t[k], result.states[k]) for k in rows])
     probe = evaluate(result.t[0], _probe_state(result.states[0]))
     down = values[0, 6 * len(links):] if gravity else np.zeros(3)
@@ -233,7 +237,7 @@ def motion(model, result, max_frames: int = MAX_FRAMES) -> Motion:
     per_link = values[:, :6 * len(links)].reshape(len(rows), len(links), 6)
     figure = _Figure(model, points, links, per_link, probe[:6 * len(links)])
     triads = not figure.segments and bool(_turning_bodies(model))
-    d = _triads(model, result, rows) if triads else figure.drawing()
+    d = _triads(model, result, rows, overrides) if triads else figure.drawing()
     if not d.names:
         raise AutolevModelError(
             "there is no figure to draw: no positions link the points (P_A_B>) and no body "
@@ -474,13 +478,13 @@ def _turning_bodies(model) -> list:
     return found
 
 
-def _triads(model, result, rows) -> _Drawing:
+def _triads(model, result, rows, overrides) -> _Drawing:
     """Each body's unit axes over the rows, drawn from one point per body."""
     bodies = _turning_bodies(model)
     every = np.arange(len(result.t))
     axes = []                                              # [.., i, j] = Ni . Bj
     for body, how, exprs in bodies:
-        evaluate = _evaluator(model, result.system, exprs, "autolev_triads")
+        evaluate = _evaluator(model, result.system, exprs, "autolev_triads", overrides)
         if how == "dcm":
             axes.append(np.array([evaluate(result.t[k], result.states[k]) for k in rows])
                         .reshape(len(rows), 3, 3))
@@ -541,27 +545,40 @@ def view_basis(down, xyz) -> np.ndarray:
     return np.array([np.cross(up, depth), up, depth])
 
 
-def _evaluator(model, system, exprs, name):
-    """f(t, x) -> values of exprs, with INPUT values for constants only they use."""
-    return system.evaluator(exprs, name, _geometry_values(model, system, exprs))
+def _evaluator(model, system, exprs, name, overrides):
+    """f(t, x) -> values of exprs, with the given values (INPUT, then `overrides`) of the
+    constants only they use."""
+    return system.evaluator(exprs, name, _geometry_values(model, system, exprs, overrides))
 
 
-def _given_nowhere(model, system, exprs) -> set:
-    """The constants exprs need that neither the run nor an INPUT statement gives."""
+def _given_nowhere(model, system, exprs, overrides) -> set:
+    """The constants exprs need that neither the run, nor an INPUT statement, nor
+    `overrides` gives."""
     lacking = system.lacking(exprs)
-    return set(Inputs(model, lacking, ()).missing(lacking)) if lacking else set()
+    if not lacking:
+        return set()
+    return set(_figure_inputs(model, lacking, overrides).missing(lacking))
 
 
-def _geometry_values(model, system, exprs) -> dict:
+def _figure_inputs(model, lacking: list, overrides) -> Inputs:
+    """The values of the constants only the figure uses: INPUT, then `overrides`."""
+    inputs = Inputs(model, lacking, ())
+    for name, value in (overrides or {}).items():
+        if inputs.lookup(name) is not None:
+            inputs.set(name, value)
+    return inputs
+
+
+def _geometry_values(model, system, exprs, overrides) -> dict:
     """Values of the constants only the figure uses (a link length the equations do not
-    need), from the model's INPUT statements."""
+    need), from the model's INPUT statements and `overrides`."""
     lacking = system.lacking(exprs)
     if not lacking:
         return {}
-    inputs = Inputs(model, lacking, ())
+    inputs = _figure_inputs(model, lacking, overrides)
     missing = inputs.missing(lacking)
     if missing:
         raise AutolevModelError("the figure needs values the run does not: "
                                 + ", ".join(display_name(k) for k in missing)
-                                + " (give them INPUT values in the model)")
+                                + " (give them INPUT values in the model, or --set)")
     return {k: inputs.internal(k) for k in lacking}

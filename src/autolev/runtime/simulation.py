@@ -192,7 +192,7 @@ class SimulationMixin:
         if not result.kind.integrates or not len(result.t):
             raise AutolevModelError("animate: a run of a CODE DYNAMICS or ODE with rows "
                                     "is drawn")
-        m = motion(self, result, frames or MAX_FRAMES)
+        m = motion(self, result, frames or MAX_FRAMES, given.get("overrides"))
         return AnimationView(html_page(m, f"{result.name} ({self.name})"), list(m.notes))
 
     def latex(self, code=None) -> str:
