@@ -459,3 +459,40 @@ def test_follow_modes_keeps_a_mode_in_its_column_where_sorting_swaps_them():
     order = follow_modes(values, vectors)
     followed = np.take_along_axis(values, order, axis=1)
     assert np.allclose(followed[:, 0].real, p) and np.allclose(followed[:, 1].real, 1 - p)
+
+
+def _jacobians_of(model):
+    """The compiled Jacobians of the model's one linearized system."""
+    systems = [entry[1] for entry in model.derived.table("numeric systems").values()]
+    found = [j for system in systems for j in system.jacobians.values()]
+    assert len(found) == 1
+    return found[0]
+
+
+def test_one_linearization_waits_for_no_compiler_and_a_sweep_compiles_when_it_pays(
+        tmp_path, monkeypatch):
+    # BICYCLE14: one linearization spent 4 minutes in gcc on 11 MB of C, evaluated once
+    from autolev.runtime.numerics import codegen, linearize as linearize_module
+    path = tmp_path / "pendulum.al"
+    path.write_text(PENDULUM)
+    model = autolev.load(path)
+    g, L, q = 9.81, 2.0, 0.3
+    by_hand = [[0, 1], [-g / L * math.cos(q), 0]]
+    monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE", 1e9)
+    first = model.linearize({"Q": q})
+    jacobians = _jacobians_of(model)
+    assert jacobians.rhs.backend == "python" and jacobians.evaluations == 1
+    for _ in range(3):                           # compiling does not pay yet
+        model.linearize({"Q": q})
+    assert _jacobians_of(model) is jacobians and jacobians.evaluations == 4
+    if codegen.compiler() is None:
+        pytest.skip("no C compiler: the Jacobians stay Python (tested above)")
+    # the evaluations have cost what compiling is predicted to: the next one compiles
+    monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE", 0.0)
+    compiled = model.linearize({"Q": q})
+    assert _jacobians_of(model).rhs.backend == "c"
+    assert np.allclose(first.A, by_hand, rtol=1e-14)
+    assert np.allclose(compiled.A, first.A, rtol=1e-14) and np.allclose(compiled.C, first.C,
+                                                                          rtol=1e-14)
+    model.linearize({"Q": q})
+    assert _jacobians_of(model).rhs.backend == "c"          # compiled once

@@ -19,6 +19,7 @@ dq_dep = -G_dep^-1 G_ind dq_ind (G = dg/dx at the point).
 """
 from __future__ import annotations
 
+import time
 import warnings
 from dataclasses import dataclass, field, replace
 
@@ -187,10 +188,16 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     jacobians = system.jacobians.get(key)
     if jacobians is None:           # once per system: a sweep, and a later process, reuse them
         with model.defs.as_of(command.definitions), SlowStep(
-                progress, f"CODE DYNAMICS {command.filename}: forming and compiling the "
-                "Jacobians"):
+                progress, f"CODE DYNAMICS {command.filename}: forming the Jacobians"):
+            jacobians = system.jacobians[key] = _jacobian_functions(
+                system, chosen, n_columns, "python" if backend == "auto" else backend)
+        to_be_kept(model)
+    elif backend == "auto" and jacobians.compiling_pays():
+        with model.defs.as_of(command.definitions), SlowStep(
+                progress, f"CODE DYNAMICS {command.filename}: compiling the Jacobians (a "
+                f"sweep of {jacobians.evaluations} points so far)"):
             jacobians = system.jacobians[key] = _jacobian_functions(system, chosen,
-                                                                    n_columns, backend)
+                                                                    n_columns, "auto")
         to_be_kept(model)
     t0 = prepared.inputs.internal("TINITIAL")
     x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
@@ -387,12 +394,34 @@ def _chosen_inputs(model, system, names) -> list:
     return chosen
 
 
+# seconds gcc takes per byte of the Python source of the same program (BICYCLE14's
+# Jacobians: 7 MB of Python, 60 s of gcc on an idle core; see bench/large_models.py)
+C_SECONDS_PER_SOURCE_BYTE = 1e-5
+
+
 @dataclass
 class _Jacobians:
+    """The compiled Jacobians of one system.  One linearization never waits for a
+    compiler: they are Python first, and compiled to C (backend "auto", a compiler
+    there) once the linearizations using them (a sweep's points, later runs reading
+    them from the cache) have spent, evaluating them, what compiling is predicted to
+    cost: never more than twice what the better choice, made knowing how many there
+    would be, costs (the rent-or-buy rule)."""
+
     rhs: object             # values and Jacobian of the right-hand side
     outputs: object         # values-free Jacobian of the OUTPUT columns
     n_rhs: int
     n_out: int
+    compiled: bool         # C was tried (it is C, unless the compiler failed)
+    evaluations: int = 0
+    seconds: float = 0.0    # spent evaluating them
+
+    def compiling_pays(self) -> bool:
+        if self.compiled or codegen.compiler() is None:
+            return False
+        predicted = C_SECONDS_PER_SOURCE_BYTE * (len(self.rhs.source)
+                                                 + len(self.outputs.source))
+        return self.seconds >= predicted
 
 
 def _jacobian_functions(system, chosen: list, n_columns: int, backend: str) -> _Jacobians:
@@ -415,13 +444,16 @@ def _jacobian_functions(system, chosen: list, n_columns: int, backend: str) -> _
     out_fn = compile_program(
         codegen.Program(dict(given, a=accels), [d for row in out_jac for d in row], defs,
                         fixed).build(), backend, "autolev_linear_outputs")
-    return _Jacobians(rhs_fn, out_fn, len(rhs), len(out_exprs))
+    return _Jacobians(rhs_fn, out_fn, len(rhs), len(out_exprs), backend != "python")
 
 
 def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linearization:
     nx, nv, n = system.nstate, system.nstate + len(chosen), len(system.implicit_unknowns)
     out = np.empty(jac.n_rhs * (1 + nv))
+    start = time.perf_counter()
     jac.rhs.call(np.array([t0]), x0, system.constant_values, s0, out)
+    jac.seconds += time.perf_counter() - start
+    jac.evaluations += 1
     values, grads = out[:jac.n_rhs], out[jac.n_rhs:].reshape(jac.n_rhs, nv)
     rates = values[:nx].copy()
     jrates = grads[:nx].copy()
@@ -454,7 +486,9 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
         daccel = np.zeros((0, nv))
     ny = jac.n_out
     jy = np.empty(ny * (nv + n))
+    start = time.perf_counter()
     jac.outputs.call(np.array([t0]), x0, system.constant_values, s0, accelerations, jy)
+    jac.seconds += time.perf_counter() - start
     jy = jy.reshape(ny, nv + n)
     through_accelerations = jy[:, nv:nv + n] @ daccel if n else np.zeros((ny, nv))
     jout = jy[:, :nv] + through_accelerations
