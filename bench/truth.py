@@ -377,6 +377,10 @@ def main() -> int:
                     help="the folder of reference runs (index.tsv and one folder per run)")
     ns = ap.parse_args()
     TRUTH = ns.truth
+    if not (TRUTH / "index.tsv").is_file():
+        print(f"truth.py: no reference runs at {TRUTH} (index.tsv); give --truth DIR",
+              file=sys.stderr)
+        return 2
     models = dict(corpus_models(ns.corpus))
     rows = [r for r in csv.DictReader(open(TRUTH / "index.tsv"), delimiter="\t")
             if r["status"].startswith(("ok", "failed")) and r["run"] != "-"]
