@@ -1,9 +1,10 @@
 """`autolev convert --to sympy`: a model as a standalone SymPy script, runnable without
 autolev (it imports only sympy, numpy and scipy).
 
-The script is written at the equations level: the CODE command's state, its rates
-(the kinematical and other explicit differential equations) and the mass matrix and
-forcing from which the other rates are solved, with every intermediate (Autolev's Z's,
+Here, the equations level (export_mechanics.py writes the mechanics level, and
+chooses): the CODE command's state, its rates (the kinematical and other explicit
+differential equations) and the mass matrix and forcing from which the other rates are
+solved, with every intermediate (Autolev's Z's,
 the model's definitions) a named assignment in the order it is computed, as sympy
 expressions in dynamicsymbols.  It reads what `autolev run` integrates (the command's
 NumericSystem and inputs), so the two agree by construction of the same equations, not
