@@ -47,8 +47,7 @@ class MechanicsPrinter(ScriptPrinter):
 
     def _print_Derivative(self, expr):
         (variable, count), = expr.variable_count
-        if variable != S.TIME and str(variable) != "t" or not isinstance(expr.expr,
-                                                                         AppliedUndef):
+        if variable != me.dynamicsymbols._t or not isinstance(expr.expr, AppliedUndef):
             raise AutolevModelError(f"the SymPy export cannot write the derivative {expr}")
         order = f", {count}" if count > 1 else ""
         return f"{self._print(expr.expr)}.diff(t{order})"
@@ -315,16 +314,13 @@ def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Hando
         h = handoff(model)
     except AutolevModelError as exc:
         return str(exc), None
-    if not _same_rates(h, eqs):
-        return ("sympy's KanesMethod on the model's bodies and loads does not give the "
-                "equations the run integrates (its equations are not FR() + FRSTAR() "
-                "alone)"), None
-    return None, h
+    why = _unlike_the_run(h, eqs)
+    return (why, None) if why else (None, h)
 
 
-def _same_rates(h: Handoff, eqs: Equations) -> bool:
-    """Whether sympy's equations give the run's rates at a random state and constants
-    (specified quantities and their derivatives 0)."""
+def _unlike_the_run(h: Handoff, eqs: Equations) -> str | None:
+    """Why sympy's equations are not the run's, found at a random state and constants
+    (specified quantities and their derivatives 0); None when they give its rates."""
     rng = np.random.default_rng(33)
     ours = {x: sm.Float(v) for x, v in zip(eqs.states, rng.uniform(-1, 1, len(eqs.states)))}
     ours |= {c: sm.Float(v) for c, v in zip(eqs.constants, rng.uniform(0.5, 1.5,
@@ -347,9 +343,12 @@ def _same_rates(h: Handoff, eqs: Equations) -> bool:
     full = full.xreplace({f: 0 for f in full.atoms(AppliedUndef)})
     full = full.xreplace({me.dynamicsymbols._t: sm.Float(0.3)})
     if full.free_symbols:
-        return False                # a constant the run's equations do not have
+        return ("sympy's equations keep constants the run's do not have ("
+                + ", ".join(sorted(str(c) for c in full.free_symbols)) + ")")
     order = [(h.coordinates + h.speeds).index(h.states[x]) for x in eqs.states]
     sympys = np.linalg.solve(np.array(full[:, :-1], dtype=float),
                              np.array(full[:, -1], dtype=float).ravel())[order]
-    scale = max(1.0, float(np.abs(rates).max()))
-    return bool(np.all(np.abs(sympys - rates) <= 1e-8 * scale))
+    if np.all(np.abs(sympys - rates) <= 1e-8 * max(1.0, float(np.abs(rates).max()))):
+        return None
+    return ("sympy's KanesMethod on the model's bodies and loads does not give the "
+            "equations the run integrates (they are not FR() + FRSTAR() alone)")
