@@ -1,7 +1,7 @@
-"""`autolev convert --to sympy` (issue 33): every shipped example with equations of
-motion becomes a script that needs only sympy, numpy and scipy; its equations give our
-compiled right-hand side's rates at random states and constants, and its integration
-gives `simulate`'s rows (the same method and tolerances)."""
+"""`autolev convert --to sympy --level equations` (issue 33): every shipped example with
+equations of motion becomes a script that needs only sympy, numpy and scipy; its
+equations give our compiled right-hand side's rates at random states and constants, and
+its integration gives `simulate`'s rows (the same method and tolerances)."""
 import runpy
 import subprocess
 import sys
@@ -28,8 +28,9 @@ WITHOUT_AUTOLEV = ("import runpy, sys; sys.modules['autolev'] = None; "
 def scripts(tmp_path_factory):
     folder = tmp_path_factory.mktemp("sympy")
     for name in EXAMPLES_WITH_DYNAMICS:
-        assert main(["convert", "--to", "sympy", str(EXAMPLES / f"{name}.al"),
-                     "-o", str(folder / f"{name}_sympy.py"), "-q"]) == 0
+        assert main(["convert", "--to", "sympy", "--level", "equations",
+                     str(EXAMPLES / f"{name}.al"), "-o", str(folder / f"{name}_sympy.py"),
+                     "-q"]) == 0
     return folder
 
 

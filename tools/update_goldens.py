@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Regenerate tests/golden/NAME.py from autolev_examples/NAME.al, and the Python of
-every case of tests/fixtures/constructs.txt, showing the diff.
+"""Regenerate tests/golden/NAME.py from autolev_examples/NAME.al, its SymPy script
+(`autolev convert --to sympy`) tests/golden/sympy/NAME_sympy.py, and the Python of every
+case of tests/fixtures/constructs.txt, showing the diff.
 
     python tools/update_goldens.py            # write the changes, print the diff
     python tools/update_goldens.py --check    # only report which goldens differ
@@ -23,24 +24,33 @@ from helpers import constructs  # noqa: E402
 
 EXAMPLES = ROOT / "autolev_examples"
 GOLDEN = ROOT / "tests" / "golden"
+SYMPY_GOLDEN = GOLDEN / "sympy"
 
 
 def golden_text(model: Path) -> str:
     return autolev.transpile(model)
 
 
+def sympy_golden_text(model: Path) -> str:
+    """The example's SymPy script at the level `auto` chooses."""
+    return autolev.export_sympy(autolev.load(model), model.name)
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--check", action="store_true", help="write nothing")
     ns = ap.parse_args()
-    GOLDEN.mkdir(parents=True, exist_ok=True)
+    SYMPY_GOLDEN.mkdir(parents=True, exist_ok=True)
     changed = 0
-    goldens = [(GOLDEN / (model.stem + ".py"), model) for model in sorted(EXAMPLES.glob("*.al"))]
-    for target, model in goldens + [(constructs.FIXTURE, None)]:
+    examples = sorted(EXAMPLES.glob("*.al"))
+    goldens = [(GOLDEN / (model.stem + ".py"), model, golden_text) for model in examples]
+    goldens += [(SYMPY_GOLDEN / (model.stem + "_sympy.py"), model, sympy_golden_text)
+                for model in examples]
+    for target, model, text_of in goldens + [(constructs.FIXTURE, None, None)]:
         if model is None:
             old, new = constructs.updated()
         else:
-            new = golden_text(model)
+            new = text_of(model)
             old = target.read_text() if target.exists() else ""
         if new == old:
             continue

@@ -6,8 +6,9 @@
 `parse` reads a model into the IR and raises `AutolevSyntaxError` (carrying every
 diagnostic) when it cannot.  `translation` and `transpile` translate it, `load` builds
 its `Model`, `verify` replays Autolev's recorded responses against it, `grid` makes
-the points of a parameter study and `write_programs` writes a model's CODE programs in
-Autolev's layout.  A bug in autolev itself is `AutolevInternalError`.
+the points of a parameter study, `write_programs` writes a model's CODE programs in
+Autolev's layout and `export_sympy` a loaded model as a standalone SymPy script.  A bug
+in autolev itself is `AutolevInternalError`.
 """
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ from .ir import Program
 
 __version__ = "0.1.0"
 __all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "write_programs",
-           "Program",
+           "export_sympy", "Program",
            "AutolevError", "AutolevSyntaxError", "AutolevTranslationError",
            "AutolevRuntimeError", "AutolevFileError", "AutolevInternalError", "Diagnostic",
            "Location", "Span", "__version__"]
@@ -27,7 +28,7 @@ __all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "write
 # the stages are imported on first use, so that `import autolev` stays cheap
 _LAZY = {"parse": ".pipeline", "translation": ".pipeline", "transpile": ".pipeline",
          "load": ".loader", "verify": ".verification", "grid": ".runtime.studies",
-         "write_programs": ".programs"}
+         "write_programs": ".programs", "export_sympy": ".export_mechanics"}
 
 
 def __getattr__(name: str):

@@ -1,9 +1,10 @@
 """`autolev convert --to sympy`: a model as a standalone SymPy script, runnable without
 autolev (it imports only sympy, numpy and scipy).
 
-The script is written at the equations level: the CODE command's state, its rates
-(the kinematical and other explicit differential equations) and the mass matrix and
-forcing from which the other rates are solved, with every intermediate (Autolev's Z's,
+Here, the equations level (export_mechanics.py writes the mechanics level, and
+chooses): the CODE command's state, its rates (the kinematical and other explicit
+differential equations) and the mass matrix and forcing from which the other rates are
+solved, with every intermediate (Autolev's Z's,
 the model's definitions) a named assignment in the order it is computed, as sympy
 expressions in dynamicsymbols.  It reads what `autolev run` integrates (the command's
 NumericSystem and inputs), so the two agree by construction of the same equations, not
@@ -16,13 +17,14 @@ from __future__ import annotations
 import keyword
 import math
 import re
+import textwrap
 
 import sympy as sm
 from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
 from .runtime import symbols as S
-from .runtime.equations_of import Equations, equations_of, state_of
+from .runtime.equations_of import Equations, state_of
 from .runtime.errors import AutolevModelError
 
 # names the script itself defines: a model's quantity of the same name is renamed
@@ -93,8 +95,9 @@ def identifier(name: str, taken: set) -> str:
     return out
 
 
-def sympy_script(eqs: Equations, source: str) -> str:
-    """The standalone script of `eqs` (see the module's docstring)."""
+def sympy_script(eqs: Equations, source: str, why: str | None = None) -> str:
+    """The standalone script of `eqs` (see the module's docstring); `why`: why the
+    model is written at this level rather than the mechanics level, said at its top."""
     taken: set = set()
     names: dict = {S.TIME: "t"}
     for s in eqs.states + eqs.specified + list(eqs.constants) + [s for s, _ in eqs.definitions]:
@@ -106,12 +109,14 @@ def sympy_script(eqs: Equations, source: str) -> str:
             S.base_and_order(u)[0].name + "p" * S.base_and_order(u)[1], taken)
     printer = ScriptPrinter(names)
     p = printer.doprint
-    out = [f'"""{_quoted_text(eqs.model_name)}: its equations of motion as SymPy expressions, '
-           f"written by autolev from\n{_quoted_text(source)} ({_quoted_text(eqs.command)}).",
+    out = [f'"""{quoted_text(eqs.model_name)}: its equations of motion as SymPy expressions, '
+           f"written by autolev from\n{quoted_text(source)} ({quoted_text(eqs.command)}).",
            "",
            "Level: equations.  The state, the rates given explicitly, and the mass matrix and",
            "forcing from which the other rates (`unknowns`) are solved, as Autolev's Kane's",
            "method formed them, with every intermediate (Autolev's Z's) a named assignment.",
+           *(textwrap.wrap(f"Not the mechanics level: {quoted_text(why)}.", 88) if why
+             else []),
            "Importing defines `system` (a sympy.physics.mechanics.SymbolicSystem: full_mass *",
            "d(states)/dt = full_forcing, in the intermediates), `constants`,",
            "`initial_conditions` and `specified`;",
@@ -132,15 +137,16 @@ def sympy_script(eqs: Equations, source: str) -> str:
     if eqs.unknowns:
         out += ["", "# the rates solved from the mass matrix"]
         out += [f"{unknown_names[u]} = {names[state_of(u)]}.diff(t)" for u in eqs.unknowns]
-    before, after = _split_at_the_unknowns(eqs)
+    before, after = split_at_the_unknowns(eqs)
     if eqs.definitions:
         out += ["", "# intermediates (Autolev's Z's) and the model's definitions, as functions of",
                 "# time, and what each is, in the order they are computed; `expanded(expr)`",
                 "# replaces them in an expression"]
         out += [f"{names[z]} = me.dynamicsymbols({names[z]!r})" for z, _ in eqs.definitions]
-    out += ["intermediates = ["] + [f"    ({names[z]}, {_expression(p, e)})," for z, e in before]
+    out += ["intermediates = ["]
+    out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in before]
     out += ["]", "# those that need the solved rates (outputs only)", "after_solving = ["]
-    out += [f"    ({names[z]}, {_expression(p, e)})," for z, e in after] + ["]"]
+    out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in after] + ["]"]
     out += ["", "states = [" + ", ".join(names[x] for x in eqs.states) + "]",
             "# d(state)/dt where it is given; None where it is solved (`unknowns`)",
             "rates = [" + ", ".join("None" if r is None else p(r) for r in eqs.rates) + "]",
@@ -161,26 +167,33 @@ def sympy_script(eqs: Equations, source: str) -> str:
             "        full_mass[k, j] = mass_matrix[row, column]",
             "    full_forcing[k] = forcing[row]",
             "system = me.SymbolicSystem(states, full_forcing, mass_matrix=full_mass)",
-            "",
-            "# values (SI units, radians) from the model's INPUT statements",
-            "constants = {" + ", ".join(f"{names[c]}: {_number(v)}"
-                                        for c, v in eqs.constants.items()) + "}",
-            "initial_conditions = {" + ", ".join(f"{names[x]}: {_number(v)}"
-                                                 for x, v in eqs.initial.items()) + "}",
-            "# each a number or a function of time; 0 unless given",
-            "specified = {" + ", ".join(f"{names[s]}: 0.0" for s in eqs.specified) + "}",
-            "integration = {" + ", ".join(f"{k!r}: {_number(v)}"
-                                          for k, v in eqs.integration.items()) + "}",
-            "# OUTPUT columns: (label, unit, expression in the unit)",
-            "outputs = ["]
-    for label, unit, expr, degrees in eqs.outputs:
-        shown = p(expr) + (" * 180 / sm.pi" if degrees else "")
-        out.append(f"    ({label!r}, {unit!r}, {shown}),")
-    out += ["]", "", "", _RUNNER]
+            ""]
+    out += values_text(eqs, names, p)
+    out += ["", "", RUNNER]
     return "\n".join(out) + "\n"
 
 
-def _split_at_the_unknowns(eqs: Equations) -> tuple[list, list]:
+def values_text(eqs: Equations, names: dict, p) -> list:
+    """The script's `constants`, `initial_conditions`, `specified`, `integration` and
+    `outputs`, with `names` for the model's symbols and `p` printing expressions."""
+    out = ["# values (SI units, radians) from the model's INPUT statements",
+           "constants = {" + ", ".join(f"{names[c]}: {number_text(v)}"
+                                       for c, v in eqs.constants.items()) + "}",
+           "initial_conditions = {" + ", ".join(f"{names[x]}: {number_text(v)}"
+                                                for x, v in eqs.initial.items()) + "}",
+           "# each a number or a function of time; 0 unless given",
+           "specified = {" + ", ".join(f"{names[s]}: 0.0" for s in eqs.specified) + "}",
+           "integration = {" + ", ".join(f"{k!r}: {number_text(v)}"
+                                         for k, v in eqs.integration.items()) + "}",
+           "# OUTPUT columns: (label, unit, expression in the unit)",
+           "outputs = ["]
+    for label, unit, expr, degrees in eqs.outputs:
+        shown = p(expr) + (" * 180 / sm.pi" if degrees else "")
+        out.append(f"    ({label!r}, {unit!r}, {shown}),")
+    return out + ["]"]
+
+
+def split_at_the_unknowns(eqs: Equations) -> tuple[list, list]:
     """The definitions the equations need (in order), and those that need the solved
     rates, which only the outputs use."""
     late = set(eqs.unknowns)
@@ -194,13 +207,13 @@ def _split_at_the_unknowns(eqs: Equations) -> tuple[list, list]:
     return before, after
 
 
-def _expression(p, e) -> str:
+def expression_text(p, e) -> str:
     """An assignment's right side: always a sympy object (a plain 0 would be an int)."""
     text = p(e)
     return f"sm.sympify({text})" if sm.sympify(e).is_Number else text
 
 
-def _number(value) -> str:
+def number_text(value) -> str:
     if isinstance(value, int):
         return repr(value)
     if math.isfinite(value):
@@ -208,12 +221,12 @@ def _number(value) -> str:
     return f"float({str(value)!r})"
 
 
-def _quoted_text(text: str) -> str:
+def quoted_text(text: str) -> str:
     """Text from the model inside the script's docstring: no quotes or backslashes."""
     return "".join(c if c.isprintable() and c not in '"\\' else "?" for c in text)
 
 
-_RUNNER = '''def expanded(expr):
+RUNNER = '''def expanded(expr):
     """`expr` with every intermediate replaced by what it is (large for large models)."""
     for name, value in reversed(intermediates + after_solving):
         expr = expr.xreplace({name: value})
@@ -286,18 +299,3 @@ def main(argv):
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))'''
-
-
-def export_sympy(model, source: str, command=None, infile=None, overrides=None) -> str:
-    """The SymPy script of the model's first integrating CODE command (or `command`);
-    `source`: the model's file, named in the script; its values as a run takes them
-    (INPUT, then the .in file `infile`, then `overrides` in the quantities' units)."""
-    if command is None:
-        integrating = [c for c in model.code_commands if c.kind.integrates]
-        if not integrating:
-            raise AutolevModelError("the model has no CODE DYNAMICS or ODE to export "
-                                    "(its equations of motion)")
-        command = integrating[0]
-    return sympy_script(equations_of(model, command, infile=infile, overrides=overrides),
-                        source)
-

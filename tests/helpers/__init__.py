@@ -9,7 +9,8 @@ import autolev
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "autolev_examples"
 CORPUS = Path(os.environ.get("AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus"))
-SHARED = ROOT.parent / "shared"
+# the project's shared folder (beside the repository; AUTOLEV_SHARED from a worktree elsewhere)
+SHARED = Path(os.environ.get("AUTOLEV_SHARED", ROOT.parent / "shared"))
 NUMERICS_DATA = ROOT / "tests" / "data" / "numerics"
 
 

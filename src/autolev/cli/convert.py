@@ -20,6 +20,8 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     if ns.infile is not None or ns.set:
         raise UsageError("--in and --set give the values of a --to sympy script; a "
                          "module on autolev.runtime takes them when it runs")
+    if ns.level is not None:
+        raise UsageError("--level chooses the level of a --to sympy script")
     try:
         result = translation(path)
     except (AutolevSyntaxError, AutolevTranslationError) as exc:
@@ -46,7 +48,7 @@ def cmd_convert(ns: argparse.Namespace) -> int:
 
 def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
     """The model's equations of motion as a standalone SymPy script."""
-    from ..export import export_sympy
+    from ..export_mechanics import export_sympy
     from ..runtime.errors import AutolevModelError
     from ..runtime.tools import write_output
     from .common import load_model
@@ -68,7 +70,8 @@ def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
         raise UsageError(f"--set {', '.join(unknown)}: the model has no quantity of "
                          f"{'that name' if len(unknown) == 1 else 'those names'}")
     try:
-        text = export_sympy(model, path.name, infile=ns.infile, overrides=overrides)
+        text = export_sympy(model, path.name, infile=ns.infile, overrides=overrides,
+                            level=ns.level or "auto")
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
@@ -102,6 +105,12 @@ def add_convert(sub) -> None:
     convert.add_argument("--set", action="append", metavar="NAME=VALUE", default=[],
                          help="with --to sympy: a value in the quantity's own unit "
                          "(repeatable; after --in)")
+    convert.add_argument("--level", choices=("auto", "mechanics", "equations"),
+                         help="with --to sympy: mechanics (frames, points, bodies, loads "
+                         "and sympy's KanesMethod), equations (the equations of motion "
+                         "as expressions), or auto (default: mechanics when the model has "
+                         "no dependent or auxiliary speeds and at most 12 speeds, else "
+                         "equations, the reason said in the script)")
     convert.add_argument("-q", "--quiet", action="store_true")
     overwrite_option(convert)
     convert.set_defaults(func=cmd_convert)

@@ -27,7 +27,12 @@ class Handoff:
 
     newtonian: object           # the Newtonian ReferenceFrame
     frames: dict                # name -> ReferenceFrame
-    points: dict                # name -> Point (those with a mass, or a load)
+    # (parent, child, parent.dcm(child), angular velocity or None), parents first
+    orientations: list
+    points: dict                # name -> Point (those with a mass, a load or a position)
+    velocities: dict            # name -> velocity in N (the points of masses and loads)
+    # (point, from, position vector): the points located from the Newtonian origin
+    positions: list
     bodies: list                # Particle and RigidBody objects
     loads: list                 # (Point, force) and (ReferenceFrame, torque)
     coordinates: list           # dynamicsymbols
@@ -35,6 +40,7 @@ class Handoff:
     kinematical_equations: list  # q' - f(q, u), each 0
     kane: object                # KanesMethod, kanes_equations done
     specified: list             # dynamicsymbols of the specified quantities
+    constants: list             # the constants as plain symbols, in declaration order
     states: dict                # the model's coordinate or speed -> its dynamicsymbol
 
 
@@ -56,11 +62,12 @@ def _dyadic(model, dyadic, made: dict, mapping: dict):
     return total
 
 
-def _frames(model, mapping: dict) -> dict:
+def _frames(model, mapping: dict, orientations: list) -> dict:
     """Every frame oriented, through others, in the Newtonian one: {Frame: its sympy
-    ReferenceFrame}, made with `mapping` (one tree of orientations from N)."""
+    ReferenceFrame}, made with `mapping` (one tree of orientations from N, its edges
+    appended to `orientations`)."""
     made: dict = {}
-    to_sympy_frame(model.newtonian_frame, mapping, made)
+    to_sympy_frame(model.newtonian_frame, mapping, made, orientations)
     return made
 
 
@@ -80,7 +87,8 @@ def handoff(model) -> Handoff:
     # constants as a SymPy user writes them: sm.Symbol('K') is the model's K
     mapping.update({c: sm.Symbol(c.name) for c, info in model.info.items()
                     if info.kind == "constant"})
-    made = _frames(model, mapping)
+    orientations: list = []
+    made = _frames(model, mapping, orientations)
     frames = {f.name: sf for f, sf in made.items()}
     n_frame = model.newtonian_frame
     newtonian = made[n_frame]
@@ -96,12 +104,18 @@ def handoff(model) -> Handoff:
             frame_of(f)
         return to_sympy_vector(v, frames=made, mapping=mapping)
     points: dict = {}
+    velocities: dict = {}
+
+    def sympy_point(p):
+        if p.name not in points:
+            points[p.name] = me.Point(p.name)
+        return points[p.name]
 
     def point_of(p):
-        if p.name not in points:
-            sp = me.Point(p.name)
-            sp.set_vel(newtonian, vector(p.vel(n_frame)))
-            points[p.name] = sp
+        """The point with its velocity in N."""
+        if p.name not in velocities:
+            velocities[p.name] = vector(p.vel(n_frame))
+            sympy_point(p).set_vel(newtonian, velocities[p.name])
         return points[p.name]
     bodies = []
     for particle in model.particles_list:
@@ -116,6 +130,7 @@ def handoff(model) -> Handoff:
                                    (inertia, point_of(body.masscenter))))
     loads = [(point_of(p), vector(v)) for p, v in model.forces.items()]
     loads += [(frame_of(f), vector(v)) for f, v in model.torques.items()]
+    positions = _positions(n_frame, made, mapping, sympy_point)
     coordinates = [mapping[q] for q in model.coordinates]
     speeds, kinematics = [], []
     kin = model.kinematical_equations
@@ -135,9 +150,33 @@ def handoff(model) -> Handoff:
     kane.kanes_equations(bodies, loads)
     specified = [mapping[s] for s, info in model.info.items()
                  if info.kind == "specified" and not S.base_and_order(s)[1]]
+    constants = [mapping[c] for c, info in model.info.items() if info.kind == "constant"]
     states = {q: mapping[q] for q in model.coordinates} | dict(zip(model.speeds, speeds))
-    return Handoff(newtonian, frames, points, bodies, loads, coordinates, speeds,
-                   kinematics, kane, specified, states)
+    return Handoff(newtonian, frames, orientations, points, velocities, positions, bodies, loads,
+                   coordinates, speeds, kinematics, kane, specified, constants, states)
+
+
+def _positions(n_frame, made: dict, mapping: dict, sympy_point) -> list:
+    """Each point the model locates from the Newtonian origin, through others, with its
+    position from the point it was located from: one tree, as sympy points
+    (`sympy_point`) with set_pos; a position in a frame not oriented in N is left out
+    with the points located from it."""
+    origin = n_frame.declared_origin
+    if origin is None:
+        return []
+    positions, seen, todo = [], {origin}, [origin]
+    while todo:
+        p = todo.pop(0)
+        for other in p.linked_points():
+            value = other.pos_from(p)
+            if other in seen or any(f not in made for f in value.terms):
+                continue
+            seen.add(other)
+            vector = to_sympy_vector(value, frames=made, mapping=mapping)
+            sympy_point(other).set_pos(sympy_point(p), vector)
+            positions.append((sympy_point(other), sympy_point(p), vector))
+            todo.append(other)
+    return positions
 
 
 def to_pydy(model, infile=None, overrides=None):

@@ -48,10 +48,13 @@ def to_sympy_expr(scene: "Scene", expr, mapping: dict | None = None):
     return scene.defs.explicit(expr).xreplace(mapping)
 
 
-def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | None = None):
+def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | None = None,
+                   orientations: list | None = None):
     """A sympy ReferenceFrame oriented as `frame` is (through the model's frames).
     `mapping` and `cache` ({Frame: ReferenceFrame}): a translation of the symbols of
-    one's own, with the frames it makes (default: the model's, kept with it)."""
+    one's own, with the frames it makes (default: the model's, kept with it);
+    `orientations` receives each (parent, child, parent.dcm(child), angular velocity of
+    the child in the parent or None) in the order the frames are made."""
     me = _mechanics()
     scene = frame.scene
     if cache is None:
@@ -77,7 +80,9 @@ def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | No
                 w = to_sympy_vector(g.ang_vel_in(f), frames=cache, mapping=mapping)
                 sg.set_ang_vel(cache[f], w)
             except AutolevModelError:
-                pass
+                w = None
+            if orientations is not None:
+                orientations.append((cache[f], sg, dcm, w))
             todo.append(g)
     return cache[frame]
 

@@ -1,0 +1,354 @@
+"""`autolev convert --to sympy` at the mechanics level: the model written as a SymPy user
+writes one, in sympy.physics.mechanics (issue 33).
+
+The script is printed from the mechanics hand-off (runtime/handoff.py, which builds the
+same objects in memory): ReferenceFrames oriented as the model orients them
+(`orient_axis` for a simple rotation, else `orient_explicit` with the direction cosines)
+with the model's angular velocities, Points with their positions and velocities,
+Particles and RigidBodies with masses and central inertias, the loads, the kinematical
+differential equations and a KanesMethod whose equations sympy forms at import.  The
+values, the OUTPUT columns and the runner are the equations-level script's (export.py),
+so `python OUT.py` integrates and writes as that script does.
+"""
+from __future__ import annotations
+
+import numpy as np
+import sympy as sm
+import sympy.physics.mechanics as me
+from sympy.core.function import AppliedUndef
+from sympy.printing.precedence import PRECEDENCE
+
+from .export import (RUNNER, ScriptPrinter, expression_text, identifier, quoted_text,
+                     split_at_the_unknowns, sympy_script, values_text)
+from .runtime import symbols as S
+from .runtime.equations_of import Equations, equations_of, state_of
+from .runtime.errors import AutolevModelError
+from .runtime.handoff import Handoff, handoff
+
+LEVELS = ("auto", "mechanics", "equations")
+# KanesMethod forms and inverts symbolic matrices: beyond this many speeds it is slow
+MOST_SPEEDS = 12
+
+AXES = "xyz"
+# the two axes a rotation about axis k turns, in right-handed order
+_TURNED = {0: (1, 2), 1: (2, 0), 2: (0, 1)}
+
+
+class MechanicsPrinter(ScriptPrinter):
+    """Expressions, vectors and dyadics of sympy.physics.mechanics as the Python that
+    builds them, each dynamicsymbol, constant, frame and point by its identifier."""
+
+    def _print_Function(self, expr):
+        if isinstance(expr, AppliedUndef):
+            if expr not in self.names:
+                raise AutolevModelError(f"the SymPy export has no value for {expr}")
+            return self.names[expr]
+        return super()._print_Function(expr)
+
+    def _print_Derivative(self, expr):
+        (variable, count), = expr.variable_count
+        if variable != me.dynamicsymbols._t or not isinstance(expr.expr, AppliedUndef):
+            raise AutolevModelError(f"the SymPy export cannot write the derivative {expr}")
+        order = f", {count}" if count > 1 else ""
+        return f"{self._print(expr.expr)}.diff(t{order})"
+
+    def unit(self, frame, k: int) -> str:
+        return f"{self.names[frame]}.{AXES[k]}"
+
+    def vector(self, v) -> str:
+        """`c1*A.x + c2*B.y ...` (each term in the frame the model gave it)."""
+        terms = []
+        for components, frame in v.args:
+            for k, c in enumerate(components):
+                if c != 0:
+                    terms.append(self._term(c, self.unit(frame, k)))
+        return _joined(terms, "me.Vector(0)")
+
+    def dyadic(self, d, frame=None) -> str:
+        """`me.inertia(B, ...)` for a symmetric dyadic in `frame` alone, else the sum of
+        its terms `c*(A.x|B.y)`."""
+        in_frame = frame is not None and all(
+            a.args[0][1] == frame and b.args[0][1] == frame for _, a, b in d.args)
+        if in_frame:
+            m = d.to_matrix(frame)
+            if m == m.T:
+                values = [m[0, 0], m[1, 1], m[2, 2], m[0, 1], m[1, 2], m[2, 0]]
+                while len(values) > 3 and values[-1] == 0:
+                    values.pop()
+                return (f"me.inertia({self.names[frame]}, "
+                        + ", ".join(self._print(v) for v in values) + ")")
+        terms = []
+        for c, a, b in d.args:
+            terms.append(self._term(c, f"({self._unit_of(a)}|{self._unit_of(b)})"))
+        return _joined(terms, "me.Dyadic(0)")
+
+    def _unit_of(self, v) -> str:
+        (components, frame), = v.args
+        return self.unit(frame, list(components).index(1))
+
+    def _term(self, coefficient, unit: str) -> str:
+        if coefficient == 1:
+            return unit
+        if coefficient == -1:
+            return f"-{unit}"
+        return f"{self.parenthesize(coefficient, PRECEDENCE['Mul'], strict=True)}*{unit}"
+
+
+def _joined(terms: list, zero: str) -> str:
+    return " + ".join(terms).replace("+ -", "- ") if terms else zero
+
+
+def simple_rotation(dcm) -> tuple[int, object] | None:
+    """(axis 0-2, angle) when parent.dcm(child) `dcm` turns the parent about one of its
+    axes (SIMPROT's matrices), else None."""
+    for k, (i, j) in _TURNED.items():
+        others = [(r, c) for r in range(3) for c in range(3) if (r == k) != (c == k)]
+        if dcm[k, k] != 1 or any(dcm[r, c] != 0 for r, c in others):
+            continue
+        cosine = dcm[i, i]
+        if not isinstance(cosine, sm.cos):
+            continue
+        angle = cosine.args[0]
+        for turned in (angle, -angle):
+            expected = [[sm.cos(turned), -sm.sin(turned)], [sm.sin(turned), sm.cos(turned)]]
+            if all(sm.expand(dcm[a, b] - expected[x][y]) == 0
+                   for x, a in enumerate((i, j)) for y, b in enumerate((i, j))):
+                return k, turned
+    return None
+
+
+def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
+    """The mechanics-level script of the hand-off `h`, with the values, outputs and
+    integration of `eqs` (the command's equations as `autolev run` takes them)."""
+    taken: set = set()
+    names: dict = {S.TIME: "t", sm.Symbol("t"): "t"}
+    frames = [h.newtonian] + [child for _, child, _, _ in h.orientations]
+    for f in frames:
+        names[f] = identifier(f.name, taken)
+    for q in model.coordinates:
+        names[q] = names[h.states[q]] = identifier(q.name, taken)
+    for u in model.speeds:
+        names[u] = names[h.states[u]] = identifier(str(h.states[u].func), taken)
+    specified = {str(s.func): s for s in h.specified}
+    for s in eqs.specified:
+        if s.name not in specified:
+            raise AutolevModelError(f"the mechanics level has no specified quantity {s.name}")
+        names[s] = names[specified[s.name]] = identifier(s.name, taken)
+    for c in h.constants:
+        names[c] = identifier(c.name, taken)
+    plain = {c.name: c for c in h.constants}
+    for c in eqs.constants:
+        names[c] = names[plain[c.name]]
+    for name, point in h.points.items():
+        names[point] = identifier(name, taken)
+    for body in h.bodies:
+        names[body] = identifier(body.name + ("_body" if isinstance(body, me.RigidBody)
+                                              else "_particle"), taken)
+    unknown_names = {}
+    for u in eqs.unknowns:
+        base, order = S.base_and_order(u)
+        unknown_names[u] = names[u] = identifier(base.name + "p" * order, taken)
+    before, after = split_at_the_unknowns(eqs)
+    wanted = _definitions_wanted(eqs, before + after)
+    before = [(z, e) for z, e in before if z in wanted]
+    after = [(z, e) for z, e in after if z in wanted]
+    for z, _ in before + after:
+        base, order = S.base_and_order(z)
+        names[z] = identifier(base.name + "p" * order, taken)
+    printer = MechanicsPrinter(names)
+    p = printer.doprint
+    where = model.loaded.defined_at if model.loaded is not None else {}
+    out = [f'"""{quoted_text(eqs.model_name)}: the model in sympy.physics.mechanics, written '
+           f"by autolev from\n{quoted_text(source)} ({quoted_text(eqs.command)}).",
+           "",
+           "Level: mechanics.  Frames, points, particles and rigid bodies, loads and the",
+           "kinematical differential equations as the model gives them; sympy's KanesMethod",
+           "forms the equations of motion when the script is imported.  Importing defines",
+           "`kane` (its equations formed), `constants`, `initial_conditions` and `specified`;",
+           "`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy (DOP853,",
+           "RELERR and ABSERR) and writes the OUTPUT columns as CSV.",
+           '"""',
+           "import sys", "", "import numpy as np", "import sympy as sm",
+           "import sympy.physics.mechanics as me", "from scipy.integrate import solve_ivp", "",
+           "t = me.dynamicsymbols._t", "",
+           "# generalized coordinates and speeds: functions of time"]
+    for q in h.coordinates + h.speeds:
+        out.append(f"{names[q]} = me.dynamicsymbols({str(q.func)!r})")
+    if eqs.specified:
+        out += ["", "# specified quantities: functions of time (values in `specified`)"]
+        out += [f"{names[s]} = me.dynamicsymbols({str(s.func)!r})" for s in h.specified
+                if s in names]
+    if h.constants:
+        out += ["", "# constants"]
+        out += [f"{names[c]} = sm.Symbol({c.name!r})" for c in h.constants]
+    out += ["", "# reference frames, oriented as the model orients them, with its angular "
+            "velocities", f"{names[h.newtonian]} = me.ReferenceFrame({h.newtonian.name!r})"]
+    for parent, child, dcm, w in h.orientations:
+        out.append(f"{names[child]} = me.ReferenceFrame({child.name!r})")
+        rotation = simple_rotation(dcm)
+        if rotation is not None:
+            k, angle = rotation
+            out.append(f"{names[child]}.orient_axis({names[parent]}, {printer.unit(parent, k)}"
+                       f", {p(angle)})")
+        else:
+            out.append(f"{names[child]}.orient_explicit({names[parent]}, sm.Matrix(["
+                       + ", ".join("[" + ", ".join(p(e) for e in dcm.row(r)) + "]"
+                                   for r in range(3)) + "]))")
+        if w is not None:
+            out.append(f"{names[child]}.set_ang_vel({names[parent]}, {printer.vector(w)})")
+    out += ["", "# points: positions from the Newtonian origin, velocities in "
+            f"{h.newtonian.name} of those with a mass or a load"]
+    out += [f"{names[pt]} = me.Point({name!r})" for name, pt in h.points.items()]
+    for point, base, r in h.positions:
+        out.append(f"{names[point]}.set_pos({names[base]}, {printer.vector(r)})")
+    for name, v in h.velocities.items():
+        out.append(f"{names[h.points[name]]}.set_vel({names[h.newtonian]}, "
+                   f"{printer.vector(v)})")
+    out += ["", "# particles and rigid bodies: masses and central inertias"]
+    for body in h.bodies:
+        if isinstance(body, me.RigidBody):
+            dyadic, about = body.inertia
+            out.append(f"{names[body]} = me.RigidBody({body.name!r}, "
+                       f"{names[body.masscenter]}, {names[body.frame]}, {p(body.mass)}, "
+                       f"({printer.dyadic(dyadic, body.frame)}, {names[about]}))")
+        else:
+            out.append(f"{names[body]} = me.Particle({body.name!r}, {names[body.point]}, "
+                       f"{p(body.mass)})")
+    out.append("bodies = [" + ", ".join(names[b] for b in h.bodies) + "]")
+    out += ["", "# loads: forces on points, torques on frames", "loads = ["]
+    out += [f"    ({names[on]}, {printer.vector(v)})," for on, v in h.loads]
+    out += ["]", "", "# kinematical differential equations (each = 0)", "kd_eqs = ["]
+    for q, equation in zip(model.coordinates, h.kinematical_equations):
+        said = where.get(q.name.upper() + "P")
+        out += [f"    # {quoted_text(said)}"] if said else []
+        rate = h.states[q].diff(me.dynamicsymbols._t) - equation
+        out.append(f"    {names[q]}.diff(t) - "
+                   f"{printer.parenthesize(rate, PRECEDENCE['Add'])},")
+    out += ["]", "",
+            f"kane = me.KanesMethod({names[h.newtonian]}, q_ind=["
+            + ", ".join(names[q] for q in h.coordinates) + "], u_ind=["
+            + ", ".join(names[u] for u in h.speeds) + "], kd_eqs=kd_eqs)",
+            "kane.kanes_equations(bodies, loads)", "",
+            "# as one system: full_mass * d(states)/dt = full_forcing",
+            "states = list(kane.q) + list(kane.u)",
+            "full_mass = kane.mass_matrix_full",
+            "full_forcing = kane.forcing_full", ""]
+    state_names = [names[s] for s in h.coordinates + h.speeds]
+    if eqs.unknowns:
+        out += ["# the rates solved from the mass matrix, as the outputs use them"]
+        out += [f"{unknown_names[u]} = {names[state_of(u)]}.diff(t)" for u in eqs.unknowns]
+    if before or after:
+        out += ["# intermediates the outputs use (Autolev's Z's, the model's definitions), as",
+                "# functions of time, and what each is, in the order they are computed"]
+        out += [f"{names[z]} = me.dynamicsymbols({names[z]!r})" for z, _ in before + after]
+    out += ["intermediates = ["]
+    out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in before]
+    out += ["]", "# those that need the solved rates", "after_solving = ["]
+    out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in after] + ["]"]
+    out += ["unknowns = [" + ", ".join(unknown_names[u] for u in eqs.unknowns) + "]",
+            "unknown_states = [" + ", ".join(
+                str(state_names.index(names[state_of(u)])) for u in eqs.unknowns) + "]",
+            ""]
+    out += values_text(eqs, names, p)
+    out += ["", "", RUNNER]
+    return "\n".join(out) + "\n"
+
+
+def _definitions_wanted(eqs: Equations, definitions: list) -> set:
+    """The definitions the outputs need, directly or through others."""
+    value = dict(definitions)
+    wanted, todo = set(), [s for _, _, e, _ in eqs.outputs for s in e.free_symbols]
+    while todo:
+        s = todo.pop()
+        if s in value and s not in wanted:
+            wanted.add(s)
+            todo.extend(sm.sympify(value[s]).free_symbols)
+    return wanted
+
+
+def export_sympy(model, source: str, command=None, infile=None, overrides=None,
+                 level: str = "auto") -> str:
+    """The SymPy script of the model's first integrating CODE command (or `command`);
+    `source`: the model's file, named in the script; its values as a run takes them
+    (INPUT, then the .in file `infile`, then `overrides` in the quantities' units).
+    `level`: "mechanics", "equations", or "auto" (mechanics when the model allows it,
+    else equations with the reason in the script); AutolevModelError when "mechanics"
+    is asked of a model it cannot take."""
+    if level not in LEVELS:
+        raise ValueError(f"level is one of {', '.join(LEVELS)}, not {level!r}")
+    if command is None:
+        integrating = [c for c in model.code_commands if c.kind.integrates]
+        if not integrating:
+            raise AutolevModelError("the model has no CODE DYNAMICS or ODE to export "
+                                    "(its equations of motion)")
+        command = integrating[0]
+    eqs = equations_of(model, command, infile=infile, overrides=overrides)
+    if level == "equations":
+        return sympy_script(eqs, source)
+    why, h = mechanics_handoff(model, command, eqs)
+    if h is not None:
+        return mechanics_script(h, eqs, model, source)
+    if level == "mechanics":
+        raise AutolevModelError(f"the mechanics level does not take this model: {why} "
+                                "(--level equations writes its equations)")
+    return sympy_script(eqs, source, why)
+
+
+def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Handoff | None]:
+    """(None, the hand-off) when the mechanics level takes the command's equations, else
+    (why not, None)."""
+    if command.kind.upper() != "DYNAMICS":
+        return f"CODE {command.kind.upper()} integrates equations of its own, not Kane's", None
+    constrained = model.dependent_speeds + model.auxiliary_speeds
+    if constrained:
+        return ("sympy's KanesMethod here takes no dependent or auxiliary speeds ("
+                + ", ".join(s.name for s in constrained) + ")"), None
+    if len(model.speeds) > MOST_SPEEDS:
+        return (f"it has {len(model.speeds)} speeds, more than the {MOST_SPEEDS} sympy's "
+                "KanesMethod forms in reasonable time"), None
+    extra = set(eqs.states) - set(model.coordinates) - set(model.speeds)
+    if extra:
+        return ("its state has " + ", ".join(sorted(s.name for s in extra))
+                + " beyond the coordinates and speeds"), None
+    try:
+        h = handoff(model)
+    except AutolevModelError as exc:
+        return str(exc), None
+    why = _unlike_the_run(h, eqs)
+    return (why, None) if why else (None, h)
+
+
+def _unlike_the_run(h: Handoff, eqs: Equations) -> str | None:
+    """Why sympy's equations are not the run's, found at a random state and constants
+    (specified quantities and their derivatives 0); None when they give its rates."""
+    rng = np.random.default_rng(33)
+    ours = {x: sm.Float(v) for x, v in zip(eqs.states, rng.uniform(-1, 1, len(eqs.states)))}
+    ours |= {c: sm.Float(v) for c, v in zip(eqs.constants, rng.uniform(0.5, 1.5,
+                                                                         len(eqs.constants)))}
+    ours |= {s: sm.Float(0) for s in eqs.specified} | {S.TIME: sm.Float(0.3)}
+    before, _ = split_at_the_unknowns(eqs)
+    for z, e in before:
+        ours[z] = sm.sympify(e).xreplace(ours)
+    n = len(eqs.unknowns)
+    mass = np.array([[float(e.xreplace(ours)) for e in row] for row in eqs.mass]).reshape(n, n)
+    forcing = np.array([float(e.xreplace(ours)) for e in eqs.forcing])
+    solved = dict(zip(eqs.unknowns, np.linalg.solve(mass, forcing) if n else []))
+    rates = np.array([float(r.xreplace(ours)) if r is not None else
+                      solved[next(u for u in eqs.unknowns if state_of(u) == x)]
+                      for x, r in zip(eqs.states, eqs.rates)])
+    theirs = {h.states[x]: ours[x] for x in eqs.states}
+    theirs |= {sm.Symbol(c.name): ours[c] for c in eqs.constants}
+    full = sm.Matrix.hstack(h.kane.mass_matrix_full, h.kane.forcing_full).xreplace(theirs)
+    full = full.xreplace({d: 0 for d in full.atoms(sm.Derivative)})
+    full = full.xreplace({f: 0 for f in full.atoms(AppliedUndef)})
+    full = full.xreplace({me.dynamicsymbols._t: sm.Float(0.3)})
+    if full.free_symbols:
+        return ("sympy's equations keep constants the run's do not have ("
+                + ", ".join(sorted(str(c) for c in full.free_symbols)) + ")")
+    order = [(h.coordinates + h.speeds).index(h.states[x]) for x in eqs.states]
+    sympys = np.linalg.solve(np.array(full[:, :-1], dtype=float),
+                             np.array(full[:, -1], dtype=float).ravel())[order]
+    if np.all(np.abs(sympys - rates) <= 1e-8 * max(1.0, float(np.abs(rates).max()))):
+        return None
+    return ("sympy's KanesMethod on the model's bodies and loads does not give the "
+            "equations the run integrates (they are not FR() + FRSTAR() alone)")

@@ -1,0 +1,183 @@
+"""double_pendulum: the model in sympy.physics.mechanics, written by autolev from
+double_pendulum.al (CODE DYNAMICS double_pendulum.c).
+
+Level: mechanics.  Frames, points, particles and rigid bodies, loads and the
+kinematical differential equations as the model gives them; sympy's KanesMethod
+forms the equations of motion when the script is imported.  Importing defines
+`kane` (its equations formed), `constants`, `initial_conditions` and `specified`;
+`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy (DOP853,
+RELERR and ABSERR) and writes the OUTPUT columns as CSV.
+"""
+import sys
+
+import numpy as np
+import sympy as sm
+import sympy.physics.mechanics as me
+from scipy.integrate import solve_ivp
+
+t = me.dynamicsymbols._t
+
+# generalized coordinates and speeds: functions of time
+Q1 = me.dynamicsymbols('Q1')
+Q2 = me.dynamicsymbols('Q2')
+U1 = me.dynamicsymbols('U1')
+U2 = me.dynamicsymbols('U2')
+
+# constants
+L1 = sm.Symbol('L1')
+L2 = sm.Symbol('L2')
+M1 = sm.Symbol('M1')
+M2 = sm.Symbol('M2')
+G = sm.Symbol('G')
+
+# reference frames, oriented as the model orients them, with its angular velocities
+N = me.ReferenceFrame('N')
+A = me.ReferenceFrame('A')
+A.orient_axis(N, N.z, Q1)
+A.set_ang_vel(N, U1*N.z)
+B = me.ReferenceFrame('B')
+B.orient_axis(N, N.z, Q2)
+B.set_ang_vel(N, U2*N.z)
+
+# points: positions from the Newtonian origin, velocities in N of those with a mass or a load
+P1 = me.Point('P1')
+P2 = me.Point('P2')
+NO = me.Point('NO')
+P1.set_pos(NO, L1*A.x)
+P2.set_pos(P1, L2*B.x)
+P1.set_vel(N, (-L1*U1*sm.sin(Q1))*N.x + L1*U1*sm.cos(Q1)*N.y)
+P2.set_vel(N, (-L1*U1*sm.sin(Q1) - L2*U2*sm.sin(Q2))*N.x + (L1*U1*sm.cos(Q1) + L2*U2*sm.cos(Q2))*N.y)
+
+# particles and rigid bodies: masses and central inertias
+P1_particle = me.Particle('P1', P1, M1)
+P2_particle = me.Particle('P2', P2, M2)
+bodies = [P1_particle, P2_particle]
+
+# loads: forces on points, torques on frames
+loads = [
+    (P1, G*M1*N.x),
+    (P2, G*M2*N.x),
+]
+
+# kinematical differential equations (each = 0)
+kd_eqs = [
+    # double_pendulum.al:20: Q1' = U1
+    Q1.diff(t) - U1,
+    # double_pendulum.al:21: Q2' = U2
+    Q2.diff(t) - U2,
+]
+
+kane = me.KanesMethod(N, q_ind=[Q1, Q2], u_ind=[U1, U2], kd_eqs=kd_eqs)
+kane.kanes_equations(bodies, loads)
+
+# as one system: full_mass * d(states)/dt = full_forcing
+states = list(kane.q) + list(kane.u)
+full_mass = kane.mass_matrix_full
+full_forcing = kane.forcing_full
+
+# the rates solved from the mass matrix, as the outputs use them
+U1p = U1.diff(t)
+U2p = U2.diff(t)
+# intermediates the outputs use (Autolev's Z's, the model's definitions), as
+# functions of time, and what each is, in the order they are computed
+z8 = me.dynamicsymbols('z8')
+intermediates = [
+    (z8, M1*(L1**2*U1**2*sm.sin(Q1)**2 + L1**2*U1**2*sm.cos(Q1)**2)/2 + M2*((-L1*U1*sm.sin(Q1) - L2*U2*sm.sin(Q2))**2 + (L1*U1*sm.cos(Q1) + L2*U2*sm.cos(Q2))**2)/2),
+]
+# those that need the solved rates
+after_solving = [
+]
+unknowns = [U1p, U2p]
+unknown_states = [2, 3]
+
+# values (SI units, radians) from the model's INPUT statements
+constants = {G: 9.81, L1: 1.0, L2: 1.0, M1: 1.0, M2: 1.0}
+initial_conditions = {Q1: 0.5235987755982988, Q2: 1.0471975511965976, U1: 0.0, U2: 0.0}
+# each a number or a function of time; 0 unless given
+specified = {}
+integration = {'TINITIAL': 0.0, 'TFINAL': 10.0, 'INTEGSTP': 0.01, 'ABSERR': 1e-08, 'RELERR': 1e-08, 'PRINTINT': 1}
+# OUTPUT columns: (label, unit, expression in the unit)
+outputs = [
+    ('T', 'sec', t),
+    ('Q1', 'deg', Q1 * 180 / sm.pi),
+    ('Q2', 'deg', Q2 * 180 / sm.pi),
+    ('U1', 'rad/sec', U1),
+    ('U2', 'rad/sec', U2),
+    ('T', 'sec', t),
+    ('ENERGY', 'joules', -G*L1*M1*sm.cos(Q1) - G*M2*(L1*sm.cos(Q1) + L2*sm.cos(Q2)) + z8),
+]
+
+
+def expanded(expr):
+    """`expr` with every intermediate replaced by what it is (large for large models)."""
+    for name, value in reversed(intermediates + after_solving):
+        expr = expr.xreplace({name: value})
+    return expr
+
+
+def numeric_functions():
+    """full_mass, full_forcing and the outputs as numpy functions of (t, state, constants,
+    specified values[, unknowns]), each computing the intermediates in order."""
+    plain = {f: sm.Dummy() for f in states + list(specified) + unknowns
+             + [name for name, _ in intermediates + after_solving]}
+    steps = [(plain[name], value.xreplace(plain)) for name, value in intermediates]
+    late = [(plain[name], value.xreplace(plain)) for name, value in after_solving]
+    arguments = [t, [plain[x] for x in states], list(constants),
+                 [plain[s] for s in specified]]
+
+    def function(expr, more=(), after=()):
+        return sm.lambdify(arguments + list(more), expr.xreplace(plain), "numpy",
+                           cse=lambda e: (steps + list(after), e))
+    columns = sm.Matrix([e for _, _, e in outputs])
+    return (function(full_mass), function(full_forcing),
+            function(columns, [[plain[u] for u in unknowns]], late))
+
+
+def integrate(tfinal=None):
+    """The OUTPUT rows from TINITIAL to TFINAL (or `tfinal`), one every PRINTINT steps
+    of INTEGSTP and at the end, as an array (a column per output)."""
+    mass, force, columns = numeric_functions()
+    p = [constants[c] for c in constants]
+    x0 = np.array([initial_conditions[x] for x in states], dtype=float)
+    t0, t1 = integration["TINITIAL"], tfinal if tfinal is not None else integration["TFINAL"]
+
+    def values_of_specified(time):
+        return [v(time) if callable(v) else v for v in specified.values()]
+
+    def rates_of(time, x):
+        s = values_of_specified(time)
+        return np.linalg.solve(np.asarray(mass(time, x, p, s), dtype=float),
+                               np.asarray(force(time, x, p, s), dtype=float).ravel())
+
+    step = integration["INTEGSTP"] * integration["PRINTINT"]
+    count = int(np.floor((t1 - t0) / step + 1e-9))
+    times = t0 + step * np.arange(count + 1)
+    if times[-1] < t1 - 1e-12 * max(1.0, abs(t1)):
+        times = np.append(times, t1)
+    solution = solve_ivp(rates_of, (t0, t1), x0, method="DOP853", t_eval=times,
+                         rtol=integration["RELERR"], atol=integration["ABSERR"])
+    if not solution.success:
+        raise RuntimeError(solution.message)
+    rows = []
+    for time, x in zip(solution.t, solution.y.T):
+        rate = rates_of(time, x)
+        solved = [rate[k] for k in unknown_states]
+        rows.append(np.asarray(columns(time, x, p, values_of_specified(time), solved),
+                               dtype=float).ravel())
+    return np.array(rows)
+
+
+def main(argv):
+    rows = integrate()
+    text = ",".join(label for label, _, _ in outputs) + "\n" + "".join(
+        ",".join(repr(float(v)) for v in row) + "\n" for row in rows)
+    if argv:
+        with open(argv[0], "w") as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

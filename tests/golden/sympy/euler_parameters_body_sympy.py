@@ -1,0 +1,178 @@
+"""euler_parameters_body: the model in sympy.physics.mechanics, written by autolev from
+euler_parameters_body.al (CODE DYNAMICS euler_parameters_body.c).
+
+Level: mechanics.  Frames, points, particles and rigid bodies, loads and the
+kinematical differential equations as the model gives them; sympy's KanesMethod
+forms the equations of motion when the script is imported.  Importing defines
+`kane` (its equations formed), `constants`, `initial_conditions` and `specified`;
+`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy (DOP853,
+RELERR and ABSERR) and writes the OUTPUT columns as CSV.
+"""
+import sys
+
+import numpy as np
+import sympy as sm
+import sympy.physics.mechanics as me
+from scipy.integrate import solve_ivp
+
+t = me.dynamicsymbols._t
+
+# generalized coordinates and speeds: functions of time
+E1 = me.dynamicsymbols('E1')
+E2 = me.dynamicsymbols('E2')
+E3 = me.dynamicsymbols('E3')
+E4 = me.dynamicsymbols('E4')
+U1 = me.dynamicsymbols('U1')
+U2 = me.dynamicsymbols('U2')
+U3 = me.dynamicsymbols('U3')
+
+# constants
+M = sm.Symbol('M')
+I1 = sm.Symbol('I1')
+I2 = sm.Symbol('I2')
+I3 = sm.Symbol('I3')
+T1 = sm.Symbol('T1')
+T2 = sm.Symbol('T2')
+T3 = sm.Symbol('T3')
+
+# reference frames, oriented as the model orients them, with its angular velocities
+N = me.ReferenceFrame('N')
+B = me.ReferenceFrame('B')
+B.orient_explicit(N, sm.Matrix([[-2*E2**2 - 2*E3**2 + 1, 2*E1*E2 - 2*E3*E4, 2*E1*E3 + 2*E2*E4], [2*E1*E2 + 2*E3*E4, -2*E1**2 - 2*E3**2 + 1, -2*E1*E4 + 2*E2*E3], [2*E1*E3 - 2*E2*E4, 2*E1*E4 + 2*E2*E3, -2*E1**2 - 2*E2**2 + 1]]))
+B.set_ang_vel(N, U1*B.x + U2*B.y + U3*B.z)
+
+# points: positions from the Newtonian origin, velocities in N of those with a mass or a load
+BO = me.Point('BO')
+NO = me.Point('NO')
+BO.set_pos(NO, me.Vector(0))
+BO.set_vel(N, me.Vector(0))
+
+# particles and rigid bodies: masses and central inertias
+B_body = me.RigidBody('B', BO, B, M, (me.inertia(B, I1, I2, I3), BO))
+bodies = [B_body]
+
+# loads: forces on points, torques on frames
+loads = [
+    (B, T1*B.x + T2*B.y + T3*B.z),
+]
+
+# kinematical differential equations (each = 0)
+kd_eqs = [
+    E1.diff(t) - (E2*U3/2 - E3*U2/2 + E4*U1/2),
+    E2.diff(t) - (-E1*U3/2 + E3*U1/2 + E4*U2/2),
+    E3.diff(t) - (E1*U2/2 - E2*U1/2 + E4*U3/2),
+    E4.diff(t) - (-E1*U1/2 - E2*U2/2 - E3*U3/2),
+]
+
+kane = me.KanesMethod(N, q_ind=[E1, E2, E3, E4], u_ind=[U1, U2, U3], kd_eqs=kd_eqs)
+kane.kanes_equations(bodies, loads)
+
+# as one system: full_mass * d(states)/dt = full_forcing
+states = list(kane.q) + list(kane.u)
+full_mass = kane.mass_matrix_full
+full_forcing = kane.forcing_full
+
+# the rates solved from the mass matrix, as the outputs use them
+U1p = U1.diff(t)
+U2p = U2.diff(t)
+U3p = U3.diff(t)
+intermediates = [
+]
+# those that need the solved rates
+after_solving = [
+]
+unknowns = [U1p, U2p, U3p]
+unknown_states = [4, 5, 6]
+
+# values (SI units, radians) from the model's INPUT statements
+constants = {I1: 0.2, I2: 0.3, I3: 0.45, T1: 0.0, T2: 0.01, T3: 0.0}
+initial_conditions = {E1: 0.0, E2: 0.0, E3: 0.0, E4: 1.0, U1: 0.1, U2: 2.0, U3: 0.05}
+# each a number or a function of time; 0 unless given
+specified = {}
+integration = {'TINITIAL': 0.0, 'TFINAL': 10.0, 'INTEGSTP': 0.05, 'ABSERR': 1e-08, 'RELERR': 1e-07, 'PRINTINT': 1}
+# OUTPUT columns: (label, unit, expression in the unit)
+outputs = [
+    ('T', '', t),
+    ('E1', '', E1),
+    ('E2', '', E2),
+    ('E3', '', E3),
+    ('E4', '', E4),
+    ('U1', '', U1),
+    ('U2', '', U2),
+    ('U3', '', U3),
+]
+
+
+def expanded(expr):
+    """`expr` with every intermediate replaced by what it is (large for large models)."""
+    for name, value in reversed(intermediates + after_solving):
+        expr = expr.xreplace({name: value})
+    return expr
+
+
+def numeric_functions():
+    """full_mass, full_forcing and the outputs as numpy functions of (t, state, constants,
+    specified values[, unknowns]), each computing the intermediates in order."""
+    plain = {f: sm.Dummy() for f in states + list(specified) + unknowns
+             + [name for name, _ in intermediates + after_solving]}
+    steps = [(plain[name], value.xreplace(plain)) for name, value in intermediates]
+    late = [(plain[name], value.xreplace(plain)) for name, value in after_solving]
+    arguments = [t, [plain[x] for x in states], list(constants),
+                 [plain[s] for s in specified]]
+
+    def function(expr, more=(), after=()):
+        return sm.lambdify(arguments + list(more), expr.xreplace(plain), "numpy",
+                           cse=lambda e: (steps + list(after), e))
+    columns = sm.Matrix([e for _, _, e in outputs])
+    return (function(full_mass), function(full_forcing),
+            function(columns, [[plain[u] for u in unknowns]], late))
+
+
+def integrate(tfinal=None):
+    """The OUTPUT rows from TINITIAL to TFINAL (or `tfinal`), one every PRINTINT steps
+    of INTEGSTP and at the end, as an array (a column per output)."""
+    mass, force, columns = numeric_functions()
+    p = [constants[c] for c in constants]
+    x0 = np.array([initial_conditions[x] for x in states], dtype=float)
+    t0, t1 = integration["TINITIAL"], tfinal if tfinal is not None else integration["TFINAL"]
+
+    def values_of_specified(time):
+        return [v(time) if callable(v) else v for v in specified.values()]
+
+    def rates_of(time, x):
+        s = values_of_specified(time)
+        return np.linalg.solve(np.asarray(mass(time, x, p, s), dtype=float),
+                               np.asarray(force(time, x, p, s), dtype=float).ravel())
+
+    step = integration["INTEGSTP"] * integration["PRINTINT"]
+    count = int(np.floor((t1 - t0) / step + 1e-9))
+    times = t0 + step * np.arange(count + 1)
+    if times[-1] < t1 - 1e-12 * max(1.0, abs(t1)):
+        times = np.append(times, t1)
+    solution = solve_ivp(rates_of, (t0, t1), x0, method="DOP853", t_eval=times,
+                         rtol=integration["RELERR"], atol=integration["ABSERR"])
+    if not solution.success:
+        raise RuntimeError(solution.message)
+    rows = []
+    for time, x in zip(solution.t, solution.y.T):
+        rate = rates_of(time, x)
+        solved = [rate[k] for k in unknown_states]
+        rows.append(np.asarray(columns(time, x, p, values_of_specified(time), solved),
+                               dtype=float).ravel())
+    return np.array(rows)
+
+
+def main(argv):
+    rows = integrate()
+    text = ",".join(label for label, _, _ in outputs) + "\n" + "".join(
+        ",".join(repr(float(v)) for v in row) + "\n" for row in rows)
+    if argv:
+        with open(argv[0], "w") as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,207 @@
+"""nlink_pendulum: the model in sympy.physics.mechanics, written by autolev from
+nlink_pendulum.al (CODE DYNAMICS nlink_pendulum.c).
+
+Level: mechanics.  Frames, points, particles and rigid bodies, loads and the
+kinematical differential equations as the model gives them; sympy's KanesMethod
+forms the equations of motion when the script is imported.  Importing defines
+`kane` (its equations formed), `constants`, `initial_conditions` and `specified`;
+`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy (DOP853,
+RELERR and ABSERR) and writes the OUTPUT columns as CSV.
+"""
+import sys
+
+import numpy as np
+import sympy as sm
+import sympy.physics.mechanics as me
+from scipy.integrate import solve_ivp
+
+t = me.dynamicsymbols._t
+
+# generalized coordinates and speeds: functions of time
+Q1 = me.dynamicsymbols('Q1')
+Q2 = me.dynamicsymbols('Q2')
+Q3 = me.dynamicsymbols('Q3')
+Q4 = me.dynamicsymbols('Q4')
+U1 = me.dynamicsymbols('U1')
+U2 = me.dynamicsymbols('U2')
+U3 = me.dynamicsymbols('U3')
+U4 = me.dynamicsymbols('U4')
+
+# constants
+L = sm.Symbol('L')
+M = sm.Symbol('M')
+G = sm.Symbol('G')
+
+# reference frames, oriented as the model orients them, with its angular velocities
+N = me.ReferenceFrame('N')
+A = me.ReferenceFrame('A')
+A.orient_axis(N, N.z, Q1)
+A.set_ang_vel(N, U1*N.z)
+B = me.ReferenceFrame('B')
+B.orient_axis(A, A.z, Q2)
+B.set_ang_vel(A, U2*N.z)
+C = me.ReferenceFrame('C')
+C.orient_axis(B, B.z, Q3)
+C.set_ang_vel(B, U3*N.z)
+D = me.ReferenceFrame('D')
+D.orient_axis(C, C.z, Q4)
+D.set_ang_vel(C, U4*N.z)
+
+# points: positions from the Newtonian origin, velocities in N of those with a mass or a load
+AO = me.Point('AO')
+BO = me.Point('BO')
+CO = me.Point('CO')
+DO = me.Point('DO')
+NO = me.Point('NO')
+P1 = me.Point('P1')
+P2 = me.Point('P2')
+P3 = me.Point('P3')
+AO.set_pos(NO, L/2*A.x)
+P1.set_pos(NO, L*A.x)
+BO.set_pos(P1, L/2*B.x)
+P2.set_pos(P1, L*B.x)
+CO.set_pos(P2, L/2*C.x)
+P3.set_pos(P2, L*C.x)
+DO.set_pos(P3, L/2*D.x)
+AO.set_vel(N, (-L*U1*sm.sin(Q1)/2)*N.x + L*U1*sm.cos(Q1)/2*N.y)
+BO.set_vel(N, (-L*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2)/2 - L*U1*sm.sin(Q1))*N.x + (L*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2)/2 + L*U1*sm.cos(Q1))*N.y)
+CO.set_vel(N, (-L*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.sin(Q1) + (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.cos(Q1))*(U1 + U2 + U3)/2 - L*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2) - L*U1*sm.sin(Q1))*N.x + (L*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.cos(Q1) - (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.sin(Q1))*(U1 + U2 + U3)/2 + L*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2) + L*U1*sm.cos(Q1))*N.y)
+DO.set_vel(N, (-L*(((-sm.sin(Q3)*sm.sin(Q4) + sm.cos(Q3)*sm.cos(Q4))*sm.sin(Q2) + (sm.sin(Q3)*sm.cos(Q4) + sm.sin(Q4)*sm.cos(Q3))*sm.cos(Q2))*sm.cos(Q1) + ((-sm.sin(Q3)*sm.sin(Q4) + sm.cos(Q3)*sm.cos(Q4))*sm.cos(Q2) - (sm.sin(Q3)*sm.cos(Q4) + sm.sin(Q4)*sm.cos(Q3))*sm.sin(Q2))*sm.sin(Q1))*(U1 + U2 + U3 + U4)/2 - L*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.sin(Q1) + (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.cos(Q1))*(U1 + U2 + U3) - L*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2) - L*U1*sm.sin(Q1))*N.x + (L*(-((-sm.sin(Q3)*sm.sin(Q4) + sm.cos(Q3)*sm.cos(Q4))*sm.sin(Q2) + (sm.sin(Q3)*sm.cos(Q4) + sm.sin(Q4)*sm.cos(Q3))*sm.cos(Q2))*sm.sin(Q1) + ((-sm.sin(Q3)*sm.sin(Q4) + sm.cos(Q3)*sm.cos(Q4))*sm.cos(Q2) - (sm.sin(Q3)*sm.cos(Q4) + sm.sin(Q4)*sm.cos(Q3))*sm.sin(Q2))*sm.cos(Q1))*(U1 + U2 + U3 + U4)/2 + L*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.cos(Q1) - (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.sin(Q1))*(U1 + U2 + U3) + L*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2) + L*U1*sm.cos(Q1))*N.y)
+
+# particles and rigid bodies: masses and central inertias
+A_body = me.RigidBody('A', AO, A, M, (me.inertia(A, 0, 0, L**2*M/12), AO))
+B_body = me.RigidBody('B', BO, B, M, (me.inertia(B, 0, 0, L**2*M/12), BO))
+C_body = me.RigidBody('C', CO, C, M, (me.inertia(C, 0, 0, L**2*M/12), CO))
+D_body = me.RigidBody('D', DO, D, M, (me.inertia(D, 0, 0, L**2*M/12), DO))
+bodies = [A_body, B_body, C_body, D_body]
+
+# loads: forces on points, torques on frames
+loads = [
+    (AO, G*M*N.x),
+    (BO, G*M*N.x),
+    (CO, G*M*N.x),
+    (DO, G*M*N.x),
+]
+
+# kinematical differential equations (each = 0)
+kd_eqs = [
+    # nlink_pendulum.al:22: Q1' = U1
+    Q1.diff(t) - U1,
+    # nlink_pendulum.al:23: Q2' = U2
+    Q2.diff(t) - U2,
+    # nlink_pendulum.al:24: Q3' = U3
+    Q3.diff(t) - U3,
+    # nlink_pendulum.al:25: Q4' = U4
+    Q4.diff(t) - U4,
+]
+
+kane = me.KanesMethod(N, q_ind=[Q1, Q2, Q3, Q4], u_ind=[U1, U2, U3, U4], kd_eqs=kd_eqs)
+kane.kanes_equations(bodies, loads)
+
+# as one system: full_mass * d(states)/dt = full_forcing
+states = list(kane.q) + list(kane.u)
+full_mass = kane.mass_matrix_full
+full_forcing = kane.forcing_full
+
+# the rates solved from the mass matrix, as the outputs use them
+U1p = U1.diff(t)
+U2p = U2.diff(t)
+U3p = U3.diff(t)
+U4p = U4.diff(t)
+intermediates = [
+]
+# those that need the solved rates
+after_solving = [
+]
+unknowns = [U1p, U2p, U3p, U4p]
+unknown_states = [4, 5, 6, 7]
+
+# values (SI units, radians) from the model's INPUT statements
+constants = {G: 9.81, L: 0.5, M: 1.0}
+initial_conditions = {Q1: 0.3490658503988659, Q2: 0.17453292519943295, Q3: -0.17453292519943295, Q4: 0.08726646259971647, U1: 0.0, U2: 0.0, U3: 0.0, U4: 0.0}
+# each a number or a function of time; 0 unless given
+specified = {}
+integration = {'TINITIAL': 0.0, 'TFINAL': 3.0, 'INTEGSTP': 0.01, 'ABSERR': 1e-08, 'RELERR': 1e-07, 'PRINTINT': 1}
+# OUTPUT columns: (label, unit, expression in the unit)
+outputs = [
+    ('T', 'sec', t),
+    ('Q1', 'deg', Q1 * 180 / sm.pi),
+    ('Q2', 'deg', Q2 * 180 / sm.pi),
+    ('Q3', 'deg', Q3 * 180 / sm.pi),
+    ('Q4', 'deg', Q4 * 180 / sm.pi),
+]
+
+
+def expanded(expr):
+    """`expr` with every intermediate replaced by what it is (large for large models)."""
+    for name, value in reversed(intermediates + after_solving):
+        expr = expr.xreplace({name: value})
+    return expr
+
+
+def numeric_functions():
+    """full_mass, full_forcing and the outputs as numpy functions of (t, state, constants,
+    specified values[, unknowns]), each computing the intermediates in order."""
+    plain = {f: sm.Dummy() for f in states + list(specified) + unknowns
+             + [name for name, _ in intermediates + after_solving]}
+    steps = [(plain[name], value.xreplace(plain)) for name, value in intermediates]
+    late = [(plain[name], value.xreplace(plain)) for name, value in after_solving]
+    arguments = [t, [plain[x] for x in states], list(constants),
+                 [plain[s] for s in specified]]
+
+    def function(expr, more=(), after=()):
+        return sm.lambdify(arguments + list(more), expr.xreplace(plain), "numpy",
+                           cse=lambda e: (steps + list(after), e))
+    columns = sm.Matrix([e for _, _, e in outputs])
+    return (function(full_mass), function(full_forcing),
+            function(columns, [[plain[u] for u in unknowns]], late))
+
+
+def integrate(tfinal=None):
+    """The OUTPUT rows from TINITIAL to TFINAL (or `tfinal`), one every PRINTINT steps
+    of INTEGSTP and at the end, as an array (a column per output)."""
+    mass, force, columns = numeric_functions()
+    p = [constants[c] for c in constants]
+    x0 = np.array([initial_conditions[x] for x in states], dtype=float)
+    t0, t1 = integration["TINITIAL"], tfinal if tfinal is not None else integration["TFINAL"]
+
+    def values_of_specified(time):
+        return [v(time) if callable(v) else v for v in specified.values()]
+
+    def rates_of(time, x):
+        s = values_of_specified(time)
+        return np.linalg.solve(np.asarray(mass(time, x, p, s), dtype=float),
+                               np.asarray(force(time, x, p, s), dtype=float).ravel())
+
+    step = integration["INTEGSTP"] * integration["PRINTINT"]
+    count = int(np.floor((t1 - t0) / step + 1e-9))
+    times = t0 + step * np.arange(count + 1)
+    if times[-1] < t1 - 1e-12 * max(1.0, abs(t1)):
+        times = np.append(times, t1)
+    solution = solve_ivp(rates_of, (t0, t1), x0, method="DOP853", t_eval=times,
+                         rtol=integration["RELERR"], atol=integration["ABSERR"])
+    if not solution.success:
+        raise RuntimeError(solution.message)
+    rows = []
+    for time, x in zip(solution.t, solution.y.T):
+        rate = rates_of(time, x)
+        solved = [rate[k] for k in unknown_states]
+        rows.append(np.asarray(columns(time, x, p, values_of_specified(time), solved),
+                               dtype=float).ravel())
+    return np.array(rows)
+
+
+def main(argv):
+    rows = integrate()
+    text = ",".join(label for label, _, _ in outputs) + "\n" + "".join(
+        ",".join(repr(float(v)) for v in row) + "\n" for row in rows)
+    if argv:
+        with open(argv[0], "w") as f:
+            f.write(text)
+    else:
+        sys.stdout.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

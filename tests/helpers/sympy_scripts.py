@@ -1,0 +1,118 @@
+"""Checking a script of `autolev convert --to sympy` against the model it came from: run
+where autolev cannot be imported, its equations at 20 random times, states, constants and
+specified values, then `python SCRIPT.py OUT.csv`; against our Kane's equations
+(mechanics level: the full mass matrix and forcing entry by entry, from
+Model.symbolic_system) or our compiled right-hand side (equations level: the rates), and
+`simulate`'s rows with the same method and tolerances."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import sympy as sm
+import sympy.physics.mechanics as me
+
+from autolev.runtime.numerics.prepare import prepare_command
+
+# in a process where autolev cannot be imported: the script's equations at random points
+# (mechanics: kane's full mass matrix and forcing; equations: its mass and forcing
+# functions), printed as JSON, then its own main writing OUT.csv
+DRIVER = """
+import json, runpy, sys
+sys.modules['autolev'] = None
+import numpy as np, sympy as sm
+script, csv = sys.argv[1:3]
+ns = runpy.run_path(script)
+rng = np.random.default_rng(33)
+constants, specified = list(ns['constants']), list(ns['specified'])
+if 'kane' in ns:
+    kane = ns['kane']
+    states = list(kane.q) + list(kane.u)
+    f = sm.lambdify([ns['t'], states, constants, specified],
+                    [kane.mass_matrix_full, kane.forcing_full])
+    level = 'mechanics'
+else:
+    states = ns['states']
+    mass, force, _ = ns['numeric_functions']()
+    f = lambda *a: (mass(*a), force(*a))
+    level = 'equations'
+points = []
+for _ in range(20):
+    t, x = rng.uniform(0, 2), rng.uniform(-1, 1, len(states))
+    p, s = rng.uniform(0.5, 1.5, len(constants)), rng.uniform(-1, 1, len(specified))
+    if level == 'equations':
+        s = 0 * s            # as our compiled rates take them (0 unless the model gives them)
+    m, F = f(t, x, p, s)
+    points.append([t, x.tolist(), p.tolist(), s.tolist(), np.asarray(m, dtype=float).tolist(),
+                   np.asarray(F, dtype=float).ravel().tolist()])
+print(json.dumps({'level': level, 'states': [str(s.func) for s in states],
+                  'constants': [str(c) for c in constants],
+                  'specified': [str(s.func) for s in specified], 'points': points}))
+sys.stdout.flush()
+sys.argv = [script, csv]
+runpy.run_path(script, run_name='__main__')      # ends with sys.exit(main(...))
+"""
+
+
+def run_script(script: Path, csv: Path, timeout: float = 600) -> dict:
+    """The driver's JSON (level, names, and per point t, x, p, s, mass, forcing)."""
+    done = subprocess.run([sys.executable, "-c", DRIVER, str(script), str(csv)],
+                          capture_output=True, text=True, timeout=timeout)
+    assert done.returncode == 0, done.stderr[-3000:]
+    return json.loads(done.stdout)
+
+
+def largest_difference(theirs, ours) -> float:
+    """max |theirs - ours| relative to the largest entry of ours (at least 1)."""
+    theirs, ours = np.asarray(theirs, dtype=float), np.asarray(ours, dtype=float)
+    assert theirs.shape == ours.shape, (theirs.shape, ours.shape)
+    return float(np.abs(theirs - ours).max(initial=0.0) / max(1.0, np.abs(ours).max(initial=0)))
+
+
+def equations_difference(model, command, found: dict) -> float:
+    """The largest relative difference between the script's equations and ours over the
+    driver's points: the full mass matrix and forcing (mechanics level), the rates solved
+    from them (equations level, against our compiled right-hand side)."""
+    if found["level"] == "mechanics":
+        system = model.symbolic_system("combined")
+        # a speed that is a coordinate's rate (X' declared) is X_rate in sympy
+        names = [str(s.args[0].func) + "_rate" if isinstance(s, sm.Derivative)
+                 else str(s.func) for s in system.states]
+        assert names == found["states"]
+        constants = {c.name: c for c, info in model.info.items() if info.kind == "constant"}
+        ours = sm.lambdify([me.dynamicsymbols._t, system.states,
+                            [constants[n] for n in found["constants"]],
+                            [me.dynamicsymbols(n) for n in found["specified"]]],
+                           [system.comb_implicit_mat, system.comb_implicit_rhs])
+        worst = 0.0
+        for t, x, p, s, mass, forcing in found["points"]:
+            our_mass, our_forcing = ours(t, x, p, s)
+            worst = max(worst, largest_difference(mass, our_mass),
+                        largest_difference(forcing, np.asarray(our_forcing).ravel()))
+        return worst
+    system = prepare_command(model, command).system
+    # in the run's order; named as identifiers (X' as Xp, a name the script uses renamed)
+    assert len(found["states"]) == len(system.states)
+    assert len(found["constants"]) == len(system.params)
+    worst = 0.0
+    for t, x, p, s, mass, forcing in found["points"]:
+        system.set_parameters(p)
+        ours = system.derivatives(t, np.asarray(x))
+        theirs = np.linalg.solve(np.asarray(mass), np.asarray(forcing))
+        worst = max(worst, largest_difference(theirs, ours))
+    return worst
+
+
+def rows_difference(model, csv: Path, tfinal: float) -> float:
+    """The largest difference, relative to each column's largest value (at least 1),
+    between the script's rows and `simulate`'s (DOP853, the model's tolerances)."""
+    result = model.simulate(TFINAL=tfinal, method="dop853")
+    assert csv.read_text().splitlines()[0].split(",") == [
+        label for t in result.outputs for label in t.labels] or [""]
+    if not result.outputs:
+        return 0.0                   # no OUTPUT: the header is empty, as are the rows
+    ours = np.column_stack([t.data for t in result.outputs])
+    rows = np.loadtxt(csv, delimiter=",", skiprows=1, ndmin=2)
+    assert rows.shape == ours.shape, (rows.shape, ours.shape)
+    return float((np.abs(rows - ours) / np.maximum(1.0, np.abs(ours).max(axis=0))).max())

@@ -1,0 +1,128 @@
+"""`autolev convert --to sympy` over the public corpus (issue 33): every visible model that
+builds and runs (its first CODE DYNAMICS or ODE over 1 s) exports; at the mechanics level
+when it has no dependent or auxiliary speeds and at most 12 speeds, else at the equations
+level saying why.  Each script, run where autolev cannot be imported, gives our equations
+at 20 random points to 1e-10 and `simulate`'s rows over 1 s to 1e-6."""
+import sys
+import tempfile
+import warnings
+from pathlib import Path
+
+import pytest
+
+import autolev
+from autolev.export_mechanics import MOST_SPEEDS, export_sympy
+from autolev.runtime.errors import AutolevModelError
+from helpers import ROOT, SHARED
+from helpers.sympy_scripts import equations_difference, rows_difference, run_script
+
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
+
+sys.path.insert(0, str(ROOT / "bench"))
+import corpus as corpus_bench  # noqa: E402
+
+LIMIT = 900      # seconds for one model: build, run, export, the script's run
+# the rates at the equations level are solved through the mass matrix: its conditioning
+# (swingbike-sb-01: 3e-9) on top of the 1e-10 of its entries
+RATES = 1e-8
+# what the scripts do not do yet, and why
+KNOWN = {
+    # INTEGSTP = 1500 s past TFINAL = 1 s: autolev run prints the first row only, the
+    # scripts' runner (a grid every INTEGSTP*PRINTINT, and TFINAL) a row at TFINAL too
+    "ssopt-cellsimplifiedmodv4finalfinal": "rows: ((2, 35), (1, 35))",
+    "ssopt-cellsimplifiedmodv4druggedfinalfinal": "rows: ((2, 35), (1, 35))",
+    # ABSERR = RELERR = 1e-7: two step sequences to that tolerance part by 5.5e-6 in 1 s
+    "npparser-example5-6": "equations differ by 3.2e-16, rows by 5.5e-06",
+}
+
+
+def export_and_compare(args) -> dict:
+    """One model: {'id', 'outcome' (not built / not run / exported / failing), 'level',
+    'speeds', 'detail'}."""
+    import signal
+    ident, path = args
+    out = {"id": ident, "outcome": "exported", "level": "", "speeds": 0, "detail": ""}
+    signal.signal(signal.SIGALRM, corpus_bench._alarm)
+    signal.alarm(LIMIT)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            _compare(Path(path), out)
+    except corpus_bench._Timeout:
+        out.update(outcome="failing", detail=f"did not finish in {LIMIT} s")
+    except Exception as exc:     # reported with the model's name, and the test fails
+        out.update(outcome="failing", detail=f"{type(exc).__name__}: {exc}"[:300])
+    finally:
+        signal.alarm(0)
+    return out
+
+
+def _compare(path: Path, out: dict) -> None:
+    try:
+        model = autolev.load(path)
+    except autolev.AutolevError as exc:
+        out.update(outcome="not built", detail=str(exc).splitlines()[0][:120])
+        return
+    integrating = [c for c in model.code_commands if c.kind.integrates]
+    if not integrating:
+        out.update(outcome="not run", detail="no CODE DYNAMICS or ODE")
+        return
+    out["speeds"] = len(model.speeds)
+    try:
+        result = model.simulate(TFINAL=1, method="dop853")
+    except AutolevModelError as exc:
+        out.update(outcome="not run", detail=str(exc).splitlines()[0][:120])
+        return
+    if not result.ok:
+        out.update(outcome="not run", detail=result.failure[:120])
+        return
+    try:
+        text = export_sympy(model, path.name, integrating[0], overrides={"TFINAL": 1})
+    except AutolevModelError as exc:
+        out.update(outcome="failing", detail="export: " + str(exc).splitlines()[0][:160])
+        return
+    out["level"] = "mechanics" if "\nLevel: mechanics." in text else "equations"
+    out["detail"] = " ".join(text.split("Not the mechanics level: ")[1].split('"""')[0]
+                             .split("Importing")[0].split()) if out["level"] == "equations" \
+        else ""
+    with tempfile.TemporaryDirectory() as tmp:
+        script, csv = Path(tmp) / "script.py", Path(tmp) / "rows.csv"
+        script.write_text(text)
+        try:
+            found = run_script(script, csv, timeout=LIMIT)
+        except AssertionError as exc:
+            out.update(outcome="failing", detail="script: " + str(exc).splitlines()[-2][:160])
+            return
+        equations = equations_difference(model, integrating[0], found)
+        try:
+            rows = rows_difference(model, csv, 1.0)
+        except AssertionError as exc:
+            out.update(outcome="failing", detail=f"rows: {exc}")
+            return
+    if equations > (1e-10 if out["level"] == "mechanics" else RATES) or rows > 1e-6:
+        out.update(outcome="failing", detail=f"equations differ by {equations:.1e}, "
+                   f"rows by {rows:.1e}")
+
+
+def test_every_corpus_model_that_runs_exports_and_agrees(corpus):
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+    models = corpus_bench.corpus_models(corpus, SHARED / "corpus" / "visible.tsv")
+    results = []
+    with ProcessPoolExecutor(2) as pool:
+        for done in as_completed([pool.submit(export_and_compare, (i, str(p)))
+                                  for i, p in models]):
+            results.append(done.result())
+            r = results[-1]
+            print(f"[{len(results)}/{len(models)}] {r['outcome']} {r['level']} {r['id']}",
+                  flush=True)
+    exported = [r for r in results if r["outcome"] in ("exported", "failing")]
+    mechanics = [r for r in exported if r["level"] == "mechanics"]
+    failing = [r for r in results if r["outcome"] == "failing"]
+    print(f"\n{len(results)} models; {len(exported)} build and run; "
+          f"{len(exported) - len(failing)} exported and agree ({len(mechanics)} at the "
+          f"mechanics level); {len(failing)} failing")
+    for r in sorted(results, key=lambda r: (r["outcome"], r["level"], r["id"])):
+        print(f"{r['outcome']:10} {r['level']:10} {r['speeds']:3} {r['id']}: {r['detail']}")
+    assert {r["id"]: r["detail"] for r in failing} == KNOWN
+    assert all(r["speeds"] <= MOST_SPEEDS for r in mechanics)
+    assert all(r["detail"] for r in exported if r["level"] == "equations")

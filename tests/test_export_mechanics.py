@@ -1,0 +1,109 @@
+"""`autolev convert --to sympy` at the mechanics level (issue 33): each shipped example the
+level takes becomes frames, points, bodies, loads and a KanesMethod in a script that needs
+only sympy, numpy and scipy.  Run with autolev unimportable, its mass matrix and forcing
+equal our own Kane's equations' at 20 random states and constants, and `python OUT.py`
+writes `autolev run`'s rows over 1 s (same method and tolerances)."""
+from pathlib import Path
+
+import pytest
+import sympy as sm
+
+import autolev
+from autolev.cli import main
+from autolev.export_mechanics import export_sympy, simple_rotation
+from autolev.runtime.errors import AutolevModelError
+from helpers import EXAMPLES
+from helpers.sympy_scripts import equations_difference, rows_difference, run_script
+
+MECHANICS = ["simple_pendulum", "double_pendulum", "cart_pendulum", "mass_spring_damper",
+             "block_pendulums", "nlink_pendulum", "euler_parameters_body"]
+# their speeds are constrained: dependent speeds (fourbar, whipple), auxiliary ones
+EQUATIONS = {"rolling_disc": "auxiliary speeds", "fourbar": "dependent or auxiliary speeds",
+             "whipple_benchmark": "dependent or auxiliary speeds"}
+
+
+
+def exported(name: str, folder, *options) -> Path:
+    out = folder / f"{name}_sympy.py"
+    assert main(["convert", "--to", "sympy", str(EXAMPLES / f"{name}.al"), "-o", str(out),
+                 "-q", "--set", "TFINAL=1", *options]) == 0
+    return out
+
+
+@pytest.mark.parametrize("name", MECHANICS)
+def test_the_scripts_kane_equals_our_equations_and_runs_as_autolev_run(name, tmp_path):
+    script = exported(name, tmp_path)
+    assert "\nLevel: mechanics." in script.read_text()
+    model = autolev.load(EXAMPLES / f"{name}.al")
+    found = run_script(script, tmp_path / "rows.csv")
+    assert found["level"] == "mechanics"
+    assert equations_difference(model, model.code_commands[0], found) <= 1e-10
+    assert rows_difference(model, tmp_path / "rows.csv", 1.0) <= 1e-6
+
+
+@pytest.mark.parametrize("name", sorted(EQUATIONS))
+def test_a_model_with_constrained_speeds_goes_at_the_equations_level_saying_why(name, tmp_path):
+    text = exported(name, tmp_path).read_text()
+    assert "\nLevel: equations." in text
+    assert "Not the mechanics level: sympy's KanesMethod here takes no dependent or " \
+           "auxiliary speeds" in " ".join(text.split())
+
+
+def test_asking_the_mechanics_level_of_such_a_model_is_refused_and_writes_nothing(
+        tmp_path, capsys):
+    out = tmp_path / "x.py"
+    assert main(["convert", "--to", "sympy", "--level", "mechanics",
+                 str(EXAMPLES / "rolling_disc.al"), "-o", str(out)]) == 1
+    err = capsys.readouterr().err
+    assert "the mechanics level does not take this model" in err and "(U4, U5)" in err
+    assert not out.exists()
+    assert main(["convert", "--level", "mechanics", str(EXAMPLES / "rolling_disc.al")]) == 2
+    assert "--level chooses the level of a --to sympy script" in capsys.readouterr().err
+
+
+def test_the_equations_level_is_there_by_option(tmp_path):
+    text = exported("double_pendulum", tmp_path, "--level", "equations").read_text()
+    assert "\nLevel: equations." in text and "Not the mechanics level" not in text
+    assert "system = me.SymbolicSystem(" in text
+
+
+def test_a_simple_rotation_is_an_axis_and_its_angle():
+    # SIMPROT(N, A, 2, Q): A3> = cos(Q) N3> + sin(Q) N1>, so N.dcm(A)[0, 2] = sin(Q)
+    q = sm.Symbol("Q")
+    c, s = sm.cos(q), sm.sin(q)
+    about_y = sm.Matrix([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+    assert simple_rotation(about_y) == (1, q)
+    assert simple_rotation(about_y.T) == (1, -q)
+    assert simple_rotation(sm.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])) == (2, q)
+    assert simple_rotation(sm.Matrix([[1, 0, 0], [0, c, -s], [0, s, c]])) == (0, q)
+    assert simple_rotation(about_y * sm.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])) is None
+
+
+EXTRA_TERM = """NEWTONIAN N
+PARTICLES P
+MOTIONVARIABLES' X', U'
+CONSTANTS M, K
+X' = U
+P_NO_P> = X*N1>
+V_P_N> = U*N1>
+MASS P = M
+ZERO = FR() + FRSTAR()
+ZERO[1] = ZERO[1] - K*X
+KANE()
+INPUT M = 1, K = 2, X = 1, U = 0, TFINAL = 1
+OUTPUT X
+CODE DYNAMICS() extra.c
+"""
+
+
+def test_equations_beyond_fr_plus_frstar_are_not_written_as_sympys_kane(tmp_path):
+    # ZERO has a spring term no load gives: KanesMethod on the bodies and loads would drop
+    # it, so auto writes the equations, and mechanics is refused
+    path = tmp_path / "extra.al"
+    path.write_text(EXTRA_TERM)
+    model = autolev.load(path)
+    text = export_sympy(model, "extra.al")
+    assert "Not the mechanics level: sympy's KanesMethod on the model's bodies and loads " \
+           "does not give the equations the run integrates" in " ".join(text.split())
+    with pytest.raises(AutolevModelError, match="does not give the equations"):
+        export_sympy(model, "extra.al", level="mechanics")
