@@ -38,7 +38,29 @@ def test_the_scripts_kane_equals_our_equations_and_runs_as_autolev_run(name, tmp
     found = run_script(script, tmp_path / "rows.csv")
     assert found["level"] == "mechanics"
     assert equations_difference(model, model.code_commands[0], found) <= 1e-10
-    assert rows_difference(model, tmp_path / "rows.csv", 1.0) <= 1e-6
+    assert rows_difference(model, tmp_path / "rows.csv", TFINAL=1) <= 1e-6
+
+
+@pytest.mark.parametrize("schedule, times", [
+    # a step while T + INTEGSTP/100 falls short of TFINAL: the last row passes TFINAL
+    ("TFINAL=0.25 INTEGSTP=0.1 PRINTINT=1", [0, 0.1, 0.2, 0.3]),
+    ("TFINAL=0.5 INTEGSTP=0.1 PRINTINT=2", [0, 0.2, 0.4, 0.5]),
+    ("TFINAL=1 INTEGSTP=1500 PRINTINT=1", [0]),          # SSOpt's 1500 s step: no step
+])
+def test_the_script_prints_the_rows_autolevs_programs_print(schedule, times, tmp_path):
+    # the runner printed every INTEGSTP*PRINTINT and at TFINAL: a row more than Autolev
+    settings = [f"--set={item}" for item in schedule.split()]
+    out = tmp_path / "simple_pendulum_sympy.py"
+    assert main(["convert", "--to", "sympy", str(EXAMPLES / "simple_pendulum.al"), "-o",
+                 str(out), "-q", *settings]) == 0
+    run_script(out, tmp_path / "rows.csv")
+    written = [float(line.split(",")[0]) for line in
+               (tmp_path / "rows.csv").read_text().splitlines()[1:]]
+    assert written == pytest.approx(times, abs=1e-12)
+    model = autolev.load(EXAMPLES / "simple_pendulum.al")
+    inputs = dict(item.split("=") for item in schedule.split())
+    assert list(model.simulate(**{k: float(v) for k, v in inputs.items()}).t) == \
+        pytest.approx(times, abs=1e-12)
 
 
 @pytest.mark.parametrize("name", sorted(EQUATIONS))

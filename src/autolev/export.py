@@ -252,8 +252,8 @@ def numeric_functions():
 
 
 def integrate(tfinal=None):
-    """The OUTPUT rows from TINITIAL to TFINAL (or `tfinal`), one every PRINTINT steps
-    of INTEGSTP and at the end, as an array (a column per output)."""
+    """The OUTPUT rows from TINITIAL to TFINAL (or `tfinal`) as Autolev's programs print
+    them, as an array (a column per output)."""
     mass, force, columns = numeric_functions()
     p = [constants[c] for c in constants]
     x0 = np.array([initial_conditions[x] for x in states], dtype=float)
@@ -267,22 +267,30 @@ def integrate(tfinal=None):
         return np.linalg.solve(np.asarray(mass(time, x, p, s), dtype=float),
                                np.asarray(force(time, x, p, s), dtype=float).ravel())
 
-    step = integration["INTEGSTP"] * integration["PRINTINT"]
-    count = int(np.floor((t1 - t0) / step + 1e-9))
-    times = t0 + step * np.arange(count + 1)
-    if times[-1] < t1 - 1e-12 * max(1.0, abs(t1)):
-        times = np.append(times, t1)
-    solution = solve_ivp(rates_of, (t0, t1), x0, method="DOP853", t_eval=times,
+    def row_at(time, x):
+        rate = rates_of(time, x)
+        return np.asarray(columns(time, x, p, values_of_specified(time),
+                                  [rate[k] for k in unknown_states]), dtype=float).ravel()
+
+    # Autolev's loop: a step of INTEGSTP while T + INTEGSTP/100 falls short of TFINAL,
+    # a row every PRINTINT steps and after the last (which may pass TFINAL)
+    h, every = integration["INTEGSTP"], integration["PRINTINT"]
+
+    def done(time):
+        ahead = time + 0.01 * h
+        return ahead >= t1 if t1 >= t0 else ahead <= t1
+    times, time, steps = [t0], t0, 0
+    while not done(time):
+        time, steps = time + h, steps + 1
+        if steps % every == 0 or done(time):
+            times.append(time)
+    if len(times) == 1:
+        return np.array([row_at(t0, x0)])
+    solution = solve_ivp(rates_of, (t0, times[-1]), x0, method="DOP853", t_eval=times,
                          rtol=integration["RELERR"], atol=integration["ABSERR"])
     if not solution.success:
         raise RuntimeError(solution.message)
-    rows = []
-    for time, x in zip(solution.t, solution.y.T):
-        rate = rates_of(time, x)
-        solved = [rate[k] for k in unknown_states]
-        rows.append(np.asarray(columns(time, x, p, values_of_specified(time), solved),
-                               dtype=float).ravel())
-    return np.array(rows)
+    return np.array([row_at(time, x) for time, x in zip(solution.t, solution.y.T)])
 
 
 def main(argv):

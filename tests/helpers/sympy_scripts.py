@@ -104,10 +104,11 @@ def equations_difference(model, command, found: dict) -> float:
     return worst
 
 
-def rows_difference(model, csv: Path, tfinal: float) -> float:
+def rows_difference(model, csv: Path, **inputs) -> float:
     """The largest difference, relative to each column's largest value (at least 1),
-    between the script's rows and `simulate`'s (DOP853, the model's tolerances)."""
-    result = model.simulate(TFINAL=tfinal, method="dop853")
+    between the script's rows and `simulate`'s (DOP853, the model's tolerances unless
+    `inputs` give others, as the script was exported with)."""
+    result = model.simulate(method="dop853", **inputs)
     assert csv.read_text().splitlines()[0].split(",") == [
         label for t in result.outputs for label in t.labels] or [""]
     if not result.outputs:
