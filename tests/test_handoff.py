@@ -107,3 +107,16 @@ def test_a_frame_goes_over_turned_the_way_the_model_turns_it(tmp_path):
     q = sm.Function("Q")(sm.Symbol("t"))
     assert sm.simplify(a.dot(n.x) - sm.cos(q)) == 0
     assert sm.simplify(a.dot(n.y) - sm.sin(q)) == 0
+
+
+def test_an_inertia_in_a_frame_not_oriented_in_n_is_named_once(tmp_path):
+    # the message said "frame A or A" for a body's own inertia
+    path = tmp_path / "spin.al"
+    path.write_text("NEWTONIAN N\nBODIES A\nMOTIONVARIABLES' U'\nW_A_N> = U*A3>\n"
+                    "V_AO_N> = 0>\nMASS A = 1\nINERTIA A, 1, 1, 2\n"
+                    "ZERO = FR() + FRSTAR()\nKANE()\n")
+    model = autolev.load(path)
+    with pytest.raises(AutolevModelError) as caught:
+        model.to_mechanics()
+    assert str(caught.value) == ("an inertia is given in frame A, not oriented in the "
+                                 "Newtonian frame")

@@ -49,9 +49,10 @@ def _dyadic(model, dyadic, made: dict, mapping: dict):
     import sympy.physics.mechanics as me
     total = me.Dyadic(0)
     for (fa, fb), m in dyadic.terms.items():
-        if fa not in made or fb not in made:
-            raise AutolevModelError(f"an inertia is given in frame {fa.name} or {fb.name}, "
-                                    "not oriented in the Newtonian frame")
+        unoriented = [f.name for f in dict.fromkeys((fa, fb)) if f not in made]
+        if unoriented:
+            raise AutolevModelError(f"an inertia is given in frame {' and '.join(unoriented)}"
+                                    ", not oriented in the Newtonian frame")
         sa, sb = made[fa], made[fb]
         units_a, units_b = (sa.x, sa.y, sa.z), (sb.x, sb.y, sb.z)
         for i in range(3):
