@@ -120,3 +120,21 @@ def test_an_inertia_in_a_frame_not_oriented_in_n_is_named_once(tmp_path):
         model.to_mechanics()
     assert str(caught.value) == ("an inertia is given in frame A, not oriented in the "
                                  "Newtonian frame")
+
+
+def test_a_sympy_users_symbol_reaches_the_models_constant_everywhere():
+    # symbolic_system() kept the model's own real=True symbols: sm.Symbol('G') and
+    # subs silently did nothing there, though to_mechanics() took plain symbols
+    model = autolev.load(EXAMPLES / "simple_pendulum.al")
+    g, m, length = sm.symbols("G M L")
+    theta = sm.Function("THETA")(sm.Symbol("t"))
+    system = model.symbolic_system("combined")
+    rate = system.comb_implicit_mat.LUsolve(system.comb_implicit_rhs)[1]
+    assert sm.simplify(rate + g / length * sm.sin(theta)) == 0          # by hand
+    assert sm.simplify(rate.subs(g, 0)) == 0
+    assert {g, length} <= rate.free_symbols
+    # the model's own symbols (model["G"]) go over as the user's
+    weight = model.to_sympy(model["M"] * model["G"] * model["L"])
+    assert weight == m * g * length and weight.subs({m: 2, g: 3, length: 5}) == 30
+    assert {s for s in model.to_mechanics().kane.forcing_full.free_symbols
+            if not s.name == "t"} <= {g, m, length}

@@ -80,9 +80,9 @@ def equations_difference(model, command, found: dict) -> float:
         names = [str(s.args[0].func) + "_rate" if isinstance(s, sm.Derivative)
                  else str(s.func) for s in system.states]
         assert names == found["states"]
-        constants = {c.name: c for c, info in model.info.items() if info.kind == "constant"}
+        # the model's constants, as everything handed to sympy names them
         ours = sm.lambdify([me.dynamicsymbols._t, system.states,
-                            [constants[n] for n in found["constants"]],
+                            [sm.Symbol(n) for n in found["constants"]],
                             [me.dynamicsymbols(n) for n in found["specified"]]],
                            [system.comb_implicit_mat, system.comb_implicit_rhs])
         worst = 0.0

@@ -85,9 +85,6 @@ def handoff(model) -> Handoff:
             "this model's equations go over at the equations level (autolev convert --to "
             "sympy, Model.symbolic_system())")
     mapping = dynamic_map(model.scene)
-    # constants as a SymPy user writes them: sm.Symbol('K') is the model's K
-    mapping.update({c: sm.Symbol(c.name) for c, info in model.info.items()
-                    if info.kind == "constant"})
     orientations: list = []
     made = _frames(model, mapping, orientations)
     frames = {f.name: sf for f, sf in made.items()}

@@ -26,12 +26,18 @@ def _mechanics():
 
 
 def dynamic_map(scene: "Scene") -> dict:
-    """{our symbol: its sympy counterpart} for every variable and derivative."""
+    """{our symbol: its sympy counterpart}: every variable and derivative a dynamicsymbol,
+    every constant a plain Symbol of its name (no assumptions: `sm.Symbol('K')` written
+    by a SymPy user is the model's K).  The one convention of everything handed to
+    sympy: to_sympy, symbolic_system, to_mechanics and the SymPy scripts."""
     me = _mechanics()
     mapping: dict = {S.TIME: me.dynamicsymbols._t}
     for sym, info in scene.info.items():
         base, order = S.base_and_order(sym)
-        if info.kind == "constant" or order:
+        if info.kind == "constant":
+            mapping[sym] = sm.Symbol(sym.name)
+            continue
+        if order:
             continue
         f = me.dynamicsymbols(sym.name)
         mapping[sym] = f
