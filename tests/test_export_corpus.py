@@ -1,5 +1,7 @@
 """`autolev convert --to sympy` over the public corpus (issue 33): every visible model that
-builds and runs (its first CODE DYNAMICS or ODE over 1 s) exports; at the mechanics level
+builds and runs (its first CODE DYNAMICS or ODE over 1 s, with the values the journeys
+give it: INPUT, the .in its repository ships, then 1 for each constant still without a
+value, 0 for a product of inertia) exports; at the mechanics level
 when it has no dependent or auxiliary speeds and at most 12 speeds, else at the equations
 level saying why.  Each script, run where autolev cannot be imported, gives our equations
 at 20 random points to 1e-10 and `simulate`'s rows over 1 s to 1e-6."""
@@ -12,7 +14,7 @@ import pytest
 
 import autolev
 from autolev.export_mechanics import MOST_SPEEDS, export_sympy
-from autolev.runtime.errors import AutolevModelError
+from autolev.runtime.errors import AutolevModelError, MissingValues
 from helpers import ROOT, SHARED
 from helpers.sympy_scripts import equations_difference, rows_difference, run_script
 
@@ -20,6 +22,7 @@ pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 sys.path.insert(0, str(ROOT / "bench"))
 import corpus as corpus_bench  # noqa: E402
+import journeys as journeys_bench  # noqa: E402
 
 LIMIT = 900      # seconds for one model: build, run, export, the script's run
 # the rates at the equations level are solved through the mass matrix: its conditioning
@@ -33,16 +36,16 @@ INPUTS = {"TFINAL": 1, "ABSERR": 1e-10, "RELERR": 1e-10}
 
 def export_and_compare(args) -> dict:
     """One model: {'id', 'outcome' (not built / not run / exported / failing), 'level',
-    'speeds', 'detail'}."""
+    'speeds', 'detail'}; `shipped`: the .in its repository ships, or None."""
     import signal
-    ident, path = args
+    ident, path, shipped = args
     out = {"id": ident, "outcome": "exported", "level": "", "speeds": 0, "detail": ""}
     signal.signal(signal.SIGALRM, corpus_bench._alarm)
     signal.alarm(LIMIT)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            _compare(Path(path), out)
+            _compare(Path(path), shipped and Path(shipped), out)
     except corpus_bench._Timeout:
         out.update(outcome="failing", detail=f"did not finish in {LIMIT} s")
     except Exception as exc:     # reported with the model's name, and the test fails
@@ -52,7 +55,22 @@ def export_and_compare(args) -> dict:
     return out
 
 
-def _compare(path: Path, out: dict) -> None:
+def _values(model, path: Path, shipped: Path | None, rounds: int = 8):
+    """(result, values) of `simulate` over 1 s with the journeys' values: INPUT, the
+    shipped .in, then by rule for the constants the run names as having none."""
+    parsed = journeys_bench.read_model(path)      # the model loaded: it parses
+    products = parsed.products_of_inertia
+    values = dict(INPUTS)
+    for _ in range(rounds):
+        try:
+            return model.simulate(method="dop853", infile=shipped, **values), values
+        except MissingValues as exc:
+            values.update({name: float(v) for name, v in
+                           journeys_bench.rule_values(exc.names, products).items()})
+    raise AssertionError(f"still missing values after {rounds} rounds")
+
+
+def _compare(path: Path, shipped: Path | None, out: dict) -> None:
     try:
         model = autolev.load(path)
     except autolev.AutolevError as exc:
@@ -64,7 +82,7 @@ def _compare(path: Path, out: dict) -> None:
         return
     out["speeds"] = len(model.speeds)
     try:
-        result = model.simulate(method="dop853", **INPUTS)
+        result, values = _values(model, path, shipped)
     except AutolevModelError as exc:
         out.update(outcome="not run", detail=str(exc).splitlines()[0][:120])
         return
@@ -72,7 +90,8 @@ def _compare(path: Path, out: dict) -> None:
         out.update(outcome="not run", detail=result.failure[:120])
         return
     try:
-        text = export_sympy(model, path.name, integrating[0], overrides=INPUTS)
+        text = export_sympy(model, path.name, integrating[0], infile=shipped,
+                            overrides=values)
     except AutolevModelError as exc:
         out.update(outcome="failing", detail="export: " + str(exc).splitlines()[0][:160])
         return
@@ -90,7 +109,7 @@ def _compare(path: Path, out: dict) -> None:
             return
         equations = equations_difference(model, integrating[0], found)
         try:
-            rows = rows_difference(model, csv, **INPUTS)
+            rows = rows_difference(model, csv, infile=shipped, **values)
         except AssertionError as exc:
             out.update(outcome="failing", detail=f"rows: {exc}")
             return
@@ -101,11 +120,16 @@ def _compare(path: Path, out: dict) -> None:
 
 def test_every_corpus_model_that_runs_exports_and_agrees(corpus):
     from concurrent.futures import ProcessPoolExecutor, as_completed
-    models = corpus_bench.corpus_models(corpus, SHARED / "corpus" / "visible.tsv")
+    listing = SHARED / "corpus" / "visible.tsv"
+    models = corpus_bench.corpus_models(corpus, listing)
+    shipped = journeys_bench.companions(listing)
+    cases = []
+    for ident, path in models:
+        found = journeys_bench.nearest(path, shipped.get(ident, []))
+        cases.append((ident, str(path), found and str(found)))
     results = []
     with ProcessPoolExecutor(2) as pool:
-        for done in as_completed([pool.submit(export_and_compare, (i, str(p)))
-                                  for i, p in models]):
+        for done in as_completed([pool.submit(export_and_compare, case) for case in cases]):
             results.append(done.result())
             r = results[-1]
             print(f"[{len(results)}/{len(models)}] {r['outcome']} {r['level']} {r['id']}",
