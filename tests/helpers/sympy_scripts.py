@@ -13,6 +13,7 @@ import numpy as np
 import sympy as sm
 import sympy.physics.mechanics as me
 
+from autolev.runtime.numerics.options import RunOptions
 from autolev.runtime.numerics.prepare import prepare_command
 
 # in a process where autolev cannot be imported: the script's equations at random points
@@ -91,7 +92,8 @@ def equations_difference(model, command, found: dict) -> float:
             worst = max(worst, largest_difference(mass, our_mass),
                         largest_difference(forcing, np.asarray(our_forcing).ravel()))
         return worst
-    system = prepare_command(model, command).system
+    # the constants' values are the driver's (set_parameters): none is needed here
+    system = prepare_command(model, command, RunOptions(missing_values="zero")).system
     # in the run's order; named as identifiers (X' as Xp, a name the script uses renamed)
     assert len(found["states"]) == len(system.states)
     assert len(found["constants"]) == len(system.params)
