@@ -36,6 +36,10 @@ def replace(src, dst):
     return real(src, dst)
 files.os.replace = replace
 model.simulate(out_dir=sys.argv[2], TFINAL=2)
+# a signal the kernel gives to another thread (BLAS's) may arrive after the run: it
+# ends the process here, not never (on a loaded machine the script could end first)
+import time
+time.sleep(60)
 """
 
 
