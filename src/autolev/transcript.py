@@ -381,8 +381,9 @@ def _defined(program: ir.Program, name: str, target: ir.Expr) -> _Shown:
 
 def _work_integrals(value, known: dict) -> list:
     """The integrals of NICHECK() in a value: WCHECK1, its rate defined (SSOpt (312))."""
-    symbols = getattr(value, "free_symbols", set())
-    return sorted((s for s in symbols if isinstance(s, sm.Symbol) and
+    if not isinstance(value, sm.Expr):           # NICHECK() is a scalar
+        return []
+    return sorted((s for s in value.free_symbols if isinstance(s, sm.Symbol) and
                    re.fullmatch(r"WCHECK\d+", s.name) and derivative(s) in known),
                   key=lambda s: s.name)
 
