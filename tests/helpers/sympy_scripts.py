@@ -106,16 +106,23 @@ def equations_difference(model, command, found: dict) -> float:
     return worst
 
 
-def rows_difference(model, csv: Path, **inputs) -> float:
+def rows_difference(model, csv: Path, rows: int | None = None, **inputs) -> float:
     """The largest difference, relative to each column's largest value (at least 1),
     between the script's rows and `simulate`'s (DOP853, the model's tolerances unless
-    `inputs` give others, as the script was exported with)."""
+    `inputs` give others, as the script was exported with); over the first `rows` rows
+    only, when given."""
     result = model.simulate(method="dop853", **inputs)
     assert csv.read_text().splitlines()[0].split(",") == [
         label for t in result.outputs for label in t.labels] or [""]
     if not result.outputs:
         return 0.0                   # no OUTPUT: the header is empty, as are the rows
     ours = np.column_stack([t.data for t in result.outputs])
-    rows = np.loadtxt(csv, delimiter=",", skiprows=1, ndmin=2)
-    assert rows.shape == ours.shape, (rows.shape, ours.shape)
-    return float((np.abs(rows - ours) / np.maximum(1.0, np.abs(ours).max(axis=0))).max())
+    theirs = np.loadtxt(csv, delimiter=",", skiprows=1, ndmin=2)
+    assert theirs.shape == ours.shape, (theirs.shape, ours.shape)
+    return float(column_relative(theirs, ours)[:rows].max())
+
+
+def column_relative(theirs, ours) -> np.ndarray:
+    """Each row's largest difference, relative to each column's largest value in `ours`
+    (at least 1)."""
+    return (np.abs(theirs - ours) / np.maximum(1.0, np.abs(ours).max(axis=0))).max(axis=1)
