@@ -24,6 +24,9 @@ RENAMES = 9        # the record of what autolev wrote, the 7 files, the record a
 
 SCRIPT = """
 import os, signal, sys
+# a shell's background job starts with SIGINT ignored, and Python then keeps it so:
+# Ctrl-C as a terminal delivers it, whatever started the tests
+signal.signal(signal.SIGINT, signal.default_int_handler)
 import autolev
 from autolev.runtime.numerics import files
 model = autolev.load(sys.argv[1])
@@ -36,10 +39,6 @@ def replace(src, dst):
     return real(src, dst)
 files.os.replace = replace
 model.simulate(out_dir=sys.argv[2], TFINAL=2)
-# a signal the kernel gives to another thread (BLAS's) may arrive after the run: it
-# ends the process here, not never (on a loaded machine the script could end first)
-import time
-time.sleep(60)
 """
 
 
