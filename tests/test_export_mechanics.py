@@ -129,3 +129,17 @@ def test_equations_beyond_fr_plus_frstar_are_not_written_as_sympys_kane(tmp_path
            "does not give the equations the run integrates" in " ".join(text.split())
     with pytest.raises(AutolevModelError, match="does not give the equations"):
         export_sympy(model, "extra.al", level="mechanics")
+
+
+def test_the_rate_of_a_specified_quantity_keeps_a_model_at_the_equations_level(tmp_path):
+    # dogtail's PX': auto raised "the mechanics level has no specified quantity px'"
+    path = tmp_path / "base.al"
+    path.write_text("NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' Q'\nSPECIFIED PX''\n"
+                    "CONSTANTS M\nMASS P = M\nP_NO_P> = (PX + Q)*N1>\n"
+                    "V_P_N> = DT(P_NO_P>, N)\nA_P_N> = DT(V_P_N>, N)\n"
+                    "ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 2, Q = 0, Q' = 0, TFINAL = 1\n"
+                    "OUTPUT T, Q\nCODE DYNAMICS() base.c\n")
+    model = autolev.load(path)
+    text = export_sympy(model, "base.al")
+    assert "\nLevel: equations." in text
+    assert "its equations read PX'', the rates of specified quantities" in " ".join(text.split())

@@ -314,6 +314,11 @@ def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Hando
         h = handoff(model)
     except AutolevModelError as exc:
         return str(exc), None
+    handed = {str(s.func) for s in h.specified}
+    rates = [s.name for s in eqs.specified if s.name not in handed]
+    if rates:
+        return ("its equations read " + ", ".join(rates) + ", the rates of specified "
+                "quantities, which the mechanics level does not write"), None
     why = _unlike_the_run(h, eqs)
     return (why, None) if why else (None, h)
 
