@@ -352,7 +352,7 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
         report.error = replayed.error
         return report
     model = replayed.model
-    points = _SamplePoints(model, points)
+    sample = _SamplePoints(model, points)
     for k, r in enumerate(session.responses):
         if k in refused:
             report.outcomes.append(Outcome(r, "not comparable", refused[k]))
@@ -367,13 +367,13 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
             if sym is None:
                 report.outcomes.append(Outcome(r, "not comparable", replayed.ours_missing[k]))
                 continue
-            o = _compare(points.wanted(None), r, sym, replayed.theirs[k], session.path,
+            o = _compare(sample.wanted(None), r, sym, replayed.theirs[k], session.path,
                          tolerance)
             o.detail += " (a name the engine defines, compared with its definition)"
             report.outcomes.append(o)
         else:
             ours, known = replayed.ours[k]
-            report.outcomes.append(_compare(points.wanted(known), r, ours,
+            report.outcomes.append(_compare(sample.wanted(known), r, ours,
                                             replayed.theirs[k], session.path, tolerance))
     _judge_z_responses(session, parsed, report)
     return report

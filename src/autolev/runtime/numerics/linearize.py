@@ -186,18 +186,17 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     n_columns = sum(len(cols) for cols in system.files)
     key = (tuple(display_name(s) for s in chosen), n_columns, backend)
     jacobians = system.jacobians.get(key)
+    tier = None
     if jacobians is None:           # once per system: a sweep, and a later process, reuse them
-        with model.defs.as_of(command.definitions), SlowStep(
-                progress, f"CODE DYNAMICS {command.filename}: forming the Jacobians"):
-            jacobians = system.jacobians[key] = _jacobian_functions(
-                system, chosen, n_columns, "python" if backend == "auto" else backend)
-        to_be_kept(model)
+        tier, step = ("python" if backend == "auto" else backend), "forming the Jacobians"
     elif backend == "auto" and jacobians.compiling_pays():
+        tier, step = "auto", (f"compiling the Jacobians (a sweep of "
+                              f"{jacobians.evaluations} points so far)")
+    if tier is not None:
         with model.defs.as_of(command.definitions), SlowStep(
-                progress, f"CODE DYNAMICS {command.filename}: compiling the Jacobians (a "
-                f"sweep of {jacobians.evaluations} points so far)"):
+                progress, f"CODE DYNAMICS {command.filename}: {step}"):
             jacobians = system.jacobians[key] = _jacobian_functions(system, chosen,
-                                                                    n_columns, "auto")
+                                                                    n_columns, tier)
         to_be_kept(model)
     t0 = prepared.inputs.internal("TINITIAL")
     x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
