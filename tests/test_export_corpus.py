@@ -72,12 +72,12 @@ def _values(model, path: Path, shipped: Path | None, rounds: int = 8):
     raise AssertionError(f"still missing values after {rounds} rounds")
 
 
-def _trusted_rows(model, shipped: Path | None, values: dict) -> int:
+def _trusted_rows(model, run, shipped: Path | None, values: dict) -> int:
     """How many rows of the run are the motion to a tenth of the rows' tolerance: those
     before the row where the run parts from itself by 1e-7 at tolerances 1000 times
     smaller (journeys.py's rule: past it the rows depend on the step sequence, a contact
-    switching or a motion going wild, and no other integrator can be held to 1e-6)."""
-    run = model.simulate(method="dop853", infile=shipped, **values)
+    switching or a motion going wild, and no other integrator can be held to 1e-6).
+    `run`: the run with `values`."""
     tight = dict(values, ABSERR=values["ABSERR"] / 1000, RELERR=values["RELERR"] / 1000)
     again = model.simulate(method="dop853", infile=shipped, **tight)
     ours = np.column_stack([t.data for t in run.outputs]) if run.outputs else None
@@ -126,7 +126,7 @@ def _compare(path: Path, shipped: Path | None, out: dict) -> None:
             return
         equations = equations_difference(model, integrating[0], found)
         try:
-            trusted = _trusted_rows(model, shipped, values)
+            trusted = _trusted_rows(model, result, shipped, values)
             rows = rows_difference(model, csv, rows=trusted, infile=shipped, **values)
         except AssertionError as exc:
             out.update(outcome="failing", detail=f"rows: {exc}")
