@@ -2,9 +2,10 @@
 builds and runs (its first CODE DYNAMICS or ODE over 1 s, with the values the journeys
 give it: INPUT, the .in its repository ships, then 1 for each constant still without a
 value, 0 for a product of inertia) exports; at the mechanics level
-when it has no dependent or auxiliary speeds and at most 12 speeds, else at the equations
-level saying why.  Each script, run where autolev cannot be imported, gives our equations
-at 20 random points to 1e-10 and `simulate`'s rows over 1 s to 1e-6."""
+when it has at most 12 speeds (independent and dependent) and sympy's KanesMethod gives
+its equations, else at the equations level saying why.  Each script, run where autolev
+cannot be imported, gives our equations at 20 random points to 1e-10 and `simulate`'s
+rows over 1 s to 1e-6."""
 import sys
 import tempfile
 import warnings
@@ -97,7 +98,7 @@ def _compare(path: Path, shipped: Path | None, out: dict) -> None:
     if not integrating:
         out.update(outcome="not run", detail="no CODE DYNAMICS or ODE")
         return
-    out["speeds"] = len(model.speeds)
+    out["speeds"] = len(model.speeds) + len(model.dependent_speeds)
     try:
         result, values = _values(model, path, shipped)
     except AutolevModelError as exc:

@@ -13,8 +13,10 @@ from autolev.runtime.errors import AutolevModelError
 from autolev.runtime.numerics.prepare import prepare_command
 from helpers import EXAMPLES
 
+# fourbar has dependent and auxiliary speeds, rolling_disc dependent ones
 HANDED = ["simple_pendulum", "double_pendulum", "cart_pendulum", "mass_spring_damper",
-          "block_pendulums", "nlink_pendulum", "euler_parameters_body"]
+          "block_pendulums", "nlink_pendulum", "euler_parameters_body", "fourbar",
+          "rolling_disc"]
 
 
 @pytest.mark.parametrize("name", HANDED)
@@ -27,44 +29,79 @@ def test_sympys_kanes_method_gives_our_rates(name):
     system = prepare_command(model, command).system
     time = me.dynamicsymbols._t
     x = [h.states[s] for s in system.states]            # our state order
-    sympy_state = h.coordinates + h.speeds
-    rates = h.kane.mass_matrix_full.LUsolve(h.kane.forcing_full)
+    sympy_state = h.coordinates + h.speeds + h.dependent
+    assert [u.name for u in model.dependent_speeds] == [str(u.func) for u in h.dependent]
+    # sympy's velocity constraints read the auxiliary speeds, zero in motion
+    full = [m.xreplace({u.diff(time): 0 for u in h.auxiliary}).xreplace(
+        dict.fromkeys(h.auxiliary, 0)) for m in (h.kane.mass_matrix_full, h.kane.forcing_full)]
     order = [sympy_state.index(v) for v in x]
     specified = {s: 0 for s in h.specified}
     rng = np.random.default_rng(11)
-    dummy = sm.symbols(f"x0:{len(x)}")
+    dummy = sm.symbols(f"x0:{len(sympy_state)}")
     # constants are plain symbols of their names, as a SymPy user writes them
     params = [sm.Symbol(str(c)) for c in system.params]
-    assert h.kane.forcing_full.free_symbols - {time} <= set(params)
-    fn = sm.lambdify([*dummy, *params, time],
-                     sm.Matrix(rates).xreplace(dict(zip(x, dummy))).xreplace(specified))
+    assert full[1].free_symbols - {time} <= set(params)
+    fn = sm.lambdify([dummy, params, time],
+                     [m.xreplace(dict(zip(sympy_state, dummy))).xreplace(specified)
+                      for m in full])
     for _ in range(5):
         p = rng.uniform(0.5, 1.5, len(system.params))
         state = rng.uniform(-1.0, 1.0, len(x))
         system.set_parameters(p)
         ours = system.derivatives(0.3, state)
-        theirs = np.asarray(fn(*state, *p, 0.3), dtype=float).ravel()[order]
+        at = dict(zip(x, state)) | dict(zip(params, p)) | specified | {time: 0.3}
+        # the dependent speeds where the constraints hold, as our run computes them
+        held = h.dependent_speeds_at(at)
+        values = dict(zip(x, state)) | held
+        mass, forcing = fn([values[v] for v in sympy_state], p, 0.3)
+        theirs = np.linalg.solve(mass, np.asarray(forcing, dtype=float).ravel())[order]
         assert np.allclose(theirs, ours, atol=1e-9 * max(1.0, np.abs(ours).max()))
 
 
-def test_a_model_with_constrained_speeds_is_refused_with_the_way_out():
-    model = autolev.load(EXAMPLES / "rolling_disc.al")
-    with pytest.raises(AutolevModelError) as refused:
+def test_the_dependent_speeds_are_sympys_with_the_models_velocity_constraints():
+    model = autolev.load(EXAMPLES / "fourbar.al")
+    h = model.to_mechanics()
+    assert [str(u.func) for u in h.dependent] == ["U2", "U3"]
+    assert [str(u.func) for u in h.auxiliary] == ["UA1", "UA2"]
+    assert [str(f.func) for f in h.unknowns] == ["F1", "F2"]
+    # CONSTRAIN(DEPENDENT[U2, U3]) of the closing point P5: by hand, its velocity in N
+    q1, q2, q3 = h.coordinates
+    u1, (u2, u3), (ua1, ua2) = h.speeds[0], h.dependent, h.auxiliary
+    l2, l3, l4 = sm.symbols("L2 L3 L4")
+    x = l2 * sm.cos(q1) + l3 * sm.cos(q1 + q2) + l4 * sm.cos(q1 + q2 + q3)
+    y = l2 * sm.sin(q1) + l3 * sm.sin(q1 + q2) + l4 * sm.sin(q1 + q2 + q3)
+    time = q1.args[0]
+    by_hand = [x.diff(time) + ua1, y.diff(time) + ua2]
+    rates = {q.diff(time): u for q, u in zip(h.coordinates, (u1, u2, u3))}
+    for ours, theirs in zip(h.velocity_constraints, by_hand):
+        assert sm.simplify(ours - theirs.subs(rates)) == 0
+
+
+def test_an_auxiliary_speed_not_zero_in_motion_is_refused(tmp_path):
+    path = tmp_path / "aux.al"
+    path.write_text("NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' Q', U', UA'\nCONSTANTS M\n"
+                    "MASS P = M\nQ' = U\nV_P_N> = (U + UA)*N1>\nAUXILIARY[1] = UA - U\n"
+                    "CONSTRAIN(AUXILIARY[UA])\nVARIABLES R\nFORCE_P> = R*N1>\n"
+                    "ZERO = FR() + FRSTAR()\nKANE(R)\n")
+    model = autolev.load(path)
+    with pytest.raises(AutolevModelError, match="the auxiliary speed UA is U in motion"):
         model.to_mechanics()
-    assert "equations level (autolev convert --to sympy" in str(refused.value)
 
 
 @pytest.mark.skipif(importlib.util.find_spec("pydy") is None,
                     reason="PyDy is an optional extra (pip install pydy)")
-def test_pydy_integrates_the_handed_model_as_simulate_does():
-    model = autolev.load(EXAMPLES / "double_pendulum.al")
-    system = model.to_pydy(TFINAL=2)
+@pytest.mark.parametrize("name, tfinal", [("double_pendulum", 2), ("fourbar", 0.5),
+                                          ("rolling_disc", 1)])
+def test_pydy_integrates_the_handed_model_as_simulate_does(name, tfinal):
+    # fourbar: PyDy integrates the dependent speeds too, from where the constraints hold
+    model = autolev.load(EXAMPLES / f"{name}.al")
+    system = model.to_pydy(TFINAL=tfinal)
     rows = system.integrate()
-    result = model.simulate(TFINAL=2, method="dop853", RELERR=1e-10, ABSERR=1e-10)
+    result = model.simulate(TFINAL=tfinal, method="dop853", RELERR=1e-10, ABSERR=1e-10)
     h = model.to_mechanics()
     ours = {name: result.states[:, k] for k, name in enumerate(result.state_names)}
-    assert rows.shape == (len(result.t), 4)
-    for j, state in enumerate(system.states):
+    assert rows.shape == (len(result.t), len(result.state_names) + len(h.dependent))
+    for j, state in enumerate(system.states[:len(result.state_names)]):
         ours_name = next(str(s) for s, v in h.states.items() if v == state)
         assert np.allclose(rows[:, j], ours[ours_name], atol=1e-5), ours_name
 

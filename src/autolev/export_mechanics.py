@@ -23,7 +23,7 @@ from .export import (RUNNER, ScriptPrinter, expression_text, identifier, quoted_
 from .runtime import symbols as S
 from .runtime.equations_of import Equations, equations_of, state_of
 from .runtime.errors import AutolevModelError
-from .runtime.handoff import Handoff, handoff
+from .runtime.handoff import CONSTRAINT_SOLVER, Handoff, handoff
 
 LEVELS = ("auto", "mechanics", "equations")
 # KanesMethod forms and inverts symbolic matrices: beyond this many speeds it is slow
@@ -129,6 +129,11 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
         names[q] = names[h.states[q]] = identifier(q.name, taken)
     for u in model.speeds:
         names[u] = names[h.states[u]] = identifier(str(h.states[u].func), taken)
+    for u in h.dependent + h.auxiliary:
+        names[u] = identifier(str(u.func), taken)
+    for ours, force in zip(model.kane_equations.unknowns if h.unknowns else [], h.unknowns):
+        # one name for KANE's unknown in the loads and as the run computes it
+        names[ours] = names[force] = identifier(str(force.func), taken)
     specified = {str(s.func): s for s in h.specified}
     for s in eqs.specified:
         if s.name not in specified:
@@ -152,9 +157,11 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
     wanted = _definitions_wanted(eqs, before + after)
     before = [(z, e) for z, e in before if z in wanted]
     after = [(z, e) for z, e in after if z in wanted]
+    declared = set(names)
     for z, _ in before + after:
-        base, order = S.base_and_order(z)
-        names[z] = identifier(base.name + "p" * order, taken)
+        if z not in declared:
+            base, order = S.base_and_order(z)
+            names[z] = identifier(base.name + "p" * order, taken)
     printer = MechanicsPrinter(names)
     p = printer.doprint
     where = model.loaded.defined_at if model.loaded is not None else {}
@@ -172,8 +179,17 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
            "import sympy.physics.mechanics as me", "from scipy.integrate import solve_ivp", "",
            "t = me.dynamicsymbols._t", "",
            "# generalized coordinates and speeds: functions of time"]
-    for q in h.coordinates + h.speeds:
+    for q in h.coordinates + h.speeds + h.dependent:
         out.append(f"{names[q]} = me.dynamicsymbols({str(q.func)!r})")
+    if h.auxiliary:
+        out += ["", "# auxiliary speeds: zero in motion, they bring noncontributing forces "
+                "into evidence"]
+        out += [f"{names[u]} = me.dynamicsymbols({str(u.func)!r})" for u in h.auxiliary]
+        out.append("auxiliary = [" + ", ".join(names[u] for u in h.auxiliary) + "]")
+    if h.unknowns:
+        out += ["", "# KANE's unknowns: noncontributing forces, which kane.auxiliary_eqs "
+                "(= 0) give"]
+        out += [f"{names[f]} = me.dynamicsymbols({str(f.func)!r})" for f in h.unknowns]
     if eqs.specified:
         out += ["", "# specified quantities: functions of time (values in `specified`)"]
         out += [f"{names[s]} = me.dynamicsymbols({str(s.func)!r})" for s in h.specified
@@ -224,23 +240,47 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
         rate = h.states[q].diff(me.dynamicsymbols._t) - equation
         out.append(f"    {names[q]}.diff(t) - "
                    f"{printer.parenthesize(rate, PRECEDENCE['Add'])},")
-    out += ["]", "",
+    out += ["]"]
+    constrained = ""
+    if h.dependent:
+        out += ["", "# velocity constraints (each = 0), which give the dependent speeds "
+                "(CONSTRAIN(DEPENDENT[...]));",
+                "# KanesMethod solves them by Cramer's rule: its default LU divides by "
+                "pivots that",
+                "# vanish at some states where the constraints are regular (0/0)",
+                "velocity_constraints = ["]
+        out += [f"    {p(c)}," for c in h.velocity_constraints] + ["]"]
+        out.append("dependent = [" + ", ".join(names[u] for u in h.dependent) + "]")
+        constrained += (", u_dependent=dependent, velocity_constraints=velocity_constraints"
+                        f", constraint_solver={CONSTRAINT_SOLVER!r}")
+    if h.auxiliary:
+        constrained += ", u_auxiliary=auxiliary"
+    out += ["",
             f"kane = me.KanesMethod({names[h.newtonian]}, q_ind=["
             + ", ".join(names[q] for q in h.coordinates) + "], u_ind=["
-            + ", ".join(names[u] for u in h.speeds) + "], kd_eqs=kd_eqs)",
+            + ", ".join(names[u] for u in h.speeds) + "], kd_eqs=kd_eqs"
+            + constrained + ")",
             "kane.kanes_equations(bodies, loads)", "",
             "# as one system: full_mass * d(states)/dt = full_forcing",
-            "states = list(kane.q) + list(kane.u)",
-            "full_mass = kane.mass_matrix_full",
-            "full_forcing = kane.forcing_full", ""]
-    state_names = [names[s] for s in h.coordinates + h.speeds]
+            "states = list(kane.q) + list(kane.u)"]
+    if h.auxiliary:
+        out += ["# the auxiliary speeds, which the velocity constraints read, are zero in "
+                "motion",
+                "full_mass, full_forcing = (",
+                "    m.xreplace({u.diff(t): 0 for u in auxiliary}).xreplace("
+                "dict.fromkeys(auxiliary, 0))",
+                "    for m in (kane.mass_matrix_full, kane.forcing_full))", ""]
+    else:
+        out += ["full_mass = kane.mass_matrix_full", "full_forcing = kane.forcing_full", ""]
+    state_names = [names[s] for s in h.coordinates + h.speeds + h.dependent]
     if eqs.unknowns:
         out += ["# the rates solved from the mass matrix, as the outputs use them"]
         out += [f"{unknown_names[u]} = {names[state_of(u)]}.diff(t)" for u in eqs.unknowns]
     if before or after:
         out += ["# intermediates the outputs use (Autolev's Z's, the model's definitions), as",
                 "# functions of time, and what each is, in the order they are computed"]
-        out += [f"{names[z]} = me.dynamicsymbols({names[z]!r})" for z, _ in before + after]
+        out += [f"{names[z]} = me.dynamicsymbols({names[z]!r})" for z, _ in before + after
+                if z not in declared]
     out += ["intermediates = ["]
     out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in before]
     out += ["]", "# those that need the solved rates", "after_solving = ["]
@@ -250,6 +290,18 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
                 str(state_names.index(names[state_of(u)])) for u in eqs.unknowns) + "]",
             ""]
     out += values_text(eqs, names, p)
+    if h.dependent:
+        out += ["# the dependent speeds start where the velocity constraints hold",
+                "at_start = {t: integration['TINITIAL'], **constants, **initial_conditions,",
+                "            **{s: v(integration['TINITIAL']) if callable(v) else v",
+                "               for s, v in specified.items()}"
+                + (", **dict.fromkeys(auxiliary, 0)}" if h.auxiliary else "}"),
+                "coefficients, rest = sm.linear_eq_to_matrix(",
+                "    [me.msubs(c, kane.kindiffdict()) for c in velocity_constraints], "
+                "dependent)",
+                "initial_conditions.update(zip(dependent, np.linalg.solve(",
+                "    np.array(coefficients.xreplace(at_start), dtype=float),",
+                "    np.array(rest.xreplace(at_start), dtype=float).ravel())))"]
     out += ["", "", RUNNER]
     return "\n".join(out) + "\n"
 
@@ -299,12 +351,9 @@ def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Hando
     (why not, None)."""
     if command.kind.upper() != "DYNAMICS":
         return f"CODE {command.kind.upper()} integrates equations of its own, not Kane's", None
-    constrained = model.dependent_speeds + model.auxiliary_speeds
-    if constrained:
-        return ("sympy's KanesMethod here takes no dependent or auxiliary speeds ("
-                + ", ".join(s.name for s in constrained) + ")"), None
-    if len(model.speeds) > MOST_SPEEDS:
-        return (f"it has {len(model.speeds)} speeds, more than the {MOST_SPEEDS} sympy's "
+    speeds = len(model.speeds) + len(model.dependent_speeds)
+    if speeds > MOST_SPEEDS:
+        return (f"it has {speeds} speeds, more than the {MOST_SPEEDS} sympy's "
                 "KanesMethod forms in reasonable time"), None
     extra = set(eqs.states) - set(model.coordinates) - set(model.speeds)
     if extra:
@@ -343,6 +392,8 @@ def _unlike_the_run(h: Handoff, eqs: Equations) -> str | None:
                       for x, r in zip(eqs.states, eqs.rates)])
     theirs = {h.states[x]: ours[x] for x in eqs.states}
     theirs |= {sm.Symbol(c.name): ours[c] for c in eqs.constants}
+    at = theirs | {s: sm.Float(0) for s in h.specified} | {me.dynamicsymbols._t: sm.Float(0.3)}
+    theirs |= {u: sm.Float(v) for u, v in h.dependent_speeds_at(at).items()}
     full = sm.Matrix.hstack(h.kane.mass_matrix_full, h.kane.forcing_full).xreplace(theirs)
     full = full.xreplace({d: 0 for d in full.atoms(sm.Derivative)})
     full = full.xreplace({f: 0 for f in full.atoms(AppliedUndef)})
@@ -350,7 +401,7 @@ def _unlike_the_run(h: Handoff, eqs: Equations) -> str | None:
     if full.free_symbols:
         return ("sympy's equations keep constants the run's do not have ("
                 + ", ".join(sorted(str(c) for c in full.free_symbols)) + ")")
-    order = [(h.coordinates + h.speeds).index(h.states[x]) for x in eqs.states]
+    order = [(h.coordinates + h.speeds + h.dependent).index(h.states[x]) for x in eqs.states]
     sympys = np.linalg.solve(np.array(full[:, :-1], dtype=float),
                              np.array(full[:, -1], dtype=float).ravel())[order]
     if np.all(np.abs(sympys - rates) <= 1e-8 * max(1.0, float(np.abs(rates).max()))):

@@ -17,8 +17,9 @@ from autolev.runtime.numerics.options import RunOptions
 from autolev.runtime.numerics.prepare import prepare_command
 
 # in a process where autolev cannot be imported: the script's equations at random points
-# (mechanics: kane's full mass matrix and forcing; equations: its mass and forcing
-# functions), printed as JSON, then its own main writing OUT.csv
+# (mechanics: kane's full mass matrix and forcing as the script takes them, auxiliary
+# speeds 0; equations: its mass and forcing functions), printed as JSON, then its own
+# main writing OUT.csv
 DRIVER = """
 import json, runpy, sys
 sys.modules['autolev'] = None
@@ -31,23 +32,36 @@ if 'kane' in ns:
     kane = ns['kane']
     states = list(kane.q) + list(kane.u)
     f = sm.lambdify([ns['t'], states, constants, specified],
-                    [kane.mass_matrix_full, kane.forcing_full])
+                    [ns['full_mass'], ns['full_forcing']], cse=True)
     level = 'mechanics'
 else:
     states = ns['states']
     mass, force, _ = ns['numeric_functions']()
     f = lambda *a: (mass(*a), force(*a))
     level = 'equations'
+dependent = ns.get('dependent', [])
+if dependent:
+    # the dependent speeds where the velocity constraints hold (auxiliary speeds 0)
+    import sympy.physics.mechanics as me
+    zero = dict.fromkeys(ns.get('auxiliary', []), 0)
+    a, b = sm.linear_eq_to_matrix([me.msubs(c, kane.kindiffdict(), zero)
+                                   for c in ns['velocity_constraints']], dependent)
+    held = sm.lambdify([ns['t'], states[:-len(dependent)], constants, specified], [a, b])
 points = []
 for _ in range(20):
     t, x = rng.uniform(0, 2), rng.uniform(-1, 1, len(states))
     p, s = rng.uniform(0.5, 1.5, len(constants)), rng.uniform(-1, 1, len(specified))
-    if level == 'equations':
+    if level == 'equations' or dependent:
         s = 0 * s            # as our compiled rates take them (0 unless the model gives them)
+    if dependent:
+        a, b = held(t, x[:-len(dependent)], p, s)
+        x[-len(dependent):] = np.linalg.solve(np.asarray(a, dtype=float),
+                                              np.asarray(b, dtype=float).ravel())
     m, F = f(t, x, p, s)
     points.append([t, x.tolist(), p.tolist(), s.tolist(), np.asarray(m, dtype=float).tolist(),
                    np.asarray(F, dtype=float).ravel().tolist()])
-print(json.dumps({'level': level, 'states': [str(s.func) for s in states],
+print(json.dumps({'level': level, 'dependent': len(dependent),
+                  'states': [str(s.func) for s in states],
                   'constants': [str(c) for c in constants],
                   'specified': [str(s.func) for s in specified], 'points': points}))
 sys.stdout.flush()
@@ -74,8 +88,9 @@ def largest_difference(theirs, ours) -> float:
 def equations_difference(model, command, found: dict) -> float:
     """The largest relative difference between the script's equations and ours over the
     driver's points: the full mass matrix and forcing (mechanics level), the rates solved
-    from them (equations level, against our compiled right-hand side)."""
-    if found["level"] == "mechanics":
+    from them (equations level, and mechanics level with dependent speeds, whose sympy
+    form differs from ours: against our compiled right-hand side)."""
+    if found["level"] == "mechanics" and not found["dependent"]:
         system = model.symbolic_system("combined")
         # a speed that is a coordinate's rate (X' declared) is X_rate in sympy
         names = [str(s.args[0].func) + "_rate" if isinstance(s, sm.Derivative)
@@ -94,14 +109,16 @@ def equations_difference(model, command, found: dict) -> float:
         return worst
     # the constants' values are the driver's (set_parameters): none is needed here
     system = prepare_command(model, command, RunOptions(missing_values="zero")).system
-    # in the run's order; named as identifiers (X' as Xp, a name the script uses renamed)
-    assert len(found["states"]) == len(system.states)
+    # in the run's order (sympy's dependent speeds after them); named as identifiers (X'
+    # as Xp, a name the script uses renamed)
+    n = len(system.states)
+    assert len(found["states"]) == n + found["dependent"]
     assert len(found["constants"]) == len(system.params)
     worst = 0.0
     for t, x, p, s, mass, forcing in found["points"]:
         system.set_parameters(p)
-        ours = system.derivatives(t, np.asarray(x))
-        theirs = np.linalg.solve(np.asarray(mass), np.asarray(forcing))
+        ours = system.derivatives(t, np.asarray(x[:n]))
+        theirs = np.linalg.solve(np.asarray(mass), np.asarray(forcing))[:n]
         worst = max(worst, largest_difference(theirs, ours))
     return worst
 

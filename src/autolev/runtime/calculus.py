@@ -257,7 +257,9 @@ class Definitions:
         self._dt_raw: dict[sm.Symbol, sm.Expr] = {}
         self._diff: dict[tuple[sm.Symbol, sm.Symbol], sm.Expr] = {}
         self._subs: dict[tuple[sm.Symbol, frozenset], sm.Expr] = {}
-        self._explicit: dict[sm.Symbol, sm.Expr] = {}
+        # the expansions, per set of symbols kept (EXPLICIT(x, [u]), the hand-off's
+        # dependent speeds): {frozenset kept: {symbol: its expansion}}
+        self._explicit: dict[frozenset, dict[sm.Symbol, sm.Expr]] = {}
         self._fs: dict[sm.Symbol, frozenset] = {}   # free symbols of each definition
         self._fo: dict[sm.Symbol, tuple] = {}       # the same, in a fixed order
         self.z_count = 0
@@ -600,11 +602,8 @@ class Definitions:
     def explicit(self, expr, keep: Iterable[sm.Symbol] = ()) -> sm.Expr:
         """expr with every definition (and Z) expanded, except the symbols in `keep`."""
         expr = sm.sympify(expr)
-        keep = set(keep)
-        if keep:
-            cache: dict = {}
-        else:
-            cache = self._explicit
+        keep = frozenset(keep)
+        cache = self._explicit.setdefault(keep, {})
         roots = [s for s in self._defined_in(expr) if s not in keep]
         for s in self._post_order(roots, cache):
             if s in keep:

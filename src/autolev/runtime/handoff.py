@@ -5,9 +5,10 @@ and a KanesMethod with Kane's equations formed by sympy itself.
 
 Everything is plain sympy: variables become dynamicsymbols, constants plain symbols of
 their names (`sm.Symbol('K')` is the model's K), every definition and Z is expanded
-(interop.py).  A model whose speeds are constrained (dependent or auxiliary
-speeds) is refused here; its equations go over at the equations level
-(`autolev convert --to sympy`, `Model.symbolic_system()`).
+(interop.py) but those of the dependent and auxiliary speeds and of KANE's unknowns,
+which stay sympy's: CONSTRAIN(DEPENDENT[...]) becomes KanesMethod's u_dependent and
+velocity_constraints (the equations as the model gives them), CONSTRAIN(AUXILIARY[...])
+its u_auxiliary, whose equations (`kane.auxiliary_eqs`) give KANE's unknowns.
 """
 from __future__ import annotations
 
@@ -19,6 +20,11 @@ import sympy as sm
 from . import symbols as S
 from .errors import AutolevModelError
 from .interop import dynamic_map, to_sympy_expr, to_sympy_frame, to_sympy_vector
+
+# the dependent speeds solved from the velocity constraints by Cramer's rule: sympy's
+# default LU divides by pivots that vanish at some states (0/0 at the upright Whipple
+# bicycle, whose constraint matrix is regular there)
+CONSTRAINT_SOLVER = "CRAMER"
 
 
 @dataclass
@@ -39,12 +45,47 @@ class Handoff:
     speeds: list                # dynamicsymbols
     kinematical_equations: list  # q' - f(q, u), each 0
     kane: object                # KanesMethod, kanes_equations done
+    dependent: list             # dynamicsymbols of the dependent speeds
+    velocity_constraints: list  # each = 0, linear in the speeds (the model's CONSTRAINs)
+    auxiliary: list             # dynamicsymbols of the auxiliary speeds
+    unknowns: list              # dynamicsymbols of KANE's unknowns (noncontributing forces)
     specified: list             # dynamicsymbols of the specified quantities
     constants: list             # the constants as plain symbols, in declaration order
     states: dict                # the model's coordinate or speed -> its dynamicsymbol
 
+    def motion(self):
+        """A KanesMethod of the motion alone: `kane` without the auxiliary speeds (zero in
+        motion, read by its velocity constraints), for what integrates (PyDy)."""
+        import sympy.physics.mechanics as me
+        if not self.auxiliary:
+            return self.kane
+        time = me.dynamicsymbols._t
+        zero = dict.fromkeys(self.auxiliary, 0)
+        derivatives = {u.diff(time): 0 for u in self.auxiliary}
+        kane = me.KanesMethod(self.newtonian, q_ind=self.coordinates, u_ind=self.speeds,
+                              kd_eqs=self.kinematical_equations, u_dependent=self.dependent,
+                              velocity_constraints=[c.xreplace(derivatives).xreplace(zero)
+                                                    for c in self.velocity_constraints],
+                              constraint_solver=CONSTRAINT_SOLVER)
+        kane.kanes_equations(self.bodies, self.loads)
+        return kane
 
-def _dyadic(model, dyadic, made: dict, mapping: dict):
+    def dependent_speeds_at(self, values: dict) -> dict:
+        """{dependent speed: its value} where the velocity constraints hold, at `values`
+        ({dynamicsymbol or constant: number}: the coordinates, independent speeds,
+        constants, specified quantities and time); the auxiliary speeds are 0."""
+        if not self.dependent:
+            return {}
+        at = values | {u: 0 for u in self.auxiliary}
+        rates = self.kane.kindiffdict()
+        coefficients, rest = sm.linear_eq_to_matrix(
+            [c.subs(rates) for c in self.velocity_constraints], self.dependent)
+        solved = np.linalg.solve(np.array(coefficients.xreplace(at), dtype=float),
+                                 np.array(rest.xreplace(at), dtype=float).ravel())
+        return dict(zip(self.dependent, solved))
+
+
+def _dyadic(model, dyadic, made: dict, mapping: dict, keep: frozenset):
     """A sympy dyadic equal to the model's: sum m_ij a_i|b_j over its frame pairs."""
     import sympy.physics.mechanics as me
     total = me.Dyadic(0)
@@ -57,36 +98,32 @@ def _dyadic(model, dyadic, made: dict, mapping: dict):
         units_a, units_b = (sa.x, sa.y, sa.z), (sb.x, sb.y, sb.z)
         for i in range(3):
             for j in range(3):
-                value = to_sympy_expr(model.scene, m[i, j], mapping)
+                value = to_sympy_expr(model.scene, m[i, j], mapping, keep)
                 if value != 0:
                     total += value * (units_a[i] | units_b[j])
     return total
 
 
-def _frames(model, mapping: dict, orientations: list) -> dict:
+def _frames(model, mapping: dict, orientations: list, keep: frozenset) -> dict:
     """Every frame oriented, through others, in the Newtonian one: {Frame: its sympy
     ReferenceFrame}, made with `mapping` (one tree of orientations from N, its edges
     appended to `orientations`)."""
     made: dict = {}
-    to_sympy_frame(model.newtonian_frame, mapping, made, orientations)
+    to_sympy_frame(model.newtonian_frame, mapping, made, orientations, keep)
     return made
 
 
 def handoff(model) -> Handoff:
     """The model as sympy.physics.mechanics objects, Kane's equations formed by sympy's
-    KanesMethod (AutolevModelError for what it does not take: constrained speeds, a
-    body or load in a frame not oriented in the Newtonian frame)."""
+    KanesMethod (AutolevModelError for what it does not take: an auxiliary speed not
+    zero in motion, a body or load in a frame not oriented in the Newtonian frame)."""
     import sympy.physics.mechanics as me
     if model.newtonian_frame is None:
         raise AutolevModelError("the mechanics hand-off needs a NEWTONIAN frame")
-    if model.dependent_speeds or model.auxiliary_speeds:
-        raise AutolevModelError(
-            "the mechanics hand-off takes models without dependent or auxiliary speeds; "
-            "this model's equations go over at the equations level (autolev convert --to "
-            "sympy, Model.symbolic_system())")
+    keep = _kept(model)
     mapping = dynamic_map(model.scene)
     orientations: list = []
-    made = _frames(model, mapping, orientations)
+    made = _frames(model, mapping, orientations, keep)
     frames = {f.name: sf for f, sf in made.items()}
     n_frame = model.newtonian_frame
     newtonian = made[n_frame]
@@ -100,7 +137,7 @@ def handoff(model) -> Handoff:
     def vector(v):
         for f in v.terms:
             frame_of(f)
-        return to_sympy_vector(v, frames=made, mapping=mapping)
+        return to_sympy_vector(v, frames=made, mapping=mapping, keep=keep)
     points: dict = {}
     velocities: dict = {}
 
@@ -120,15 +157,16 @@ def handoff(model) -> Handoff:
         if particle.mass is None:
             raise AutolevModelError(f"the mass of particle {particle.name} is not given")
         bodies.append(me.Particle(particle.name, point_of(particle.point),
-                                  to_sympy_expr(model.scene, particle.mass, mapping)))
+                                  to_sympy_expr(model.scene, particle.mass, mapping, keep)))
     for body in model.bodies_list:
-        inertia = _dyadic(model, body.central_inertia, made, mapping)
+        inertia = _dyadic(model, body.central_inertia, made, mapping, keep)
         bodies.append(me.RigidBody(body.name, point_of(body.masscenter), frame_of(body),
-                                   to_sympy_expr(model.scene, body.mass_checked(), mapping),
+                                   to_sympy_expr(model.scene, body.mass_checked(), mapping,
+                                                 keep),
                                    (inertia, point_of(body.masscenter))))
     loads = [(point_of(p), vector(v)) for p, v in model.forces.items()]
     loads += [(frame_of(f), vector(v)) for f, v in model.torques.items()]
-    positions = _positions(n_frame, made, mapping, sympy_point)
+    positions = _positions(n_frame, made, mapping, sympy_point, keep)
     coordinates = [mapping[q] for q in model.coordinates]
     speeds, kinematics = [], []
     kin = model.kinematical_equations
@@ -142,19 +180,45 @@ def handoff(model) -> Handoff:
         if rate in model.speeds:
             rate_expr = speeds[model.speeds.index(rate)]
         else:
-            rate_expr = to_sympy_expr(model.scene, rate, mapping)
+            rate_expr = to_sympy_expr(model.scene, rate, mapping, keep)
         kinematics.append(mapping[q].diff(time) - rate_expr)
-    kane = me.KanesMethod(newtonian, q_ind=coordinates, u_ind=speeds, kd_eqs=kinematics)
+    dependent = [mapping[u] for u in model.dependent_speeds]
+    constraints = [to_sympy_expr(model.scene, e, mapping, keep)
+                   for equations, _ in model.dependent_constraints for e in equations]
+    auxiliary = [mapping[u] for u in model.auxiliary_speeds]
+    kane = me.KanesMethod(newtonian, q_ind=coordinates, u_ind=speeds, kd_eqs=kinematics,
+                          u_dependent=dependent, velocity_constraints=constraints,
+                          u_auxiliary=auxiliary, constraint_solver=CONSTRAINT_SOLVER)
     kane.kanes_equations(bodies, loads)
+    unknowns = [mapping[f] for f in model.kane_equations.unknowns] \
+        if model.kane_equations is not None else []
     specified = [mapping[s] for s, info in model.info.items()
                  if info.kind == "specified" and not S.base_and_order(s)[1]]
     constants = [mapping[c] for c, info in model.info.items() if info.kind == "constant"]
     states = {q: mapping[q] for q in model.coordinates} | dict(zip(model.speeds, speeds))
     return Handoff(newtonian, frames, orientations, points, velocities, positions, bodies, loads,
-                   coordinates, speeds, kinematics, kane, specified, constants, states)
+                   coordinates, speeds, kinematics, kane, dependent, constraints, auxiliary,
+                   unknowns, specified, constants, states)
 
 
-def _positions(n_frame, made: dict, mapping: dict, sympy_point) -> list:
+def _kept(model) -> frozenset:
+    """The symbols whose definitions the hand-off keeps as sympy's own: the dependent and
+    auxiliary speeds (with their derivatives) and KANE's unknowns."""
+    constrained = model.dependent_speeds + model.auxiliary_speeds
+    for u in constrained:
+        if S.base_and_order(u)[1]:
+            raise AutolevModelError(f"the dependent or auxiliary speed {u} is a "
+                                    "coordinate's rate, which KanesMethod's speeds are not")
+    for u in model.auxiliary_speeds:
+        if model.defs.explicit(u) != 0:
+            raise AutolevModelError(f"the auxiliary speed {u} is {model.defs.explicit(u)} in "
+                                    "motion; KanesMethod's auxiliary speeds are zero")
+    unknowns = model.kane_equations.unknowns if model.kane_equations is not None else []
+    return frozenset(constrained + [S.derivative(u, k) for u in constrained for k in (1, 2)]
+                     + list(unknowns))
+
+
+def _positions(n_frame, made: dict, mapping: dict, sympy_point, keep: frozenset) -> list:
     """Each point the model locates from the Newtonian origin, through others, with its
     position from the point it was located from: one tree, as sympy points
     (`sympy_point`) with set_pos; a position in a frame not oriented in N is left out
@@ -170,7 +234,7 @@ def _positions(n_frame, made: dict, mapping: dict, sympy_point) -> list:
             if other in seen or any(f not in made for f in value.terms):
                 continue
             seen.add(other)
-            vector = to_sympy_vector(value, frames=made, mapping=mapping)
+            vector = to_sympy_vector(value, frames=made, mapping=mapping, keep=keep)
             sympy_point(other).set_pos(sympy_point(p), vector)
             positions.append((sympy_point(other), sympy_point(p), vector))
             todo.append(other)
@@ -181,20 +245,27 @@ def to_pydy(model, infile=None, overrides=None):
     """A pydy.system.System of the model (PyDy is an optional extra): sympy's
     KanesMethod of `handoff`; the constants and initial conditions a run of its first
     CODE DYNAMICS takes (INPUT, then the .in file `infile`, then `overrides` in the
-    quantities' units: AutolevModelError naming those without a value); specified
-    quantities 0; times from TINITIAL to TFINAL every INTEGSTP."""
+    quantities' units: AutolevModelError naming those without a value), the dependent
+    speeds' where the velocity constraints hold; specified quantities 0; times from
+    TINITIAL to TFINAL every INTEGSTP."""
     try:
         from pydy.system import System
     except ImportError:
         raise ImportError("Model.to_pydy needs PyDy (pip install pydy)") from None
+    import sympy.physics.mechanics as me
+
     from .equations_of import equations_of
     h = handoff(model)
     eqs = equations_of(model, model.command_to_linearize(), infile=infile,
                       overrides=overrides)
     run = eqs.integration
     steps = max(1, int(round((run["TFINAL"] - run["TINITIAL"]) / run["INTEGSTP"])))
-    return System(h.kane, constants={sm.Symbol(c.name): v for c, v in eqs.constants.items()},
+    constants = {sm.Symbol(c.name): v for c, v in eqs.constants.items()}
+    initial = {h.states[x]: v for x, v in eqs.initial.items() if x in h.states}
+    at_start = constants | initial | {s: 0.0 for s in h.specified} | {
+        me.dynamicsymbols._t: run["TINITIAL"]}
+    initial |= h.dependent_speeds_at(at_start)
+    return System(h.motion(), constants=constants,
                   specifieds={s: 0.0 for s in h.specified} or None,
-                  initial_conditions={h.states[x]: v for x, v in eqs.initial.items()
-                                      if x in h.states},
+                  initial_conditions=initial,
                   times=np.linspace(run["TINITIAL"], run["TFINAL"], steps + 1))

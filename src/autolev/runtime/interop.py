@@ -46,21 +46,23 @@ def dynamic_map(scene: "Scene") -> dict:
     return mapping
 
 
-def to_sympy_expr(scene: "Scene", expr, mapping: dict | None = None):
-    """The expression (or matrix) with every definition expanded, in dynamicsymbols."""
+def to_sympy_expr(scene: "Scene", expr, mapping: dict | None = None, keep=frozenset()):
+    """The expression (or matrix) with every definition expanded but those of the symbols
+    in `keep` (the hand-off's dependent speeds), in dynamicsymbols."""
     mapping = mapping if mapping is not None else dynamic_map(scene)
     if isinstance(expr, sm.MatrixBase):
-        return expr.applyfunc(lambda e: scene.defs.explicit(e).xreplace(mapping))
-    return scene.defs.explicit(expr).xreplace(mapping)
+        return expr.applyfunc(lambda e: scene.defs.explicit(e, keep).xreplace(mapping))
+    return scene.defs.explicit(expr, keep).xreplace(mapping)
 
 
 def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | None = None,
-                   orientations: list | None = None):
+                   orientations: list | None = None, keep=frozenset()):
     """A sympy ReferenceFrame oriented as `frame` is (through the model's frames).
     `mapping` and `cache` ({Frame: ReferenceFrame}): a translation of the symbols of
     one's own, with the frames it makes (default: the model's, kept with it);
     `orientations` receives each (parent, child, parent.dcm(child), angular velocity of
-    the child in the parent or None) in the order the frames are made."""
+    the child in the parent or None) in the order the frames are made; `keep`: symbols
+    whose definitions are not expanded."""
     me = _mechanics()
     scene = frame.scene
     if cache is None:
@@ -78,12 +80,13 @@ def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | No
             if g in cache or g.name == "_probe":
                 continue
             sg = me.ReferenceFrame(g.name)
-            dcm = to_sympy_expr(scene, f.dcm(g), mapping)     # f_i . g_j
+            dcm = to_sympy_expr(scene, f.dcm(g), mapping, keep)     # f_i . g_j
             sg.orient_explicit(cache[f], dcm)                 # sympy: f.dcm(g) = dcm
             # kept before its angular velocity is read: W_B_N> is often given in B itself
             cache[g] = sg
             try:
-                w = to_sympy_vector(g.ang_vel_in(f), frames=cache, mapping=mapping)
+                w = to_sympy_vector(g.ang_vel_in(f), frames=cache, mapping=mapping,
+                                    keep=keep)
                 sg.set_ang_vel(cache[f], w)
             except AutolevModelError:
                 w = None
@@ -93,14 +96,15 @@ def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | No
     return cache[frame]
 
 
-def to_sympy_vector(v: "Vector", frames: dict | None = None, mapping: dict | None = None):
-    """A sympy.physics.vector.Vector equal to v."""
+def to_sympy_vector(v: "Vector", frames: dict | None = None, mapping: dict | None = None,
+                    keep=frozenset()):
+    """A sympy.physics.vector.Vector equal to v (the definitions of `keep` not expanded)."""
     me = _mechanics()
     total = me.Vector(0)
     for f, comps in v.terms.items():
-        sf = (frames or {}).get(f) or to_sympy_frame(f, mapping, frames)
+        sf = (frames or {}).get(f) or to_sympy_frame(f, mapping, frames, keep=keep)
         m = mapping if mapping is not None else dynamic_map(f.scene)
-        c = [to_sympy_expr(f.scene, x, m) for x in comps]
+        c = [to_sympy_expr(f.scene, x, m, keep) for x in comps]
         total += c[0] * sf.x + c[1] * sf.y + c[2] * sf.z
     return total
 

@@ -1,14 +1,10 @@
-"""fourbar: its equations of motion as SymPy expressions, written by autolev from
+"""fourbar: the model in sympy.physics.mechanics, written by autolev from
 fourbar.al (CODE DYNAMICS fourbar.c).
 
-Level: equations.  The state, the rates given explicitly, and the mass matrix and
-forcing from which the other rates (`unknowns`) are solved, as Autolev's Kane's
-method formed them, with every intermediate (Autolev's Z's) a named assignment.
-Not the mechanics level: sympy's KanesMethod here takes no dependent or auxiliary speeds
-(U2, U3, UA1, UA2).
-Importing defines `system` (a sympy.physics.mechanics.SymbolicSystem: full_mass *
-d(states)/dt = full_forcing, in the intermediates), `constants`,
-`initial_conditions` and `specified`;
+Level: mechanics.  Frames, points, particles and rigid bodies, loads and the
+kinematical differential equations as the model gives them; sympy's KanesMethod
+forms the equations of motion when the script is imported.  Importing defines
+`kane` (its equations formed), `constants`, `initial_conditions` and `specified`;
 `python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy (DOP853,
 RELERR and ABSERR) and writes the OUTPUT columns as CSV.
 """
@@ -21,28 +17,115 @@ from scipy.integrate import solve_ivp
 
 t = me.dynamicsymbols._t
 
-# the state: functions of time
+# generalized coordinates and speeds: functions of time
 Q1 = me.dynamicsymbols('Q1')
 Q2 = me.dynamicsymbols('Q2')
 Q3 = me.dynamicsymbols('Q3')
 U1 = me.dynamicsymbols('U1')
+U2 = me.dynamicsymbols('U2')
+U3 = me.dynamicsymbols('U3')
+
+# auxiliary speeds: zero in motion, they bring noncontributing forces into evidence
+UA1 = me.dynamicsymbols('UA1')
+UA2 = me.dynamicsymbols('UA2')
+auxiliary = [UA1, UA2]
+
+# KANE's unknowns: noncontributing forces, which kane.auxiliary_eqs (= 0) give
+F1 = me.dynamicsymbols('F1')
+F2 = me.dynamicsymbols('F2')
 
 # constants
-G = sm.Symbol('G')
+L1 = sm.Symbol('L1')
 L2 = sm.Symbol('L2')
 L3 = sm.Symbol('L3')
 L4 = sm.Symbol('L4')
 RHO = sm.Symbol('RHO')
+G = sm.Symbol('G')
 
-# the rates solved from the mass matrix
+# reference frames, oriented as the model orients them, with its angular velocities
+N = me.ReferenceFrame('N')
+B2 = me.ReferenceFrame('B2')
+B2.orient_axis(N, N.z, Q1)
+B2.set_ang_vel(N, U1*N.z)
+B3 = me.ReferenceFrame('B3')
+B3.orient_axis(B2, B2.z, Q2)
+B3.set_ang_vel(B2, U2*N.z)
+B4 = me.ReferenceFrame('B4')
+B4.orient_axis(B3, B3.z, Q3)
+B4.set_ang_vel(B3, U3*N.z)
+
+# points: positions from the Newtonian origin, velocities in N of those with a mass or a load
+B2O = me.Point('B2O')
+B3O = me.Point('B3O')
+B4O = me.Point('B4O')
+PA = me.Point('PA')
+P2 = me.Point('P2')
+NO = me.Point('NO')
+P3 = me.Point('P3')
+P4 = me.Point('P4')
+P5 = me.Point('P5')
+P2.set_pos(NO, L1*N.x)
+B2O.set_pos(P2, L2/2*B2.x)
+P3.set_pos(P2, L2*B2.x)
+B3O.set_pos(P3, L3/2*B3.x)
+P4.set_pos(P3, L3*B3.x)
+B4O.set_pos(P4, L4/2*B4.x)
+P5.set_pos(P4, L4*B4.x)
+B2O.set_vel(N, (-L2*U1*sm.sin(Q1)/2)*N.x + L2*U1*sm.cos(Q1)/2*N.y)
+B3O.set_vel(N, (-L2*U1*sm.sin(Q1) - L3*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2)/2)*N.x + (L2*U1*sm.cos(Q1) + L3*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2)/2)*N.y)
+B4O.set_vel(N, (-L2*U1*sm.sin(Q1) - L3*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2) - L4*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.sin(Q1) + (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.cos(Q1))*(U1 + U2 + U3)/2)*N.x + (L2*U1*sm.cos(Q1) + L3*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2) + L4*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.cos(Q1) - (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.sin(Q1))*(U1 + U2 + U3)/2)*N.y)
+PA.set_vel(N, UA1*N.x + UA2*N.y)
+
+# particles and rigid bodies: masses and central inertias
+B2_body = me.RigidBody('B2', B2O, B2, L2*RHO, (me.inertia(B2, 0, 0, L2**3*RHO/12), B2O))
+B3_body = me.RigidBody('B3', B3O, B3, L3*RHO, (me.inertia(B3, 0, 0, L3**3*RHO/12), B3O))
+B4_body = me.RigidBody('B4', B4O, B4, L4*RHO, (me.inertia(B4, 0, 0, L4**3*RHO/12), B4O))
+bodies = [B2_body, B3_body, B4_body]
+
+# loads: forces on points, torques on frames
+loads = [
+    (B2O, (-G*L2*RHO)*N.y),
+    (B3O, (-G*L3*RHO)*N.y),
+    (B4O, (-G*L4*RHO)*N.y),
+    (PA, F1*N.x + F2*N.y),
+]
+
+# kinematical differential equations (each = 0)
+kd_eqs = [
+    # fourbar.al:22: Q1' = U1
+    Q1.diff(t) - U1,
+    # fourbar.al:23: Q2' = U2
+    Q2.diff(t) - U2,
+    # fourbar.al:24: Q3' = U3
+    Q3.diff(t) - U3,
+]
+
+# velocity constraints (each = 0), which give the dependent speeds (CONSTRAIN(DEPENDENT[...]));
+# KanesMethod solves them by Cramer's rule: its default LU divides by pivots that
+# vanish at some states where the constraints are regular (0/0)
+velocity_constraints = [
+    -L2*U1*sm.sin(Q1) - L3*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2) - L4*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.sin(Q1) + (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.cos(Q1))*(U1 + U2 + U3) + UA1,
+    L2*U1*sm.cos(Q1) + L3*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2) + L4*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.cos(Q1) - (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.sin(Q1))*(U1 + U2 + U3) + UA2,
+]
+dependent = [U2, U3]
+
+kane = me.KanesMethod(N, q_ind=[Q1, Q2, Q3], u_ind=[U1], kd_eqs=kd_eqs, u_dependent=dependent, velocity_constraints=velocity_constraints, constraint_solver='CRAMER', u_auxiliary=auxiliary)
+kane.kanes_equations(bodies, loads)
+
+# as one system: full_mass * d(states)/dt = full_forcing
+states = list(kane.q) + list(kane.u)
+# the auxiliary speeds, which the velocity constraints read, are zero in motion
+full_mass, full_forcing = (
+    m.xreplace({u.diff(t): 0 for u in auxiliary}).xreplace(dict.fromkeys(auxiliary, 0))
+    for m in (kane.mass_matrix_full, kane.forcing_full))
+
+# the rates solved from the mass matrix, as the outputs use them
 U1p = U1.diff(t)
-
-# intermediates (Autolev's Z's) and the model's definitions, as functions of
-# time, and what each is, in the order they are computed; `expanded(expr)`
-# replaces them in an expression
-UA1 = me.dynamicsymbols('UA1')
+# intermediates the outputs use (Autolev's Z's, the model's definitions), as
+# functions of time, and what each is, in the order they are computed
+UA1_2 = me.dynamicsymbols('UA1_2')
 UA1p = me.dynamicsymbols('UA1p')
-UA2 = me.dynamicsymbols('UA2')
+UA2_2 = me.dynamicsymbols('UA2_2')
 UA2p = me.dynamicsymbols('UA2p')
 z4 = me.dynamicsymbols('z4')
 z6 = me.dynamicsymbols('z6')
@@ -60,18 +143,29 @@ z43 = me.dynamicsymbols('z43')
 z44 = me.dynamicsymbols('z44')
 Q1p = me.dynamicsymbols('Q1p')
 z15 = me.dynamicsymbols('z15')
-U2 = me.dynamicsymbols('U2')
+U2_2 = me.dynamicsymbols('U2_2')
 Q2p = me.dynamicsymbols('Q2p')
 z17 = me.dynamicsymbols('z17')
 z18 = me.dynamicsymbols('z18')
 z16 = me.dynamicsymbols('z16')
-U3 = me.dynamicsymbols('U3')
+U3_2 = me.dynamicsymbols('U3_2')
 Q3p = me.dynamicsymbols('Q3p')
 z19 = me.dynamicsymbols('z19')
 z20 = me.dynamicsymbols('z20')
 z21 = me.dynamicsymbols('z21')
 z22 = me.dynamicsymbols('z22')
 z23 = me.dynamicsymbols('z23')
+z66 = me.dynamicsymbols('z66')
+z71 = me.dynamicsymbols('z71')
+z33 = me.dynamicsymbols('z33')
+z34 = me.dynamicsymbols('z34')
+z45 = me.dynamicsymbols('z45')
+z46 = me.dynamicsymbols('z46')
+z47 = me.dynamicsymbols('z47')
+z48 = me.dynamicsymbols('z48')
+z49 = me.dynamicsymbols('z49')
+z67 = me.dynamicsymbols('z67')
+z72 = me.dynamicsymbols('z72')
 z24 = me.dynamicsymbols('z24')
 z25 = me.dynamicsymbols('z25')
 U2p = me.dynamicsymbols('U2p')
@@ -86,50 +180,12 @@ z61 = me.dynamicsymbols('z61')
 z60 = me.dynamicsymbols('z60')
 z62 = me.dynamicsymbols('z62')
 z63 = me.dynamicsymbols('z63')
-z66 = me.dynamicsymbols('z66')
 z69 = me.dynamicsymbols('z69')
-z71 = me.dynamicsymbols('z71')
-F1 = me.dynamicsymbols('F1')
-z33 = me.dynamicsymbols('z33')
-z34 = me.dynamicsymbols('z34')
-z45 = me.dynamicsymbols('z45')
-z46 = me.dynamicsymbols('z46')
-z47 = me.dynamicsymbols('z47')
-z48 = me.dynamicsymbols('z48')
-z49 = me.dynamicsymbols('z49')
-z67 = me.dynamicsymbols('z67')
 z70 = me.dynamicsymbols('z70')
-z72 = me.dynamicsymbols('z72')
-F2 = me.dynamicsymbols('F2')
-z28 = me.dynamicsymbols('z28')
-z30 = me.dynamicsymbols('z30')
-z35 = me.dynamicsymbols('z35')
-z38 = me.dynamicsymbols('z38')
-z39 = me.dynamicsymbols('z39')
-z50 = me.dynamicsymbols('z50')
-z29 = me.dynamicsymbols('z29')
-z36 = me.dynamicsymbols('z36')
-z37 = me.dynamicsymbols('z37')
-z65 = me.dynamicsymbols('z65')
-z73 = me.dynamicsymbols('z73')
-z74 = me.dynamicsymbols('z74')
-z75 = me.dynamicsymbols('z75')
-z76 = me.dynamicsymbols('z76')
-z77 = me.dynamicsymbols('z77')
-z78 = me.dynamicsymbols('z78')
-z79 = me.dynamicsymbols('z79')
-z80 = me.dynamicsymbols('z80')
-z81 = me.dynamicsymbols('z81')
-z82 = me.dynamicsymbols('z82')
-z83 = me.dynamicsymbols('z83')
-z84 = me.dynamicsymbols('z84')
-z85 = me.dynamicsymbols('z85')
-z86 = me.dynamicsymbols('z86')
-z87 = me.dynamicsymbols('z87')
 intermediates = [
-    (UA1, sm.sympify(0.0)),
+    (UA1_2, sm.sympify(0.0)),
     (UA1p, sm.sympify(0.0)),
-    (UA2, sm.sympify(0.0)),
+    (UA2_2, sm.sympify(0.0)),
     (UA2p, sm.sympify(0.0)),
     (z4, -sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3)),
     (z6, sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2)),
@@ -146,14 +202,14 @@ intermediates = [
     (z43, -L4**2*z7**2/(2*z14) + L4*z40*z7/2),
     (z44, -L3*L4*z1*z7/z14 + z43),
     (Q1p, U1),
-    (z15, L4*z7*(L2*U1*sm.sin(Q1) + L3*U1*z3 + L4*U1*z9 - UA1) + L4*z9*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2)),
-    (U2, z15/z14),
-    (Q2p, U2),
+    (z15, L4*z7*(L2*U1*sm.sin(Q1) + L3*U1*z3 + L4*U1*z9 - UA1_2) + L4*z9*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2_2)),
+    (U2_2, z15/z14),
+    (Q2p, U2_2),
     (z17, Q1p*(-sm.sin(Q1)*sm.cos(Q2) - sm.sin(Q2)*sm.cos(Q1)) + Q2p*(-sm.sin(Q1)*sm.cos(Q2) - sm.sin(Q2)*sm.cos(Q1))),
     (z18, Q1p*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2)) + Q2p*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))),
-    (z16, (L3*z1 + L4*z7)*(-L2*U1*sm.sin(Q1) - L3*U1*z3 - L4*U1*z9 + UA1) + (-L3*z3 - L4*z9)*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2)),
-    (U3, z16/z14),
-    (Q3p, U3),
+    (z16, (L3*z1 + L4*z7)*(-L2*U1*sm.sin(Q1) - L3*U1*z3 - L4*U1*z9 + UA1_2) + (-L3*z3 - L4*z9)*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2_2)),
+    (U3_2, z16/z14),
+    (Q3p, U3_2),
     (z19, Q2p*(-sm.sin(Q2)*sm.cos(Q3) - sm.sin(Q3)*sm.cos(Q2)) + Q3p*(-sm.sin(Q2)*sm.cos(Q3) - sm.sin(Q3)*sm.cos(Q2))),
     (z20, Q2p*(-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3)) + Q3p*(-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))),
     (z21, Q1p*(-z4*sm.sin(Q1) - z6*sm.cos(Q1)) + z19*sm.cos(Q1) - z20*sm.sin(Q1)),
@@ -170,71 +226,30 @@ intermediates = [
     (z49, -L3*L4*z1*z9/z14 + z48),
     (z67, -L4*z9/z14 + z45),
     (z72, -G*L3*RHO*z34 - G*L4*RHO*z49),
-    (z28, L4*z7*(L2*sm.sin(Q1) + L3*z3 + L4*z9) + L4*z9*(-L2*sm.cos(Q1) - L3*z1 - L4*z7)),
-    (z30, L2*sm.cos(Q1) + L3*z1/2 + L3*z1*z28/(2*z14)),
-    (z35, (L3*z1 + L4*z7)*(-L2*sm.sin(Q1) - L3*z3 - L4*z9) + (-L3*z3 - L4*z9)*(-L2*sm.cos(Q1) - L3*z1 - L4*z7)),
-    (z38, L4*z7/2 + L4*z28*z7/(2*z14) + L4*z35*z7/(2*z14)),
-    (z39, L2*sm.cos(Q1) + L3*z1 + L3*z1*z28/z14 + z38),
-    (z50, -G*L2**2*RHO*sm.cos(Q1)/2 - G*L3*RHO*z30 - G*L4*RHO*z39),
-    (z29, -L2*sm.sin(Q1) - L3*z3/2 - L3*z28*z3/(2*z14)),
-    (z36, -L4*z9/2 - L4*z28*z9/(2*z14) - L4*z35*z9/(2*z14)),
-    (z37, -L2*sm.sin(Q1) - L3*z3 - L3*z28*z3/z14 + z36),
-    (z65, 1 + z28/z14 + z35/z14),
-    (z73, L3**3*RHO/12 + L3**3*RHO*z28/(12*z14)),
-    (z74, L4**3*RHO/12 + L4**3*RHO*z28/(12*z14) + L4**3*RHO*z35/(12*z14)),
-    (z75, -L2**3*RHO*sm.sin(Q1)**2/4 - L2**3*RHO*sm.cos(Q1)**2/4 - L2**3*RHO/12 - L3*RHO*z29**2 - L3*RHO*z30**2 - L4*RHO*z37**2 - L4*RHO*z39**2 - z65*z74 + z73*(-1 - z28/z14)),
-    (z76, -L3*L4*U1*z17*z9 + L3*L4*U1*z18*z7 - L4*UA1p*z7 - L4*UA2p*z9 + Q1p*(L2*L4*U1*z7*sm.cos(Q1) + L2*L4*U1*z9*sm.sin(Q1)) + z21*(-L4**2*U1*z9 + L4*(L2*U1*sm.sin(Q1) + L3*U1*z3 + L4*U1*z9 - UA1)) + z22*(L4**2*U1*z7 + L4*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2))),
-    (z77, z76/z14 - z15*z23/z14**2),
-    (z78, -L2*Q1p*U1*sm.cos(Q1) - L3*z18*(U1 + U2)/2 - L3*z3*z77/2),
-    (z79, -L2*Q1p*U1*sm.sin(Q1) + L3*z1*z77/2 + L3*z17*(U1 + U2)/2),
-    (z80, Q1p*(-L2*U1*(L3*z1 + L4*z7)*sm.cos(Q1) + L2*U1*(-L3*z3 - L4*z9)*sm.sin(Q1)) + UA1p*(L3*z1 + L4*z7) + UA2p*(L3*z3 + L4*z9) + z17*(-L3*U1*(-L3*z3 - L4*z9) + L3*(-L2*U1*sm.sin(Q1) - L3*U1*z3 - L4*U1*z9 + UA1)) + z18*(-L3*U1*(L3*z1 + L4*z7) - L3*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2)) + z21*(-L4*U1*(-L3*z3 - L4*z9) + L4*(-L2*U1*sm.sin(Q1) - L3*U1*z3 - L4*U1*z9 + UA1)) + z22*(-L4*U1*(L3*z1 + L4*z7) - L4*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2))),
-    (z81, z80/z14 - z16*z23/z14**2),
-    (z82, -L4*z22*(U1 + U2 + U3)/2 - L4*z77*z9/2 - L4*z81*z9/2),
-    (z83, -L2*Q1p*U1*sm.cos(Q1) - L3*z18*(U1 + U2) - L3*z3*z77 + z82),
-    (z84, L4*z21*(U1 + U2 + U3)/2 + L4*z7*z77/2 + L4*z7*z81/2),
-    (z85, -L2*Q1p*U1*sm.sin(Q1) + L3*z1*z77 + L3*z17*(U1 + U2) + z84),
-    (z86, L4**3*RHO*(z77 + z81)/12),
-    (z87, -L3**3*RHO*z77*(1 + z28/z14)/12 - L3*RHO*z29*z78 - L3*RHO*z30*z79 - L4*RHO*z37*z83 - L4*RHO*z39*z85 - z65*z86),
 ]
-# those that need the solved rates (outputs only)
+# those that need the solved rates
 after_solving = [
-    (z24, -L3*L4*U1*z17*z9 + L3*L4*U1*z18*z7 - L4*UA1p*z7 - L4*UA2p*z9 + Q1p*(L2*L4*U1*z7*sm.cos(Q1) + L2*L4*U1*z9*sm.sin(Q1)) + U1p*(L4*z7*(L2*sm.sin(Q1) + L3*z3 + L4*z9) + L4*z9*(-L2*sm.cos(Q1) - L3*z1 - L4*z7)) + z21*(-L4**2*U1*z9 + L4*(L2*U1*sm.sin(Q1) + L3*U1*z3 + L4*U1*z9 - UA1)) + z22*(L4**2*U1*z7 + L4*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2))),
+    (z24, -L3*L4*U1*z17*z9 + L3*L4*U1*z18*z7 - L4*UA1p*z7 - L4*UA2p*z9 + Q1p*(L2*L4*U1*z7*sm.cos(Q1) + L2*L4*U1*z9*sm.sin(Q1)) + U1p*(L4*z7*(L2*sm.sin(Q1) + L3*z3 + L4*z9) + L4*z9*(-L2*sm.cos(Q1) - L3*z1 - L4*z7)) + z21*(-L4**2*U1*z9 + L4*(L2*U1*sm.sin(Q1) + L3*U1*z3 + L4*U1*z9 - UA1_2)) + z22*(L4**2*U1*z7 + L4*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2_2))),
     (z25, z24/z14 - z15*z23/z14**2),
     (U2p, z25),
-    (z55, -L2*Q1p*U1*sm.cos(Q1) - L3*U2p*z3/2 - L3*z18*(U1 + U2)/2 + U1p*(-L2*sm.sin(Q1) - L3*z3/2)),
-    (z56, -L2*Q1p*U1*sm.sin(Q1) + L3*U2p*z1/2 + L3*z17*(U1 + U2)/2 + U1p*(L2*sm.cos(Q1) + L3*z1/2)),
+    (z55, -L2*Q1p*U1*sm.cos(Q1) - L3*U2p*z3/2 - L3*z18*(U1 + U2_2)/2 + U1p*(-L2*sm.sin(Q1) - L3*z3/2)),
+    (z56, -L2*Q1p*U1*sm.sin(Q1) + L3*U2p*z1/2 + L3*z17*(U1 + U2_2)/2 + U1p*(L2*sm.cos(Q1) + L3*z1/2)),
     (z57, L3**3*RHO*(U1p + U2p)/12),
-    (z26, Q1p*(-L2*U1*(L3*z1 + L4*z7)*sm.cos(Q1) + L2*U1*(-L3*z3 - L4*z9)*sm.sin(Q1)) + U1p*((L3*z1 + L4*z7)*(-L2*sm.sin(Q1) - L3*z3 - L4*z9) + (-L3*z3 - L4*z9)*(-L2*sm.cos(Q1) - L3*z1 - L4*z7)) + UA1p*(L3*z1 + L4*z7) + UA2p*(L3*z3 + L4*z9) + z17*(-L3*U1*(-L3*z3 - L4*z9) + L3*(-L2*U1*sm.sin(Q1) - L3*U1*z3 - L4*U1*z9 + UA1)) + z18*(-L3*U1*(L3*z1 + L4*z7) - L3*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2)) + z21*(-L4*U1*(-L3*z3 - L4*z9) + L4*(-L2*U1*sm.sin(Q1) - L3*U1*z3 - L4*U1*z9 + UA1)) + z22*(-L4*U1*(L3*z1 + L4*z7) - L4*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2))),
+    (z26, Q1p*(-L2*U1*(L3*z1 + L4*z7)*sm.cos(Q1) + L2*U1*(-L3*z3 - L4*z9)*sm.sin(Q1)) + U1p*((L3*z1 + L4*z7)*(-L2*sm.sin(Q1) - L3*z3 - L4*z9) + (-L3*z3 - L4*z9)*(-L2*sm.cos(Q1) - L3*z1 - L4*z7)) + UA1p*(L3*z1 + L4*z7) + UA2p*(L3*z3 + L4*z9) + z17*(-L3*U1*(-L3*z3 - L4*z9) + L3*(-L2*U1*sm.sin(Q1) - L3*U1*z3 - L4*U1*z9 + UA1_2)) + z18*(-L3*U1*(L3*z1 + L4*z7) - L3*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2_2)) + z21*(-L4*U1*(-L3*z3 - L4*z9) + L4*(-L2*U1*sm.sin(Q1) - L3*U1*z3 - L4*U1*z9 + UA1_2)) + z22*(-L4*U1*(L3*z1 + L4*z7) - L4*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2_2))),
     (z27, z26/z14 - z16*z23/z14**2),
     (U3p, z27),
-    (z59, -L4*U1p*z9/2 - L4*U2p*z9/2 - L4*U3p*z9/2 - L4*z22*(U1 + U2 + U3)/2),
-    (z61, -L2*Q1p*U1*sm.cos(Q1) - L3*U2p*z3 - L3*z18*(U1 + U2) + U1p*(-L2*sm.sin(Q1) - L3*z3) + z59),
-    (z60, L4*U1p*z7/2 + L4*U2p*z7/2 + L4*U3p*z7/2 + L4*z21*(U1 + U2 + U3)/2),
-    (z62, -L2*Q1p*U1*sm.sin(Q1) + L3*U2p*z1 + L3*z17*(U1 + U2) + U1p*(L2*sm.cos(Q1) + L3*z1) + z60),
+    (z59, -L4*U1p*z9/2 - L4*U2p*z9/2 - L4*U3p*z9/2 - L4*z22*(U1 + U2_2 + U3_2)/2),
+    (z61, -L2*Q1p*U1*sm.cos(Q1) - L3*U2p*z3 - L3*z18*(U1 + U2_2) + U1p*(-L2*sm.sin(Q1) - L3*z3) + z59),
+    (z60, L4*U1p*z7/2 + L4*U2p*z7/2 + L4*U3p*z7/2 + L4*z21*(U1 + U2_2 + U3_2)/2),
+    (z62, -L2*Q1p*U1*sm.sin(Q1) + L3*U2p*z1 + L3*z17*(U1 + U2_2) + U1p*(L2*sm.cos(Q1) + L3*z1) + z60),
     (z63, L4**3*RHO*(U1p + U2p + U3p)/12),
     (z69, -L3*RHO*z31*z55 - L3*RHO*z32*z56 - L4*RHO*z42*z61 - L4*RHO*z44*z62 + L4*z57*z7/z14 - z63*z66),
     (F1, -z69 - z71),
     (z70, -L3*RHO*z33*z55 - L3*RHO*z34*z56 - L4*RHO*z47*z61 - L4*RHO*z49*z62 + L4*z57*z9/z14 - z63*z67),
     (F2, -z70 - z72),
 ]
-
-states = [Q1, Q2, Q3, U1]
-# d(state)/dt where it is given; None where it is solved (`unknowns`)
-rates = [U1, U2, U3, None]
 unknowns = [U1p]
 unknown_states = [3]
-mass_matrix = sm.Matrix(1, 1, [-z75])
-forcing = sm.Matrix(1, 1, [z50 + z87])
-
-# as one system: full_mass * d(states)/dt = full_forcing
-full_mass = sm.eye(len(states))
-full_forcing = sm.Matrix([0 if r is None else r for r in rates])
-for row, k in enumerate(unknown_states):
-    full_mass[k, k] = 0
-    for column, j in enumerate(unknown_states):
-        full_mass[k, j] = mass_matrix[row, column]
-    full_forcing[k] = forcing[row]
-system = me.SymbolicSystem(states, full_forcing, mass_matrix=full_mass)
 
 # values (SI units, radians) from the model's INPUT statements
 constants = {G: 9.81, L2: 1.0, L3: 2.0, L4: 1.0, RHO: 5.0}
@@ -251,6 +266,15 @@ outputs = [
     ('F1', 'N', F1),
     ('F2', 'N', F2),
 ]
+# the dependent speeds start where the velocity constraints hold
+at_start = {t: integration['TINITIAL'], **constants, **initial_conditions,
+            **{s: v(integration['TINITIAL']) if callable(v) else v
+               for s, v in specified.items()}, **dict.fromkeys(auxiliary, 0)}
+coefficients, rest = sm.linear_eq_to_matrix(
+    [me.msubs(c, kane.kindiffdict()) for c in velocity_constraints], dependent)
+initial_conditions.update(zip(dependent, np.linalg.solve(
+    np.array(coefficients.xreplace(at_start), dtype=float),
+    np.array(rest.xreplace(at_start), dtype=float).ravel())))
 
 
 def expanded(expr):
@@ -271,8 +295,11 @@ def numeric_functions():
                  [plain[s] for s in specified]]
 
     def function(expr, more=(), after=()):
-        return sm.lambdify(arguments + list(more), expr.xreplace(plain), "numpy",
-                           cse=lambda e: (steps + list(after), e))
+        def shared(e):
+            # then sympy's common subexpressions: a KanesMethod's are not named as Z's
+            common, reduced = sm.cse(e, list=False)
+            return steps + list(after) + common, reduced
+        return sm.lambdify(arguments + list(more), expr.xreplace(plain), "numpy", cse=shared)
     columns = sm.Matrix([e for _, _, e in outputs])
     return (function(full_mass), function(full_forcing),
             function(columns, [[plain[u] for u in unknowns]], late))

@@ -102,8 +102,11 @@ def numeric_functions():
                  [plain[s] for s in specified]]
 
     def function(expr, more=(), after=()):
-        return sm.lambdify(arguments + list(more), expr.xreplace(plain), "numpy",
-                           cse=lambda e: (steps + list(after), e))
+        def shared(e):
+            # then sympy's common subexpressions: a KanesMethod's are not named as Z's
+            common, reduced = sm.cse(e, list=False)
+            return steps + list(after) + common, reduced
+        return sm.lambdify(arguments + list(more), expr.xreplace(plain), "numpy", cse=shared)
     columns = sm.Matrix([e for _, _, e in outputs])
     return (function(full_mass), function(full_forcing),
             function(columns, [[plain[u] for u in unknowns]], late))
