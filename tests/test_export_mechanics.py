@@ -191,3 +191,27 @@ def test_the_second_seed_systems_script_gives_sympys_published_closing_force(tmp
     equations = kane.auxiliary_eqs.xreplace(at_rest).xreplace(upright)
     forces = sm.solve(equations, [ns["F1"], ns["F2"]])
     assert forces == {ns["F1"]: 0, ns["F2"]: -sm.Rational(981, 10)}
+
+
+def test_each_object_says_the_statements_it_comes_from(tmp_path):
+    lines = exported("fourbar", tmp_path).read_text().splitlines()
+
+    def said_before(code: str) -> list[str]:
+        at = next(k for k, line in enumerate(lines) if line.strip().startswith(code))
+        k = at
+        while lines[k - 1].strip().startswith("# fourbar.al:"):
+            k -= 1
+        return [line.strip()[2:] for line in lines[k:at]]
+    assert said_before("B3 = me.ReferenceFrame") == [
+        "fourbar.al:20: SIMPROT(B2, B3, 3, Q2)", "fourbar.al:26: W_B3_B2> = U2*N3>"]
+    assert said_before("P3.set_pos(P2") == ["fourbar.al:31: P_P2_P3> = L2*B21>"]
+    assert said_before("B4O.set_vel(N") == ["fourbar.al:42: V2PTS(N, B4, P4, B4O)"]
+    assert said_before("B3_body = ") == ["fourbar.al:14: MASS B2 = RHO*L2, B3 = RHO*L3, "
+                                         "B4 = RHO*L4", "fourbar.al:16: INERTIA B3, 0, 0, "
+                                         "RHO*L3^3/12"]
+    assert said_before("loads = [") == ["fourbar.al:54: GRAVITY(-G*N2>)"]
+    assert said_before("(PA, F1*N.x") == ["fourbar.al:55: FORCE_PA> = F1*N1> + F2*N2>"]
+    assert said_before("velocity_constraints = [") == [
+        "fourbar.al:46: DEPENDENT[1] = DOT(V_P5_N>, N1>) + UA1",
+        "fourbar.al:47: DEPENDENT[2] = DOT(V_P5_N>, N2>) + UA2",
+        "fourbar.al:48: CONSTRAIN(DEPENDENT[U2, U3])"]

@@ -165,6 +165,13 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
     printer = MechanicsPrinter(names)
     p = printer.doprint
     where = model.loaded.defined_at if model.loaded is not None else {}
+    statements = model.loaded.statements_at if model.loaded is not None else {}
+
+    def said(*keys) -> list[str]:
+        """The statements that give (what, name) of each key, as comment lines."""
+        lines = [f"# {quoted_text(at)}" for what, name in keys
+                 for at in statements.get((what, name.upper()), [])]
+        return list(dict.fromkeys(lines))
     out = [f'"""{quoted_text(eqs.model_name)}: the model in sympy.physics.mechanics, written '
            f"by autolev from\n{quoted_text(source)} ({quoted_text(eqs.command)}).",
            "",
@@ -184,6 +191,7 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
     if h.auxiliary:
         out += ["", "# auxiliary speeds: zero in motion, they bring noncontributing forces "
                 "into evidence"]
+        out += said(("assigned", "AUXILIARY"), ("constrain", "AUXILIARY"))
         out += [f"{names[u]} = me.dynamicsymbols({str(u.func)!r})" for u in h.auxiliary]
         out.append("auxiliary = [" + ", ".join(names[u] for u in h.auxiliary) + "]")
     if h.unknowns:
@@ -200,6 +208,7 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
     out += ["", "# reference frames, oriented as the model orients them, with its angular "
             "velocities", f"{names[h.newtonian]} = me.ReferenceFrame({h.newtonian.name!r})"]
     for parent, child, dcm, w in h.orientations:
+        out += said(("orientation", child.name), ("angular velocity", child.name))
         out.append(f"{names[child]} = me.ReferenceFrame({child.name!r})")
         rotation = simple_rotation(dcm)
         if rotation is not None:
@@ -216,12 +225,16 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
             f"{h.newtonian.name} of those with a mass or a load"]
     out += [f"{names[pt]} = me.Point({name!r})" for name, pt in h.points.items()]
     for point, base, r in h.positions:
+        out += said(("position", f"{base.name}/{point.name}"),
+                    ("position", f"{point.name}/{base.name}"))
         out.append(f"{names[point]}.set_pos({names[base]}, {printer.vector(r)})")
     for name, v in h.velocities.items():
+        out += said(("velocity", name))
         out.append(f"{names[h.points[name]]}.set_vel({names[h.newtonian]}, "
                    f"{printer.vector(v)})")
     out += ["", "# particles and rigid bodies: masses and central inertias"]
     for body in h.bodies:
+        out += said(("mass", body.name), ("inertia", body.name))
         if isinstance(body, me.RigidBody):
             dyadic, about = body.inertia
             out.append(f"{names[body]} = me.RigidBody({body.name!r}, "
@@ -231,12 +244,15 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
             out.append(f"{names[body]} = me.Particle({body.name!r}, {names[body.point]}, "
                        f"{p(body.mass)})")
     out.append("bodies = [" + ", ".join(names[b] for b in h.bodies) + "]")
-    out += ["", "# loads: forces on points, torques on frames", "loads = ["]
-    out += [f"    ({names[on]}, {printer.vector(v)})," for on, v in h.loads]
+    out += ["", "# loads: forces on points, torques on frames", *said(("gravity", "*")),
+            "loads = ["]
+    for on, v in h.loads:
+        out += ["    " + line for line in said(("load", on.name))]
+        out.append(f"    ({names[on]}, {printer.vector(v)}),")
     out += ["]", "", "# kinematical differential equations (each = 0)", "kd_eqs = ["]
     for q, equation in zip(model.coordinates, h.kinematical_equations):
-        said = where.get(q.name.upper() + "P")
-        out += [f"    # {quoted_text(said)}"] if said else []
+        defined = where.get(q.name.upper() + "P")
+        out += [f"    # {quoted_text(defined)}"] if defined else []
         rate = h.states[q].diff(me.dynamicsymbols._t) - equation
         out.append(f"    {names[q]}.diff(t) - "
                    f"{printer.parenthesize(rate, PRECEDENCE['Add'])},")
@@ -248,6 +264,7 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
                 "# KanesMethod solves them by Cramer's rule: its default LU divides by "
                 "pivots that",
                 "# vanish at some states where the constraints are regular (0/0)",
+                *said(("assigned", "DEPENDENT"), ("constrain", "DEPENDENT")),
                 "velocity_constraints = ["]
         out += [f"    {p(c)}," for c in h.velocity_constraints] + ["]"]
         out.append("dependent = [" + ", ".join(names[u] for u in h.dependent) + "]")

@@ -72,6 +72,7 @@ def load_translation(translation, filename: str, write_later: bool = False):
     model.loaded = dataclasses.replace(
         model.loaded, names=translation.names, namespaces=translation.namespaces,
         code_locations=list(translation.code_spans), defined_at=dict(translation.defined_at),
+        statements_at=dict(translation.statements_at),
         source=ModelSource("translation", translation, filename, model.revision()),
         # the numeric systems its runs build are kept with it too, while it is as built
         keeper=keeper or ModelKeeper(key, built.warnings, _as_built(model), False))

@@ -45,6 +45,7 @@ class Loaded:
     namespaces: dict = field(default_factory=dict)
     code_locations: list = field(default_factory=list)
     defined_at: dict = field(default_factory=dict)   # Translation.defined_at
+    statements_at: dict = field(default_factory=dict)   # Translation.statements_at
     source: object = None
     keeper: object = None
 

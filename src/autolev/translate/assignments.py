@@ -2,13 +2,12 @@
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 from .. import ir
 from .core import STATEMENTS, Translator
 from .kinds import FRAME_KINDS, Entry, NameKind, Typed, ValueType
 from .emit import call_lines
-from .special import assign_vector
+from .special import assign_vector, classify
 
 # -- assignments ---------------------------------------------------------------------------
 _COMPOUND = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}
@@ -17,16 +16,34 @@ _COMPOUND = {"+=": "+", "-=": "-", "*=": "*", "/=": "/", "^=": "**"}
 @STATEMENTS.register(ir.Assignment)
 def assignment(tr: Translator, st: ir.Assignment) -> None:
     if isinstance(st.target, (ir.Name, ir.Index)) and st.span is not None:
-        text = " ".join((st.text or "").split())
-        text = text if len(text) <= 70 else text[:67] + "..."
-        where = f"{Path(st.span.file).name}:{st.span.line}: {text}"
-        tr.defined_at[(st.target.name + "P" * st.target.primes).upper()] = where
+        tr.defined_at[(st.target.name + "P" * st.target.primes).upper()] = tr.location(st)
+        if not st.target.primes:
+            tr.note_statement("assigned", st.target.name)
+    elif isinstance(st.target, ir.VectorName):
+        _note_mechanics(tr, st.target)
     run = _column_runs(tr).get(id(st))
     if run is None:
         assign(tr, st.target, st.op, st.value)
     elif st is run[-1]:
         _assign_column(tr, run)
     # an earlier element of a run is written with the run's last statement
+
+
+# what an assignment to a reserved vector gives, and to which of its parts
+_GIVES = {"angvel": ("angular velocity", 0), "vel": ("velocity", 0), "force": ("load", 0),
+          "torque": ("load", 0)}
+
+
+def _note_mechanics(tr: Translator, target: ir.VectorName) -> None:
+    """W_B_N>, V_P_N>, P_A_B>, FORCE_P>, TORQUE_B> = ...: the statement that gives them."""
+    special = classify(tr, target)
+    if special is None:
+        return
+    if special.kind == "pos":
+        tr.note_statement("position", "/".join(tr.autolev_name(e) for e in special.parts))
+    elif special.kind in _GIVES:
+        what, part = _GIVES[special.kind]
+        tr.note_statement(what, tr.autolev_name(special.parts[part]))
 
 
 def _column_runs(tr: Translator) -> dict[int, list[ir.Assignment]]:

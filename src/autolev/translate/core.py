@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, Callable
 
 from .. import ir
@@ -67,6 +68,12 @@ class Translation:
     defined_at: dict[str, str] = field(default_factory=dict)
     # the probes the translator could not write: {key: why}
     probe_errors: dict[str, str] = field(default_factory=dict)
+    # {(what, NAME): ["file:line: statement", ...]}: the statements that give a frame its
+    # orientation or angular velocity, a point its position or velocity, a body its mass
+    # or inertia, a point or frame a load ("gravity", "*" for GRAVITY); the CONSTRAINs
+    # ("constrain", "DEPENDENT" or "AUXILIARY"), every assignment to a name or its
+    # elements ("assigned"): for the comments of a SymPy script
+    statements_at: dict[tuple[str, str], list[str]] = field(default_factory=dict)
 
 
 # the generated module's dictionary of probes' values (a dunder name: no Autolev name
@@ -144,6 +151,8 @@ class Translator:
         self.words: set[str] | None = None
         self.code_spans: list[Span] = []           # see Translation
         self.defined_at: dict[str, str] = {}
+        self.statements_at: dict[tuple[str, str], list[str]] = {}
+        self._statement: ir.Statement | None = None
         self._span: Span | None = None
         self._used_primes = primes_used(program)
         self.autolev_names: dict[str, str] = {}
@@ -248,7 +257,7 @@ class Translator:
                 self.warn(f"{len(statements) - n} statement(s) after EXIT are ignored, as "
                           "Autolev ignored them", st, "W103")
                 break
-            self._span = st.span
+            self._span, self._statement = st.span, st
             self._comments_before(st, previous_end)
             try:
                 STATEMENTS.lookup(type(st))(self, st)
@@ -267,12 +276,36 @@ class Translator:
         while probe is not None:
             self._write_probe(probe)
             probe = next(probes, None)
-        self._span = None
+        self._span = self._statement = None
         code, line_map = self._render()
         return Translation(code, line_map, self.diagnostics, dict(self.autolev_names),
                            {k: dict(v) for k, v in self.namespaces.items()},
                            list(self.program.files), list(self.code_spans),
-                           dict(self.defined_at), dict(self.probe_errors))
+                           dict(self.defined_at), dict(self.probe_errors),
+                           {k: list(v) for k, v in self.statements_at.items()})
+
+    @staticmethod
+    def location(st: ir.Statement) -> str:
+        """'file:line: statement' (the statement as written, shortened), for a comment."""
+        text = " ".join((st.text or "").split())
+        text = text if len(text) <= 70 else text[:67] + "..."
+        return f"{Path(st.span.file).name}:{st.span.line}: {text}"
+
+    def note_statement(self, what: str, *names: str) -> None:
+        """The statement being translated gives `what` (statements_at's) of each of the
+        Autolev `names`."""
+        st = self._statement
+        if st is None or st.span is None:
+            return
+        where = self.location(st)
+        for name in names:
+            kept = self.statements_at.setdefault((what, name.upper()), [])
+            if where not in kept:
+                kept.append(where)
+
+    def autolev_name(self, entry: Entry) -> str:
+        """The Autolev name of a declared frame, point or body."""
+        return next(name for name, py in self.autolev_names.items() if py == entry.py)
 
     def _within_run(self, st: ir.Statement) -> bool:
         """Whether st continues a run X[1] = a, X[2] = b, ... (assignments.py): X is

@@ -27,6 +27,7 @@ def mass(tr: Translator, st: ir.MassStatement) -> None:
         _implicit_constant(tr, item.value)
         value = tr.scalar(item.value)
         tr.emit(f"{target.py}.mass = {value.code}")
+        tr.note_statement("mass", item.target)
         if item.value_of_value is not None:
             tr.emit(f"model.define({value.code}, {tr.scalar(item.value_of_value).code})")
             tr.defined.add((item.value.name.lower(), 0))
@@ -72,6 +73,7 @@ def inertia(tr: Translator, st: ir.InertiaStatement) -> None:
     if about is not None:
         opts += f", about={about.py}"
     tr.emit(f"{body.py}.set_inertia({', '.join(values)}{opts})")
+    tr.note_statement("inertia", tr.autolev_name(body))
 
 
 
@@ -84,6 +86,7 @@ def _gravity(tr, c):
         raise tr.error(f"GRAVITY takes a vector, not a {g.type}", c.args[0], "T001")
     rest = [tr.entity(a, (NameKind.BODY, NameKind.PARTICLE)).py for a in c.args[1:]]
     tr.emit(f"model.gravity({', '.join([g.code] + rest)})")
+    tr.note_statement("gravity", "*")
 
 
 def _pair(tr, e, kinds):
@@ -114,6 +117,7 @@ def _load(tr, c, what: str, kinds) -> None:
         tr.emit(f"model.{what}({second.py}, {v.code})")
     else:
         tr.emit(f"model.{what}_pair({first.py}, {second.py}, {v.code})")
+    tr.note_statement("load", *(tr.autolev_name(e) for e in (first, second) if e is not None))
 
 
 @command("CONSTRAIN", "CONSTRAINT")
@@ -130,6 +134,7 @@ def _constrain(tr, c):
         speeds = [tr.symbol(i) for i in a.indices]
         method = "constrain_auxiliary" if which == "AUXILIARY" else "constrain"
         tr.emit(f"model.{method}({eqs.py}, [{', '.join(speeds)}])")
+        tr.note_statement("constrain", "AUXILIARY" if which == "AUXILIARY" else "DEPENDENT")
         for i in a.indices:
             if isinstance(i, ir.Name):
                 tr.defined.add((i.name.lower(), i.primes))

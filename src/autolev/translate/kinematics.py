@@ -25,6 +25,11 @@ def _is_plain_number(e: ir.Expr) -> bool:
                    for n in ir.walk(e))
 
 
+def _note_frame(tr: Translator, oriented: ir.Expr) -> None:
+    if isinstance(oriented, ir.Name):
+        tr.note_statement("orientation", oriented.name)
+
+
 @command("SIMPROT")
 def _simprot(tr, c):
     args = arguments(tr, c, 4)
@@ -40,6 +45,7 @@ def _simprot(tr, c):
         raise tr.error("SIMPROT's axis is 1, 2, 3 (negative for the other way) or a vector",
                        axis, "T009")
     tr.emit(f"{b}.orient_axis({a}, {axis_code}, {_angle(tr, args[3])})")
+    _note_frame(tr, args[1])
 
 
 @command("DIRCOS")
@@ -47,6 +53,7 @@ def _dircos(tr, c):
     if len(c.args) < 4 or not isinstance(c.args[2], ir.Name):
         raise tr.error("DIRCOS(A, B, BODYijk|SPACEijk|EULER, angles...)", c, "T009")
     a, b = tr.frame(c.args[0]).code, tr.frame(c.args[1]).code
+    _note_frame(tr, c.args[1])
     kind = c.args[2].name.upper()
     angles = [_angle(tr, x) for x in c.args[3:]]
     if kind == "EULER":
@@ -101,6 +108,8 @@ def _theory(method):
         outer, fixed = tr.frame(args[0]).code, tr.frame(args[1]).code
         o, p = tr.point(args[2]).code, tr.point(args[3]).code
         tr.emit(f"{p}.{method}({o}, {outer}, {fixed})")
+        if method.startswith("v") and isinstance(args[3], ir.Name):
+            tr.note_statement("velocity", args[3].name)
     return write
 
 

@@ -42,9 +42,13 @@ KT = sm.Symbol('KT')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# block_pendulums.al:19: SIMPROT(N, B, 3, Q2)
+# block_pendulums.al:24: W_B_N> = U2*N3>
 B = me.ReferenceFrame('B')
 B.orient_axis(N, N.z, Q2)
 B.set_ang_vel(N, U2*N.z)
+# block_pendulums.al:20: SIMPROT(B, CF, 3, Q3)
+# block_pendulums.al:25: W_CF_B> = U3*N3>
 CF = me.ReferenceFrame('CF')
 CF.orient_axis(B, B.z, Q3)
 CF.set_ang_vel(B, U3*N.z)
@@ -55,29 +59,48 @@ C = me.Point('C')
 BO = me.Point('BO')
 NO = me.Point('NO')
 PBC = me.Point('PBC')
+# block_pendulums.al:27: P_NO_A> = Q1*N1>
 A.set_pos(NO, Q1*N.x)
+# block_pendulums.al:29: P_A_BO> = -2*L/3*B2>
 BO.set_pos(A, (-2*L/3)*B.y)
+# block_pendulums.al:30: P_BO_PBC> = -L/3*B2>
 PBC.set_pos(BO, (-L/3)*B.y)
+# block_pendulums.al:31: P_PBC_C> = -L*CF2>
 C.set_pos(PBC, (-L)*CF.y)
+# block_pendulums.al:28: V_A_N> = U1*N1>
 A.set_vel(N, U1*N.x)
+# block_pendulums.al:34: V2PTS(N, CF, PBC, C)
 C.set_vel(N, (L*(-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*(U2 + U3) + L*U2*sm.cos(Q2) + U1)*N.x + (-L*(-sm.sin(Q2)*sm.cos(Q3) - sm.sin(Q3)*sm.cos(Q2))*(U2 + U3) + L*U2*sm.sin(Q2))*N.y)
+# block_pendulums.al:32: V2PTS(N, B, A, BO)
 BO.set_vel(N, (2*L*U2*sm.cos(Q2)/3 + U1)*N.x + 2*L*U2*sm.sin(Q2)/3*N.y)
 NO.set_vel(N, me.Vector(0))
 
 # particles and rigid bodies: masses and central inertias
+# block_pendulums.al:16: MASS A = MA, B = MB, C = MC
 A_particle = me.Particle('A', A, MA)
+# block_pendulums.al:16: MASS A = MA, B = MB, C = MC
 C_particle = me.Particle('C', C, MC)
+# block_pendulums.al:16: MASS A = MA, B = MB, C = MC
+# block_pendulums.al:17: INERTIA B, 0, 0, IBZZ
 B_body = me.RigidBody('B', BO, B, MB, (me.inertia(B, 0, 0, IBZZ), BO))
 bodies = [A_particle, C_particle, B_body]
 
 # loads: forces on points, torques on frames
+# block_pendulums.al:36: GRAVITY(-G*N2>)
 loads = [
     (BO, (-G*MB)*N.y),
+    # block_pendulums.al:37: FORCE(NO/A, (-K*Q1 - CDAMP*U1)*N1>)
+    # block_pendulums.al:38: FORCE(A, F*N1>)
     (A, (-CDAMP*U1 - K*Q1 + F)*N.x + (-G*MA)*N.y),
     (C, (-G*MC)*N.y),
+    # block_pendulums.al:37: FORCE(NO/A, (-K*Q1 - CDAMP*U1)*N1>)
     (NO, (CDAMP*U1 + K*Q1)*N.x),
+    # block_pendulums.al:39: TORQUE(N/B, TQ*N3>)
+    # block_pendulums.al:40: TORQUE(B/CF, -KT*Q3*N3>)
     (B, (KT*Q3 + TQ)*N.z),
+    # block_pendulums.al:39: TORQUE(N/B, TQ*N3>)
     (N, (-TQ)*N.z),
+    # block_pendulums.al:40: TORQUE(B/CF, -KT*Q3*N3>)
     (CF, (-KT*Q3)*N.z),
 ]
 

@@ -31,6 +31,7 @@ G = sm.Symbol('G')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# cart_pendulum.al:12: SIMPROT(N, A, 3, TH)
 A = me.ReferenceFrame('A')
 A.orient_axis(N, N.z, TH)
 A.set_ang_vel(N, TH.diff(t)*N.z)
@@ -39,17 +40,24 @@ A.set_ang_vel(N, TH.diff(t)*N.z)
 CART = me.Point('CART')
 BOB = me.Point('BOB')
 NO = me.Point('NO')
+# cart_pendulum.al:13: P_NO_CART> = X*N1>
 CART.set_pos(NO, X*N.x)
+# cart_pendulum.al:14: P_CART_BOB> = -L*A2>
 BOB.set_pos(CART, (-L)*A.y)
+# cart_pendulum.al:15: V_CART_N> = X'*N1>
 CART.set_vel(N, X.diff(t)*N.x)
+# cart_pendulum.al:17: V2PTS(N, A, CART, BOB)
 BOB.set_vel(N, (L*sm.cos(TH)*TH.diff(t) + X.diff(t))*N.x + L*sm.sin(TH)*TH.diff(t)*N.y)
 
 # particles and rigid bodies: masses and central inertias
+# cart_pendulum.al:11: MASS CART = MC, BOB = MB
 CART_particle = me.Particle('CART', CART, MC)
+# cart_pendulum.al:11: MASS CART = MC, BOB = MB
 BOB_particle = me.Particle('BOB', BOB, MB)
 bodies = [CART_particle, BOB_particle]
 
 # loads: forces on points, torques on frames
+# cart_pendulum.al:20: GRAVITY(-G*N2>)
 loads = [
     (CART, (-G*MC)*N.y),
     (BOB, (-G*MB)*N.y),

@@ -32,9 +32,13 @@ G = sm.Symbol('G')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# double_pendulum.al:16: SIMPROT(N, A, 3, Q1)
+# double_pendulum.al:22: W_A_N> = U1*N3>
 A = me.ReferenceFrame('A')
 A.orient_axis(N, N.z, Q1)
 A.set_ang_vel(N, U1*N.z)
+# double_pendulum.al:17: SIMPROT(N, B, 3, Q2)
+# double_pendulum.al:23: W_B_N> = U2*N3>
 B = me.ReferenceFrame('B')
 B.orient_axis(N, N.z, Q2)
 B.set_ang_vel(N, U2*N.z)
@@ -43,17 +47,24 @@ B.set_ang_vel(N, U2*N.z)
 P1 = me.Point('P1')
 P2 = me.Point('P2')
 NO = me.Point('NO')
+# double_pendulum.al:26: P_NO_P1> = L1*A1>
 P1.set_pos(NO, L1*A.x)
+# double_pendulum.al:27: P_P1_P2> = L2*B1>
 P2.set_pos(P1, L2*B.x)
+# double_pendulum.al:29: V2PTS(N, A, NO, P1)
 P1.set_vel(N, (-L1*U1*sm.sin(Q1))*N.x + L1*U1*sm.cos(Q1)*N.y)
+# double_pendulum.al:30: V2PTS(N, B, P1, P2)
 P2.set_vel(N, (-L1*U1*sm.sin(Q1) - L2*U2*sm.sin(Q2))*N.x + (L1*U1*sm.cos(Q1) + L2*U2*sm.cos(Q2))*N.y)
 
 # particles and rigid bodies: masses and central inertias
+# double_pendulum.al:13: MASS P1 = M1, P2 = M2
 P1_particle = me.Particle('P1', P1, M1)
+# double_pendulum.al:13: MASS P1 = M1, P2 = M2
 P2_particle = me.Particle('P2', P2, M2)
 bodies = [P1_particle, P2_particle]
 
 # loads: forces on points, torques on frames
+# double_pendulum.al:33: GRAVITY(G*N1>)
 loads = [
     (P1, G*M1*N.x),
     (P2, G*M2*N.x),

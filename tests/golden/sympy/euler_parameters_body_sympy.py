@@ -37,6 +37,8 @@ T3 = sm.Symbol('T3')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# euler_parameters_body.al:14: DIRCOS(N, B, EULER, E1, E2, E3, E4)
+# euler_parameters_body.al:15: W_B_N> = U1*B1> + U2*B2> + U3*B3>
 B = me.ReferenceFrame('B')
 B.orient_explicit(N, sm.Matrix([[-2*E2**2 - 2*E3**2 + 1, 2*E1*E2 - 2*E3*E4, 2*E1*E3 + 2*E2*E4], [2*E1*E2 + 2*E3*E4, -2*E1**2 - 2*E3**2 + 1, -2*E1*E4 + 2*E2*E3], [2*E1*E3 - 2*E2*E4, 2*E1*E4 + 2*E2*E3, -2*E1**2 - 2*E2**2 + 1]]))
 B.set_ang_vel(N, U1*B.x + U2*B.y + U3*B.z)
@@ -44,15 +46,20 @@ B.set_ang_vel(N, U1*B.x + U2*B.y + U3*B.z)
 # points: positions from the Newtonian origin, velocities in N of those with a mass or a load
 BO = me.Point('BO')
 NO = me.Point('NO')
+# euler_parameters_body.al:18: P_NO_BO> = 0>
 BO.set_pos(NO, me.Vector(0))
+# euler_parameters_body.al:19: V_BO_N> = 0>
 BO.set_vel(N, me.Vector(0))
 
 # particles and rigid bodies: masses and central inertias
+# euler_parameters_body.al:11: MASS B = M
+# euler_parameters_body.al:12: INERTIA B, I1, I2, I3
 B_body = me.RigidBody('B', BO, B, M, (me.inertia(B, I1, I2, I3), BO))
 bodies = [B_body]
 
 # loads: forces on points, torques on frames
 loads = [
+    # euler_parameters_body.al:21: TORQUE(B, T1*B1> + T2*B2> + T3*B3>)
     (B, T1*B.x + T2*B.y + T3*B.z),
 ]
 

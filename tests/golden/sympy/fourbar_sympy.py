@@ -26,6 +26,9 @@ U2 = me.dynamicsymbols('U2')
 U3 = me.dynamicsymbols('U3')
 
 # auxiliary speeds: zero in motion, they bring noncontributing forces into evidence
+# fourbar.al:50: AUXILIARY[1] = UA1
+# fourbar.al:51: AUXILIARY[2] = UA2
+# fourbar.al:52: CONSTRAIN(AUXILIARY[UA1, UA2])
 UA1 = me.dynamicsymbols('UA1')
 UA2 = me.dynamicsymbols('UA2')
 auxiliary = [UA1, UA2]
@@ -44,12 +47,18 @@ G = sm.Symbol('G')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# fourbar.al:19: SIMPROT(N, B2, 3, Q1)
+# fourbar.al:25: W_B2_N> = U1*N3>
 B2 = me.ReferenceFrame('B2')
 B2.orient_axis(N, N.z, Q1)
 B2.set_ang_vel(N, U1*N.z)
+# fourbar.al:20: SIMPROT(B2, B3, 3, Q2)
+# fourbar.al:26: W_B3_B2> = U2*N3>
 B3 = me.ReferenceFrame('B3')
 B3.orient_axis(B2, B2.z, Q2)
 B3.set_ang_vel(B2, U2*N.z)
+# fourbar.al:21: SIMPROT(B3, B4, 3, Q3)
+# fourbar.al:27: W_B4_B3> = U3*N3>
 B4 = me.ReferenceFrame('B4')
 B4.orient_axis(B3, B3.z, Q3)
 B4.set_ang_vel(B3, U3*N.z)
@@ -64,29 +73,48 @@ NO = me.Point('NO')
 P3 = me.Point('P3')
 P4 = me.Point('P4')
 P5 = me.Point('P5')
+# fourbar.al:29: P_NO_P2> = L1*N1>
 P2.set_pos(NO, L1*N.x)
+# fourbar.al:30: P_P2_B2O> = L2/2*B21>
 B2O.set_pos(P2, L2/2*B2.x)
+# fourbar.al:31: P_P2_P3> = L2*B21>
 P3.set_pos(P2, L2*B2.x)
+# fourbar.al:32: P_P3_B3O> = L3/2*B31>
 B3O.set_pos(P3, L3/2*B3.x)
+# fourbar.al:33: P_P3_P4> = L3*B31>
 P4.set_pos(P3, L3*B3.x)
+# fourbar.al:34: P_P4_B4O> = L4/2*B41>
 B4O.set_pos(P4, L4/2*B4.x)
+# fourbar.al:35: P_P4_P5> = L4*B41>
 P5.set_pos(P4, L4*B4.x)
+# fourbar.al:38: V2PTS(N, B2, P2, B2O)
 B2O.set_vel(N, (-L2*U1*sm.sin(Q1)/2)*N.x + L2*U1*sm.cos(Q1)/2*N.y)
+# fourbar.al:40: V2PTS(N, B3, P3, B3O)
 B3O.set_vel(N, (-L2*U1*sm.sin(Q1) - L3*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2)/2)*N.x + (L2*U1*sm.cos(Q1) + L3*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2)/2)*N.y)
+# fourbar.al:42: V2PTS(N, B4, P4, B4O)
 B4O.set_vel(N, (-L2*U1*sm.sin(Q1) - L3*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2) - L4*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.sin(Q1) + (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.cos(Q1))*(U1 + U2 + U3)/2)*N.x + (L2*U1*sm.cos(Q1) + L3*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2) + L4*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.cos(Q1) - (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.sin(Q1))*(U1 + U2 + U3)/2)*N.y)
+# fourbar.al:49: V_PA_N> = UA1*N1> + UA2*N2>
 PA.set_vel(N, UA1*N.x + UA2*N.y)
 
 # particles and rigid bodies: masses and central inertias
+# fourbar.al:14: MASS B2 = RHO*L2, B3 = RHO*L3, B4 = RHO*L4
+# fourbar.al:15: INERTIA B2, 0, 0, RHO*L2^3/12
 B2_body = me.RigidBody('B2', B2O, B2, L2*RHO, (me.inertia(B2, 0, 0, L2**3*RHO/12), B2O))
+# fourbar.al:14: MASS B2 = RHO*L2, B3 = RHO*L3, B4 = RHO*L4
+# fourbar.al:16: INERTIA B3, 0, 0, RHO*L3^3/12
 B3_body = me.RigidBody('B3', B3O, B3, L3*RHO, (me.inertia(B3, 0, 0, L3**3*RHO/12), B3O))
+# fourbar.al:14: MASS B2 = RHO*L2, B3 = RHO*L3, B4 = RHO*L4
+# fourbar.al:17: INERTIA B4, 0, 0, RHO*L4^3/12
 B4_body = me.RigidBody('B4', B4O, B4, L4*RHO, (me.inertia(B4, 0, 0, L4**3*RHO/12), B4O))
 bodies = [B2_body, B3_body, B4_body]
 
 # loads: forces on points, torques on frames
+# fourbar.al:54: GRAVITY(-G*N2>)
 loads = [
     (B2O, (-G*L2*RHO)*N.y),
     (B3O, (-G*L3*RHO)*N.y),
     (B4O, (-G*L4*RHO)*N.y),
+    # fourbar.al:55: FORCE_PA> = F1*N1> + F2*N2>
     (PA, F1*N.x + F2*N.y),
 ]
 
@@ -103,6 +131,9 @@ kd_eqs = [
 # velocity constraints (each = 0), which give the dependent speeds (CONSTRAIN(DEPENDENT[...]));
 # KanesMethod solves them by Cramer's rule: its default LU divides by pivots that
 # vanish at some states where the constraints are regular (0/0)
+# fourbar.al:46: DEPENDENT[1] = DOT(V_P5_N>, N1>) + UA1
+# fourbar.al:47: DEPENDENT[2] = DOT(V_P5_N>, N2>) + UA2
+# fourbar.al:48: CONSTRAIN(DEPENDENT[U2, U3])
 velocity_constraints = [
     -L2*U1*sm.sin(Q1) - L3*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2) - L4*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.sin(Q1) + (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.cos(Q1))*(U1 + U2 + U3) + UA1,
     L2*U1*sm.cos(Q1) + L3*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2) + L4*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.cos(Q1) - (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.sin(Q1))*(U1 + U2 + U3) + UA2,

@@ -35,15 +35,20 @@ N = me.ReferenceFrame('N')
 # points: positions from the Newtonian origin, velocities in N of those with a mass or a load
 C = me.Point('C')
 NO = me.Point('NO')
+# mass_spring_damper.al:12: P_NO_C> = X*N1>
 C.set_pos(NO, X*N.x)
+# mass_spring_damper.al:13: V_C_N> = V*N1>
 C.set_vel(N, V*N.x)
 
 # particles and rigid bodies: masses and central inertias
+# mass_spring_damper.al:10: MASS C = M
 C_particle = me.Particle('C', C, M)
 bodies = [C_particle]
 
 # loads: forces on points, torques on frames
+# mass_spring_damper.al:16: GRAVITY(G*N1>)
 loads = [
+    # mass_spring_damper.al:17: FORCE(C, (-K*X - B*V + F)*N1>)
     (C, (-B*V + F0*sm.sin(OMEGA*t) + G*M - K*X)*N.x),
 ]
 

@@ -34,15 +34,23 @@ G = sm.Symbol('G')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# nlink_pendulum.al:17: SIMPROT(N, A, 3, Q1)
+# nlink_pendulum.al:26: W_A_N> = U1*N3>
 A = me.ReferenceFrame('A')
 A.orient_axis(N, N.z, Q1)
 A.set_ang_vel(N, U1*N.z)
+# nlink_pendulum.al:18: SIMPROT(A, B, 3, Q2)
+# nlink_pendulum.al:27: W_B_A> = U2*N3>
 B = me.ReferenceFrame('B')
 B.orient_axis(A, A.z, Q2)
 B.set_ang_vel(A, U2*N.z)
+# nlink_pendulum.al:19: SIMPROT(B, C, 3, Q3)
+# nlink_pendulum.al:28: W_C_B> = U3*N3>
 C = me.ReferenceFrame('C')
 C.orient_axis(B, B.z, Q3)
 C.set_ang_vel(B, U3*N.z)
+# nlink_pendulum.al:20: SIMPROT(C, D, 3, Q4)
+# nlink_pendulum.al:29: W_D_C> = U4*N3>
 D = me.ReferenceFrame('D')
 D.orient_axis(C, C.z, Q4)
 D.set_ang_vel(C, U4*N.z)
@@ -56,26 +64,46 @@ NO = me.Point('NO')
 P1 = me.Point('P1')
 P2 = me.Point('P2')
 P3 = me.Point('P3')
+# nlink_pendulum.al:31: P_NO_AO> = L/2*A1>
 AO.set_pos(NO, L/2*A.x)
+# nlink_pendulum.al:32: P_NO_P1> = L*A1>
 P1.set_pos(NO, L*A.x)
+# nlink_pendulum.al:33: P_P1_BO> = L/2*B1>
 BO.set_pos(P1, L/2*B.x)
+# nlink_pendulum.al:34: P_P1_P2> = L*B1>
 P2.set_pos(P1, L*B.x)
+# nlink_pendulum.al:35: P_P2_CO> = L/2*C1>
 CO.set_pos(P2, L/2*C.x)
+# nlink_pendulum.al:36: P_P2_P3> = L*C1>
 P3.set_pos(P2, L*C.x)
+# nlink_pendulum.al:37: P_P3_DO> = L/2*D1>
 DO.set_pos(P3, L/2*D.x)
+# nlink_pendulum.al:39: V2PTS(N, A, NO, AO)
 AO.set_vel(N, (-L*U1*sm.sin(Q1)/2)*N.x + L*U1*sm.cos(Q1)/2*N.y)
+# nlink_pendulum.al:41: V2PTS(N, B, P1, BO)
 BO.set_vel(N, (-L*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2)/2 - L*U1*sm.sin(Q1))*N.x + (L*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2)/2 + L*U1*sm.cos(Q1))*N.y)
+# nlink_pendulum.al:43: V2PTS(N, C, P2, CO)
 CO.set_vel(N, (-L*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.sin(Q1) + (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.cos(Q1))*(U1 + U2 + U3)/2 - L*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2) - L*U1*sm.sin(Q1))*N.x + (L*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.cos(Q1) - (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.sin(Q1))*(U1 + U2 + U3)/2 + L*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2) + L*U1*sm.cos(Q1))*N.y)
+# nlink_pendulum.al:45: V2PTS(N, D, P3, DO)
 DO.set_vel(N, (-L*(((-sm.sin(Q3)*sm.sin(Q4) + sm.cos(Q3)*sm.cos(Q4))*sm.sin(Q2) + (sm.sin(Q3)*sm.cos(Q4) + sm.sin(Q4)*sm.cos(Q3))*sm.cos(Q2))*sm.cos(Q1) + ((-sm.sin(Q3)*sm.sin(Q4) + sm.cos(Q3)*sm.cos(Q4))*sm.cos(Q2) - (sm.sin(Q3)*sm.cos(Q4) + sm.sin(Q4)*sm.cos(Q3))*sm.sin(Q2))*sm.sin(Q1))*(U1 + U2 + U3 + U4)/2 - L*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.sin(Q1) + (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.cos(Q1))*(U1 + U2 + U3) - L*(sm.sin(Q1)*sm.cos(Q2) + sm.sin(Q2)*sm.cos(Q1))*(U1 + U2) - L*U1*sm.sin(Q1))*N.x + (L*(-((-sm.sin(Q3)*sm.sin(Q4) + sm.cos(Q3)*sm.cos(Q4))*sm.sin(Q2) + (sm.sin(Q3)*sm.cos(Q4) + sm.sin(Q4)*sm.cos(Q3))*sm.cos(Q2))*sm.sin(Q1) + ((-sm.sin(Q3)*sm.sin(Q4) + sm.cos(Q3)*sm.cos(Q4))*sm.cos(Q2) - (sm.sin(Q3)*sm.cos(Q4) + sm.sin(Q4)*sm.cos(Q3))*sm.sin(Q2))*sm.cos(Q1))*(U1 + U2 + U3 + U4)/2 + L*((-sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3))*sm.cos(Q1) - (sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2))*sm.sin(Q1))*(U1 + U2 + U3) + L*(-sm.sin(Q1)*sm.sin(Q2) + sm.cos(Q1)*sm.cos(Q2))*(U1 + U2) + L*U1*sm.cos(Q1))*N.y)
 
 # particles and rigid bodies: masses and central inertias
+# nlink_pendulum.al:11: MASS A = M, B = M, C = M, D = M
+# nlink_pendulum.al:12: INERTIA A, 0, 0, M*L^2/12
 A_body = me.RigidBody('A', AO, A, M, (me.inertia(A, 0, 0, L**2*M/12), AO))
+# nlink_pendulum.al:11: MASS A = M, B = M, C = M, D = M
+# nlink_pendulum.al:13: INERTIA B, 0, 0, M*L^2/12
 B_body = me.RigidBody('B', BO, B, M, (me.inertia(B, 0, 0, L**2*M/12), BO))
+# nlink_pendulum.al:11: MASS A = M, B = M, C = M, D = M
+# nlink_pendulum.al:14: INERTIA C, 0, 0, M*L^2/12
 C_body = me.RigidBody('C', CO, C, M, (me.inertia(C, 0, 0, L**2*M/12), CO))
+# nlink_pendulum.al:11: MASS A = M, B = M, C = M, D = M
+# nlink_pendulum.al:15: INERTIA D, 0, 0, M*L^2/12
 D_body = me.RigidBody('D', DO, D, M, (me.inertia(D, 0, 0, L**2*M/12), DO))
 bodies = [A_body, B_body, C_body, D_body]
 
 # loads: forces on points, torques on frames
+# nlink_pendulum.al:47: GRAVITY(G*N1>)
 loads = [
     (AO, G*M*N.x),
     (BO, G*M*N.x),

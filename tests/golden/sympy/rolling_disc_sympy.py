@@ -36,12 +36,15 @@ G = sm.Symbol('G')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# rolling_disc.al:15: SIMPROT(N, A, 3, Q1)
 A = me.ReferenceFrame('A')
 A.orient_axis(N, N.z, Q1)
 A.set_ang_vel(N, U1*N.z)
+# rolling_disc.al:16: SIMPROT(A, B, 1, Q2)
 B = me.ReferenceFrame('B')
 B.orient_axis(A, A.x, Q2)
 B.set_ang_vel(A, U2*A.x)
+# rolling_disc.al:17: SIMPROT(B, C, 2, Q3)
 C = me.ReferenceFrame('C')
 C.orient_axis(B, B.y, Q3)
 C.set_ang_vel(B, U3*B.y)
@@ -50,15 +53,21 @@ C.set_ang_vel(B, U3*B.y)
 CO = me.Point('CO')
 NO = me.Point('NO')
 CN = me.Point('CN')
+# rolling_disc.al:24: P_NO_CO> = Q4*N1> + Q5*N2> + R*B3>
 CO.set_pos(NO, Q4*N.x + Q5*N.y + R*B.z)
+# rolling_disc.al:26: P_CO_CN> = -R*B3>
 CN.set_pos(CO, (-R)*B.z)
+# rolling_disc.al:25: V_CO_N> = DT(P_NO_CO>, N)
 CO.set_vel(N, (R*U1*sm.sin(Q2)*sm.cos(Q1) + U4)*N.x + (R*U1*sm.sin(Q1)*sm.sin(Q2) + U5)*N.y + (-R*U2*sm.cos(Q2))*A.y + (-R*U2*sm.sin(Q2))*A.z)
 
 # particles and rigid bodies: masses and central inertias
+# rolling_disc.al:12: MASS C = M
+# rolling_disc.al:13: INERTIA C, M*R^2/4, M*R^2/2, M*R^2/4
 C_body = me.RigidBody('C', CO, C, M, (me.inertia(C, M*R**2/4, M*R**2/2, M*R**2/4), CO))
 bodies = [C_body]
 
 # loads: forces on points, torques on frames
+# rolling_disc.al:34: GRAVITY(-G*N3>)
 loads = [
     (CO, (-G*M)*N.z),
 ]
@@ -80,6 +89,9 @@ kd_eqs = [
 # velocity constraints (each = 0), which give the dependent speeds (CONSTRAIN(DEPENDENT[...]));
 # KanesMethod solves them by Cramer's rule: its default LU divides by pivots that
 # vanish at some states where the constraints are regular (0/0)
+# rolling_disc.al:30: DEPENDENT[1] = DOT(V_CN_N>, N1>)
+# rolling_disc.al:31: DEPENDENT[2] = DOT(V_CN_N>, N2>)
+# rolling_disc.al:32: CONSTRAIN(DEPENDENT[U4, U5])
 velocity_constraints = [
     -R*U3*sm.cos(Q1) + U4,
     -R*U3*sm.sin(Q1) + U5,

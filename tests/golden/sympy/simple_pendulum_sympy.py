@@ -28,6 +28,7 @@ M = sm.Symbol('M')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# simple_pendulum.al:12: SIMPROT(N, A, 3, THETA)
 A = me.ReferenceFrame('A')
 A.orient_axis(N, N.z, THETA)
 A.set_ang_vel(N, THETA.diff(t)*N.z)
@@ -35,14 +36,18 @@ A.set_ang_vel(N, THETA.diff(t)*N.z)
 # points: positions from the Newtonian origin, velocities in N of those with a mass or a load
 P = me.Point('P')
 NO = me.Point('NO')
+# simple_pendulum.al:13: P_NO_P> = L*A1>
 P.set_pos(NO, L*A.x)
+# simple_pendulum.al:14: V2PTS(N, A, NO, P)
 P.set_vel(N, (-L*sm.sin(THETA)*THETA.diff(t))*N.x + L*sm.cos(THETA)*THETA.diff(t)*N.y)
 
 # particles and rigid bodies: masses and central inertias
+# simple_pendulum.al:11: MASS P = M
 P_particle = me.Particle('P', P, M)
 bodies = [P_particle]
 
 # loads: forces on points, torques on frames
+# simple_pendulum.al:16: GRAVITY(G*N1>)
 loads = [
     (P, G*M*N.x),
 ]

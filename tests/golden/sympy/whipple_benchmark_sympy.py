@@ -65,21 +65,27 @@ IFYY = sm.Symbol('IFYY')
 
 # reference frames, oriented as the model orients them, with its angular velocities
 N = me.ReferenceFrame('N')
+# whipple_benchmark.al:25: SIMPROT(N, A, 3, Q3)
 A = me.ReferenceFrame('A')
 A.orient_axis(N, N.z, Q3)
 A.set_ang_vel(N, U3*N.z)
+# whipple_benchmark.al:26: SIMPROT(A, B, 1, Q4)
 B = me.ReferenceFrame('B')
 B.orient_axis(A, A.x, Q4)
 B.set_ang_vel(A, U4*A.x)
+# whipple_benchmark.al:27: SIMPROT(B, C, 2, Q5)
 C = me.ReferenceFrame('C')
 C.orient_axis(B, B.y, Q5)
 C.set_ang_vel(B, U5*B.y)
+# whipple_benchmark.al:28: SIMPROT(C, D, 2, Q6)
 D = me.ReferenceFrame('D')
 D.orient_axis(C, C.y, Q6)
 D.set_ang_vel(C, U6*C.y)
+# whipple_benchmark.al:29: SIMPROT(C, E, 3, Q7)
 E = me.ReferenceFrame('E')
 E.orient_axis(C, C.z, Q7)
 E.set_ang_vel(C, U7*C.z)
+# whipple_benchmark.al:30: SIMPROT(E, F, 2, Q8)
 F = me.ReferenceFrame('F')
 F.orient_axis(E, E.y, Q8)
 F.set_ang_vel(E, U8*E.y)
@@ -92,25 +98,44 @@ FO = me.Point('FO')
 DN = me.Point('DN')
 NO = me.Point('NO')
 FN = me.Point('FN')
+# whipple_benchmark.al:51: P_NO_DN> = Q1*N1> + Q2*N2>
 DN.set_pos(NO, Q1*N.x + Q2*N.y)
+# whipple_benchmark.al:52: P_DN_DO> = -RR*B3>
 DO.set_pos(DN, (-RR)*B.z)
+# whipple_benchmark.al:53: P_DO_CO> = L1*C1> + L2*C3>
 CO.set_pos(DO, (XB*sm.cos(LAM) - (RR + ZB)*sm.sin(LAM))*C.x + (XB*sm.sin(LAM) + (RR + ZB)*sm.cos(LAM))*C.z)
+# whipple_benchmark.al:54: P_DO_FO> = D1*C1> + D2*C3> + D3*E1>
 FO.set_pos(DO, (CT - RR*sm.tan(LAM) + W)*sm.cos(LAM)*C.x + (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))/sm.cos(LAM)*C.z + (-(CT - RF*sm.tan(LAM))*sm.cos(LAM))*E.x)
+# whipple_benchmark.al:55: P_FO_EO> = L3*E1> + L4*E3>
 EO.set_pos(FO, (-(RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM))*E.x + ((RF + ZH)*sm.cos(LAM) + (-W + XH)*sm.sin(LAM))*E.z)
+# whipple_benchmark.al:56: P_FO_FN> = RF*UNITVEC(N3> - DOT(N3>, E2>)*E2>)
 FN.set_pos(FO, RF/(1 - (sm.sin(Q4)*sm.cos(Q7) + sm.sin(Q5)*sm.sin(Q7)*sm.cos(Q4))**2)**(sm.Rational(1, 2))*N.z + (-RF*(sm.sin(Q4)*sm.cos(Q7) + sm.sin(Q5)*sm.sin(Q7)*sm.cos(Q4))/(1 - (sm.sin(Q4)*sm.cos(Q7) + sm.sin(Q5)*sm.sin(Q7)*sm.cos(Q4))**2)**(sm.Rational(1, 2)))*E.y)
+# whipple_benchmark.al:59: V_CO_N> = DT(P_NO_CO>, N)
 CO.set_vel(N, (-RR*U3*sm.sin(Q4)*sm.cos(Q3) - ((XB*sm.sin(LAM) + (RR + ZB)*sm.cos(LAM))*(sm.sin(Q3)*sm.sin(Q5) - sm.sin(Q4)*sm.cos(Q3)*sm.cos(Q5)) + (XB*sm.cos(LAM) - (RR + ZB)*sm.sin(LAM))*(sm.sin(Q3)*sm.cos(Q5) + sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q3)))*U3 + U1)*N.x + (-RR*U3*sm.sin(Q3)*sm.sin(Q4) + ((XB*sm.sin(LAM) + (RR + ZB)*sm.cos(LAM))*(sm.sin(Q3)*sm.sin(Q4)*sm.cos(Q5) + sm.sin(Q5)*sm.cos(Q3)) + (XB*sm.cos(LAM) - (RR + ZB)*sm.sin(LAM))*(-sm.sin(Q3)*sm.sin(Q4)*sm.sin(Q5) + sm.cos(Q3)*sm.cos(Q5)))*U3 + U2)*N.y + (RR*U4*sm.cos(Q4) - ((XB*sm.sin(LAM) + (RR + ZB)*sm.cos(LAM))*sm.cos(Q4)*sm.cos(Q5) - (XB*sm.cos(LAM) - (RR + ZB)*sm.sin(LAM))*sm.sin(Q5)*sm.cos(Q4))*U4)*A.y + (RR*U4*sm.sin(Q4) + (-(XB*sm.sin(LAM) + (RR + ZB)*sm.cos(LAM))*sm.sin(Q4)*sm.cos(Q5) + (XB*sm.cos(LAM) - (RR + ZB)*sm.sin(LAM))*sm.sin(Q4)*sm.sin(Q5))*U4)*A.z + ((XB*sm.sin(LAM) + (RR + ZB)*sm.cos(LAM))*sm.cos(Q5) - (XB*sm.cos(LAM) - (RR + ZB)*sm.sin(LAM))*sm.sin(Q5))*U5*B.x + (-((XB*sm.sin(LAM) + (RR + ZB)*sm.cos(LAM))*sm.sin(Q5) + (XB*sm.cos(LAM) - (RR + ZB)*sm.sin(LAM))*sm.cos(Q5))*U5)*B.z)
+# whipple_benchmark.al:58: V_DO_N> = DT(P_NO_DO>, N)
 DO.set_vel(N, (-RR*U3*sm.sin(Q4)*sm.cos(Q3) + U1)*N.x + (-RR*U3*sm.sin(Q3)*sm.sin(Q4) + U2)*N.y + RR*U4*sm.cos(Q4)*A.y + RR*U4*sm.sin(Q4)*A.z)
+# whipple_benchmark.al:61: V_EO_N> = DT(P_NO_EO>, N)
 EO.set_vel(N, (-RR*U3*sm.sin(Q4)*sm.cos(Q3) - (((RF + ZH)*sm.cos(LAM) + (-W + XH)*sm.sin(LAM))*(sm.sin(Q3)*sm.sin(Q5) - sm.sin(Q4)*sm.cos(Q3)*sm.cos(Q5)) + ((sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q7) + sm.sin(Q7)*sm.cos(Q4))*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q5)*sm.cos(Q7))*(-(CT - RF*sm.tan(LAM))*sm.cos(LAM) - (RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM)))*U3 - ((sm.sin(Q3)*sm.sin(Q5) - sm.sin(Q4)*sm.cos(Q3)*sm.cos(Q5))*(-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))/sm.cos(LAM) + (sm.sin(Q3)*sm.cos(Q5) + sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q3))*(CT - RR*sm.tan(LAM) + W)*sm.cos(LAM))*U3 + U1)*N.x + (-RR*U3*sm.sin(Q3)*sm.sin(Q4) + (((RF + ZH)*sm.cos(LAM) + (-W + XH)*sm.sin(LAM))*(sm.sin(Q3)*sm.sin(Q4)*sm.cos(Q5) + sm.sin(Q5)*sm.cos(Q3)) + (-(sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q7) + sm.sin(Q7)*sm.cos(Q4))*sm.sin(Q3) + sm.cos(Q3)*sm.cos(Q5)*sm.cos(Q7))*(-(CT - RF*sm.tan(LAM))*sm.cos(LAM) - (RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM)))*U3 + ((-sm.sin(Q3)*sm.sin(Q4)*sm.sin(Q5) + sm.cos(Q3)*sm.cos(Q5))*(CT - RR*sm.tan(LAM) + W)*sm.cos(LAM) + (sm.sin(Q3)*sm.sin(Q4)*sm.cos(Q5) + sm.sin(Q5)*sm.cos(Q3))*(-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))/sm.cos(LAM))*U3 + U2)*N.y + (RR*U4*sm.cos(Q4) - (((RF + ZH)*sm.cos(LAM) + (-W + XH)*sm.sin(LAM))*sm.cos(Q4)*sm.cos(Q5) + (sm.sin(Q4)*sm.sin(Q7) - sm.sin(Q5)*sm.cos(Q4)*sm.cos(Q7))*(-(CT - RF*sm.tan(LAM))*sm.cos(LAM) - (RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM)))*U4 - (-(CT - RR*sm.tan(LAM) + W)*sm.sin(Q5)*sm.cos(LAM)*sm.cos(Q4) + (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))*sm.cos(Q4)*sm.cos(Q5)/sm.cos(LAM))*U4)*A.y + (RR*U4*sm.sin(Q4) + (-((RF + ZH)*sm.cos(LAM) + (-W + XH)*sm.sin(LAM))*sm.sin(Q4)*sm.cos(Q5) + (sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q7) + sm.sin(Q7)*sm.cos(Q4))*(-(CT - RF*sm.tan(LAM))*sm.cos(LAM) - (RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM)))*U4 + ((CT - RR*sm.tan(LAM) + W)*sm.sin(Q4)*sm.sin(Q5)*sm.cos(LAM) - (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))*sm.sin(Q4)*sm.cos(Q5)/sm.cos(LAM))*U4)*A.z + ((((RF + ZH)*sm.cos(LAM) + (-W + XH)*sm.sin(LAM))*sm.cos(Q5) - (-(CT - RF*sm.tan(LAM))*sm.cos(LAM) - (RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM))*sm.sin(Q5)*sm.cos(Q7))*U5 + (-(CT - RR*sm.tan(LAM) + W)*sm.sin(Q5)*sm.cos(LAM) + (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))*sm.cos(Q5)/sm.cos(LAM))*U5)*B.x + (-(((RF + ZH)*sm.cos(LAM) + (-W + XH)*sm.sin(LAM))*sm.sin(Q5) + (-(CT - RF*sm.tan(LAM))*sm.cos(LAM) - (RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM))*sm.cos(Q5)*sm.cos(Q7))*U5 - ((CT - RR*sm.tan(LAM) + W)*sm.cos(LAM)*sm.cos(Q5) + (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))*sm.sin(Q5)/sm.cos(LAM))*U5)*B.z + (-(-(CT - RF*sm.tan(LAM))*sm.cos(LAM) - (RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM))*U7*sm.sin(Q7))*C.x + (-(CT - RF*sm.tan(LAM))*sm.cos(LAM) - (RF + ZH)*sm.sin(LAM) + (-W + XH)*sm.cos(LAM))*U7*sm.cos(Q7)*C.y)
+# whipple_benchmark.al:60: V_FO_N> = DT(P_NO_FO>, N)
 FO.set_vel(N, (-RR*U3*sm.sin(Q4)*sm.cos(Q3) + (CT - RF*sm.tan(LAM))*((sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q7) + sm.sin(Q7)*sm.cos(Q4))*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q5)*sm.cos(Q7))*U3*sm.cos(LAM) - ((sm.sin(Q3)*sm.sin(Q5) - sm.sin(Q4)*sm.cos(Q3)*sm.cos(Q5))*(-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))/sm.cos(LAM) + (sm.sin(Q3)*sm.cos(Q5) + sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q3))*(CT - RR*sm.tan(LAM) + W)*sm.cos(LAM))*U3 + U1)*N.x + (-RR*U3*sm.sin(Q3)*sm.sin(Q4) - (CT - RF*sm.tan(LAM))*(-(sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q7) + sm.sin(Q7)*sm.cos(Q4))*sm.sin(Q3) + sm.cos(Q3)*sm.cos(Q5)*sm.cos(Q7))*U3*sm.cos(LAM) + ((-sm.sin(Q3)*sm.sin(Q4)*sm.sin(Q5) + sm.cos(Q3)*sm.cos(Q5))*(CT - RR*sm.tan(LAM) + W)*sm.cos(LAM) + (sm.sin(Q3)*sm.sin(Q4)*sm.cos(Q5) + sm.sin(Q5)*sm.cos(Q3))*(-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))/sm.cos(LAM))*U3 + U2)*N.y + (RR*U4*sm.cos(Q4) + (CT - RF*sm.tan(LAM))*(sm.sin(Q4)*sm.sin(Q7) - sm.sin(Q5)*sm.cos(Q4)*sm.cos(Q7))*U4*sm.cos(LAM) - (-(CT - RR*sm.tan(LAM) + W)*sm.sin(Q5)*sm.cos(LAM)*sm.cos(Q4) + (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))*sm.cos(Q4)*sm.cos(Q5)/sm.cos(LAM))*U4)*A.y + (RR*U4*sm.sin(Q4) - (CT - RF*sm.tan(LAM))*(sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q7) + sm.sin(Q7)*sm.cos(Q4))*U4*sm.cos(LAM) + ((CT - RR*sm.tan(LAM) + W)*sm.sin(Q4)*sm.sin(Q5)*sm.cos(LAM) - (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))*sm.sin(Q4)*sm.cos(Q5)/sm.cos(LAM))*U4)*A.z + ((CT - RF*sm.tan(LAM))*U5*sm.sin(Q5)*sm.cos(LAM)*sm.cos(Q7) + (-(CT - RR*sm.tan(LAM) + W)*sm.sin(Q5)*sm.cos(LAM) + (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))*sm.cos(Q5)/sm.cos(LAM))*U5)*B.x + ((CT - RF*sm.tan(LAM))*U5*sm.cos(LAM)*sm.cos(Q5)*sm.cos(Q7) - ((CT - RR*sm.tan(LAM) + W)*sm.cos(LAM)*sm.cos(Q5) + (-RF + RR - (CT - RF*sm.tan(LAM))*sm.sin(LAM)*sm.cos(LAM) + (CT - RR*sm.tan(LAM) + W)*sm.sin(LAM)*sm.cos(LAM))*sm.sin(Q5)/sm.cos(LAM))*U5)*B.z + (CT - RF*sm.tan(LAM))*U7*sm.sin(Q7)*sm.cos(LAM)*C.x + (-(CT - RF*sm.tan(LAM))*U7*sm.cos(LAM)*sm.cos(Q7))*C.y)
 
 # particles and rigid bodies: masses and central inertias
+# whipple_benchmark.al:40: MASS C = MB, D = MR, E = MH, F = MF
+# whipple_benchmark.al:42: INERTIA C, COS(LAM)^2*IBXX - 2*SIN(LAM)*COS(LAM)*IBXZ + SIN(LAM)^2*...
 C_body = me.RigidBody('C', CO, C, MB, (me.inertia(C, IBXX*sm.cos(LAM)**2 - 2*IBXZ*sm.sin(LAM)*sm.cos(LAM) + IBZZ*sm.sin(LAM)**2, IBYY, IBXX*sm.sin(LAM)**2 + 2*IBXZ*sm.sin(LAM)*sm.cos(LAM) + IBZZ*sm.cos(LAM)**2, 0, 0, IBXZ*(-sm.sin(LAM)**2 + sm.cos(LAM)**2) + (IBXX - IBZZ)*sm.sin(LAM)*sm.cos(LAM)), CO))
+# whipple_benchmark.al:40: MASS C = MB, D = MR, E = MH, F = MF
+# whipple_benchmark.al:48: INERTIA D, IRXX, IRYY, IRXX
 D_body = me.RigidBody('D', DO, D, MR, (me.inertia(D, IRXX, IRYY, IRXX), DO))
+# whipple_benchmark.al:40: MASS C = MB, D = MR, E = MH, F = MF
+# whipple_benchmark.al:45: INERTIA E, COS(LAM)^2*IHXX - 2*SIN(LAM)*COS(LAM)*IHXZ + SIN(LAM)^2*...
 E_body = me.RigidBody('E', EO, E, MH, (me.inertia(E, IHXX*sm.cos(LAM)**2 - 2*IHXZ*sm.sin(LAM)*sm.cos(LAM) + IHZZ*sm.sin(LAM)**2, IHYY, IHXX*sm.sin(LAM)**2 + 2*IHXZ*sm.sin(LAM)*sm.cos(LAM) + IHZZ*sm.cos(LAM)**2, 0, 0, IHXZ*(-sm.sin(LAM)**2 + sm.cos(LAM)**2) + (IHXX - IHZZ)*sm.sin(LAM)*sm.cos(LAM)), EO))
+# whipple_benchmark.al:40: MASS C = MB, D = MR, E = MH, F = MF
+# whipple_benchmark.al:49: INERTIA F, IFXX, IFYY, IFXX
 F_body = me.RigidBody('F', FO, F, MF, (me.inertia(F, IFXX, IFYY, IFXX), FO))
 bodies = [C_body, D_body, E_body, F_body]
 
 # loads: forces on points, torques on frames
+# whipple_benchmark.al:73: GRAVITY(G*N3>)
 loads = [
     (CO, G*MB*N.z),
     (DO, G*MR*N.z),
@@ -141,6 +166,12 @@ kd_eqs = [
 # velocity constraints (each = 0), which give the dependent speeds (CONSTRAIN(DEPENDENT[...]));
 # KanesMethod solves them by Cramer's rule: its default LU divides by pivots that
 # vanish at some states where the constraints are regular (0/0)
+# whipple_benchmark.al:66: DEPENDENT[1] = DOT(V_DN_N>, N1>)
+# whipple_benchmark.al:67: DEPENDENT[2] = DOT(V_DN_N>, N2>)
+# whipple_benchmark.al:68: DEPENDENT[3] = DOT(V_FN_N>, N1>)
+# whipple_benchmark.al:69: DEPENDENT[4] = DOT(V_FN_N>, N2>)
+# whipple_benchmark.al:70: DEPENDENT[5] = DOT(V_FN_N>, N3>)
+# whipple_benchmark.al:71: CONSTRAIN(DEPENDENT[U1, U2, U3, U5, U8])
 velocity_constraints = [
     RR*(-sm.sin(Q3)*sm.sin(Q4)*sm.sin(Q5) + sm.cos(Q3)*sm.cos(Q5))*U6*sm.cos(Q5) + RR*(sm.sin(Q3)*sm.sin(Q4)*sm.cos(Q5) + sm.sin(Q5)*sm.cos(Q3))*U6*sm.sin(Q5) + RR*U5*sm.cos(Q3) + U1,
     RR*(sm.sin(Q3)*sm.sin(Q5) - sm.sin(Q4)*sm.cos(Q3)*sm.cos(Q5))*U6*sm.sin(Q5) + RR*(sm.sin(Q3)*sm.cos(Q5) + sm.sin(Q4)*sm.sin(Q5)*sm.cos(Q3))*U6*sm.cos(Q5) + RR*U5*sm.sin(Q3) + U2,
