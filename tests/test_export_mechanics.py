@@ -11,7 +11,8 @@ import sympy as sm
 
 import autolev
 from autolev.cli import main
-from autolev.export_mechanics import export_sympy, simple_rotation
+from autolev.export_mechanics import export_sympy
+from autolev.runtime.interop import simple_rotation
 from autolev.runtime.errors import AutolevModelError
 from helpers import EXAMPLES
 from helpers.sympy_scripts import equations_difference, rows_difference, run_script

@@ -24,14 +24,13 @@ from .runtime import symbols as S
 from .runtime.equations_of import Equations, equations_of, state_of
 from .runtime.errors import AutolevModelError
 from .runtime.handoff import CONSTRAINT_SOLVER, Handoff, handoff
+from .runtime.interop import simple_rotation
 
 LEVELS = ("auto", "mechanics", "equations")
 # KanesMethod forms and inverts symbolic matrices: beyond this many speeds it is slow
 MOST_SPEEDS = 12
 
 AXES = "xyz"
-# the two axes a rotation about axis k turns, in right-handed order
-_TURNED = {0: (1, 2), 1: (2, 0), 2: (0, 1)}
 
 
 class MechanicsPrinter(ScriptPrinter):
@@ -96,25 +95,6 @@ class MechanicsPrinter(ScriptPrinter):
 
 def _joined(terms: list, zero: str) -> str:
     return " + ".join(terms).replace("+ -", "- ") if terms else zero
-
-
-def simple_rotation(dcm) -> tuple[int, object] | None:
-    """(axis 0-2, angle) when parent.dcm(child) `dcm` turns the parent about one of its
-    axes (SIMPROT's matrices), else None."""
-    for k, (i, j) in _TURNED.items():
-        others = [(r, c) for r in range(3) for c in range(3) if (r == k) != (c == k)]
-        if dcm[k, k] != 1 or any(dcm[r, c] != 0 for r, c in others):
-            continue
-        cosine = dcm[i, i]
-        if not isinstance(cosine, sm.cos):
-            continue
-        angle = cosine.args[0]
-        for turned in (angle, -angle):
-            expected = [[sm.cos(turned), -sm.sin(turned)], [sm.sin(turned), sm.cos(turned)]]
-            if all(sm.expand(dcm[a, b] - expected[x][y]) == 0
-                   for x, a in enumerate((i, j)) for y, b in enumerate((i, j))):
-                return k, turned
-    return None
 
 
 def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:

@@ -55,6 +55,29 @@ def to_sympy_expr(scene: "Scene", expr, mapping: dict | None = None, keep=frozen
     return scene.defs.explicit(expr, keep).xreplace(mapping)
 
 
+# the two axes a rotation about axis k turns, in right-handed order
+_TURNED = {0: (1, 2), 1: (2, 0), 2: (0, 1)}
+
+
+def simple_rotation(dcm) -> tuple[int, object] | None:
+    """(axis 0-2, angle) when parent.dcm(child) `dcm` turns the parent about one of its
+    axes (SIMPROT's matrices), else None."""
+    for k, (i, j) in _TURNED.items():
+        others = [(r, c) for r in range(3) for c in range(3) if (r == k) != (c == k)]
+        if dcm[k, k] != 1 or any(dcm[r, c] != 0 for r, c in others):
+            continue
+        cosine = dcm[i, i]
+        if not isinstance(cosine, sm.cos):
+            continue
+        angle = cosine.args[0]
+        for turned in (angle, -angle):
+            expected = [[sm.cos(turned), -sm.sin(turned)], [sm.sin(turned), sm.cos(turned)]]
+            if all(sm.expand(dcm[a, b] - expected[x][y]) == 0
+                   for x, a in enumerate((i, j)) for y, b in enumerate((i, j))):
+                return k, turned
+    return None
+
+
 def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | None = None,
                    orientations: list | None = None, keep=frozenset()):
     """A sympy ReferenceFrame oriented as `frame` is (through the model's frames).
@@ -81,7 +104,14 @@ def to_sympy_frame(frame: "Frame", mapping: dict | None = None, cache: dict | No
                 continue
             sg = me.ReferenceFrame(g.name)
             dcm = to_sympy_expr(scene, f.dcm(g), mapping, keep)     # f_i . g_j
-            sg.orient_explicit(cache[f], dcm)                 # sympy: f.dcm(g) = dcm
+            rotation = simple_rotation(dcm)
+            # orient_explicit differentiates the matrix and trigsimps it: minutes on a
+            # bicycle's frames, which SIMPROT turns about one axis each
+            if rotation is not None:
+                axis, angle = rotation
+                sg.orient_axis(cache[f], (cache[f].x, cache[f].y, cache[f].z)[axis], angle)
+            else:
+                sg.orient_explicit(cache[f], dcm)             # sympy: f.dcm(g) = dcm
             # kept before its angular velocity is read: W_B_N> is often given in B itself
             cache[g] = sg
             try:
