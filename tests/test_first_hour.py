@@ -2,6 +2,7 @@
 parameter values are stopped before the build, told what is missing and how to give
 it, and handed a template to fill in."""
 import math
+import os
 import re
 import subprocess
 import sys
@@ -85,6 +86,35 @@ def test_missing_values_stop_the_run_with_what_to_do_and_a_template(model_file, 
     r = cli("run", model_file, "--out", out)
     assert r.returncode == 1 and "from before is still there" in r.stderr
     assert template.read_text().endswith("% my notes\n")
+
+
+def test_constants_without_a_value_are_named_before_the_model_is_formed(tmp_path):
+    # issue 32: on a large model the refusal came after a minute of forming the equations;
+    # the note comes from the translation, before, and the refusal judges the equations
+    path = tmp_path / "pend.al"
+    path.write_text(PENDULUM.replace("CONSTANTS M, L, G, I", "CONSTANTS M, L, G, I, SPARE"))
+    r = cli("run", path, "--out", tmp_path / "out")
+    assert r.returncode == 1
+    lines = r.stderr.splitlines()
+    note = next(k for k, line in enumerate(lines) if "note: no value given for" in line)
+    assert lines[note].endswith("no value given for L, G, I, SPARE (INPUT, --set NAME=VALUE "
+                                "or --in FILE.in); the run stops before integrating if its "
+                                "equations use them")
+    refusal = next(k for k, line in enumerate(lines) if "have no value" in line)
+    assert note < refusal and "have no value: G, I, L." in lines[refusal]
+    # given what the equations use, the run goes on: SPARE, never needed, stays in the note
+    given = ["--set", "L=0.5", "--set", "G=9.81", "--set", "I=0.02", "--set", "TFINAL=0.1"]
+    r = cli("run", path, "--out", tmp_path / "again", *given)
+    assert r.returncode == 0, r.stderr
+    assert "note: no value given for SPARE (INPUT" in r.stderr
+    # the model built and kept, a run that does not form it again has nothing to say early
+    kept = dict(os.environ, AUTOLEV_NO_MODEL_CACHE="0", AUTOLEV_CACHE=str(tmp_path / "cache"))
+    runs = [subprocess.run([sys.executable, "-m", "autolev", "run", str(path), "--out",
+                            str(tmp_path / f"kept{k}"), *given], capture_output=True,
+                           text=True, env=kept) for k in range(2)]
+    assert [r.returncode for r in runs] == [0, 0], runs[0].stderr + runs[1].stderr
+    assert "no value given for SPARE" in runs[0].stderr
+    assert "no value given for" not in runs[1].stderr
 
 
 def test_an_all_zero_in_file_is_a_template_never_filled_in(model_file, tmp_path):

@@ -54,15 +54,19 @@ def _translation(path: Path):
     return modelcache.translation(path, lambda: translation(path))
 
 
-def load_translation(translation, filename: str, write_later: bool = False):
+def load_translation(translation, filename: str, write_later: bool = False,
+                     before_building=None):
     """Run the generated module (or read the model it built from the cache of built
     models); return its model, with `namespace` and `names`.  `write_later`: a model
     built now goes into the cache when its first runs end (see ModelKeeper), with the
-    numeric systems they built, instead of now and again then."""
+    numeric systems they built, instead of now and again then.  `before_building`: called
+    with the translation when the model is to be built (not read from the cache)."""
     key = modelcache.key(translation.code, filename)
     built = modelcache.read(key)
     keeper = None
     if built is None:
+        if before_building is not None:
+            before_building(translation)
         built = _build(translation, filename)
         keeper = ModelKeeper(key, built.warnings, _as_built(built.model))
         if not write_later:
@@ -311,18 +315,20 @@ def _quoted_statement(lines: list[str], line: int) -> str | None:
     return " ".join(q for q in quoted if q) or None
 
 
-def load_for_run(path) -> tuple[object, list]:
+def load_for_run(path, before_building=None) -> tuple[object, list]:
     """The model for `autolev run`: as `autolev.load`, except that when the only
     statements that fail come after the last CODE command, the model is built up to
     that command (Autolev's session rejected a bad statement and went on; the program
     CODE wrote did not depend on what followed).  A model built now goes into the
     cache of built models when its first run or linearization ends.  Returns (model,
     notes): the translation's warnings and what was left out, each a line
-    `file:line:col: warning: ...` to show the user."""
+    `file:line:col: warning: ...` to show the user.  `before_building`: as
+    load_translation's."""
     p = Path(path)
     try:
         result = _translation(p)
-        model = load_translation(result, str(p), write_later=True)
+        model = load_translation(result, str(p), write_later=True,
+                                 before_building=before_building)
         return model, _warnings(result)
     except (AutolevTranslationError, AutolevRuntimeError) as exc:
         failure = exc
@@ -335,7 +341,8 @@ def load_for_run(path) -> tuple[object, list]:
     if any(d.severity == "error" for d in result.diagnostics):
         raise failure
     try:
-        model = load_translation(result, str(p), write_later=True)
+        model = load_translation(result, str(p), write_later=True,
+                                 before_building=before_building)
     except AutolevRuntimeError:
         raise failure from None
     first = next(d for d in failure.diagnostics if d.severity == "error")

@@ -33,9 +33,10 @@ def print_warning(message, category, filename, lineno, file=None, line=None):
     print(f"autolev: warning: {message}", file=sys.stderr)
 
 
-def load_model(path: Path, progress=None):
+def load_model(path: Path, progress=None, before_building=None):
     """The model, or None after printing its diagnostics; a load past two seconds is
-    announced on `progress` (a stream, or None)."""
+    announced on `progress` (a stream, or None); `before_building`: called with the
+    translation of a model to be built (loader.load_translation)."""
     from ..loader import load_for_run, load_python
     from ..runtime.steps import SlowStep
     try:
@@ -43,7 +44,7 @@ def load_model(path: Path, progress=None):
             if path.suffix.lower() == ".py":      # a converted model, as it now reads
                 model, notes = load_python(path), []
             else:
-                model, notes = load_for_run(path)
+                model, notes = load_for_run(path, before_building)
     except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
         print_diagnostics(exc.diagnostics)
         return None

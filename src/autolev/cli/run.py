@@ -19,7 +19,9 @@ def cmd_run(ns: argparse.Namespace) -> int:
     path = Path(ns.file)
     overrides = _run_overrides(ns)
     start = time.monotonic()
-    model = load_model(path, None if ns.quiet else sys.stderr)
+    model = load_model(path, None if ns.quiet else sys.stderr,
+                       None if ns.infile or ns.zero_missing
+                       else _values_lacking(path, overrides))
     if model is None:
         print(f"{path}: not run", file=sys.stderr)
         return 1
@@ -46,6 +48,23 @@ def cmd_run(ns: argparse.Namespace) -> int:
     if isinstance(ns.plot, str):
         ns.plot = _plotted_columns(model, commands, ns.plot)
     return _run_and_report(model, commands, overrides, specified_values(model, ns), ns, path)
+
+
+def _values_lacking(path: Path, overrides: dict):
+    """Before a model is built (its equations formed: a minute on a large model), the
+    note naming the constants that nothing gives a value (INPUT, an assignment, --set);
+    the run refuses once it knows its equations need them."""
+    from ..runtime.numerics.inputs import some_names
+    given = {name.upper() for name in overrides}
+
+    def note(translation) -> None:
+        lacking = [name for name in translation.constants_without_value
+                   if name.upper() not in given]
+        if lacking:
+            print(f"{path}: note: no value given for {some_names(lacking)} (INPUT, --set "
+                  "NAME=VALUE or --in FILE.in); the run stops before integrating if its "
+                  "equations use them", file=sys.stderr, flush=True)
+    return note
 
 
 def _run_overrides(ns: argparse.Namespace) -> dict:

@@ -74,6 +74,10 @@ class Translation:
     # ("constrain", "DEPENDENT" or "AUXILIARY"), every assignment to a name or its
     # elements ("assigned"): for the comments of a SymPy script
     statements_at: dict[tuple[str, str], list[str]] = field(default_factory=dict)
+    # the constants declared that no INPUT gives a value and no statement defines, as the
+    # model spells them: a run needs values for those its equations use (named before
+    # the model is built, which forms its equations)
+    constants_without_value: list[str] = field(default_factory=list)
 
 
 # the generated module's dictionary of probes' values (a dunder name: no Autolev name
@@ -143,6 +147,7 @@ class Translator:
         self.session = Session()
         self.call_depth = 0
         self.defined: set[tuple[str, int]] = set()
+        self.given_by_input: set[str] = set()        # names INPUT gives a value, lower case
         # the declared name (key, primes) whose new definition is being read
         self.redefining: tuple[str, int] | None = None
         # made when first asked for: runs X[1] = a, X[2] = b, ... by their statements'
@@ -156,6 +161,7 @@ class Translator:
         self._span: Span | None = None
         self._used_primes = primes_used(program)
         self.autolev_names: dict[str, str] = {}
+        self.spelled: dict[str, str] = {}          # each Python name -> its Autolev name
         self.namespaces: dict[str, dict[str, str]] = {}
         # declared scalars keep their names: they are allocated before anything that
         # could clash with them (frames, vectors, derivative names)
@@ -209,6 +215,7 @@ class Translator:
         except UnsafeName:
             raise self.error(f"'{name}' cannot be used as a name", None, "T008") from None
         self.autolev_names.setdefault(name, py)
+        self.spelled[py] = name
         public = _NAMESPACE.get(space)
         if public is not None:
             self.namespaces.setdefault(public, {}).setdefault(name, py)
@@ -282,7 +289,10 @@ class Translator:
                            {k: dict(v) for k, v in self.namespaces.items()},
                            list(self.program.files), list(self.code_spans),
                            dict(self.defined_at), dict(self.probe_errors),
-                           {k: list(v) for k, v in self.statements_at.items()})
+                           {k: list(v) for k, v in self.statements_at.items()},
+                           [self.autolev_name(e) for key, e in self.scalars.items()
+                            if e.kind == NameKind.CONSTANT and key not in self.given_by_input
+                            and (key, 0) not in self.defined])
 
     @staticmethod
     def location(st: ir.Statement) -> str:
@@ -305,7 +315,7 @@ class Translator:
 
     def autolev_name(self, entry: Entry) -> str:
         """The Autolev name of a declared frame, point or body."""
-        return next(name for name, py in self.autolev_names.items() if py == entry.py)
+        return self.spelled[entry.py]
 
     def _within_run(self, st: ir.Statement) -> bool:
         """Whether st continues a run X[1] = a, X[2] = b, ... (assignments.py): X is
