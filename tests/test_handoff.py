@@ -9,6 +9,7 @@ import pytest
 import sympy as sm
 
 import autolev
+from autolev.export_mechanics import export_sympy
 from autolev.runtime.errors import AutolevModelError
 from autolev.runtime.numerics.prepare import prepare_command
 from helpers import EXAMPLES
@@ -175,3 +176,23 @@ def test_a_sympy_users_symbol_reaches_the_models_constant_everywhere():
     assert weight == m * g * length and weight.subs({m: 2, g: 3, length: 5}) == 30
     assert {s for s in model.to_mechanics().kane.forcing_full.free_symbols
             if not s.name == "t"} <= {g, m, length}
+
+
+def test_a_variable_nothing_defines_is_a_constant_as_in_the_run(tmp_path):
+    # VARIABLES O with INPUT O = 2 and no definition: the run takes it as a constant (as
+    # sympy's test mass_spring_damper.al does); handed over as O(t), sympy's equations
+    # had a function of time the run does not have
+    path = tmp_path / "push.al"
+    path.write_text("NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' X', V'\nVARIABLES O\n"
+                    "CONSTANTS M\nMASS P = M\nV_P_N> = V*N1>\nX' = V\n"
+                    "FORCE_P> = O*SIN(T)*N1>\nZERO = FR() + FRSTAR()\nKANE()\n"
+                    "INPUT M = 2, O = 3, X = 0, V = 0\nCODE DYNAMICS() push.c\n")
+    model = autolev.load(path)
+    h = model.to_mechanics()
+    o = sm.Symbol("O")
+    assert o in h.constants
+    time = h.coordinates[0].args[0]
+    # by hand: M V' = O sin(t)
+    assert sm.simplify(h.kane.forcing_full[1] - o * sm.sin(time)) == 0
+    text = export_sympy(model, "push.al")
+    assert "\nLevel: mechanics." in text and "O = sm.Symbol('O')" in text

@@ -122,6 +122,9 @@ def handoff(model) -> Handoff:
         raise AutolevModelError("the mechanics hand-off needs a NEWTONIAN frame")
     keep = _kept(model)
     mapping = dynamic_map(model.scene)
+    # a variable nothing defines is a constant of the run (its value from INPUT), and here
+    unset = _undefined_variables(model, keep)
+    mapping |= {v: sm.Symbol(v.name) for v in unset}
     orientations: list = []
     made = _frames(model, mapping, orientations, keep)
     frames = {f.name: sf for f, sf in made.items()}
@@ -194,11 +197,22 @@ def handoff(model) -> Handoff:
         if model.kane_equations is not None else []
     specified = [mapping[s] for s, info in model.info.items()
                  if info.kind == "specified" and not S.base_and_order(s)[1]]
-    constants = [mapping[c] for c, info in model.info.items() if info.kind == "constant"]
+    constants = [mapping[c] for c, info in model.info.items()
+                 if info.kind == "constant" or c in unset]
     states = {q: mapping[q] for q in model.coordinates} | dict(zip(model.speeds, speeds))
     return Handoff(newtonian, frames, orientations, points, velocities, positions, bodies, loads,
                    coordinates, speeds, kinematics, kane, dependent, constraints, auxiliary,
                    unknowns, specified, constants, states)
+
+
+def _undefined_variables(model, keep: frozenset) -> list:
+    """The VARIABLES that are neither defined, nor a coordinate or speed (nor their rates
+    defined), nor kept by the hand-off: what a run takes as constants."""
+    states = set(model.coordinates) | set(model.speeds)
+    return [v for v, info in model.info.items()
+            if info.kind == "variable" and not S.base_and_order(v)[1] and v not in states
+            and v not in keep and v not in model.defs.rhs
+            and S.derivative(v) not in model.defs.rhs]
 
 
 def _kept(model) -> frozenset:
