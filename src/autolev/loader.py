@@ -21,7 +21,6 @@ from sympy.matrices.exceptions import NonInvertibleMatrixError
 from . import modelcache
 from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError,
                      AutolevTranslationError, Diagnostic, Location)
-from .pipeline import parse, translation
 from .runtime.errors import AutolevModelError
 from .runtime.model import Loaded
 from .translate import Translation, translate
@@ -51,7 +50,11 @@ def load(path):
 def _translation(path: Path):
     """The model file's translation (read back from the cache while nothing it read
     changed)."""
-    return modelcache.translation(path, lambda: translation(path))
+    def translated():
+        # the parser takes a third of a warm run's imports: only a new text needs it
+        from .pipeline import translation
+        return translation(path)
+    return modelcache.translation(path, translated)
 
 
 def load_translation(translation, filename: str, write_later: bool = False,
@@ -332,6 +335,7 @@ def load_for_run(path, before_building=None) -> tuple[object, list]:
         return model, _warnings(result)
     except (AutolevTranslationError, AutolevRuntimeError) as exc:
         failure = exc
+    from .pipeline import parse
     program = parse(p)
     codes = [i for i, st in enumerate(program.statements) if st.kind == "code"]
     if not codes or codes[-1] == len(program.statements) - 1:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sympy as sm
 
-from . import ir, pipeline
+from . import ir
 from .dispatch import Dispatch
 from .errors import AutolevError, Diagnostic, Location
 from .runtime import symbols as S
@@ -77,8 +77,9 @@ class _Where:
 def _parse(where: _Where) -> ir.Assignment:
     if "\n" in where.text or "\r" in where.text:
         raise where.error(None, "T010", "expected one NAME=EXPRESSION, on one line")
+    from .pipeline import parse      # the parser only for a --specified given
     try:
-        program = pipeline.parse(where.text, where.option)
+        program = parse(where.text, where.option)
     except AutolevError as exc:
         raise SpecifiedValueError(exc.diagnostics[0]) from None
     statements = program.statements
