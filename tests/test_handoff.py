@@ -196,3 +196,14 @@ def test_a_variable_nothing_defines_is_a_constant_as_in_the_run(tmp_path):
     assert sm.simplify(h.kane.forcing_full[1] - o * sm.sin(time)) == 0
     text = export_sympy(model, "push.al")
     assert "\nLevel: mechanics." in text and "O = sm.Symbol('O')" in text
+
+
+def test_kinematical_equations_not_linear_in_the_speeds_are_refused_by_name(tmp_path):
+    # sympy's KanesMethod raised its own ValueError (SSOpt's CellSimplifiedModV4)
+    path = tmp_path / "square.al"
+    path.write_text("NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' Q', U'\nCONSTANTS M\n"
+                    "MASS P = M\nQ' = U^2\nV_P_N> = Q'*N1>\nZERO = FR() + FRSTAR()\nKANE()\n")
+    model = autolev.load(path)
+    with pytest.raises(AutolevModelError, match="the kinematical equation of Q' is not "
+                                                "linear in the speeds"):
+        model.to_mechanics()

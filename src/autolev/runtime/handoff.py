@@ -186,6 +186,7 @@ def handoff(model) -> Handoff:
             rate_expr = to_sympy_expr(model.scene, rate, mapping, keep)
         kinematics.append(mapping[q].diff(time) - rate_expr)
     dependent = [mapping[u] for u in model.dependent_speeds]
+    _linear_in_speeds(model.coordinates, kinematics, speeds + dependent)
     constraints = [to_sympy_expr(model.scene, e, mapping, keep)
                    for equations, _ in model.dependent_constraints for e in equations]
     auxiliary = [mapping[u] for u in model.auxiliary_speeds]
@@ -203,6 +204,15 @@ def handoff(model) -> Handoff:
     return Handoff(newtonian, frames, orientations, points, velocities, positions, bodies, loads,
                    coordinates, speeds, kinematics, kane, dependent, constraints, auxiliary,
                    unknowns, specified, constants, states)
+
+
+def _linear_in_speeds(coordinates: list, kinematics: list, speeds: list) -> None:
+    """AutolevModelError unless each kinematical equation is linear in the speeds, as
+    KanesMethod takes them."""
+    for q, equation in zip(coordinates, kinematics):
+        if any(equation.diff(u).has(*speeds) for u in speeds):
+            raise AutolevModelError(f"the kinematical equation of {q.name}' is not linear in "
+                                    "the speeds, as sympy's KanesMethod takes them")
 
 
 def _undefined_variables(model, keep: frozenset) -> list:
