@@ -18,7 +18,8 @@ from autolev.runtime.numerics.prepare import prepare_command
 
 # in a process where autolev cannot be imported: the script's equations at random points
 # (mechanics: kane's full mass matrix and forcing as the script takes them, auxiliary
-# speeds 0; equations: its mass and forcing functions), printed as JSON, then its own
+# speeds 0, dependent speeds where the velocity constraints hold and are well
+# conditioned; equations: its mass and forcing functions), printed as JSON, then its own
 # main writing OUT.csv
 DRIVER = """
 import json, runpy, sys
@@ -47,16 +48,20 @@ if dependent:
     a, b = sm.linear_eq_to_matrix([me.msubs(c, kane.kindiffdict(), zero)
                                    for c in ns['velocity_constraints']], dependent)
     held = sm.lambdify([ns['t'], states[:-len(dependent)], constants, specified], [a, b])
-points = []
-for _ in range(20):
+points, tries = [], 0
+while len(points) < 20:
+    tries += 1
+    if tries > 1000:
+        sys.exit('the velocity constraints are singular at every random state tried')
     t, x = rng.uniform(0, 2), rng.uniform(-1, 1, len(states))
     p, s = rng.uniform(0.5, 1.5, len(constants)), rng.uniform(-1, 1, len(specified))
     if level == 'equations' or dependent:
         s = 0 * s            # as our compiled rates take them (0 unless the model gives them)
     if dependent:
-        a, b = held(t, x[:-len(dependent)], p, s)
-        x[-len(dependent):] = np.linalg.solve(np.asarray(a, dtype=float),
-                                              np.asarray(b, dtype=float).ravel())
+        a, b = (np.asarray(v, dtype=float) for v in held(t, x[:-len(dependent)], p, s))
+        if np.linalg.cond(a) > 1e6:
+            continue         # near where the constraints are singular: no digits to compare
+        x[-len(dependent):] = np.linalg.solve(a, b.ravel())
     m, F = f(t, x, p, s)
     points.append([t, x.tolist(), p.tolist(), s.tolist(), np.asarray(m, dtype=float).tolist(),
                    np.asarray(F, dtype=float).ravel().tolist()])
