@@ -102,7 +102,7 @@ def test_a_converted_modules_own_python_that_fails_is_the_users(tiny, tmp_path, 
 def test_a_bug_outside_any_statement_is_still_an_internal_error(tiny, monkeypatch, capsys):
     import autolev.cli.run
 
-    def load_for_run(path, progress=None):
+    def load_for_run(path, *options):
         raise RuntimeError("boom")
     monkeypatch.setattr(autolev.cli.run, "load_model", load_for_run)
     monkeypatch.delenv("AUTOLEV_TRACEBACK", raising=False)
@@ -116,7 +116,7 @@ def test_a_bug_outside_any_statement_is_still_an_internal_error(tiny, monkeypatc
 def test_the_cli_says_out_of_memory_without_a_traceback(tiny, monkeypatch, capsys):
     import autolev.cli.run
 
-    def load_for_run(path, progress=None):
+    def load_for_run(path, *options):
         raise MemoryError
     monkeypatch.setattr(autolev.cli.run, "load_model", load_for_run)
     assert main(["run", str(tiny), "--out", str(tiny.parent)]) == 1

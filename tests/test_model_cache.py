@@ -8,7 +8,7 @@ import warnings
 import pytest
 
 import autolev
-from autolev import loader, modelcache
+from autolev import loader, modelcache, pipeline
 from autolev.cli import main
 from autolev.runtime import diskcache
 from autolev.runtime.model import Model
@@ -198,8 +198,8 @@ def test_a_translation_is_read_back_until_a_file_it_read_or_a_folder_changes(
     model = folder / "m.al"
     model.write_text("RUN kin.al\nX = sq(A)\n")
     translated = []
-    real = loader.translation
-    monkeypatch.setattr(loader, "translation", lambda p: translated.append(p) or real(p))
+    real = pipeline.translation      # the loader imports it when a text is to be translated
+    monkeypatch.setattr(pipeline, "translation", lambda p: translated.append(p) or real(p))
     with pytest.raises(autolev.AutolevTranslationError):
         autolev.load(model)                     # sq is not a function: nothing kept
     (folder / "sq.r").write_text("#1#^2\n")     # a folder it looked in changed
@@ -219,8 +219,8 @@ def test_outputs_written_beside_the_model_keep_its_translation(cache, tmp_path,
     model = tmp_path / "m.al"
     model.write_text("CONSTANTS A\nX = 2*A\n")
     translated = []
-    real = loader.translation
-    monkeypatch.setattr(loader, "translation", lambda p: translated.append(p) or real(p))
+    real = pipeline.translation      # the loader imports it when a text is to be translated
+    monkeypatch.setattr(pipeline, "translation", lambda p: translated.append(p) or real(p))
     autolev.load(model)
     for name in ("m.1", "m.dir", "m.in", "m-plot.png"):
         (tmp_path / name).write_text("written by a run\n")
