@@ -216,3 +216,20 @@ def test_each_object_says_the_statements_it_comes_from(tmp_path):
         "fourbar.al:46: DEPENDENT[1] = DOT(V_P5_N>, N1>) + UA1",
         "fourbar.al:47: DEPENDENT[2] = DOT(V_P5_N>, N2>) + UA2",
         "fourbar.al:48: CONSTRAIN(DEPENDENT[U2, U3])"]
+
+
+def test_a_coordinate_the_model_defines_keeps_it_at_the_equations_level(tmp_path):
+    # dogtail's 3dpendulum sets Q4 = 0: the run does not integrate it, and its script
+    # at the mechanics level stopped on the missing initial value of q4
+    path = tmp_path / "fixed.al"
+    path.write_text("NEWTONIAN N\nFRAMES A\nPARTICLES P\nMOTIONVARIABLES' Q{2}', U{2}'\n"
+                    "CONSTANTS M, L, G\nQ2 = 0\nSIMPROT(N, A, 3, Q1 + Q2)\nQ1' = U1\n"
+                    "Q2' = U2\nW_A_N> = (U1 + U2)*N3>\nP_NO_P> = L*A1>\n"
+                    "V_P_N> = DT(P_NO_P>, N)\nMASS P = M\nGRAVITY(-G*N2>)\n"
+                    "ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 1, L = 1, G = 9.81, Q1 = 0.3\n"
+                    "OUTPUT Q1\nCODE DYNAMICS() fixed.c\n")
+    model = autolev.load(path)
+    text = export_sympy(model, "fixed.al")
+    assert "\nLevel: equations." in text
+    assert "it defines Q2, which KanesMethod would take as coordinates" in " ".join(
+        text.split())

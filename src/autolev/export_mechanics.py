@@ -356,6 +356,12 @@ def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Hando
     if extra:
         return ("its state has " + ", ".join(sorted(s.name for s in extra))
                 + " beyond the coordinates and speeds"), None
+    fixed = (set(model.coordinates) | set(model.speeds)) - set(eqs.states)
+    if fixed:
+        # dogtail's 3dpendulum: Q4 = 0 fixes one of the angles DIRCOS turns through
+        return ("it defines " + ", ".join(sorted(s.name for s in fixed)) + ", which "
+                "KanesMethod would take as coordinates or speeds and the run does not "
+                "integrate"), None
     try:
         h = handoff(model)
     except AutolevModelError as exc:
