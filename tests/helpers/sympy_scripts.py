@@ -101,11 +101,14 @@ def equations_difference(model, command, found: dict) -> float:
         names = [str(s.args[0].func) + "_rate" if isinstance(s, sm.Derivative)
                  else str(s.func) for s in system.states]
         assert names == found["states"]
-        # the model's constants, as everything handed to sympy names them
-        ours = sm.lambdify([me.dynamicsymbols._t, system.states,
-                            [sm.Symbol(n) for n in found["constants"]],
+        # the model's constants, as everything handed to sympy names them; a VARIABLE
+        # nothing defines is one of them in a run (symbolic_system keeps it a function)
+        constants = [sm.Symbol(n) for n in found["constants"]]
+        as_run = {me.dynamicsymbols(c.name): c for c in constants}
+        ours = sm.lambdify([me.dynamicsymbols._t, system.states, constants,
                             [me.dynamicsymbols(n) for n in found["specified"]]],
-                           [system.comb_implicit_mat, system.comb_implicit_rhs])
+                           [m.xreplace(as_run) for m in (system.comb_implicit_mat,
+                                                         system.comb_implicit_rhs)])
         worst = 0.0
         for t, x, p, s, mass, forcing in found["points"]:
             our_mass, our_forcing = ours(t, x, p, s)
