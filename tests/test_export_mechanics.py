@@ -233,3 +233,27 @@ def test_a_coordinate_the_model_defines_keeps_it_at_the_equations_level(tmp_path
     assert "\nLevel: equations." in text
     assert "it defines Q2, which KanesMethod would take as coordinates" in " ".join(
         text.split())
+
+
+def test_accelerations_the_model_defines_are_named_when_sympys_equations_differ(tmp_path):
+    # MAE-223's bicycles write ALF_B_A> = DT(W_B_A>, N): differentiated in N, not in A,
+    # which Autolev's FRSTAR takes as given; sympy derives the angular acceleration
+    path = tmp_path / "spun.al"
+    path.write_text("NEWTONIAN N\nFRAMES A\nBODIES B\nMOTIONVARIABLES' Q{2}', U{2}'\n"
+                    "CONSTANTS I1, I2, I3, M\nSIMPROT(N, A, 3, Q1)\nSIMPROT(A, B, 1, Q2)\n"
+                    "Q1' = U1\nQ2' = U2\nW_A_N> = U1*N3>\nW_B_A> = U2*A1>\n"
+                    "ALF_A_N> = DT(W_A_N>, N)\nALF_B_A> = DT(W_B_A>, N)\n"
+                    "MASS B = M\nINERTIA B, I1, I2, I3\nV_BO_N> = 0>\n"
+                    "ZERO = FR() + FRSTAR()\nKANE()\n"
+                    "INPUT I1 = 1, I2 = 2, I3 = 3, M = 1, U1 = 1, U2 = 1\n"
+                    "OUTPUT Q1, Q2\nCODE DYNAMICS() spun.c\n")
+    model = autolev.load(path)
+    raw = export_sympy(model, "spun.al")
+    assert "\nLevel: equations." in raw
+    text = " ".join(raw.split())
+    assert "the model defines accelerations of its own, which KanesMethod derives from " \
+           "the velocities instead (spun.al:12: ALF_A_N> = DT(W_A_N>, N); " \
+           "spun.al:13: ALF_B_A> = DT(W_B_A>, N))" in text
+    # differentiated in A, the angular acceleration is sympy's, and so are the equations
+    path.write_text(path.read_text().replace("DT(W_B_A>, N)", "DT(W_B_A>, A)"))
+    assert "\nLevel: mechanics." in export_sympy(autolev.load(path), "spun.al")

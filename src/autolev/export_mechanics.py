@@ -372,7 +372,17 @@ def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Hando
         return ("its equations read " + ", ".join(rates) + ", the rates of specified "
                 "quantities, which the mechanics level does not write"), None
     why = _unlike_the_run(h, eqs)
-    return (why, None) if why else (None, h)
+    if why is None:
+        return None, h
+    statements = model.loaded.statements_at if model.loaded is not None else {}
+    defined = [at for (what, _), ats in statements.items() if what == "acceleration"
+               for at in ats]
+    if defined:
+        # MAE-223's bicycles: ALF_B_A> = DT(W_B_A>, N), a derivative in N, not in A
+        why += ("; the model defines accelerations of its own, which KanesMethod derives "
+                "from the velocities instead (" + "; ".join(defined[:3])
+                + ("; ..." if len(defined) > 3 else "") + ")")
+    return why, None
 
 
 def _unlike_the_run(h: Handoff, eqs: Equations) -> str | None:

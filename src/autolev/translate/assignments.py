@@ -31,11 +31,12 @@ def assignment(tr: Translator, st: ir.Assignment) -> None:
 
 # what an assignment to a reserved vector gives, and to which of its parts
 _GIVES = {"angvel": ("angular velocity", 0), "vel": ("velocity", 0), "force": ("load", 0),
-          "torque": ("load", 0)}
+          "torque": ("load", 0), "angacc": ("acceleration", 0), "acc": ("acceleration", 0)}
 
 
 def _note_mechanics(tr: Translator, target: ir.VectorName) -> None:
-    """W_B_N>, V_P_N>, P_A_B>, FORCE_P>, TORQUE_B> = ...: the statement that gives them."""
+    """W_B_N>, V_P_N>, P_A_B>, FORCE_P>, TORQUE_B>, ALF_B_N>, A_P_N> = ...: the statement
+    that gives them."""
     special = classify(tr, target)
     if special is None:
         return
