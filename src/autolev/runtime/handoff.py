@@ -62,13 +62,10 @@ class Handoff:
         time = me.dynamicsymbols._t
         zero = dict.fromkeys(self.auxiliary, 0)
         derivatives = {u.diff(time): 0 for u in self.auxiliary}
-        kane = me.KanesMethod(self.newtonian, q_ind=self.coordinates, u_ind=self.speeds,
-                              kd_eqs=self.kinematical_equations, u_dependent=self.dependent,
-                              velocity_constraints=[c.xreplace(derivatives).xreplace(zero)
-                                                    for c in self.velocity_constraints],
-                              constraint_solver=CONSTRAINT_SOLVER)
-        kane.kanes_equations(self.bodies, self.loads)
-        return kane
+        return kanes_method(self.newtonian, self.coordinates, self.speeds,
+                            self.kinematical_equations, self.dependent,
+                            [c.xreplace(derivatives).xreplace(zero)
+                             for c in self.velocity_constraints], [], self.bodies, self.loads)
 
     def dependent_speeds_at(self, values: dict) -> dict:
         """{dependent speed: its value} where the velocity constraints hold, at `values`
@@ -188,12 +185,10 @@ def handoff(model) -> Handoff:
     dependent = [mapping[u] for u in model.dependent_speeds]
     _linear_in_speeds(model.coordinates, kinematics, speeds + dependent)
     constraints = [to_sympy_expr(model.scene, e, mapping, keep)
-                   for equations, _ in model.dependent_constraints for e in equations]
+                   for e in model.dependent_constraints]
     auxiliary = [mapping[u] for u in model.auxiliary_speeds]
-    kane = me.KanesMethod(newtonian, q_ind=coordinates, u_ind=speeds, kd_eqs=kinematics,
-                          u_dependent=dependent, velocity_constraints=constraints,
-                          u_auxiliary=auxiliary, constraint_solver=CONSTRAINT_SOLVER)
-    kane.kanes_equations(bodies, loads)
+    kane = kanes_method(newtonian, coordinates, speeds, kinematics, dependent, constraints,
+                        auxiliary, bodies, loads)
     unknowns = [mapping[f] for f in model.kane_equations.unknowns] \
         if model.kane_equations is not None else []
     specified = [mapping[s] for s, info in model.info.items()
@@ -204,6 +199,18 @@ def handoff(model) -> Handoff:
     return Handoff(newtonian, frames, orientations, points, velocities, positions, bodies, loads,
                    coordinates, speeds, kinematics, kane, dependent, constraints, auxiliary,
                    unknowns, specified, constants, states)
+
+
+def kanes_method(newtonian, coordinates: list, speeds: list, kinematics: list,
+                 dependent: list, constraints: list, auxiliary: list, bodies: list,
+                 loads: list):
+    """sympy's KanesMethod of these, its equations formed."""
+    import sympy.physics.mechanics as me
+    kane = me.KanesMethod(newtonian, q_ind=coordinates, u_ind=speeds, kd_eqs=kinematics,
+                          u_dependent=dependent, velocity_constraints=constraints,
+                          u_auxiliary=auxiliary, constraint_solver=CONSTRAINT_SOLVER)
+    kane.kanes_equations(bodies, loads)
+    return kane
 
 
 def _linear_in_speeds(coordinates: list, kinematics: list, speeds: list) -> None:

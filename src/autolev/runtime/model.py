@@ -71,9 +71,8 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         # speeds whose derivatives SOLVE defined: still speeds, not coordinates
         self.solved_speeds: set[sm.Symbol] = set()
         self.auxiliary_speeds: list[sm.Symbol] = []
-        # each CONSTRAIN's equations (each = 0) as given, and the speeds it solved them for
-        self.dependent_constraints: list[tuple[list, list]] = []
-        self.auxiliary_constraints: list[tuple[list, list]] = []
+        # the equations (each = 0) CONSTRAIN(DEPENDENT[...]) solved, as given
+        self.dependent_constraints: list = []
         self.kane_equations: KaneEquations | None = None
         self._formed: tuple[int, KaneEquations] | None = None
         self.settings: dict[str, object] = {}
@@ -525,16 +524,14 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
     def constrain(self, equations, dependent) -> None:
         """CONSTRAIN(DEPENDENT[u...]): solve the motion constraints (= 0) for the listed
         speeds, which are then defined in terms of the others."""
-        self.dependent_constraints.append((self._solve_speeds(equations, dependent,
-                                                              "DEPENDENT"), list(dependent)))
+        self.dependent_constraints += self._solve_speeds(equations, dependent, "DEPENDENT")
         self.dependent_speeds.extend(s for s in dependent if s not in self.dependent_speeds)
         self.note_change()
 
     def constrain_auxiliary(self, equations, auxiliary) -> None:
         """CONSTRAIN(AUXILIARY[u...]): the listed speeds bring noncontributing forces into
         evidence; they are solved from their constraints (zero in simulation)."""
-        self.auxiliary_constraints.append((self._solve_speeds(equations, auxiliary,
-                                                              "AUXILIARY"), list(auxiliary)))
+        self._solve_speeds(equations, auxiliary, "AUXILIARY")
         self.auxiliary_speeds.extend(s for s in auxiliary if s not in self.auxiliary_speeds)
         self.note_change()
 

@@ -29,9 +29,9 @@ def assignment(tr: Translator, st: ir.Assignment) -> None:
     # an earlier element of a run is written with the run's last statement
 
 
-# what an assignment to a reserved vector gives, and to which of its parts
-_GIVES = {"angvel": ("angular velocity", 0), "vel": ("velocity", 0), "force": ("load", 0),
-          "torque": ("load", 0), "angacc": ("acceleration", 0), "acc": ("acceleration", 0)}
+# what an assignment to a reserved vector gives its first part
+_GIVES = {"angvel": "angular velocity", "vel": "velocity", "force": "load", "torque": "load",
+          "angacc": "acceleration", "acc": "acceleration"}
 
 
 def _note_mechanics(tr: Translator, target: ir.VectorName) -> None:
@@ -43,8 +43,7 @@ def _note_mechanics(tr: Translator, target: ir.VectorName) -> None:
     if special.kind == "pos":
         tr.note_statement("position", "/".join(tr.autolev_name(e) for e in special.parts))
     elif special.kind in _GIVES:
-        what, part = _GIVES[special.kind]
-        tr.note_statement(what, tr.autolev_name(special.parts[part]))
+        tr.note_statement(_GIVES[special.kind], tr.autolev_name(special.parts[0]))
 
 
 def _column_runs(tr: Translator) -> dict[int, list[ir.Assignment]]:
