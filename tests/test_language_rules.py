@@ -557,3 +557,92 @@ def test_matrices_of_one_size_still_add():
     assert namespace["E"] == sm.Matrix([[a1 + b1]])
     assert sm.expand(namespace["F"] - sm.Matrix([[2 * a1 - b1, 2 * b1 - a1]])) == \
         sm.zeros(1, 2)
+
+
+# -- 12. a run solves SOLVE's accelerations by LU ---------------------------------------------
+def _chain(links: int) -> str:
+    """A planar chain of uniform rods, joint angles relative, SOLVE(ZERO, U1', ...)."""
+    names = "ABCDEFGH"[:links]
+    k = range(1, links + 1)
+    lines = ["NEWTONIAN N", f"BODIES {', '.join(names)}", f"POINTS P{{{links - 1}}}",
+             f"MOTIONVARIABLES' Q{{{links}}}', U{{{links}}}'",
+             f"CONSTANTS L{{{links}}}, M{{{links}}}, G"]
+    lines += [f"MASS {b} = M{i}" for b, i in zip(names, k)]
+    lines += [f"INERTIA {b}, 0, 0, M{i}*L{i}^2/12" for b, i in zip(names, k)]
+    lines += [f"SIMPROT({p}, {b}, 3, Q{i})" for p, b, i in zip("N" + names, names, k)]
+    lines += [f"Q{i}' = U{i}" for i in k]
+    lines += [f"W_{b}_{p}> = U{i}*N3>" for p, b, i in zip("N" + names, names, k)]
+    joints = ["NO"] + [f"P{i}" for i in k]
+    for b, i in zip(names, k):
+        lines += [f"P_{joints[i - 1]}_{b}O> = L{i}/2*{b}1>",
+                  f"V2PTS(N, {b}, {joints[i - 1]}, {b}O)"]
+        if i < links:
+            lines += [f"P_{joints[i - 1]}_{joints[i]}> = L{i}*{b}1>",
+                      f"V2PTS(N, {b}, {joints[i - 1]}, {joints[i]})"]
+    rates = ", ".join(f"U{i}'" for i in k)
+    lines += ["GRAVITY(G*N1>)", "ZERO = FR() + FRSTAR()", "KANE()", f"SOLVE(ZERO, {rates})",
+              "INPUT " + ", ".join([f"L{i}=1, M{i}=1" for i in k] + ["G=9.81"]),
+              "OUTPUT Q1", "CODE DYNAMICS() chain.c"]
+    return "\n".join(lines) + "\n"
+
+
+def _chain_by_sympy(links: int):
+    """The chain's mass matrix and forcing by sympy.physics.mechanics (an independent
+    derivation), as a function of (q, u, L, M, G) evaluated with mpmath."""
+    import sympy.physics.mechanics as me
+    q, u = me.dynamicsymbols(f"q1:{links + 1}"), me.dynamicsymbols(f"u1:{links + 1}")
+    lengths, masses = sm.symbols(f"l1:{links + 1}"), sm.symbols(f"m1:{links + 1}")
+    g = sm.Symbol("g")
+    newtonian = frame = me.ReferenceFrame("N")
+    joint = me.Point("O")
+    joint.set_vel(newtonian, 0)
+    bodies = []
+    for i in range(links):
+        link = me.ReferenceFrame(f"F{i}")
+        link.orient_axis(frame, frame.z, q[i])
+        link.set_ang_vel(frame, u[i] * frame.z)
+        centre = joint.locatenew(f"C{i}", lengths[i] / 2 * link.x)
+        centre.v2pt_theory(joint, newtonian, link)
+        inertia = me.inertia(link, 0, 0, masses[i] * lengths[i]**2 / 12)
+        bodies.append(me.RigidBody(f"B{i}", centre, link, masses[i], (inertia, centre)))
+        following = joint.locatenew(f"J{i}", lengths[i] * link.x)
+        following.v2pt_theory(joint, newtonian, link)
+        joint, frame = following, link
+    kane = me.KanesMethod(newtonian, q, u, kd_eqs=[a.diff() - b for a, b in zip(q, u)])
+    kane.kanes_equations(bodies, [(b.masscenter, b.mass * g * newtonian.x) for b in bodies])
+    return sm.lambdify([*q, *u, *lengths, *masses, g], [kane.mass_matrix, kane.forcing],
+                       "mpmath")
+
+
+def test_solves_accelerations_as_accurately_as_the_mass_matrix_allows(tmp_path):
+    # a straight chain whose last rod carries nearly all the mass: its mass matrix is
+    # close to rank one, and SOLVE's closed form (a ratio of determinants, Autolev's
+    # answer) cancels; the run solves SOLVE's equations by LU, whose error is bounded
+    # by the condition number times the rounding unit
+    import mpmath
+    from autolev.runtime.numerics.prepare import prepare_command
+    links = 4
+    model = load(tmp_path, _chain(links), "chain.al")
+    system = prepare_command(model, model.code_commands[0]).system
+    by_sympy = _chain_by_sympy(links)
+    lengths, masses = [1.0] * links, [1e-6, 1e-4, 1e-2, 1.0]
+    values = {f"L{i + 1}": v for i, v in enumerate(lengths)}
+    values.update({f"M{i + 1}": v for i, v in enumerate(masses)}, G=9.81)
+    system.set_parameters(np.array([values[str(p)] for p in system.params]))
+    where = {str(x): k for k, x in enumerate(system.states)}
+    rng = np.random.default_rng(4)
+    mpmath.mp.dps = 50
+    for _ in range(5):
+        q = rng.uniform(-1, 1, links) * np.array([1] + [0.05] * (links - 1))
+        u = rng.uniform(-1, 1, links)
+        state = np.zeros(2 * links)
+        for i in range(links):
+            state[where[f"Q{i + 1}"]], state[where[f"U{i + 1}"]] = q[i], u[i]
+        ours = system.derivatives(0.0, state)[[where[f"U{i + 1}"] for i in range(links)]]
+        mass, forcing = by_sympy(*map(mpmath.mpf, [*q, *u, *lengths, *masses, 9.81]))
+        exact = np.array(mpmath.lu_solve(mpmath.matrix(mass), mpmath.matrix(forcing)),
+                         dtype=float).ravel()
+        condition = np.linalg.cond(np.array(mass.tolist(), dtype=float))
+        assert condition > 1e4                  # the case that matters
+        error = np.abs(ours - exact).max() / np.abs(exact).max()
+        assert error < 2 * condition * np.finfo(float).eps, (error, condition)

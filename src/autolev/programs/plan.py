@@ -263,7 +263,7 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     defs = model.defs
     filename = program_file_name(command.filename)
     with defs.as_of(command.definitions):
-        system = NumericSystem(model, files, encoded, integrate=True, ode=ode,
+        system = NumericSystem(model, files, encoded, integrate=True, solving=ode,
                                zero=command.zero if command.kind is CodeKind.DYNAMICS else None,
                                compile_functions=False)
         if not system.nstate:

@@ -2,6 +2,8 @@
 Model): EVALUATE, COEF, EXCLUDE, INCLUDE, TAYLOR, SOLVE, ZEE, INV, DET, NICHECK."""
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import sympy as sm
 
 from . import symbols as S
@@ -10,6 +12,16 @@ from .linalg import coefficients, solve_linear
 from .errors import AutolevModelError
 from .frame import body_fixed, rodrigues, space_fixed
 from .vector import Dyadic, Vector
+
+
+@dataclass(frozen=True)
+class SolvedRates:
+    """A SOLVE that defined generalized speeds' derivatives (SOLVE(ZERO, U4', U6')): the
+    derivatives, the equations (each = 0) it solved for them, and their definitions."""
+
+    unknowns: tuple
+    equations: tuple
+    solution: tuple
 
 
 class AlgebraMixin:
@@ -159,6 +171,9 @@ class AlgebraMixin:
         self._keep_speeds(unknowns)
         for u, v in zip(unknowns, solution):
             self.define(u, v)
+        if all(S.base_and_order(u) in {(b, 1) for b in self.solved_speeds} for u in unknowns):
+            self.solved_rates.append(SolvedRates(
+                tuple(unknowns), tuple(eqs), tuple(self.defs.rhs.get(u) for u in unknowns)))
 
     def _keep_speeds(self, unknowns) -> None:
         """A generalized speed u stays one when SOLVE defines u' (SOLVE(ZERO, U')), although

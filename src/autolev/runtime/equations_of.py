@@ -40,7 +40,7 @@ def equations_of(model, command, values: bool = True, infile=None,
     file `infile`, then `overrides` in the quantities' units); without `values`, the
     equations alone (no constant needs a value; constants, initial values and
     integration are left empty)."""
-    from .numerics.command import equations_and_unknowns, output_columns
+    from .numerics.command import equations_and_unknowns, output_columns, program_of
     from .numerics.files import safe_stem
     from .numerics.options import RunOptions
     from .numerics.prepare import InputsWanted, numeric_system, take_inputs
@@ -55,7 +55,7 @@ def equations_of(model, command, values: bool = True, infile=None,
     options = RunOptions()
     ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], infile,
                        overrides, None, None, options.missing_values, None)
-    with model.defs.as_of(command.definitions):
+    with model.defs.as_of(program_of(model, command).definitions):
         inputs = take_inputs(ask, system)[0] if values else None
         n = len(system.implicit_unknowns)
         rows, nstate = system.rhs_exprs, system.nstate

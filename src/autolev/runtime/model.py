@@ -70,6 +70,8 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         self.dependent_speeds: list[sm.Symbol] = []
         # speeds whose derivatives SOLVE defined: still speeds, not coordinates
         self.solved_speeds: set[sm.Symbol] = set()
+        # the SOLVEs that defined them, in order (a run solves their equations by LU)
+        self.solved_rates: list = []
         self.auxiliary_speeds: list[sm.Symbol] = []
         # the equations (each = 0) CONSTRAIN(DEPENDENT[...]) solved, as given
         self.dependent_constraints: list = []

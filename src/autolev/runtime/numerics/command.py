@@ -130,6 +130,51 @@ def take_time(command, inputs, dependent: list[str]) -> None:
                       "reads its variables: T = 0 (give it with --set T=VALUE)", stacklevel=6)
 
 
+def program_of(model, command):
+    """The command as its numeric system is built: where SOLVE defined the independent
+    speeds' derivatives (SOLVE(ZERO, U4', U6', U7')), a copy in which they are undefined,
+    their SOLVE's equations being solved at every evaluation instead (`solved_by_lu`).
+    Other commands are themselves."""
+    return _solved_numerically(model, command)[0]
+
+
+def solved_by_lu(model, command) -> tuple | None:
+    """(equations, unknowns) of the SOLVE that defined the independent speeds'
+    derivatives for `command` (a CODE DYNAMICS), which its run solves by LU with
+    partial pivoting at every evaluation: SOLVE's accelerations, without the
+    cancellations of its closed form, a ratio of determinants (which lost 7 digits at a
+    swing bike's state where LU loses 4).  None when the run uses the definitions."""
+    return _solved_numerically(model, command)[1]
+
+
+def _solved_numerically(model, command) -> tuple:
+    """(program_of, solved_by_lu), once per command and revision of the model."""
+    if command.kind is not CodeKind.DYNAMICS or not model.solved_rates \
+            or model.newtonian_frame is None:
+        return command, None
+    kept = model.derived.table("programs solving SOLVE's equations numerically")
+    entry = kept.get(id(command))
+    if entry is not None and entry[0] is command:
+        return entry[1]
+    found = command, None
+    with model.defs.as_of(command.definitions):
+        rhs = model.defs.rhs
+        in_effect = [r for r in model.solved_rates
+                     if all(rhs.get(u) is v for u, v in zip(r.unknowns, r.solution))]
+        if in_effect:
+            wanted = {S.derivative(u) for u in model.generalized_speeds()[0]}
+            solves = [r for r in in_effect if set(r.unknowns) == wanted]
+            if solves:
+                solve = solves[-1]
+                definitions = (model.defs.user_definitions() if command.definitions is None
+                               else command.definitions)
+                found = (replace(command, definitions={s: e for s, e in definitions.items()
+                                                       if s not in wanted}),
+                         (list(solve.equations), list(solve.unknowns)))
+    kept[id(command)] = (command, found)
+    return found
+
+
 def given_specified(model, command, specified, overrides):
     """`command` as if the model had defined, before it, the SPECIFIED quantities it
     leaves undefined and that are given a value -- a number or a sympy expression in

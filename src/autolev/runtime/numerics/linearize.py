@@ -34,7 +34,7 @@ from . import codegen
 from .inputs import display_name
 from .projection import Projector
 from .results import mat_file
-from .command import given_specified
+from .command import given_specified, program_of, solved_by_lu
 from .options import RunOptions
 from ..steps import SlowStep
 from .prepare import prepare_command, to_be_kept
@@ -193,7 +193,7 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
         tier, step = "auto", (f"compiling the Jacobians (a sweep of "
                               f"{jacobians.evaluations} points so far)")
     if tier is not None:
-        with model.defs.as_of(command.definitions), SlowStep(
+        with model.defs.as_of(program_of(model, command).definitions), SlowStep(
                 progress, f"CODE DYNAMICS {command.filename}: {step}"):
             jacobians = system.jacobians[key] = _jacobian_functions(system, chosen,
                                                                     n_columns, tier)
@@ -254,8 +254,10 @@ def linearize_symbolic(model, command, point=None, inputs=None, locked=None,
         if sym is None:
             raise AutolevModelError(f"point: the model has no quantity named {name!r}")
         values[sym] = sm.nsimplify(value) if isinstance(value, int) else value
-    with model.defs.as_of(command.definitions):
-        system = NumericSystem(model, backend="python", zero=command.zero, locked=held)
+    program = program_of(model, command)
+    with model.defs.as_of(program.definitions):
+        system = NumericSystem(model, backend="python", zero=command.zero, locked=held,
+                               solving=solved_by_lu(model, command))
         if system.nstate > max_states:
             raise AutolevModelError(
                 f"{system.nstate} states: symbolic A and B are for models of at most "
@@ -337,7 +339,7 @@ def _program_to_linearize(model, command, locked) -> tuple:
         raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
                                 "CODE DYNAMICS program has equations of motion to linearize")
     held = _locked_coordinates(model, locked or ())
-    return (_with_kanes_equations(model, command) if held else command), held
+    return (_with_kanes_equations(model, program_of(model, command)) if held else command), held
 
 
 def _locked_coordinates(model, names) -> list:

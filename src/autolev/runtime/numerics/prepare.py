@@ -17,8 +17,8 @@ from ..steps import SlowStep
 from .advice import inertia_problems
 from .command import (encoded_values, equations_and_unknowns, find_symbol, given_specified,
                       hidden_in_outputs, names_a_quantity, output_columns, program_file_name,
-                      solution_columns, solver_expressions, sweep_values, take_time,
-                      time_dependence)
+                      program_of, solution_columns, solved_by_lu, solver_expressions,
+                      sweep_values, take_time, time_dependence)
 from .files import safe_stem
 from .inputs import INTEGRATION, Inputs, display_name, some_names
 from .projection import constants_needed
@@ -158,7 +158,7 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
         system = numeric_system(model, command, files, encoded, (equations, unknowns),
                                 options.backend, options.quirks, locked)
     fresh = not system.compiled
-    with model.defs.as_of(command.definitions):
+    with model.defs.as_of(program_of(model, command).definitions):
         inputs, kinds, names, extra_constants = take_inputs(ask, system)
         if fresh:                    # inputs first: a refusal costs no compilation
             with SlowStep(options.progress, f"{what}: generating and compiling its code"):
@@ -192,10 +192,12 @@ def numeric_system(model, command, files, encoded, solving: tuple, backend: str,
         _system_key(model, command, backend, quirks, locked))
     if entry is not None and entry[0] is command:
         return entry[1]
-    with model.defs.as_of(command.definitions):
+    program = program_of(model, command)
+    with model.defs.as_of(program.definitions):
         return NumericSystem(
             model, files, encoded, backend=backend, integrate=kind.integrates,
-            ode=(equations, unknowns) if kind is CodeKind.ODE else None,
+            solving=((equations, unknowns) if kind is CodeKind.ODE
+                     else solved_by_lu(model, command)),
             solved=unknowns if kind.solves else (),
             extra=solver_expressions(model.defs, kind, equations, unknowns),
             zero=command.zero if kind is CodeKind.DYNAMICS else None,

@@ -61,9 +61,10 @@ class NumericSystem:
 
     `outputs`: a list of files, each a list of Column; `encoded`: (name, value) pairs.
     `integrate=False` (ALGEBRAIC/NONLINEAR programs) builds no right-hand side; every
-    variable is an input then.  `ode=(equations, unknowns)` is a CODE ODE's: with
-    equations (CODE ODE(EQ, x'', ...)) it integrates by solving them for the unknown
-    derivatives at each step, in place of Kane's equations; without (CODE ODE()) it
+    variable is an input then.  `solving=(equations, unknowns)`: equations solved for
+    the unknown derivatives at each evaluation, in place of Kane's equations: a CODE
+    ODE's (CODE ODE(EQ, x'', ...)), or those of a SOLVE that defined the speeds'
+    derivatives (command.solved_by_lu); with no equations (CODE ODE()) it
     integrates the model's explicit differential equations alone, forming nothing
     else, and a declared derivative without a definition is a constant input.
     `locked`: coordinates held where they are (a rigid joint): each must have Q' = U
@@ -76,13 +77,13 @@ class NumericSystem:
     a run that checks its inputs before anything is compiled, then calls `compile()`."""
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
-                 integrate: bool = True, ode=None, solved=(), extra=None,
+                 integrate: bool = True, solving=None, solved=(), extra=None,
                  zero=None, hidden_in_outputs=(), locked=(), compile_functions: bool = True):
         self.model = model
         self._zero = zero
         self.backend = backend
         self._fix_speeds(locked)
-        rates, unknowns, dyn = (self._integrated(ode) if integrate else ({}, [], []))
+        rates, unknowns, dyn = (self._integrated(solving) if integrate else ({}, [], []))
         self.states = alphabetical(rates)
         self.nstate = len(self.states)
         self.implicit_unknowns = unknowns          # derivatives solved from M a = f
@@ -238,17 +239,17 @@ class NumericSystem:
         self._bind_loop()
 
     # -- structure ------------------------------------------------------------------------
-    def _integrated(self, ode) -> tuple[dict, list, list]:
+    def _integrated(self, solving) -> tuple[dict, list, list]:
         """({X: rate} for every integrated X, [derivatives solved from M a = f],
         [M entries row by row, then f]).  A rate is X's definition, or the symbol X'
         when X' is itself integrated or solved for, or (CODE ODE()) a constant input."""
         m = self.model
         defs = m.defs
-        explicit_only = ode is not None and not ode[0]
+        explicit_only = solving is not None and not solving[0]
         if explicit_only:
             unknowns, dyn = [], []
-        elif ode is not None:
-            equations, unknowns = ode
+        elif solving is not None:
+            equations, unknowns = solving
             unknowns = list(unknowns)
             eqs = [sm.sympify(e) for e in equations]
             if len(eqs) != len(unknowns):
