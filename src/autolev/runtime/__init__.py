@@ -2,19 +2,39 @@
 
     import autolev.runtime as al
     model = al.Model("pendulum")
+
+The names are imported when first used (PEP 562): a warm run from its run plan reads
+modules of this package (the integration loop, the output files) without sympy.
 """
-from .errors import AutolevModelError, MissingValues
-from .frame import Frame
-from .kane import KaneEquations
-from .model import Model
-from .point import Body, Particle, Point
-from .symbols import TIME, Z, derivative, derivatives
-from .vector import Dyadic, Vector, outer
+from __future__ import annotations
 
-__all__ = ["Model", "KaneEquations", "Frame", "Vector", "Dyadic", "Point", "Particle",
-           "Body", "AutolevModelError", "MissingValues", "TIME", "Z", "derivative", "derivatives",
-           "outer"]
-from .functions import *  # noqa: E402,F401,F403  (Autolev's functions: al.dot, al.express, ...)
-from .functions import __all__ as _functions_all  # noqa: E402
+import importlib
 
-__all__ += _functions_all
+_NAMED = {"AutolevModelError": ".errors", "MissingValues": ".errors", "Frame": ".frame",
+          "KaneEquations": ".kane", "Model": ".model", "Body": ".point",
+          "Particle": ".point", "Point": ".point", "TIME": ".symbols", "Z": ".symbols",
+          "derivative": ".symbols", "derivatives": ".symbols", "Dyadic": ".vector",
+          "Vector": ".vector", "outer": ".vector"}
+
+
+def __getattr__(name: str):
+    """A name of the runtime: one of _NAMED, else one of Autolev's functions
+    (al.dot, al.express, ...)."""
+    if name == "__all__":
+        return list(_NAMED) + importlib.import_module(".functions", __name__).__all__
+    if name.startswith("__"):
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    if name in _NAMED:
+        module = importlib.import_module(_NAMED[name], __name__)
+    else:
+        module = importlib.import_module(".functions", __name__)
+        if name not in module.__all__:
+            raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(module, name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_NAMED)
+                  | set(importlib.import_module(".functions", __name__).__all__))

@@ -3,43 +3,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from enum import Enum
 
 import sympy as sm
 
+from .code_kinds import INTEGRATION_PARAMETERS, CodeKind
 from .errors import AutolevModelError
 from .functions import degrees_to_radians
 from .units import is_degrees
-
-INTEGRATION_PARAMETERS = ("TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR")
-
-
-class CodeKind(str, Enum):
-    """The kind of program a CODE command names; a str, so "dynamics" is DYNAMICS."""
-
-    DYNAMICS = "dynamics"
-    ALGEBRAIC = "algebraic"
-    NONLINEAR = "nonlinear"
-    ODE = "ode"
-
-    def __str__(self) -> str:      # "dynamics" in messages, on every Python version
-        return self.value
-
-    @property
-    def integrates(self) -> bool:
-        """Whether its program integrates differential equations over time."""
-        return self in (CodeKind.DYNAMICS, CodeKind.ODE)
-
-    @property
-    def solves(self) -> bool:
-        """Whether its program solves equations for unknowns (ALGEBRAIC, NONLINEAR)."""
-        return not self.integrates
-
-    @property
-    def from_guesses(self) -> bool:
-        """Whether its unknowns start from INPUT guesses (Newton's method)."""
-        return self is CodeKind.NONLINEAR
-
 
 class IOMixin:
     def input(self, target, value, unit: str | None = None) -> None:

@@ -1,11 +1,9 @@
-"""What a run that fails or struggles tells the user: masses and inertias no
-body has, constants that are 0, why Kutta-Merson halved its step too often,
-stiffness, tolerances too loose for a method.
+"""What a run that fails tells the user of its model: masses and inertias no body
+has, constants that are 0 (integration_notes.py says why the integrator struggled).
 """
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 import sympy as sm
@@ -15,6 +13,7 @@ from ..calculus import NumericPoint, is_real_number
 from ..errors import AutolevModelError
 from .inputs import display_name
 from .integrate import IntegrationFailure
+from .integration_notes import halving_verdict
 
 
 def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
@@ -119,45 +118,6 @@ def zero_hint(zero_params) -> str:
     return f" (constants that are 0: {shown})"
 
 
-def switch_when_stiff(t: float, hlamb: float) -> str:
-    # Radau, not LSODA: on the lightly damped stiff spring chain of
-    # bench/work_precision.py LSODA took 1.4 ms to 680 ms depending on the tolerance,
-    # Radau 5 to 133 ms at every tolerance
-    warnings.warn(f"the equations are stiff from T = {t:.6g} (step size times the largest "
-                  f"eigenvalue ~ {hlamb:.3g}, beyond DOP853's stability): going on with "
-                  "Radau (implicit); ask for --method radau from the start to avoid the "
-                  "switch", stacklevel=2)
-    return "radau"
-
-
-# RELERR at and above which a method is known to give qualitatively wrong motion
-# over long runs: the relative energy error of the conservative double pendulum over
-# 100 s (Q1 = 30 deg, Q2 = 60 deg; bench/work_precision.py) exceeds 1 % there --
-# RK23 1.5 % at 1e-4; RK45 8.8 %, LSODA 4.3 %, BDF 11 % at 1e-3 (steps not bounded
-# by INTEGSTP); Radau, DOP853 and Kutta-Merson stay below 0.1 % at 1e-3.
-LOOSE_RELERR = {"rk23": 1e-4, "rk45": 1e-3, "lsoda": 1e-3, "bdf": 1e-3, "radau": 1e-2,
-                "dop853": 1e-2, "kutta-merson": 1e-2}
-
-
-def loose_tolerance_note(method: str, relerr: float) -> None:
-    limit = LOOSE_RELERR.get(method)
-    if limit is not None and relerr >= limit:
-        warnings.warn(f"RELERR = {relerr:g} is loose for {method}: at RELERR >= {limit:g} it "
-                      "is known to give qualitatively wrong motion over long runs (a "
-                      "conservative double pendulum gains or loses over 1 % of its energy in "
-                      f"100 s); use RELERR <= {limit / 100:g}", stacklevel=4)
-
-
-def stiff_note(stats: dict, method: str) -> None:
-    t = stats.get("stiff_t")
-    if t is None or stats.get("switched_to"):
-        return
-    warnings.warn(f"the equations are stiff from T = {t:.6g}: {method}'s steps are limited "
-                  "by its stability, not by the error asked for (a slow run); an implicit "
-                  "method (--method lsoda or radau; method='lsoda') takes far fewer steps",
-                  stacklevel=3)
-
-
 def failure_message(exc: IntegrationFailure, system, inputs, result, zero_params,
                      integration: tuple) -> str:
     """Autolev's message for a failed integration, with what we can tell of its cause."""
@@ -179,51 +139,3 @@ def failure_message(exc: IntegrationFailure, system, inputs, result, zero_params
         f, sched, abserr, relerr = integration
         message += "; " + halving_verdict(f, exc, sched, abserr, relerr)
     return message
-
-
-# h*|lambda| where Kutta-Merson stops being stable on the negative real axis
-KM_STABILITY = 3.5
-
-
-def halving_verdict(f, failure, schedule, abserr: float, relerr: float) -> str:
-    """Why Kutta-Merson's step was halved too often: zero tolerances, or stiffness
-    (judged by the Jacobian's eigenvalues where it stopped), or neither."""
-    if abserr <= 0 and relerr <= 0:
-        return ("ABSERR and RELERR are both 0, which no step can satisfy: give them "
-                "values (e.g. ABSERR = 1E-8, RELERR = 1E-7)")
-    floor = abs(schedule.integstp) / 2 ** 20
-    rho = spectral_radius(f, failure.t, failure.y)
-    if rho is None:
-        return "the derivatives are not finite near that state"
-    if rho * floor > KM_STABILITY:
-        return (f"the equations are stiff there (the Jacobian's largest eigenvalue is "
-                f"about {rho:.3g} in size: Kutta-Merson needs steps below "
-                f"{KM_STABILITY / rho:.2g}, finer than the {floor:.2g} its 20 halvings of "
-                "INTEGSTP allow); an implicit method takes them in stride: --method radau "
-                "(method='radau')")
-    verdict = (f"the equations are not stiff there (the Jacobian's largest eigenvalue is "
-               f"about {rho:.3g} in size)")
-    if abserr <= 0:
-        return verdict + ("; ABSERR = 0 makes any state that is exactly 0 fail the error "
-                          "test: give ABSERR a small value (e.g. 1E-8)")
-    return verdict + ("; the derivatives may jump or grow without bound near that state, "
-                      "or ABSERR and RELERR are below what double precision can meet")
-
-
-def spectral_radius(f, t: float, y: np.ndarray) -> float | None:
-    """max |eigenvalue| of df/dy at (t, y), by forward differences; None where the
-    derivatives cannot be evaluated."""
-    try:
-        f0 = np.asarray(f(t, y), dtype=float)
-        columns = []
-        for j in range(len(y)):
-            step = 1.5e-8 * max(1.0, abs(y[j]))
-            moved = np.array(y, dtype=float)
-            moved[j] += step
-            columns.append((np.asarray(f(t, moved), dtype=float) - f0) / step)
-    except IntegrationFailure:
-        return None
-    jac = np.array(columns).T
-    if not np.all(np.isfinite(jac)):
-        return None
-    return float(np.max(np.abs(np.linalg.eigvals(jac)))) if len(y) else 0.0

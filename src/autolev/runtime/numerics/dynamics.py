@@ -11,9 +11,8 @@ import warnings
 import numpy as np
 
 from ..errors import AutolevModelError
-from .advice import failure_message, loose_tolerance_note, stiff_note, switch_when_stiff
 from .integrate import IntegrationFailure, Progress, Schedule, integrate
-from .projection import Projector, integrate_projected
+from .integration_notes import loose_tolerance_note, stiff_note, switch_when_stiff
 from .results import split_outputs, tables_of
 from .massmatrix import SingularMassMatrix, scaled_condition
 
@@ -146,6 +145,8 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         on_stiff = switch_when_stiff if method == "dop853" else None
         loose_tolerance_note(method.lower(), relerr)
         if constraints:
+            # projection works on the model's expressions: imported only when asked for
+            from .projection import Projector, integrate_projected
             projector = Projector(system, constraints, sched.tinitial, y0, extra_values)
             result.stats.update(integrate_projected(
                 f, y0, sched, method, abserr, relerr, on_row, bar, loop, on_stiff,
@@ -155,6 +156,7 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                                           bar, loop=loop, on_stiff=on_stiff))
         stiff_note(result.stats, method)
     except IntegrationFailure as exc:
+        from .advice import failure_message      # reads the model: only when it failed
         on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
         result.failure = failure_message(exc, system, inputs, result, zero_params,
                                           (f, sched, abserr, relerr))

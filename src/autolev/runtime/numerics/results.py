@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..io import CodeKind
+from ..code_kinds import CodeKind
 
 
 @dataclass
