@@ -53,8 +53,8 @@ def default_models(folder: Path) -> list[Path]:
 def measure(path: Path, flags: tuple, driver: CDriver) -> tuple:
     import autolev
     from autolev.runtime import MissingValues
-    from autolev.runtime.numerics import codegen
-    codegen.C_FLAGS = flags
+    from autolev.runtime.numerics import clibrary
+    clibrary.C_FLAGS = flags
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         model = autolev.load(path)

@@ -23,7 +23,7 @@ where the corpus has one, else INPUT values and 0 for the rest):
                        per state: the parts in constants alone lifted out and
                        evaluated once per parameter set, as our runs do
               Autolev  its program from the corpus, compiled with the same compiler and
-                       flags (codegen.C_FLAGS), its eqns1 called in a loop: C through a
+                       flags (clibrary.C_FLAGS), its eqns1 called in a loop: C through a
                        driver linked in its place of main, Fortran with a timing loop
                        put before its first integration step (gfortran)
               Both sides read the same values (the model's .in, or for a model
@@ -85,13 +85,13 @@ t0 = time.perf_counter()
 import autolev
 from autolev.loader import load_for_run
 from autolev.runtime.errors import AutolevModelError
-from autolev.runtime.numerics import codegen
+from autolev.runtime.numerics import clibrary, codegen
 from autolev.runtime.numerics.prepare import keep_built
 from autolev.runtime.numerics.options import RunOptions
 from autolev.runtime.numerics.run import run_command
 t1 = time.perf_counter()
 code = {"c": 0, "python": 0, "compile": 0.0}
-real_library, real_python = codegen.build_shared_library, codegen.compile_python
+real_library, real_python = clibrary.build_shared_library, codegen.compile_python
 def library(source, *a, **k):
     start = time.perf_counter()
     path = real_library(source, *a, **k)
@@ -102,7 +102,7 @@ def python(prog, name="compute"):
     made = real_python(prog, name)
     code["python"] += len(made[1])
     return made
-codegen.build_shared_library, codegen.compile_python = library, python
+clibrary.build_shared_library, codegen.compile_python = library, python
 warnings.simplefilter("ignore")
 model, notes = load_for_run(sys.argv[1])
 t2 = time.perf_counter()
@@ -187,7 +187,7 @@ sys.path.insert(0, sys.argv[3])
 warnings.simplefilter("ignore")
 import autolev, large_models, rhs_speed
 from autolev.loader import load_for_run
-from autolev.runtime.numerics import codegen
+from autolev.runtime.numerics import clibrary, codegen
 from autolev.runtime.numerics.options import RunOptions
 from autolev.runtime.numerics.prepare import prepare_command
 model, notes = load_for_run(sys.argv[1])
@@ -338,7 +338,7 @@ def _input_path(program: str) -> str | None:
 
 def autolev_per_eval(program: Path, infile, workdir: Path) -> dict | str:
     """Autolev's eqns1 timed; the compile time of its program too."""
-    from autolev.runtime.numerics import codegen
+    from autolev.runtime.numerics import clibrary
     text = program.read_text(errors="replace")
     where = _input_path(text)
     if where is None:
@@ -350,9 +350,9 @@ def autolev_per_eval(program: Path, infile, workdir: Path) -> dict | str:
         return f"no .in template ({template.name})"
     body = template.read_text(errors="replace")
     target.write_text(body if infile else filled_in_file(body))
-    flags = list(codegen.C_FLAGS)
+    flags = list(clibrary.C_FLAGS)
     if program.suffix == ".c":
-        compiler = codegen.compiler()
+        compiler = clibrary.compiler()
         (workdir / "driver.c").write_text(C_DRIVER)
         shutil.copy(program, workdir / "program.c")
         start = time.perf_counter()

@@ -104,8 +104,8 @@ class CDriver:
     """The timing loop above, compiled once into a temporary folder."""
 
     def __init__(self):
-        from autolev.runtime.numerics import codegen
-        cc = codegen.compiler()
+        from autolev.runtime.numerics import clibrary
+        cc = clibrary.compiler()
         if cc is None:
             raise RuntimeError("no C compiler: the C timings need one")
         self._tmp = tempfile.TemporaryDirectory(prefix="autolev-bench-")

@@ -6,10 +6,10 @@ import subprocess
 import pytest
 
 from autolev.runtime import diskcache
-from autolev.runtime.numerics import codegen
+from autolev.runtime.numerics import clibrary
 from helpers import EXAMPLES
 
-pytestmark = pytest.mark.skipif(codegen.compiler() is None, reason="needs a C compiler")
+pytestmark = pytest.mark.skipif(clibrary.compiler() is None, reason="needs a C compiler")
 
 
 @pytest.fixture
@@ -75,7 +75,7 @@ def _planted_library(path, marker):
     src = path.with_suffix(".c")
     src.write_text('#include <stdio.h>\n__attribute__((constructor)) static void hit(void)'
                    f' {{ FILE *f = fopen("{marker}", "w"); if (f) fclose(f); }}\n')
-    subprocess.run([codegen.compiler(), "-shared", "-fPIC", "-o", str(path), str(src)],
+    subprocess.run([clibrary.compiler(), "-shared", "-fPIC", "-o", str(path), str(src)],
                    check=True)
     src.unlink()
 
@@ -157,7 +157,7 @@ def test_a_second_user_cannot_make_our_runs_load_their_code(shared_tmp, monkeypa
     src = planted / "obj.c"
     src.write_text('#include <stdio.h>\n__attribute__((constructor)) static void hit(void)'
                    f' {{ FILE *f = fopen("{marker}", "w"); if (f) fclose(f); }}\n')
-    subprocess.run([codegen.compiler(), "-c", "-fPIC", "-o", str(planted / "obj.o"),
+    subprocess.run([clibrary.compiler(), "-c", "-fPIC", "-o", str(planted / "obj.o"),
                     str(src)], check=True)
     for kind in ("lib.so", "obj.o"):
         diskcache.install((planted / kind).read_bytes(), planted / ("x" + kind))

@@ -12,7 +12,7 @@ import sys
 import pytest
 
 import autolev
-from autolev import modelcache
+from autolev import cachekeys, modelcache
 from autolev.runtime import diskcache
 from helpers import EXAMPLES
 
@@ -22,7 +22,7 @@ def cache(tmp_path, monkeypatch):
     folder = tmp_path / "cache"
     monkeypatch.setenv("AUTOLEV_CACHE", str(folder))
     monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "config"))
-    monkeypatch.delenv(modelcache.DISABLE_VARIABLE, raising=False)
+    monkeypatch.delenv(cachekeys.DISABLE_VARIABLE, raising=False)
     return folder
 
 

@@ -504,9 +504,9 @@ def test_an_output_column_that_is_exactly_zero_is_passed_to_writef_as_a_double()
 
 def test_a_model_autolev_code_built_is_kept_in_the_cache_of_built_models(tmp_path,
                                                                          monkeypatch):
-    from autolev import modelcache
+    from autolev import cachekeys, modelcache
     monkeypatch.setenv("AUTOLEV_CACHE", str(tmp_path / "cache"))
-    monkeypatch.delenv(modelcache.DISABLE_VARIABLE, raising=False)
+    monkeypatch.delenv(cachekeys.DISABLE_VARIABLE, raising=False)
     path = tmp_path / "arm.al"
     path.write_text(ARM)
     assert main(["code", str(path), "--out", str(tmp_path / "out"), "-q"]) == 0

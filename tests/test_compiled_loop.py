@@ -7,10 +7,10 @@ import pytest
 
 import autolev
 from helpers import load_model
-from autolev.runtime.numerics import codegen
+from autolev.runtime.numerics import clibrary
 
 
-pytestmark = pytest.mark.skipif(codegen.compiler() is None, reason="needs a C compiler")
+pytestmark = pytest.mark.skipif(clibrary.compiler() is None, reason="needs a C compiler")
 
 
 load = load_model

@@ -19,7 +19,7 @@ def tiny(tmp_path):
 @pytest.fixture
 def broken_dot(monkeypatch):
     """A bug in the runtime: Vector.dot (which DOT calls) raises AttributeError."""
-    from autolev.runtime.vector import Vector
+    from autolev.runtime.vectors import Vector
 
     def dot(self, other):
         raise AttributeError("'Frame' object has no attribute 'bogus'")
@@ -43,7 +43,7 @@ def test_a_runtime_bug_is_an_internal_error_at_the_statement(tiny, broken_dot):
 
 
 def test_running_out_of_memory_is_neither_the_models_fault_nor_a_bug(tiny, monkeypatch):
-    from autolev.runtime.vector import Vector
+    from autolev.runtime.vectors import Vector
 
     def dot(self, other):
         raise MemoryError

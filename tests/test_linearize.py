@@ -472,7 +472,7 @@ def _jacobians_of(model):
 def test_one_linearization_waits_for_no_compiler_and_a_sweep_compiles_when_it_pays(
         tmp_path, monkeypatch):
     # BICYCLE14: one linearization spent 4 minutes in gcc on 11 MB of C, evaluated once
-    from autolev.runtime.numerics import codegen, linearize as linearize_module
+    from autolev.runtime.numerics import clibrary, linearize as linearize_module
     path = tmp_path / "pendulum.al"
     path.write_text(PENDULUM)
     model = autolev.load(path)
@@ -485,7 +485,7 @@ def test_one_linearization_waits_for_no_compiler_and_a_sweep_compiles_when_it_pa
     for _ in range(3):                           # compiling does not pay yet
         model.linearize({"Q": q})
     assert _jacobians_of(model) is jacobians and jacobians.evaluations == 4
-    if codegen.compiler() is None:
+    if clibrary.compiler() is None:
         pytest.skip("no C compiler: the Jacobians stay Python (tested above)")
     # the evaluations have cost what compiling is predicted to: the next one compiles
     monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE", 0.0)

@@ -1,14 +1,17 @@
 """The cache of built models: an unchanged model is read back, not built again, and
 gives the same rows; anything changed, damaged or turned off builds it afresh."""
+import math
 import os
 import subprocess
 import sys
 import warnings
 
+import numpy as np
+
 import pytest
 
 import autolev
-from autolev import loader, modelcache, pipeline
+from autolev import cachekeys, loader, modelcache, pipeline
 from autolev.cli import main
 from autolev.runtime import diskcache
 from autolev.runtime.model import Model
@@ -22,7 +25,7 @@ def cache(tmp_path, monkeypatch):
     """A fresh cache folder, with built models kept."""
     folder = tmp_path / "cache"
     monkeypatch.setenv("AUTOLEV_CACHE", str(folder))
-    monkeypatch.delenv(modelcache.DISABLE_VARIABLE, raising=False)
+    monkeypatch.delenv(cachekeys.DISABLE_VARIABLE, raising=False)
     return folder
 
 
@@ -30,7 +33,7 @@ def models_in(folder):
     return sorted(p.name for p in folder.glob(modelcache.PREFIX + "*.pickle"))
 
 
-def run_in_a_new_process(model, out, env, refuse_building=False):
+def run_in_a_new_process(model, out, env, refuse_building=False, options=()):
     """`autolev run` in a fresh Python (no state shared with the building process);
     with refuse_building, building the model (executing its module) or its numeric
     system (generating its code) is an error."""
@@ -40,7 +43,8 @@ def run_in_a_new_process(model, out, env, refuse_building=False):
                "loader._execute = refuse\nNumericSystem.__init__ = refuse\n"
                if refuse_building else "")
             + "from autolev.cli import main\n"
-            f"sys.exit(main(['run', {str(model)!r}, '--out', {str(out)!r}, '-q']))\n")
+            f"sys.exit(main(['run', {str(model)!r}, '--out', {str(out)!r}, '-q', "
+            f"*{list(options)!r}]))\n")
     return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
                           text=True, timeout=300)
 
@@ -50,7 +54,9 @@ def test_a_model_read_back_gives_the_rows_of_one_built_afresh(cache, tmp_path):
     cold = run_in_a_new_process(PENDULUM, tmp_path / "cold", env)
     assert cold.returncode == 0, cold.stderr
     assert len(models_in(cache)) == 1
-    warm = run_in_a_new_process(PENDULUM, tmp_path / "warm", env, refuse_building=True)
+    # an option a run plan does not repeat: the model is read back
+    warm = run_in_a_new_process(PENDULUM, tmp_path / "warm", env, refuse_building=True,
+                                options=["--method", "kutta-merson"])
     assert warm.returncode == 0, warm.stderr
     files = sorted(p.name for p in (tmp_path / "cold").iterdir())
     assert files and files == sorted(p.name for p in (tmp_path / "warm").iterdir())
@@ -82,7 +88,7 @@ def test_a_damaged_entry_is_built_again(cache, tmp_path, monkeypatch):
 
 
 def test_turned_off_nothing_is_kept(cache, tmp_path, monkeypatch):
-    monkeypatch.setenv(modelcache.DISABLE_VARIABLE, "1")
+    monkeypatch.setenv(cachekeys.DISABLE_VARIABLE, "1")
     model = tmp_path / "m.al"
     model.write_text("CONSTANTS A\nX = A^2\n")
     autolev.load(model)
@@ -280,3 +286,113 @@ def test_a_cold_run_writes_its_entry_once_with_every_program(cache, tmp_path, mo
                                 refuse_building=True)
     assert warm.returncode == 0, warm.stderr
     assert {p.name for p in (tmp_path / "warm").iterdir()} >= {"swing.1", "energy.1"}
+
+
+# -- run plans: a plain warm run without the model --------------------------------------
+PUSHED = """
+NEWTONIAN N
+FRAMES A
+PARTICLES P
+MOTIONVARIABLES' Q', U'
+CONSTANTS L, M, G
+SPECIFIED TQ
+SIMPROT(N, A, 3, Q)
+Q' = U
+W_A_N> = U*A3>
+P_NO_P> = L*A1>
+V_P_N> = L*U*A2>
+MASS P = M
+GRAVITY(G*N1>)
+TORQUE(A, TQ*A3>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT L=2, M=3, G=9.81, Q=30 DEG, U=0, TFINAL=2, INTEGSTP=0.05
+OUTPUT Q, U
+CODE DYNAMICS() pushed.c
+"""
+
+
+def run_cli(args, env) -> subprocess.CompletedProcess:
+    code = (f"import sys\nfrom autolev.cli import main\nstatus = main({list(args)!r})\n"
+            "print('imported:', sorted(m for m in ('sympy', 'scipy') if m in sys.modules))\n"
+            "sys.exit(status)\n")
+    return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                          text=True, timeout=300)
+
+
+def test_a_plain_run_repeats_from_its_plan_the_same_files_and_messages(cache, tmp_path):
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED)
+    env = dict(os.environ)
+    first = run_cli(["run", str(model), "--out", str(tmp_path / "first")], env)
+    assert first.returncode == 0, first.stderr
+    assert "its run plan" not in first.stdout and "'sympy'" in first.stdout
+    again = run_cli(["run", str(model), "--out", str(tmp_path / "again")], env)
+    assert again.returncode == 0, again.stderr
+    assert "built in 0.0 s (its run plan)" in again.stdout
+    # neither the model nor sympy: the plan's numbers and compiled code alone
+    assert "imported: []" in again.stdout
+    # the warning of the first run (TQ is 0) said again; not its progress (compiling)
+    warned = [line for line in first.stderr.splitlines() if "warning" in line]
+    assert "set to 0: TQ" in warned[0] and again.stderr.splitlines() == warned
+    names = sorted(p.name for p in (tmp_path / "first").iterdir())
+    assert names == ["pushed.1", "pushed.dir", "pushed.in"]
+    assert names == sorted(p.name for p in (tmp_path / "again").iterdir())
+    for name in names:
+        assert (tmp_path / "first" / name).read_bytes() == \
+            (tmp_path / "again" / name).read_bytes(), name
+    rows = np.loadtxt(tmp_path / "again" / "pushed.1", comments="%")
+    assert rows.shape == (41, 2) and abs(rows[0, 0] - math.radians(30)) < 1e-6
+
+
+def test_a_plan_is_the_runs_with_its_options_and_model(cache, tmp_path):
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED)
+    env = dict(os.environ)
+    assert run_cli(["run", str(model), "--out", str(tmp_path / "a")], env).returncode == 0
+    for out in ("b", "c"):              # other values: their own plan, then repeated
+        other = run_cli(["run", str(model), "--out", str(tmp_path / out), "--set", "Q=10"],
+                        env)
+        assert other.returncode == 0 and ("its run plan" in other.stdout) == (out == "c")
+        assert abs(np.loadtxt(tmp_path / out / "pushed.1", comments="%")[0, 0]
+                   - math.radians(10)) < 1e-6
+    model.write_text(PUSHED.replace("Q=30 DEG", "Q=20 DEG"))
+    changed = run_cli(["run", str(model), "--out", str(tmp_path / "d")], env)
+    assert changed.returncode == 0 and "its run plan" not in changed.stdout
+    assert abs(np.loadtxt(tmp_path / "d" / "pushed.1", comments="%")[0, 0]
+               - math.radians(20)) < 1e-6
+
+
+def test_a_plan_is_not_used_when_a_file_the_model_reads_changes(cache, tmp_path):
+    (tmp_path / "values.al").write_text("INPUT L=2, M=3, G=9.81, Q=30 DEG, U=0\n")
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED.replace("INPUT L=2, M=3, G=9.81, Q=30 DEG, U=0,",
+                                    "RUN values.al\nINPUT"))
+    env = dict(os.environ)
+    assert run_cli(["run", str(model), "--out", str(tmp_path / "a")], env).returncode == 0
+    planned = run_cli(["run", str(model), "--out", str(tmp_path / "b")], env)
+    assert "its run plan" in planned.stdout
+    (tmp_path / "values.al").write_text("INPUT L=2, M=3, G=9.81, Q=45 DEG, U=0\n")
+    changed = run_cli(["run", str(model), "--out", str(tmp_path / "c")], env)
+    assert changed.returncode == 0 and "its run plan" not in changed.stdout
+    assert abs(np.loadtxt(tmp_path / "c" / "pushed.1", comments="%")[0, 0]
+               - math.radians(45)) < 1e-6
+
+
+def test_a_plan_with_an_in_file_is_that_files_content(cache, tmp_path):
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED)
+    env = dict(os.environ)
+    assert run_cli(["run", str(model), "--out", str(tmp_path / "a")], env).returncode == 0
+    values = tmp_path / "values.in"
+    values.write_text((tmp_path / "a" / "pushed.in").read_text())
+    runs = [run_cli(["run", str(model), "--out", str(tmp_path / out), "--in", str(values)],
+                    env) for out in ("b", "c")]
+    assert [r.returncode for r in runs] == [0, 0]
+    assert "its run plan" not in runs[0].stdout and "its run plan" in runs[1].stdout
+    values.write_text(values.read_text().replace("| 30.0", "| 40.0"))
+    edited = run_cli(["run", str(model), "--out", str(tmp_path / "d"), "--in", str(values)],
+                     env)
+    assert edited.returncode == 0 and "its run plan" not in edited.stdout
+    assert abs(np.loadtxt(tmp_path / "d" / "pushed.1", comments="%")[0, 0]
+               - math.radians(40)) < 1e-6

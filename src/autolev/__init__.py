@@ -16,7 +16,6 @@ import importlib
 
 from .errors import (AutolevError, AutolevFileError, AutolevInternalError, AutolevRuntimeError,
                      AutolevSyntaxError, AutolevTranslationError, Diagnostic, Location, Span)
-from .ir import Program
 
 __version__ = "0.1.0"
 __all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "write_programs",
@@ -26,9 +25,10 @@ __all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "write
            "Location", "Span", "__version__"]
 
 # the stages are imported on first use, so that `import autolev` stays cheap
-_LAZY = {"parse": ".pipeline", "translation": ".pipeline", "transpile": ".pipeline",
-         "load": ".loader", "verify": ".verification", "grid": ".runtime.studies",
-         "write_programs": ".programs", "export_sympy": ".export_mechanics"}
+_LAZY = {"Program": ".ir", "parse": ".pipeline", "translation": ".pipeline",
+         "transpile": ".pipeline", "load": ".loader", "verify": ".verification",
+         "grid": ".runtime.studies", "write_programs": ".programs",
+         "export_sympy": ".export_mechanics"}
 
 
 def __getattr__(name: str):

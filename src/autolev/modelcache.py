@@ -14,12 +14,9 @@ $AUTOLEV_NO_MODEL_CACHE=1 turns the cache off (the build cache of compiled code 
 """
 from __future__ import annotations
 
-import functools
 import hashlib
 import io
-import os
 import pickle
-import platform
 import sys
 import warnings
 from dataclasses import dataclass
@@ -27,14 +24,12 @@ from pathlib import Path
 
 import sympy as sm
 
+from .cachekeys import PLAN_PREFIX, code_digest, enabled, manifest
 from .runtime import diskcache
 from .runtime.libraries import sum_or_product_as_given
 
-DISABLE_VARIABLE = "AUTOLEV_NO_MODEL_CACHE"
-FORMAT = 1
 PREFIX = "model_"
 TRANSLATION_PREFIX = "translation_"
-_PACKAGE = Path(__file__).resolve().parent
 
 
 @dataclass
@@ -50,25 +45,8 @@ class Built:
             warnings.warn_explicit(message, category, filename, lineno)
 
 
-def enabled() -> bool:
-    return os.environ.get(DISABLE_VARIABLE, "") in ("", "0")
-
-
-@functools.cache
-def _code_digest() -> str:
-    """autolev's own source and the versions it runs on."""
-    import numpy
-    import sympy
-    h = hashlib.sha256(f"{FORMAT}\0{platform.python_version()}\0{sympy.__version__}\0"
-                       f"{numpy.__version__}\0".encode())
-    for path in sorted(_PACKAGE.rglob("*")):
-        if path.suffix in (".py", ".c", ".g4") and "__pycache__" not in path.parts:
-            h.update(str(path.relative_to(_PACKAGE)).encode() + b"\0" + path.read_bytes())
-    return h.hexdigest()
-
-
 def key(code: str, filename: str) -> str:
-    text = f"{_code_digest()}\0{filename}\0{code}"
+    text = f"{code_digest()}\0{filename}\0{code}"
     return hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()
 
 
@@ -144,46 +122,16 @@ def translation(path: Path, make):
         raw = path.read_bytes()
     except OSError:
         return make()                  # the translation reports the unreadable file
-    key_ = hashlib.sha256(_code_digest().encode() + b"\0translation\0"
+    key_ = hashlib.sha256(code_digest().encode() + b"\0translation\0"
                           + str(path).encode("utf-8", "surrogatepass") + b"\0" + raw)
     entry = diskcache.cache_dir() / f"{TRANSLATION_PREFIX}{key_.hexdigest()[:40]}.pickle"
     kept = _load(entry)
     if isinstance(kept, _KeptTranslation) and \
-            kept.manifest == _manifest(path, kept.translation.files):
+            kept.manifest == manifest(path, kept.translation.files):
         return kept.translation
     result = make()
-    _keep(entry, _KeptTranslation(result, _manifest(path, result.files)), "the translation")
+    _keep(entry, _KeptTranslation(result, manifest(path, result.files)), "the translation")
     return result
-
-
-def _manifest(root: Path, files: list[str]) -> tuple:
-    """The digest of every file read, and in every folder looked in (each read file's
-    folder and those up to the model's own) the names that could change what is read:
-    macros and functions (NAME.A, NAME.R) and any name a read file has, in any case
-    (outputs written beside the model change nothing)."""
-    base = root.parent.resolve()
-    digests, folders = [], {base}
-    named = {root.name.lower()}
-    for name in files:
-        path = Path(name)
-        named.update(part.lower() for part in path.parts)
-        try:
-            digests.append((name, hashlib.sha256(path.read_bytes()).hexdigest()))
-        except OSError:
-            digests.append((name, None))
-        folder = path.parent.resolve()
-        while folder not in folders and base in folder.parents:
-            folders.add(folder)
-            folder = folder.parent
-    listings = []
-    for folder in sorted(folders):
-        try:
-            listings.append((str(folder), tuple(sorted(
-                n for n in os.listdir(folder)
-                if n.lower().endswith((".a", ".r")) or n.lower() in named))))
-        except OSError:
-            listings.append((str(folder), None))
-    return tuple(digests), tuple(listings)
 
 
 class _ExpressionPickler(pickle.Pickler):
@@ -215,6 +163,7 @@ class Summary:
     folder: Path
     models: tuple[int, int]
     translations: tuple[int, int]
+    plans: tuple[int, int]
     compiled: tuple[int, int]
     limit: int
 
@@ -222,7 +171,7 @@ class Summary:
 def summary() -> Summary:
     folder = diskcache.cache_dir()
     found = diskcache.entries(folder)
-    kinds: dict[str, list] = {PREFIX: [], TRANSLATION_PREFIX: [], "": []}
+    kinds: dict[str, list] = {PREFIX: [], TRANSLATION_PREFIX: [], PLAN_PREFIX: [], "": []}
     for e in found:
         kinds[next(k for k in kinds if e.path.name.startswith(k))].append(e)
     return Summary(folder, *[(len(v), sum(e.size for e in v)) for v in kinds.values()],

@@ -29,7 +29,7 @@ from .loader import load
 from .pipeline import parse
 from .runtime.calculus import is_small
 from .runtime.symbols import TIME, Z, derivative, new_z
-from .runtime.vector import Dyadic, Vector
+from .runtime.vectors import Dyadic, Vector
 from .source import decode
 from .translate.commands import IN_PLACE
 from .verification import Response, Session, parse_responses, replay

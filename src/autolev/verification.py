@@ -37,7 +37,7 @@ from .pipeline import translation
 from .printed import read_plain
 from .runtime.calculus import NumericPoint
 from .runtime.symbols import Z
-from .runtime.vector import Dyadic, Vector
+from .runtime.vectors import Dyadic, Vector
 from .source import SourceFile, decode
 from .translate import PROBES, Probe, vocabulary
 

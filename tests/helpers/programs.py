@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from autolev.runtime.numerics import codegen
+from autolev.runtime.numerics import clibrary
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
 # how Octave runs a written .m program: shared with bench/journeys.py
@@ -19,7 +19,7 @@ from written_programs import octave, run_octave, with_table_values  # noqa: E402
 
 
 def compiler():
-    return codegen.compiler()
+    return clibrary.compiler()
 
 
 def value_for(name: str, draw: int) -> float:

@@ -10,7 +10,7 @@ from .common import megabytes
 
 def cmd_cache(ns: argparse.Namespace) -> int:
     """What the cache holds (built models, compiled code), or empty it."""
-    from .. import modelcache
+    from .. import cachekeys, modelcache
 
     if ns.action == "clear":
         try:
@@ -23,18 +23,20 @@ def cmd_cache(ns: argparse.Namespace) -> int:
     s = modelcache.summary()
     print(f"cache: {s.folder}")
     for label, (count, size) in (("built models", s.models), ("translations", s.translations),
-                                 ("compiled code", s.compiled)):
+                                 ("run plans", s.plans), ("compiled code", s.compiled)):
         print(f"  {label + ':':14s} {count:5d}  {megabytes(size)}")
     print(f"  limit: {megabytes(s.limit)} (the oldest entries leave first)")
     if not modelcache.enabled():
-        print(f"  built models are not kept: {modelcache.DISABLE_VARIABLE} is set")
+        print(f"  built models and run plans are not kept: {cachekeys.DISABLE_VARIABLE} "
+              "is set")
     return 0
 
 
 def add_cache(sub) -> None:
     cache = sub.add_parser("cache", help="what the cache holds, or empty it",
                            description="autolev keeps the models it built (read back when "
-                           "the model, autolev and its libraries are unchanged) and the "
+                           "the model, autolev and its libraries are unchanged), the plans "
+                           "of plain runs (what a warm `autolev run` repeats) and the "
                            "code it compiled, in $AUTOLEV_CACHE (default "
                            "~/.cache/autolev/build), private to you and kept under "
                            "$AUTOLEV_CACHE_LIMIT_MB (default 2048).  "

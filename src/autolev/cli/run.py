@@ -13,15 +13,50 @@ from .responses import print_transcript
 
 
 def cmd_run(ns: argparse.Namespace) -> int:
-    """Translate, build and run the model's CODE commands; write Autolev's files."""
+    """Translate, build and run the model's CODE commands; write Autolev's files.  A
+    run repeats its run plan when it has one (runplan.py), else may leave one."""
+    path = Path(ns.file)
+    options = _plan_options(ns, path)
+    if options is not None:
+        from ..runplan import read_plan
+        plan = read_plan(path, options)
+        if plan is not None:
+            return _run_from_plan(plan, path, ns)
+    progress = None if ns.quiet else sys.stderr
+    if options is None:
+        return _run_from_model(path, ns, progress, None, None)
+    from ..runplan import Recorder
+    recorder = sys.stderr = Recorder(sys.stderr)
+    try:
+        return _run_from_model(path, ns, progress, recorder, options)
+    finally:
+        sys.stderr = recorder.through
+
+
+def _plan_options(ns: argparse.Namespace, path: Path) -> tuple | None:
+    """The options that change what a run computes (the .in file first), when a run
+    plan can repeat it: a model file run for Autolev's files alone (no plot, table or
+    animation); else None."""
+    if path.suffix.lower() != ".al" or ns.func is not cmd_run \
+            or ns.plot or ns.csv or ns.mat or ns.animate:
+        return None
+    infile = None if ns.infile is None else str(Path(ns.infile).resolve())
+    return (infile, ns.set, ns.specified, ns.backend, ns.zero_missing, ns.method, ns.tfinal,
+            ns.quirks, ns.code)
+
+
+def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
+                    options: tuple | None) -> int:
+    """The run from the model; with `recorder` (sys.stderr recording), its plan kept
+    for `options` when it can be repeated from one."""
     import time
 
-    path = Path(ns.file)
     overrides = _run_overrides(ns)
     start = time.monotonic()
-    model = load_model(path, None if ns.quiet else sys.stderr,
-                       None if ns.infile or ns.zero_missing
-                       else _values_lacking(path, overrides))
+    # the note of values lacking is about forming the model: a run plan never says it
+    model = load_model(path, progress, None if ns.infile or ns.zero_missing
+                       else _values_lacking(path, overrides, sys.stderr if recorder is None
+                                            else recorder.through))
     if model is None:
         print(f"{path}: not run", file=sys.stderr)
         return 1
@@ -47,13 +82,55 @@ def cmd_run(ns: argparse.Namespace) -> int:
         return 1
     if isinstance(ns.plot, str):
         ns.plot = _plotted_columns(model, commands, ns.plot)
-    return _run_and_report(model, commands, overrides, specified_values(model, ns), ns, path)
+    load_messages = recorder.take() if recorder is not None else ""
+    planned: list = []
+    status = _run_and_report(model, commands, overrides, specified_values(model, ns), ns,
+                             path, progress, recorder, planned)
+    if recorder is not None and status == 0 and len(planned) == len(commands):
+        from ..runplan import write_plan
+        write_plan(path, options, model.loaded.source.content.files, load_messages, planned)
+    return status
 
 
-def _values_lacking(path: Path, overrides: dict):
+def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
+    """A run repeated from its plan: the same files and messages, without the model."""
+    import time
+    import warnings
+
+    from ..runtime.errors import AutolevModelError
+    from ..runtime.numerics.execute import execute
+    from ..runtime.numerics.options import RunOptions
+    from ..runtime.numerics.results import run_summary
+    start = time.monotonic()
+    sys.stderr.write(plan.load_messages)
+    if not ns.quiet:
+        print(f"{path}: built in {time.monotonic() - start:.1f} s (its run plan)")
+    status = 0
+    for planned in plan.commands:
+        sys.stderr.write(planned.messages)
+        e = planned.execution
+        began = time.monotonic()
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")      # its run's are among its messages
+                result = execute(e, Path(ns.out), RunOptions(
+                    progress=None if ns.quiet else sys.stderr, infile=ns.infile,
+                    keep_rows=False, overwrite=ns.overwrite))
+        except AutolevModelError as exc:
+            print(f"{planned.label}: error: {exc}", file=sys.stderr)
+            status = 1
+            continue
+        if not ns.quiet:
+            print(run_summary(e.kind, e.filename, result, time.monotonic() - began))
+            for f in result.files:
+                print(f"  wrote {f}")
+    return status
+
+
+def _values_lacking(path: Path, overrides: dict, stream):
     """Before a model is built (its equations formed: a minute on a large model), the
     note naming the constants that nothing gives a value (INPUT, an assignment, --set);
-    the run refuses once it knows its equations need them."""
+    the run refuses once it knows its equations need them; printed on `stream`."""
     from ..runtime.numerics.inputs import some_names
     given = {name.upper() for name in overrides}
 
@@ -63,7 +140,7 @@ def _values_lacking(path: Path, overrides: dict):
         if lacking:
             print(f"{path}: note: no value given for {some_names(lacking)} (INPUT, --set "
                   "NAME=VALUE or --in FILE.in); the run stops before integrating if its "
-                  "equations use them", file=sys.stderr, flush=True)
+                  "equations use them", file=stream, flush=True)
     return note
 
 
@@ -124,7 +201,10 @@ def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list:
 
 
 def _run_and_report(model, commands: list, overrides: dict, specified: dict,
-                    ns: argparse.Namespace, path: Path) -> int:
+                    ns: argparse.Namespace, path: Path, progress, recorder=None,
+                    planned: list | None = None) -> int:
+    """Run the commands and report each; with `recorder`, each command that a run plan
+    can repeat goes into `planned` with what it printed on stderr."""
     from ..runtime.errors import AutolevModelError
     from ..runtime.tools import program_file_name, safe_stem
     label = statement_label(model, path)
@@ -145,7 +225,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
     from ..runtime.tools import RunOptions
     runs = model.run_commands(commands, out_dir, keep_going=True, options=RunOptions(
         method=ns.method, backend=ns.backend, infile=ns.infile,
-        progress=None if ns.quiet else sys.stderr, overrides=overrides, specified=specified,
+        progress=progress, overrides=overrides, specified=specified,
         quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate or ns.csv or ns.mat),
         overwrite=ns.overwrite,
         missing_values="zero" if ns.zero_missing else "refuse"))
@@ -162,6 +242,12 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
             for f in done.result.files:
                 print(f"  wrote {f}")
         status = max(status, _after_run(model, done, out_dir, ns, label(done.command)))
+        if recorder is not None:
+            from ..runplan import can_plan, planned_command
+            messages = recorder.take()
+            if can_plan(done.result.execution, done.result):
+                planned.append(planned_command(done.result.execution, label(done.command),
+                                               messages))
     return status
 
 

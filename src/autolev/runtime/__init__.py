@@ -9,12 +9,13 @@ modules of this package (the integration loop, the output files) without sympy.
 from __future__ import annotations
 
 import importlib
+import importlib.util
 
 _NAMED = {"AutolevModelError": ".errors", "MissingValues": ".errors", "Frame": ".frame",
           "KaneEquations": ".kane", "Model": ".model", "Body": ".point",
           "Particle": ".point", "Point": ".point", "TIME": ".symbols", "Z": ".symbols",
-          "derivative": ".symbols", "derivatives": ".symbols", "Dyadic": ".vector",
-          "Vector": ".vector", "outer": ".vector"}
+          "derivative": ".symbols", "derivatives": ".symbols", "Dyadic": ".vectors",
+          "Vector": ".vectors", "outer": ".vectors"}
 
 
 def __getattr__(name: str):
@@ -26,6 +27,10 @@ def __getattr__(name: str):
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     if name in _NAMED:
         module = importlib.import_module(_NAMED[name], __name__)
+    elif importlib.util.find_spec(f"{__name__}.{name}") is not None:
+        # a submodule (`from autolev.runtime import diskcache`): the import system
+        # loads it once this fails, without the functions (and sympy)
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     else:
         module = importlib.import_module(".functions", __name__)
         if name not in module.__all__:

@@ -11,7 +11,7 @@ from .functions import scalar_values, whole_number
 from .linalg import coefficients, solve_linear
 from .errors import AutolevModelError
 from .frame import body_fixed, rodrigues, space_fixed
-from .vector import Dyadic, Vector
+from .vectors import Dyadic, Vector
 
 
 @dataclass(frozen=True)

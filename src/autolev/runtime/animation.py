@@ -59,7 +59,7 @@ import sympy as sm
 
 from .errors import AutolevModelError
 from .numerics.inputs import Inputs, display_name
-from .vector import Vector
+from .vectors import Vector
 
 # frames drawn at most: more rows are sampled evenly (the page and the GIF stay small)
 MAX_FRAMES = 400

@@ -49,7 +49,7 @@ RECENT_SECONDS = 300
 
 # the names of what autolev writes: compiled objects and libraries, built models and
 # translations; their digests (.sha256 of earlier versions too) and temporaries
-_ENTRY = re.compile(r"(al_[0-9a-f]{24}\.(o|so|dll)|(model|translation)_[0-9a-f]{40}\.pickle)")
+_ENTRY = re.compile(r"(al_[0-9a-f]{24}\.(o|so|dll)|(model|translation|plan)_[0-9a-f]{40}\.pickle)")
 _SIDE = re.compile(r"(\.mac|\.sha256)?")
 _LEGACY_TEMPORARY = re.compile(r"\.\d+(\.[0-9a-f]+)?\.tmp")     # of earlier versions
 _TEMPORARY = re.compile(r"\.(?P<name>.+)\.\d+\.[0-9a-f]+" + re.escape(TEMPORARY_SUFFIX))

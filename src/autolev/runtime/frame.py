@@ -20,7 +20,7 @@ from .calculus import Definitions
 from .derived import DerivedCache, Revision
 from .errors import AutolevModelError
 from .interop import to_sympy_frame
-from .vector import Vector, _s, _vector
+from .vectors import Vector, _s, _vector
 
 
 @dataclass(eq=False)

@@ -11,7 +11,7 @@ from .calculus import is_real_number, refuse_huge_powers, refused_substitution
 from .printer import number_value
 from .errors import AutolevModelError
 from .frame import Frame
-from .vector import Dyadic, Vector, outer
+from .vectors import Dyadic, Vector, outer
 
 ZERO = Vector()
 # a symbolic matrix this large takes minutes and gigabytes to build (1000 x 1000: 3 s)

@@ -16,7 +16,7 @@ from .errors import AutolevModelError
 
 if TYPE_CHECKING:
     from .frame import Frame, Scene
-    from .vector import Vector
+    from .vectors import Vector
 
 
 def _mechanics():

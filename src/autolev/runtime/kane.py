@@ -17,7 +17,7 @@ from .calculus import Definitions
 from .errors import AutolevModelError
 from .point import Body, Particle, Point
 from .frame import Frame
-from .vector import Vector
+from .vectors import Vector
 
 MOTION_KINDS = ("variable", "motionvariable")
 

@@ -7,7 +7,7 @@ import sympy as sm
 from .errors import AutolevModelError
 from .frame import Frame
 from .point import Body, Particle, Point, point_mass_inertia
-from .vector import Dyadic, UnitDyadic, Vector
+from .vectors import Dyadic, UnitDyadic, Vector
 
 
 class MassPropertiesMixin:

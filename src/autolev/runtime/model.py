@@ -29,7 +29,7 @@ from .linalg import coefficients, solve_linear
 from .mass_properties import MassPropertiesMixin
 from .point import Body, Particle, Point
 from .simulation import SimulationMixin
-from .vector import Dyadic, Vector, _vector
+from .vectors import Dyadic, Vector, _vector
 
 @dataclass
 class Loaded:

@@ -14,7 +14,7 @@ import sympy as sm
 from .interop import to_sympy_point
 from .errors import AutolevModelError
 from .frame import Frame, Scene
-from .vector import Dyadic, Vector, _vector, outer
+from .vectors import Dyadic, Vector, _vector, outer
 
 
 class Point:

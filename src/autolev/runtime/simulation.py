@@ -14,7 +14,7 @@ from .errors import AutolevModelError
 from .io import CodeCommand, CodeKind
 from .numerics.files import safe_stem
 from .numerics.prepare import keep_built
-from .numerics.results import Result
+from .numerics.results import Result, run_summary
 from .numerics.command import names_a_quantity
 from .numerics.options import RunOptions
 from .numerics.run import run_command
@@ -32,19 +32,9 @@ class CommandRun:
 
     def summary(self) -> str:
         """`CODE DYNAMICS bike.c: 101 rows in 1.30 s (building 1.02 s; integrating
-        0.21 s: kutta-merson, 412 steps)`: the whole command, then what took the time
-        (building: forming and compiling its numeric system, or reading it back)."""
-        result, stats = self.result, self.result.stats
-        what = (f"{stats.get('rows', 0)} rows" if result.kind.integrates
-                else "solved" if result.kind is not CodeKind.ALGEBRAIC or result.solution
-                else "evaluated")
-        parts = [f"building {stats.get('build_seconds', 0.0):.2f} s"]
-        if "seconds" in stats:
-            parts.append(f"integrating {stats['seconds']:.2f} s" + (
-                f": {stats['method']}, {stats.get('steps')} steps" if stats.get("method")
-                else ""))
-        return (f"CODE {self.command.kind.upper()} {self.command.filename}: {what} in "
-                f"{self.seconds:.2f} s ({'; '.join(parts)})")
+        0.21 s: kutta-merson, 412 steps)` (results.run_summary)."""
+        return run_summary(self.command.kind, self.command.filename, self.result,
+                           self.seconds)
 
 
 @dataclass

@@ -9,22 +9,14 @@ the same numbers: the same operations in the same order, in double precision.
 """
 from __future__ import annotations
 
-import ctypes
-import hashlib
-import os
-import shutil
-import subprocess
-import sys
-import tempfile
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 import sympy as sm
 
 from ..calculus import Definitions
-from ..diskcache import cache_dir, install_or_aside, read_verified, verified
 from ..errors import AutolevModelError
+from .clibrary import UNIT_MARK, UNIT_STATEMENTS, c_function, cpus
 from ..printer import MATH_ERRORS, CPrinter, PythonPrinter, fast_namespace, safe_namespace
 
 
@@ -312,9 +304,6 @@ def python_function(source: str, name: str, n_in: int, code=None):
 
 
 # -- C ---------------------------------------------------------------------------------
-# without -fno-math-errno every sqrt may set errno, so gcc keeps each repeated call
-# (the rider-lean bicycle repeats one 117 times); the values are the same bit for bit
-C_FLAGS = ("-O1", "-fno-math-errno")
 CHUNK = 100     # statements per C function: gcc's time grows faster than the function's size
                 # (planar 16-link: 100 compiles in 0.9 s against 1.05 s for 400, runs as fast)
 
@@ -350,7 +339,7 @@ def c_source(prog: Program, name: str = "compute") -> str:
     # big programs go to several translation units of about equal size (the compiler's
     # time follows the text), compiled in parallel; each unit in functions of at most
     # CHUNK statements
-    units = max(1, min(_cpus(), len(statements) // UNIT_STATEMENTS))
+    units = max(1, min(cpus(), len(statements) // UNIT_STATEMENTS))
     total = sum(len(st) for st in statements)
     groups: list = [[] for _ in range(units)]
     done = 0
@@ -389,105 +378,6 @@ def c_source(prog: Program, name: str = "compute") -> str:
     return "\n".join(lines) + "\n"
 
 
-UNIT_MARK = "/* -- autolev: next translation unit -- */"
-UNIT_STATEMENTS = 600    # a program this many statements per core is split
-
-
-def _cpus() -> int:
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except (AttributeError, OSError):
-        return max(1, os.cpu_count() or 1)
-
-
-def compiler() -> str | None:
-    """The C compiler to use ($CC, else cc or gcc), or None."""
-    if os.environ.get("AUTOLEV_NO_C"):
-        return None
-    for cand in (os.environ.get("CC"), "cc", "gcc"):
-        if cand and shutil.which(cand):
-            return shutil.which(cand)
-    return None
-
-
-class CompileError(Exception):
-    pass
-
-
-def build_object(source: str, flags: tuple) -> bytes:
-    """Compile C source to an object file, cached by the hash of source and flags:
-    code that is the same for every model (the integration loop) is compiled once.
-    Returns its bytes (read as verified: another process's trim cannot take it away
-    from a link under way)."""
-    cc = compiler()
-    if cc is None:
-        raise CompileError("no C compiler")
-    digest = hashlib.sha256((source + "\0" + " ".join(flags) + "\0" + cc).encode()).hexdigest()
-    obj = cache_dir() / f"al_{digest[:24]}.o"
-    data = read_verified(obj)
-    if data is not None:
-        return data
-    with tempfile.TemporaryDirectory() as tmp:
-        src = Path(tmp) / "shared.c"
-        src.write_text(source)
-        out = Path(tmp) / obj.name
-        r = subprocess.run([cc, *flags, "-fPIC", "-c", "-o", str(out), str(src)],
-                           capture_output=True, text=True)
-        if r.returncode != 0:
-            raise CompileError(r.stderr.strip()[-2000:])
-        data = out.read_bytes()
-        install_or_aside(data, obj)
-    return data
-
-
-def build_shared_library(source: str, flags: tuple | None = None,
-                         shared_source: str = "") -> Path:
-    """Compile C source to a shared library (cached by the hash of source and flags).
-    A source made of several translation units (separated by UNIT_MARK) has them
-    compiled in parallel.  -O1 by default: on the straight-line code models make it
-    runs as fast as -O2 (planar 16-link: 2.6 against 2.5 us per evaluation) and
-    compiles in about half the time."""
-    cc = compiler()
-    if cc is None:
-        raise CompileError("no C compiler")
-    flags = tuple(flags) if flags is not None else C_FLAGS
-    digest = hashlib.sha256((source + "\0" + shared_source + "\0" + " ".join(flags) + "\0"
-                             + cc).encode()).hexdigest()
-    lib = cache_dir() / f"al_{digest[:24]}{'.dll' if sys.platform == 'win32' else '.so'}"
-    if verified(lib):
-        return lib
-    # `shared_source`: compiled once for all models (its own cached object), linked in
-    # at -O3: compiled once, and its loops (the LU solve, the stages) gain from it
-    shared_flags = tuple("-O3" if f.startswith("-O") else f for f in flags)
-    with tempfile.TemporaryDirectory() as tmp:
-        shared = []
-        if shared_source:
-            shared.append(Path(tmp) / "shared.o")
-            shared[0].write_bytes(build_object(shared_source, shared_flags))
-        objects, procs = [], []
-        for k, unit in enumerate(source.split(UNIT_MARK)):
-            src = Path(tmp) / f"unit{k}.c"
-            src.write_text(unit)
-            obj = Path(tmp) / f"unit{k}.o"
-            objects.append(obj)
-            procs.append(subprocess.Popen([cc, *flags, "-fPIC", "-c", "-o", str(obj), str(src)],
-                                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                          text=True))
-        errors = []
-        for proc in procs:
-            _, err = proc.communicate()
-            if proc.returncode != 0:
-                errors.append(err.strip())
-        if errors:
-            raise CompileError("\n".join(errors)[-2000:])
-        out = Path(tmp) / lib.name
-        r = subprocess.run([cc, "-shared", "-o", str(out), *map(str, objects + shared), "-lm"],
-                           capture_output=True, text=True)
-        if r.returncode != 0:
-            raise CompileError(r.stderr.strip()[-2000:])
-        return install_or_aside(out.read_bytes(), lib)
-
-
 def compile_c(prog: Program, name: str = "compute", extra_source: str = "",
               extra_flags: tuple = ()):
     """A Python callable f(*input_arrays, out) running the compiled C, and the source.
@@ -497,42 +387,3 @@ def compile_c(prog: Program, name: str = "compute", extra_source: str = "",
     source = c_source(prog, name)
     recipe = (name, len(prog.inputs), len(prog.assignments), extra_source, tuple(extra_flags))
     return c_function(source, *recipe), source, recipe
-
-
-def c_function(source: str, name: str, n_in: int, n_work: int, extra_source: str = "",
-               extra_flags: tuple = ()):
-    """The callable of `compile_c` from its source (compiled, or found in the cache)."""
-    lib = ctypes.CDLL(str(build_shared_library(source, C_FLAGS + tuple(extra_flags),
-                                               shared_source=extra_source)))
-    fn = getattr(lib, name)
-    fn.argtypes = [ctypes.c_void_p] * (n_in + 2)
-    fn.restype = None
-    work = np.zeros(max(1, n_work))
-    work_addr = work.ctypes.data
-    empty = np.zeros(1)
-
-    def address(a, keep):
-        if len(a) == 0:
-            return empty.ctypes.data
-        if not (isinstance(a, np.ndarray) and a.dtype == np.float64
-                and a.flags.c_contiguous):
-            a = np.ascontiguousarray(a, dtype=float)
-            keep.append(a)
-        return a.ctypes.data
-
-    def call(*arrays):
-        keep: list = []                      # converted copies live until the call ends
-        args = [address(a, keep) for a in arrays[:n_in]]
-        out = arrays[-1]
-        if len(out) and isinstance(out, np.ndarray) and out.dtype == np.float64 \
-                and out.flags.c_contiguous:
-            fn(*args, work_addr, out.ctypes.data)
-            return out
-        tmp = np.zeros(max(1, len(out)))
-        fn(*args, work_addr, tmp.ctypes.data)
-        if len(out):
-            out[:] = tmp[:len(out)]
-        return out
-    call.lib = lib
-    call.work = work
-    return call

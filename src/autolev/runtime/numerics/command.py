@@ -15,9 +15,9 @@ from .. import symbols as S
 from .. import units
 from ..errors import AutolevModelError
 from ..io import CodeKind
-from ..vector import Vector
+from ..vectors import Vector
 from .inputs import INTEGRATION, display_name, parse_number, some_names
-from .system import Column
+from .results import Column
 
 
 # -- building -------------------------------------------------------------------------------

@@ -1,13 +1,18 @@
 """A compiled numeric function: C when a compiler is there (or asked for), else Python;
-pickled as its source and built again (or found in the build cache) when read back."""
+pickled as its source and built again (or found in the build cache) when read back.
+A C function reads back without sympy (a run plan's); generating code needs it."""
 from __future__ import annotations
 
 import marshal
 import warnings
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from ..errors import AutolevModelError
-from . import codegen
+from . import clibrary
+
+if TYPE_CHECKING:
+    from .codegen import Program
 
 
 @dataclass
@@ -30,19 +35,21 @@ class Function:
         code = state.pop("code", None)
         self.__dict__.update(state)
         if self.backend == "c":
-            self.call = codegen.c_function(self.source, *self.recipe)
+            self.call = clibrary.c_function(self.source, *self.recipe)
         else:
+            from . import codegen      # (sympy): Python code is read back with the model
             self.call = codegen.python_function(
                 self.source, *self.recipe, code=marshal.loads(code) if code else None)
 
 
-def compile_program(prog: codegen.Program, backend: str, name: str,
+def compile_program(prog: Program, backend: str, name: str,
                     extra_source: str = "", extra_flags: tuple = ()) -> Function:
-    if backend in ("auto", "c") and codegen.compiler() is not None:
+    from . import codegen              # (sympy): generating code is the model's work
+    if backend in ("auto", "c") and clibrary.compiler() is not None:
         try:
             call, source, recipe = codegen.compile_c(prog, name, extra_source, extra_flags)
             return Function(call, "c", source, recipe)
-        except codegen.CompileError as exc:
+        except clibrary.CompileError as exc:
             if backend == "c":
                 raise AutolevModelError(f"the C compiler failed: {exc}") from None
             warnings.warn(f"compiling {name} failed; using Python ({exc})")

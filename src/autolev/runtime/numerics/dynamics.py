@@ -107,7 +107,7 @@ def print_schedule(inputs, program: str) -> Schedule:
     """The print schedule of the INPUT integration parameters, integrated the way
     Autolev's program in that language integrated."""
     sched = Schedule(inputs.internal("TINITIAL"), inputs.internal("TFINAL"),
-                     inputs.internal("INTEGSTP"), int(inputs.values["PRINTINT"].given),
+                     inputs.internal("INTEGSTP"), int(inputs.internal("PRINTINT")),
                      fresh_derivatives=program == "c",
                      restart_each_step=program == "m")
     try:

@@ -30,7 +30,7 @@ import sympy as sm
 from .. import symbols as S
 from ..errors import AutolevModelError
 from ..io import CodeKind
-from . import codegen
+from . import clibrary, codegen
 from .inputs import display_name
 from .projection import Projector
 from .results import mat_file
@@ -418,7 +418,7 @@ class _Jacobians:
     seconds: float = 0.0    # spent evaluating them
 
     def compiling_pays(self) -> bool:
-        if self.compiled or codegen.compiler() is None:
+        if self.compiled or clibrary.compiler() is None:
             return False
         predicted = C_SECONDS_PER_SOURCE_BYTE * (len(self.rhs.source)
                                                  + len(self.outputs.source))

@@ -12,6 +12,15 @@ from ..code_kinds import CodeKind
 
 
 @dataclass
+class Column:
+    """One output column: the expression, its label and unit."""
+
+    expr: object
+    label: str
+    unit: str | None
+
+
+@dataclass
 class OutputTable:
     """The rows of one output file (values in the file's units)."""
 
@@ -55,6 +64,8 @@ class Result:
     failure_time: float | None = None
     stats: dict = field(default_factory=dict)
     system: object = field(default=None, repr=False)   # the NumericSystem (rhs, outputs)
+    # what computed it (execute.Execution): a run plan keeps it
+    execution: object = field(default=None, repr=False)
 
     @property
     def ok(self) -> bool:
@@ -193,3 +204,19 @@ def tables_of(system, rows, stem: str) -> list[OutputTable]:
         out.append(OutputTable(f"{stem}.{k + 1}", [c.label for c in cols],
                                [c.unit for c in cols], data))
     return out
+
+
+def run_summary(kind: CodeKind, filename: str, result: Result, seconds: float) -> str:
+    """`CODE DYNAMICS bike.c: 101 rows in 1.30 s (building 1.02 s; integrating 0.21 s:
+    kutta-merson, 412 steps)`: the whole command, then what took the time (building:
+    forming and compiling its numeric system, reading it back, or its run plan)."""
+    stats = result.stats
+    what = (f"{stats.get('rows', 0)} rows" if kind.integrates
+            else "solved" if kind is not CodeKind.ALGEBRAIC or result.solution
+            else "evaluated")
+    parts = [f"building {stats.get('build_seconds', 0.0):.2f} s"]
+    if "seconds" in stats:
+        parts.append(f"integrating {stats['seconds']:.2f} s" + (
+            f": {stats['method']}, {stats.get('steps')} steps" if stats.get("method")
+            else ""))
+    return f"CODE {kind.upper()} {filename}: {what} in {seconds:.2f} s ({'; '.join(parts)})"

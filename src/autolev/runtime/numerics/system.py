@@ -17,7 +17,6 @@ ENCODE values, evaluated at print times only, with the accelerations found there
 from __future__ import annotations
 
 import inspect
-from dataclasses import dataclass
 
 import numpy as np
 import sympy as sm
@@ -26,10 +25,9 @@ from .. import symbols as S
 from .. import units
 from ..errors import AutolevModelError
 from . import codegen
-from .cloop import CompiledLoop
 from .cloop import extra_source as loop_extra_source
 from .compiled import compile_program
-from .massmatrix import SingularMassMatrix, solve_mass_matrix
+from .evaluation import CompiledEvaluation
 
 
 def alphabetical(syms) -> list:
@@ -47,16 +45,7 @@ def read_order(syms, model) -> list:
     return sorted(syms, key=key)
 
 
-@dataclass
-class Column:
-    """One output column: the expression, its label and unit."""
-
-    expr: object
-    label: str
-    unit: str | None
-
-
-class NumericSystem:
+class NumericSystem(CompiledEvaluation):
     """State, parameters and compiled functions of a model.
 
     `outputs`: a list of files, each a list of Column; `encoded`: (name, value) pairs.
@@ -212,17 +201,13 @@ class NumericSystem:
             for k, v in extra.items()}
         self._bind_loop()
 
-    def _bind_loop(self) -> None:
-        """The compiled integration loop and the CPython entry point of the right-hand
-        side, when it is C."""
-        self.loop = None
-        if self.rhs_function is not None and self.rhs_function.backend == "c":
-            call = self.rhs_function.call
-            self.loop = CompiledLoop(call.lib, self.nstate, self.unknown_positions,
-                                     call.work, len(self.rhs_exprs))
-        self._rhs_out = np.empty(len(self.rhs_exprs))
-        self._py = self.loop.python_entry if self.loop is not None else None
-        self._py_ctx = self.loop.context_address if self.loop is not None else None
+    @property
+    def n_rhs(self) -> int:
+        return len(self.rhs_exprs)
+
+    @property
+    def n_outputs(self) -> int:
+        return len(self.output_exprs)
 
     # -- pickling (with the model, in the cache of built models) ------------------------
     _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions")
@@ -436,9 +421,7 @@ class NumericSystem:
         cd = np.empty(len(self.constant_defs))
         if len(cd):
             self.constants_function.call(p, cd)
-        self.constant_values = np.concatenate([p, cd])
-        if self.loop is not None:
-            self.loop.set_values(self.constant_values, self.specified_values)
+        self.set_constant_values(np.concatenate([p, cd]))
 
     def set_specified(self, functions: dict) -> set:
         """{symbol: callable f(t) or f(t, x)} for undefined specified quantities;
@@ -461,81 +444,6 @@ class NumericSystem:
                         used.add(low)
                         break
         return used
-
-    def _fill_specified(self, t, x) -> np.ndarray:
-        s = self.specified_values
-        for i, fn in self.specified_functions:
-            s[i] = fn(t, x)
-        return s
-
-    def derivatives(self, t: float, x: np.ndarray) -> np.ndarray:
-        """State derivatives at (t, x): a fresh array."""
-        if self.specified_functions:
-            self._fill_specified(t, x)
-        elif self._py is not None:      # loop.derivatives inlined: the common case, in
-            #                             as few Python calls as possible
-            try:
-                xdot = self._py(self._py_ctx, t, x)
-            except (TypeError, ValueError):
-                pass                    # not a contiguous float64 array: below
-            else:
-                if xdot is None:
-                    raise SingularMassMatrix(t)
-                return xdot
-        s = self.specified_values
-        if self.loop is not None:
-            xdot, status = self.loop.derivatives(t, x)
-            if status:
-                raise SingularMassMatrix(t)
-            return xdot
-        out = self._rhs_out
-        self.rhs_function.call(np.array([t]), x, self.constant_values, s, out)
-        ns = self.nstate
-        xdot = out[:ns].copy()
-        n = self._n
-        if n:
-            mm = out[ns:ns + n * n].reshape(n, n)
-            f = out[ns + n * n:ns + n * n + n]
-            xdot[self.unknown_positions] = solve_mass_matrix(mm, f, t)
-        return xdot
-
-    def last_mass_matrix(self) -> np.ndarray | None:
-        """The mass matrix of the last evaluation of the derivatives (None when the
-        model solves no accelerations)."""
-        n, ns = self._n, self.nstate
-        if not n:
-            return None
-        out = self.loop.out_buffer if self.loop is not None else self._rhs_out
-        return np.array(out[ns:ns + n * n]).reshape(n, n)
-
-    def _accel_inputs(self, t, x, xdot, solved) -> np.ndarray:
-        parts = []
-        if self._n:
-            if xdot is None:
-                try:
-                    xdot = self.derivatives(t, x)
-                except SingularMassMatrix:          # outputs that need them are NaN
-                    xdot = np.full(self.nstate, np.nan)
-            parts.append(xdot[self.unknown_positions])
-        if self.solved:
-            parts.append(np.asarray(solved, dtype=float))
-        return np.concatenate(parts) if parts else np.zeros(0)
-
-    def _call(self, fn, size, t, x, xdot=None, solved=()) -> np.ndarray:
-        x = np.asarray(x, dtype=float)
-        a = self._accel_inputs(t, x, xdot, solved)
-        s = self._fill_specified(t, x) if self.specified_functions else self.specified_values
-        out = np.empty(size)
-        fn.call(np.array([t]), x, self.constant_values, s, a, out)
-        return out
-
-    def outputs(self, t: float, x=(), xdot=None, solved=()) -> np.ndarray:
-        """Every output column and ENCODE value at (t, x), in internal units."""
-        return self._call(self.output_function, len(self.output_exprs), t, x, xdot, solved)
-
-    def extra(self, name: str, t: float, x=(), solved=()) -> np.ndarray:
-        fn, size = self.extra_functions[name]
-        return self._call(fn, size, t, x, None, solved)
 
 
 def lower_derivative(d):

@@ -1,0 +1,183 @@
+"""Run plans: a warm `autolev run FILE` without the model.
+
+A run that writes Autolev's files alone (no plot, table or animation) and whose every
+CODE command integrated in the compiled loop and ended well leaves a plan in the cache,
+for the options it was given (values, an .in file by its content, the method...): per
+command, its compiled system as numbers and C sources (the libraries are found again
+in the build cache), its inputs as numbers, the texts of its files besides the rows,
+and what the run printed on stderr (notes, warnings).  The next run of the same file
+with the same options, while the file, every file its translation read and autolev
+itself are unchanged (the translation cache's manifest), repeats the integration from
+the plan and writes the same files, importing neither sympy nor scipy and translating
+nothing.  Anything else runs from the model.
+"""
+from __future__ import annotations
+
+import hashlib
+import io
+import pickle
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from .cachekeys import PLAN_PREFIX, code_digest, enabled, manifest
+from .runtime import diskcache
+from .runtime.numerics.clibrary import CompileError
+from .runtime.numerics.evaluation import CompiledEvaluation
+from .runtime.numerics.execute import Execution
+from .runtime.numerics.results import Column
+
+
+
+class PlannedInputs:
+    """A run's inputs as numbers: the integration parameters and the initial state."""
+
+    def __init__(self, integration: dict, initial):
+        self.integration = dict(integration)
+        self.initial = [float(v) for v in initial]
+
+    def internal(self, key) -> float:
+        return self.integration[key]
+
+    def vector(self, keys) -> list[float]:
+        """The initial state (a plan's system asks for nothing else)."""
+        return list(self.initial)
+
+
+class PlannedSystem(CompiledEvaluation):
+    """A NumericSystem's compiled functions, names and numbers, without its model
+    (`states`: the state's names)."""
+
+    def __init__(self, system, state_names: list):
+        self.states = list(state_names)
+        self.nstate, self._n = system.nstate, system._n
+        self.unknown_positions = list(system.unknown_positions)
+        self.n_rhs, self.n_outputs = system.n_rhs, system.n_outputs
+        self.solved = []
+        self.files = [[Column(None, c.label, c.unit) for c in cols] for cols in system.files]
+        self.degree_columns = [list(d) for d in system.degree_columns]
+        self.encode_shapes = list(system.encode_shapes)
+        self.rhs_function, self.output_function = system.rhs_function, system.output_function
+        self.extra_functions = {}
+        self.specified_functions = []
+        self.specified_values = np.array(system.specified_values, dtype=float)
+        self.constant_values = np.array(system.constant_values, dtype=float)
+        self._bind_loop()
+        self.set_constant_values(self.constant_values)
+
+    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx")
+
+    def __getstate__(self) -> dict:
+        return {k: v for k, v in self.__dict__.items() if k not in self._UNPICKLED}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._bind_loop()
+        self.set_constant_values(self.constant_values)
+
+
+@dataclass
+class PlannedCommand:
+    execution: Execution        # its system a PlannedSystem, its inputs PlannedInputs
+    label: str                  # file:line of its CODE statement, for its messages
+    messages: str               # what its run printed on stderr
+
+
+@dataclass
+class RunPlan:
+    manifest: tuple             # of the files the translation read (cachekeys.manifest)
+    load_messages: str          # what loading the model printed on stderr
+    commands: list
+
+
+def can_plan(execution: Execution, result) -> bool:
+    """Whether a command's run can be repeated from a plan: integrated in the compiled
+    loop (no user functions), ended well (`autolev run` projects onto no
+    constraints)."""
+    system = execution.system
+    return (execution.kind.integrates and result.failure is None
+            and system.loop is not None and not system.specified_functions
+            and system.rhs_function.backend == "c" and system.output_function.backend == "c"
+            and not system.extra_functions)
+
+
+def planned_command(execution: Execution, label: str, messages: str) -> PlannedCommand:
+    """The command's execution with its system and inputs reduced to numbers."""
+    inputs = execution.inputs
+    integration = {k: inputs.internal(k) for k in
+                   ("TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR")}
+    initial = inputs.vector(execution.system.states)
+    reduced = replace(execution, system=PlannedSystem(execution.system,
+                                                      execution.state_names),
+                      inputs=PlannedInputs(integration, initial), build_seconds=0.0)
+    return PlannedCommand(reduced, label, messages)
+
+
+def _entry(path: Path, options: tuple) -> Path | None:
+    """The plan's place in the cache for the model file at `path` run with `options`
+    (what the command line gave that changes the run; an .in file among them by its
+    bytes).  None: a file unreadable, or the caches turned off."""
+    if not enabled():
+        return None
+    try:
+        raw = path.read_bytes()
+        read = [Path(option).read_bytes() for option in options[:1] if option is not None]
+    except OSError:
+        return None
+    key = hashlib.sha256(code_digest().encode() + b"\0plan\0"
+                         + str(path.resolve()).encode("utf-8", "surrogatepass") + b"\0" + raw
+                         + repr(options).encode("utf-8", "surrogatepass") + b"\0"
+                         + b"".join(read))
+    return diskcache.cache_dir() / f"{PLAN_PREFIX}{key.hexdigest()[:40]}.pickle"
+
+
+def write_plan(path: Path, options: tuple, files_read: list, load_messages: str,
+               commands: list) -> None:
+    """Keep the plan of a run of the model at `path` with `options` (`files_read`: its
+    translation's)."""
+    entry = _entry(path, options)
+    if entry is None:
+        return
+    plan = RunPlan(manifest(path, files_read), load_messages, commands)
+    try:
+        diskcache.install(pickle.dumps(plan, protocol=pickle.HIGHEST_PROTOCOL), entry)
+    except OSError:
+        return                      # a full or read-only disk: the next run forms its own
+
+
+def read_plan(path: Path, options: tuple) -> RunPlan | None:
+    """The plan of the model at `path` run with `options`, while it holds, else None."""
+    entry = _entry(path, options)
+    data = None if entry is None else diskcache.read_verified(entry)
+    if data is None:
+        return None
+    try:
+        plan = pickle.loads(data)
+    except CompileError:
+        return None                 # its libraries are gone and no compiler rebuilds them
+    if not isinstance(plan, RunPlan) or plan.manifest != manifest(
+            path, [name for name, _ in plan.manifest[0]]):
+        return None
+    return plan
+
+
+class Recorder(io.TextIOBase):
+    """A text stream that writes through to another and keeps what was written."""
+
+    def __init__(self, through):
+        self.through = through
+        self.kept = io.StringIO()
+
+    def write(self, text: str) -> int:
+        self.kept.write(text)
+        return self.through.write(text)
+
+    def flush(self) -> None:
+        self.through.flush()
+
+    def take(self) -> str:
+        """What was written since the last take."""
+        text = self.kept.getvalue()
+        self.kept = io.StringIO()
+        return text

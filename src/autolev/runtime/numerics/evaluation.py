@@ -1,0 +1,112 @@
+"""A system's compiled functions evaluated: the state derivatives (the right-hand side
+and the solve of the mass matrix), the outputs at print times, and the compiled
+integration loop over them.  No sympy: NumericSystem (system.py) is one, and so is a
+run plan's system, which a warm run reads without the model.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .cloop import CompiledLoop
+from .massmatrix import SingularMassMatrix, solve_mass_matrix
+
+
+class CompiledEvaluation:
+    """Evaluation of compiled functions, over what a subclass holds: nstate; _n and
+    unknown_positions (the accelerations M a = f solves, and where they go in the
+    state); n_rhs, n_outputs; rhs_function, output_function, extra_functions
+    ({name: (function, size)}); solved (the unknowns the caller supplies at output
+    time); constant_values, specified_values, specified_functions."""
+
+    def set_constant_values(self, values: np.ndarray) -> None:
+        """The constants' values (parameters, then what is computed from them)."""
+        self.constant_values = values
+        if self.loop is not None:
+            self.loop.set_values(self.constant_values, self.specified_values)
+
+    def _bind_loop(self) -> None:
+        """The compiled integration loop and the CPython entry point of the right-hand
+        side, when it is C."""
+        self.loop = None
+        if self.rhs_function is not None and self.rhs_function.backend == "c":
+            call = self.rhs_function.call
+            self.loop = CompiledLoop(call.lib, self.nstate, self.unknown_positions,
+                                     call.work, self.n_rhs)
+        self._rhs_out = np.empty(self.n_rhs)
+        self._py = self.loop.python_entry if self.loop is not None else None
+        self._py_ctx = self.loop.context_address if self.loop is not None else None
+
+    def _fill_specified(self, t, x) -> np.ndarray:
+        s = self.specified_values
+        for i, fn in self.specified_functions:
+            s[i] = fn(t, x)
+        return s
+
+    def derivatives(self, t: float, x: np.ndarray) -> np.ndarray:
+        """State derivatives at (t, x): a fresh array."""
+        if self.specified_functions:
+            self._fill_specified(t, x)
+        elif self._py is not None:      # loop.derivatives inlined: the common case, in
+            #                             as few Python calls as possible
+            try:
+                xdot = self._py(self._py_ctx, t, x)
+            except (TypeError, ValueError):
+                pass                    # not a contiguous float64 array: below
+            else:
+                if xdot is None:
+                    raise SingularMassMatrix(t)
+                return xdot
+        s = self.specified_values
+        if self.loop is not None:
+            xdot, status = self.loop.derivatives(t, x)
+            if status:
+                raise SingularMassMatrix(t)
+            return xdot
+        out = self._rhs_out
+        self.rhs_function.call(np.array([t]), x, self.constant_values, s, out)
+        ns = self.nstate
+        xdot = out[:ns].copy()
+        n = self._n
+        if n:
+            mm = out[ns:ns + n * n].reshape(n, n)
+            f = out[ns + n * n:ns + n * n + n]
+            xdot[self.unknown_positions] = solve_mass_matrix(mm, f, t)
+        return xdot
+
+    def last_mass_matrix(self) -> np.ndarray | None:
+        """The mass matrix of the last evaluation of the derivatives (None when the
+        model solves no accelerations)."""
+        n, ns = self._n, self.nstate
+        if not n:
+            return None
+        out = self.loop.out_buffer if self.loop is not None else self._rhs_out
+        return np.array(out[ns:ns + n * n]).reshape(n, n)
+
+    def _accel_inputs(self, t, x, xdot, solved) -> np.ndarray:
+        parts = []
+        if self._n:
+            if xdot is None:
+                try:
+                    xdot = self.derivatives(t, x)
+                except SingularMassMatrix:          # outputs that need them are NaN
+                    xdot = np.full(self.nstate, np.nan)
+            parts.append(xdot[self.unknown_positions])
+        if self.solved:
+            parts.append(np.asarray(solved, dtype=float))
+        return np.concatenate(parts) if parts else np.zeros(0)
+
+    def _call(self, fn, size, t, x, xdot=None, solved=()) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        a = self._accel_inputs(t, x, xdot, solved)
+        s = self._fill_specified(t, x) if self.specified_functions else self.specified_values
+        out = np.empty(size)
+        fn.call(np.array([t]), x, self.constant_values, s, a, out)
+        return out
+
+    def outputs(self, t: float, x=(), xdot=None, solved=()) -> np.ndarray:
+        """Every output column and ENCODE value at (t, x), in internal units."""
+        return self._call(self.output_function, self.n_outputs, t, x, xdot, solved)
+
+    def extra(self, name: str, t: float, x=(), solved=()) -> np.ndarray:
+        fn, size = self.extra_functions[name]
+        return self._call(fn, size, t, x, None, solved)

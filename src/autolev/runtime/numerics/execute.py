@@ -1,0 +1,114 @@
+"""Executing a prepared CODE command: computing it (integrated, evaluated or solved)
+and writing its set of files.  No sympy for an integrated one: a warm run executes
+its run plan's commands with this alone (run.py prepares them from the model).
+"""
+from __future__ import annotations
+
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..code_kinds import CodeKind
+from ..errors import AutolevModelError
+from .dynamics import run_dynamics
+from .files import RunFiles, check_room, dir_text, encoded_text, termination_cleans_up
+from .options import RunOptions
+from .results import Result
+
+
+@dataclass
+class Execution:
+    """A prepared CODE command, as its run computes and writes it: the system (a
+    NumericSystem, or a run plan's) and inputs it runs on, and what its files hold
+    besides the rows."""
+
+    kind: CodeKind
+    stem: str
+    filename: str               # the CODE command's, as written
+    program_file: str           # the program's file name (NAME.c), as the .dir names it
+    system: object
+    inputs: object              # Inputs, or a run plan's PlannedInputs
+    state_names: list
+    given: dict                 # input name -> its value as given
+    zero_params: list           # the constants that are 0, by name
+    columns: list               # (labels, units) of each output file
+    in_text: str                # NAME.in with the run's values (when it writes files)
+    encoded: list               # the ENCODE names (NAME.encode)
+    rows_expected: int
+    language: str               # of Autolev's program: "c", "m", "f"...
+    method: str
+    extra_values: list          # the constraints' extra constants
+    unknowns: list              # ALGEBRAIC/NONLINEAR
+    sweep: tuple | None
+    build_seconds: float
+
+
+def execute(execution: Execution, out_dir=None,
+            options: RunOptions = RunOptions()) -> Result:
+    """Compute a prepared command and write its files into out_dir (see run_command)."""
+    e = execution
+    system, inputs, kind, stem = e.system, e.inputs, e.kind, e.stem
+    result = Result(kind, stem, np.zeros(0), np.zeros((0, system.nstate)),
+                    list(e.state_names), [], {}, dict(e.given), system=system,
+                    execution=e)
+    result.stats["build_seconds"] = e.build_seconds
+
+    def perform(writer):
+        if kind.integrates:
+            run_dynamics(system, inputs, result, writer, e.method, options.progress,
+                         e.zero_params, options.compiled, options.constraints,
+                         e.extra_values, program=e.language, keep_rows=options.keep_rows)
+        else:
+            from .algebraic import run_algebraic    # (sympy) never from a run plan
+            run_algebraic(system, inputs, result, writer, kind, e.unknowns, e.sweep,
+                          e.zero_params, options.keep_rows)
+
+    if out_dir is None:
+        perform(None)
+        return result
+    folder = Path(out_dir)
+    own_in = folder / f"{stem}.in"
+    with termination_cleans_up():
+        with _writing(folder):
+            run_files = RunFiles(folder, stem, options.overwrite)
+        writes_in = options.infile is None or \
+            Path(options.infile).resolve() != own_in.resolve()
+        try:
+            with _writing(folder):
+                check_room(folder, e.rows_expected, [len(labels) for labels, _ in e.columns])
+                run_files.claim([own_in.name] * writes_in + [f"{stem}.dir", f"{stem}.encode"]
+                                + [f"{stem}.{k}" for k in range(1, len(e.columns) + 1)])
+                if writes_in:
+                    run_files.text(own_in.name, e.in_text)
+                writer = run_files.tables(e.columns)
+                perform(writer)          # rows are written as they come (a full disk, too)
+                extra_files = []
+                if e.encoded:
+                    run_files.text(f"{stem}.encode",
+                                   encoded_text(list(result.encoded.items())))
+                    extra_files.append((f"{stem}.encode", ",".join(e.encoded)))
+                # the `.dir` names the program whose files these are
+                run_files.text(f"{stem}.dir", dir_text(
+                    stem, e.program_file,
+                    [labels for labels, _ in e.columns], extra_files))
+                result.files = run_files.commit()
+        except BaseException:
+            run_files.discard()
+            raise
+        finally:
+            run_files.release()
+    return result
+
+
+@contextmanager
+def _writing(folder: Path):
+    """A failure of the disk (a read-only or full folder, a file where the folder
+    should be) as one message naming the place, not a traceback."""
+    try:
+        yield
+    except OSError as exc:
+        where = exc.filename or folder
+        raise AutolevModelError(f"cannot write the output files into {folder}: "
+                                f"{exc.strerror or exc} ({where})") from None
