@@ -29,7 +29,6 @@ from .runtime.numerics.execute import Execution
 from .runtime.numerics.results import Column
 
 
-
 class PlannedInputs:
     """A run's inputs as numbers: the integration parameters and the initial state."""
 
