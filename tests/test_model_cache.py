@@ -396,3 +396,22 @@ def test_a_plan_with_an_in_file_is_that_files_content(cache, tmp_path):
     assert edited.returncode == 0 and "its run plan" not in edited.stdout
     assert abs(np.loadtxt(tmp_path / "d" / "pushed.1", comments="%")[0, 0]
                - math.radians(40)) < 1e-6
+
+
+def test_a_run_from_its_plan_refuses_a_file_it_did_not_write_as_a_run_does(cache,
+                                                                           tmp_path):
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED)
+    env = dict(os.environ)
+    assert run_cli(["run", str(model), "--out", str(tmp_path / "a")], env).returncode == 0
+    refusals = []
+    for planned, folder in ((True, tmp_path / "b"), (False, tmp_path / "c")):
+        folder.mkdir()
+        (folder / "pushed.1").write_text("the user's own\n")
+        r = run_cli(["run", str(model), "--out", str(folder)],
+                    dict(env, AUTOLEV_NO_MODEL_CACHE="0" if planned else "1"))
+        assert r.returncode == 1 and ("its run plan" in r.stdout) == planned
+        assert (folder / "pushed.1").read_text() == "the user's own\n"
+        refusals.append(r.stderr.splitlines()[-1].replace(str(folder), "OUT"))
+    assert refusals[0] == refusals[1]
+    assert "error: CODE DYNAMICS: cannot write the output files into OUT" in refusals[0]

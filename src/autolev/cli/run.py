@@ -100,7 +100,7 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
     from ..runtime.errors import AutolevModelError
     from ..runtime.numerics.execute import execute
     from ..runtime.numerics.options import RunOptions
-    from ..runtime.numerics.results import run_summary
+    from ..runtime.numerics.results import command_error, run_summary
     start = time.monotonic()
     sys.stderr.write(plan.load_messages)
     if not ns.quiet:
@@ -117,7 +117,7 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
                     progress=None if ns.quiet else sys.stderr, infile=ns.infile,
                     keep_rows=False, overwrite=ns.overwrite))
         except AutolevModelError as exc:
-            print(f"{planned.label}: error: {exc}", file=sys.stderr)
+            print(f"{planned.label}: error: {command_error(e.kind, exc)}", file=sys.stderr)
             status = 1
             continue
         if not ns.quiet:

@@ -14,7 +14,7 @@ from .errors import AutolevModelError
 from .io import CodeCommand, CodeKind
 from .numerics.files import safe_stem
 from .numerics.prepare import keep_built
-from .numerics.results import Result, run_summary
+from .numerics.results import Result, command_error, run_summary
 from .numerics.command import names_a_quantity
 from .numerics.options import RunOptions
 from .numerics.run import run_command
@@ -100,10 +100,8 @@ class SimulationMixin:
                 except AutolevModelError as exc:
                     if not keep_going:
                         raise
-                    text = str(exc)
-                    if not text.startswith("CODE"):
-                        text = f"CODE {command.kind.upper()}: {text}"
-                    yield CommandRun(command, None, text, time.monotonic() - start)
+                    yield CommandRun(command, None, command_error(command.kind, exc),
+                                     time.monotonic() - start)
                     continue
                 yield CommandRun(command, result, None, time.monotonic() - start)
         finally:

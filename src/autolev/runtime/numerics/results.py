@@ -220,3 +220,9 @@ def run_summary(kind: CodeKind, filename: str, result: Result, seconds: float) -
             f": {stats['method']}, {stats.get('steps')} steps" if stats.get("method")
             else ""))
     return f"CODE {kind.upper()} {filename}: {what} in {seconds:.2f} s ({'; '.join(parts)})"
+
+
+def command_error(kind: CodeKind, exc: Exception) -> str:
+    """Why a CODE command could not run, as its message begins: `CODE DYNAMICS: ...`."""
+    text = str(exc)
+    return text if text.startswith("CODE") else f"CODE {kind.upper()}: {text}"
