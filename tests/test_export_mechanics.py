@@ -40,6 +40,13 @@ def exported(name: str, folder, *options) -> Path:
     return out
 
 
+def script_of(folder, name: str, text: str) -> str:
+    """The SymPy script of a model written here (`text`, saved as `name`)."""
+    path = folder / name
+    path.write_text(text)
+    return export_sympy(autolev.load(path), name)
+
+
 @pytest.mark.parametrize("name", MECHANICS)
 def test_the_scripts_kane_equals_our_equations_and_runs_as_autolev_run(name, tmp_path):
     script = exported(name, tmp_path)
@@ -125,26 +132,21 @@ CODE DYNAMICS() extra.c
 def test_equations_beyond_fr_plus_frstar_are_not_written_as_sympys_kane(tmp_path):
     # ZERO has a spring term no load gives: KanesMethod on the bodies and loads would drop
     # it, so auto writes the equations, and mechanics is refused
-    path = tmp_path / "extra.al"
-    path.write_text(EXTRA_TERM)
-    model = autolev.load(path)
-    text = export_sympy(model, "extra.al")
+    text = script_of(tmp_path, "extra.al", EXTRA_TERM)
     assert "Not the mechanics level: sympy's KanesMethod on the model's bodies and loads " \
            "does not give the equations the run integrates" in " ".join(text.split())
     with pytest.raises(AutolevModelError, match="does not give the equations"):
-        export_sympy(model, "extra.al", level="mechanics")
+        export_sympy(autolev.load(tmp_path / "extra.al"), "extra.al", level="mechanics")
 
 
 def test_the_rate_of_a_specified_quantity_keeps_a_model_at_the_equations_level(tmp_path):
     # dogtail's PX': auto raised "the mechanics level has no specified quantity px'"
-    path = tmp_path / "base.al"
-    path.write_text("NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' Q'\nSPECIFIED PX''\n"
-                    "CONSTANTS M\nMASS P = M\nP_NO_P> = (PX + Q)*N1>\n"
-                    "V_P_N> = DT(P_NO_P>, N)\nA_P_N> = DT(V_P_N>, N)\n"
-                    "ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 2, Q = 0, Q' = 0, TFINAL = 1\n"
-                    "OUTPUT T, Q\nCODE DYNAMICS() base.c\n")
-    model = autolev.load(path)
-    text = export_sympy(model, "base.al")
+    text = script_of(tmp_path, "base.al",
+                     "NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' Q'\nSPECIFIED PX''\n"
+                     "CONSTANTS M\nMASS P = M\nP_NO_P> = (PX + Q)*N1>\n"
+                     "V_P_N> = DT(P_NO_P>, N)\nA_P_N> = DT(V_P_N>, N)\n"
+                     "ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 2, Q = 0, Q' = 0, TFINAL = 1\n"
+                     "OUTPUT T, Q\nCODE DYNAMICS() base.c\n")
     assert "\nLevel: equations." in text
     assert "its equations read PX'', the rates of specified quantities" in " ".join(text.split())
 
@@ -221,15 +223,13 @@ def test_each_object_says_the_statements_it_comes_from(tmp_path):
 def test_a_coordinate_the_model_defines_keeps_it_at_the_equations_level(tmp_path):
     # dogtail's 3dpendulum sets Q4 = 0: the run does not integrate it, and its script
     # at the mechanics level stopped on the missing initial value of q4
-    path = tmp_path / "fixed.al"
-    path.write_text("NEWTONIAN N\nFRAMES A\nPARTICLES P\nMOTIONVARIABLES' Q{2}', U{2}'\n"
-                    "CONSTANTS M, L, G\nQ2 = 0\nSIMPROT(N, A, 3, Q1 + Q2)\nQ1' = U1\n"
-                    "Q2' = U2\nW_A_N> = (U1 + U2)*N3>\nP_NO_P> = L*A1>\n"
-                    "V_P_N> = DT(P_NO_P>, N)\nMASS P = M\nGRAVITY(-G*N2>)\n"
-                    "ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 1, L = 1, G = 9.81, Q1 = 0.3\n"
-                    "OUTPUT Q1\nCODE DYNAMICS() fixed.c\n")
-    model = autolev.load(path)
-    text = export_sympy(model, "fixed.al")
+    text = script_of(tmp_path, "fixed.al",
+                     "NEWTONIAN N\nFRAMES A\nPARTICLES P\nMOTIONVARIABLES' Q{2}', U{2}'\n"
+                     "CONSTANTS M, L, G\nQ2 = 0\nSIMPROT(N, A, 3, Q1 + Q2)\nQ1' = U1\n"
+                     "Q2' = U2\nW_A_N> = (U1 + U2)*N3>\nP_NO_P> = L*A1>\n"
+                     "V_P_N> = DT(P_NO_P>, N)\nMASS P = M\nGRAVITY(-G*N2>)\n"
+                     "ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 1, L = 1, G = 9.81, Q1 = 0.3\n"
+                     "OUTPUT Q1\nCODE DYNAMICS() fixed.c\n")
     assert "\nLevel: equations." in text
     assert "it defines Q2, which KanesMethod would take as coordinates" in " ".join(
         text.split())
@@ -238,22 +238,20 @@ def test_a_coordinate_the_model_defines_keeps_it_at_the_equations_level(tmp_path
 def test_accelerations_the_model_defines_are_named_when_sympys_equations_differ(tmp_path):
     # MAE-223's bicycles write ALF_B_A> = DT(W_B_A>, N): differentiated in N, not in A,
     # which Autolev's FRSTAR takes as given; sympy derives the angular acceleration
-    path = tmp_path / "spun.al"
-    path.write_text("NEWTONIAN N\nFRAMES A\nBODIES B\nMOTIONVARIABLES' Q{2}', U{2}'\n"
-                    "CONSTANTS I1, I2, I3, M\nSIMPROT(N, A, 3, Q1)\nSIMPROT(A, B, 1, Q2)\n"
-                    "Q1' = U1\nQ2' = U2\nW_A_N> = U1*N3>\nW_B_A> = U2*A1>\n"
-                    "ALF_A_N> = DT(W_A_N>, N)\nALF_B_A> = DT(W_B_A>, N)\n"
-                    "MASS B = M\nINERTIA B, I1, I2, I3\nV_BO_N> = 0>\n"
-                    "ZERO = FR() + FRSTAR()\nKANE()\n"
-                    "INPUT I1 = 1, I2 = 2, I3 = 3, M = 1, U1 = 1, U2 = 1\n"
-                    "OUTPUT Q1, Q2\nCODE DYNAMICS() spun.c\n")
-    model = autolev.load(path)
-    raw = export_sympy(model, "spun.al")
+    spun = ("NEWTONIAN N\nFRAMES A\nBODIES B\nMOTIONVARIABLES' Q{2}', U{2}'\n"
+            "CONSTANTS I1, I2, I3, M\nSIMPROT(N, A, 3, Q1)\nSIMPROT(A, B, 1, Q2)\n"
+            "Q1' = U1\nQ2' = U2\nW_A_N> = U1*N3>\nW_B_A> = U2*A1>\n"
+            "ALF_A_N> = DT(W_A_N>, N)\nALF_B_A> = DT(W_B_A>, N)\n"
+            "MASS B = M\nINERTIA B, I1, I2, I3\nV_BO_N> = 0>\n"
+            "ZERO = FR() + FRSTAR()\nKANE()\n"
+            "INPUT I1 = 1, I2 = 2, I3 = 3, M = 1, U1 = 1, U2 = 1\n"
+            "OUTPUT Q1, Q2\nCODE DYNAMICS() spun.c\n")
+    raw = script_of(tmp_path, "spun.al", spun)
     assert "\nLevel: equations." in raw
     text = " ".join(raw.split())
     assert "the model defines accelerations of its own, which KanesMethod derives from " \
            "the velocities instead (spun.al:12: ALF_A_N> = DT(W_A_N>, N); " \
            "spun.al:13: ALF_B_A> = DT(W_B_A>, N))" in text
     # differentiated in A, the angular acceleration is sympy's, and so are the equations
-    path.write_text(path.read_text().replace("DT(W_B_A>, N)", "DT(W_B_A>, A)"))
-    assert "\nLevel: mechanics." in export_sympy(autolev.load(path), "spun.al")
+    assert "\nLevel: mechanics." in script_of(tmp_path, "spun.al",
+                                              spun.replace("DT(W_B_A>, N)", "DT(W_B_A>, A)"))

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import functools
 import hashlib
+import importlib.util
 import os
 import platform
-import importlib.util
 from pathlib import Path
 
 # the layout of what the caches keep: a change makes every entry stale
@@ -45,6 +45,16 @@ def code_digest() -> str:
     for path in sorted(_PACKAGE.rglob("*")):
         if path.suffix in (".py", ".c", ".g4") and "__pycache__" not in path.parts:
             h.update(str(path.relative_to(_PACKAGE)).encode() + b"\0" + path.read_bytes())
+    return h.hexdigest()
+
+
+def file_key(kind: str, path: Path, raw: bytes, *more: bytes) -> str:
+    """The digest naming a cache entry of `kind` made from the file at `path` that holds
+    `raw` (and from `more`): autolev's code, the file's name and its content."""
+    h = hashlib.sha256(code_digest().encode() + b"\0" + kind.encode() + b"\0"
+                       + str(path).encode("utf-8", "surrogatepass") + b"\0" + raw)
+    for part in more:
+        h.update(b"\0" + part)
     return h.hexdigest()
 
 

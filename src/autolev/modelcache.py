@@ -24,7 +24,7 @@ from pathlib import Path
 
 import sympy as sm
 
-from .cachekeys import PLAN_PREFIX, code_digest, enabled, manifest
+from .cachekeys import PLAN_PREFIX, code_digest, enabled, file_key, manifest
 from .runtime import diskcache
 from .runtime.libraries import sum_or_product_as_given
 
@@ -122,9 +122,8 @@ def translation(path: Path, make):
         raw = path.read_bytes()
     except OSError:
         return make()                  # the translation reports the unreadable file
-    key_ = hashlib.sha256(code_digest().encode() + b"\0translation\0"
-                          + str(path).encode("utf-8", "surrogatepass") + b"\0" + raw)
-    entry = diskcache.cache_dir() / f"{TRANSLATION_PREFIX}{key_.hexdigest()[:40]}.pickle"
+    key_ = file_key("translation", path, raw)
+    entry = diskcache.cache_dir() / f"{TRANSLATION_PREFIX}{key_[:40]}.pickle"
     kept = _load(entry)
     if isinstance(kept, _KeptTranslation) and \
             kept.manifest == manifest(path, kept.translation.files):

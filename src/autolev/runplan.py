@@ -13,7 +13,6 @@ nothing.  Anything else runs from the model.
 """
 from __future__ import annotations
 
-import hashlib
 import io
 import pickle
 from dataclasses import dataclass, replace
@@ -21,8 +20,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .cachekeys import PLAN_PREFIX, code_digest, enabled, manifest
+from .cachekeys import PLAN_PREFIX, enabled, file_key, manifest
 from .runtime import diskcache
+from .runtime.code_kinds import INTEGRATION_PARAMETERS
 from .runtime.numerics.clibrary import CompileError
 from .runtime.numerics.evaluation import CompiledEvaluation
 from .runtime.numerics.execute import Execution
@@ -92,20 +92,18 @@ class RunPlan:
 
 def can_plan(execution: Execution, result) -> bool:
     """Whether a command's run can be repeated from a plan: integrated in the compiled
-    loop (no user functions), ended well (`autolev run` projects onto no
-    constraints)."""
+    loop (its right-hand side C; no user functions), its outputs C, ended well
+    (`autolev run` projects onto no constraints)."""
     system = execution.system
     return (execution.kind.integrates and result.failure is None
             and system.loop is not None and not system.specified_functions
-            and system.rhs_function.backend == "c" and system.output_function.backend == "c"
-            and not system.extra_functions)
+            and system.output_function.backend == "c" and not system.extra_functions)
 
 
 def planned_command(execution: Execution, label: str, messages: str) -> PlannedCommand:
     """The command's execution with its system and inputs reduced to numbers."""
     inputs = execution.inputs
-    integration = {k: inputs.internal(k) for k in
-                   ("TINITIAL", "TFINAL", "INTEGSTP", "PRINTINT", "ABSERR", "RELERR")}
+    integration = {k: inputs.internal(k) for k in INTEGRATION_PARAMETERS}
     initial = inputs.vector(execution.system.states)
     reduced = replace(execution, system=PlannedSystem(execution.system,
                                                       execution.state_names),
@@ -115,20 +113,19 @@ def planned_command(execution: Execution, label: str, messages: str) -> PlannedC
 
 def _entry(path: Path, options: tuple) -> Path | None:
     """The plan's place in the cache for the model file at `path` run with `options`
-    (what the command line gave that changes the run; an .in file among them by its
-    bytes).  None: a file unreadable, or the caches turned off."""
+    (what the command line gave that changes the run, the .in file first: by its
+    content too).  None: a file unreadable, or the caches turned off."""
     if not enabled():
         return None
+    infile = options[0]
     try:
         raw = path.read_bytes()
-        read = [Path(option).read_bytes() for option in options[:1] if option is not None]
+        given = Path(infile).read_bytes() if infile is not None else b""
     except OSError:
         return None
-    key = hashlib.sha256(code_digest().encode() + b"\0plan\0"
-                         + str(path.resolve()).encode("utf-8", "surrogatepass") + b"\0" + raw
-                         + repr(options).encode("utf-8", "surrogatepass") + b"\0"
-                         + b"".join(read))
-    return diskcache.cache_dir() / f"{PLAN_PREFIX}{key.hexdigest()[:40]}.pickle"
+    key = file_key("plan", path.resolve(), raw, repr(options).encode("utf-8", "surrogatepass"),
+                   given)
+    return diskcache.cache_dir() / f"{PLAN_PREFIX}{key[:40]}.pickle"
 
 
 def write_plan(path: Path, options: tuple, files_read: list, load_messages: str,

@@ -171,9 +171,10 @@ class AlgebraMixin:
         self._keep_speeds(unknowns)
         for u, v in zip(unknowns, solution):
             self.define(u, v)
-        if all(S.base_and_order(u) in {(b, 1) for b in self.solved_speeds} for u in unknowns):
+        rates = {S.derivative(b) for b in self.solved_speeds}
+        if all(u in rates for u in unknowns):
             self.solved_rates.append(SolvedRates(
-                tuple(unknowns), tuple(eqs), tuple(self.defs.rhs.get(u) for u in unknowns)))
+                tuple(unknowns), tuple(eqs), tuple(self.defs.rhs[u] for u in unknowns)))
 
     def _keep_speeds(self, unknowns) -> None:
         """A generalized speed u stays one when SOLVE defines u' (SOLVE(ZERO, U')), although

@@ -130,6 +130,19 @@ def take_time(command, inputs, dependent: list[str]) -> None:
                       "reads its variables: T = 0 (give it with --set T=VALUE)", stacklevel=6)
 
 
+def definitions_at(model, command) -> dict:
+    """The model's definitions as `command` sees them: those at its CODE line, or the
+    model's own for a command made later (a plain run)."""
+    return model.defs.user_definitions() if command.definitions is None \
+        else command.definitions
+
+
+def with_undefined(model, command, symbols: set):
+    """A copy of `command` in which `symbols` have no definition."""
+    return replace(command, definitions={s: e for s, e in definitions_at(model, command).items()
+                                         if s not in symbols})
+
+
 def program_of(model, command):
     """The command as its numeric system is built: where SOLVE defined the independent
     speeds' derivatives (SOLVE(ZERO, U4', U6', U7')), a copy in which they are undefined,
@@ -166,10 +179,7 @@ def _solved_numerically(model, command) -> tuple:
             solves = [r for r in in_effect if set(r.unknowns) == wanted]
             if solves:
                 solve = solves[-1]
-                definitions = (model.defs.user_definitions() if command.definitions is None
-                               else command.definitions)
-                found = (replace(command, definitions={s: e for s, e in definitions.items()
-                                                       if s not in wanted}),
+                found = (with_undefined(model, command, wanted),
                          (list(solve.equations), list(solve.unknowns)))
     kept[id(command)] = (command, found)
     return found
@@ -206,10 +216,8 @@ def given_specified(model, command, specified, overrides):
     key = (id(command), tuple(sorted((str(k), sm.srepr(v)) for k, v in given.items())))
     entry = kept.get(key)
     if entry is None or entry[0] is not command:
-        definitions = (model.defs.user_definitions() if command.definitions is None
-                       else command.definitions)
-        entry = kept[key] = (command, replace(command, definitions={**definitions,
-                                                                   **given}))
+        entry = kept[key] = (command, replace(
+            command, definitions={**definitions_at(model, command), **given}))
     return entry[1], functions, rest
 
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import time
 import warnings
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg
@@ -34,7 +34,7 @@ from . import clibrary, codegen
 from .inputs import display_name
 from .projection import Projector
 from .results import mat_file
-from .command import given_specified, program_of, solved_by_lu
+from .command import given_specified, program_of, solved_by_lu, with_undefined
 from .options import RunOptions
 from ..steps import SlowStep
 from .prepare import prepare_command, to_be_kept
@@ -362,13 +362,7 @@ def _with_kanes_equations(model, command):
     entry = kept.get(id(command))
     if entry is not None and entry[0] is command:
         return entry[1]
-    solved = {S.derivative(u) for u in model.solved_speeds}
-    if command.definitions is not None:
-        definitions = command.definitions
-    else:
-        definitions = model.defs.user_definitions()
-    unsolved = replace(command, definitions={s: e for s, e in definitions.items()
-                                             if s not in solved})
+    unsolved = with_undefined(model, command, {S.derivative(u) for u in model.solved_speeds})
     kept[id(command)] = (command, unsolved)
     return unsolved
 
