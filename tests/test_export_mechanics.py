@@ -139,16 +139,37 @@ def test_equations_beyond_fr_plus_frstar_are_not_written_as_sympys_kane(tmp_path
         export_sympy(autolev.load(tmp_path / "extra.al"), "extra.al", level="mechanics")
 
 
-def test_the_rate_of_a_specified_quantity_keeps_a_model_at_the_equations_level(tmp_path):
-    # dogtail's PX': auto raised "the mechanics level has no specified quantity px'"
-    text = script_of(tmp_path, "base.al",
-                     "NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' Q'\nSPECIFIED PX''\n"
-                     "CONSTANTS M\nMASS P = M\nP_NO_P> = (PX + Q)*N1>\n"
-                     "V_P_N> = DT(P_NO_P>, N)\nA_P_N> = DT(V_P_N>, N)\n"
-                     "ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 2, Q = 0, Q' = 0, TFINAL = 1\n"
-                     "OUTPUT T, Q\nCODE DYNAMICS() base.c\n")
-    assert "\nLevel: equations." in text
-    assert "its equations read PX'', the rates of specified quantities" in " ".join(text.split())
+def test_the_rate_of_a_specified_quantity_is_its_derivative_in_sympys_kane(tmp_path):
+    # a pendulum on a base moving as PX(t) along N1 (dogtail's base), gravity along -N1:
+    # by Lagrange's equations, by hand, M L^2 Q'' = M L (G + PX'') sin Q; PX'' is
+    # px(t).diff(t, 2) for KanesMethod
+    path = tmp_path / "base.al"
+    path.write_text("NEWTONIAN N\nFRAMES A\nPARTICLES P\nPOINTS B\nMOTIONVARIABLES' Q'\n"
+                    "SPECIFIED PX''\nCONSTANTS M, L, G\nSIMPROT(N, A, 3, Q)\n"
+                    "W_A_N> = Q'*N3>\nP_NO_B> = PX*N1>\nP_B_P> = L*A1>\n"
+                    "V_P_N> = DT(P_NO_P>, N)\nA_P_N> = DT(V_P_N>, N)\nMASS P = M\n"
+                    "GRAVITY(-G*N1>)\nZERO = FR() + FRSTAR()\nKANE()\n"
+                    "INPUT M = 2, L = 1.5, G = 9.81, Q = 0.4, Q' = 0, TFINAL = 1\n"
+                    "OUTPUT T, Q\nCODE DYNAMICS() base.c\n")
+    script = tmp_path / "base_sympy.py"
+    script.write_text(export_sympy(autolev.load(path), "base.al"))
+    text = script.read_text()
+    assert "\nLevel: mechanics." in text and "PXpp = PX.diff(t, 2)" in text
+    ns = runpy.run_path(str(script))
+    t, q, m, lk, g = (ns[n] for n in ("t", "Q", "M", "L", "G"))
+    u, = ns["kane"].u
+    px = ns["PX"]
+    mass = sm.diag(1, m * lk ** 2)
+    forcing = sm.Matrix([u, m * lk * (g + px.diff(t, 2)) * sm.sin(q)])
+    assert sm.simplify(ns["full_mass"] - mass) == sm.zeros(2, 2)
+    assert sm.simplify(ns["full_forcing"] - forcing) == sm.zeros(2, 1)
+    assert set(ns["specified"]) == {px.diff(t, 2)}
+    # at random values of PX'' too, and integrated as `autolev run` does
+    model = autolev.load(path)
+    found = run_script(script, tmp_path / "rows.csv")
+    assert found["specified"] == ["PX''"]
+    assert equations_difference(model, model.code_commands[0], found) <= 1e-10
+    assert rows_difference(model, tmp_path / "rows.csv") <= 1e-6
 
 
 def test_the_first_seed_systems_script_gives_sympys_published_equations(tmp_path):
@@ -220,19 +241,47 @@ def test_each_object_says_the_statements_it_comes_from(tmp_path):
         "fourbar.al:48: CONSTRAIN(DEPENDENT[U2, U3])"]
 
 
-def test_a_coordinate_the_model_defines_keeps_it_at_the_equations_level(tmp_path):
-    # dogtail's 3dpendulum sets Q4 = 0: the run does not integrate it, and its script
-    # at the mechanics level stopped on the missing initial value of q4
-    text = script_of(tmp_path, "fixed.al",
-                     "NEWTONIAN N\nFRAMES A\nPARTICLES P\nMOTIONVARIABLES' Q{2}', U{2}'\n"
-                     "CONSTANTS M, L, G\nQ2 = 0\nSIMPROT(N, A, 3, Q1 + Q2)\nQ1' = U1\n"
-                     "Q2' = U2\nW_A_N> = (U1 + U2)*N3>\nP_NO_P> = L*A1>\n"
-                     "V_P_N> = DT(P_NO_P>, N)\nMASS P = M\nGRAVITY(-G*N2>)\n"
-                     "ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 1, L = 1, G = 9.81, Q1 = 0.3\n"
-                     "OUTPUT Q1\nCODE DYNAMICS() fixed.c\n")
-    assert "\nLevel: equations." in text
-    assert "it defines Q2, which KanesMethod would take as coordinates" in " ".join(
-        text.split())
+def test_a_coordinate_the_model_defines_is_a_prescribed_motion_in_sympys_kane(tmp_path):
+    # an arm turned at a prescribed rate (QA = OMEGA*T, as the sprinters prescribe their
+    # joint angles) carrying a pendulum; by Lagrange's equations, by hand:
+    # L2^2 Q'' = -L1 L2 OMEGA^2 sin Q
+    path = tmp_path / "arm.al"
+    path.write_text("NEWTONIAN N\nFRAMES A, B\nPARTICLES P\nPOINTS E\n"
+                    "VARIABLES QA''\nMOTIONVARIABLES' Q'\nCONSTANTS M, L1, L2, OMEGA\n"
+                    "QA = OMEGA*T\nQA' = OMEGA\nQA'' = 0\n"
+                    "SIMPROT(N, A, 3, QA)\nSIMPROT(A, B, 3, Q)\n"
+                    "W_A_N> = QA'*N3>\nW_B_A> = Q'*N3>\nP_NO_E> = L1*A1>\nP_E_P> = L2*B1>\n"
+                    "V_P_N> = DT(P_NO_P>, N)\nA_P_N> = DT(V_P_N>, N)\nMASS P = M\n"
+                    "ZERO = FR() + FRSTAR()\nKANE()\n"
+                    "INPUT M = 2, L1 = 1, L2 = 0.5, OMEGA = 3, Q = 0.4, Q' = 0, TFINAL = 1\n"
+                    "OUTPUT T, Q\nCODE DYNAMICS() arm.c\n")
+    script = tmp_path / "arm_sympy.py"
+    script.write_text(export_sympy(autolev.load(path), "arm.al"))
+    text = script.read_text()
+    assert "\nLevel: mechanics." in text
+    assert "A.orient_axis(N, N.z, OMEGA*t)" in text
+    ns = runpy.run_path(str(script))
+    t, q, m, l1, l2, omega = (ns[n] for n in ("t", "Q", "M", "L1", "L2", "OMEGA"))
+    assert list(ns["kane"].q) == [q]
+    u, = ns["kane"].u
+    x = sm.Symbol("x")          # Q, for Lagrange's partial derivatives
+    angle = omega * t
+    position = sm.Matrix([l1 * sm.cos(angle) + l2 * sm.cos(angle + q),
+                          l1 * sm.sin(angle) + l2 * sm.sin(angle + q)])
+    kinetic = (m * position.diff(t).dot(position.diff(t)) / 2).subs(q.diff(t), u)
+    lagrange = (kinetic.diff(u).diff(t).subs(q.diff(t), u)
+                - kinetic.subs(q, x).diff(x).subs(x, q))
+    # lagrange = 0 is mass * u' - forcing = 0
+    mass = lagrange.diff(u.diff(t))
+    forcing = -(lagrange - mass * u.diff(t))
+    assert sm.simplify(mass - m * l2 ** 2) == 0
+    assert sm.simplify(forcing + m * l1 * l2 * omega ** 2 * sm.sin(q)) == 0
+    assert sm.simplify(ns["full_mass"] - sm.diag(1, mass)) == sm.zeros(2, 2)
+    assert sm.simplify(ns["full_forcing"] - sm.Matrix([u, forcing])) == sm.zeros(2, 1)
+    model = autolev.load(path)
+    found = run_script(script, tmp_path / "rows.csv")
+    assert equations_difference(model, model.code_commands[0], found) <= 1e-10
+    assert rows_difference(model, tmp_path / "rows.csv") <= 1e-6
 
 
 def test_accelerations_the_model_defines_are_named_when_sympys_equations_differ(tmp_path):

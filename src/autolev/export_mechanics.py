@@ -105,7 +105,9 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
     frames = [h.newtonian] + [child for _, child, _, _ in h.orientations]
     for f in frames:
         names[f] = identifier(f.name, taken)
-    for q in model.coordinates:
+    # the model's coordinates KanesMethod takes (not those the model defines)
+    coordinates = [x for x, f in h.states.items() if f in h.coordinates]
+    for q in coordinates:
         names[q] = names[h.states[q]] = identifier(q.name, taken)
     for u in model.speeds:
         names[u] = names[h.states[u]] = identifier(str(h.states[u].func), taken)
@@ -114,11 +116,17 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
     for ours, force in zip(model.kane_equations.unknowns if h.unknowns else [], h.unknowns):
         # one name for KANE's unknown in the loads and as the run computes it
         names[ours] = names[force] = identifier(str(force.func), taken)
-    specified = {str(s.func): s for s in h.specified}
+    rates_of_specified = []
     for s in eqs.specified:
-        if s.name not in specified:
-            raise AutolevModelError(f"the mechanics level has no specified quantity {s.name}")
-        names[s] = names[specified[s.name]] = identifier(s.name, taken)
+        base, order = S.base_and_order(s)
+        f = h.specified_of(base)
+        names.setdefault(f, identifier(base.name, taken))
+        if order:
+            # a rate of a specified quantity: its derivative, given a value of its own
+            names[s] = identifier(base.name + "p" * order, taken)
+            rates_of_specified.append((s, f, order))
+        else:
+            names[s] = names[f]
     for c in h.constants:
         names[c] = identifier(c.name, taken)
     plain = {c.name: c for c in h.constants}
@@ -182,6 +190,8 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
         out += ["", "# specified quantities: functions of time (values in `specified`)"]
         out += [f"{names[s]} = me.dynamicsymbols({str(s.func)!r})" for s in h.specified
                 if s in names]
+        out += [f"{names[s]} = {names[f]}.diff(t{f', {order}' if order > 1 else ''})"
+                for s, f, order in rates_of_specified]
     if h.constants:
         out += ["", "# constants"]
         out += [f"{names[c]} = sm.Symbol({c.name!r})" for c in h.constants]
@@ -230,7 +240,7 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
         out += ["    " + line for line in said(("load", on.name))]
         out.append(f"    ({names[on]}, {printer.vector(v)}),")
     out += ["]", "", "# kinematical differential equations (each = 0)", "kd_eqs = ["]
-    for q, equation in zip(model.coordinates, h.kinematical_equations):
+    for q, equation in zip(coordinates, h.kinematical_equations):
         defined = where.get(q.name.upper() + "P")
         out += [f"    # {quoted_text(defined)}"] if defined else []
         rate = h.states[q].diff(me.dynamicsymbols._t) - equation
@@ -356,21 +366,14 @@ def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Hando
     if extra:
         return ("its state has " + ", ".join(sorted(s.name for s in extra))
                 + " beyond the coordinates and speeds"), None
-    fixed = (set(model.coordinates) | set(model.speeds)) - set(eqs.states)
+    fixed = set(model.speeds) - set(eqs.states)
     if fixed:
-        # dogtail's 3dpendulum: Q4 = 0 fixes one of the angles DIRCOS turns through
         return ("it defines " + ", ".join(sorted(s.name for s in fixed)) + ", which "
-                "KanesMethod would take as coordinates or speeds and the run does not "
-                "integrate"), None
+                "KanesMethod would take as speeds and the run does not integrate"), None
     try:
-        h = handoff(model)
+        h = handoff(model, set(eqs.states))
     except AutolevModelError as exc:
         return str(exc), None
-    handed = {str(s.func) for s in h.specified}
-    rates = [s.name for s in eqs.specified if s.name not in handed]
-    if rates:
-        return ("its equations read " + ", ".join(rates) + ", the rates of specified "
-                "quantities, which the mechanics level does not write"), None
     why = _unlike_the_run(h, eqs)
     if why is None:
         return None, h
@@ -386,13 +389,14 @@ def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Hando
 
 
 def _unlike_the_run(h: Handoff, eqs: Equations) -> str | None:
-    """Why sympy's equations are not the run's, found at a random state and constants
-    (specified quantities and their derivatives 0); None when they give its rates."""
+    """Why sympy's equations are not the run's, found at a random state, constants and
+    values of the specified quantities and their rates; None when they give its rates."""
     rng = np.random.default_rng(33)
     ours = {x: sm.Float(v) for x, v in zip(eqs.states, rng.uniform(-1, 1, len(eqs.states)))}
     ours |= {c: sm.Float(v) for c, v in zip(eqs.constants, rng.uniform(0.5, 1.5,
                                                                          len(eqs.constants)))}
-    ours |= {s: sm.Float(0) for s in eqs.specified} | {S.TIME: sm.Float(0.3)}
+    given = rng.uniform(-1, 1, len(eqs.specified))
+    ours |= {s: sm.Float(v) for s, v in zip(eqs.specified, given)} | {S.TIME: sm.Float(0.3)}
     before, _ = split_at_the_unknowns(eqs)
     for z, e in before:
         ours[z] = sm.sympify(e).xreplace(ours)
@@ -405,7 +409,8 @@ def _unlike_the_run(h: Handoff, eqs: Equations) -> str | None:
                       for x, r in zip(eqs.states, eqs.rates)])
     theirs = {h.states[x]: ours[x] for x in eqs.states}
     theirs |= {sm.Symbol(c.name): ours[c] for c in eqs.constants}
-    at = theirs | {s: sm.Float(0) for s in h.specified} | {me.dynamicsymbols._t: sm.Float(0.3)}
+    theirs |= {h.specified_of(s): ours[s] for s in eqs.specified}
+    at = theirs | {me.dynamicsymbols._t: sm.Float(0.3)}
     theirs |= {u: sm.Float(v) for u, v in h.dependent_speeds_at(at).items()}
     full = sm.Matrix.hstack(h.kane.mass_matrix_full, h.kane.forcing_full).xreplace(theirs)
     full = full.xreplace({d: 0 for d in full.atoms(sm.Derivative)})

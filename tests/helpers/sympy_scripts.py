@@ -48,6 +48,11 @@ if dependent:
     a, b = sm.linear_eq_to_matrix([me.msubs(c, kane.kindiffdict(), zero)
                                    for c in ns['velocity_constraints']], dependent)
     held = sm.lambdify([ns['t'], states[:-len(dependent)], constants, specified], [a, b])
+def named(s):
+    # a rate of a specified quantity (mechanics level) by its name and primes: px''
+    if isinstance(s, sm.Derivative):
+        return str(s.expr.func) + "'" * s.derivative_count
+    return str(s.func)
 points, tries = [], 0
 while len(points) < 20:
     tries += 1
@@ -68,7 +73,7 @@ while len(points) < 20:
 print(json.dumps({'level': level, 'dependent': len(dependent),
                   'states': [str(s.func) for s in states],
                   'constants': [str(c) for c in constants],
-                  'specified': [str(s.func) for s in specified], 'points': points}))
+                  'specified': [named(s) for s in specified], 'points': points}))
 sys.stdout.flush()
 sys.argv = [script, csv]
 runpy.run_path(script, run_name='__main__')      # ends with sys.exit(main(...))
@@ -106,9 +111,10 @@ def equations_difference(model, command, found: dict) -> float:
         constants = [sm.Symbol(n) for n in found["constants"]]
         as_run = {me.dynamicsymbols(c.name): c for c in constants}
         ours = sm.lambdify([me.dynamicsymbols._t, system.states, constants,
-                            [me.dynamicsymbols(n) for n in found["specified"]]],
+                            [specified_named(n) for n in found["specified"]]],
                            [m.xreplace(as_run) for m in (system.comb_implicit_mat,
-                                                         system.comb_implicit_rhs)])
+                                                         system.comb_implicit_rhs)],
+                           cse=True)     # expanded, the sprinters' print for minutes
         worst = 0.0
         for t, x, p, s, mass, forcing in found["points"]:
             our_mass, our_forcing = ours(t, x, p, s)
@@ -129,6 +135,14 @@ def equations_difference(model, command, found: dict) -> float:
         theirs = np.linalg.solve(np.asarray(mass), np.asarray(forcing))[:n]
         worst = max(worst, largest_difference(theirs, ours))
     return worst
+
+
+def specified_named(name: str):
+    """The dynamicsymbol of a specified quantity by the driver's name, or its rate (px'')."""
+    base = name.rstrip("'")
+    order = len(name) - len(base)
+    f = me.dynamicsymbols(base)
+    return f.diff(me.dynamicsymbols._t, order) if order else f
 
 
 def rows_difference(model, csv: Path, rows: int | None = None, **inputs) -> float:

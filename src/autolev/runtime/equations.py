@@ -115,13 +115,15 @@ class EquationsMixin:
     def coordinates(self) -> list:
         """Every variable the integration carries besides the speeds: those whose first
         derivative is defined (q' = ...) or is itself a speed (q''-only models), in
-        declaration order.  Dependent and auxiliary speeds are not among them."""
+        declaration order.  Dependent and auxiliary speeds are not among them, nor a
+        variable the model defines (a prescribed motion: QA = OMEGA*T, QA' = OMEGA)."""
         speeds = set(self.speeds)
         not_coordinates = set(self.dependent_speeds) | set(self.auxiliary_speeds) | speeds
         out = []
         for sym, info in sorted(self.info.items(), key=lambda kv: kv[1].index):
             if info.kind not in ("variable", "motionvariable") or \
-                    S.base_and_order(sym)[1] != 0 or sym in not_coordinates:
+                    S.base_and_order(sym)[1] != 0 or sym in not_coordinates or \
+                    sym in self.defs.rhs:
                 continue
             d = S.derivative(sym)
             if d in self.defs.rhs or d in speeds:

@@ -67,6 +67,18 @@ class Handoff:
                             [c.xreplace(derivatives).xreplace(zero)
                              for c in self.velocity_constraints], [], self.bodies, self.loads)
 
+    def specified_of(self, quantity):
+        """The sympy counterpart of the model's specified quantity or of one of its rates
+        (PX'' is px(t).diff(t, 2)); AutolevModelError when the model specifies no such
+        quantity."""
+        import sympy.physics.mechanics as me
+        base, order = S.base_and_order(quantity)
+        found = [s for s in self.specified if str(s.func) == base.name]
+        if not found:
+            raise AutolevModelError(f"the mechanics level has no specified quantity "
+                                    f"{base.name}")
+        return found[0].diff(me.dynamicsymbols._t, order) if order else found[0]
+
     def dependent_speeds_at(self, values: dict) -> dict:
         """{dependent speed: its value} where the velocity constraints hold, at `values`
         ({dynamicsymbol or constant: number}: the coordinates, independent speeds,
@@ -110,17 +122,22 @@ def _frames(model, mapping: dict, orientations: list, keep: frozenset) -> dict:
     return made
 
 
-def handoff(model) -> Handoff:
+def handoff(model, integrated=None) -> Handoff:
     """The model as sympy.physics.mechanics objects, Kane's equations formed by sympy's
     KanesMethod (AutolevModelError for what it does not take: an auxiliary speed not
-    zero in motion, a body or load in a frame not oriented in the Newtonian frame)."""
+    zero in motion, a body or load in a frame not oriented in the Newtonian frame).
+    `integrated`: the variables a CODE command integrates (its state), when the
+    hand-off is of that command; the coordinates are those among them.  A variable the
+    model defines (Q4 = 0, a prescribed joint angle) is no coordinate (Model.coordinates):
+    its definition enters the orientations and positions, as in a run."""
     import sympy.physics.mechanics as me
     if model.newtonian_frame is None:
         raise AutolevModelError("the mechanics hand-off needs a NEWTONIAN frame")
     keep = _kept(model)
     mapping = dynamic_map(model.scene)
+    free = [q for q in model.coordinates if integrated is None or q in integrated]
     # a variable nothing defines is a constant of the run (its value from INPUT), and here
-    unset = _undefined_variables(model, keep)
+    unset = _undefined_variables(model, keep, set(free) | set(model.speeds))
     mapping |= {v: sm.Symbol(v.name) for v in unset}
     orientations: list = []
     made = _frames(model, mapping, orientations, keep)
@@ -167,7 +184,7 @@ def handoff(model) -> Handoff:
     loads = [(point_of(p), vector(v)) for p, v in model.forces.items()]
     loads += [(frame_of(f), vector(v)) for f, v in model.torques.items()]
     positions = _positions(n_frame, made, mapping, sympy_point, keep)
-    coordinates = [mapping[q] for q in model.coordinates]
+    coordinates = [mapping[q] for q in free]
     speeds, kinematics = [], []
     kin = model.kinematical_equations
     time = me.dynamicsymbols._t
@@ -175,7 +192,7 @@ def handoff(model) -> Handoff:
         base, order = S.base_and_order(u)
         # a speed that is a coordinate's rate (Q'' declared): a speed of its own in sympy
         speeds.append(me.dynamicsymbols(f"{base.name}_rate") if order else mapping[u])
-    for q in model.coordinates:
+    for q in free:
         rate = kin[S.derivative(q)]
         if rate in model.speeds:
             rate_expr = speeds[model.speeds.index(rate)]
@@ -183,7 +200,7 @@ def handoff(model) -> Handoff:
             rate_expr = to_sympy_expr(model.scene, rate, mapping, keep)
         kinematics.append(mapping[q].diff(time) - rate_expr)
     dependent = [mapping[u] for u in model.dependent_speeds]
-    _linear_in_speeds(model.coordinates, kinematics, speeds + dependent)
+    _linear_in_speeds(free, kinematics, speeds + dependent)
     constraints = [to_sympy_expr(model.scene, e, mapping, keep)
                    for e in model.dependent_constraints]
     auxiliary = [mapping[u] for u in model.auxiliary_speeds]
@@ -195,7 +212,7 @@ def handoff(model) -> Handoff:
                  if info.kind == "specified" and not S.base_and_order(s)[1]]
     constants = [mapping[c] for c, info in model.info.items()
                  if info.kind == "constant" or c in unset]
-    states = {q: mapping[q] for q in model.coordinates} | dict(zip(model.speeds, speeds))
+    states = {q: mapping[q] for q in free} | dict(zip(model.speeds, speeds))
     return Handoff(newtonian, frames, orientations, points, velocities, positions, bodies, loads,
                    coordinates, speeds, kinematics, kane, dependent, constraints, auxiliary,
                    unknowns, specified, constants, states)
@@ -222,14 +239,12 @@ def _linear_in_speeds(coordinates: list, kinematics: list, speeds: list) -> None
                                     "the speeds, as sympy's KanesMethod takes them")
 
 
-def _undefined_variables(model, keep: frozenset) -> list:
-    """The VARIABLES that are neither defined, nor a coordinate or speed (nor their rates
-    defined), nor kept by the hand-off: what a run takes as constants."""
-    states = set(model.coordinates) | set(model.speeds)
+def _undefined_variables(model, keep: frozenset, states: set) -> list:
+    """The VARIABLES that are neither defined, nor in `states` (the coordinates and
+    speeds), nor kept by the hand-off: what a run takes as constants."""
     return [v for v, info in model.info.items()
             if info.kind == "variable" and not S.base_and_order(v)[1] and v not in states
-            and v not in keep and v not in model.defs.rhs
-            and S.derivative(v) not in model.defs.rhs]
+            and v not in keep and v not in model.defs.rhs]
 
 
 def _kept(model) -> frozenset:
@@ -286,9 +301,9 @@ def to_pydy(model, infile=None, overrides=None):
     import sympy.physics.mechanics as me
 
     from .equations_of import equations_of
-    h = handoff(model)
     eqs = equations_of(model, model.command_to_linearize(), infile=infile,
                       overrides=overrides)
+    h = handoff(model, set(eqs.states))
     run = eqs.integration
     steps = max(1, int(round((run["TFINAL"] - run["TINITIAL"]) / run["INTEGSTP"])))
     constants = {sm.Symbol(c.name): v for c, v in eqs.constants.items()}
