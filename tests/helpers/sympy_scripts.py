@@ -20,7 +20,7 @@ from autolev.runtime.numerics.prepare import prepare_command
 # (mechanics: kane's full mass matrix and forcing as the script takes them, auxiliary
 # speeds 0, dependent speeds where the velocity constraints hold and are well
 # conditioned; equations: its mass and forcing functions), printed as JSON, then its own
-# main writing OUT.csv
+# main writing OUT.csv (the tests of the shipped examples run `python SCRIPT.py` itself)
 DRIVER = """
 import json, runpy, sys
 sys.modules['autolev'] = None
@@ -75,8 +75,8 @@ print(json.dumps({'level': level, 'dependent': len(dependent),
                   'constants': [str(c) for c in constants],
                   'specified': [named(s) for s in specified], 'points': points}))
 sys.stdout.flush()
-sys.argv = [script, csv]
-runpy.run_path(script, run_name='__main__')      # ends with sys.exit(main(...))
+# what `python SCRIPT.py CSV` runs, without sympy forming kane's equations once more
+sys.exit(ns['main']([csv]))
 """
 
 
