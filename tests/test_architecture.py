@@ -86,11 +86,12 @@ def test_no_field_of_a_model_is_read_with_a_default():
 
 
 def test_the_integration_loop_and_the_output_files_need_no_sympy():
-    # what integrates a compiled system and writes its rows reads no model: a warm run
-    # can do without importing sympy (issue 32)
+    # what integrates, evaluates or solves a compiled system and writes its rows reads no
+    # model: a warm run can do without importing sympy (issue 32)
     import subprocess
     modules = ["dynamics", "integrate", "integration_notes", "cloop", "files", "results",
-               "massmatrix", "options"]
+               "massmatrix", "options", "algebraic", "execute", "compiled", "pyfunction",
+               "evaluation"]
     code = ("import sys\n" + "".join(f"import autolev.runtime.numerics.{m}\n" for m in modules)
             + "import autolev.runtime.diskcache, autolev.runtime.code_kinds\n"
             "print(sorted(m for m in ('sympy', 'scipy') if m in sys.modules))")

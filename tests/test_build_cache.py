@@ -26,6 +26,7 @@ with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always")
     model = autolev.load({str(EXAMPLES / "double_pendulum.al")!r})
     r = model.simulate(TFINAL=0.2)
+    r.system.compiled_loop(wait=True)     # a cold run may end before its C is built
 print(json.dumps({{"ok": r.ok, "backend": r.system.rhs_function.backend,
                   "states": r.states.tolist(), "said": [str(w.message) for w in caught]}}))
 """

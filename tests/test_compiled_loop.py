@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import autolev
-from helpers import load_model
+from helpers import EXAMPLES, load_model
 from autolev.runtime.numerics import clibrary
 
 
@@ -22,10 +22,17 @@ def run(model, **kw):
         return model.simulate(**kw)
 
 
+def compiled(model):
+    """The model, its right-hand side's C compiled (a first run steps in Python while it
+    compiles) and its loop there."""
+    run(model, TFINAL=0.1).system.compiled_loop(wait=True)
+    return model
+
+
 @pytest.mark.parametrize("name", ["double_pendulum", "fourbar", "rolling_disc",
                                   "euler_parameters_body"])
 def test_kutta_merson_in_c_takes_exactly_the_python_steps(name):
-    m = load(name)
+    m = compiled(load(name))
     a = run(m, TFINAL=2, compiled=True)
     b = run(m, TFINAL=2, compiled=False)
     assert a.stats.get("compiled") and not b.stats.get("compiled")
@@ -52,7 +59,7 @@ def test_dop853_in_c_takes_scipys_steps(name):
 
 
 def test_c_solve_of_kanes_equations_matches_the_python_solve():
-    m = load("nlink_pendulum")
+    m = compiled(load("nlink_pendulum"))
     system = run(m, TFINAL=0.1).system
     ns, n = system.nstate, system._n
     rng = np.random.default_rng(1)
@@ -97,7 +104,7 @@ def test_singular_mass_matrix_stops_both_loops_at_the_same_place():
 def test_slices_and_blocks_of_a_long_run_continue_exactly_where_they_stopped(method):
     """Budget slices of one call and blocks of the schedule (what keeps a long run's
     memory bounded) both resume the integrator's exact state."""
-    m = load("double_pendulum")
+    m = compiled(load("double_pendulum"))
     system = run(m, TFINAL=0.1).system
     y0 = np.array([0.5, 1.0, 0.0, 0.0])
     sched = autolev.runtime.numerics.integrate.Schedule(0.0, 20.0, 0.1, 3)
@@ -189,7 +196,7 @@ def test_no_stiffness_is_reported_for_ordinary_models(name, method):
 
 def test_cpython_entry_point_gives_the_ctypes_numbers():
     from autolev.runtime.numerics.cloop import python_include
-    system = run(load("rolling_disc"), TFINAL=0.1).system
+    system = run(compiled(load("rolling_disc")), TFINAL=0.1).system
     loop = system.loop
     if python_include() is None:
         assert loop.python_entry is None                 # no headers: the ctypes route only
@@ -226,7 +233,7 @@ def test_implicit_methods_run_on_the_compiled_right_hand_side(method):
 
 
 def test_fast_path_returns_fresh_arrays_and_reports_singularity():
-    system = run(load("double_pendulum"), TFINAL=0.1).system
+    system = run(compiled(load("double_pendulum")), TFINAL=0.1).system
     x = np.array([0.5, 1.0, 0.1, -0.2])
     a = system.derivatives(0.0, x)
     b = system.derivatives(0.0, x)
@@ -240,3 +247,59 @@ def test_fast_path_returns_fresh_arrays_and_reports_singularity():
         s = zero.simulate(missing_values="zero").system
     with pytest.raises(SingularMassMatrix):
         s.derivatives(0.0, np.array([0.1, 0.0]))
+
+
+@pytest.mark.parametrize("python_steps", [0, 7, 150, 200])
+def test_kutta_merson_goes_on_in_c_from_where_python_stepped(python_steps):
+    """A cold run steps in Python while its C compiles, then hands T, the state and its
+    step to the compiled loop: the rows are those of either alone, to the last bit."""
+    from autolev.runtime.numerics.integrate import Schedule, integrate
+    m = load("double_pendulum")
+    in_c = run(m, TFINAL=0.1).system
+    loop = in_c.compiled_loop(wait=True)
+    python = run(m, TFINAL=0.1, backend="python").system
+    assert loop is not None and python.rhs_function.backend == "python"
+    y0 = np.array([0.5, 1.0, 0.0, 0.0])
+    schedule = Schedule(0.0, 20.0, 0.1, 3)
+
+    def rows(f, **how):
+        got = []
+        stats = integrate(f, y0, schedule, "kutta-merson", 1e-9, 1e-9,
+                          lambda t, y: got.append(np.r_[t, y]), **how)
+        return np.array(got), stats
+    in_python, only_python = rows(python.derivatives)
+    in_c, only_c = rows(in_c.derivatives, loop=loop)
+    asked = []
+
+    def loop_when_built():
+        asked.append(1)
+        return loop if len(asked) > python_steps else None
+    handed, both = rows(python.derivatives, loop_when_built=loop_when_built)
+    assert np.array_equal(in_python, in_c) and np.array_equal(handed, in_c)
+    # 200 steps: the compiler never finished, Python did them all
+    assert both.get("python_until", 0.0) == pytest.approx(0.1 * python_steps)
+    assert ("python_until" in both) == (python_steps > 0)
+    assert both.get("compiled", False) == (python_steps < 200)
+    assert "compiled" not in only_python
+    for count in ("evaluations", "steps", "rejected"):
+        assert both[count] == only_c[count] == only_python[count]
+
+
+def test_a_cold_run_does_not_wait_for_its_c_and_keeps_it_for_the_next(tmp_path,
+                                                                     monkeypatch):
+    monkeypatch.setenv("AUTOLEV_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("AUTOLEV_NO_MODEL_CACHE", "0")
+    path = tmp_path / "pendulum.al"
+    # a model nothing has cached
+    path.write_text((EXAMPLES / "double_pendulum.al").read_text() + f"\n% {tmp_path}\n")
+    cold = run(autolev.load(path), TFINAL=5)
+    assert "python_until" in cold.stats
+    system = cold.system
+    assert system.compiled_loop(wait=True) is not None
+    assert system.rhs_function.backend == "c" and system.rhs_compiling is None
+    compiled_first = run(autolev.load(path), TFINAL=5, backend="c")
+    assert "python_until" not in compiled_first.stats
+    assert np.array_equal(cold.states, compiled_first.states)
+    # the model kept is the compiled one: read back, its run is C from the first step
+    again = run(autolev.load(path), TFINAL=5)
+    assert again.stats["compiled"] and "python_until" not in again.stats

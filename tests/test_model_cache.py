@@ -415,3 +415,64 @@ def test_a_run_from_its_plan_refuses_a_file_it_did_not_write_as_a_run_does(cache
         refusals.append(r.stderr.splitlines()[-1].replace(str(folder), "OUT"))
     assert refusals[0] == refusals[1]
     assert "error: CODE DYNAMICS: cannot write the output files into OUT" in refusals[0]
+
+
+# programs that solve or sweep before they write, with their rows by hand
+SOLVED = {
+    "linear": ("VARIABLES X, Y\nCONSTANTS A, B\nEQ[1] = A*X + 2*Y - 3\n"
+               "EQ[2] = X - B*Y + 1\nINPUT A = 2, B = 3\nOUTPUT X, Y\n"
+               "CODE ALGEBRAIC(EQ, X, Y) linear.c\n", [[0.875, 0.625]]),
+    "newton": ("VARIABLES U, V\nCONSTANTS R\nNL[1] = U^2 + V^2 - R^2\nNL[2] = V - U\n"
+               "INPUT R = 2, U = 1, V = 2, ABSERR = 1.0E-10, RELERR = 1.0E-10\n"
+               "OUTPUT U, V\nCODE NONLINEAR(NL, U, V) newton.c\n", [[2 ** 0.5] * 2]),
+    "swept": ("CONSTANTS L, Q\nPX = L*COS(Q)\nPY = L*SIN(Q)\nINPUT L = 2\n"
+              "OUTPUT Q DEG, PX, PY\nCODE ALGEBRAIC() [Q DEG = 0, 90, 15] swept.c\n",
+              [[q, 2 * math.cos(math.radians(q)), 2 * math.sin(math.radians(q))]
+               for q in range(0, 91, 15)]),
+}
+
+
+@pytest.mark.parametrize("name", sorted(SOLVED))
+def test_algebraic_and_nonlinear_programs_repeat_from_their_plan(cache, tmp_path, name):
+    text, expected = SOLVED[name]
+    model = tmp_path / f"{name}.al"
+    model.write_text(text)
+    env = dict(os.environ)
+    first = run_cli(["run", str(model), "--out", str(tmp_path / "first")], env)
+    assert first.returncode == 0, first.stderr
+    again = run_cli(["run", str(model), "--out", str(tmp_path / "again")], env)
+    assert again.returncode == 0, again.stderr
+    assert "built in 0.0 s (its run plan)" in again.stdout
+    imported = again.stdout.split("imported: ")[1]
+    assert "sympy" not in imported                 # (the linear solve is scipy's LU)
+    names = sorted(p.name for p in (tmp_path / "first").iterdir())
+    assert names == [f"{name}.1", f"{name}.dir", f"{name}.in"]
+    for file in names:
+        assert (tmp_path / "first" / file).read_bytes() == \
+            (tmp_path / "again" / file).read_bytes(), file
+    rows = np.loadtxt(tmp_path / "again" / f"{name}.1", comments="%", ndmin=2)
+    assert np.allclose(rows, expected, atol=1e-5)
+
+
+def test_tables_and_plots_are_drawn_from_a_plans_rows(cache, tmp_path):
+    # the plan of a plain run serves a run asking for tables: they are its rows
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED)
+    env = dict(os.environ)
+    plain = run_cli(["run", str(model), "--out", str(tmp_path / "plain")], env)
+    assert plain.returncode == 0, plain.stderr
+    tables = run_cli(["run", str(model), "--out", str(tmp_path / "tables"), "--csv"], env)
+    assert tables.returncode == 0, tables.stderr
+    assert "built in 0.0 s (its run plan)" in tables.stdout
+    assert "sympy" not in tables.stdout.split("imported: ")[1]
+    csv = np.loadtxt(tmp_path / "tables" / "pushed.csv", delimiter=",", skiprows=1)
+    rows = np.loadtxt(tmp_path / "plain" / "pushed.1", comments="%")
+    assert csv.shape == rows.shape == (41, 2)
+    assert np.allclose(csv, rows, rtol=1e-6, atol=1e-12)
+    # a column it does not write is refused before anything runs, as from the model
+    wrong = run_cli(["run", str(model), "--out", str(tmp_path / "wrong"), "--plot", "Q,W"],
+                    env)
+    if "--plot needs matplotlib" not in wrong.stderr:
+        assert wrong.returncode == 2
+        assert "--plot: no output column W; the runs write Q, U" in wrong.stderr
+        assert not (tmp_path / "wrong").exists()

@@ -162,6 +162,7 @@ def test_a_long_schedule_is_not_walked_before_the_first_step():
         if t > 1.0:
             raise Enough
     system = quiet_simulate(load("double_pendulum"), TFINAL=0.1).system
+    system.compiled_loop(wait=True)       # a first run steps in Python while C compiles
     y0 = np.array([0.5, 1.0, 0.0, 0.0])
     for method, loop in (("kutta-merson", None), ("kutta-merson", system.loop),
                          ("dop853", system.loop)):

@@ -1,7 +1,8 @@
 """Run plans: a warm `autolev run FILE` without the model.
 
 A run that writes Autolev's files alone (no plot, table or animation) and whose every
-CODE command integrated in the compiled loop and ended well leaves a plan in the cache,
+CODE command ended well (integrated in the compiled loop, or evaluated and solved:
+ALGEBRAIC, NONLINEAR) leaves a plan in the cache,
 for the options it was given (values, an .in file by its content, the method...): per
 command, its compiled system as numbers and C sources (the libraries are found again
 in the build cache), its inputs as numbers, the texts of its files besides the rows,
@@ -53,12 +54,15 @@ class PlannedSystem(CompiledEvaluation):
         self.nstate, self._n = system.nstate, system._n
         self.unknown_positions = list(system.unknown_positions)
         self.n_rhs, self.n_outputs = system.n_rhs, system.n_outputs
-        self.solved = []
         self.files = [[Column(None, c.label, c.unit) for c in cols] for cols in system.files]
         self.degree_columns = [list(d) for d in system.degree_columns]
         self.encode_shapes = list(system.encode_shapes)
         self.rhs_function, self.output_function = system.rhs_function, system.output_function
-        self.extra_functions = {}
+        self.rhs_compiling = None
+        self.extra_functions = dict(system.extra_functions)
+        self.constants_function = system.constants_function
+        self.derived_constants = system.derived_constants
+        self.solved = [str(s) for s in system.solved]     # ALGEBRAIC's unknowns, by name
         self.specified_functions = []
         self.specified_values = np.array(system.specified_values, dtype=float)
         self.constant_values = np.array(system.constant_values, dtype=float)
@@ -91,20 +95,24 @@ class RunPlan:
 
 
 def can_plan(execution: Execution, result) -> bool:
-    """Whether a command's run can be repeated from a plan: integrated in the compiled
-    loop (its right-hand side C; no user functions), its outputs C, ended well
-    (`autolev run` projects onto no constraints)."""
+    """Whether a command's run can be repeated from a plan: it ended well and used no
+    user functions; integrated, in the compiled loop (its right-hand side C) with C
+    outputs (`autolev run` projects onto no constraints)."""
     system = execution.system
-    return (execution.kind.integrates and result.failure is None
-            and system.loop is not None and not system.specified_functions
-            and system.output_function.backend == "c" and not system.extra_functions)
+    if result.failure is not None or system.specified_functions:
+        return False
+    return not execution.kind.integrates or (
+        system.loop is not None and system.output_function.backend == "c"
+        and not system.extra_functions)
 
 
 def planned_command(execution: Execution, label: str, messages: str) -> PlannedCommand:
     """The command's execution with its system and inputs reduced to numbers."""
     inputs = execution.inputs
-    integration = {k: inputs.internal(k) for k in INTEGRATION_PARAMETERS}
-    initial = inputs.vector(execution.system.states)
+    integrates = execution.kind.integrates     # ALGEBRAIC's numbers: execution.algebraic
+    integration = {k: inputs.internal(k) for k in INTEGRATION_PARAMETERS} if integrates \
+        else {}
+    initial = inputs.vector(execution.system.states) if integrates else []
     reduced = replace(execution, system=PlannedSystem(execution.system,
                                                       execution.state_names),
                       inputs=PlannedInputs(integration, initial), build_seconds=0.0)

@@ -35,10 +35,9 @@ def cmd_run(ns: argparse.Namespace) -> int:
 
 def _plan_options(ns: argparse.Namespace, path: Path) -> tuple | None:
     """The options that change what a run computes (the .in file first), when a run
-    plan can repeat it: a model file run for Autolev's files alone (no plot, table or
-    animation); else None."""
-    if path.suffix.lower() != ".al" or ns.func is not cmd_run \
-            or ns.plot or ns.csv or ns.mat or ns.animate:
+    plan can repeat it: a model file run without an animation (plots and tables are
+    drawn from the rows); else None."""
+    if path.suffix.lower() != ".al" or ns.func is not cmd_run or ns.animate:
         return None
     infile = None if ns.infile is None else str(Path(ns.infile).resolve())
     return (infile, ns.set, ns.specified, ns.backend, ns.zero_missing, ns.method, ns.tfinal,
@@ -81,7 +80,7 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
         print(f"{path}: error: no CODE DYNAMICS or ODE to animate", file=sys.stderr)
         return 1
     if isinstance(ns.plot, str):
-        ns.plot = _plotted_columns(model, commands, ns.plot)
+        ns.plot = _plotted_columns(_labels_of(model, commands), ns.plot)
     load_messages = recorder.take() if recorder is not None else ""
     planned: list = []
     status = _run_and_report(model, commands, overrides, specified_values(model, ns), ns,
@@ -102,6 +101,11 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
     from ..runtime.numerics.options import RunOptions
     from ..runtime.numerics.results import command_error, run_summary
     start = time.monotonic()
+    _check_plot(ns)
+    if isinstance(ns.plot, str):
+        ns.plot = _plotted_columns([label for planned in plan.commands
+                                    for labels, _ in planned.execution.columns
+                                    for label in labels], ns.plot)
     sys.stderr.write(plan.load_messages)
     if not ns.quiet:
         print(f"{path}: built in {time.monotonic() - start:.1f} s (its run plan)")
@@ -115,7 +119,7 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
                 warnings.simplefilter("ignore")      # its run's are among its messages
                 result = execute(e, Path(ns.out), RunOptions(
                     progress=None if ns.quiet else sys.stderr, infile=ns.infile,
-                    keep_rows=False, overwrite=ns.overwrite))
+                    keep_rows=bool(ns.plot or ns.csv or ns.mat), overwrite=ns.overwrite))
         except AutolevModelError as exc:
             print(f"{planned.label}: error: {command_error(e.kind, exc)}", file=sys.stderr)
             status = 1
@@ -124,6 +128,7 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
             print(run_summary(e.kind, e.filename, result, time.monotonic() - began))
             for f in result.files:
                 print(f"  wrote {f}")
+        status = max(status, _tables_and_plots(result, Path(ns.out), ns, planned.label))
     return status
 
 
@@ -153,28 +158,40 @@ def _run_overrides(ns: argparse.Namespace) -> dict:
     overrides = name_values(ns.set, "--set", numbers=True)
     if ns.tfinal is not None:
         overrides["TFINAL"] = ns.tfinal
-    if ns.plot and not has_matplotlib():
-        raise UsageError("--plot needs matplotlib (pip install 'autolev[plot]')")
+    _check_plot(ns)
     return overrides
 
 
-def _plotted_columns(model, commands: list, text: str) -> list[str]:
-    """--plot COLUMNS as output labels, each one at least one of the commands writes
-    (UsageError naming those they write, before anything runs)."""
+def _check_plot(ns: argparse.Namespace) -> None:
+    if ns.plot and not has_matplotlib():
+        raise UsageError("--plot needs matplotlib (pip install 'autolev[plot]')")
+
+
+def _labels_of(model, commands: list) -> list[str]:
+    """The output columns the commands write."""
     from ..runtime.errors import AutolevModelError
     from ..runtime.numerics.command import output_columns
-    wanted = [name.strip() for name in text.split(",") if name.strip()]
-    if not wanted:
-        raise UsageError("--plot: name the output columns to draw (e.g. --plot Q1,U1), "
-                         "or give --plot alone for every output file")
     labels: list[str] = []
     for command in commands:
         try:
             files = output_columns(model, command)
         except AutolevModelError:
             continue                # its run reports the OUTPUT it cannot write
-        labels += [c.label for cols in files for c in cols
-                   if c.label.upper() not in {x.upper() for x in labels}]
+        labels += [c.label for cols in files for c in cols]
+    return labels
+
+
+def _plotted_columns(written: list[str], text: str) -> list[str]:
+    """--plot COLUMNS as output labels, each one among those the runs write (UsageError
+    naming those, before anything runs)."""
+    wanted = [name.strip() for name in text.split(",") if name.strip()]
+    if not wanted:
+        raise UsageError("--plot: name the output columns to draw (e.g. --plot Q1,U1), "
+                         "or give --plot alone for every output file")
+    labels: list[str] = []
+    for label in written:
+        if label.upper() not in {x.upper() for x in labels}:
+            labels.append(label)
     unknown = [name for name in wanted if name.upper() not in {x.upper() for x in labels}]
     if unknown:
         raise UsageError(f"--plot: no output column {', '.join(unknown)}; the runs write "
@@ -206,6 +223,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
     """Run the commands and report each; with `recorder`, each command that a run plan
     can repeat goes into `planned` with what it printed on stderr."""
     from ..runtime.errors import AutolevModelError
+    from ..runtime.steps import SlowStep
     from ..runtime.tools import program_file_name, safe_stem
     label = statement_label(model, path)
     written_by: dict[str, str] = {}
@@ -242,6 +260,9 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
             for f in done.result.files:
                 print(f"  wrote {f}")
         status = max(status, _after_run(model, done, out_dir, ns, label(done.command)))
+        # a cold run began in Python: its C, for the runs to come (kept with the model)
+        with SlowStep(progress, f"{label(done.command)}: compiling its C for later runs"):
+            done.result.execution.system.compiled_loop(wait=True)
         if recorder is not None:
             from ..runplan import can_plan, planned_command
             messages = recorder.take()
@@ -252,7 +273,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
 
 
 def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -> int:
-    """--animate and --plot of one finished run."""
+    """--animate, --csv, --mat and --plot of one finished run."""
     from ..runtime.errors import AutolevModelError
     result = done.result
     status = 0
@@ -269,10 +290,15 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
             print(f"{label}: error: cannot write the animation into {out_dir}: "
                   f"{exc.strerror or exc}", file=sys.stderr)
             status = 1
+    return max(status, _tables_and_plots(result, out_dir, ns, label))
+
+
+def _tables_and_plots(result, out_dir: Path, ns: argparse.Namespace, label: str) -> int:
+    """--csv, --mat and --plot of one finished run (from its model or its plan)."""
     tables = [(f"{result.name}.csv", result.csv_text)] * ns.csv \
         + [(f"{result.name}.mat", result.mat_bytes)] * ns.mat
     if tables and result.outputs:
-        from ..runtime.tools import write_output
+        from ..runtime.outputs import write_output
         try:
             for name, content in tables:
                 written = write_output(out_dir, name, content(), ns.overwrite)
@@ -294,7 +320,7 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
         for f in pictures:
             if not ns.quiet:
                 print(f"  wrote {f}")
-    return status
+    return 0
 
 
 def cmd_animate(ns: argparse.Namespace) -> int:

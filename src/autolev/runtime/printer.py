@@ -18,6 +18,7 @@ import sympy as sm
 from sympy.core.numbers import NumberSymbol
 
 from .errors import AutolevModelError
+from .numerics.pyfunction import MATH_ERRORS, fast_namespace, safe_namespace
 
 _C_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
             "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
@@ -307,6 +308,10 @@ class PythonPrinter(CodePrinter):
         return str(value)
 
     def _power(self, base, exp):
+        if exp == 2:
+            # as gcc compiles C's pow(b, 2): b*b (libm's pow may round otherwise)
+            b = self._wrap(base, ATOM)
+            return f"({b}*{b})", ATOM
         if exp.is_Integer:
             # Python's ** with an integer exponent: like C's pow for these values
             return f"{self._wrap(base, ATOM)}**{int(exp)}", POW
@@ -326,62 +331,6 @@ class PythonPrinter(CodePrinter):
 
     def _choice(self, condition: str, value: str, otherwise: str) -> str:
         return f"(({value}) if ({condition}) else ({otherwise}))"
-
-
-def _sign(x):
-    return (x > 0) - (x < 0)
-
-
-def _heaviside(x):
-    return 1.0 if x > 0 else (0.5 if x == 0 else 0.0)
-
-
-def _trunc(x):
-    return float(math.trunc(x))
-
-
-def _round(x):
-    # C's round: halves away from zero (x - trunc(x) is exact in double precision)
-    t = float(math.trunc(x))
-    return t + math.copysign(1.0, x) if abs(x - t) >= 0.5 else t
-
-
-def _np_round(x):
-    t = np.trunc(x)
-    return t + np.copysign(1.0, x) * (np.abs(x - t) >= 0.5)
-
-
-class _NumpyMath:
-    """`math` for the fallback evaluation: numpy's functions, which give inf and nan
-    where math raises (as the C code does)."""
-
-    def __getattr__(self, name):
-        if name in ("gamma", "erf"):
-            import scipy.special   # 0.1 s to import: only where math raised
-            return getattr(scipy.special, name)
-        return getattr(np, {"fabs": "abs", "atan2": "arctan2", "asin": "arcsin",
-                            "acos": "arccos", "atan": "arctan", "asinh": "arcsinh",
-                            "acosh": "arccosh", "atanh": "arctanh"}.get(name, name))
-
-
-# what the math module raises where C gives inf or nan
-MATH_ERRORS = (ZeroDivisionError, ValueError, OverflowError, TypeError)
-
-
-def _np_heaviside(x):
-    return np.heaviside(x, 0.5)
-
-
-def fast_namespace() -> dict:
-    """What the printed Python calls: the math module and C's sign, step, trunc, round."""
-    return {"math": math, "_sign": _sign, "_heaviside": _heaviside, "_trunc": _trunc,
-            "_round": _round}
-
-
-def safe_namespace() -> dict:
-    """The same names on numpy, which gives inf and nan where math raises (as C does)."""
-    return {"math": _NumpyMath(), "_sign": np.sign, "_heaviside": _np_heaviside,
-            "_trunc": np.trunc, "_round": _np_round}
 
 
 def number_value(expr) -> float:

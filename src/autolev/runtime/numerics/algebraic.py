@@ -1,46 +1,76 @@
 """Evaluating a CODE ALGEBRAIC or NONLINEAR command: once, or once per value of
-its sweep, solving its linear equations or Newton's method first.
+its sweep, solving its linear equations or Newton's method first.  Its inputs are
+numbers (AlgebraicInputs, made by `algebraic_inputs` from the model's): no sympy here,
+so that a warm run executes a run plan's ALGEBRAIC and NONLINEAR commands too.
 """
 from __future__ import annotations
 
 import warnings
+from dataclasses import dataclass
 
 import numpy as np
 
-from .. import symbols as S
+from ..code_kinds import CodeKind
 from ..errors import AutolevModelError
-from ..io import CodeKind
-from .advice import zero_hint
-from .inputs import display_name
 from .results import split_outputs, tables_of
 
 
-def run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_params,
-                   keep_rows: bool = True):
+@dataclass
+class AlgebraicInputs:
+    """What an ALGEBRAIC or NONLINEAR evaluation reads, as numbers."""
+
+    t: float                    # T, as the program reads its time
+    parameters: list            # the constants' values, in the system's order
+    guesses: list               # the unknowns' first guesses (NONLINEAR), else zeros
+    abserr: float               # Newton's tolerances (NONLINEAR)
+    relerr: float
+    unknown_names: list
+    swept: int | None           # the swept constant's place in `parameters`
+    points: list | None         # (internal, given) value of each point; None: once
+    zero_hint: str              # what a failure says of the constants that are 0
+
+
+def algebraic_inputs(system, inputs, kind, unknowns, sweep, zero_params) -> AlgebraicInputs:
+    """The numbers of an evaluation from the run's inputs (warning when the swept
+    input does not enter the outputs)."""
+    from .. import symbols as S
+    from .advice import zero_hint
+    from .inputs import display_name
+    swept = None
+    if sweep is not None:
+        if sweep.target in system.params:
+            swept = system.params.index(sweep.target)
+        else:
+            warnings.warn(f"the swept input {display_name(sweep.target)} does not enter the "
+                          "outputs", stacklevel=3)
+    return AlgebraicInputs(
+        inputs.internal(S.TIME) if S.TIME in inputs.values else 0.0,
+        list(inputs.vector(system.params)),
+        list(inputs.vector(unknowns)) if kind.from_guesses else [0.0] * len(unknowns),
+        *((inputs.internal("ABSERR"), inputs.internal("RELERR"))
+          if kind is CodeKind.NONLINEAR else (0.0, 0.0)),
+        [display_name(u) for u in unknowns], swept,
+        None if sweep is None else list(sweep), zero_hint(zero_params))
+
+
+def run_algebraic(system, given: AlgebraicInputs, result, writer, kind,
+                  keep_rows: bool = True):
     """Evaluate (and solve) once, or once per value of the sweep, made and written one
     at a time; with `keep_rows` False the Result holds only the last row."""
     rows = [[] for _ in system.files]
     encoded: dict = {}
     solutions, swept = [], []
-    points = [None] if sweep is None else sweep
-    n = len(unknowns)
-    guess = np.array(inputs.vector(unknowns)) if kind.from_guesses else np.zeros(n)
-    base = inputs.vector(system.params)
-    t = inputs.internal(S.TIME) if S.TIME in inputs.values else 0.0
-    target_pos = None
-    if sweep is not None:
-        if sweep.target in system.params:
-            target_pos = system.params.index(sweep.target)
-        else:
-            warnings.warn(f"the swept input {display_name(sweep.target)} does not enter the "
-                          "outputs", stacklevel=3)
+    points = [None] if given.points is None else given.points
+    n = len(given.unknown_names)
+    guess = np.array(given.guesses, dtype=float)
+    t = given.t
     for point in points:
         if not keep_rows:
             rows = [[] for _ in system.files]
             del solutions[:], swept[:]
-        if point is not None and target_pos is not None:
-            p = list(base)
-            p[target_pos] = point[0]
+        if point is not None and given.swept is not None:
+            p = list(given.parameters)
+            p[given.swept] = point[0]
             system.set_parameters(p)
         if kind is CodeKind.ALGEBRAIC and n:
             # the coefficients hold no unknown, but the compiled function takes their
@@ -48,10 +78,10 @@ def run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_pa
             ab = system.extra("linear", t, solved=np.zeros(n))
             a = ab[:n * n].reshape(n, n)
             b = ab[n * n:]
-            x = _linear_solve(a, -b, zero_params)
+            x = _linear_solve(a, -b, given.zero_hint)
         elif kind is CodeKind.NONLINEAR:
-            x = _newton(system, guess, t, inputs.internal("ABSERR"),
-                        inputs.internal("RELERR"), unknowns, zero_params)
+            x = _newton(system, guess, t, given.abserr, given.relerr, given.unknown_names,
+                        given.zero_hint)
             guess = x
         else:
             x = np.zeros(0)
@@ -61,26 +91,26 @@ def run_algebraic(system, inputs, result, writer, kind, unknowns, sweep, zero_pa
         values = system.outputs(t, np.zeros(0), None, x)
         split_outputs(system, values, rows, writer, encoded)
     result.t = np.array(swept, dtype=float)
-    result.solution = {display_name(u): np.array([s[i] for s in solutions])
-                       for i, u in enumerate(unknowns)}
+    result.solution = {name: np.array([s[i] for s in solutions])
+                       for i, name in enumerate(given.unknown_names)}
     result.outputs = tables_of(system, rows, result.name)
     result.encoded = encoded
 
 
-def _linear_solve(a, b, zero_params):
+def _linear_solve(a, b, zero_hint: str):
     import scipy.linalg  # 0.1 s to import: only CODE ALGEBRAIC's solves pay it
     try:
         lu, piv = scipy.linalg.lu_factor(a, check_finite=True)
     except (ValueError, np.linalg.LinAlgError):
         raise AutolevModelError("CODE ALGEBRAIC: the equations' coefficients are not "
-                                "finite" + zero_hint(zero_params)) from None
+                                "finite" + zero_hint) from None
     if np.any(np.diag(lu) == 0):
         raise AutolevModelError("CODE ALGEBRAIC: the equations are singular for these "
-                                "inputs" + zero_hint(zero_params))
+                                "inputs" + zero_hint)
     return scipy.linalg.lu_solve((lu, piv), b)
 
 
-def _newton(system, x0, t, abserr, relerr, unknowns, zero_params, max_iter: int = 50):
+def _newton(system, x0, t, abserr, relerr, unknowns, zero_hint: str, max_iter: int = 50):
     """Newton's method from the guesses; converged when every step is within
     max(ABSERR, RELERR*|x|) and the residual is small."""
     x = np.array(x0, dtype=float)
@@ -90,7 +120,7 @@ def _newton(system, x0, t, abserr, relerr, unknowns, zero_params, max_iter: int 
         j = system.extra("jacobian", t, (), x).reshape(n, n)
         if not (np.all(np.isfinite(r)) and np.all(np.isfinite(j))):
             raise AutolevModelError("CODE NONLINEAR: the equations are not finite at "
-                                    + _at(unknowns, x) + zero_hint(zero_params))
+                                    + _at(unknowns, x) + zero_hint)
         try:
             dx = np.linalg.solve(j, -r)
         except np.linalg.LinAlgError:
@@ -105,4 +135,4 @@ def _newton(system, x0, t, abserr, relerr, unknowns, zero_params, max_iter: int 
 
 
 def _at(unknowns, x) -> str:
-    return ", ".join(f"{display_name(u)} = {v:.6g}" for u, v in zip(unknowns, x))
+    return ", ".join(f"{name} = {v:.6g}" for name, v in zip(unknowns, x))

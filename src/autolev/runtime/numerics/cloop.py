@@ -16,6 +16,7 @@ import math
 import os
 import sysconfig
 import time as _time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -67,6 +68,19 @@ ST_SIZE = 24
  OP_FRESH) = range(8)
 
 METHOD_CODES = {"kutta-merson": 0, "dop853": 1}
+
+
+@dataclass(frozen=True)
+class KuttaMersonState:
+    """Where Kutta-Merson's stepping stands between two INTEGSTP steps (loop.c's st[]):
+    its step, the halvings it still allows, its stiffness counts and the time the
+    stiffness test fired (nan: not yet)."""
+
+    h: float
+    numcuts: int
+    iasti: int
+    nonsti: int
+    stiff_t: float
 
 _P = ctypes.c_void_p
 
@@ -153,7 +167,8 @@ class CompiledLoop:
         return xdot, r
 
     def run(self, method: str, y0, blocks, opts: dict, on_rows, progress=None,
-            stiff_stop: bool = False, budget: float = 2000.0, adapt: bool = True) -> dict:
+            stiff_stop: bool = False, budget: float = 2000.0, adapt: bool = True,
+            steps_state: KuttaMersonState | None = None) -> dict:
         """Integrate from y0 at opts['t0'] over `blocks` of the schedule, (times,
         printed, end) each; Kutta-Merson: the T after every INTEGSTP step and which are
         printed (end None); DOP853: the print times (printed None) and the end it may
@@ -163,7 +178,8 @@ class CompiledLoop:
         are sized to about 0.1 s each unless `adapt` is false).
         Returns a dict: status, t (of the last accepted state), y, stats, fail_t,
         fail_h, stiff_t, hlamb, and rest (DOP853: the print times of the current block
-        not reached when it stopped)."""
+        not reached when it stopped).  `steps_state`: Kutta-Merson's state where Python
+        stepped until now (KuttaMerson.steps_state): its step and stiffness counts."""
         code = METHOD_CODES[method]
         n = self.n
         y = np.array(y0, dtype=float)
@@ -171,6 +187,10 @@ class CompiledLoop:
         st[ST_T] = opts["t0"]
         st[ST_NUMCUTS] = 20
         st[ST_STIFF_T] = math.nan
+        if steps_state is not None:
+            st[ST_H], st[ST_NUMCUTS] = steps_state.h, steps_state.numcuts
+            st[ST_IASTI], st[ST_NONSTI] = steps_state.iasti, steps_state.nonsti
+            st[ST_STIFF_T] = steps_state.stiff_t
         op = np.zeros(8)
         op[OP_RTOL], op[OP_ATOL] = opts["rtol"], opts["atol"]
         op[OP_MAXSTEP] = opts.get("max_step", math.inf)

@@ -11,13 +11,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-import numpy as np
 import sympy as sm
 
 from ..calculus import Definitions
 from ..errors import AutolevModelError
 from .clibrary import UNIT_MARK, UNIT_STATEMENTS, c_function, cpus
-from ..printer import MATH_ERRORS, CPrinter, PythonPrinter, fast_namespace, safe_namespace
+from ..printer import CPrinter, PythonPrinter
+from .pyfunction import python_function
 
 
 def _factor_out(add):
@@ -279,30 +279,6 @@ def compile_python(prog: Program, name: str = "compute"):
     return python_function(source, *recipe), source, recipe
 
 
-def python_function(source: str, name: str, n_in: int, code=None):
-    """The callable of `compile_python` from its source (or from its compiled `code`,
-    kept as `call.code`: compiling a large program is most of the cost)."""
-    if code is None:
-        code = compile(source, f"<autolev generated {name}>", "exec")
-    fast_ns, safe_ns = fast_namespace(), safe_namespace()
-    exec(code, fast_ns)
-    exec(code, safe_ns)
-    fast, safe = fast_ns[name], safe_ns[name]
-
-    def call(*arrays):
-        try:
-            # Python floats: a division by zero or a domain error raises (numpy
-            # scalars would warn once per line of the program and go on)
-            return fast(*[a.tolist() if isinstance(a, np.ndarray) else a
-                          for a in arrays[:n_in]], arrays[n_in])
-        except MATH_ERRORS:
-            with np.errstate(all="ignore"):
-                args = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
-                return safe(*args, arrays[n_in])
-    call.code = code
-    return call
-
-
 # -- C ---------------------------------------------------------------------------------
 CHUNK = 100     # statements per C function: gcc's time grows faster than the function's size
                 # (planar 16-link: 100 compiles in 0.9 s against 1.05 s for 400, runs as fast)
@@ -384,6 +360,13 @@ def compile_c(prog: Program, name: str = "compute", extra_source: str = "",
     `extra_source`: C that is the same for many programs (the integration loop),
     compiled once into a cached object and linked into the same library (reachable as
     `call.lib`)."""
-    source = c_source(prog, name)
-    recipe = (name, len(prog.inputs), len(prog.assignments), extra_source, tuple(extra_flags))
+    source, recipe = c_program(prog, name, extra_source, extra_flags)
     return c_function(source, *recipe), source, recipe
+
+
+def c_program(prog: Program, name: str = "compute", extra_source: str = "",
+              extra_flags: tuple = ()) -> tuple[str, tuple]:
+    """(C source, recipe): what clibrary.c_function compiles and loads."""
+    source = c_source(prog, name)
+    return source, (name, len(prog.inputs), len(prog.assignments), extra_source,
+                    tuple(extra_flags))

@@ -4,12 +4,14 @@ A C function reads back without sympy (a run plan's); generating code needs it."
 from __future__ import annotations
 
 import marshal
+import threading
 import warnings
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from ..errors import AutolevModelError
 from . import clibrary
+from .pyfunction import python_function
 
 if TYPE_CHECKING:
     from .codegen import Program
@@ -37,9 +39,8 @@ class Function:
         if self.backend == "c":
             self.call = clibrary.c_function(self.source, *self.recipe)
         else:
-            from . import codegen      # (sympy): Python code is read back with the model
-            self.call = codegen.python_function(
-                self.source, *self.recipe, code=marshal.loads(code) if code else None)
+            self.call = python_function(self.source, *self.recipe,
+                                        code=marshal.loads(code) if code else None)
 
 
 def compile_program(prog: Program, backend: str, name: str,
@@ -57,3 +58,44 @@ def compile_program(prog: Program, backend: str, name: str,
         raise AutolevModelError("no C compiler found (set CC, or use backend='python')")
     call, source, recipe = codegen.compile_python(prog, name)
     return Function(call, "python", source, recipe)
+
+
+class CompilingInBackground:
+    """A program's C compiled on a thread of its own while the caller goes on (gcc is a
+    subprocess: the interpreter is free meanwhile).  `done()` asks; `function()` waits
+    and gives the C Function, or None when the compiler failed (with compile_program's
+    warning: the caller stays with Python)."""
+
+    def __init__(self, prog: Program, name: str, extra_source: str = "",
+                 extra_flags: tuple = ()):
+        from . import codegen          # (sympy) the source is printed here, the rest there
+        self.name = name
+        self._source, self._recipe = codegen.c_program(prog, name, extra_source, extra_flags)
+        self._call = None
+        self._refused: clibrary.CompileError | None = None
+        self._error: BaseException | None = None
+        self._thread = threading.Thread(target=self._build, name=f"compiling {name}",
+                                        daemon=True)
+        self._thread.start()
+
+    def _build(self) -> None:
+        try:
+            self._call = clibrary.c_function(self._source, *self._recipe)
+        except clibrary.CompileError as exc:
+            self._refused = exc
+        except BaseException as exc:   # raised again on the caller's thread by function()
+            self._error = exc
+
+    def done(self) -> bool:
+        return not self._thread.is_alive()
+
+    def function(self) -> Function | None:
+        self._thread.join()
+        if self._call is None and self._refused is None and self._error is None:
+            self._build()              # the thread did not survive a fork: here, then
+        if self._error is not None:
+            raise self._error
+        if self._refused is not None:
+            warnings.warn(f"compiling {self.name} failed; using Python ({self._refused})")
+            return None
+        return Function(self._call, "c", self._source, self._recipe)

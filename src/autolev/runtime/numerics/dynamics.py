@@ -141,7 +141,13 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
     start = time.perf_counter()
     abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
     try:
-        loop = system.loop if compiled and not system.specified_functions else None
+        use_loop = compiled and not system.specified_functions
+        # Kutta-Merson in the loop starts in Python while a cold build's C compiles, then
+        # goes on in C; anything else waits for the C
+        tiered = use_loop and method == "kutta-merson"
+        ready = system.compiled_loop(wait=not tiered)
+        loop = ready if use_loop else None
+        loop_when_built = system.compiled_loop if tiered and loop is None else None
         on_stiff = switch_when_stiff if method == "dop853" else None
         loose_tolerance_note(method.lower(), relerr)
         if constraints:
@@ -153,7 +159,8 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                 projector))
         else:
             result.stats.update(integrate(f, y0, sched, method, abserr, relerr, on_row,
-                                          bar, loop=loop, on_stiff=on_stiff))
+                                          bar, loop=loop, on_stiff=on_stiff,
+                                          loop_when_built=loop_when_built))
         stiff_note(result.stats, method)
     except IntegrationFailure as exc:
         from .advice import failure_message      # reads the model: only when it failed

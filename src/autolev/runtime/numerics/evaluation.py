@@ -16,7 +16,18 @@ class CompiledEvaluation:
     unknown_positions (the accelerations M a = f solves, and where they go in the
     state); n_rhs, n_outputs; rhs_function, output_function, extra_functions
     ({name: (function, size)}); solved (the unknowns the caller supplies at output
-    time); constant_values, specified_values, specified_functions."""
+    time); constant_values, specified_values, specified_functions; rhs_compiling (the
+    right-hand side's C being compiled while its Python runs, or None);
+    constants_function and derived_constants (the constants computed from the
+    parameters, and how many)."""
+
+    def set_parameters(self, values: np.ndarray) -> None:
+        """Parameter values (in the system's order); evaluates the constants once."""
+        p = np.asarray(values, dtype=float)
+        cd = np.empty(self.derived_constants)
+        if len(cd):
+            self.constants_function.call(p, cd)
+        self.set_constant_values(np.concatenate([p, cd]))
 
     def set_constant_values(self, values: np.ndarray) -> None:
         """The constants' values (parameters, then what is computed from them)."""
@@ -35,6 +46,21 @@ class CompiledEvaluation:
         self._rhs_out = np.empty(self.n_rhs)
         self._py = self.loop.python_entry if self.loop is not None else None
         self._py_ctx = self.loop.context_address if self.loop is not None else None
+
+    def compiled_loop(self, wait: bool = False):
+        """The compiled integration loop, or None while the right-hand side's C is still
+        compiling (NumericSystem.compile(background=True)): it replaces the Python one
+        as soon as it is built (`wait`: once it is)."""
+        pending = self.rhs_compiling
+        if pending is not None and (wait or pending.done()):
+            self.rhs_compiling = None
+            function = pending.function()
+            if function is not None:
+                self.rhs_function = function
+                self._bind_loop()
+                if self.constant_values is not None:
+                    self.set_constant_values(self.constant_values)
+        return self.loop
 
     def _fill_specified(self, t, x) -> np.ndarray:
         s = self.specified_values

@@ -1,6 +1,6 @@
 """Executing a prepared CODE command: computing it (integrated, evaluated or solved)
-and writing its set of files.  No sympy for an integrated one: a warm run executes
-its run plan's commands with this alone (run.py prepares them from the model).
+and writing its set of files.  No sympy: a warm run executes its run plan's commands
+with this alone (run.py prepares them from the model).
 """
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ import numpy as np
 
 from ..code_kinds import CodeKind
 from ..errors import AutolevModelError
+from .algebraic import AlgebraicInputs, run_algebraic
 from .dynamics import run_dynamics
 from .files import RunFiles, check_room, dir_text, encoded_text, termination_cleans_up
 from .options import RunOptions
@@ -40,8 +41,7 @@ class Execution:
     language: str               # of Autolev's program: "c", "m", "f"...
     method: str
     extra_values: list          # the constraints' extra constants
-    unknowns: list              # ALGEBRAIC/NONLINEAR
-    sweep: tuple | None
+    algebraic: AlgebraicInputs | None   # what ALGEBRAIC/NONLINEAR evaluate with
     build_seconds: float
 
 
@@ -61,9 +61,7 @@ def execute(execution: Execution, out_dir=None,
                          e.zero_params, options.compiled, options.constraints,
                          e.extra_values, program=e.language, keep_rows=options.keep_rows)
         else:
-            from .algebraic import run_algebraic    # (sympy) never from a run plan
-            run_algebraic(system, inputs, result, writer, kind, e.unknowns, e.sweep,
-                          e.zero_params, options.keep_rows)
+            run_algebraic(system, e.algebraic, result, writer, kind, options.keep_rows)
 
     if out_dir is None:
         perform(None)

@@ -245,6 +245,11 @@ class KuttaMerson:
             else:
                 f0 = f1
 
+    def steps_state(self) -> cloop.KuttaMersonState:
+        """Where the stepping stands, for the compiled loop to go on from."""
+        return cloop.KuttaMersonState(self.hc, self.numcuts, self._iasti, self._nonsti,
+                                      math.nan if self.stiff_t is None else self.stiff_t)
+
     def _stiffness(self, hlamb: float, t: float) -> None:
         """loop.c's al_stiff_count with Kutta-Merson's limit."""
         if hlamb > 1.75:
@@ -295,14 +300,16 @@ class Progress:
 
 def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
               relerr: float, on_row, progress: Progress | None = None, loop=None,
-              on_stiff=None) -> dict:
+              on_stiff=None, loop_when_built=None) -> dict:
     """Integrate y' = f(t, y) on the schedule, calling on_row(t, y) at print times.
     Raises IntegrationFailure (after the rows up to then were given).
 
     `loop`: a CompiledLoop of the same right-hand side; Kutta-Merson and DOP853 then
     run in C (the same steps).  `on_stiff(t, hlamb)`: called when the compiled DOP853
     finds the equations stiff at time t; if it returns a scipy method name the run
-    goes on from there with that method, else DOP853 goes on."""
+    goes on from there with that method, else DOP853 goes on.  `loop_when_built()`:
+    while the loop is being compiled, it or None (not yet); Kutta-Merson steps in
+    Python until it is there, then goes on in C from the same state and step."""
     schedule.check()
     y = np.array(y0, dtype=float)
     t = schedule.tinitial
@@ -313,6 +320,9 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
     if loop is not None and method in ("kutta-merson", "dop853"):
         return _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row,
                                    progress, on_stiff)
+    if loop_when_built is not None and method == "kutta-merson":
+        return _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row,
+                                         progress, stats, loop_when_built)
     return _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
                              stats)
 
@@ -322,14 +332,7 @@ def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progres
     if method == "kutta-merson":
         km = KuttaMerson(f, len(y), abserr, relerr, schedule.fresh_derivatives)
         for t_next, printed in schedule.steps():
-            try:
-                y, _ = km.advance(y, t, schedule.integstp)
-            finally:
-                stats["evaluations"] = km.evaluations
-                stats["steps"] = km.steps
-                stats["rejected"] = km.rejected
-                if km.stiff_t is not None:
-                    stats["stiff_t"] = km.stiff_t
+            y = _km_step(km, y, t, schedule.integstp, stats)
             t = t_next                     # Autolev's accumulated T
             if printed:
                 on_row(t, y)
@@ -344,6 +347,47 @@ def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progres
                                 stats)
     return _scipy_rows(f, y, t, schedule.print_blocks(), schedule.final_time(), name,
                        schedule, abserr, relerr, on_row, progress, stats)
+
+
+def _km_step(km: KuttaMerson, y, t: float, integstp: float, stats: dict) -> np.ndarray:
+    """One INTEGSTP step of Kutta-Merson in Python, its counts in `stats`."""
+    try:
+        y, _ = km.advance(y, t, integstp)
+    finally:
+        stats["evaluations"] = km.evaluations
+        stats["steps"] = km.steps
+        stats["rejected"] = km.rejected
+        if km.stiff_t is not None:
+            stats["stiff_t"] = km.stiff_t
+    return y
+
+
+def _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row, progress, stats,
+                              loop_when_built) -> dict:
+    """Kutta-Merson in Python while the compiled loop is built, then the loop from the
+    same T, state and step (the steps either alone takes: the back ends give the same
+    numbers).  stats["python_until"]: the T where C took over (the last T: it never
+    did), when Python took a step."""
+    km = KuttaMerson(f, len(y), abserr, relerr, schedule.fresh_derivatives)
+    blocks = schedule.blocks()
+    for times, printed in blocks:
+        for k, (t_next, shown) in enumerate(zip(times.tolist(), printed.tolist())):
+            loop = loop_when_built()
+            if loop is not None:
+                rest = itertools.chain([(times[k:], printed[k:])], blocks)
+                more = _integrate_compiled(f, loop, y, schedule, "kutta-merson", abserr,
+                                           relerr, on_row, progress, None, t0=t,
+                                           km_blocks=rest, steps_state=km.steps_state())
+                for count in ("evaluations", "steps", "rejected"):
+                    more[count] += stats.get(count, 0)
+                return dict(more, python_until=t) if km.evaluations else more
+            y = _km_step(km, y, t, schedule.integstp, stats)
+            t = t_next
+            if shown:
+                on_row(t, y)
+            if progress is not None:
+                progress.update(t)
+    return dict(stats, python_until=t)
 
 
 def _scipy_method(name: str):
@@ -422,12 +466,15 @@ def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, 
 
 
 def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, progress,
-                        on_stiff) -> dict:
-    t0 = schedule.tinitial
+                        on_stiff, t0=None, km_blocks=None, steps_state=None) -> dict:
+    """The schedule in C; Kutta-Merson from `t0` over `km_blocks` (the schedule's blocks
+    from there) in `steps_state`, when Python stepped until then."""
+    t0 = schedule.tinitial if t0 is None else t0
     opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
             "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives}
     if method == "kutta-merson":
-        blocks = ((times, printed, None) for times, printed in schedule.blocks())
+        blocks = ((times, printed, None) for times, printed in
+                  (schedule.blocks() if km_blocks is None else km_blocks))
     else:
         blocks = ((times, None, end) for times, end in schedule.bounded_print_blocks())
 
@@ -436,7 +483,7 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
             on_row(tk, yk)
 
     out = loop.run(method, y, blocks, opts, on_rows, progress,
-                   stiff_stop=on_stiff is not None)
+                   stiff_stop=on_stiff is not None, steps_state=steps_state)
     stats = dict(out["stats"], method=method, compiled=True)
     r, tf, hf = out["status"], out["fail_t"], out["fail_h"]
     if out["stiff_t"] == out["stiff_t"]:

@@ -135,13 +135,14 @@ def take_inputs(ask: InputsWanted, system):
 
 def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=None,
                     internal_values=None, warn_unassigned: bool = True,
-                    locked=()) -> Prepared:
+                    locked=(), starts_now: bool = False) -> Prepared:
     """Build (or reuse) the command's numeric system, take its inputs (INPUT values, then
     the .in file, then the overrides in the quantities' units, then `internal_values`
     {name: value} in SI units and radians), refusing missing ones before anything is
     compiled, then compile it.  `warn_unassigned`: warn about specified quantities that
     will be 0 (not when they are a linearization's inputs).  `locked`: coordinates held
-    fixed (see NumericSystem)."""
+    fixed (see NumericSystem).  `starts_now`: an integration that can start in Python
+    follows (Kutta-Merson): the right-hand side's C compiles in the background."""
     command, specified, overrides = given_specified(model, command, options.specified,
                                                     options.overrides)
     kind = command.kind
@@ -162,7 +163,7 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
         inputs, kinds, names, extra_constants = take_inputs(ask, system)
         if fresh:                    # inputs first: a refusal costs no compilation
             with SlowStep(options.progress, f"{what}: generating and compiling its code"):
-                system.compile()
+                system.compile(background=starts_now)
     if fresh:                        # kept at the model's own revision, not as_of's view
         keep_system(model, command, options.backend, options.quirks, locked, system)
     build_seconds = time.perf_counter() - build_start

@@ -209,7 +209,8 @@ def tables_of(system, rows, stem: str) -> list[OutputTable]:
 def run_summary(kind: CodeKind, filename: str, result: Result, seconds: float) -> str:
     """`CODE DYNAMICS bike.c: 101 rows in 1.30 s (building 1.02 s; integrating 0.21 s:
     kutta-merson, 412 steps)`: the whole command, then what took the time (building:
-    forming and compiling its numeric system, reading it back, or its run plan)."""
+    forming and compiling its numeric system, reading it back, or its run plan; a cold
+    run's Kutta-Merson steps in Python while its C compiles, and says so)."""
     stats = result.stats
     what = (f"{stats.get('rows', 0)} rows" if kind.integrates
             else "solved" if kind is not CodeKind.ALGEBRAIC or result.solution
@@ -218,8 +219,17 @@ def run_summary(kind: CodeKind, filename: str, result: Result, seconds: float) -
     if "seconds" in stats:
         parts.append(f"integrating {stats['seconds']:.2f} s" + (
             f": {stats['method']}, {stats.get('steps')} steps" if stats.get("method")
-            else ""))
+            else "") + _tiers(stats))
     return f"CODE {kind.upper()} {filename}: {what} in {seconds:.2f} s ({'; '.join(parts)})"
+
+
+def _tiers(stats: dict) -> str:
+    """What computed the steps of a run that began before its C was compiled."""
+    if "python_until" not in stats:
+        return ""
+    if stats.get("compiled"):
+        return f", in Python until T = {stats['python_until']:.6g} (C compiling), then C"
+    return ", in Python (its C was compiling)"
 
 
 def command_error(kind: CodeKind, exc: Exception) -> str:

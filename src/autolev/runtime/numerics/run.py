@@ -7,6 +7,7 @@ overrides), run, and write Autolev's files (`NAME.in`, `NAME.1..k`, `NAME.dir`, 
 """
 from __future__ import annotations
 
+from .algebraic import algebraic_inputs
 from .command import program_file_name, program_language, program_method
 from .dynamics import print_schedule
 from .execute import Execution, execute
@@ -21,20 +22,26 @@ def run_command(model, command, out_dir=None,
     """Run one CODE command with `options` (see RunOptions); its files go to out_dir
     (None: no files), written as one set: a file there that autolev did not write
     stops the run before it computes anything, unless `options.overwrite`."""
-    prepared = prepare_command(model, command, options, out_dir=out_dir)
-    system, inputs = prepared.system, prepared.inputs
     kind = command.kind
+    method = options.method or program_method(command.filename)
+    # Kutta-Merson goes on from Python to C at any step: it need not wait for the compiler
+    starts_now = (kind.integrates and method == "kutta-merson" and options.compiled
+                  and not options.constraints)
+    prepared = prepare_command(model, command, options, out_dir=out_dir,
+                               starts_now=starts_now)
+    system, inputs = prepared.system, prepared.inputs
     language = program_language(command.filename)
+    zero_params = [display_name(p) for p in system.params if inputs.internal(p) == 0.0]
     execution = Execution(
         kind, prepared.stem, command.filename, program_file_name(command.filename), system,
         inputs, [display_name(x) for x in system.states],
-        {display_name(k): inputs.values[k].given for k in inputs.names},
-        [display_name(p) for p in system.params if inputs.internal(p) == 0.0],
+        {display_name(k): inputs.values[k].given for k in inputs.names}, zero_params,
         [([c.label for c in cols], [c.unit for c in cols]) for cols in prepared.files],
         inputs.file_text(f"{prepared.stem}.in", prepared.kinds) if out_dir is not None else "",
         [name for name, _ in prepared.encoded], _rows_expected(prepared, command), language,
-        options.method or program_method(command.filename),
-        inputs.vector(prepared.extra_constants), prepared.unknowns, prepared.sweep,
+        method, inputs.vector(prepared.extra_constants),
+        None if kind.integrates else algebraic_inputs(
+            system, inputs, kind, prepared.unknowns, prepared.sweep, zero_params),
         prepared.build_seconds)
     return execute(execution, out_dir, options)
 

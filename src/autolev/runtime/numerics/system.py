@@ -24,9 +24,9 @@ import sympy as sm
 from .. import symbols as S
 from .. import units
 from ..errors import AutolevModelError
-from . import codegen
+from . import clibrary, codegen
 from .cloop import extra_source as loop_extra_source
-from .compiled import compile_program
+from .compiled import CompilingInBackground, compile_program
 from .evaluation import CompiledEvaluation
 
 
@@ -102,6 +102,7 @@ class NumericSystem(CompiledEvaluation):
         self.accel_inputs = accel_inputs
         self._integrate = integrate
         self.compiled = False
+        self.rhs_compiling = None      # the C right-hand side being built (compile)
         if compile_functions:
             self.compile()
         self.constant_values = None
@@ -158,13 +159,17 @@ class NumericSystem(CompiledEvaluation):
                 used |= defs.free(s)
         self.constant_defs = [s for s in const_defs if s in used]
 
-    def compile(self) -> None:
+    def compile(self, background: bool = False) -> None:
         """Compile the functions the analysis found (with the model's definitions as
-        they stand: as_of the command's, like the analysis)."""
-        self._compile(self.extra_exprs, self.accel_inputs, self._integrate)
+        they stand: as_of the command's, like the analysis).  `background`: for a run
+        that starts now, the right-hand side is Python first and its C compiles on
+        another thread (`compiled_loop` swaps it in): the Python and C back ends give
+        the same numbers."""
+        self._compile(self.extra_exprs, self.accel_inputs, self._integrate, background)
         self.compiled = True
 
-    def _compile(self, extra: dict, accel_inputs: list, integrate: bool) -> None:
+    def _compile(self, extra: dict, accel_inputs: list, integrate: bool,
+                 background: bool) -> None:
         defs, backend = self.model.defs, self.backend
         inputs = {"t": [S.TIME], "x": self.states, "c": self.params + self.constant_defs,
                   "s": self.specified}
@@ -187,9 +192,14 @@ class NumericSystem(CompiledEvaluation):
         if self.nstate:
             # the C right-hand side carries the integration loop (loop.c) with it
             loop_source, loop_flags = loop_extra_source()
-            self.rhs_function = compile_program(
-                rhs, backend, "autolev_rhs", extra_source=loop_source,
-                extra_flags=loop_flags)
+            if background and backend == "auto" and clibrary.compiler() is not None:
+                self.rhs_function = compile_program(rhs, "python", "autolev_rhs")
+                self.rhs_compiling = CompilingInBackground(
+                    rhs, "autolev_rhs", extra_source=loop_source, extra_flags=loop_flags)
+            else:
+                self.rhs_function = compile_program(
+                    rhs, backend, "autolev_rhs", extra_source=loop_source,
+                    extra_flags=loop_flags)
         inputs_out = dict(inputs, a=accel_inputs)
         # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
         self.output_function = compile_program(
@@ -202,6 +212,10 @@ class NumericSystem(CompiledEvaluation):
         self._bind_loop()
 
     @property
+    def derived_constants(self) -> int:
+        return len(self.constant_defs)
+
+    @property
     def n_rhs(self) -> int:
         return len(self.rhs_exprs)
 
@@ -210,17 +224,21 @@ class NumericSystem(CompiledEvaluation):
         return len(self.output_exprs)
 
     # -- pickling (with the model, in the cache of built models) ------------------------
-    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions")
+    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions",
+                  "rhs_compiling")
 
     def __getstate__(self) -> dict:
         """What rebuilds the system: its expressions and its functions' sources (the
         linearizations' Jacobians too); not the loaded libraries, nor a run's specified
-        functions."""
+        functions.  A right-hand side still compiling is waited for: the system kept is
+        the compiled one."""
+        self.compiled_loop(wait=True)
         return {k: v for k, v in self.__dict__.items() if k not in self._UNPICKLED}
 
     def __setstate__(self, state: dict) -> None:
         self.__dict__.update(state)
         self.specified_functions = []
+        self.rhs_compiling = None
         self._bind_loop()
 
     # -- structure ------------------------------------------------------------------------
@@ -415,14 +433,6 @@ class NumericSystem(CompiledEvaluation):
         return evaluate
 
     # -- values ---------------------------------------------------------------------------
-    def set_parameters(self, values: np.ndarray) -> None:
-        """Parameter values (in self.params order); evaluates the constants once."""
-        p = np.asarray(values, dtype=float)
-        cd = np.empty(len(self.constant_defs))
-        if len(cd):
-            self.constants_function.call(p, cd)
-        self.set_constant_values(np.concatenate([p, cd]))
-
     def set_specified(self, functions: dict) -> set:
         """{symbol: callable f(t) or f(t, x)} for undefined specified quantities;
         returns the symbols used (a derivative's values come from its lower one's)."""

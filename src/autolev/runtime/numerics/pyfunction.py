@@ -1,0 +1,91 @@
+"""The generated Python's functions without sympy: what the printed code calls (C's
+sign, step, trunc and round, the math module, or numpy where math raises, as C gives
+inf and nan), and the callable of a program's source or compiled code.  A run plan's
+Python functions are read back with this alone.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def _sign(x):
+    return (x > 0) - (x < 0)
+
+
+def _heaviside(x):
+    return 1.0 if x > 0 else (0.5 if x == 0 else 0.0)
+
+
+def _trunc(x):
+    return float(math.trunc(x))
+
+
+def _round(x):
+    # C's round: halves away from zero (x - trunc(x) is exact in double precision)
+    t = float(math.trunc(x))
+    return t + math.copysign(1.0, x) if abs(x - t) >= 0.5 else t
+
+
+def _np_round(x):
+    t = np.trunc(x)
+    return t + np.copysign(1.0, x) * (np.abs(x - t) >= 0.5)
+
+
+class _NumpyMath:
+    """`math` for the fallback evaluation: numpy's functions, which give inf and nan
+    where math raises (as the C code does)."""
+
+    def __getattr__(self, name):
+        if name in ("gamma", "erf"):
+            import scipy.special   # 0.1 s to import: only where math raised
+            return getattr(scipy.special, name)
+        return getattr(np, {"fabs": "abs", "atan2": "arctan2", "asin": "arcsin",
+                            "acos": "arccos", "atan": "arctan", "asinh": "arcsinh",
+                            "acosh": "arccosh", "atanh": "arctanh"}.get(name, name))
+
+
+# what the math module raises where C gives inf or nan
+MATH_ERRORS = (ZeroDivisionError, ValueError, OverflowError, TypeError)
+
+
+def _np_heaviside(x):
+    return np.heaviside(x, 0.5)
+
+
+def fast_namespace() -> dict:
+    """What the printed Python calls: the math module and C's sign, step, trunc, round."""
+    return {"math": math, "_sign": _sign, "_heaviside": _heaviside, "_trunc": _trunc,
+            "_round": _round}
+
+
+def safe_namespace() -> dict:
+    """The same names on numpy, which gives inf and nan where math raises (as C does)."""
+    return {"math": _NumpyMath(), "_sign": np.sign, "_heaviside": _np_heaviside,
+            "_trunc": np.trunc, "_round": _np_round}
+
+
+def python_function(source: str, name: str, n_in: int, code=None):
+    """The callable of a generated Python program (codegen.compile_python) from its
+    source, or from its compiled `code` (kept as `call.code`: compiling a large program
+    is most of the cost)."""
+    if code is None:
+        code = compile(source, f"<autolev generated {name}>", "exec")
+    fast_ns, safe_ns = fast_namespace(), safe_namespace()
+    exec(code, fast_ns)
+    exec(code, safe_ns)
+    fast, safe = fast_ns[name], safe_ns[name]
+
+    def call(*arrays):
+        try:
+            # Python floats: a division by zero or a domain error raises (numpy
+            # scalars would warn once per line of the program and go on)
+            return fast(*[a.tolist() if isinstance(a, np.ndarray) else a
+                          for a in arrays[:n_in]], arrays[n_in])
+        except MATH_ERRORS:
+            with np.errstate(all="ignore"):
+                args = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
+                return safe(*args, arrays[n_in])
+    call.code = code
+    return call
