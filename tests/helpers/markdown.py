@@ -40,7 +40,10 @@ def shell_command(line: str) -> str | None:
 
 
 def untimed(text: str) -> str:
-    """The text with its durations ("0.2 s") masked: they differ from run to run."""
+    """The text with its durations ("0.2 s") masked and without what computed a cold
+    run's steps (", in Python (its C was compiling)"): they differ from run to run."""
+    text = re.sub(r", in Python( until T = \S+ \(C compiling\), then C| \(its C was "
+                  r"compiling\))", "", text)
     return re.sub(r"\b\d+(\.\d+)? s\b", "# s", text)
 
 

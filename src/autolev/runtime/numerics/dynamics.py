@@ -130,7 +130,12 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
     sched = print_schedule(inputs, program)
     on_row = _Rows(system, result, writer, keep_rows)
 
+    compiling = system.rhs_compiling is not None
+    took_over = []          # T where a cold build's C took over from its Python
+
     def f(t, y):
+        if system.rhs_compiling is not None and system.compiled_loop() is not None:
+            took_over.append(t)
         try:
             return system.derivatives(t, y)
         except SingularMassMatrix as exc:
@@ -142,12 +147,14 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
     abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
     try:
         use_loop = compiled and not system.specified_functions
-        # Kutta-Merson in the loop starts in Python while a cold build's C compiles, then
-        # goes on in C; anything else waits for the C
-        tiered = use_loop and method == "kutta-merson"
-        ready = system.compiled_loop(wait=not tiered)
+        # a cold build's C compiles while the run starts on its Python (the back ends
+        # give the same numbers): Kutta-Merson goes on in the compiled loop once it is
+        # there, the other methods call the C then; DOP853 in the loop waits for it
+        # (scipy's DOP853, which Python would step with, sums in another order)
+        ready = system.compiled_loop(wait=use_loop and method == "dop853")
         loop = ready if use_loop else None
-        loop_when_built = system.compiled_loop if tiered and loop is None else None
+        loop_when_built = system.compiled_loop \
+            if use_loop and method == "kutta-merson" and loop is None else None
         on_stiff = switch_when_stiff if method == "dop853" else None
         loose_tolerance_note(method.lower(), relerr)
         if constraints:
@@ -162,6 +169,9 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                                           bar, loop=loop, on_stiff=on_stiff,
                                           loop_when_built=loop_when_built))
         stiff_note(result.stats, method)
+        if compiling and loop_when_built is None:      # (Kutta-Merson's says itself)
+            result.stats.update({"python_until": took_over[0]} if took_over
+                                else {"python_only": True})
     except IntegrationFailure as exc:
         from .advice import failure_message      # reads the model: only when it failed
         on_row(exc.t, exc.y)              # Autolev's last row: where it stopped

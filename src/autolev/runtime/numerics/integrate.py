@@ -366,8 +366,8 @@ def _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row, progres
                               loop_when_built) -> dict:
     """Kutta-Merson in Python while the compiled loop is built, then the loop from the
     same T, state and step (the steps either alone takes: the back ends give the same
-    numbers).  stats["python_until"]: the T where C took over (the last T: it never
-    did), when Python took a step."""
+    numbers).  stats["python_until"]: the T where C took over, when Python took a
+    step; stats["python_only"]: it never did."""
     km = KuttaMerson(f, len(y), abserr, relerr, schedule.fresh_derivatives)
     blocks = schedule.blocks()
     for times, printed in blocks:
@@ -387,7 +387,7 @@ def _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row, progres
                 on_row(t, y)
             if progress is not None:
                 progress.update(t)
-    return dict(stats, python_until=t)
+    return dict(stats, python_only=True)
 
 
 def _scipy_method(name: str):

@@ -141,8 +141,8 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
     {name: value} in SI units and radians), refusing missing ones before anything is
     compiled, then compile it.  `warn_unassigned`: warn about specified quantities that
     will be 0 (not when they are a linearization's inputs).  `locked`: coordinates held
-    fixed (see NumericSystem).  `starts_now`: an integration that can start in Python
-    follows (Kutta-Merson): the right-hand side's C compiles in the background."""
+    fixed (see NumericSystem).  `starts_now`: an integration that can start on the
+    Python follows: the right-hand side's C compiles in the background."""
     command, specified, overrides = given_specified(model, command, options.specified,
                                                     options.overrides)
     kind = command.kind

@@ -225,11 +225,11 @@ def run_summary(kind: CodeKind, filename: str, result: Result, seconds: float) -
 
 def _tiers(stats: dict) -> str:
     """What computed the steps of a run that began before its C was compiled."""
-    if "python_until" not in stats:
-        return ""
-    if stats.get("compiled"):
+    if stats.get("python_only"):
+        return ", in Python (its C was compiling)"
+    if "python_until" in stats:
         return f", in Python until T = {stats['python_until']:.6g} (C compiling), then C"
-    return ", in Python (its C was compiling)"
+    return ""
 
 
 def command_error(kind: CodeKind, exc: Exception) -> str:

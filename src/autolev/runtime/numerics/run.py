@@ -24,9 +24,10 @@ def run_command(model, command, out_dir=None,
     stops the run before it computes anything, unless `options.overwrite`."""
     kind = command.kind
     method = options.method or program_method(command.filename)
-    # Kutta-Merson goes on from Python to C at any step: it need not wait for the compiler
-    starts_now = (kind.integrates and method == "kutta-merson" and options.compiled
-                  and not options.constraints)
+    # an integration may start on the Python while the C compiles, but DOP853 in the
+    # compiled loop (run_dynamics) and a projection onto constraints
+    starts_now = (kind.integrates and not options.constraints
+                  and not (method == "dop853" and options.compiled))
     prepared = prepare_command(model, command, options, out_dir=out_dir,
                                starts_now=starts_now)
     system, inputs = prepared.system, prepared.inputs
