@@ -1,16 +1,17 @@
 """Run plans: a warm `autolev run FILE` without the model.
 
-A run that writes Autolev's files alone (no plot, table or animation) and whose every
-CODE command ended well (integrated in the compiled loop, or evaluated and solved:
-ALGEBRAIC, NONLINEAR) leaves a plan in the cache,
-for the options it was given (values, an .in file by its content, the method...): per
-command, its compiled system as numbers and C sources (the libraries are found again
-in the build cache), its inputs as numbers, the texts of its files besides the rows,
+A run without an animation whose every CODE command ended well (integrated in the
+compiled loop, or evaluated and solved: ALGEBRAIC, NONLINEAR) leaves a plan in the
+cache, for the options it was given (values, an .in file by its content, the
+method...): per command, its compiled system as numbers and sources (C, whose libraries
+are found again in the build cache, or Python), its inputs as numbers, the texts of its
+files besides the rows,
 and what the run printed on stderr (notes, warnings).  The next run of the same file
 with the same options, while the file, every file its translation read and autolev
-itself are unchanged (the translation cache's manifest), repeats the integration from
-the plan and writes the same files, importing neither sympy nor scipy and translating
-nothing.  Anything else runs from the model.
+itself are unchanged (the translation cache's manifest), repeats the run from
+the plan and writes the same files (and the tables and plots asked for, from its
+rows), importing no sympy (scipy only for what needs it: a linear solve, a scipy method)
+and translating nothing.  Anything else runs from the model.
 """
 from __future__ import annotations
 
@@ -66,16 +67,6 @@ class PlannedSystem(CompiledEvaluation):
         self.specified_functions = []
         self.specified_values = np.array(system.specified_values, dtype=float)
         self.constant_values = np.array(system.constant_values, dtype=float)
-        self._bind_loop()
-        self.set_constant_values(self.constant_values)
-
-    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx")
-
-    def __getstate__(self) -> dict:
-        return {k: v for k, v in self.__dict__.items() if k not in self._UNPICKLED}
-
-    def __setstate__(self, state: dict) -> None:
-        self.__dict__.update(state)
         self._bind_loop()
         self.set_constant_values(self.constant_values)
 

@@ -47,6 +47,26 @@ class CompiledEvaluation:
         self._py = self.loop.python_entry if self.loop is not None else None
         self._py_ctx = self.loop.context_address if self.loop is not None else None
 
+    # -- pickling (a NumericSystem with its model, a run plan's system alone) -------------
+    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions",
+                  "rhs_compiling")
+
+    def __getstate__(self) -> dict:
+        """What rebuilds the system: its expressions (a NumericSystem's) and its
+        functions' sources; not the loaded libraries, nor a run's specified functions.
+        A right-hand side still compiling is waited for: the system kept is the
+        compiled one."""
+        self.compiled_loop(wait=True)
+        return {k: v for k, v in self.__dict__.items() if k not in self._UNPICKLED}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self.specified_functions = []
+        self.rhs_compiling = None
+        self._bind_loop()
+        if self.constant_values is not None:
+            self.set_constant_values(self.constant_values)
+
     def compiled_loop(self, wait: bool = False):
         """The compiled integration loop, or None while the right-hand side's C is still
         compiling (NumericSystem.compile(background=True)): it replaces the Python one

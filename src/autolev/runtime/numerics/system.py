@@ -224,23 +224,6 @@ class NumericSystem(CompiledEvaluation):
         return len(self.output_exprs)
 
     # -- pickling (with the model, in the cache of built models) ------------------------
-    _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions",
-                  "rhs_compiling")
-
-    def __getstate__(self) -> dict:
-        """What rebuilds the system: its expressions and its functions' sources (the
-        linearizations' Jacobians too); not the loaded libraries, nor a run's specified
-        functions.  A right-hand side still compiling is waited for: the system kept is
-        the compiled one."""
-        self.compiled_loop(wait=True)
-        return {k: v for k, v in self.__dict__.items() if k not in self._UNPICKLED}
-
-    def __setstate__(self, state: dict) -> None:
-        self.__dict__.update(state)
-        self.specified_functions = []
-        self.rhs_compiling = None
-        self._bind_loop()
-
     # -- structure ------------------------------------------------------------------------
     def _integrated(self, solving) -> tuple[dict, list, list]:
         """({X: rate} for every integrated X, [derivatives solved from M a = f],
