@@ -88,7 +88,8 @@ _P = ctypes.c_void_p
 class _Context(ctypes.Structure):
     _fields_ = [("n", ctypes.c_int), ("m", ctypes.c_int), ("upos", _P), ("c", _P),
                 ("s", _P), ("w", _P), ("out", _P), ("lu", _P), ("b", _P),
-                ("yfail", _P), ("nfev", ctypes.c_double)]
+                ("yfail", _P), ("nfev", ctypes.c_double), ("order", _P), ("start", _P),
+                ("col", _P), ("gather", _P)]
 
 
 def _table() -> np.ndarray:
@@ -119,6 +120,7 @@ class CompiledLoop:
         self.yfail = np.zeros(max(1, nstate))
         self._c = np.zeros(1)
         self._s = np.zeros(1)
+        self._structure = None
         ctx = self.ctx = _Context()
         ctx.n, ctx.m = nstate, self.m
         ctx.upos = self._upos.ctypes.data
@@ -149,6 +151,21 @@ class CompiledLoop:
         self._s = s if len(s) else np.zeros(1)
         self.ctx.c = self._c.ctypes.data
         self.ctx.s = self._s.ctypes.data
+
+    def set_structure(self, structure) -> None:
+        """How the mass matrix is factored (massmatrix.MassStructure: M = L^T D L), or
+        None: by pivoting."""
+        self._structure = None
+        ctx = self.ctx
+        ctx.order = ctx.start = ctx.col = ctx.gather = None
+        if structure is not None:
+            columns = structure.columns
+            gather = [structure.order[k] * self.m + structure.order[j]
+                      for k, j in zip(structure.rows, columns)]
+            arrays = [np.ascontiguousarray(v, dtype=np.intc)
+                      for v in (structure.order, structure.starts, columns, gather)]
+            self._structure = arrays        # kept referenced while the C reads them
+            ctx.order, ctx.start, ctx.col, ctx.gather = (a.ctypes.data for a in arrays)
 
     def derivatives(self, t: float, x: np.ndarray) -> tuple[np.ndarray, int]:
         """(x', status): status 0, or SINGULAR (then self.yfail is x)."""

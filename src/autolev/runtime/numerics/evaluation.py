@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from .cloop import CompiledLoop
-from .massmatrix import SingularMassMatrix, solve_mass_matrix
+from .massmatrix import SingularMassMatrix, solve_mass_matrix, symmetric
 
 
 class CompiledEvaluation:
@@ -16,7 +16,9 @@ class CompiledEvaluation:
     unknown_positions (the accelerations M a = f solves, and where they go in the
     state); n_rhs, n_outputs; rhs_function, output_function, extra_functions
     ({name: (function, size)}); solved (the unknowns the caller supplies at output
-    time); constant_values, specified_values, specified_functions; rhs_compiling (the
+    time); mass_structure (how the mass matrix is factored if it is symmetric, or None:
+    massmatrix.MassStructure); _factoring (the structure at the constants set, or None);
+    constant_values, specified_values, specified_functions; rhs_compiling (the
     right-hand side's C being compiled while its Python runs, or None);
     constants_function and derived_constants (the constants computed from the
     parameters, and how many)."""
@@ -32,8 +34,29 @@ class CompiledEvaluation:
     def set_constant_values(self, values: np.ndarray) -> None:
         """The constants' values (parameters, then what is computed from them)."""
         self.constant_values = values
+        self._factoring = self._factoring_at(values)
         if self.loop is not None:
             self.loop.set_values(self.constant_values, self.specified_values)
+            self.loop.set_structure(self._factoring)
+
+    def _factoring_at(self, values: np.ndarray):
+        """The mass matrix's structure when it is symmetric at these constants (proven
+        from its expressions, or judged at two random states and specified values),
+        else None: it is solved by pivoting."""
+        structure = self.mass_structure
+        if structure is None or structure.proven:
+            return structure
+        rng = np.random.default_rng(0)
+        ns, n = self.nstate, self._n
+        out = np.empty(self.n_rhs)
+        matrices = []
+        for _ in range(2):
+            x = rng.uniform(-1.0, 1.0, ns)
+            s = rng.uniform(-1.0, 1.0, len(self.specified_values))
+            with np.errstate(all="ignore"):
+                self.rhs_function.call(np.array([0.5]), x, values, s, out)
+            matrices.append(out[ns:ns + n * n].reshape(n, n).copy())
+        return structure if symmetric(np.array(matrices)) else None
 
     def _bind_loop(self) -> None:
         """The compiled integration loop and the CPython entry point of the right-hand
@@ -49,7 +72,7 @@ class CompiledEvaluation:
 
     # -- pickling (a NumericSystem with its model, a run plan's system alone) -------------
     _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions",
-                  "rhs_compiling")
+                  "rhs_compiling", "_factoring")
 
     def __getstate__(self) -> dict:
         """What rebuilds the system: its expressions (a NumericSystem's) and its
@@ -63,6 +86,7 @@ class CompiledEvaluation:
         self.__dict__.update(state)
         self.specified_functions = []
         self.rhs_compiling = None
+        self._factoring = None
         self._bind_loop()
         if self.constant_values is not None:
             self.set_constant_values(self.constant_values)
@@ -116,7 +140,7 @@ class CompiledEvaluation:
         if n:
             mm = out[ns:ns + n * n].reshape(n, n)
             f = out[ns + n * n:ns + n * n + n]
-            xdot[self.unknown_positions] = solve_mass_matrix(mm, f, t)
+            xdot[self.unknown_positions] = solve_mass_matrix(mm, f, t, self._factoring)
         return xdot
 
     def last_mass_matrix(self) -> np.ndarray | None:

@@ -59,6 +59,10 @@ typedef struct {
     double *lu, *b;         /* m*m and m doubles for the solve */
     double *yfail;          /* n: the state at which the mass matrix was singular */
     double nfev;
+    /* a symmetric mass matrix (massmatrix.MassStructure): the order its speeds are
+     * factored in, where each compact row starts, the column (in that order) and the
+     * place in M of each of its entries; NULL: solved by pivoting */
+    const int *order, *start, *col, *gather;
 } al_ctx;
 
 /* M u' = f by Gaussian elimination with partial pivoting; -1 when a pivot is
@@ -101,6 +105,48 @@ static int al_lu_solve(int m, double *a, double *b)
     return 0;
 }
 
+/* M u' = f for a symmetric M as M = L^T D L without pivoting, along each row's chain
+ * of parents (Featherstone's LTDL).  Row k is held compactly in r + start[k]: its
+ * entries in the columns col[start[k] ...] = k, parent[k], parent[parent[k]], ...
+ * (the chain of an ancestor i of k is the tail of k's, so each update is one
+ * contiguous loop); the rows become L's with D^-1 on their first places.  b is in the
+ * factoring's order.  -1 when an entry of D is not positive and finite: M is then not
+ * positive definite, and the caller solves it by pivoting.  massmatrix.py's
+ * _solve_ltdl does the same operations on each entry in the same order. */
+static int al_ltdl_solve(int m, double *r, double *b, const int *start, const int *col)
+{
+    int j, k, t;
+    for (k = m - 1; k >= 0; k--) {
+        double *rk = r + start[k], d = rk[0], inv;
+        int len = start[k + 1] - start[k];
+        if (!(d > 0.0) || d == INFINITY) return -1;
+        inv = 1.0 / d;
+        for (t = 1; t < len; t++) {
+            int i = col[start[k] + t], n = start[i + 1] - start[i];
+            double *ri = r + start[i], l = rk[t] * inv;
+            const double *tail = rk + t;
+            for (j = 0; j < n; j++) ri[j] -= l * tail[j];
+            rk[t] = l;
+        }
+        rk[0] = inv;
+    }
+    for (k = m - 1; k >= 0; k--) {
+        const double *rk = r + start[k], bk = b[k];
+        const int *ck = col + start[k];
+        int len = start[k + 1] - start[k];
+        for (t = 1; t < len; t++) b[ck[t]] -= rk[t] * bk;
+    }
+    for (k = 0; k < m; k++) {
+        const double *rk = r + start[k];
+        const int *ck = col + start[k];
+        int len = start[k + 1] - start[k];
+        double acc = b[k] * rk[0];
+        for (t = 1; t < len; t++) acc -= rk[t] * b[ck[t]];
+        b[k] = acc;
+    }
+    return 0;
+}
+
 void autolev_rhs(const double *t, const double *x, const double *c, const double *s,
                  double *w, double *out);
 
@@ -121,6 +167,17 @@ static int al_f(al_ctx *ctx, double t, const double *x, double *xdot)
         }
         xdot[ctx->upos[0]] = ctx->out[n + 1] / mm;
         return 0;
+    }
+    if (ctx->order) {
+        const int *o = ctx->order, *gather = ctx->gather, *start = ctx->start;
+        const double *mm = ctx->out + n, *f = ctx->out + n + m * m;
+        int nnz = start[m];
+        for (i = 0; i < nnz; i++) ctx->lu[i] = mm[gather[i]];
+        for (i = 0; i < m; i++) ctx->b[i] = f[o[i]];
+        if (al_ltdl_solve(m, ctx->lu, ctx->b, start, ctx->col) == 0) {
+            for (i = 0; i < m; i++) xdot[ctx->upos[o[i]]] = ctx->b[i];
+            return 0;
+        }
     }
     memcpy(ctx->lu, ctx->out + n, (size_t)m * m * sizeof(double));
     memcpy(ctx->b, ctx->out + n + m * m, (size_t)m * sizeof(double));

@@ -28,6 +28,7 @@ from . import clibrary, codegen
 from .cloop import extra_source as loop_extra_source
 from .compiled import CompilingInBackground, compile_program
 from .evaluation import CompiledEvaluation
+from .massmatrix import MassStructure
 
 
 def alphabetical(syms) -> list:
@@ -78,6 +79,7 @@ class NumericSystem(CompiledEvaluation):
         self.implicit_unknowns = unknowns          # derivatives solved from M a = f
         self.solved = [s for s in solved if s not in unknowns]
         self._n = len(unknowns)
+        self.mass_structure = MassStructure.of(dyn[:self._n ** 2], self._n)
         solved_here = set(unknowns)     # their places are filled by the M a = f solve
         rate_exprs = [sm.S.Zero if rates[x] in solved_here else rates[x]
                       for x in self.states]
@@ -106,6 +108,7 @@ class NumericSystem(CompiledEvaluation):
         if compile_functions:
             self.compile()
         self.constant_values = None
+        self._factoring = None
         self.specified_values = np.zeros(len(self.specified))
         self.specified_functions: list = []
 
