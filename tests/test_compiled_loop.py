@@ -1,5 +1,6 @@
 """The compiled integration loop (loop.c): the same steps, rows and failures as the
 Python loops, stiffness detection, and the C solve of Kane's equations."""
+import re
 import warnings
 
 import numpy as np
@@ -42,6 +43,27 @@ def test_kutta_merson_in_c_takes_exactly_the_python_steps(name):
     assert np.array_equal(a.states, b.states)
     for ta, tb in zip(a.outputs, b.outputs):
         assert np.array_equal(ta.data, tb.data)
+
+
+@pytest.mark.parametrize("name", ["double_pendulum", "rolling_disc"])
+def test_rk45_afresh_every_step_in_c_takes_scipys_steps(name, tmp_path):
+    """A Matlab program's run (ode45 over each INTEGSTP) in the compiled loop: scipy's
+    RK45 step for step, its sums in another order (rounding level)."""
+    source = (EXAMPLES / f"{name}.al").read_text()
+    matlab = tmp_path / f"{name}.al"
+    matlab.write_text(re.sub(r"(CODE\s+DYNAMICS\(\)\s+\w+)\.\w+", r"\1.m", source,
+                             flags=re.IGNORECASE))
+    m = compiled(autolev.load(matlab))
+    kw = dict(TFINAL=3, ABSERR=1e-7, RELERR=1e-7)
+    a = run(m, compiled=True, **kw)
+    b = run(m, compiled=False, **kw)
+    assert a.stats["method"] == b.stats["method"] == "rk45"
+    assert a.stats.get("compiled") and not b.stats.get("compiled")
+    assert a.stats["evaluations"] == b.stats["evaluations"]
+    assert a.stats["steps"] == b.stats["steps"]
+    assert np.array_equal(a.t, b.t)
+    scale = np.abs(b.states).max()
+    assert np.abs(a.states - b.states).max() < 1e-10 * scale
 
 
 @pytest.mark.parametrize("name", ["double_pendulum", "nlink_pendulum", "rolling_disc"])
@@ -308,3 +330,23 @@ def test_a_cold_run_does_not_wait_for_its_c_and_keeps_it_for_the_next(tmp_path,
     # the model kept is the compiled one: read back, its run is C from the first step
     again = run(autolev.load(path), TFINAL=5, method=method)
     assert again.system.rhs_function.backend == "c" and not tiers & set(again.stats)
+
+
+@pytest.mark.parametrize("backend", ["auto", "python"])
+def test_the_outputs_of_many_rows_are_those_of_each_row(backend):
+    """A run's print rows have their outputs computed in one call (outputs_rows): the
+    numbers of one call per row, to the last bit, and the mass matrix at each."""
+    m = compiled(load("double_pendulum"))
+    r = run(m, TFINAL=2, backend=backend)
+    system = r.system
+    assert (system.output_function.backend == "c") == (backend == "auto")
+    values, matrices = system.outputs_rows(r.t, r.states)
+    for i, (t, x) in enumerate(zip(r.t, r.states)):
+        assert np.array_equal(values[i], system.outputs(t, x))
+        assert np.array_equal(matrices[i], system.last_mass_matrix())
+    # the run's own table (its rows from the loop a slice at a time): these numbers
+    first = r.outputs[0].data
+    degrees = np.array(system.degree_columns[0])
+    raw = values[:, :first.shape[1]]
+    assert len(first) == len(values) > 10
+    assert np.array_equal(first, np.where(degrees, raw * 180 / np.pi, raw))

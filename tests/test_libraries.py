@@ -49,6 +49,16 @@ def test_the_shipped_dop853_tableau_is_scipys_to_the_last_bit():
         assert np.array_equal(np.array(getattr(shipped, name)), theirs.ravel()), name
 
 
+def test_the_shipped_rk45_tableau_is_scipys_to_the_last_bit():
+    from scipy.integrate import RK45
+    from autolev.runtime.numerics import rk45_tableau as shipped
+    assert shipped.STAGES == RK45.n_stages
+    a = np.array(shipped.A).reshape(6, 6)       # scipy's is 6 x 5: no stage uses the last
+    assert np.array_equal(a[:, :5], RK45.A) and not a[:, 5].any()
+    for name, theirs in (("B", RK45.B), ("C", RK45.C), ("E", RK45.E)):
+        assert np.array_equal(np.array(getattr(shipped, name)), theirs), name
+
+
 def test_the_compiled_loop_reads_the_tableau_without_importing_scipy_integrate():
     import subprocess
     import sys

@@ -154,6 +154,21 @@ def c_function(source: str, name: str, n_in: int, n_work: int, extra_source: str
         if len(out):
             out[:] = tmp[:len(out)]
         return out
+    rows_fn = lib[name + "_rows"]
+    rows_fn.argtypes = ([ctypes.c_long, ctypes.c_void_p] + [ctypes.c_void_p] * (n_in + 2)
+                        + [ctypes.c_long])
+    rows_fn.restype = None
+
+    def rows(arrays, per_row, out):
+        """Every row of `out` (rows x outputs, C order) from the rows of the inputs that
+        are `per_row` (2-D, C order) and the same vectors for the others."""
+        keep: list = []
+        step = np.array([a.shape[1] if each else 0 for a, each in zip(arrays, per_row)],
+                        dtype=ctypes.c_long)
+        rows_fn(len(out), step.ctypes.data, *[address(np.ravel(a), keep) for a in arrays],
+                work_addr, out.ctypes.data, out.shape[1])
+        return out
     call.lib = lib
     call.work = work
+    call.rows = rows
     return call

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import dop853_tableau
+from . import dop853_tableau, rk45_tableau
 
 LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
 PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
@@ -67,7 +67,10 @@ ST_SIZE = 24
 (OP_RTOL, OP_ATOL, OP_MAXSTEP, OP_TBOUND, OP_STIFF_STOP, OP_BUDGET, OP_INTEGSTP,
  OP_FRESH) = range(8)
 
-METHOD_CODES = {"kutta-merson": 0, "dop853": 1}
+METHOD_CODES = {"kutta-merson": 0, "dop853": 1, "rk45": 2}
+# the methods whose rows come after every INTEGSTP step (Autolev's loop), not at print
+# times inside a step: Kutta-Merson, and RK45 afresh over each step (Matlab's programs)
+STEPPED = (0, 2)
 
 
 @dataclass(frozen=True)
@@ -92,17 +95,20 @@ class _Context(ctypes.Structure):
                 ("col", _P), ("gather", _P)]
 
 
-def _table() -> np.ndarray:
-    """The Dormand-Prince 8(5,3) tables (A 16x16, B, C, E3, E5, D 4x16) as one array,
-    in the order the C loop reads them (the shipped tableau: no scipy import)."""
-    global _TABLE
-    if _TABLE is None:
-        k = dop853_tableau
-        _TABLE = np.array(k.A + k.B + k.C + k.E3 + k.E5 + k.D, dtype=float)
-    return _TABLE
+def _table(method: str = "dop853") -> np.ndarray:
+    """A method's tables as one array, in the order the C loop reads them (the shipped
+    tableaux: no scipy import): DOP853's A (16 x 16), B, C, E3, E5, D (4 x 16);
+    RK45's A (6 x 6), B, C, E."""
+    table = _TABLES.get(method)
+    if table is None:
+        k = rk45_tableau if method == "rk45" else dop853_tableau
+        parts = ((k.A, k.B, k.C, k.E) if method == "rk45" else
+                 (k.A, k.B, k.C, k.E3, k.E5, k.D))
+        table = _TABLES[method] = np.array(sum(parts, ()), dtype=float)
+    return table
 
 
-_TABLE = None
+_TABLES: dict = {}
 
 
 class CompiledLoop:
@@ -188,7 +194,8 @@ class CompiledLoop:
             steps_state: KuttaMersonState | None = None) -> dict:
         """Integrate from y0 at opts['t0'] over `blocks` of the schedule, (times,
         printed, end) each; Kutta-Merson: the T after every INTEGSTP step and which are
-        printed (end None); DOP853: the print times (printed None) and the end it may
+        printed (end None), and so RK45 started afresh over each step; DOP853: the
+        print times (printed None) and the end it may
         step to (see Schedule.bounded_print_blocks).  The state carries from block to block,
         so only one block's rows are in memory.  on_rows(t_array, rows) gets the rows of
         each slice.  `budget`: right-hand-side calls in the first slice (later slices
@@ -216,7 +223,7 @@ class CompiledLoop:
         op[OP_INTEGSTP] = opts.get("integstp", 0.0)
         op[OP_FRESH] = 1.0 if opts.get("fresh") else 0.0
         work = np.zeros((16 + 8 + 7) * max(1, n))      # DOP853: 29 n, Kutta-Merson: 7 n
-        table = _table()
+        table = _table(method)
         r = DONE
         times = np.zeros(0)
         for block, printed, end in blocks:
@@ -225,7 +232,7 @@ class CompiledLoop:
                 op[OP_TBOUND] = end
             flags = np.ascontiguousarray(printed if printed is not None else
                                          np.ones(len(times)), dtype=np.intc)
-            nrows = int(flags.sum()) if code == 0 else len(times)
+            nrows = int(flags.sum()) if code in STEPPED else len(times)
             rows = np.zeros((max(1, nrows), n))
             rtimes = np.zeros(max(1, nrows))
             st[ST_ROW] = st[ST_KMROWS] = 0
@@ -238,9 +245,9 @@ class CompiledLoop:
                 start = _time.perf_counter()
                 r = self._integrate(*args)
                 elapsed = _time.perf_counter() - start
-                written = int(st[ST_KMROWS] if code == 0 else st[ST_ROW])
+                written = int(st[ST_KMROWS] if code in STEPPED else st[ST_ROW])
                 if written > done_rows:
-                    t_rows = (rtimes[done_rows:written] if code == 0
+                    t_rows = (rtimes[done_rows:written] if code in STEPPED
                               else times[done_rows:written])
                     on_rows(np.array(t_rows), rows[done_rows:written].copy())
                     done_rows = written
@@ -252,7 +259,7 @@ class CompiledLoop:
                     budget = min(max(200.0, budget * (0.1 / max(elapsed, 1e-6))), 1e7)
             if r != DONE:
                 break
-        rest = times[int(st[ST_ROW]):] if code != 0 else np.zeros(0)
+        rest = times[int(st[ST_ROW]):] if code not in STEPPED else np.zeros(0)
         stats = {"evaluations": int(st[ST_NFEV]), "steps": int(st[ST_NSTEP]),
                  "rejected": int(st[ST_NREJ])}
         return {"status": r, "t": float(st[ST_T]), "y": y, "stats": stats, "rest": rest,

@@ -351,6 +351,13 @@ def c_source(prog: Program, name: str = "compute") -> str:
     lines.append("{")
     lines += [f"    {name}_part{n}({call_args});" for n in range(len(parts))]
     lines.append("}")
+    # many rows in one call (a run's print rows): input k advances by step[k] doubles
+    # a row (0: the same for every row), out by out_step
+    row_args = ", ".join([f"{a} + i * step[{k}]" for k, a in enumerate(prog.inputs)]
+                         + ["w", "out + i * out_step"])
+    lines += ["", f"void {name}_rows(long count, const long *step, {params}, long out_step)",
+              "{", "    long i;", f"    for (i = 0; i < count; i++) {name}({row_args});",
+              "}"]
     return "\n".join(lines) + "\n"
 
 

@@ -82,18 +82,26 @@ class _Rows:
 
     def __call__(self, t, y) -> None:
         values = self.system.outputs(t, y)       # solves for the accelerations once
+        self._add(t, np.array(y), values, self.system.last_mass_matrix())
+
+    def block(self, times: np.ndarray, states: np.ndarray) -> None:
+        """Rows the compiled loop gave, their outputs computed in one call."""
+        values, matrices = self.system.outputs_rows(times, states)
+        for i, t in enumerate(times.tolist()):
+            self._add(t, states[i], values[i], matrices[i] if matrices else None)
+
+    def _add(self, t: float, state: np.ndarray, values: np.ndarray, mm) -> None:
         if not self.keep_rows and self.times:
             self.times.clear()
             self.states.clear()
             for r in self.rows:
                 r.clear()
         self.times.append(t)
-        self.states.append(np.array(y))
+        self.states.append(state)
         split_outputs(self.system, values, self.rows, self.writer, self.encoded)
         self.result.stats["rows"] = self.result.stats.get("rows", 0) + 1
-        mm = self.system.last_mass_matrix()
         if mm is not None:
-            self.conditioning.add(t, self.states[-1], mm)
+            self.conditioning.add(t, state, mm)
 
     def finish(self) -> None:
         result, system = self.result, self.system
@@ -167,7 +175,8 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         else:
             result.stats.update(integrate(f, y0, sched, method, abserr, relerr, on_row,
                                           bar, loop=loop, on_stiff=on_stiff,
-                                          loop_when_built=loop_when_built))
+                                          loop_when_built=loop_when_built,
+                                          on_rows=on_row.block))
         stiff_note(result.stats, method)
         if compiling and loop_when_built is None:      # (Kutta-Merson's says itself)
             result.stats.update({"python_until": took_over[0]} if took_over

@@ -177,6 +177,36 @@ class CompiledEvaluation:
         """Every output column and ENCODE value at (t, x), in internal units."""
         return self._call(self.output_function, self.n_outputs, t, x, xdot, solved)
 
+    def outputs_rows(self, times: np.ndarray, states: np.ndarray) -> tuple:
+        """The outputs at many (t, x) rows of a run in one call of their function: (rows
+        x columns, and the mass matrix at each row or None); the accelerations solved at
+        each row (NaN where M is singular).  Rows whose specified quantities are Python
+        functions of (t, x) go one by one."""
+        n, ns = self._n, self.nstate
+        count = len(times)
+        accelerations = np.empty((count, n))
+        matrices = [] if n else None
+        for i in range(count):
+            if n:
+                try:
+                    xdot = self.derivatives(times[i], states[i])
+                except SingularMassMatrix:
+                    xdot = np.full(ns, np.nan)
+                accelerations[i] = xdot[self.unknown_positions]
+                matrices.append(self.last_mass_matrix())
+        out = np.empty((count, self.n_outputs))
+        if self.specified_functions or self.solved:
+            for i in range(count):
+                out[i] = self._call(self.output_function, self.n_outputs, times[i],
+                                    states[i], xdot=None)
+            return out, matrices
+        t = np.ascontiguousarray(times, dtype=float).reshape(count, 1)
+        x = np.ascontiguousarray(states, dtype=float).reshape(count, ns)
+        self.output_function.call.rows(
+            [t, x, self.constant_values, self.specified_values, accelerations],
+            [True, True, False, False, True], out)
+        return out, matrices
+
     def extra(self, name: str, t: float, x=(), solved=()) -> np.ndarray:
         fn, size = self.extra_functions[name]
         return self._call(fn, size, t, x, None, solved)

@@ -300,16 +300,20 @@ class Progress:
 
 def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
               relerr: float, on_row, progress: Progress | None = None, loop=None,
-              on_stiff=None, loop_when_built=None) -> dict:
+              on_stiff=None, loop_when_built=None, on_rows=None) -> dict:
     """Integrate y' = f(t, y) on the schedule, calling on_row(t, y) at print times.
     Raises IntegrationFailure (after the rows up to then were given).
 
-    `loop`: a CompiledLoop of the same right-hand side; Kutta-Merson and DOP853 then
-    run in C (the same steps).  `on_stiff(t, hlamb)`: called when the compiled DOP853
-    finds the equations stiff at time t; if it returns a scipy method name the run
-    goes on from there with that method, else DOP853 goes on.  `loop_when_built()`:
+    `loop`: a CompiledLoop of the same right-hand side; Kutta-Merson, DOP853 and RK45
+    started afresh over each step (Autolev's Matlab loop) then run in C (the same
+    steps; DOP853's and RK45's sums in C differ from scipy's at rounding level).
+    `on_stiff(t, hlamb)`: called when the compiled DOP853 finds the equations stiff at
+    time t; if it returns a scipy method name the run goes on from there with that
+    method, else DOP853 goes on.  `loop_when_built()`:
     while the loop is being compiled, it or None (not yet); Kutta-Merson steps in
-    Python until it is there, then goes on in C from the same state and step."""
+    Python until it is there, then goes on in C from the same state and step.
+    `on_rows(times, states)`: takes the compiled loop's rows a slice at a time, in
+    place of on_row for each."""
     schedule.check()
     y = np.array(y0, dtype=float)
     t = schedule.tinitial
@@ -317,12 +321,13 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
     if not np.all(np.isfinite(f(t, y))):
         raise IntegrationFailure(f"the derivatives are not finite at T = {t:.6g}", t, y)
     on_row(t, y)
-    if loop is not None and method in ("kutta-merson", "dop853"):
+    if loop is not None and (method in ("kutta-merson", "dop853") or
+                             method == "rk45" and schedule.restart_each_step):
         return _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row,
-                                   progress, on_stiff)
+                                   progress, on_stiff, on_rows=on_rows)
     if loop_when_built is not None and method == "kutta-merson":
         return _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row,
-                                         progress, stats, loop_when_built)
+                                         progress, stats, loop_when_built, on_rows)
     return _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
                              stats)
 
@@ -363,7 +368,7 @@ def _km_step(km: KuttaMerson, y, t: float, integstp: float, stats: dict) -> np.n
 
 
 def _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row, progress, stats,
-                              loop_when_built) -> dict:
+                              loop_when_built, on_rows=None) -> dict:
     """Kutta-Merson in Python while the compiled loop is built, then the loop from the
     same T, state and step (the steps either alone takes: the back ends give the same
     numbers).  stats["python_until"]: the T where C took over, when Python took a
@@ -377,7 +382,8 @@ def _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row, progres
                 rest = itertools.chain([(times[k:], printed[k:])], blocks)
                 more = _integrate_compiled(f, loop, y, schedule, "kutta-merson", abserr,
                                            relerr, on_row, progress, None, t0=t,
-                                           km_blocks=rest, steps_state=km.steps_state())
+                                           km_blocks=rest, steps_state=km.steps_state(),
+                                           on_rows=on_rows)
                 for count in ("evaluations", "steps", "rejected"):
                     more[count] += stats.get(count, 0)
                 return dict(more, python_until=t) if km.evaluations else more
@@ -466,23 +472,24 @@ def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, 
 
 
 def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, progress,
-                        on_stiff, t0=None, km_blocks=None, steps_state=None) -> dict:
+                        on_stiff, t0=None, km_blocks=None, steps_state=None,
+                        on_rows=None) -> dict:
     """The schedule in C; Kutta-Merson from `t0` over `km_blocks` (the schedule's blocks
     from there) in `steps_state`, when Python stepped until then."""
     t0 = schedule.tinitial if t0 is None else t0
     opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
             "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives}
-    if method == "kutta-merson":
+    if method in ("kutta-merson", "rk45"):
         blocks = ((times, printed, None) for times, printed in
                   (schedule.blocks() if km_blocks is None else km_blocks))
     else:
         blocks = ((times, None, end) for times, end in schedule.bounded_print_blocks())
 
-    def on_rows(ts, rows):
+    def row_by_row(ts, rows):
         for tk, yk in zip(ts.tolist(), rows):
             on_row(tk, yk)
 
-    out = loop.run(method, y, blocks, opts, on_rows, progress,
+    out = loop.run(method, y, blocks, opts, on_rows or row_by_row, progress,
                    stiff_stop=on_stiff is not None, steps_state=steps_state)
     stats = dict(out["stats"], method=method, compiled=True)
     r, tf, hf = out["status"], out["fail_t"], out["fail_h"]
@@ -515,10 +522,12 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
             raise IntegrationFailure(
                 f"the step size {hf:.14E} is too small relative to the time {tf:.14E}; "
                 "integration halted because of numerical round-off", tf, y_last)
-        raise IntegrationFailure(f"DOP853 failed at T = {tf:.6g}: Required step size is "
-                                 "less than spacing between numbers.", tf, y_last)
+        raise IntegrationFailure(f"{SCIPY_METHODS[method]} failed at T = {tf:.6g}: "
+                                 "Required step size is less than spacing between "
+                                 "numbers.", tf, y_last)
     if r == cloop.NONFINITE:
-        shown = tf + hf if method == "kutta-merson" else tf
+        # Kutta-Merson and RK45 name the time they stepped to, as their Python loops
+        shown = tf + hf if method in ("kutta-merson", "rk45") else tf
         raise IntegrationFailure(f"the state is not finite at T = {shown:.6g}", tf, y_last)
     raise IntegrationFailure(f"the compiled integrator stopped with code {r}", out["t"],
                              y_last)

@@ -327,6 +327,40 @@ static double al_rms(int n, const double *v)
     return sqrt(s / n);
 }
 
+/* the first step of scipy's solvers (Hairer, Norsett and Wanner, II.4) for a method
+ * whose error estimate has order `order`, from f0 = f(t, y) to t_bound; -1 on a
+ * failing evaluation (st[ST_FAIL_T] set) */
+static double al_first_step(al_ctx *ctx, double *st, double t, const double *y,
+                            const double *f0, double t_bound, double max_step, double rtol,
+                            double atol, int order, double *scale, double *tmp,
+                            double *f1, int *status)
+{
+    int n = ctx->n, i, r;
+    double d0, d1, d2, h0, h1, h, len = fabs(t_bound - t), dir = t_bound >= t ? 1.0 : -1.0;
+    *status = 0;
+    if (len == 0.0) return 0.0;
+    for (i = 0; i < n; i++) scale[i] = atol + fabs(y[i]) * rtol;
+    for (i = 0; i < n; i++) tmp[i] = y[i] / scale[i];
+    d0 = al_rms(n, tmp);
+    for (i = 0; i < n; i++) tmp[i] = f0[i] / scale[i];
+    d1 = al_rms(n, tmp);
+    h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+    if (h0 > len) h0 = len;
+    for (i = 0; i < n; i++) tmp[i] = y[i] + h0 * dir * f0[i];
+    if ((r = al_f(ctx, t + h0 * dir, tmp, f1)) != 0) {
+        st[ST_FAIL_T] = t; *status = r; return -1.0;
+    }
+    for (i = 0; i < n; i++) tmp[i] = (f1[i] - f0[i]) / scale[i];
+    d2 = al_rms(n, tmp) / h0;
+    if (d1 <= 1e-15 && d2 <= 1e-15) h1 = 1e-6 > h0 * 1e-3 ? 1e-6 : h0 * 1e-3;
+    else h1 = pow(0.01 / (d1 > d2 ? d1 : d2), 1.0 / (order + 1));
+    h = 100 * h0;
+    if (h1 < h) h = h1;
+    if (len < h) h = len;
+    if (max_step < h) h = max_step;
+    return h;
+}
+
 /* work layout for DOP853 (n = states):
  *   K[16][n] | y_new n | f_cur n | y_old n | ystage n | F[7][n] | tmp n | scale n */
 #define DK(s) (work + (size_t)(s) * n)
@@ -368,40 +402,12 @@ static int al_dop_run(al_ctx *ctx, double *st, const double *opts, double *y,
     int k = (int)st[ST_ROW];
 
     if (!st[ST_STARTED]) {
-        /* f at the start, and scipy's first step (Hairer, Norsett and Wanner, II.4) */
-        double d0, d1, d2, h0, h1, len = fabs(t_bound - st[ST_T]);
+        /* f at the start, and scipy's first step */
         if ((r = al_f(ctx, st[ST_T], y, fcur)) != 0) { st[ST_FAIL_T] = st[ST_T]; return r; }
         if (!al_finite(n, fcur)) { st[ST_FAIL_T] = st[ST_T]; return AL_NONFINITE; }
-        if (len == 0.0) {
-            st[ST_H] = 0.0;
-        } else {
-            for (i = 0; i < n; i++) scale[i] = atol + fabs(y[i]) * rtol;
-            for (i = 0; i < n; i++) tmp[i] = y[i] / scale[i];
-            d0 = al_rms(n, tmp);
-            for (i = 0; i < n; i++) tmp[i] = fcur[i] / scale[i];
-            d1 = al_rms(n, tmp);
-            h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
-            if (h0 > len) h0 = len;
-            for (i = 0; i < n; i++) tmp[i] = y[i] + h0 * dir * fcur[i];
-            if ((r = al_f(ctx, st[ST_T] + h0 * dir, tmp, DK(0))) != 0) {
-                st[ST_FAIL_T] = st[ST_T]; return r;
-            }
-            for (i = 0; i < n; i++) tmp[i] = (DK(0)[i] - fcur[i]) / scale[i];
-            d2 = al_rms(n, tmp) / h0;
-            if (d1 <= 1e-15 && d2 <= 1e-15) {
-                h1 = 1e-6 > h0 * 1e-3 ? 1e-6 : h0 * 1e-3;
-            } else {
-                double dm = d1 > d2 ? d1 : d2;
-                h1 = pow(0.01 / dm, 1.0 / 8.0);
-            }
-            {
-                double h = 100 * h0;
-                if (h1 < h) h = h1;
-                if (len < h) h = len;
-                if (max_step < h) h = max_step;
-                st[ST_H] = h;
-            }
-        }
+        st[ST_H] = al_first_step(ctx, st, st[ST_T], y, fcur, t_bound, max_step, rtol, atol,
+                                 7, scale, tmp, DK(0), &r);
+        if (r != 0) return r;
         st[ST_STARTED] = 1;
     }
 
@@ -554,8 +560,116 @@ static int al_dop_run(al_ctx *ctx, double *st, const double *opts, double *y,
     }
 }
 
+/* ---- RK45 afresh over every INTEGSTP (Autolev's Matlab programs) --------------- */
+
+/* scipy's RK45 from (st[ST_T], y) to t_bound, started afresh (as ode45 over one
+ * INTEGSTP in Autolev's Matlab loop): f at the start, scipy's first step, then its
+ * steps (RungeKutta._step_impl) until t_bound.  work: 11 n doubles; tab: A (6 x 6),
+ * B (6), C (6), E (7).  On a failure y is the last accepted state, st[ST_FAIL_T] the
+ * time of that state and st[ST_FAIL_H] the step tried from it. */
+static int al_rk45_interval(al_ctx *ctx, double *st, const double *opts, double *y,
+                            double t_bound, double *work, const double *tab)
+{
+    int n = ctx->n, i, s, j, r;
+    const double *A = tab, *B = A + 36, *C = B + 6, *E = C + 6;
+    double rtol = opts[OP_RTOL], atol = opts[OP_ATOL], max_step = opts[OP_MAXSTEP];
+    double t = st[ST_T], dir = t_bound >= t ? 1.0 : -1.0, h_abs;
+    double *K = work, *ynew = K + 7 * (size_t)n, *ytmp = ynew + n, *scale = ytmp + n,
+           *tmp = scale + n;
+    if ((r = al_f(ctx, t, y, K)) != 0) { st[ST_FAIL_T] = t; return r; }
+    h_abs = al_first_step(ctx, st, t, y, K, t_bound, max_step, rtol, atol, 4, scale, tmp,
+                          K + n, &r);
+    if (r != 0) return r;
+    while (t != t_bound) {
+        double min_step = 10 * fabs(nextafter(t, dir * INFINITY) - t);
+        double h, t_new, err;
+        int rejected = 0;
+        if (h_abs > max_step) h_abs = max_step;
+        else if (h_abs < min_step) h_abs = min_step;
+        for (;;) {
+            double e = 0;
+            if (h_abs < min_step) {
+                st[ST_FAIL_T] = t; st[ST_FAIL_H] = h_abs; return AL_SMALL_STEP;
+            }
+            h = h_abs * dir;
+            t_new = t + h;
+            if (dir * (t_new - t_bound) > 0) t_new = t_bound;
+            h = t_new - t;
+            h_abs = fabs(h);
+            for (s = 1; s < 6; s++) {
+                for (i = 0; i < n; i++) {
+                    double acc = 0;
+                    for (j = 0; j < s; j++) acc += K[(size_t)j * n + i] * A[s * 6 + j];
+                    ytmp[i] = y[i] + acc * h;
+                }
+                if ((r = al_f(ctx, t + C[s] * h, ytmp, K + (size_t)s * n)) != 0) {
+                    st[ST_FAIL_T] = t; st[ST_FAIL_H] = h; return r;
+                }
+            }
+            for (i = 0; i < n; i++) {
+                double acc = 0;
+                for (s = 0; s < 6; s++) acc += K[(size_t)s * n + i] * B[s];
+                ynew[i] = y[i] + h * acc;
+            }
+            if ((r = al_f(ctx, t + h, ynew, K + 6 * (size_t)n)) != 0) {
+                st[ST_FAIL_T] = t; st[ST_FAIL_H] = h; return r;
+            }
+            for (i = 0; i < n; i++) {
+                double a = fabs(y[i]), b = fabs(ynew[i]), acc = 0, q;
+                for (s = 0; s < 7; s++) acc += K[(size_t)s * n + i] * E[s];
+                q = acc * h / (atol + (a > b ? a : b) * rtol);
+                e += q * q;
+            }
+            err = sqrt(e / n);
+            if (err < 1) {
+                double factor = err == 0 ? 10.0 : 0.9 * pow(err, -0.2);
+                if (factor > 10.0) factor = 10.0;
+                if (rejected && factor > 1) factor = 1;
+                h_abs *= factor;
+                break;
+            }
+            {   /* Python's max(0.2, nan) is 0.2: a NaN error shrinks the step */
+                double factor = 0.9 * pow(err, -0.2);
+                h_abs *= factor > 0.2 ? factor : 0.2;
+            }
+            rejected = 1;
+            st[ST_NREJ] += 1;
+        }
+        st[ST_NSTEP] += 1;
+        if (!al_finite(n, ynew)) { st[ST_FAIL_T] = t; st[ST_FAIL_H] = h; return AL_NONFINITE; }
+        memcpy(y, ynew, (size_t)n * sizeof(double));
+        memcpy(K, K + 6 * (size_t)n, (size_t)n * sizeof(double));
+        t = t_new;
+    }
+    return 0;
+}
+
+/* RK45 afresh over each step of Autolev's loop (steps[]/printed[] as al_km_run) */
+static int al_rk45_run(al_ctx *ctx, double *st, const double *opts, double *y,
+                       int nsteps, const double *steps, const int *printed, double *rows,
+                       double *rtimes, double *work, const double *tab)
+{
+    int n = ctx->n, r;
+    double budget = opts[OP_BUDGET], start = ctx->nfev;
+    int k = (int)st[ST_ROW];
+    while (k < nsteps) {
+        if ((r = al_rk45_interval(ctx, st, opts, y, steps[k], work, tab)) != 0) return r;
+        st[ST_T] = steps[k];
+        if (printed[k]) {
+            int j = (int)st[ST_KMROWS];
+            memcpy(rows + (size_t)j * n, y, (size_t)n * sizeof(double));
+            rtimes[j] = st[ST_T];
+            st[ST_KMROWS] = j + 1;
+        }
+        k++;
+        st[ST_ROW] = k;
+        if (ctx->nfev - start >= budget && k < nsteps) return AL_MORE;
+    }
+    return AL_DONE;
+}
+
 /* method 0: Kutta-Merson over steps[]/printed[] (ntimes steps); 1: DOP853 at the
- * print times times[].  Returns AL_DONE, AL_MORE (call again), or a failure
+ * print times times[]; 2: RK45 afresh over each of steps[] (coef: its tableau).  Returns AL_DONE, AL_MORE (call again), or a failure
  * (st[ST_FAIL_T] says where; y holds the last accepted state, st[ST_T] its time). */
 int autolev_integrate(al_ctx *ctx, int method, double *y, double *st, const double *opts,
                       int ntimes, const double *times, const int *printed,
@@ -565,6 +679,8 @@ int autolev_integrate(al_ctx *ctx, int method, double *y, double *st, const doub
     ctx->nfev = st[ST_NFEV];
     if (method == 0) {
         r = al_km_run(ctx, st, opts, y, ntimes, times, printed, rows, rtimes, work);
+    } else if (method == 2) {
+        r = al_rk45_run(ctx, st, opts, y, ntimes, times, printed, rows, rtimes, work, coef);
     } else {
         const double *A = coef, *B = A + AL_NEXT * AL_NEXT, *C = B + AL_NSTAGES,
                      *E3 = C + AL_NEXT, *E5 = E3 + AL_NSTAGES + 1,

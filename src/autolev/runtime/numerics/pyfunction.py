@@ -87,5 +87,11 @@ def python_function(source: str, name: str, n_in: int, code=None):
             with np.errstate(all="ignore"):
                 args = [np.asarray(a, dtype=np.float64) for a in arrays[:n_in]]
                 return safe(*args, arrays[n_in])
+    def rows(arrays, per_row, out):
+        """Every row of `out` from the rows of the inputs that are `per_row`."""
+        for i in range(len(out)):
+            call(*[a[i] if each else a for a, each in zip(arrays, per_row)], out[i])
+        return out
     call.code = code
+    call.rows = rows
     return call
