@@ -193,11 +193,11 @@ class CompiledLoop:
             stiff_stop: bool = False, budget: float = 2000.0, adapt: bool = True,
             steps_state: KuttaMersonState | None = None) -> dict:
         """Integrate from y0 at opts['t0'] over `blocks` of the schedule, (times,
-        printed, end) each; Kutta-Merson: the T after every INTEGSTP step and which are
-        printed (end None), and so RK45 started afresh over each step; DOP853: the
-        print times (printed None) and the end it may
-        step to (see Schedule.bounded_print_blocks).  The state carries from block to block,
-        so only one block's rows are in memory.  on_rows(t_array, rows) gets the rows of
+        printed, end) each; Kutta-Merson, and RK45 started afresh over each step: the T
+        after every INTEGSTP step and which are printed (end None); DOP853: the print
+        times (printed None) and the end it may step to (see
+        Schedule.bounded_print_blocks).  The state carries from block to block, so only
+        one block's rows are in memory.  on_rows(t_array, rows) gets the rows of
         each slice.  `budget`: right-hand-side calls in the first slice (later slices
         are sized to about 0.1 s each unless `adapt` is false).
         Returns a dict: status, t (of the last accepted state), y, stats, fail_t,
@@ -222,7 +222,7 @@ class CompiledLoop:
         op[OP_STIFF_STOP] = 1.0 if stiff_stop else 0.0
         op[OP_INTEGSTP] = opts.get("integstp", 0.0)
         op[OP_FRESH] = 1.0 if opts.get("fresh") else 0.0
-        work = np.zeros((16 + 8 + 7) * max(1, n))      # DOP853: 29 n, Kutta-Merson: 7 n
+        work = np.zeros((16 + 8 + 7) * max(1, n))  # DOP853: 29 n, RK45: 11 n, K-M: 7 n
         table = _table(method)
         r = DONE
         times = np.zeros(0)

@@ -8,11 +8,12 @@
  * equations), out[n..n+m*m) = the mass matrix M row by row and out[n+m*m..n+m*m+m)
  * = the forcing f; the m accelerations M^-1 f go to the state positions upos[].
  *
- * Two integrators, both the same step for step as their Python versions (see
- * integrate.py): Autolev's Kutta-Merson on Autolev's INTEGSTP grid, and the
+ * Three integrators, each the same step for step as its Python version (see
+ * integrate.py): Autolev's Kutta-Merson on Autolev's INTEGSTP grid; the
  * Dormand-Prince 8(5,3) pair with its 7th-order dense output, with the error norm,
- * step-size control and first step of scipy's DOP853 (whose coefficient tables are
- * written into the source as data by cloop.py).  The DOP853 run watches for
+ * step-size control and first step of scipy's DOP853; and scipy's RK45 started afresh
+ * over every INTEGSTP, as Autolev's Matlab programs call ode45 (the coefficient tables
+ * are passed in as data by cloop.py).  The DOP853 run watches for
  * stiffness as Hairer's DOP853 does (h*|lambda| estimated from the last two stages
  * of each step) and stops with AL_STIFF when asked to.
  *
@@ -288,33 +289,6 @@ static int al_km_advance(al_ctx *ctx, double *st, double *y, double t, double in
             memcpy(f0, f1, (size_t)n * sizeof(double));
         }
     }
-}
-
-/* Autolev's loop: steps[k] is T after step k (accumulated as Autolev did), printed[k]
- * whether a row is printed there.  Rows go to rows[] (one per printed step). */
-static int al_km_run(al_ctx *ctx, double *st, const double *opts, double *y,
-                     int nsteps, const double *steps, const int *printed, double *rows,
-                     double *rtimes, double *work)
-{
-    int n = ctx->n, r;
-    double budget = opts[OP_BUDGET], start = ctx->nfev;
-    int k = (int)st[ST_ROW];           /* here: the step index to do next */
-    while (k < nsteps) {
-        r = al_km_advance(ctx, st, y, st[ST_T], opts[OP_INTEGSTP], opts[OP_RTOL],
-                          opts[OP_ATOL], opts[OP_FRESH] != 0, work);
-        if (r != 0) return r;
-        st[ST_T] = steps[k];
-        if (printed[k]) {
-            int j = (int)st[ST_KMROWS];
-            memcpy(rows + (size_t)j * n, y, (size_t)n * sizeof(double));
-            rtimes[j] = st[ST_T];
-            st[ST_KMROWS] = j + 1;
-        }
-        k++;
-        st[ST_ROW] = k;
-        if (ctx->nfev - start >= budget && k < nsteps) return AL_MORE;
-    }
-    return AL_DONE;
 }
 
 /* ---- DOP853 ------------------------------------------------------------------- */
@@ -644,16 +618,24 @@ static int al_rk45_interval(al_ctx *ctx, double *st, const double *opts, double 
     return 0;
 }
 
-/* RK45 afresh over each step of Autolev's loop (steps[]/printed[] as al_km_run) */
-static int al_rk45_run(al_ctx *ctx, double *st, const double *opts, double *y,
-                       int nsteps, const double *steps, const int *printed, double *rows,
-                       double *rtimes, double *work, const double *tab)
+/* Autolev's loop: steps[k] is T after step k (accumulated as Autolev did), printed[k]
+ * whether a row is printed there.  Each step is Kutta-Merson's (method 0) or RK45's
+ * started afresh (method 2, tab its tableau).  Rows go to rows[] (one per printed
+ * step). */
+static int al_stepped_run(al_ctx *ctx, double *st, const double *opts, double *y,
+                          int nsteps, const double *steps, const int *printed,
+                          double *rows, double *rtimes, double *work, int method,
+                          const double *tab)
 {
     int n = ctx->n, r;
     double budget = opts[OP_BUDGET], start = ctx->nfev;
-    int k = (int)st[ST_ROW];
+    int k = (int)st[ST_ROW];           /* here: the step index to do next */
     while (k < nsteps) {
-        if ((r = al_rk45_interval(ctx, st, opts, y, steps[k], work, tab)) != 0) return r;
+        r = method == 0
+            ? al_km_advance(ctx, st, y, st[ST_T], opts[OP_INTEGSTP], opts[OP_RTOL],
+                            opts[OP_ATOL], opts[OP_FRESH] != 0, work)
+            : al_rk45_interval(ctx, st, opts, y, steps[k], work, tab);
+        if (r != 0) return r;
         st[ST_T] = steps[k];
         if (printed[k]) {
             int j = (int)st[ST_KMROWS];
@@ -669,7 +651,8 @@ static int al_rk45_run(al_ctx *ctx, double *st, const double *opts, double *y,
 }
 
 /* method 0: Kutta-Merson over steps[]/printed[] (ntimes steps); 1: DOP853 at the
- * print times times[]; 2: RK45 afresh over each of steps[] (coef: its tableau).  Returns AL_DONE, AL_MORE (call again), or a failure
+ * print times times[]; 2: RK45 afresh over each of steps[] (coef: the method's
+ * tableau).  Returns AL_DONE, AL_MORE (call again), or a failure
  * (st[ST_FAIL_T] says where; y holds the last accepted state, st[ST_T] its time). */
 int autolev_integrate(al_ctx *ctx, int method, double *y, double *st, const double *opts,
                       int ntimes, const double *times, const int *printed,
@@ -677,10 +660,9 @@ int autolev_integrate(al_ctx *ctx, int method, double *y, double *st, const doub
 {
     int r;
     ctx->nfev = st[ST_NFEV];
-    if (method == 0) {
-        r = al_km_run(ctx, st, opts, y, ntimes, times, printed, rows, rtimes, work);
-    } else if (method == 2) {
-        r = al_rk45_run(ctx, st, opts, y, ntimes, times, printed, rows, rtimes, work, coef);
+    if (method == 0 || method == 2) {
+        r = al_stepped_run(ctx, st, opts, y, ntimes, times, printed, rows, rtimes, work,
+                           method, coef);
     } else {
         const double *A = coef, *B = A + AL_NEXT * AL_NEXT, *C = B + AL_NSTAGES,
                      *E3 = C + AL_NEXT, *E5 = E3 + AL_NSTAGES + 1,

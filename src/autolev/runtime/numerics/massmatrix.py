@@ -1,8 +1,9 @@
 """The mass matrix at one state: M u' = f solved in the operations of loop.c's solve
 (the Python and C back ends give the same numbers), and how near singular M is.
 
-A mass matrix whose expressions are symmetric (Kane's: the entry of row r, column s
-is that of row s, column r) is factored as M = L^T D L without pivoting, in the
+A symmetric mass matrix (Kane's: the entry of row r, column s is that of row s,
+column r, as expressions or in value at a run's constants) is factored as
+M = L^T D L without pivoting, in the
 order of Featherstone's LTDL (RBDA, section 6.5): the speeds of a tree's branches
 never meet in a product, so only each row's chain of "parents" is worked on (for a
 dense matrix, every row before it).  All of D positive means M is positive definite
