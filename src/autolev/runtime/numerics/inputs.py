@@ -103,6 +103,10 @@ class Inputs:
         return value
 
     def _number(self, expr, cache, stack) -> float:
+        # INPUT L = 0.5 or N = 3: the double N() gives (sympy's evaluation is most of
+        # a warm run's set-up; N() rounds other rationals and larger integers its way)
+        if expr.is_Float and expr.is_finite or expr.is_Integer and abs(expr) <= 2 ** 53:
+            return float(expr)
         defs = self.model.defs
         subs = {}
         for f in expr.free_symbols:
