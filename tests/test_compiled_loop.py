@@ -350,3 +350,17 @@ def test_the_outputs_of_many_rows_are_those_of_each_row(backend):
     raw = values[:, :first.shape[1]]
     assert len(first) == len(values) > 10
     assert np.array_equal(first, np.where(degrees, raw * 180 / np.pi, raw))
+
+
+def test_rows_whose_specified_quantities_are_functions_go_one_by_one():
+    # F = sin(t) changes from row to row: one call for all rows would read one F
+    r = run(load("forced"), TFINAL=2, specified={"F": lambda t: np.sin(t)})
+    system = r.system
+    values, _ = system.outputs_rows(r.t, r.states)
+    for i, (t, x) in enumerate(zip(r.t, r.states)):
+        assert np.array_equal(values[i], system.outputs(t, x))
+    first = r.outputs[0].data
+    degrees = np.array(system.degree_columns[0])
+    raw = values[:, :first.shape[1]]
+    assert len(set(raw[:, r.outputs[0].labels.index("F")])) > 10
+    assert np.array_equal(first, np.where(degrees, raw * 180 / np.pi, raw))

@@ -184,8 +184,15 @@ class CompiledEvaluation:
         functions of (t, x) go one by one."""
         n, ns = self._n, self.nstate
         count = len(times)
-        accelerations = np.empty((count, n))
+        out = np.empty((count, self.n_outputs))
         matrices = [] if n else None
+        if self.specified_functions or self.solved:
+            for i in range(count):
+                out[i] = self.outputs(times[i], states[i])
+                if n:
+                    matrices.append(self.last_mass_matrix())
+            return out, matrices
+        accelerations = np.empty((count, n))
         for i in range(count):
             if n:
                 try:
@@ -194,12 +201,6 @@ class CompiledEvaluation:
                     xdot = np.full(ns, np.nan)
                 accelerations[i] = xdot[self.unknown_positions]
                 matrices.append(self.last_mass_matrix())
-        out = np.empty((count, self.n_outputs))
-        if self.specified_functions or self.solved:
-            for i in range(count):
-                out[i] = self._call(self.output_function, self.n_outputs, times[i],
-                                    states[i], xdot=None)
-            return out, matrices
         t = np.ascontiguousarray(times, dtype=float).reshape(count, 1)
         x = np.ascontiguousarray(states, dtype=float).reshape(count, ns)
         self.output_function.call.rows(

@@ -335,6 +335,21 @@ static double al_first_step(al_ctx *ctx, double *st, double t, const double *y,
     return h;
 }
 
+/* scipy's change of step after the error norm `err` (RungeKutta._step_impl, for an
+ * error estimate of order `order`): accepted (err < 1), 0.9 err^(-1/(order+1)), at
+ * most 10 and not above 1 right after a rejection; rejected, at least 0.2 (Python's
+ * max(0.2, nan): a NaN error shrinks the step) */
+static double al_step_factor(double err, int order, int rejected)
+{
+    double factor = err == 0 ? 10.0 : 0.9 * pow(err, -1.0 / (order + 1));
+    if (err < 1) {
+        if (factor > 10.0) factor = 10.0;
+        if (rejected && factor > 1) factor = 1;
+        return factor;
+    }
+    return factor > 0.2 ? factor : 0.2;
+}
+
 /* work layout for DOP853 (n = states):
  *   K[16][n] | y_new n | f_cur n | y_old n | ystage n | F[7][n] | tmp n | scale n */
 #define DK(s) (work + (size_t)(s) * n)
@@ -466,22 +481,8 @@ static int al_dop_run(al_ctx *ctx, double *st, const double *opts, double *y,
                 if (!(err == err)) {                     /* NaN: not finite */
                     st[ST_FAIL_T] = t; return AL_NONFINITE;
                 }
-                if (err < 1) {
-                    double factor;
-                    if (err == 0) factor = 10.0;
-                    else {
-                        factor = 0.9 * pow(err, -1.0 / 8.0);
-                        if (factor > 10.0) factor = 10.0;
-                    }
-                    if (rejected && factor > 1) factor = 1;
-                    h_abs *= factor;
-                    break;
-                }
-                {
-                    double factor = 0.9 * pow(err, -1.0 / 8.0);
-                    if (factor < 0.2) factor = 0.2;
-                    h_abs *= factor;
-                }
+                h_abs *= al_step_factor(err, 7, rejected);
+                if (err < 1) break;
                 rejected = 1;
                 st[ST_NREJ] += 1;
             }
@@ -595,17 +596,8 @@ static int al_rk45_interval(al_ctx *ctx, double *st, const double *opts, double 
                 e += q * q;
             }
             err = sqrt(e / n);
-            if (err < 1) {
-                double factor = err == 0 ? 10.0 : 0.9 * pow(err, -0.2);
-                if (factor > 10.0) factor = 10.0;
-                if (rejected && factor > 1) factor = 1;
-                h_abs *= factor;
-                break;
-            }
-            {   /* Python's max(0.2, nan) is 0.2: a NaN error shrinks the step */
-                double factor = 0.9 * pow(err, -0.2);
-                h_abs *= factor > 0.2 ? factor : 0.2;
-            }
+            h_abs *= al_step_factor(err, 4, rejected);
+            if (err < 1) break;
             rejected = 1;
             st[ST_NREJ] += 1;
         }
