@@ -143,3 +143,16 @@ def test_a_cache_that_cannot_be_written_costs_the_run_nothing(cache, monkeypatch
     left = [p.name for p in cache.iterdir()] if cache.exists() else []
     assert not [n for n in left if n.endswith(".tmp")]
     assert not [n for n in left if n != diskcache.MARKER]
+
+
+def test_a_fresh_cache_tagged_meanwhile_by_another_thread_is_used(cache, monkeypatch):
+    # a cold run's C compiles on a thread while the run goes on: both may tag the folder
+    write_new = diskcache._write_new
+
+    def the_other_first(path, data):
+        write_new(path, data)            # the other thread's tag, just before ours
+        write_new(path, data)
+    monkeypatch.setattr(diskcache, "_write_new", the_other_first)
+    cache.mkdir(mode=0o700)
+    assert diskcache._problem_with(cache) is None
+    assert (cache / diskcache.MARKER).is_file()

@@ -152,7 +152,10 @@ def _claim(path: Path) -> str | None:
         return (f"holds files autolev did not make ({', '.join(foreign[:3])}"
                 f"{', ...' if len(foreign) > 3 else ''}) and is not marked as its cache "
                 f"({MARKER})")
-    _write_new(path / MARKER, MARKER_TEXT.encode())
+    try:
+        _write_new(path / MARKER, MARKER_TEXT.encode())
+    except FileExistsError:     # tagged meanwhile by another process or thread
+        pass
     return None
 
 
