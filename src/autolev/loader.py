@@ -319,21 +319,22 @@ def _quoted_statement(lines: list[str], line: int) -> str | None:
 
 
 def load_for_run(path, before_building=None) -> tuple[object, list]:
-    """The model for `autolev run`: as `autolev.load`, except that when the only
-    statements that fail come after the last CODE command, the model is built up to
-    that command (Autolev's session rejected a bad statement and went on; the program
-    CODE wrote did not depend on what followed).  A model built now goes into the
-    cache of built models when its first run or linearization ends.  Returns (model,
-    notes): the translation's warnings and what was left out, each a line
+    """The model for `autolev run` (and the other commands on its CODE commands): as
+    `autolev.load`, but built through its last CODE statement only, since the programs
+    CODE wrote do not depend on what follows (Autolev wrote each when it read its
+    line); when statements after it fail to translate, the model is built up to it
+    (Autolev's session rejected a bad statement and went on).  A model built now goes
+    into the cache of built models when its first run or linearization ends.  Returns
+    (model, notes): the translation's warnings and what was left out, each a line
     `file:line:col: warning: ...` to show the user.  `before_building`: as
     load_translation's."""
     p = Path(path)
     try:
-        result = _translation(p)
+        result = _translation(p).through_last_code()
         model = load_translation(result, str(p), write_later=True,
                                  before_building=before_building)
         return model, _warnings(result)
-    except (AutolevTranslationError, AutolevRuntimeError) as exc:
+    except AutolevTranslationError as exc:
         failure = exc
     from .pipeline import parse
     program = parse(p)
@@ -344,14 +345,11 @@ def load_for_run(path, before_building=None) -> tuple[object, list]:
     result = translate(cut)
     if any(d.severity == "error" for d in result.diagnostics):
         raise failure
-    try:
-        model = load_translation(result, str(p), write_later=True,
-                                 before_building=before_building)
-    except AutolevRuntimeError:
-        raise failure from None
+    model = load_translation(result, str(p), write_later=True,
+                             before_building=before_building)
     first = next(d for d in failure.diagnostics if d.severity == "error")
-    notes = [f"{p}: warning: statements after the last CODE command fail and are left out "
-             f"of the run (first: {first.format(context=False).splitlines()[0]})"]
+    notes = [f"{p}: warning: statements after the last CODE command fail to translate and "
+             f"are left out of the run (first: {first.format(context=False).splitlines()[0]})"]
     return model, _warnings(result) + notes
 
 

@@ -14,7 +14,7 @@ package imports them).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable
 
@@ -78,6 +78,30 @@ class Translation:
     # model spells them: a run needs values for those its equations use (named before
     # the model is built, which forms its equations)
     constants_without_value: list[str] = field(default_factory=list)
+    # the Python line of each CODE statement's call, and constants_without_value as it
+    # stood there (what that CODE command's program could read)
+    code_lines: list[int] = field(default_factory=list)
+    lacking_at_code: list[list[str]] = field(default_factory=list)
+    # whether some CODE statement is a DYNAMICS or ODE (the equations a linearization,
+    # an animation or an export takes before the model's equations as they stand)
+    code_integrates: bool = False
+
+    def through_last_code(self) -> Translation:
+        """The module up to its last CODE statement: what every CODE command's program
+        depends on (Autolev wrote each when it read its line), without the statements
+        after it (a SOLVE, TAYLOR or EVALUATE of the equations can cost most of a
+        model's forming).  Itself when nothing follows that statement, or when no CODE
+        statement integrates (then the model's equations as they stand at its end are
+        those of `autolev linearize`, `animate` and `convert`)."""
+        if not self.code_lines or not self.code_integrates:
+            return self
+        last = self.code_lines[-1]
+        lines = self.code.splitlines()
+        if last == len(lines):
+            return self
+        return replace(self, code="\n".join(lines[:last]) + "\n",
+                       line_map={n: s for n, s in self.line_map.items() if n <= last},
+                       constants_without_value=list(self.lacking_at_code[-1]))
 
 
 # the generated module's dictionary of probes' values (a dunder name: no Autolev name
@@ -155,6 +179,9 @@ class Translator:
         self.column_runs: dict | None = None
         self.words: set[str] | None = None
         self.code_spans: list[Span] = []           # see Translation
+        self.code_calls: list[Line] = []           # each CODE statement's line of Python
+        self.lacking_at_code: list[list[str]] = []
+        self.code_integrates = False
         self.defined_at: dict[str, str] = {}
         self.statements_at: dict[tuple[str, str], list[str]] = {}
         self._statement: ir.Statement | None = None
@@ -284,15 +311,29 @@ class Translator:
             self._write_probe(probe)
             probe = next(probes, None)
         self._span = self._statement = None
-        code, line_map = self._render()
+        code, line_map, code_lines = self._render()
         return Translation(code, line_map, self.diagnostics, dict(self.autolev_names),
                            {k: dict(v) for k, v in self.namespaces.items()},
                            list(self.program.files), list(self.code_spans),
                            dict(self.defined_at), dict(self.probe_errors),
                            {k: list(v) for k, v in self.statements_at.items()},
-                           [self.autolev_name(e) for key, e in self.scalars.items()
-                            if e.kind == NameKind.CONSTANT and key not in self.given_by_input
-                            and (key, 0) not in self.defined])
+                           self.constants_without_value(), code_lines,
+                           [list(k) for k in self.lacking_at_code], self.code_integrates)
+
+    def constants_without_value(self) -> list[str]:
+        """The constants declared so far that no INPUT gives a value and no statement
+        defines (Translation's)."""
+        return [self.autolev_name(e) for key, e in self.scalars.items()
+                if e.kind == NameKind.CONSTANT and key not in self.given_by_input
+                and (key, 0) not in self.defined]
+
+    def code_call(self, call: str, integrates: bool) -> None:
+        """Write a CODE statement's call, noting where it is and what lacks a value."""
+        self.code_spans.append(self._span)
+        self.code_integrates = self.code_integrates or integrates
+        self.emit(call)
+        self.code_calls.append(self.lines[-1])
+        self.lacking_at_code.append(self.constants_without_value())
 
     @staticmethod
     def location(st: ir.Statement) -> str:
@@ -437,18 +478,22 @@ class Translator:
             self.emit(f"{PROBES} = {{}}")
         self.emit("")
 
-    def _render(self) -> tuple[str, dict[int, Span]]:
+    def _render(self) -> tuple[str, dict[int, Span], list[int]]:
+        """The module's text, its line map, and the line of each CODE call."""
         lines = self.lines
         if not any(_USES_SYMPY.search(line.code) for line in lines
                    if line.code != _SYMPY_IMPORT):     # the header's import, unused
             k = next(i for i, line in enumerate(lines) if line.code == _SYMPY_IMPORT)
             lines = lines[:k] + lines[k + 2:]
-        out, line_map = [], {}
+        calls = {id(line) for line in self.code_calls}
+        out, line_map, code_lines = [], {}, []
         for n, line in enumerate(lines, 1):
             out.append(line.code)
             if line.span is not None:
                 line_map[n] = line.span
-        return "\n".join(out) + "\n", line_map
+            if id(line) in calls:
+                code_lines.append(n)
+        return "\n".join(out) + "\n", line_map, code_lines
 
     # -- expressions ---------------------------------------------------------------------
     def expr(self, e: ir.Expr, want: str = "value") -> Typed:

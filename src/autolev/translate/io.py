@@ -138,8 +138,8 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
     zero = tr.values.get("zero")
     if tr.session.kane_called and zero is not None and zero.type == ValueType.MATRIX:
         opts += f", zero={zero.py}"
-    tr.code_spans.append(st.span)
-    tr.emit(f"model.code({quote(st.what)}, {quote(st.filename)}{opts})")
+    tr.code_call(f"model.code({quote(st.what)}, {quote(st.filename)}{opts})",
+                 st.what.lower() in ("dynamics", "ode"))
 
 
 @STATEMENTS.register(ir.Encode)
