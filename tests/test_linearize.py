@@ -2,6 +2,7 @@
 (pendulum), against central differences of the integrated right-hand side (a second
 method), and against the classical stability speed of a rolling disc."""
 import math
+import warnings
 
 import numpy as np
 import sympy as sm
@@ -481,12 +482,13 @@ def test_one_linearization_waits_for_no_compiler_and_a_sweep_compiles_when_it_pa
     monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE", 1e9)
     first = model.linearize({"Q": q})
     jacobians = _jacobians_of(model)
-    assert jacobians.rhs.backend == "python" and jacobians.evaluations == 1
+    # the right-hand side's Python on dual numbers: no Jacobian formed, nothing compiled
+    assert jacobians.rhs.backend == "dual" and jacobians.evaluations == 1
     for _ in range(3):                           # compiling does not pay yet
         model.linearize({"Q": q})
     assert _jacobians_of(model) is jacobians and jacobians.evaluations == 4
     if clibrary.compiler() is None:
-        pytest.skip("no C compiler: the Jacobians stay Python (tested above)")
+        pytest.skip("no C compiler: the Jacobians stay on dual numbers (tested above)")
     # the evaluations have cost what compiling is predicted to: the next one compiles
     monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE", 0.0)
     compiled = model.linearize({"Q": q})
@@ -496,3 +498,75 @@ def test_one_linearization_waits_for_no_compiler_and_a_sweep_compiles_when_it_pa
                                                                           rtol=1e-14)
     model.linearize({"Q": q})
     assert _jacobians_of(model).rhs.backend == "c"          # compiled once
+
+
+FUNCTIONS = """NEWTONIAN N
+BODIES A
+MOTIONVARIABLES' Q{2}', U{2}'
+CONSTANTS G, L, M, K
+SPECIFIED TQ
+SIMPROT(N, A, 3, Q1)
+Q1' = U1
+Q2' = U2
+W_A_N> = U1*A3>
+P_NO_AO> = L*A1> + Q2*A2>
+V_AO_N> = DT(P_NO_AO>, N)
+MASS A = M
+INERTIA A, 0, 0, M*L^2/12
+GRAVITY(G*N1>)
+% a force and a torque through every function the dual numbers differentiate
+FORCE_AO> = -K*(SINH(Q2) + ATAN2(Q2, L) + EXP(Q2/5)*LOG(2 + Q2^2) + TANH(U2))*A2>
+T1 = TQ - SQRT(1 + U1^2)*ABS(U1) + ASIN(Q2/9) + ACOS(Q2/7) + ATAN(U2) + COSH(Q2/3)
+T2 = TAN(Q2/4) + (2 + Q2^2)^(Q2/3) + 3^U1 + (1 + Q1^2)^1.5
+TORQUE(A, (T1 + T2)*A3>)
+ZERO = FR() + FRSTAR()
+KANE()
+X = L*COS(Q1) + MAX(Q2, U2)
+OUTPUT Q1, X, U2', ASINH(Q2), ACOSH(2 + Q2^2), ATANH(Q2/5)
+INPUT G = 9.81, L = 2, M = 3, K = 5, Q1 = 0.3, Q2 = 0.4, U1 = -0.7, U2 = 0.2, TFINAL = 1
+CODE DYNAMICS() functions.c
+"""
+
+
+def test_dual_numbers_give_the_symbolic_jacobians(tmp_path):
+    # a second method: sympy's derivatives of the same equations, printed and compiled
+    path = tmp_path / "functions.al"
+    path.write_text(FUNCTIONS)
+    model = autolev.load(path)
+    dual = model.linearize()
+    assert _jacobians_of(model).rhs.backend == "dual"
+    symbolic = autolev.load(path).linearize(backend="python")
+    for m in "ABCD":
+        got, want = getattr(dual, m), getattr(symbolic, m)
+        assert got.shape == want.shape and np.count_nonzero(want) >= 1
+        assert np.allclose(got, want, rtol=1e-12, atol=1e-12), m
+    assert np.allclose(dual.rates, symbolic.rates, rtol=1e-14)
+
+
+def test_a_point_dual_numbers_cannot_differentiate_is_left_to_the_symbolic_form(tmp_path):
+    # SQRT(Q) at Q < 0: the math module refuses; the symbolic Jacobians say what C says
+    path = tmp_path / "root.al"
+    path.write_text(PENDULUM.replace("TORQUE(A, TQ*A3>)", "TORQUE(A, (TQ + SQRT(Q))*A3>)"))
+    model = autolev.load(path)
+    with pytest.raises(al.AutolevModelError, match="not finite at the operating point"):
+        model.linearize({"Q": -0.5})
+    assert _jacobians_of(model).rhs.backend == "python"
+    lin = model.linearize({"Q": 0.5})           # the symbolic ones, kept, at a good point
+    g, L, m, q = 9.81, 2.0, 3.0, 0.5
+    assert lin.A[1, 0] == pytest.approx(-g / L * math.cos(q)
+                                        + 0.5 / math.sqrt(q) / (m * L * L), rel=1e-13)
+
+
+def test_a_run_after_a_linearization_compiles_what_the_linearization_did_not(tmp_path):
+    path = tmp_path / "pendulum.al"
+    path.write_text(PENDULUM)
+    model = autolev.load(path)
+    model.linearize({"Q": 0.3})
+    system = next(iter(model.derived.table("numeric systems").values()))[1]
+    assert not system.compiled and system.rhs_function is None
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        after = model.simulate(TFINAL=1)
+        alone = autolev.load(path).simulate(TFINAL=1)
+    assert after.system is system and system.compiled
+    assert np.array_equal(after.states, alone.states)

@@ -46,6 +46,8 @@ class CompiledEvaluation:
         structure = self.mass_structure
         if structure is None or structure.proven:
             return structure
+        if self.rhs_function is None:       # not compiled (a linearization's): no solve
+            return None
         rng = np.random.default_rng(0)
         ns, n = self.nstate, self._n
         out = np.empty(self.n_rhs)

@@ -39,6 +39,7 @@ from .options import RunOptions
 from ..steps import SlowStep
 from .prepare import prepare_command, to_be_kept
 from .compiled import compile_program
+from .dual import DualJacobian, NotDifferentiable
 from .system import NumericSystem
 
 
@@ -173,7 +174,7 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     prepared = prepare_command(model, command, RunOptions(
         backend=backend, infile=infile, overrides=overrides, constraints=constraints,
         missing_values=missing_values, progress=progress), internal_values=point,
-        warn_unassigned=False, locked=held)
+        warn_unassigned=False, locked=held, compile_functions=False)
     system = prepared.system
     if not system.nstate:
         raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "
@@ -188,16 +189,20 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     jacobians = system.jacobians.get(key)
     tier = None
     if jacobians is None:           # once per system: a sweep, and a later process, reuse them
-        tier, step = ("python" if backend == "auto" else backend), "forming the Jacobians"
+        tier, step = ("dual" if backend == "auto" else backend), "forming the Jacobians"
     elif backend == "auto" and jacobians.compiling_pays():
         tier, step = "auto", (f"compiling the Jacobians (a sweep of "
                               f"{jacobians.evaluations} points so far)")
-    if tier is not None:
+
+    def formed(tier: str, step: str) -> _Jacobians:
         with model.defs.as_of(program_of(model, command).definitions), SlowStep(
                 progress, f"CODE DYNAMICS {command.filename}: {step}"):
-            jacobians = system.jacobians[key] = _jacobian_functions(system, chosen,
-                                                                    n_columns, tier)
+            made = system.jacobians[key] = _jacobian_functions(system, chosen, n_columns,
+                                                               tier)
         to_be_kept(model)
+        return made
+    if tier is not None:
+        jacobians = formed(tier, step)
     t0 = prepared.inputs.internal("TINITIAL")
     x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
     s0 = np.array([specified_values.get(s, 0.0) for s in system.specified], dtype=float)
@@ -207,7 +212,11 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
             system, constraints, t0, x0, prepared.inputs.vector(prepared.extra_constants),
             dependent)
         x0 = on_constraints.solve(t0, x0)
-    lin = _evaluate(system, jacobians, chosen, t0, x0, s0)
+    try:
+        lin = _evaluate(system, jacobians, chosen, t0, x0, s0)
+    except NotDifferentiable:       # a point where only the symbolic derivatives tell
+        jacobians = formed("python", "forming the Jacobians symbolically")
+        lin = _evaluate(system, jacobians, chosen, t0, x0, s0)
     bad = [display_name(x) for x, row, rate in zip(system.states, lin.A, lin.rates)
            if not (np.all(np.isfinite(row)) and np.isfinite(rate))]
     if bad:
@@ -392,54 +401,76 @@ def _chosen_inputs(model, system, names) -> list:
 # seconds gcc takes per byte of the Python source of the same program (BICYCLE14's
 # Jacobians: 7 MB of Python, 60 s of gcc on an idle core; see bench/large_models.py)
 C_SECONDS_PER_SOURCE_BYTE = 1e-5
+# seconds forming and compiling symbolic Jacobians in Python take per byte of their
+# source (BICYCLE14's: 9.8 MB, 17 s)
+PYTHON_SECONDS_PER_SOURCE_BYTE = 2e-6
 
 
 @dataclass
 class _Jacobians:
-    """The compiled Jacobians of one system.  One linearization never waits for a
-    compiler: they are Python first, and compiled to C (backend "auto", a compiler
-    there) once the linearizations using them (a sweep's points, later runs reading
-    them from the cache) have spent, evaluating them, what compiling is predicted to
-    cost: never more than twice what the better choice, made knowing how many there
-    would be, costs (the rent-or-buy rule)."""
+    """The Jacobians of one system.  One linearization never waits for a compiler:
+    they are first the right-hand side's own Python run on dual numbers (dual.py), and
+    formed symbolically and compiled (to C where there is a compiler, else Python:
+    backend "auto") once the linearizations using them (a sweep's points, later runs
+    reading them from the cache) have spent, evaluating them, what forming and
+    compiling is predicted to cost: never more than twice what the better choice, made
+    knowing how many there would be, costs (the rent-or-buy rule)."""
 
     rhs: object             # values and Jacobian of the right-hand side
     outputs: object         # values-free Jacobian of the OUTPUT columns
     n_rhs: int
     n_out: int
-    compiled: bool         # C was tried (it is C, unless the compiler failed)
     evaluations: int = 0
     seconds: float = 0.0    # spent evaluating them
 
     def compiling_pays(self) -> bool:
-        if self.compiled or clibrary.compiler() is None:
+        if self.rhs.backend == "c" or (self.rhs.backend == "python"
+                                       and clibrary.compiler() is None):
             return False
-        predicted = C_SECONDS_PER_SOURCE_BYTE * (len(self.rhs.source)
-                                                 + len(self.outputs.source))
-        return self.seconds >= predicted
+        size = len(self.rhs.source) + len(self.outputs.source)
+        if self.rhs.backend == "dual":      # the symbolic Jacobians' size, foreseen
+            size *= 1 + self.rhs.n_varied
+        per_byte = (C_SECONDS_PER_SOURCE_BYTE if clibrary.compiler() is not None
+                    else PYTHON_SECONDS_PER_SOURCE_BYTE)
+        return self.seconds >= per_byte * size
 
 
 def _jacobian_functions(system, chosen: list, n_columns: int, backend: str) -> _Jacobians:
-    """Compiled functions: the right-hand side (rates, M, F) and its Jacobian in the
-    state and the chosen inputs; the Jacobian of the OUTPUT columns in the state, the
-    chosen inputs and the accelerations."""
+    """The right-hand side (rates, M, F) and its Jacobian in the state and the chosen
+    inputs; the Jacobian of the OUTPUT columns in the state, the chosen inputs and the
+    accelerations: on dual numbers (backend "dual"), else compiled."""
     defs = system.model.defs
     variables = list(system.states) + chosen
     rhs = list(system.rhs_exprs)
-    rhs_jac = defs.jacobian(rhs, variables)
     c_syms = system.params + system.constant_defs
     given = {"t": [S.TIME], "x": system.states, "c": c_syms, "s": system.specified}
     fixed = dict(system.aux_fixed)
+    out_exprs = system.output_exprs[:n_columns]
+    accels = list(system.implicit_unknowns)
+    if backend == "dual":
+        states = list(range(len(system.states)))
+        inputs = [system.specified.index(s) for s in chosen]
+        rhs_source = codegen.python_source(
+            codegen.Program(given, rhs, defs, fixed).build(), "autolev_linear_rhs")
+        out_source = codegen.python_source(
+            codegen.Program(dict(given, a=accels), out_exprs, defs, fixed).build(),
+            "autolev_linear_outputs")
+        return _Jacobians(
+            DualJacobian(rhs_source, "autolev_linear_rhs", 4, {1: states, 3: inputs},
+                         with_values=True),
+            DualJacobian(out_source, "autolev_linear_outputs", 5,
+                         {1: states, 3: inputs, 4: list(range(len(accels)))},
+                         with_values=False),
+            len(rhs), len(out_exprs))
+    rhs_jac = defs.jacobian(rhs, variables)
     rhs_fn = compile_program(
         codegen.Program(given, rhs + [d for row in rhs_jac for d in row], defs,
                         fixed).build(), backend, "autolev_linear_rhs")
-    out_exprs = system.output_exprs[:n_columns]
-    accels = list(system.implicit_unknowns)
     out_jac = defs.jacobian(out_exprs, variables + accels) if out_exprs else []
     out_fn = compile_program(
         codegen.Program(dict(given, a=accels), [d for row in out_jac for d in row], defs,
                         fixed).build(), backend, "autolev_linear_outputs")
-    return _Jacobians(rhs_fn, out_fn, len(rhs), len(out_exprs), backend != "python")
+    return _Jacobians(rhs_fn, out_fn, len(rhs), len(out_exprs))
 
 
 def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linearization:

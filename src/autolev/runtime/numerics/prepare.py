@@ -135,14 +135,17 @@ def take_inputs(ask: InputsWanted, system):
 
 def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=None,
                     internal_values=None, warn_unassigned: bool = True,
-                    locked=(), starts_now: bool = False) -> Prepared:
+                    locked=(), starts_now: bool = False,
+                    compile_functions: bool = True) -> Prepared:
     """Build (or reuse) the command's numeric system, take its inputs (INPUT values, then
     the .in file, then the overrides in the quantities' units, then `internal_values`
     {name: value} in SI units and radians), refusing missing ones before anything is
     compiled, then compile it.  `warn_unassigned`: warn about specified quantities that
     will be 0 (not when they are a linearization's inputs).  `locked`: coordinates held
     fixed (see NumericSystem).  `starts_now`: an integration that can start on the
-    Python follows: the right-hand side's C compiles in the background."""
+    Python follows: the right-hand side's C compiles in the background.
+    `compile_functions=False`: the constants' function alone (a linearization
+    evaluates its own Jacobians)."""
     command, specified, overrides = given_specified(model, command, options.specified,
                                                     options.overrides)
     kind = command.kind
@@ -158,12 +161,14 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
     with SlowStep(options.progress, f"{what}: forming its equations"):
         system = numeric_system(model, command, files, encoded, (equations, unknowns),
                                 options.backend, options.quirks, locked)
-    fresh = not system.compiled
+    fresh = not system.compiled and (compile_functions or system.constants_function is None)
     with model.defs.as_of(program_of(model, command).definitions):
         inputs, kinds, names, extra_constants = take_inputs(ask, system)
-        if fresh:                    # inputs first: a refusal costs no compilation
+        if fresh and compile_functions:     # inputs first: a refusal costs no compilation
             with SlowStep(options.progress, f"{what}: generating and compiling its code"):
                 system.compile(background=starts_now)
+        elif fresh:
+            system.compile_constants()
     if fresh:                        # kept at the model's own revision, not as_of's view
         keep_system(model, command, options.backend, options.quirks, locked, system)
     build_seconds = time.perf_counter() - build_start

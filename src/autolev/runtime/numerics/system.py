@@ -105,6 +105,11 @@ class NumericSystem(CompiledEvaluation):
         self._integrate = integrate
         self.compiled = False
         self.rhs_compiling = None      # the C right-hand side being built (compile)
+        self.constants_function = self.rhs_function = self.output_function = None
+        self.extra_functions: dict = {}
+        self.unknown_positions = [self.states.index(lower_derivative(d))
+                                  for d in self.implicit_unknowns]
+        self._bind_loop()
         if compile_functions:
             self.compile()
         self.constant_values = None
@@ -171,6 +176,21 @@ class NumericSystem(CompiledEvaluation):
         self._compile(self.extra_exprs, self.accel_inputs, self._integrate, background)
         self.compiled = True
 
+    def compile_constants(self) -> None:
+        """Only the function of the constants computed from the parameters: what a
+        linearization, which evaluates Jacobians of its own, needs of the system (the
+        rest compiles when a run needs it)."""
+        if self.constants_function is None:
+            self.constants_function = self._constants_function([])
+
+    def _constants_function(self, lifted: list):
+        """The constant definitions' function, then the `lifted` parts' (evaluated once
+        per parameter set: Python, since compiling C would cost more)."""
+        return compile_program(
+            codegen.Program({"p": self.params}, self.constant_defs + [e for _, e in lifted],
+                            self.model.defs).build(False),
+            "python", "autolev_constants")
+
     def _compile(self, extra: dict, accel_inputs: list, integrate: bool,
                  background: bool) -> None:
         defs, backend = self.model.defs, self.backend
@@ -178,19 +198,13 @@ class NumericSystem(CompiledEvaluation):
                   "s": self.specified}
         fixed = dict(self.aux_fixed)
         self.rhs_function = None
-        self.unknown_positions = [self.states.index(lower_derivative(d))
-                                  for d in self.implicit_unknowns]
         lifted = []
         if self.nstate:
             # the parts of the right-hand side in constants alone join the constants
             rhs = codegen.Program(inputs, self.rhs_exprs, defs, fixed).build(lift_into="c")
             lifted = rhs.lifted
             inputs["c"] = rhs.inputs["c"]
-        # evaluated once per parameter set: Python (compiling C would cost more)
-        self.constants_function = compile_program(
-            codegen.Program({"p": self.params}, self.constant_defs + [e for _, e in lifted],
-                            defs).build(False),
-            "python", "autolev_constants")
+        self.constants_function = self._constants_function(lifted)
         self.constant_defs = self.constant_defs + [s for s, _ in lifted]
         if self.nstate:
             # the C right-hand side carries the integration loop (loop.c) with it

@@ -1,0 +1,236 @@
+"""A generated Python program's values and their partial derivatives at one point, by
+running its own code on dual numbers (forward-mode differentiation): one linearization
+needs no symbolic Jacobian, no printing of it and no compiler (BICYCLE14's Jacobians
+are 10 MB of Python, 17 s to form and compile, for one evaluation).
+
+The code is the one `codegen.python_source` prints for the runs, executed with `math`
+and the printed helpers replaced by the functions below, which take a float or a
+`Dual`.  A value where the math module raises (a division by zero, a domain error, a
+complex power) or a function without a derivative here raises `NotDifferentiable`:
+the caller then forms the Jacobians symbolically, where such points are handled.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .pyfunction import MATH_ERRORS, fast_namespace
+
+
+class NotDifferentiable(Exception):
+    """The program cannot be differentiated on dual numbers at this point."""
+
+
+class Dual:
+    """A value and its gradient in the varied inputs (an array: d value / d input)."""
+
+    __slots__ = ("v", "g")
+
+    def __init__(self, v: float, g: np.ndarray):
+        self.v, self.g = v, g
+
+    def __add__(self, o):
+        if isinstance(o, Dual):
+            return Dual(self.v + o.v, self.g + o.g)
+        return Dual(self.v + o, self.g)
+
+    __radd__ = __add__
+
+    def __sub__(self, o):
+        if isinstance(o, Dual):
+            return Dual(self.v - o.v, self.g - o.g)
+        return Dual(self.v - o, self.g)
+
+    def __rsub__(self, o):
+        return Dual(o - self.v, -self.g)
+
+    def __neg__(self):
+        return Dual(-self.v, -self.g)
+
+    def __pos__(self):
+        return self
+
+    def __mul__(self, o):
+        if isinstance(o, Dual):
+            return Dual(self.v * o.v, o.v * self.g + self.v * o.g)
+        return Dual(self.v * o, o * self.g)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        if isinstance(o, Dual):
+            q = self.v / o.v
+            return Dual(q, (self.g - q * o.g) / o.v)
+        return Dual(self.v / o, self.g / o)
+
+    def __rtruediv__(self, o):
+        q = o / self.v
+        return Dual(q, (-q / self.v) * self.g)
+
+    def __pow__(self, o):
+        if isinstance(o, Dual):
+            v = _real(self.v ** o.v)
+            return Dual(v, v * (math.log(self.v) * o.g + (o.v / self.v) * self.g))
+        if o == 0:
+            return 1.0
+        return Dual(_real(self.v ** o), (o * _real(self.v ** (o - 1))) * self.g)
+
+    def __rpow__(self, o):
+        v = _real(o ** self.v)
+        return Dual(v, (v * math.log(o)) * self.g)
+
+    # the conditions of a Piecewise, Max and Min: on the values (the branch taken is
+    # the one differentiated)
+    def __lt__(self, o):
+        return self.v < _value(o)
+
+    def __le__(self, o):
+        return self.v <= _value(o)
+
+    def __gt__(self, o):
+        return self.v > _value(o)
+
+    def __ge__(self, o):
+        return self.v >= _value(o)
+
+    def __eq__(self, o):
+        return self.v == _value(o)
+
+    def __ne__(self, o):
+        return self.v != _value(o)
+
+    __hash__ = None
+
+
+def _value(x) -> float:
+    return x.v if isinstance(x, Dual) else x
+
+
+def _real(v):
+    if isinstance(v, complex):      # a negative base to a fractional power
+        raise ValueError("a complex power")
+    return v
+
+
+def _chain(f, df):
+    """f on floats and duals, with f'(v) = df(v)."""
+    def apply(x):
+        if isinstance(x, Dual):
+            return Dual(f(x.v), df(x.v) * x.g)
+        return f(x)
+    return apply
+
+
+def _flat(f):
+    """A function of zero derivative (floor, sign, a step): its value, a float."""
+    def apply(*args):
+        return f(*(_value(a) for a in args))
+    return apply
+
+
+def _atan2(y, x):
+    if not isinstance(y, Dual) and not isinstance(x, Dual):
+        return math.atan2(y, x)
+    yv, xv = _value(y), _value(x)
+    r2 = xv * xv + yv * yv
+    g = 0.0
+    if isinstance(y, Dual):
+        g = (xv / r2) * y.g
+    if isinstance(x, Dual):
+        g = g - (yv / r2) * x.g
+    return Dual(math.atan2(yv, xv), g)
+
+
+def _missing(name: str):
+    def apply(*args):
+        if any(isinstance(a, Dual) for a in args):
+            raise NotDifferentiable(f"no derivative of {name} here")
+        return getattr(math, name)(*args)
+    return apply
+
+
+class _DualMath:
+    """`math` for dual numbers (what the printed Python calls as math.NAME)."""
+
+    pi, e, nan, inf = math.pi, math.e, math.nan, math.inf
+    sin = staticmethod(_chain(math.sin, math.cos))
+    cos = staticmethod(_chain(math.cos, lambda v: -math.sin(v)))
+    tan = staticmethod(_chain(math.tan, lambda v: 1.0 + math.tan(v) ** 2))
+    asin = staticmethod(_chain(math.asin, lambda v: 1.0 / math.sqrt(1.0 - v * v)))
+    acos = staticmethod(_chain(math.acos, lambda v: -1.0 / math.sqrt(1.0 - v * v)))
+    atan = staticmethod(_chain(math.atan, lambda v: 1.0 / (1.0 + v * v)))
+    sinh = staticmethod(_chain(math.sinh, math.cosh))
+    cosh = staticmethod(_chain(math.cosh, math.sinh))
+    tanh = staticmethod(_chain(math.tanh, lambda v: 1.0 - math.tanh(v) ** 2))
+    asinh = staticmethod(_chain(math.asinh, lambda v: 1.0 / math.sqrt(v * v + 1.0)))
+    acosh = staticmethod(_chain(math.acosh, lambda v: 1.0 / math.sqrt(v * v - 1.0)))
+    atanh = staticmethod(_chain(math.atanh, lambda v: 1.0 / (1.0 - v * v)))
+    exp = staticmethod(_chain(math.exp, math.exp))
+    log = staticmethod(_chain(math.log, lambda v: 1.0 / v))
+    sqrt = staticmethod(_chain(math.sqrt, lambda v: 0.5 / math.sqrt(v)))
+    # |x|' = sign(x), 0 at 0 (as sympy's derivative of Abs gives)
+    fabs = staticmethod(_chain(math.fabs, lambda v: float((v > 0) - (v < 0))))
+    erf = staticmethod(_chain(math.erf, lambda v: 2.0 / math.sqrt(math.pi) * math.exp(-v * v)))
+    floor = staticmethod(_flat(math.floor))
+    ceil = staticmethod(_flat(math.ceil))
+    atan2 = staticmethod(_atan2)
+    gamma = staticmethod(_missing("gamma"))
+
+
+def _namespace() -> dict:
+    fast = fast_namespace()
+    names = {k: _flat(fast[k]) for k in ("_sign", "_heaviside", "_trunc", "_round")}
+    return dict(names, math=_DualMath)
+
+
+class DualJacobian:
+    """A generated program (`source`, its function `name`, called as name(*inputs, out))
+    evaluated with its values' partial derivatives in the `varied` inputs: {input
+    argument's position: the positions of its entries that vary}, numbered in that
+    order.  `call(*inputs, out)` fills `out` like the symbolic Jacobian's program: the
+    values first when `with_values`, then the gradients row by row."""
+
+    backend = "dual"
+
+    def __init__(self, source: str, name: str, n_in: int, varied: dict[int, list[int]],
+                 with_values: bool):
+        self.source, self.name, self.n_in = source, name, n_in
+        self.varied, self.with_values = varied, with_values
+        self.n_varied = sum(len(v) for v in varied.values())
+        self._function = None
+
+    def __getstate__(self) -> dict:
+        return dict(self.__dict__, _function=None)    # compiled again when read back
+
+    def call(self, *arrays) -> None:
+        if self._function is None:
+            namespace = _namespace()
+            exec(compile(self.source, f"<autolev dual {self.name}>", "exec"), namespace)
+            self._function = namespace[self.name]
+        inputs, out = list(arrays[:self.n_in]), arrays[self.n_in]
+        k = 0
+        for position, entries in self.varied.items():
+            values = [float(v) for v in inputs[position]]
+            for i in entries:
+                g = np.zeros(self.n_varied)
+                g[k] = 1.0
+                values[i] = Dual(values[i], g)
+                k += 1
+            inputs[position] = values
+        n_out = len(out) // (self.n_varied + self.with_values)
+        results = [0.0] * n_out
+        try:
+            self._function(*[a.tolist() if isinstance(a, np.ndarray) else a
+                             for a in inputs], results)
+        except MATH_ERRORS as exc:
+            raise NotDifferentiable(str(exc)) from None
+        grads = out[n_out:] if self.with_values else out
+        grads = grads.reshape(n_out, self.n_varied)
+        for r, value in enumerate(results):
+            if isinstance(value, Dual):
+                v, grads[r] = value.v, value.g
+            else:
+                v, grads[r] = value, 0.0
+            if self.with_values:
+                out[r] = v
