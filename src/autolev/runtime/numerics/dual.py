@@ -11,6 +11,7 @@ the caller then forms the Jacobians symbolically, where such points are handled.
 """
 from __future__ import annotations
 
+import marshal
 import math
 
 import numpy as np
@@ -198,15 +199,24 @@ class DualJacobian:
         self.source, self.name, self.n_in = source, name, n_in
         self.varied, self.with_values = varied, with_values
         self.n_varied = sum(len(v) for v in varied.values())
+        self._code = None           # Python's compiled code: most of the cost of the first call
         self._function = None
 
     def __getstate__(self) -> dict:
-        return dict(self.__dict__, _function=None)    # compiled again when read back
+        return dict(self.__dict__, _function=None,
+                    _code=None if self._code is None else marshal.dumps(self._code))
+
+    def __setstate__(self, state: dict) -> None:
+        code = state.pop("_code")
+        self.__dict__.update(state)
+        self._code = None if code is None else marshal.loads(code)
 
     def call(self, *arrays) -> None:
         if self._function is None:
+            if self._code is None:
+                self._code = compile(self.source, f"<autolev dual {self.name}>", "exec")
             namespace = _namespace()
-            exec(compile(self.source, f"<autolev dual {self.name}>", "exec"), namespace)
+            exec(self._code, namespace)
             self._function = namespace[self.name]
         inputs, out = list(arrays[:self.n_in]), arrays[self.n_in]
         k = 0
