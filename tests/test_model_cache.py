@@ -476,3 +476,43 @@ def test_tables_and_plots_are_drawn_from_a_plans_rows(cache, tmp_path):
         assert wrong.returncode == 2
         assert "--plot: no output column W; the runs write Q, U" in wrong.stderr
         assert not (tmp_path / "wrong").exists()
+
+
+# -- kept linearizations: a plain warm `autolev linearize` without the model ----------
+def test_a_linearization_is_kept_for_its_file_and_options(cache, tmp_path):
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED)
+    env = dict(os.environ)
+    args = ["linearize", str(model), "--at", "Q=0.3"]
+    first = run_cli(args + ["--out", str(tmp_path / "first")], env)
+    assert first.returncode == 0, first.stderr
+    assert "as before" not in first.stderr and "'sympy'" in first.stdout
+    again = run_cli(args + ["--out", str(tmp_path / "again")], env)
+    assert again.returncode == 0 and "linearized as before" in again.stderr
+    # neither the model nor sympy (scipy only to write the .mat file)
+    assert "imported: ['scipy']" in again.stdout
+    assert again.stdout == first.stdout.replace("'scipy', 'sympy'", "'scipy'").replace(
+        str(tmp_path / "first"), str(tmp_path / "again"))
+    for name in ("pushed-A.csv", "pushed-B.csv", "pushed-eigenvalues.csv"):
+        assert (tmp_path / "first" / name).read_text() == \
+            (tmp_path / "again" / name).read_text()
+    # by hand: a particle at L on a rod, Q'' = -(G/L) sin(Q) + TQ/(M L^2)
+    a = np.loadtxt(tmp_path / "again" / "pushed-A.csv", delimiter=",", skiprows=1,
+                   usecols=(1, 2))
+    assert np.allclose(a, [[0, 1], [-9.81 / 2 * math.cos(0.3), 0]], rtol=1e-14)
+    # another point, or the model changed: linearized afresh
+    other = run_cli(["linearize", str(model), "--at", "Q=0.4"], env)
+    assert other.returncode == 0 and "as before" not in other.stderr
+    assert other.stdout != first.stdout and "'sympy'" in other.stdout
+    model.write_text(PUSHED.replace("G=9.81", "G=9.8"))
+    changed = run_cli(args, env)
+    assert changed.returncode == 0 and "as before" not in changed.stderr
+
+
+def test_a_failed_linearization_is_not_kept(cache, tmp_path):
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED.replace("MASS P = M", "MASS P = 0*M"))
+    env = dict(os.environ)
+    for _ in range(2):
+        r = run_cli(["linearize", str(model)], env)
+        assert r.returncode == 1 and "singular" in r.stderr and "as before" not in r.stderr

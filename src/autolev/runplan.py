@@ -12,6 +12,8 @@ itself are unchanged (the translation cache's manifest), repeats the run from
 the plan and writes the same files (and the tables and plots asked for, from its
 rows), importing no sympy (scipy only for what needs it: a linear solve, a scipy method)
 and translating nothing.  Anything else runs from the model.
+
+A linearization (`autolev linearize FILE`, no sweep) keeps its answer the same way.
 """
 from __future__ import annotations
 
@@ -28,6 +30,7 @@ from .runtime.code_kinds import INTEGRATION_PARAMETERS
 from .runtime.numerics.clibrary import CompileError
 from .runtime.numerics.evaluation import CompiledEvaluation
 from .runtime.numerics.execute import Execution
+from .runtime.numerics.linear import Linearization
 from .runtime.numerics.results import Column
 
 
@@ -132,30 +135,64 @@ def write_plan(path: Path, options: tuple, files_read: list, load_messages: str,
                commands: list) -> None:
     """Keep the plan of a run of the model at `path` with `options` (`files_read`: its
     translation's)."""
-    entry = _entry(path, options)
-    if entry is None:
-        return
-    plan = RunPlan(manifest(path, files_read), load_messages, commands)
-    try:
-        diskcache.install(pickle.dumps(plan, protocol=pickle.HIGHEST_PROTOCOL), entry)
-    except OSError:
-        return                      # a full or read-only disk: the next run forms its own
+    _keep(path, options, RunPlan(manifest(path, files_read), load_messages, commands))
 
 
 def read_plan(path: Path, options: tuple) -> RunPlan | None:
     """The plan of the model at `path` run with `options`, while it holds, else None."""
+    return _kept(path, options, RunPlan)
+
+
+@dataclass
+class KeptLinearization:
+    """The answer of `autolev linearize FILE` for its options (no sweep): the same
+    file, files read and options give the same numbers, so the next such command
+    reports it again without the model (BICYCLE14: 1.6 s of reading the model back and
+    importing sympy and scipy, for a 10-state answer)."""
+
+    manifest: tuple             # of the files the translation read (cachekeys.manifest)
+    load_messages: str          # what loading the model printed on stderr
+    messages: str               # what the linearization printed on stderr
+    linearization: Linearization
+
+
+def keep_linearization(path: Path, options: tuple, files_read: list, load_messages: str,
+                       messages: str, linearization: Linearization) -> None:
+    _keep(path, options + ("linearize",),
+          KeptLinearization(manifest(path, files_read), load_messages, messages,
+                            linearization))
+
+
+def kept_linearization(path: Path, options: tuple) -> KeptLinearization | None:
+    """The linearization of the model at `path` with `options`, while it holds."""
+    return _kept(path, options + ("linearize",), KeptLinearization)
+
+
+def _keep(path: Path, options: tuple, kept) -> None:
+    entry = _entry(path, options)
+    if entry is None:
+        return
+    try:
+        diskcache.install(pickle.dumps(kept, protocol=pickle.HIGHEST_PROTOCOL), entry)
+    except OSError:
+        return                      # a full or read-only disk: the next run forms its own
+
+
+def _kept(path: Path, options: tuple, kind: type):
+    """What `_keep` kept for the model at `path` and `options`, while every file its
+    translation read is unchanged; else None."""
     entry = _entry(path, options)
     data = None if entry is None else diskcache.read_verified(entry)
     if data is None:
         return None
     try:
-        plan = pickle.loads(data)
+        kept = pickle.loads(data)
     except CompileError:
         return None                 # its libraries are gone and no compiler rebuilds them
-    if not isinstance(plan, RunPlan) or plan.manifest != manifest(
-            path, [name for name, _ in plan.manifest[0]]):
+    if not isinstance(kept, kind) or kept.manifest != manifest(
+            path, [name for name, _ in kept.manifest[0]]):
         return None
-    return plan
+    return kept
 
 
 class Recorder(io.TextIOBase):

@@ -14,15 +14,48 @@ from .common import (UsageError, has_matplotlib, listed, load_model, model_value
 
 
 def cmd_linearize(ns: argparse.Namespace) -> int:
-    """Linearize a model's CODE DYNAMICS at an operating point; print the eigenvalues."""
+    """Linearize a model's CODE DYNAMICS at an operating point; print the eigenvalues.
+    The answer is kept for the same file and options (runplan.KeptLinearization)."""
+    path = Path(ns.file)
+    options = _kept_options(ns, path)
+    if options is None:
+        return _linearize(path, ns, None)
+    from ..runplan import Recorder, kept_linearization
+    kept = kept_linearization(path, options)
+    if kept is not None:
+        sys.stderr.write(kept.load_messages + kept.messages)
+        print(f"{path}: linearized as before with these options (the model and the "
+              "files it reads unchanged)", file=sys.stderr)
+        return _report_eigenvalues(path, kept.linearization, ns.out, ns.overwrite)
+    recorder = sys.stderr = Recorder(sys.stderr)
+    try:
+        return _linearize(path, ns, (options, recorder))
+    finally:
+        sys.stderr = recorder.through
+
+
+def _kept_options(ns: argparse.Namespace, path: Path) -> tuple | None:
+    """The options that change a linearization's answer (the .in file first), when
+    it can be kept: a model file linearized at one point; else None."""
+    if path.suffix.lower() != ".al" or ns.sweep:
+        return None
+    infile = None if ns.infile is None else str(Path(ns.infile).resolve())
+    return (infile, ns.set, ns.specified, ns.backend, ns.zero_missing, ns.at, ns.inputs,
+            ns.code, ns.lock, ns.constraint, ns.dependent)
+
+
+def _linearize(path: Path, ns: argparse.Namespace, keeping: tuple | None) -> int:
+    """The linearization from the model; `keeping`: (its options, the Recorder that is
+    sys.stderr) to keep its answer."""
     from ..runtime.errors import AutolevModelError
 
-    path = Path(ns.file)
     overrides, point, sweep = _linearize_request(ns)
-    model = load_model(path, sys.stderr)
+    progress = sys.stderr if keeping is None else keeping[1].through
+    model = load_model(path, progress)
     if model is None:
         print(f"{path}: not linearized", file=sys.stderr)
         return 1
+    load_messages = keeping[1].take() if keeping is not None else ""
     options = dict(inputs=ns.inputs.split(",") if ns.inputs else None,
                    code=int(ns.code) if ns.code and ns.code.isdigit() else ns.code,
                    backend=ns.backend, infile=ns.infile, overrides=overrides,
@@ -33,10 +66,14 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
     if sweep is not None:
         return _linearize_sweep(path, model, sweep, point, options, ns)
     try:
-        lin = model.linearize(point, progress=sys.stderr, **options)
+        lin = model.linearize(point, progress=progress, **options)
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
+    if keeping is not None:
+        from ..runplan import keep_linearization
+        keep_linearization(path, keeping[0], model.loaded.source.content.files,
+                           load_messages, keeping[1].take(), lin)
     return _report_eigenvalues(path, lin, ns.out, ns.overwrite)
 
 
@@ -77,8 +114,9 @@ def _constraint_values(model, names) -> list:
 
 def _report_eigenvalues(path: Path, lin, out_dir: str | None, overwrite: bool = False) -> int:
     """Print a linearization's eigenvalues (and write them into `out_dir`)."""
-    from ..runtime.tools import safe_stem
-    from ..runtime.tools import write_output
+    # not the runtime's façade (it imports sympy): a kept linearization needs neither
+    from ..runtime.numerics.files import safe_stem
+    from ..runtime.outputs import write_output
 
     if not lin.steady:
         print(f"{path}: warning: not an equilibrium or a steady motion: the accelerations "
