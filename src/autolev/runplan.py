@@ -53,7 +53,7 @@ class PlannedSystem(CompiledEvaluation):
     """A NumericSystem's compiled functions, names and numbers, without its model
     (`states`: the state's names)."""
 
-    def __init__(self, system, state_names: list):
+    def __init__(self, system, state_names: list, sweeps_constants: bool):
         self.states = list(state_names)
         self.nstate, self._n = system.nstate, system._n
         self.unknown_positions = list(system.unknown_positions)
@@ -65,7 +65,10 @@ class PlannedSystem(CompiledEvaluation):
         self.rhs_function, self.output_function = system.rhs_function, system.output_function
         self.rhs_compiling = None
         self.extra_functions = dict(system.extra_functions)
-        self.constants_function = system.constants_function
+        # only a sweep of a constant evaluates them again: then compiled Python, which
+        # reads back without sympy (a first evaluation's walk needs the expressions)
+        self.constants_function = (system.constants_function.compiled() if sweeps_constants
+                                   else None)
         self.derived_constants = system.derived_constants
         self.solved = [str(s) for s in system.solved]     # ALGEBRAIC's unknowns, by name
         self.specified_functions = []
@@ -108,8 +111,9 @@ def planned_command(execution: Execution, label: str, messages: str) -> PlannedC
     integration = {k: inputs.internal(k) for k in INTEGRATION_PARAMETERS} if integrates \
         else {}
     initial = inputs.vector(execution.system.states) if integrates else []
+    sweeps = execution.algebraic is not None and execution.algebraic.swept is not None
     reduced = replace(execution, system=PlannedSystem(execution.system,
-                                                      execution.state_names),
+                                                      execution.state_names, sweeps),
                       inputs=PlannedInputs(integration, initial), build_seconds=0.0)
     return PlannedCommand(reduced, label, messages)
 

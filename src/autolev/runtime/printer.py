@@ -114,15 +114,16 @@ class CodePrinter:
             return self._pow(e)
         if isinstance(e, sm.Piecewise):          # a Function too, of (value, condition)s
             return self._piecewise(e)
-        if e.is_Function:
-            return self._function(e)
-        if e.is_Relational:
-            return self._relational(e)
+        # And, Or and Not are Functions too (sympy's BooleanFunction)
         if isinstance(e, (sm.And, sm.Or)):
             op = self.AND if isinstance(e, sm.And) else self.OR
             return "(" + op.join(self._p(a)[0] for a in e.args) + ")", ATOM
         if isinstance(e, sm.Not):
             return self.NOT + self._wrap(e.args[0], ATOM), UNARY
+        if e.is_Function:
+            return self._function(e)
+        if e.is_Relational:
+            return self._relational(e)
         raise AutolevModelError(f"cannot generate numeric code for {type(e).__name__}: {e}")
 
     def _wrap(self, e, prec: int) -> str:

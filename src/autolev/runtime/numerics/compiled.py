@@ -60,6 +60,37 @@ def compile_program(prog: Program, backend: str, name: str,
     return Function(call, "python", source, recipe)
 
 
+class WalkedFirst:
+    """A program evaluated once per parameter set (the constants'): its first call walks
+    it (interpret.py: nothing printed or compiled, the compiled Python's numbers), later
+    calls compile it to Python (and a first call whose walk raises: the compiled
+    code's numpy fallback gives C's inf and nan).  `compiled()` is that Function."""
+
+    backend = "python"
+
+    def __init__(self, prog: Program, name: str):
+        self._prog, self.name = prog, name
+        self._function: Function | None = None
+        self._walked = False
+
+    def call(self, *arrays) -> None:
+        if self._function is None and not self._walked:
+            from .interpret import ProgramWalk
+            from .pyfunction import MATH_ERRORS
+            self._walked = True
+            try:
+                ProgramWalk(self._prog).evaluate(*arrays)
+                return
+            except MATH_ERRORS:
+                pass
+        self.compiled().call(*arrays)
+
+    def compiled(self) -> Function:
+        if self._function is None:
+            self._function = compile_program(self._prog, "python", self.name)
+        return self._function
+
+
 class CompilingInBackground:
     """A program's C compiled on a thread of its own while the caller goes on (gcc is a
     subprocess: the interpreter is free meanwhile).  `done()` asks; `function()` waits

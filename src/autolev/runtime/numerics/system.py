@@ -26,7 +26,7 @@ from .. import units
 from ..errors import AutolevModelError
 from . import clibrary, codegen
 from .cloop import extra_source as loop_extra_source
-from .compiled import CompilingInBackground, compile_program
+from .compiled import CompilingInBackground, WalkedFirst, compile_program
 from .evaluation import CompiledEvaluation
 from .massmatrix import MassStructure
 
@@ -183,13 +183,13 @@ class NumericSystem(CompiledEvaluation):
         if self.constants_function is None:
             self.constants_function = self._constants_function([])
 
-    def _constants_function(self, lifted: list):
+    def _constants_function(self, lifted: list) -> WalkedFirst:
         """The constant definitions' function, then the `lifted` parts' (evaluated once
-        per parameter set: Python, since compiling C would cost more)."""
-        return compile_program(
+        per parameter set: walked, then Python; compiling C would cost more)."""
+        return WalkedFirst(
             codegen.Program({"p": self.params}, self.constant_defs + [e for _, e in lifted],
                             self.model.defs).build(False),
-            "python", "autolev_constants")
+            "autolev_constants")
 
     def _compile(self, extra: dict, accel_inputs: list, integrate: bool,
                  background: bool) -> None:
