@@ -49,6 +49,20 @@ ADD, MUL, UNARY, POW, ATOM = (Precedence.ADD, Precedence.MUL, Precedence.UNARY,
                               Precedence.POW, Precedence.ATOM)
 
 
+def fraction_parts(mul) -> tuple[list, list]:
+    """A product's factors as printed: (numerator, denominator), a factor x**-k in the
+    denominator as x**k and a rational 1/q as q (the walk of interpret.py divides alike)."""
+    num, den = [], []
+    for f in mul.args:
+        if f.is_Pow and f.exp.is_Number and f.exp.is_negative:
+            den.append(f.base if f.exp == -1 else sm.Pow(f.base, -f.exp, evaluate=False))
+        elif f.is_Rational and not f.is_Integer and f.p == 1:
+            den.append(sm.Integer(f.q))
+        else:
+            num.append(f)
+    return num, den
+
+
 class CodePrinter:
     """The walk every language's printer shares: each expression once, in sympy's
     argument order, compound subexpressions printed once; `names` maps symbols to
@@ -167,17 +181,7 @@ class CodePrinter:
         coeff, rest = e.as_coeff_Mul()
         if coeff == -1:
             return "-" + self._wrap(rest, MUL + 1 if rest.is_Mul else UNARY), UNARY
-        num, den = [], []
-        for f in e.args:
-            if f.is_Pow and f.exp.is_Number and f.exp.is_negative:
-                if f.exp == -1:
-                    den.append(f.base)
-                else:
-                    den.append(sm.Pow(f.base, -f.exp, evaluate=False))
-            elif f.is_Rational and not f.is_Integer and f.p == 1:
-                den.append(sm.Integer(f.q))
-            else:
-                num.append(f)
+        num, den = fraction_parts(e)
         if not den:
             return "*".join(self._wrap(f, MUL) for f in num), MUL
         top = "*".join(self._wrap(f, MUL) for f in num) if num else self.ONE

@@ -18,7 +18,7 @@ import sympy as sm
 from sympy.core.numbers import NumberSymbol
 
 from ..errors import AutolevModelError
-from ..printer import _PY_FUNCS
+from ..printer import _PY_FUNCS, fraction_parts
 from .pyfunction import fast_namespace
 
 _HELPERS = fast_namespace()
@@ -132,14 +132,7 @@ class _Walk:
         coeff, rest = e.as_coeff_Mul()
         if coeff == -1:
             return -self(rest)
-        num, den = [], []
-        for f in e.args:
-            if f.is_Pow and f.exp.is_Number and f.exp.is_negative:
-                den.append(f.base if f.exp == -1 else sm.Pow(f.base, -f.exp, evaluate=False))
-            elif f.is_Rational and not f.is_Integer and f.p == 1:
-                den.append(sm.Integer(f.q))
-            else:
-                num.append(f)
+        num, den = fraction_parts(e)
         top = self._product(num) if num else 1.0
         return top / self._product(den) if den else top
 
