@@ -101,3 +101,16 @@ def test_linearizing_a_model_whose_codes_do_not_integrate_takes_its_whole_equati
     g, length = 9.81, 2.0
     assert np.allclose(lin.A, [[0, 1], [3 * g / (2 * length) * np.sin(0.5), 0]],
                        rtol=1e-12)
+
+
+def test_a_value_for_a_constant_declared_after_the_last_code_is_refused_as_such(tmp_path):
+    model = _write(tmp_path, "tail.al", PENDULUM + "CODE DYNAMICS() tail.c\n" + TAIL)
+    out = subprocess.run([sys.executable, "-m", "autolev", "run", str(model), "--out",
+                          str(tmp_path / "o"), "--set", "K=2"], capture_output=True,
+                         text=True)
+    assert out.returncode == 2 and "--set K: declared after the model's last CODE" \
+        in out.stderr
+    out = subprocess.run([sys.executable, "-m", "autolev", "run", str(model), "--out",
+                          str(tmp_path / "o"), "--set", "KK=2"], capture_output=True,
+                         text=True)
+    assert out.returncode == 2 and "--set KK: the model has no quantity" in out.stderr

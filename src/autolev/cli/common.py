@@ -90,6 +90,22 @@ def name_values(items, option: str, numbers: bool = False) -> dict:
     return values
 
 
+def refuse_unknown_names(model, overrides: dict) -> None:
+    """UsageError for --set names that are no quantity of the model as built; a name
+    declared after its last CODE statement is said so (no program reads it)."""
+    unknown = [name for name in overrides if not model.names_a_quantity(name)]
+    if not unknown:
+        return
+    declared = {name.upper() for name in model.loaded.names} if model.loaded else set()
+    later = [name for name in unknown if name.rstrip("'").upper() in declared]
+    if later:
+        raise UsageError(f"--set {', '.join(later)}: declared after the model's last CODE "
+                         "statement, so no program of its CODE commands reads "
+                         f"{'it' if len(later) == 1 else 'them'}")
+    raise UsageError(f"--set {', '.join(unknown)}: the model has no quantity of "
+                     f"{'that name' if len(unknown) == 1 else 'those names'}")
+
+
 def listed(values) -> list:
     """Names given as repeated options, each possibly comma-separated."""
     return [n.strip() for v in values or () for n in v.split(",") if n.strip()]

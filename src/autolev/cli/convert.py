@@ -51,7 +51,7 @@ def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
     from ..export_mechanics import export_sympy
     from ..runtime.errors import AutolevModelError
     from ..runtime.tools import write_output
-    from .common import load_model
+    from .common import load_model, refuse_unknown_names
 
     out = Path(ns.output) if ns.output else path.with_name(path.stem + "_sympy.py")
     if out.is_dir():
@@ -65,10 +65,7 @@ def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
     if model is None:
         print(f"{path}: not converted", file=sys.stderr)
         return 1
-    unknown = [name for name in overrides if not model.names_a_quantity(name)]
-    if unknown:
-        raise UsageError(f"--set {', '.join(unknown)}: the model has no quantity of "
-                         f"{'that name' if len(unknown) == 1 else 'those names'}")
+    refuse_unknown_names(model, overrides)
     try:
         text = export_sympy(model, path.name, infile=ns.infile, overrides=overrides,
                             level=ns.level or "auto")

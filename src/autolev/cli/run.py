@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from .common import (UsageError, has_matplotlib, load_model, name_values, positive_int,
-                     run_options, specified_values, statement_label)
+                     refuse_unknown_names, run_options, specified_values, statement_label)
 from .responses import print_transcript
 
 
@@ -71,10 +71,7 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
         print(f"{path}: no CODE command: the responses Autolev displayed follow "
               "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
         return print_transcript(path, None)
-    unknown = [name for name in overrides if not model.names_a_quantity(name)]
-    if unknown:
-        raise UsageError(f"--set {', '.join(unknown)}: the model has no quantity of "
-                         f"{'that name' if len(unknown) == 1 else 'those names'}")
+    refuse_unknown_names(model, overrides)
     commands = _commands_to_run(model, ns, path)
     if not commands:
         print(f"{path}: error: no CODE DYNAMICS or ODE to animate", file=sys.stderr)
