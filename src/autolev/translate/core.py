@@ -79,9 +79,9 @@ class Translation:
     # the model is built, which forms its equations)
     constants_without_value: list[str] = field(default_factory=list)
     # the Python line of each CODE statement's call, and constants_without_value as it
-    # stood there (what that CODE command's program could read)
+    # stood at the last (what the last CODE command's program could read)
     code_lines: list[int] = field(default_factory=list)
-    lacking_at_code: list[list[str]] = field(default_factory=list)
+    lacking_at_last_code: list[str] = field(default_factory=list)
     # whether some CODE statement is a DYNAMICS or ODE (the equations a linearization,
     # an animation or an export takes before the model's equations as they stand)
     code_integrates: bool = False
@@ -101,7 +101,7 @@ class Translation:
             return self
         return replace(self, code="\n".join(lines[:last]) + "\n",
                        line_map={n: s for n, s in self.line_map.items() if n <= last},
-                       constants_without_value=list(self.lacking_at_code[-1]))
+                       constants_without_value=list(self.lacking_at_last_code))
 
 
 # the generated module's dictionary of probes' values (a dunder name: no Autolev name
@@ -180,7 +180,7 @@ class Translator:
         self.words: set[str] | None = None
         self.code_spans: list[Span] = []           # see Translation
         self.code_calls: list[Line] = []           # each CODE statement's line of Python
-        self.lacking_at_code: list[list[str]] = []
+        self.lacking_at_last_code: list[str] = []
         self.code_integrates = False
         self.defined_at: dict[str, str] = {}
         self.statements_at: dict[tuple[str, str], list[str]] = {}
@@ -318,7 +318,7 @@ class Translator:
                            dict(self.defined_at), dict(self.probe_errors),
                            {k: list(v) for k, v in self.statements_at.items()},
                            self.constants_without_value(), code_lines,
-                           [list(k) for k in self.lacking_at_code], self.code_integrates)
+                           list(self.lacking_at_last_code), self.code_integrates)
 
     def constants_without_value(self) -> list[str]:
         """The constants declared so far that no INPUT gives a value and no statement
@@ -333,7 +333,7 @@ class Translator:
         self.code_integrates = self.code_integrates or integrates
         self.emit(call)
         self.code_calls.append(self.lines[-1])
-        self.lacking_at_code.append(self.constants_without_value())
+        self.lacking_at_last_code = self.constants_without_value()
 
     @staticmethod
     def location(st: ir.Statement) -> str:
