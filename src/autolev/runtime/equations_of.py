@@ -51,7 +51,7 @@ def equations_of(model, command, values: bool = True, infile=None,
                                 "of motion (those of a CODE DYNAMICS or ODE are written)")
     files = output_columns(model, command)
     solving = equations_and_unknowns(command.args, kind.upper())
-    system = numeric_system(model, command, files, [], solving, "python", False, ())
+    system = numeric_system(model, command, files, [], solving, "python", False, (), False)
     options = RunOptions()
     ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], infile,
                        overrides, None, None, options.missing_values, None)

@@ -20,7 +20,9 @@ class RunOptions:
     the Result holds every row (False: only the last; the files hold them all);
     `missing_values`: "refuse" (constants without a value stop the run before anything
     is compiled) or "zero"; `overwrite`: replace files in the output folder that
-    autolev did not write."""
+    autolev did not write; `recursion`: a model whose bodies form a tree of joints has
+    its accelerations from the articulated-body recursion (runtime/articulated.py;
+    False: Kane's mass matrix solved at each evaluation, as Autolev's programs did)."""
 
     method: str | None = None
     backend: str = "auto"
@@ -34,6 +36,7 @@ class RunOptions:
     keep_rows: bool = True
     missing_values: str = "refuse"
     overwrite: bool = False
+    recursion: bool = True
 
     @classmethod
     def split(cls, given: dict) -> "RunOptions":

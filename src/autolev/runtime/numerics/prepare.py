@@ -160,7 +160,7 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
     what = f"CODE {kind.upper()} {command.filename}"
     with SlowStep(options.progress, f"{what}: forming its equations"):
         system = numeric_system(model, command, files, encoded, (equations, unknowns),
-                                options.backend, options.quirks, locked)
+                                options.backend, options.quirks, locked, options.recursion)
     fresh = not system.compiled and (compile_functions or system.constants_function is None)
     with model.defs.as_of(program_of(model, command).definitions):
         inputs, kinds, names, extra_constants = take_inputs(ask, system)
@@ -170,7 +170,8 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
         elif fresh:
             system.compile_constants()
     if fresh:                        # kept at the model's own revision, not as_of's view
-        keep_system(model, command, options.backend, options.quirks, locked, system)
+        keep_system(model, command, options.backend, options.quirks, locked,
+                    options.recursion, system)
     build_seconds = time.perf_counter() - build_start
     if system.hidden_in_outputs:
         warnings.warn(
@@ -187,7 +188,7 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
 
 
 def numeric_system(model, command, files, encoded, solving: tuple, backend: str,
-                   quirks: bool, locked) -> NumericSystem:
+                   quirks: bool, locked, recursion: bool) -> NumericSystem:
     """The command's numeric system, compiled, as kept for this revision of the model
     (repeated simulate() calls with other inputs reuse its compiled functions); else
     its analysis, to be compiled once its inputs are taken (then `keep_system`)."""
@@ -195,7 +196,7 @@ def numeric_system(model, command, files, encoded, solving: tuple, backend: str,
     equations, unknowns = solving
     # the command itself is kept with its system: an id() alone may be reused
     entry = model.derived.table("numeric systems").get(
-        _system_key(model, command, backend, quirks, locked))
+        _system_key(model, command, backend, quirks, locked, recursion))
     if entry is not None and entry[0] is command:
         return entry[1]
     program = program_of(model, command)
@@ -208,21 +209,23 @@ def numeric_system(model, command, files, encoded, solving: tuple, backend: str,
             extra=solver_expressions(model.defs, kind, equations, unknowns),
             zero=command.zero if kind is CodeKind.DYNAMICS else None,
             hidden_in_outputs=hidden_in_outputs(command) if quirks else (),
-            locked=locked, compile_functions=False)
+            locked=locked, compile_functions=False, recursive=recursion)
 
 
-def _system_key(model, command, backend: str, quirks: bool, locked) -> tuple:
+def _system_key(model, command, backend: str, quirks: bool, locked,
+                recursion: bool) -> tuple:
     # by the command's place in the model (which a model read back from the cache keeps)
     place = next((k for k, c in enumerate(model.code_commands) if c is command),
                  "plain" if command is model.plain_dynamics() else id(command))
-    return (place, backend, quirks, tuple(locked))
+    return (place, backend, quirks, tuple(locked), recursion)
 
 
-def keep_system(model, command, backend: str, quirks: bool, locked, system) -> None:
+def keep_system(model, command, backend: str, quirks: bool, locked, recursion: bool,
+                system) -> None:
     """A compiled system kept for this revision of the model (after its build, which
     may have formed KANE), and for the cache of built models (keep_built)."""
     model.derived.table("numeric systems")[
-        _system_key(model, command, backend, quirks, locked)] = (command, system)
+        _system_key(model, command, backend, quirks, locked, recursion)] = (command, system)
     to_be_kept(model)
 
 

@@ -21,6 +21,7 @@ import inspect
 import numpy as np
 import sympy as sm
 
+from .. import articulated
 from .. import symbols as S
 from .. import units
 from ..errors import AutolevModelError
@@ -68,8 +69,10 @@ class NumericSystem(CompiledEvaluation):
 
     def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, solving=None, solved=(), extra=None,
-                 zero=None, hidden_in_outputs=(), locked=(), compile_functions: bool = True):
+                 zero=None, hidden_in_outputs=(), locked=(), compile_functions: bool = True,
+                 recursive: bool = False):
         self.model = model
+        self.recursive = recursive
         self._zero = zero
         self.backend = backend
         self._fix_speeds(locked)
@@ -283,7 +286,14 @@ class NumericSystem(CompiledEvaluation):
                     formed = list(eqs.rows[:len(eqs.speeds), 0]) if rows is None else rows
                     rows = [formed[k] for k in free]
                     unknowns = [unknowns[k] for k in free]
-                if rows is None:
+                accelerations = (self._tree_accelerations(eqs)
+                                 if rows is None and not self.locked else None)
+                if accelerations is not None:
+                    # explicit: the mass matrix of u' = f is the identity
+                    mm = [int(i == j) for i in range(len(unknowns))
+                          for j in range(len(unknowns))]
+                    f = accelerations
+                elif rows is None:
                     mm, f = m.mass_matrix, m.forcing
                 else:
                     # ZERO as changed after KANE() (Autolev codes the ZERO it has
@@ -313,6 +323,17 @@ class NumericSystem(CompiledEvaluation):
                     continue
                 changed = True
         return rates, unknowns, dyn
+
+    def _tree_accelerations(self, eqs) -> list | None:
+        """The speeds' derivatives by the articulated-body recursion, when this system
+        is `recursive` and the model is a tree of joints without constraints (see
+        runtime/articulated.py); else None: M u' = f from Kane's equations."""
+        if not self.recursive or eqs.dependent or eqs.auxiliary or eqs.unknowns:
+            return None
+        try:
+            return articulated.accelerations(self.model.kane_system(), eqs.speeds)
+        except articulated.NotATree:
+            return None
 
     def _speed_of_locked(self, q):
         """U of a locked coordinate Q, from its kinematical equation Q' = U."""
