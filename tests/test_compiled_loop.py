@@ -96,10 +96,10 @@ def test_c_solve_of_kanes_equations_matches_the_python_solve():
             system.loop = loop
         assert np.array_equal(c_dot, py_dot)
         # and both solve M u' = f (M and f as the generated function gives them)
-        out = np.empty(ns + n * n + n)
+        out = np.empty(system.n_rhs)
         system.rhs_function.call(np.array([0.3]), x, system.constant_values,
                                  system.specified_values, out)
-        mm, f = out[ns:ns + n * n].reshape(n, n), out[ns + n * n:]
+        mm, f = out[ns:ns + n * n].reshape(n, n), out[ns + n * n:ns + n * n + n]
         assert np.allclose(mm @ c_dot[system.unknown_positions], f, rtol=1e-12, atol=1e-12)
 
 

@@ -59,6 +59,7 @@ class PlannedSystem(CompiledEvaluation):
         self.unknown_positions = list(system.unknown_positions)
         self.mass_structure = system.mass_structure
         self.n_rhs, self.n_outputs = system.n_rhs, system.n_outputs
+        self.pivot_count = system.pivot_count
         self.files = [[Column(None, c.label, c.unit) for c in cols] for cols in system.files]
         self.degree_columns = [list(d) for d in system.degree_columns]
         self.encode_shapes = list(system.encode_shapes)

@@ -41,7 +41,6 @@ from .vectors import Vector
 
 CHECK_SEEDS = (11, 12)         # random states at which the recursion is compared
 CHECK_TOLERANCE = 1e-9         # relative to the largest value compared
-PIVOT_TOLERANCE = 1e-12        # a pivot this small against its entry counts as zero
 
 
 class NotATree(Exception):
@@ -56,8 +55,8 @@ class _Joint:
     speeds: list                     # indices of the speeds of this joint
     omega: tuple = ()                # the body's angular velocity (N measure numbers)
     offset: tuple = ()               # parent's mass centre to this one's (N)
-    differences: tuple = ()          # the body's angular and linear velocities and
-    #                                  accelerations less the parent's (N)
+    relative: tuple = ()             # angular velocity, then velocity of the mass
+    #                                  centre, relative to the parent (N)
     bias_absolute: tuple = ()        # angular acceleration with every u' = 0 (N)
     columns: list = field(default_factory=list)   # per own speed: 6 partial velocities
     bias: tuple = ()                 # acceleration with every u' = 0, less the parent's
@@ -66,7 +65,19 @@ class _Joint:
     applied: list = field(default_factory=lambda: [sm.S.Zero] * 6)  # moment, force
 
 
-def accelerations(system: System, speeds: list) -> list:
+@dataclass(frozen=True)
+class Recursion:
+    """The speeds' derivatives, and the pivots of each joint's factor D = L D L^T with
+    the entries of D they come from.  In a tree det M is the product of the joints'
+    det D, so M is singular where a pivot is 0, and a pivot small against its entry
+    (a joint of several speeds near a gimbal lock) loses the accelerations as many
+    digits as the ratio has."""
+    rates: list
+    pivots: list
+    entries: list
+
+
+def accelerations(system: System, speeds: list) -> Recursion:
     """The derivatives of `speeds` (the model's independent speeds; no dependent or
     auxiliary ones) as Z-named expressions of the state, from the recursion; NotATree
     when the model is not a tree it solves."""
@@ -75,8 +86,7 @@ def accelerations(system: System, speeds: list) -> list:
     except AutolevModelError as exc:      # Kane's forming says the same, in its words
         raise NotATree(str(exc)) from None
     rates = tree.solve()
-    tree.check_pivots()
-    return rates
+    return Recursion(rates, [p for p, _ in tree.pivots], [e for _, e in tree.pivots])
 
 
 class _Tree:
@@ -89,13 +99,14 @@ class _Tree:
         self.at_rest = {d: 0 for d in self.rates}
         self._rotations: dict = {self.n: sm.eye(3)}
         self._random_points: list | None = None
+        self._motions = [{} for _ in CHECK_SEEDS]   # per random state: each joint's numbers
         self.pivots: list = []           # (pivot, its entry of D) of each joint's factor
         self.joints = self._joints()
         for joint in self.joints:
             self._kinematics(joint)
         self.generalized = [sm.S.Zero] * len(speeds)     # loads not on a body's frame
         self._loads()
-        self._check()
+        self._check_rotations()
 
     # -- the tree ---------------------------------------------------------------------
     def _support(self, vectors) -> frozenset:
@@ -162,34 +173,100 @@ class _Tree:
 
     # -- each body's joint ---------------------------------------------------------------
     def _kinematics(self, joint: _Joint) -> None:
-        """The joint's quantities from the model's own velocities and accelerations:
-        the body's less its parent's (terms the two share cancel as they stand, so a
-        chain's costs stay per joint), in N."""
-        b, n, defs = joint.body, self.n, self.defs
-        motion = _motion_of(b, n)
-        if joint.parent < 0:
-            w_p, alpha0_p, offset = (sm.S.Zero,) * 3, (sm.S.Zero,) * 3, (sm.S.Zero,) * 3
-            diff = motion
-        else:
-            p = self.joints[joint.parent]
-            w_p, alpha0_p = p.omega, p.bias_absolute
-            offset = self._in_n(b.masscenter.pos_from(p.body.masscenter))
-            diff = tuple(x - y for x, y in zip(motion, _motion_of(p.body, n)))
-        w_diff, v_diff, alpha_diff, a_diff = (self._in_n(v) for v in diff)
-        joint.offset, joint.differences = offset, (w_diff, v_diff, alpha_diff, a_diff)
-        joint.omega = tuple(defs.zify(x) for x in _add(w_p, w_diff))
-        c_ang = self._at_rest(alpha_diff)
-        c_lin = tuple(defs.zify(x) for x in _add(self._at_rest(a_diff),
-                                                  _cross(offset, alpha0_p)))
-        joint.bias = c_ang + c_lin
-        joint.bias_absolute = tuple(defs.zify(x) for x in _add(alpha0_p, c_ang))
-        joint.columns = [tuple(defs.zify(defs.diff(c, self.speeds[r]))
-                               for c in w_diff + v_diff) for r in joint.speeds]
-        inertia = b.central_inertia
+        """The joint's quantities in N, the first way whose motions of the body are the
+        model's at random states: relative to the parent as the joint moves it (the
+        derivatives, in the parent's frame, of the offset and of the relative angular
+        velocity: a few terms a joint), else the model's velocities and accelerations
+        less the parent's (whatever the model assigned, with whatever its vectors
+        carry from the joints above)."""
+        ways = (self._absolute,) if joint.parent < 0 else (self._relative,
+                                                             self._differences)
+        for way in ways:
+            w_rel, v_rel, c_ang, c_lin, offset = way(joint)
+            self._take(joint, w_rel, v_rel, c_ang, c_lin, offset)
+            wrong = self._disagreement(joint)
+            if wrong is None:
+                return
+        raise NotATree(f"the {wrong} of {joint.body.name} is not the one its parent's "
+                       "and its joint's give")
+
+    def _absolute(self, joint: _Joint) -> tuple:
+        w, v, alpha, accel = (self._in_n(x) for x in _motion_of(joint.body, self.n))
+        return w, v, self._at_rest(alpha), self._at_rest(accel), (sm.S.Zero,) * 3
+
+    def _relative(self, joint: _Joint) -> tuple:
+        """The relative angular velocity and the offset from the parent's mass centre,
+        in N by the tree's own rotations, differentiated in N through the definitions
+        (each rotation's derivative once, from its parent's): the parent's frame's
+        derivatives are these less the parent's turning."""
+        b, p = joint.body, self.joints[joint.parent]
+        dt = self.defs.dt
+        w_n = self._in_n(b.ang_vel_in(p.body))
+        offset = self._in_n(b.masscenter.pos_from(p.body.masscenter))
+        rate = tuple(dt(x) for x in offset)
+        v_rel = _add(rate, _cross(offset, p.omega))
+        c_ang = self._at_rest(tuple(dt(x) for x in w_n))
+        c_lin = _add(self._at_rest(tuple(dt(x) for x in rate)),
+                     _cross(offset, p.bias_absolute))
+        return w_n, v_rel, c_ang, c_lin, offset
+
+    def _differences(self, joint: _Joint) -> tuple:
+        b, p = joint.body, self.joints[joint.parent]
+        offset = self._in_n(b.masscenter.pos_from(p.body.masscenter))
+        w, v, alpha, accel = (self._in_n(x - y) for x, y in zip(_motion_of(b, self.n),
+                                                                _motion_of(p.body, self.n)))
+        v_rel = _add(v, _cross(offset, p.omega))
+        c_lin = _add(self._at_rest(accel), _cross(offset, p.bias_absolute))
+        return w, v_rel, self._at_rest(alpha), c_lin, offset
+
+    def _take(self, joint: _Joint, w_rel, v_rel, c_ang, c_lin, offset) -> None:
+        defs, z = self.defs, self.defs.zify
+        w_p, alpha0_p = ((sm.S.Zero,) * 3, (sm.S.Zero,) * 3) if joint.parent < 0 else (
+            self.joints[joint.parent].omega, self.joints[joint.parent].bias_absolute)
+        joint.offset = tuple(z(x) for x in offset)
+        joint.relative = tuple(z(x) for x in tuple(w_rel) + tuple(v_rel))
+        joint.omega = tuple(z(x) for x in _add(w_p, w_rel))
+        joint.bias = tuple(z(x) for x in tuple(c_ang) + tuple(c_lin))
+        joint.bias_absolute = tuple(z(x) for x in _add(alpha0_p, joint.bias[:3]))
+        joint.columns = [tuple(z(defs.diff(c, self.speeds[r])) for c in joint.relative)
+                         for r in joint.speeds]
+        b = joint.body
         i_n = sm.zeros(3, 3)
-        for (fa, fb), m in inertia.terms.items():
+        for (fa, fb), m in b.central_inertia.terms.items():
             i_n += self._rotation(fa) * m * self._rotation(fb).T
-        joint.inertia = (i_n.applyfunc(defs.zify), b.mass_checked())
+        joint.inertia = (i_n.applyfunc(z), b.mass_checked())
+
+    def _disagreement(self, joint: _Joint) -> str | None:
+        """None when the recursion's angular and linear velocities and accelerations of
+        the body, at random speeds and u', are the model's (then kept for its
+        children): the partial velocities for the ancestors' speeds are theirs carried
+        to it, and its accelerations are those its velocities give; else what differs."""
+        found = []
+        for k, point in enumerate(self._points()):
+            rates = np.array([float(point.values[self.rates[r]]) for r in joint.speeds])
+            cols = np.array([self._numbers(c, point) for c in joint.columns]).reshape(-1, 6)
+            own_acc = cols.T @ rates if len(rates) else np.zeros(6)
+            bias = self._numbers(joint.bias, point)
+            rel = self._numbers(joint.relative, point)
+            d = self._numbers(joint.offset, point)
+            if joint.parent < 0:
+                w_p = v_p = alpha_p = a_p = np.zeros(3)
+            else:
+                w_p, v_p, alpha_p, a_p = self._motions[k][joint.parent]
+            ours = (self._numbers(joint.omega, point),
+                    v_p + np.cross(w_p, d) + rel[3:],
+                    alpha_p + bias[:3] + own_acc[:3],
+                    a_p + np.cross(alpha_p, d) + bias[3:] + own_acc[3:])
+            for mine, model, what in zip(ours, _motion_of(joint.body, self.n),
+                                         ("angular velocity", "velocity",
+                                          "angular acceleration", "acceleration")):
+                if not _near(mine, self._numbers(model, point)):
+                    return what
+            found.append(ours)
+        index = next(i for i, j in enumerate(self.joints) if j is joint)
+        for k, ours in enumerate(found):
+            self._motions[k][index] = ours
+        return None
 
     # -- loads ---------------------------------------------------------------------------
     def _loads(self) -> None:
@@ -292,61 +369,17 @@ class _Tree:
         value = self.defs.numeric(e, point)
         return value.real
 
-    def _check(self) -> None:
-        """The recursion's angular and linear velocities and accelerations of every
-        body, at random speeds and u', against the model's: the partial velocities of
-        a body for its ancestors' speeds are theirs carried to it, and its
-        accelerations are those its velocities give."""
-        n = self.n
+    def _check_rotations(self) -> None:
+        """Every rotation a rotation at the random states.  N's measure numbers serve
+        only where each rotation is one at every state: Euler parameters are one on the
+        unit sphere alone, where Kane's equations, in the body's own frame, never
+        needed it."""
         for point in self._points():
             for frame, r in self._rotations.items():
-                # N's measure numbers serve only where each rotation is one at every
-                # state: Euler parameters are one on the unit sphere alone, where
-                # Kane's equations, in the body's own frame, never needed it
                 r = self._numbers(list(r), point).reshape(3, 3)
                 if not _near(r @ r.T, np.eye(3)):
                     raise NotATree(f"the orientation of {frame.name} is a rotation only "
                                    "where its coordinates are constrained")
-            still = NumericPoint(self.defs, {x: 0 for x in self.speeds + self.rates},
-                                 seed=point.seed, varying="wide")
-            speeds = np.array([float(point.values[u]) for u in self.speeds])
-            rates = np.array([float(point.values[d]) for d in self.rates])
-            motion: list = []
-            for j in self.joints:
-                cols = np.array([self._numbers(c, point) for c in j.columns]).reshape(-1, 6)
-                own_vel, own_acc = cols.T @ speeds[j.speeds], cols.T @ rates[j.speeds]
-                bias = self._numbers(j.bias, point)
-                d = self._numbers(j.offset, point)
-                w_rest, v_rest = (self._numbers(x, still) for x in j.differences[:2])
-                if j.parent < 0:
-                    w_p = v_p = alpha_p = a_p = w_p_rest = np.zeros(3)
-                else:
-                    w_p, v_p, alpha_p, a_p = motion[j.parent]
-                    w_p_rest = self._numbers(self.joints[j.parent].omega, still)
-                # at rest, the body's velocity less its parent's carried: no speed's part
-                v_rest = v_rest + np.cross(d, w_p_rest)
-                ours = (w_p + own_vel[:3] + w_rest,
-                        v_p + np.cross(w_p, d) + own_vel[3:] + v_rest,
-                        alpha_p + bias[:3] + own_acc[:3],
-                        a_p + np.cross(alpha_p, d) + bias[3:] + own_acc[3:])
-                motion.append(ours)
-                b = j.body
-                for mine, model, what in zip(ours, _motion_of(b, n),
-                                             ("angular velocity", "velocity",
-                                              "angular acceleration", "acceleration")):
-                    if not _near(mine, self._numbers(model, point)):
-                        raise NotATree(f"the {what} of {b.name} is not the one its "
-                                       "parent's and its joint's give")
-
-    def check_pivots(self) -> None:
-        """Every pivot positive at the random states: the mass matrix is positive
-        definite there (a singular one, as a body without inertia turning about its
-        mass centre, is left to the mass matrix's solve, which reports it)."""
-        for point in self._points():
-            pivot = self._numbers([p for p, _ in self.pivots], point)
-            entry = self._numbers([e for _, e in self.pivots], point)
-            if not np.all(pivot > PIVOT_TOLERANCE * np.abs(entry)):
-                raise NotATree("the mass matrix is not positive definite at a random state")
 
     # -- the recursion -------------------------------------------------------------------
     def solve(self) -> list:
@@ -462,9 +495,10 @@ def _near(ours: np.ndarray, theirs: np.ndarray) -> bool:
 
 
 def _solve_spd(d_mat, u_cols, rhs, z, pivots: list) -> tuple[list, list]:
-    """(D^-1 U^T as rows, D^-1 rhs) for the joint's symmetric positive definite D,
-    by L D L^T without pivoting (D's leading minors are the mass matrix's pivots in
-    the order the recursion eliminates: positive where the mass matrix is definite)."""
+    """(D^-1 U^T as rows, D^-1 rhs) for the joint's symmetric D, by L D L^T without
+    pivoting (D's pivots are the mass matrix's in the order the recursion eliminates:
+    positive where the mass matrix is definite; a zero one, a singular mass matrix,
+    is reported by the run from the pivots kept in `pivots`)."""
     k = len(d_mat)
     if k == 0:
         return [], []

@@ -25,14 +25,17 @@ class Conditioning:
     """The scaled condition number of the mass matrix at every row, in batches (its
     memory does not grow with the run): the largest value and where, and the first
     row past COND_WARN (an exactly singular matrix stops the run with its own
-    message)."""
+    message).  A recursion's rows (runtime/articulated.py) give their pivots over the
+    entries they come from instead (the mass matrix's L D L^T pivots, leaves first):
+    the largest entry over its pivot stands for the condition."""
 
     BATCH = 4096
 
     def __init__(self):
         self.largest = None          # (cond, t)
         self.first_bad = None        # (cond, t, state)
-        self._batch = []             # (t, state, matrix)
+        self._batch = []             # (t, state, matrix or pivot ratios)
+        self.pivots = False          # judged by pivot ratios
 
     def add(self, t, state, matrix) -> None:
         self._batch.append((t, state, matrix))
@@ -42,7 +45,14 @@ class Conditioning:
     def _flush(self) -> None:
         if not self._batch:
             return
-        conds = scaled_condition(np.array([m for _, _, m in self._batch]))
+        judged = np.array([m for _, _, m in self._batch])
+        self.pivots = judged.ndim == 2
+        if self.pivots:
+            with np.errstate(divide="ignore", invalid="ignore"):
+                smallest = np.min(judged, axis=1)
+                conds = np.where(smallest > 0, 1.0 / smallest, np.inf)
+        else:
+            conds = scaled_condition(judged)
         k = int(np.argmax(conds))
         if self.largest is None or conds[k] > self.largest[0]:
             self.largest = (float(conds[k]), self._batch[k][0])
@@ -61,11 +71,13 @@ class Conditioning:
         if self.first_bad is not None:
             cond, t, state = self.first_bad
             shown = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, state))
+            measure = (f"a pivot of its factorization is {1 / cond:.2g} of the entry it "
+                       "comes from" if self.pivots else
+                       f"condition number {cond:.2g} after scaling by its diagonal")
             warnings.warn(
-                f"the mass matrix is nearly singular at T = {t:.6g} (condition number "
-                f"{cond:.2g} after scaling by its diagonal: the accelerations may have lost "
-                f"{min(16, int(math.log10(min(cond, 1e16))))} of their 16 digits); the state "
-                f"there: {shown}", stacklevel=4)
+                f"the mass matrix is nearly singular at T = {t:.6g} ({measure}: the "
+                f"accelerations may have lost {min(16, int(math.log10(min(cond, 1e16))))} "
+                f"of their 16 digits); the state there: {shown}", stacklevel=4)
 
 
 class _Rows:
@@ -82,7 +94,7 @@ class _Rows:
 
     def __call__(self, t, y) -> None:
         values = self.system.outputs(t, y)       # solves for the accelerations once
-        self._add(t, np.array(y), values, self.system.last_mass_matrix())
+        self._add(t, np.array(y), values, self.system.last_conditioning())
 
     def block(self, times: np.ndarray, states: np.ndarray) -> None:
         """Rows the compiled loop gave, their outputs computed in one call."""

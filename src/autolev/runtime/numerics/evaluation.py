@@ -5,6 +5,8 @@ run plan's system, which a warm run reads without the model.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .cloop import CompiledLoop
@@ -21,7 +23,8 @@ class CompiledEvaluation:
     constant_values, specified_values, specified_functions; rhs_compiling (the
     right-hand side's C being compiled while its Python runs, or None);
     constants_function and derived_constants (the constants computed from the
-    parameters, and how many)."""
+    parameters, and how many); pivot_count (a recursion's pivots, whose values and
+    entries are the last outputs of the right-hand side, or 0)."""
 
     def set_parameters(self, values: np.ndarray) -> None:
         """Parameter values (in the system's order); evaluates the constants once."""
@@ -115,7 +118,17 @@ class CompiledEvaluation:
         return s
 
     def derivatives(self, t: float, x: np.ndarray) -> np.ndarray:
-        """State derivatives at (t, x): a fresh array."""
+        """State derivatives at (t, x): a fresh array.  A recursion's derivatives that
+        are not finite where one of its pivots is not positive: SingularMassMatrix, as
+        the mass matrix's solve says."""
+        xdot = self._derivatives(t, x)
+        if self.pivot_count and not math.isfinite(xdot.sum()):
+            ratios = self.last_pivot_ratios()
+            if not np.all(ratios > 0):
+                raise SingularMassMatrix(t)
+        return xdot
+
+    def _derivatives(self, t: float, x: np.ndarray) -> np.ndarray:
         if self.specified_functions:
             self._fill_specified(t, x)
         elif self._py is not None:      # loop.derivatives inlined: the common case, in
@@ -154,6 +167,22 @@ class CompiledEvaluation:
         out = self.loop.out_buffer if self.loop is not None else self._rhs_out
         return np.array(out[ns:ns + n * n]).reshape(n, n)
 
+    def last_pivot_ratios(self) -> np.ndarray | None:
+        """The recursion's pivots over the entries they come from at the last evaluation
+        of the derivatives (NaN for 0 over 0; None for a mass matrix's system)."""
+        if not self.pivot_count:
+            return None
+        out = self.loop.out_buffer if self.loop is not None else self._rhs_out
+        k = self.pivot_count
+        pivots, entries = out[self.n_rhs - 2 * k:self.n_rhs - k], out[self.n_rhs - k:]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return pivots / entries
+
+    def last_conditioning(self) -> np.ndarray | None:
+        """What the conditioning of the last evaluation is judged by: the recursion's
+        pivot ratios, else the mass matrix (None: no accelerations solved)."""
+        return self.last_pivot_ratios() if self.pivot_count else self.last_mass_matrix()
+
     def _accel_inputs(self, t, x, xdot, solved) -> np.ndarray:
         parts = []
         if self._n:
@@ -181,7 +210,7 @@ class CompiledEvaluation:
 
     def outputs_rows(self, times: np.ndarray, states: np.ndarray) -> tuple:
         """The outputs at many (t, x) rows of a run in one call of their function: (rows
-        x columns, and the mass matrix at each row or None); the accelerations solved at
+        x columns, and each row's last_conditioning() or None); the accelerations solved at
         each row (NaN where M is singular).  Rows whose specified quantities are Python
         functions of (t, x) go one by one."""
         n, ns = self._n, self.nstate
@@ -192,7 +221,7 @@ class CompiledEvaluation:
             for i in range(count):
                 out[i] = self.outputs(times[i], states[i])
                 if n:
-                    matrices.append(self.last_mass_matrix())
+                    matrices.append(self.last_conditioning())
             return out, matrices
         accelerations = np.empty((count, n))
         for i in range(count):
@@ -202,7 +231,7 @@ class CompiledEvaluation:
                 except SingularMassMatrix:
                     xdot = np.full(ns, np.nan)
                 accelerations[i] = xdot[self.unknown_positions]
-                matrices.append(self.last_mass_matrix())
+                matrices.append(self.last_conditioning())
         t = np.ascontiguousarray(times, dtype=float).reshape(count, 1)
         x = np.ascontiguousarray(states, dtype=float).reshape(count, ns)
         self.output_function.call.rows(

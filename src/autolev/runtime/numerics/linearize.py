@@ -387,6 +387,12 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
     jac.seconds += time.perf_counter() - start
     jac.evaluations += 1
     values, grads = out[:jac.n_rhs], out[jac.n_rhs:].reshape(jac.n_rhs, nv)
+    k = system.pivot_count
+    if k:       # a recursion's: a pivot that is not positive makes M singular
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratios = values[jac.n_rhs - 2 * k:jac.n_rhs - k] / values[jac.n_rhs - k:]
+        if not np.all(ratios > 0):
+            raise AutolevModelError("the mass matrix is singular at the operating point")
     rates = values[:nx].copy()
     jrates = grads[:nx].copy()
     accelerations = np.zeros(n)

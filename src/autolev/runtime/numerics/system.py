@@ -76,6 +76,9 @@ class NumericSystem(CompiledEvaluation):
         self._zero = zero
         self.backend = backend
         self._fix_speeds(locked)
+        # the recursion's pivots, then the entries they come from, after f
+        # (runtime/articulated.py)
+        self.pivots: list = []
         rates, unknowns, dyn = (self._integrated(solving) if integrate else ({}, [], []))
         self.states = alphabetical(rates)
         self.nstate = len(self.states)
@@ -86,8 +89,9 @@ class NumericSystem(CompiledEvaluation):
         solved_here = set(unknowns)     # their places are filled by the M a = f solve
         rate_exprs = [sm.S.Zero if rates[x] in solved_here else rates[x]
                       for x in self.states]
-        # rates (0 where solved), then M row by row, then F
-        self.rhs_exprs = rhs_exprs = rate_exprs + dyn
+        # rates (0 where solved), then M row by row, then F, then the pivots and entries
+        self.rhs_exprs = rhs_exprs = rate_exprs + dyn + self.pivots
+        self.pivot_count = len(self.pivots) // 2
         # a linearization's compiled Jacobians, by (inputs, output columns, backend):
         # kept with the system in the cache of built models
         self.jacobians: dict = {}
@@ -286,13 +290,14 @@ class NumericSystem(CompiledEvaluation):
                     formed = list(eqs.rows[:len(eqs.speeds), 0]) if rows is None else rows
                     rows = [formed[k] for k in free]
                     unknowns = [unknowns[k] for k in free]
-                accelerations = (self._tree_accelerations(eqs)
-                                 if rows is None and not self.locked else None)
-                if accelerations is not None:
+                recursion = (self._tree_accelerations(eqs)
+                             if rows is None and not self.locked else None)
+                if recursion is not None:
                     # explicit: the mass matrix of u' = f is the identity
                     mm = [int(i == j) for i in range(len(unknowns))
                           for j in range(len(unknowns))]
-                    f = accelerations
+                    f = recursion.rates
+                    self.pivots = recursion.pivots + recursion.entries
                 elif rows is None:
                     mm, f = m.mass_matrix, m.forcing
                 else:
@@ -324,7 +329,7 @@ class NumericSystem(CompiledEvaluation):
                 changed = True
         return rates, unknowns, dyn
 
-    def _tree_accelerations(self, eqs) -> list | None:
+    def _tree_accelerations(self, eqs) -> articulated.Recursion | None:
         """The speeds' derivatives by the articulated-body recursion, when this system
         is `recursive` and the model is a tree of joints without constraints (see
         runtime/articulated.py); else None: M u' = f from Kane's equations."""
