@@ -147,6 +147,22 @@ def test_d_of_a_column_by_a_row_is_the_jacobian_through_definitions():
     assert m == sm.Matrix([[q2 * sm.cos(q1), sm.sin(q1)], [c * q2, c * q1]])
 
 
+def test_a_jacobian_written_element_by_element_follows_every_definition():
+    # D(E, x) differentiates E in one pass in every name D was asked about (runtime
+    # Model._partial); the later D's take those derivatives, and one asked after E's
+    # definitions changed takes the new ones
+    ns = build("VARIABLES q{2}\nCONSTANTS c\nW = c*q1^2\nE = W*SIN(q2) + q1*q2\n"
+               "J11 = D(W, q1)\nJ12 = D(W, q2)\nJ21 = D(E, q1)\nJ22 = D(E, q2)\n"
+               "W = c*q2^3\nE = W*COS(q1)\nK1 = D(E, q1)\nK2 = D(E, q2)")
+    q1, q2, c = (sm.Symbol(n, real=True) for n in ("q1", "q2", "c"))
+    explicit = ns["model"].explicit
+    first, second = c * q1 ** 2 * sm.sin(q2) + q1 * q2, c * q2 ** 3 * sm.cos(q1)
+    for name, expected in (("J11", 2 * c * q1), ("J12", 0),
+                           ("J21", first.diff(q1)), ("J22", first.diff(q2)),
+                           ("K1", second.diff(q1)), ("K2", second.diff(q2))):
+        assert sm.simplify(explicit(ns[name]) - expected) == 0, name
+
+
 # -- solving and definitions --------------------------------------------------------------
 def test_solve_records_definitions_that_rhs_and_explicit_return():
     ns = build("VARIABLES x, y\nCONSTANTS a,b,c,d\nZero[1] = a*x+b*y-1\nZero[2] = c*x+d*y-2\n"

@@ -92,6 +92,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         # DIRCOS(..., EULER, ...)
         self.scene = Scene(self.defs, self.info, self.derived, self.point, self._changed)
         self.gravity_vectors: list[Vector] = []  # g> of each GRAVITY statement, in order
+        self.d_variables: list = []      # the names D(E, x) was asked about, in order
         self.loaded: Loaded | None = None          # set by the loader, None when built here
 
     def __repr__(self) -> str:
@@ -423,8 +424,21 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
                 raise AutolevModelError("D of a vector needs the frame: D(V>, x, N)")
             return value.diff(var, frame)
         if isinstance(value, sm.MatrixBase):
-            return value.applyfunc(lambda e: self.defs.diff(e, var))
-        return self.defs.diff(value, var)
+            return value.applyfunc(lambda e: self._partial(e, var))
+        return self._partial(value, var)
+
+    def _partial(self, value, var):
+        """D(E, x), with E differentiated in one pass in every name D was asked about so
+        far: a Jacobian written element by element (A[i,j] = D(X_i', X_j), as
+        linearizations are) walks E's definitions once, not once per element; the
+        other derivatives wait in the definitions' cache for the statements that ask."""
+        defs = self.defs
+        if not isinstance(var, sm.Symbol) or var in defs.rhs:
+            return defs.diff(value, var)
+        if var not in self.d_variables:
+            self.d_variables.append(var)
+        others = [x for x in self.d_variables if x != var and x not in defs.rhs]
+        return defs.jacobian([value], [var] + others)[0][0]
 
     # -- kinematics commands -------------------------------------------------------------
     def kindiffs(self, parent: Frame, child: Frame, kind: str, *coords) -> None:
