@@ -148,9 +148,9 @@ def test_d_of_a_column_by_a_row_is_the_jacobian_through_definitions():
 
 
 def test_a_jacobian_written_element_by_element_follows_every_definition():
-    # D(E, x) differentiates E in one pass in every name D was asked about (runtime
-    # Model._partial); the later D's take those derivatives, and one asked after E's
-    # definitions changed takes the new ones
+    # a new E is differentiated in one pass in the names the previous E was asked about
+    # (runtime Model._partial); the later D's take those derivatives, and one asked
+    # after E's definitions changed takes the new ones
     ns = build("VARIABLES q{2}\nCONSTANTS c\nW = c*q1^2\nE = W*SIN(q2) + q1*q2\n"
                "J11 = D(W, q1)\nJ12 = D(W, q2)\nJ21 = D(E, q1)\nJ22 = D(E, q2)\n"
                "W = c*q2^3\nE = W*COS(q1)\nK1 = D(E, q1)\nK2 = D(E, q2)")

@@ -458,10 +458,12 @@ def test_a_matlab_program_integrates_with_ode45_over_every_integstp(tmp_path):
                                         method="RK45", rtol=1e-4, atol=1e-4, max_step=0.1)
         y, t = sol.y[0, -1], t + 0.1
         expected.append(y)
-    assert np.array_equal(r.states[:, 0], expected)
+    # scipy's steps, or the compiled loop's once its C is built (the cache may hold it
+    # already): the same steps, their sums differing at rounding level
+    assert np.allclose(r.states[:, 0], expected, rtol=1e-13, atol=0)
     c = load(tmp_path, DECAY.replace("FILE", "decay.c"), name="c.al").simulate()
-    assert c.stats["method"] == "kutta-merson" and not np.array_equal(c.states[:, 0],
-                                                                      expected)
+    assert c.stats["method"] == "kutta-merson" and not np.allclose(
+        c.states[:, 0], expected, rtol=1e-8, atol=0)
 
 
 def test_numeric_angles_are_degrees_unless_written_with_pi(tmp_path):

@@ -92,7 +92,8 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         # DIRCOS(..., EULER, ...)
         self.scene = Scene(self.defs, self.info, self.derived, self.point, self._changed)
         self.gravity_vectors: list[Vector] = []  # g> of each GRAVITY statement, in order
-        self.d_variables: list = []      # the names D(E, x) was asked about, in order
+        # the expression D(E, x) last differentiated, and the names it was asked about
+        self.d_row: tuple = (None, [])
         self.loaded: Loaded | None = None          # set by the loader, None when built here
 
     def __repr__(self) -> str:
@@ -428,16 +429,21 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         return self._partial(value, var)
 
     def _partial(self, value, var):
-        """D(E, x), with E differentiated in one pass in every name D was asked about so
-        far: a Jacobian written element by element (A[i,j] = D(X_i', X_j), as
-        linearizations are) walks E's definitions once, not once per element; the
-        other derivatives wait in the definitions' cache for the statements that ask."""
+        """D(E, x); a new E is differentiated in one pass in the names the previous E
+        was asked about too: a Jacobian written row by row (A[i,j] = D(X_i', X_j), as
+        linearizations are) walks each row's definitions once, not once per element;
+        the other derivatives wait in the definitions' cache for the statements that
+        ask.  (Column by column, each E is asked one name at a time, as before.)"""
         defs = self.defs
         if not isinstance(var, sm.Symbol) or var in defs.rhs:
             return defs.diff(value, var)
-        if var not in self.d_variables:
-            self.d_variables.append(var)
-        others = [x for x in self.d_variables if x != var and x not in defs.rhs]
+        last, names = self.d_row
+        if value == last:
+            if var not in names:
+                names.append(var)
+            return defs.jacobian([value], [var])[0][0]
+        others = [x for x in names if x != var and x not in defs.rhs]
+        self.d_row = (value, [var])
         return defs.jacobian([value], [var] + others)[0][0]
 
     # -- kinematics commands -------------------------------------------------------------
