@@ -14,6 +14,7 @@ import sympy as sm
 import autolev
 from autolev.runtime import articulated
 from autolev.runtime.symbols import TIME
+from helpers import load_model
 from helpers.mechanics import symbols, value
 from test_chain_equations import chains, kanes_chain3d, kanes_planar
 
@@ -159,23 +160,43 @@ def test_a_singular_mass_matrix_stops_the_run_as_one(tmp_path):
         assert "mass matrix is singular at T = 0" in result.failure
 
 
-def test_particles_are_left_to_the_mass_matrix(tmp_path):
+@pytest.mark.parametrize("name", ["simple_pendulum", "double_pendulum", "cart_pendulum",
+                                  "mass_spring_damper", "nlink_pendulum"])
+def test_particles_and_bodies_of_the_examples_are_solved_as_their_mass_matrix(name):
+    # a particle turns with its parent: the cart carries its pendulum's bob, a bob the
+    # next one when each link's angle is measured from N
+    model = load_model(name)
+    rng = random.Random(name)
+    speeds = model.generalized_speeds()[0]
+    for _ in range(3):
+        values = {s: rng.uniform(-1.0, 1.0) for s in speeds + model.coordinates}
+        ours, expected = recursion_and_mass_matrix(model, values)
+        assert np.allclose(ours, expected, rtol=1e-11, atol=1e-11)
+
+
+def test_a_particle_turned_by_its_parents_speed_is_refused(tmp_path):
+    # P2's link turns relative to P1's: a particle has no frame to carry that turning
     text = """NEWTONIAN N
-FRAMES A
-PARTICLES P
-MOTIONVARIABLES' Q1', U1'
-CONSTANTS L, M, G
-MASS P = M
+FRAMES A, B
+PARTICLES P1, P2
+MOTIONVARIABLES' Q{2}', U{2}'
+CONSTANTS L, M
+MASS P1 = M, P2 = M
 SIMPROT(N, A, 3, Q1)
+SIMPROT(A, B, 3, Q2)
 Q1' = U1
+Q2' = U2
 W_A_N> = U1*N3>
-P_NO_P> = L*A1>
-V2PTS(N, A, NO, P)
-GRAVITY(G*N1>)
+W_B_A> = U2*A3>
+P_NO_P1> = L*A1>
+P_P1_P2> = L*B1>
+V_NO_N> = 0>
+V2PTS(N, A, NO, P1)
+V2PTS(N, B, P1, P2)
 ZERO = FR() + FRSTAR()
 KANE()
 """
-    assert "particles" in refusal(text, tmp_path)
+    assert "velocity of P2 is not the one" in refusal(text, tmp_path)
 
 
 def test_a_run_integrates_the_recursions_accelerations(tmp_path):

@@ -335,7 +335,8 @@ def test_a_cold_run_does_not_wait_for_its_c_and_keeps_it_for_the_next(tmp_path,
 @pytest.mark.parametrize("backend", ["auto", "python"])
 def test_the_outputs_of_many_rows_are_those_of_each_row(backend):
     """A run's print rows have their outputs computed in one call (outputs_rows): the
-    numbers of one call per row, to the last bit, and the mass matrix at each."""
+    numbers of one call per row, to the last bit, and what each row's conditioning is
+    judged by (the mass matrix, or the recursion's pivot ratios)."""
     m = compiled(load("double_pendulum"))
     r = run(m, TFINAL=2, backend=backend)
     system = r.system
@@ -343,7 +344,7 @@ def test_the_outputs_of_many_rows_are_those_of_each_row(backend):
     values, matrices = system.outputs_rows(r.t, r.states)
     for i, (t, x) in enumerate(zip(r.t, r.states)):
         assert np.array_equal(values[i], system.outputs(t, x))
-        assert np.array_equal(matrices[i], system.last_mass_matrix())
+        assert np.array_equal(matrices[i], system.last_conditioning())
     # the run's own table (its rows from the loop a slice at a time): these numbers
     first = r.outputs[0].data
     degrees = np.array(system.degree_columns[0])

@@ -4,7 +4,9 @@ algorithm (Featherstone, Rigid Body Dynamics Algorithms, ch. 7) in Kane's terms.
 A model is a tree when every moving body has a parent (another body, or the Newtonian
 frame) relative to which it moves by speeds of its own: its angular velocity relative
 to the parent and the velocity of its mass centre relative to the parent's (a point
-fixed in the parent) depend on no speed of the parent's ancestors.  Then each partial
+fixed in the parent) depend on no speed of the parent's ancestors.  A particle is a
+body without inertia that turns with its parent (a cart carries its pendulum's bob,
+a bob the next one when each link's angle is measured from N).  Then each partial
 velocity of a body for an ancestor's speed is the ancestor's, carried rigidly, and
 Kane's equations Fr + Fr* = 0 are those the recursion solves: a pass from the leaves
 gives each body's articulated inertia (its subtree's, seen through the joints below
@@ -36,9 +38,10 @@ from .calculus import NumericPoint
 from .errors import AutolevModelError
 from .frame import Frame
 from .kane import System, partial_velocity
-from .point import Body, Point
+from .point import Body, Particle, Point
 from .vectors import Vector
 
+_ZERO = (sm.S.Zero,) * 3
 CHECK_SEEDS = (11, 12)         # random states at which the recursion is compared
 CHECK_TOLERANCE = 1e-9         # relative to the largest value compared
 
@@ -49,8 +52,10 @@ class NotATree(Exception):
 
 @dataclass
 class _Joint:
-    """One body of the tree and the joint by which it hangs from its parent."""
-    body: Body
+    """One body (or particle) of the tree and the joint by which it hangs from its
+    parent.  A particle turns with its parent: it has no angular velocity of its own,
+    so it carries its children as a point of the parent would."""
+    body: Body | Particle
     parent: int                      # index of the parent's joint; -1: the Newtonian frame
     speeds: list                     # indices of the speeds of this joint
     omega: tuple = ()                # the body's angular velocity (N measure numbers)
@@ -63,6 +68,14 @@ class _Joint:
     #                                  carried over (angular then linear)
     inertia: tuple = ()              # central inertia (3x3, N) and mass
     applied: list = field(default_factory=lambda: [sm.S.Zero] * 6)  # moment, force
+
+    @property
+    def turns(self) -> bool:
+        return isinstance(self.body, Body)
+
+    @property
+    def centre(self) -> Point:
+        return self.body.masscenter if self.turns else self.body
 
 
 @dataclass(frozen=True)
@@ -91,8 +104,6 @@ def accelerations(system: System, speeds: list) -> Recursion:
 
 class _Tree:
     def __init__(self, system: System, speeds: list):
-        if system.particles:
-            raise NotATree("the model has particles")
         self.system, self.speeds, self.defs = system, speeds, system.defs
         self.n = system.newtonian
         self.rates = [S.derivative(u) for u in speeds]
@@ -117,8 +128,8 @@ class _Tree:
     def _joints(self) -> list:
         n = self.n
         moving, supports = [], []
-        for b in self.system.bodies:
-            supp = self._support([b.ang_vel_in(n), b.masscenter.vel(n)])
+        for b in list(self.system.bodies) + list(self.system.particles):
+            supp = self._support([v for v in _motion_of(b, n)[:2] if v is not None])
             if supp:                          # a body no speed moves has no inertia force
                 moving.append(b)
                 supports.append(supp)
@@ -127,7 +138,8 @@ class _Tree:
         owner: dict = {}
         for k in order:
             supp = supports[k]
-            below = [index[j] for j in index if supports[j] <= supp]
+            below = [index[j] for j in index if supports[j] <= supp
+                     and (isinstance(moving[j], Body) or not isinstance(moving[k], Body))]
             parent = max(below, key=lambda i: (len(supports[order[i]]), i), default=-1)
             if parent >= 0:
                 above = supports[order[parent]]
@@ -191,8 +203,9 @@ class _Tree:
                        "and its joint's give")
 
     def _absolute(self, joint: _Joint) -> tuple:
-        w, v, alpha, accel = (self._in_n(x) for x in _motion_of(joint.body, self.n))
-        return w, v, self._at_rest(alpha), self._at_rest(accel), (sm.S.Zero,) * 3
+        w, v, alpha, accel = (self._in_n(x) if x is not None else _ZERO
+                              for x in _motion_of(joint.body, self.n))
+        return w, v, self._at_rest(alpha), self._at_rest(accel), _ZERO
 
     def _relative(self, joint: _Joint) -> tuple:
         """The relative angular velocity and the offset from the parent's mass centre,
@@ -201,8 +214,8 @@ class _Tree:
         derivatives are these less the parent's turning."""
         b, p = joint.body, self.joints[joint.parent]
         dt = self.defs.dt
-        w_n = self._in_n(b.ang_vel_in(p.body))
-        offset = self._in_n(b.masscenter.pos_from(p.body.masscenter))
+        w_n = self._in_n(b.ang_vel_in(p.body)) if joint.turns else _ZERO
+        offset = self._in_n(joint.centre.pos_from(p.centre))
         rate = tuple(dt(x) for x in offset)
         v_rel = _add(rate, _cross(offset, p.omega))
         c_ang = self._at_rest(tuple(dt(x) for x in w_n))
@@ -212,9 +225,9 @@ class _Tree:
 
     def _differences(self, joint: _Joint) -> tuple:
         b, p = joint.body, self.joints[joint.parent]
-        offset = self._in_n(b.masscenter.pos_from(p.body.masscenter))
-        w, v, alpha, accel = (self._in_n(x - y) for x, y in zip(_motion_of(b, self.n),
-                                                                _motion_of(p.body, self.n)))
+        offset = self._in_n(joint.centre.pos_from(p.centre))
+        w, v, alpha, accel = (self._in_n(x - y) if x is not None else _ZERO
+                              for x, y in zip(_motion_of(b, self.n), _motion_of(p.body, self.n)))
         v_rel = _add(v, _cross(offset, p.omega))
         c_lin = _add(self._at_rest(accel), _cross(offset, p.bias_absolute))
         return w, v_rel, self._at_rest(alpha), c_lin, offset
@@ -232,9 +245,15 @@ class _Tree:
                          for r in joint.speeds]
         b = joint.body
         i_n = sm.zeros(3, 3)
-        for (fa, fb), m in b.central_inertia.terms.items():
-            i_n += self._rotation(fa) * m * self._rotation(fb).T
-        joint.inertia = (i_n.applyfunc(z), b.mass_checked())
+        if joint.turns:
+            for (fa, fb), m in b.central_inertia.terms.items():
+                i_n += self._rotation(fa) * m * self._rotation(fb).T
+            mass = b.mass_checked()
+        elif b.mass is None:
+            raise NotATree(f"the mass of particle {b.name} is not given")
+        else:
+            mass = b.mass
+        joint.inertia = (i_n.applyfunc(z), mass)
 
     def _disagreement(self, joint: _Joint) -> str | None:
         """None when the recursion's angular and linear velocities and accelerations of
@@ -243,24 +262,29 @@ class _Tree:
         to it, and its accelerations are those its velocities give; else what differs."""
         found = []
         for k, point in enumerate(self._points()):
+            # the joint's motion at rest (no speed, same state): what no speed gives
+            still = NumericPoint(self.defs, {x: 0 for x in self.speeds + self.rates},
+                                 seed=point.seed, varying="wide")
+            speeds = np.array([float(point.values[self.speeds[r]]) for r in joint.speeds])
             rates = np.array([float(point.values[self.rates[r]]) for r in joint.speeds])
             cols = np.array([self._numbers(c, point) for c in joint.columns]).reshape(-1, 6)
+            own_vel = cols.T @ speeds if len(speeds) else np.zeros(6)
             own_acc = cols.T @ rates if len(rates) else np.zeros(6)
             bias = self._numbers(joint.bias, point)
-            rel = self._numbers(joint.relative, point)
+            rel = own_vel + self._numbers(joint.relative, still)
             d = self._numbers(joint.offset, point)
             if joint.parent < 0:
                 w_p = v_p = alpha_p = a_p = np.zeros(3)
             else:
                 w_p, v_p, alpha_p, a_p = self._motions[k][joint.parent]
-            ours = (self._numbers(joint.omega, point),
+            ours = (w_p + rel[:3],
                     v_p + np.cross(w_p, d) + rel[3:],
                     alpha_p + bias[:3] + own_acc[:3],
                     a_p + np.cross(alpha_p, d) + bias[3:] + own_acc[3:])
             for mine, model, what in zip(ours, _motion_of(joint.body, self.n),
                                          ("angular velocity", "velocity",
                                           "angular acceleration", "acceleration")):
-                if not _near(mine, self._numbers(model, point)):
+                if model is not None and not _near(mine, self._numbers(model, point)):
                     return what
             found.append(ours)
         index = next(i for i, j in enumerate(self.joints) if j is joint)
@@ -271,8 +295,8 @@ class _Tree:
     # -- loads ---------------------------------------------------------------------------
     def _loads(self) -> None:
         n = self.n
-        by_centre = {j.body.masscenter: j for j in self.joints}
-        by_frame = {j.body: j for j in self.joints}
+        by_centre = {j.centre: j for j in self.joints}
+        by_frame = {j.body: j for j in self.joints if j.turns}
         for point, force in self.system.forces.items():
             if not force.terms:
                 continue
@@ -307,7 +331,7 @@ class _Tree:
         (None, None): its velocity must be the body's carried to it, at random states."""
         supp = self._support([point.vel(self.n)])
         for joint in sorted(self.joints, key=lambda j: len(self._joint_support(j))):
-            if not supp <= self._joint_support(joint):
+            if not joint.turns or not supp <= self._joint_support(joint):
                 continue
             try:
                 arm = point.pos_from(joint.body.masscenter)
@@ -323,7 +347,7 @@ class _Tree:
         w = frame.ang_vel_in(self.n)
         supp = self._support([w])
         for joint in self.joints:
-            if supp <= self._joint_support(joint) and all(
+            if joint.turns and supp <= self._joint_support(joint) and all(
                     _near(self._numbers(w, p), self._numbers(joint.body.ang_vel_in(self.n), p))
                     for p in self._points()):
                 return joint
@@ -459,9 +483,11 @@ def _matvec(m, v) -> list:
     return [_dot(row, v) for row in m]
 
 
-def _motion_of(body: Body, n: Frame) -> tuple:
+def _motion_of(body: Body | Particle, n: Frame) -> tuple:
     """The model's angular velocity, mass-centre velocity, angular acceleration and
-    mass-centre acceleration of a body in N."""
+    mass-centre acceleration of a body in N (a particle's: None, v, None, a)."""
+    if not isinstance(body, Body):
+        return None, body.vel(n), None, body.acc(n)
     return (body.ang_vel_in(n), body.masscenter.vel(n), body.ang_acc_in(n),
             body.masscenter.acc(n))
 
