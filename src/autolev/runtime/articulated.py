@@ -110,6 +110,7 @@ class _Tree:
         self.at_rest = {d: 0 for d in self.rates}
         self._rotations: dict = {self.n: sm.eye(3)}
         self._random_points: list | None = None
+        self._still: list | None = None
         self._motions = [{} for _ in CHECK_SEEDS]   # per random state: each joint's numbers
         self.pivots: list = []           # (pivot, its entry of D) of each joint's factor
         self.joints = self._joints()
@@ -261,10 +262,7 @@ class _Tree:
         children): the partial velocities for the ancestors' speeds are theirs carried
         to it, and its accelerations are those its velocities give; else what differs."""
         found = []
-        for k, point in enumerate(self._points()):
-            # the joint's motion at rest (no speed, same state): what no speed gives
-            still = NumericPoint(self.defs, {x: 0 for x in self.speeds + self.rates},
-                                 seed=point.seed, varying="wide")
+        for k, (point, still) in enumerate(zip(self._points(), self._still_points())):
             speeds = np.array([float(point.values[self.speeds[r]]) for r in joint.speeds])
             rates = np.array([float(point.values[self.rates[r]]) for r in joint.speeds])
             cols = np.array([self._numbers(c, point) for c in joint.columns]).reshape(-1, 6)
@@ -370,6 +368,13 @@ class _Tree:
         if self._random_points is None:
             self._random_points = [self._random_point(seed) for seed in CHECK_SEEDS]
         return self._random_points
+
+    def _still_points(self) -> list:
+        """The random states with every speed and u' 0: what no speed gives."""
+        if self._still is None:
+            self._still = [NumericPoint(self.defs, {x: 0 for x in self.speeds + self.rates},
+                                        seed=seed, varying="wide") for seed in CHECK_SEEDS]
+        return self._still
 
     def _random_point(self, seed: int) -> NumericPoint:
         """Random coordinates, speeds and their derivatives, and constants."""
