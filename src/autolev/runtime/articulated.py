@@ -114,8 +114,8 @@ class _Tree:
         self._motions = [{} for _ in CHECK_SEEDS]   # per random state: each joint's numbers
         self.pivots: list = []           # (pivot, its entry of D) of each joint's factor
         self.joints = self._joints()
-        for joint in self.joints:
-            self._kinematics(joint)
+        for index, joint in enumerate(self.joints):
+            self._kinematics(index, joint)
         self.generalized = [sm.S.Zero] * len(speeds)     # loads not on a body's frame
         self._loads()
         self._check_rotations()
@@ -130,7 +130,7 @@ class _Tree:
         n = self.n
         moving, supports = [], []
         for b in list(self.system.bodies) + list(self.system.particles):
-            supp = self._support([v for v in _motion_of(b, n)[:2] if v is not None])
+            supp = self._support([v for v in _velocities_of(b, n) if v is not None])
             if supp:                          # a body no speed moves has no inertia force
                 moving.append(b)
                 supports.append(supp)
@@ -185,7 +185,7 @@ class _Tree:
         return tuple(self.defs.zify(self.defs.substitute(c, self.at_rest)) for c in comps)
 
     # -- each body's joint ---------------------------------------------------------------
-    def _kinematics(self, joint: _Joint) -> None:
+    def _kinematics(self, index: int, joint: _Joint) -> None:
         """The joint's quantities in N, the first way whose motions of the body are the
         model's at random states: relative to the parent as the joint moves it (the
         derivatives, in the parent's frame, of the offset and of the relative angular
@@ -197,7 +197,7 @@ class _Tree:
         for way in ways:
             w_rel, v_rel, c_ang, c_lin, offset = way(joint)
             self._take(joint, w_rel, v_rel, c_ang, c_lin, offset)
-            wrong = self._disagreement(joint)
+            wrong = self._disagreement(index, joint)
             if wrong is None:
                 return
         raise NotATree(f"the {wrong} of {joint.body.name} is not the one its parent's "
@@ -235,7 +235,7 @@ class _Tree:
 
     def _take(self, joint: _Joint, w_rel, v_rel, c_ang, c_lin, offset) -> None:
         defs, z = self.defs, self.defs.zify
-        w_p, alpha0_p = ((sm.S.Zero,) * 3, (sm.S.Zero,) * 3) if joint.parent < 0 else (
+        w_p, alpha0_p = (_ZERO, _ZERO) if joint.parent < 0 else (
             self.joints[joint.parent].omega, self.joints[joint.parent].bias_absolute)
         joint.offset = tuple(z(x) for x in offset)
         joint.relative = tuple(z(x) for x in tuple(w_rel) + tuple(v_rel))
@@ -256,7 +256,7 @@ class _Tree:
             mass = b.mass
         joint.inertia = (i_n.applyfunc(z), mass)
 
-    def _disagreement(self, joint: _Joint) -> str | None:
+    def _disagreement(self, index: int, joint: _Joint) -> str | None:
         """None when the recursion's angular and linear velocities and accelerations of
         the body, at random speeds and u', are the model's (then kept for its
         children): the partial velocities for the ancestors' speeds are theirs carried
@@ -285,7 +285,6 @@ class _Tree:
                 if model is not None and not _near(mine, self._numbers(model, point)):
                     return what
             found.append(ours)
-        index = next(i for i, j in enumerate(self.joints) if j is joint)
         for k, ours in enumerate(found):
             self._motions[k][index] = ours
         return None
@@ -366,21 +365,21 @@ class _Tree:
     # -- the check against the model's own velocities and accelerations ----------------
     def _points(self) -> list:
         if self._random_points is None:
-            self._random_points = [self._random_point(seed) for seed in CHECK_SEEDS]
+            self._random_points = [self._random_point(seed, True) for seed in CHECK_SEEDS]
         return self._random_points
 
     def _still_points(self) -> list:
         """The random states with every speed and u' 0: what no speed gives."""
         if self._still is None:
-            self._still = [NumericPoint(self.defs, {x: 0 for x in self.speeds + self.rates},
-                                        seed=seed, varying="wide") for seed in CHECK_SEEDS]
+            self._still = [self._random_point(seed, False) for seed in CHECK_SEEDS]
         return self._still
 
-    def _random_point(self, seed: int) -> NumericPoint:
-        """Random coordinates, speeds and their derivatives, and constants."""
+    def _random_point(self, seed: int, moving: bool) -> NumericPoint:
+        """Random coordinates and constants (the same for a seed), and random speeds
+        and derivatives, or 0 for them when not `moving`."""
         rng = np.random.default_rng(seed)
-        values = {u: sm.Float(rng.uniform(-1, 1)) for u in self.speeds}
-        values.update({d: sm.Float(rng.uniform(-1, 1)) for d in self.rates})
+        values = {x: sm.Float(rng.uniform(-1, 1)) if moving else 0
+                  for x in self.speeds + self.rates}
         return NumericPoint(self.defs, values, seed=seed, varying="wide")
 
     def _numbers(self, v, point: NumericPoint) -> np.ndarray:
@@ -425,7 +424,7 @@ class _Tree:
             inertia.append(spatial)
             w = j.omega
             gyro = _cross(w, tuple(sum(i_n[a, c] * w[c] for c in range(3)) for a in range(3)))
-            bias_force.append([g - f for g, f in zip(gyro + (sm.S.Zero,) * 3, j.applied)])
+            bias_force.append([g - f for g, f in zip(gyro + _ZERO, j.applied)])
         kept = [None] * len(joints)
         for k in range(len(joints) - 1, -1, -1):
             j = joints[k]
@@ -488,13 +487,19 @@ def _matvec(m, v) -> list:
     return [_dot(row, v) for row in m]
 
 
-def _motion_of(body: Body | Particle, n: Frame) -> tuple:
-    """The model's angular velocity, mass-centre velocity, angular acceleration and
-    mass-centre acceleration of a body in N (a particle's: None, v, None, a)."""
+def _velocities_of(body: Body | Particle, n: Frame) -> tuple:
+    """The model's angular velocity and mass-centre velocity of a body in N (a
+    particle's: None, v)."""
     if not isinstance(body, Body):
-        return None, body.vel(n), None, body.acc(n)
-    return (body.ang_vel_in(n), body.masscenter.vel(n), body.ang_acc_in(n),
-            body.masscenter.acc(n))
+        return None, body.vel(n)
+    return body.ang_vel_in(n), body.masscenter.vel(n)
+
+
+def _motion_of(body: Body | Particle, n: Frame) -> tuple:
+    """_velocities_of, then the angular acceleration and mass-centre acceleration."""
+    if not isinstance(body, Body):
+        return _velocities_of(body, n) + (None, body.acc(n))
+    return _velocities_of(body, n) + (body.ang_acc_in(n), body.masscenter.acc(n))
 
 
 def _nearest(frame: Frame, placed: dict) -> Frame | None:

@@ -13,6 +13,15 @@ from .cloop import CompiledLoop
 from .massmatrix import SingularMassMatrix, solve_mass_matrix, symmetric
 
 
+def pivot_ratios(rhs_out: np.ndarray, pivot_count: int) -> np.ndarray:
+    """A recursion's pivots over the entries they come from, the last outputs of its
+    right-hand side (pivots, then entries; NaN for 0 over 0)."""
+    end = len(rhs_out)
+    pivots = rhs_out[end - 2 * pivot_count:end - pivot_count]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return pivots / rhs_out[end - pivot_count:]
+
+
 class CompiledEvaluation:
     """Evaluation of compiled functions, over what a subclass holds: nstate; _n and
     unknown_positions (the accelerations M a = f solves, and where they go in the
@@ -173,10 +182,7 @@ class CompiledEvaluation:
         if not self.pivot_count:
             return None
         out = self.loop.out_buffer if self.loop is not None else self._rhs_out
-        k = self.pivot_count
-        pivots, entries = out[self.n_rhs - 2 * k:self.n_rhs - k], out[self.n_rhs - k:]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return pivots / entries
+        return pivot_ratios(out[:self.n_rhs], self.pivot_count)
 
     def last_conditioning(self) -> np.ndarray | None:
         """What the conditioning of the last evaluation is judged by: the recursion's

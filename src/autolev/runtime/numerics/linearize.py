@@ -40,6 +40,7 @@ from ..steps import SlowStep
 from .prepare import prepare_command, to_be_kept
 from .compiled import compile_program
 from .dual import DualJacobian, NotDifferentiable
+from .evaluation import pivot_ratios
 from .system import NumericSystem
 
 
@@ -387,12 +388,9 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
     jac.seconds += time.perf_counter() - start
     jac.evaluations += 1
     values, grads = out[:jac.n_rhs], out[jac.n_rhs:].reshape(jac.n_rhs, nv)
-    k = system.pivot_count
-    if k:       # a recursion's: a pivot that is not positive makes M singular
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratios = values[jac.n_rhs - 2 * k:jac.n_rhs - k] / values[jac.n_rhs - k:]
-        if not np.all(ratios > 0):
-            raise AutolevModelError("the mass matrix is singular at the operating point")
+    # a recursion's pivot that is not positive makes M singular
+    if system.pivot_count and not np.all(pivot_ratios(values, system.pivot_count) > 0):
+        raise AutolevModelError("the mass matrix is singular at the operating point")
     rates = values[:nx].copy()
     jrates = grads[:nx].copy()
     accelerations = np.zeros(n)
