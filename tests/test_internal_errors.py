@@ -104,7 +104,9 @@ def test_a_bug_outside_any_statement_is_still_an_internal_error(tiny, monkeypatc
 
     def load_for_run(path, *options):
         raise RuntimeError("boom")
+    # a model is built for its CODE commands, and only translated for its responses
     monkeypatch.setattr(autolev.cli.run, "load_model", load_for_run)
+    monkeypatch.setattr(autolev.cli.run, "transcript_text", load_for_run)
     monkeypatch.delenv("AUTOLEV_TRACEBACK", raising=False)
     assert main(["run", str(tiny), "--out", str(tiny.parent)]) == EXIT_INTERNAL
     err = capsys.readouterr().err
@@ -119,6 +121,7 @@ def test_the_cli_says_out_of_memory_without_a_traceback(tiny, monkeypatch, capsy
     def load_for_run(path, *options):
         raise MemoryError
     monkeypatch.setattr(autolev.cli.run, "load_model", load_for_run)
+    monkeypatch.setattr(autolev.cli.run, "transcript_text", load_for_run)
     assert main(["run", str(tiny), "--out", str(tiny.parent)]) == 1
     err = capsys.readouterr().err
     assert "out of memory" in err and "Traceback" not in err and "internal error" not in err

@@ -516,3 +516,57 @@ def test_a_failed_linearization_is_not_kept(cache, tmp_path):
     for _ in range(2):
         r = run_cli(["linearize", str(model)], env)
         assert r.returncode == 1 and "singular" in r.stderr and "as before" not in r.stderr
+
+
+def _without_imported(text: str) -> str:
+    return text.rsplit("imported: ", 1)[0]
+
+
+def test_a_model_without_code_shows_its_responses_again_without_the_model(cache, tmp_path):
+    (tmp_path / "values.al").write_text("INPUT L=2, M=3, G=9.81, Q=30 DEG, U=0\n")
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED.replace("INPUT L=2, M=3, G=9.81, Q=30 DEG, U=0,", "RUN values.al\n"
+                                    "INPUT").replace("CODE DYNAMICS() pushed.c\n", "L2 = L^2\n"))
+    env = dict(os.environ)
+    first = run_cli(["run", str(model), "--out", str(tmp_path / "a")], env)
+    assert first.returncode == 0, first.stderr
+    assert "no CODE command: the responses Autolev displayed follow" in first.stderr
+    assert "-> (" in first.stdout and "L2 = L^2" in first.stdout
+    # the model is translated, not built, for its responses
+    assert "reading and forming" not in first.stderr and "'sympy'" in first.stdout
+    again = run_cli(["run", str(model), "--out", str(tmp_path / "b")], env)
+    assert (again.returncode, again.stderr) == (0, first.stderr)
+    assert _without_imported(again.stdout) == _without_imported(first.stdout)
+    assert "imported: []" in again.stdout
+    assert not (tmp_path / "a").exists() and not (tmp_path / "b").exists()
+    # `autolev transcript` keeps its text too
+    shown = run_cli(["transcript", str(model)], env)
+    assert _without_imported(shown.stdout) == _without_imported(first.stdout)
+    assert "imported: []" in run_cli(["transcript", str(model)], env).stdout
+    # a file the model reads changed: its responses anew
+    (tmp_path / "values.al").write_text("INPUT L=2, M=3, G=9.81, Q=45 DEG, U=0\n")
+    changed = run_cli(["run", str(model), "--out", str(tmp_path / "c")], env)
+    assert changed.returncode == 0 and "'sympy'" in changed.stdout
+    assert _without_imported(changed.stdout) != _without_imported(first.stdout)
+    assert "45" in changed.stdout
+
+
+@pytest.mark.parametrize("fault, said", [
+    ("Q' = U\nX = 1/0", "division by zero"),
+    ("Q' = U + NOTDECLARED", "'NOTDECLARED' is not declared or defined"),
+])
+def test_a_refused_model_is_refused_again_without_being_built(cache, tmp_path, fault, said):
+    (tmp_path / "part.al").write_text(fault + "\n")
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED.replace("Q' = U\n", "RUN part.al\n"))
+    env = dict(os.environ)
+    first = run_cli(["run", str(model), "--out", str(tmp_path / "a")], env)
+    assert first.returncode == 1 and said in first.stderr and "not run" in first.stderr
+    again = run_cli(["run", str(model), "--out", str(tmp_path / "a")], env)
+    assert (again.returncode, again.stderr) == (1, first.stderr)
+    assert "imported: []" in again.stdout
+    # the file it reads mended: the model runs
+    (tmp_path / "part.al").write_text("Q' = U\n")
+    mended = run_cli(["run", str(model), "--out", str(tmp_path / "a")], env)
+    assert mended.returncode == 0, mended.stderr
+    assert (tmp_path / "a" / "pushed.1").is_file()

@@ -20,7 +20,7 @@ from sympy.matrices.exceptions import NonInvertibleMatrixError
 
 from . import modelcache
 from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError,
-                     AutolevTranslationError, Diagnostic, Location)
+                     AutolevSyntaxError, AutolevTranslationError, Diagnostic, Location)
 from .runtime.errors import AutolevModelError
 from .runtime.model import Loaded
 from .translate import Translation, translate
@@ -55,6 +55,27 @@ def _translation(path: Path):
         from .pipeline import translation
         return translation(path)
     return modelcache.translation(path, translated)
+
+
+def translation_of(path) -> Translation:
+    """The translation of the model file at `path` (from the cache while nothing it
+    read changed); raises AutolevSyntaxError or AutolevTranslationError."""
+    return _translation(Path(path))
+
+
+def files_read(path) -> list[str] | None:
+    """Every file reading the model at `path` reads (its RUN files, macros, functions),
+    the model's first; None when it cannot be read or parsed."""
+    p = Path(path)
+    try:
+        return list(_translation(p).files)
+    except AutolevTranslationError:
+        pass
+    from .pipeline import parse
+    try:
+        return list(parse(p).files)
+    except (AutolevSyntaxError, AutolevFileError):
+        return None
 
 
 def load_translation(translation, filename: str, write_later: bool = False,
@@ -333,7 +354,7 @@ def load_for_run(path, before_building=None) -> tuple[object, list]:
         result = _translation(p).through_last_code()
         model = load_translation(result, str(p), write_later=True,
                                  before_building=before_building)
-        return model, _warnings(result)
+        return model, translation_warnings(result)
     except AutolevTranslationError as exc:
         failure = exc
     from .pipeline import parse
@@ -350,12 +371,13 @@ def load_for_run(path, before_building=None) -> tuple[object, list]:
     first = next(d for d in failure.diagnostics if d.severity == "error")
     notes = [f"{p}: warning: statements after the last CODE command fail to translate and "
              f"are left out of the run (first: {first.format(context=False).splitlines()[0]})"]
-    return model, _warnings(result) + notes
+    return model, translation_warnings(result) + notes
 
 
-def _warnings(result: Translation) -> list[str]:
+def translation_warnings(result: Translation) -> list[str]:
+    """The translation's warnings, each a line `file:line:col: warning: ...`."""
     return [d.format(context=False) for d in result.diagnostics if d.severity == "warning"]
 
 
 __all__ = ["load", "load_translation", "load_for_run", "load_python", "run_python",
-           "ModelSource"]
+           "ModelSource", "translation_of", "files_read", "translation_warnings"]

@@ -13,7 +13,10 @@ the plan and writes the same files (and the tables and plots asked for, from its
 rows), importing no sympy (scipy only for what needs it: a linear solve, a scipy method)
 and translating nothing.  Anything else runs from the model.
 
-A linearization (`autolev linearize FILE`, no sweep) keeps its answer the same way.
+A run that writes no file repeats what it printed and its exit status: a model without
+a CODE command (the responses Autolev displayed) or one refused before any command ran
+(its diagnostics).  A linearization (`autolev linearize FILE`, no sweep) keeps its
+answer the same way, and `autolev transcript` its text.
 """
 from __future__ import annotations
 
@@ -93,6 +96,17 @@ class RunPlan:
     commands: list
 
 
+@dataclass
+class KeptOutcome:
+    """A run that wrote no file, for its options: what it printed and its exit status.
+    Nothing outside the model's files decided it (no disk, no compiler, no values)."""
+
+    manifest: tuple             # of the files the translation read (cachekeys.manifest)
+    messages: str               # what it printed on stderr (notes, diagnostics)
+    transcript: str             # what it printed on stdout: the responses, or nothing
+    status: int
+
+
 def can_plan(execution: Execution, result) -> bool:
     """Whether a command's run can be repeated from a plan: it ended well and used no
     user functions; integrated, in the compiled loop (its right-hand side C) with C
@@ -143,9 +157,34 @@ def write_plan(path: Path, options: tuple, files_read: list, load_messages: str,
     _keep(path, options, RunPlan(manifest(path, files_read), load_messages, commands))
 
 
-def read_plan(path: Path, options: tuple) -> RunPlan | None:
-    """The plan of the model at `path` run with `options`, while it holds, else None."""
-    return _kept(path, options, RunPlan)
+def keep_outcome(path: Path, options: tuple, files_read: list, messages: str,
+                 transcript: str, status: int) -> None:
+    """Keep what a run of the model at `path` with `options` that wrote no file
+    printed, and its exit status (`files_read`: every file its translation read)."""
+    _keep(path, options, KeptOutcome(manifest(path, files_read), messages, transcript,
+                                     status))
+
+
+def read_plan(path: Path, options: tuple) -> RunPlan | KeptOutcome | None:
+    """The plan (or the kept outcome) of the model at `path` run with `options`, while
+    it holds, else None."""
+    return _kept(path, options, (RunPlan, KeptOutcome))
+
+
+# a transcript's options: no .in file (the first of a run's options), made by transcript
+_TRANSCRIPT = (None, "transcript")
+
+
+def keep_transcript(path: Path, files_read: list, text: str) -> None:
+    """Keep the transcript of the model at `path` (`files_read`: every file read to
+    make it)."""
+    _keep(path, _TRANSCRIPT, KeptOutcome(manifest(path, files_read), "", text, 0))
+
+
+def kept_transcript(path: Path) -> str | None:
+    """The transcript of the model at `path`, while every file it read is unchanged."""
+    kept = _kept(path, _TRANSCRIPT, KeptOutcome)
+    return None if kept is None else kept.transcript
 
 
 @dataclass
@@ -183,7 +222,7 @@ def _keep(path: Path, options: tuple, kept) -> None:
         return                      # a full or read-only disk: the next run forms its own
 
 
-def _kept(path: Path, options: tuple, kind: type):
+def _kept(path: Path, options: tuple, kind: type | tuple):
     """What `_keep` kept for the model at `path` and `options`, while every file its
     translation read is unchanged; else None."""
     entry = _entry(path, options)

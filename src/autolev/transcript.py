@@ -147,9 +147,12 @@ def _terms(terms, zero: str) -> str:
 
 def _z_used(value) -> list:
     """The Z variables a value's expressions name directly."""
-    found = {s for e in _scalars_of(value) for s in getattr(e, "free_symbols", ())
-             if isinstance(s, Z)}
-    return sorted(found, key=lambda z: int(z.name[1:]) if z.name[1:].isdigit() else 0)
+    return _by_number({s for e in _scalars_of(value) for s in getattr(e, "free_symbols", ())
+                       if isinstance(s, Z)})
+
+
+def _by_number(zs) -> list:
+    return sorted(zs, key=lambda z: int(z.name[1:]) if z.name[1:].isdigit() else 0)
 
 
 def _scalars_of(value) -> list:
@@ -179,6 +182,12 @@ class _Shown:
 
 def transcript(path) -> str:
     """The `.all` transcript of the model at `path` (raises as autolev.load does)."""
+    return transcript_and_files(path)[0]
+
+
+def transcript_and_files(path) -> tuple[str, list[str]]:
+    """The transcript, and every file read to make it (the model's first: what a kept
+    transcript depends on)."""
     p = Path(path)
     program = parse(p)
     lines, line_of = _as_run(decode(p.read_bytes()).splitlines(), program)
@@ -226,7 +235,7 @@ def transcript(path) -> str:
                     out.append(f"-> ({number}) {name} = {text}")
         if after.get(no):
             out.append("")
-    return "\n".join(out) + "\n"
+    return "\n".join(out) + "\n", list(program.files)
 
 
 def _as_run(lines: list[str], program: ir.Program) -> tuple[list[str], dict[int, int]]:
@@ -465,8 +474,10 @@ def _z_chain(model, value, shown: set) -> list:
         if z in shown:
             return
         shown.add(z)
-        for inner in _z_used(model.defs.rhs.get(z, 0)):
-            visit(inner)
+        # the definitions' own cache of their symbols: each Z's expression is walked once
+        inner = model.defs.free(z) if z in model.defs.rhs else ()
+        for used in _by_number(s for s in inner if isinstance(s, Z)):
+            visit(used)
         order.append(z)
     for z in _z_used(value):
         visit(z)

@@ -17,18 +17,15 @@ def cmd_transcript(ns: argparse.Namespace) -> int:
 
 
 def print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False) -> int:
-    from ..runtime.tools import write_output
-    from ..transcript import transcript
     if path.suffix.lower() == ".py":
         raise UsageError(f"{path}: a transcript is made from the .al model")
-    try:
-        text = transcript(path)
-    except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
-        print_diagnostics(exc.diagnostics)
+    text = transcript_text(path)
+    if text is None:
         return 1
     if out_dir is None:
         sys.stdout.write(text)
         return 0
+    from ..runtime.outputs import write_output
     target = out_dir / f"{path.stem}.all"
     try:
         out_dir.mkdir(parents=True, exist_ok=True)
@@ -38,6 +35,24 @@ def print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False) 
         return 1
     print(f"wrote {target}")
     return 0
+
+
+def transcript_text(path: Path) -> str | None:
+    """The transcript of the .al model at `path` (kept, and read back while every file
+    it read is unchanged); None after printing the diagnostics of a model it cannot
+    be made for."""
+    from ..runplan import keep_transcript, kept_transcript
+    text = kept_transcript(path)
+    if text is not None:
+        return text
+    from ..transcript import transcript_and_files
+    try:
+        text, files = transcript_and_files(path)
+    except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
+        print_diagnostics(exc.diagnostics)
+        return None
+    keep_transcript(path, files, text)
+    return text
 
 
 def cmd_verify(ns: argparse.Namespace) -> int:

@@ -9,7 +9,7 @@ from pathlib import Path
 
 from .common import (UsageError, has_matplotlib, load_model, name_values, positive_int,
                      refuse_unknown_names, run_options, specified_values, statement_label)
-from .responses import print_transcript
+from .responses import transcript_text
 
 
 def cmd_run(ns: argparse.Namespace) -> int:
@@ -19,7 +19,12 @@ def cmd_run(ns: argparse.Namespace) -> int:
     options = _plan_options(ns, path)
     if options is not None:
         from ..runplan import read_plan
+        from ..runplan import KeptOutcome
         plan = read_plan(path, options)
+        if isinstance(plan, KeptOutcome):
+            sys.stderr.write(plan.messages)
+            sys.stdout.write(plan.transcript)
+            return plan.status
         if plan is not None:
             return _run_from_plan(plan, path, ns)
     progress = None if ns.quiet else sys.stderr
@@ -51,6 +56,10 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
     import time
 
     overrides = _run_overrides(ns)
+    if path.suffix.lower() == ".al" and not ns.first_dynamics:
+        translation = _translation_or_none(path)
+        if translation is not None and not translation.code_lines:
+            return _responses_instead(path, translation, recorder, options)
     start = time.monotonic()
     # the note of values lacking is about forming the model: a run plan never says it
     model = load_model(path, progress, None if ns.infile or ns.zero_missing
@@ -58,6 +67,8 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
                                             else recorder.through))
     if model is None:
         print(f"{path}: not run", file=sys.stderr)
+        if recorder is not None:
+            _keep_outcome(path, options, None, recorder, "", 1)
         return 1
     if not ns.quiet and (model.code_commands or ns.first_dynamics):
         print(f"{path}: built in {time.monotonic() - start:.1f} s")
@@ -66,11 +77,6 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
         print(f"{path}: no CODE command: nothing to run (`autolev transcript` of the .al "
               "model shows the responses Autolev displayed)", file=sys.stderr)
         return 0
-    if not model.code_commands and not ns.first_dynamics:
-        # what Autolev showed for a model that writes no program: its responses
-        print(f"{path}: no CODE command: the responses Autolev displayed follow "
-              "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
-        return print_transcript(path, None)
     refuse_unknown_names(model, overrides)
     commands = _commands_to_run(model, ns, path)
     if not commands:
@@ -86,6 +92,45 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
         from ..runplan import write_plan
         write_plan(path, options, model.loaded.source.content.files, load_messages, planned)
     return status
+
+
+def _translation_or_none(path: Path):
+    """The model's translation; None when it fails (loading the model says why)."""
+    from ..errors import AutolevSyntaxError, AutolevTranslationError
+    from ..loader import translation_of
+    try:
+        return translation_of(path)
+    except (AutolevSyntaxError, AutolevTranslationError):
+        return None
+
+
+def _responses_instead(path: Path, translation, recorder, options: tuple | None) -> int:
+    """A model that writes no program: what Autolev showed for it, its responses (the
+    model is not built for a run)."""
+    from ..loader import translation_warnings
+    for note in translation_warnings(translation):
+        print(note, file=sys.stderr)
+    text = transcript_text(path)
+    if text is not None:
+        print(f"{path}: no CODE command: the responses Autolev displayed follow "
+              "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
+        sys.stdout.write(text)
+    status = 0 if text is not None else 1
+    if recorder is not None:
+        _keep_outcome(path, options, list(translation.files), recorder, text or "", status)
+    return status
+
+
+def _keep_outcome(path: Path, options: tuple, files: list | None, recorder,
+                  transcript: str, status: int) -> None:
+    """Keep a run that wrote no file (runplan.KeptOutcome): what `recorder` took of its
+    stderr, `transcript` on its stdout; `files`: those its translation read (None:
+    those reading the model reads, or nothing kept when it cannot be parsed)."""
+    from ..loader import files_read
+    from ..runplan import keep_outcome
+    files = files_read(path) if files is None else files
+    if files is not None:
+        keep_outcome(path, options, files, recorder.take(), transcript, status)
 
 
 def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
@@ -133,10 +178,10 @@ def _values_lacking(path: Path, overrides: dict, stream):
     """Before a model is built (its equations formed: a minute on a large model), the
     note naming the constants that nothing gives a value (INPUT, an assignment, --set);
     the run refuses once it knows its equations need them; printed on `stream`."""
-    from ..runtime.numerics.inputs import some_names
     given = {name.upper() for name in overrides}
 
     def note(translation) -> None:
+        from ..runtime.numerics.inputs import some_names
         lacking = [name for name in translation.constants_without_value
                    if name.upper() not in given]
         if lacking:
@@ -149,7 +194,7 @@ def _values_lacking(path: Path, overrides: dict, stream):
 def _run_overrides(ns: argparse.Namespace) -> dict:
     """--set and --tfinal as {NAME: value}, after checking --method and --plot
     (UsageError)."""
-    from ..runtime.tools import METHODS
+    from ..runtime.numerics.options import METHODS
     if ns.method is not None and ns.method not in METHODS:
         raise UsageError(f"unknown --method {ns.method} (one of {', '.join(METHODS)})")
     overrides = name_values(ns.set, "--set", numbers=True)

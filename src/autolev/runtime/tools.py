@@ -2,9 +2,8 @@
 runtime's modules may move without the CLI knowing (the façade of `autolev.cli`)."""
 from .numerics.command import program_file_name
 from .numerics.files import safe_stem
-from .numerics.inputs import parse_number
-from .numerics.integrate import METHODS
-from .numerics.options import RunOptions
+from .numerics.numbers import parse_number
+from .numerics.options import METHODS, RunOptions
 from .numerics.prepare import keep_built
 from .outputs import Written, write_output
 

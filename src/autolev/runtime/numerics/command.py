@@ -16,7 +16,8 @@ from .. import units
 from ..errors import AutolevModelError
 from ..io import CodeKind
 from ..vectors import Vector
-from .inputs import INTEGRATION, display_name, parse_number, some_names
+from .inputs import INTEGRATION, display_name, some_names
+from .numbers import parse_number
 from .results import Column
 
 

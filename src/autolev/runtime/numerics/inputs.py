@@ -15,7 +15,6 @@ model still works for the names it shares (the others are reported).
 from __future__ import annotations
 
 import math
-import re
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,6 +26,7 @@ from ..calculus import is_real_number
 from ..errors import AutolevModelError
 from ..io import INTEGRATION_PARAMETERS as INTEGRATION
 from ..symbols import TIME
+from .numbers import format_value, parse_number
 
 DEFAULTS = {"TINITIAL": 0.0, "TFINAL": 1.0, "INTEGSTP": 0.1, "PRINTINT": 1,
             "ABSERR": 1.0e-8, "RELERR": 1.0e-7}
@@ -354,32 +354,6 @@ def some_names(names, shown: int = 8) -> str:
     names = list(names)
     more = len(names) - shown
     return ", ".join(names[:shown]) + (f", ... and {more} more" if more > 0 else "")
-
-
-# a number as Autolev's programs read it (C's strtod, Fortran's D exponents): ASCII
-# digits only, no digit separators (Python's float takes '1_0' and other scripts' digits)
-_NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eEdD][+-]?\d+)?", re.ASCII)
-
-
-def parse_number(text: str):
-    """The finite number `text` writes, or None."""
-    t = text.strip()
-    if not _NUMBER.fullmatch(t):
-        return None
-    v = float(t.replace("D", "E").replace("d", "e"))
-    return v if math.isfinite(v) else None
-
-
-def format_value(v: float) -> str:
-    """A value as Autolev's .in files and Matlab tables show it (' 0.0', '-9.81')."""
-    if v == int(v) and abs(v) < 1e15:
-        s = f"{v:.1f}"
-    else:
-        s = f"{v:.15G}"
-        if "E" in s:
-            mant, exp = s.split("E")
-            s = f"{mant}E{int(exp):+03d}"
-    return s if s.startswith("-") else " " + s
 
 
 def warn_zero(keys, what: str) -> None:

@@ -29,10 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import cloop
+from .options import METHODS, SCIPY_METHODS
 
-SCIPY_METHODS = {"rk45": "RK45", "dop853": "DOP853", "radau": "Radau", "bdf": "BDF",
-                 "lsoda": "LSODA", "rk23": "RK23"}
-METHODS = ("kutta-merson",) + tuple(SCIPY_METHODS)
 
 
 class IntegrationFailure(Exception):

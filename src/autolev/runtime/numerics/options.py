@@ -4,6 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, fields, replace
 
+# the integrators by the names a user gives (scipy's solve_ivp names for the rest)
+SCIPY_METHODS = {"rk45": "RK45", "dop853": "DOP853", "radau": "Radau", "bdf": "BDF",
+                 "lsoda": "LSODA", "rk23": "RK23"}
+METHODS = ("kutta-merson",) + tuple(SCIPY_METHODS)
+
 
 @dataclass(frozen=True)
 class RunOptions:
