@@ -262,6 +262,9 @@ class Definitions:
         self._explicit: dict[frozenset, dict[sm.Symbol, sm.Expr]] = {}
         self._fs: dict[sm.Symbol, frozenset] = {}   # free symbols of each definition
         self._fo: dict[sm.Symbol, tuple] = {}       # the same, in a fixed order
+        # every symbol some definition, as made, holds (never shrinks): a new definition
+        # of a symbol none holds leaves everything derived as it was
+        self._referenced: set[sm.Symbol] = set()
         self.z_count = 0
         # counts the user definitions made: what was derived from the table is stale
         # when it changes (a Z added names an expression and changes nothing)
@@ -272,20 +275,23 @@ class Definitions:
 
     # -- the table -------------------------------------------------------------
     def define(self, sym: sm.Symbol, expr) -> None:
-        """Record `sym := expr`.  A user definition drops derived caches (a new
-        definition of X' changes what DT(X) is)."""
+        """Record `sym := expr`.  A user definition drops derived caches when what was
+        derived may have used sym (a new definition of X' changes what DT(X) is): sym
+        was defined before, or a definition holds it."""
         expr = sm.sympify(expr)
         # through the definitions as they stand: a redefined sym is among them
         if self.depends_on(expr, sym):
             raise AutolevModelError(f"{sym} cannot be defined in terms of itself: {sym} = "
                                     f"{expr}")
         if not isinstance(sym, Z):
-            self._invalidate()
+            if sym in self.rhs or sym in self._referenced:
+                self._invalidate()
             self.user_version += 1
             self.revision.bump()
         self.rhs[sym] = expr
         self._fs.pop(sym, None)
         self._fo.pop(sym, None)
+        self._referenced |= self.free(sym)
 
     def user_definitions(self) -> dict:
         """The definitions the model made (not the Z's), as they stand now: one dict while
@@ -335,6 +341,7 @@ class Definitions:
         self.rhs.update(user_definitions)
         self._fs = {s: v for s, v in self._fs.items() if isinstance(s, Z)}
         self._fo = {s: v for s, v in self._fo.items() if isinstance(s, Z)}
+        # (each of these definitions was made by `define`: its symbols are referenced)
         self._invalidate()
 
     def _invalidate(self) -> None:
@@ -360,6 +367,7 @@ class Definitions:
             z = new_z(self.z_count)
             self.rhs[z] = expr
             self._z_of[expr] = z
+            self._referenced |= self.free(z)
         return z
 
     # -- dependency order ------------------------------------------------------
@@ -370,7 +378,7 @@ class Definitions:
         """Free symbols of the definition of sym (cached: definitions do not change)."""
         fs = self._fs.get(sym)
         if fs is None:
-            fs = self._fs[sym] = frozenset(self.rhs[sym].free_symbols)
+            fs = self._fs[sym] = frozenset(symbols_in(self.rhs[sym]))
         return fs
 
     def free_ordered(self, sym: sm.Symbol) -> tuple:
@@ -422,10 +430,25 @@ class Definitions:
         fs = expr.free_symbols
         if x in fs:
             return True
-        if x in self.rhs:   # x itself defined: walk the chain
-            return any(x in self.free(s)
-                       for s in self._post_order(self._defined_in(expr), {}))
-        return any(x in self.primitive_deps(s) for s in fs if s in self.rhs)
+        # a walk through the definitions that stops where it finds x; the undefined
+        # symbols a definition depends on, where known, settle it for an undefined x
+        known = {} if x in self.rhs else self._pdeps
+        stack = [s for s in fs if s in self.rhs]
+        seen = set(stack)
+        while stack:
+            s = stack.pop()
+            if s in known:
+                if x in known[s]:
+                    return True
+                continue
+            free = self.free(s)
+            if x in free:
+                return True
+            for f in free:
+                if f in self.rhs and f not in seen:
+                    seen.add(f)
+                    stack.append(f)
+        return False
 
     # -- differentiation ---------------------------------------------------------
     def diff(self, expr, x: sm.Symbol) -> sm.Expr:
