@@ -140,6 +140,23 @@ def test_taylor_perturbation_linearises_a_pendulum():
     assert sm.expand(ns["P"] - (dqdd + g / L * dq)) == 0
 
 
+def test_taylor_in_several_variables_through_definitions_to_second_order():
+    # the gradient of each order in one pass over the definitions (W, V in between)
+    ns = build("AUTOZ ON\nVARIABLES x, y\nCONSTANTS c\nW = SIN(x + c*y)*COS(x*y)\n"
+               "V = EXP(W)*y\nT = TAYLOR(V + x*W, 0:2, x=1, y=2)")
+    x, y, c = (sm.Symbol(n, real=True) for n in "xyc")
+    f = sm.exp(sm.sin(x + c * y) * sm.cos(x * y)) * y + x * sm.sin(x + c * y) * sm.cos(x * y)
+    dx, dy = x - 1, y - 2
+    at = {x: 1, y: 2}
+    # the textbook second-order expansion, term by term with sympy on the explicit form
+    want = (f.subs(at) + f.diff(x).subs(at) * dx + f.diff(y).subs(at) * dy
+            + (f.diff(x, 2).subs(at) * dx**2 + 2 * f.diff(x, y).subs(at) * dx * dy
+               + f.diff(y, 2).subs(at) * dy**2) / 2)
+    got = ns["model"].explicit(ns["T"])
+    for point in ({x: 0.3, y: -0.7, c: 1.3}, {x: 2.1, y: 0.4, c: -0.6}):
+        assert abs(complex(got.evalf(subs=point)) - complex(want.evalf(subs=point))) < 1e-11
+
+
 def test_d_of_a_column_by_a_row_is_the_jacobian_through_definitions():
     ns = build("VARIABLES q{2}\nCONSTANTS c\nW = c*q1\nM = D([SIN(q1)*q2; W*q2], [q1, q2])")
     q1, q2, c = (sm.Symbol(n, real=True) for n in ("q1", "q2", "c"))

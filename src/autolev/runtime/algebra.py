@@ -139,7 +139,9 @@ class AlgebraMixin:
             factorial = 1
             for k in range(hi + 1):
                 if k > 0:
-                    term = sm.Add(*[d * self.defs.diff(term, var) for var, d in steps])
+                    # the gradient in one pass over the definitions, not one per variable
+                    grad = self.defs.jacobian([term], [var for var, _ in steps])[0]
+                    term = sm.Add(*[d * g for (_, d), g in zip(steps, grad)])
                     factorial *= k
                 if k >= lo:
                     total.append(self.defs.substitute(term, at) / factorial)
