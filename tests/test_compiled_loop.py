@@ -365,3 +365,22 @@ def test_rows_whose_specified_quantities_are_functions_go_one_by_one():
     raw = values[:, :first.shape[1]]
     assert len(set(raw[:, r.outputs[0].labels.index("F")])) > 10
     assert np.array_equal(first, np.where(degrees, raw * 180 / np.pi, raw))
+
+
+def test_rows_formatted_in_c_are_the_characters_pythons_percent_writes():
+    from autolev.runtime.numerics import rowtext
+    rng = np.random.default_rng(7)
+    mantissas = rng.uniform(1, 10, 4000) * rng.choice([-1, 1], 4000)
+    exponents = rng.integers(-320, 309, 4000).astype(float)
+    with np.errstate(over="ignore", under="ignore"):
+        spread = mantissas * 10.0 ** exponents
+    edges = [0.0, -0.0, np.inf, -np.inf, np.nan, -np.nan, 5e-324, 2.2250738585072014e-308,
+             1.7976931348623157e308, 12345675.0, 1234567.5, 0.5, 9999999.5, 999999.95,
+             0.99999995, 9.9999995e22, 1e22, 1e23, 1e-16, 123456789012.0, -2.5e-7,
+             1 / 3, 2 / 3, np.pi * 1e5, 100.0, 1e6, 1e7]
+    values = np.concatenate([spread, edges, rng.standard_normal(4000)])
+    values = values[: len(values) // 9 * 9].reshape(-1, 9)
+    assert rowtext._formatter() is not None
+    text = rowtext.rows_text(values)
+    assert text == rowtext.python_rows_text(values.tolist())
+    assert text.splitlines()[0] == "".join(" " + ("%- 14.6E" % v) for v in values[0])

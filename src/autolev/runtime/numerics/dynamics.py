@@ -13,7 +13,7 @@ import numpy as np
 from ..errors import AutolevModelError
 from .integrate import IntegrationFailure, Progress, Schedule, integrate
 from .integration_notes import loose_tolerance_note, stiff_note, switch_when_stiff
-from .results import split_outputs, tables_of
+from .results import split_output_rows, split_outputs, tables_of
 from .massmatrix import SingularMassMatrix, scaled_condition
 
 # the scaled condition number of the mass matrix beyond which a run warns (the
@@ -97,10 +97,23 @@ class _Rows:
         self._add(t, np.array(y), values, self.system.last_conditioning())
 
     def block(self, times: np.ndarray, states: np.ndarray) -> None:
-        """Rows the compiled loop gave, their outputs computed in one call."""
+        """Rows the compiled loop gave, their outputs computed in one call and written
+        together."""
+        if not len(times):
+            return
         values, matrices = self.system.outputs_rows(times, states)
-        for i, t in enumerate(times.tolist()):
-            self._add(t, states[i], values[i], matrices[i] if matrices else None)
+        if not self.keep_rows:
+            self.times.clear()
+            self.states.clear()
+        kept = slice(None) if self.keep_rows else slice(-1, None)
+        self.times.extend(times[kept].tolist())
+        self.states.extend(states[kept])
+        split_output_rows(self.system, np.asarray(values), self.rows, self.writer,
+                          self.encoded, self.keep_rows)
+        self.result.stats["rows"] = self.result.stats.get("rows", 0) + len(times)
+        if matrices:
+            for t, state, mm in zip(times.tolist(), states, matrices):
+                self.conditioning.add(t, state, mm)
 
     def _add(self, t: float, state: np.ndarray, values: np.ndarray, mm) -> None:
         if not self.keep_rows and self.times:

@@ -112,6 +112,11 @@ class OutputFiles:
     def write(self, k: int, values) -> None:
         self._handles[k].write(row(values))
 
+    def write_rows(self, k: int, block) -> None:
+        """Rows of file k at once (a numpy array: print times x columns)."""
+        from .rowtext import rows_text      # numpy and ctypes: only a run writes rows
+        self._handles[k].write(rows_text(block))
+
     def note(self, text: str) -> None:
         """A message line in every file (Autolev wrote integration failures there)."""
         for h in self._handles:

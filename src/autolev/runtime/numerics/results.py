@@ -197,6 +197,29 @@ def split_outputs(system, values, result_rows, writer, encoded_out: dict) -> Non
         encoded_out[name] = chunk.reshape(shape) if shape else float(chunk[0])
 
 
+def split_output_rows(system, values: np.ndarray, result_rows, writer, encoded_out: dict,
+                      keep_rows: bool) -> None:
+    """split_outputs of many print times at once (`values`: a row each): the files'
+    rows written together; `result_rows` keeps them all, or with `keep_rows` False only
+    the last; ENCODE's values are the last row's."""
+    pos = 0
+    for k, cols in enumerate(system.files):
+        block = values[:, pos:pos + len(cols)]
+        degrees = [i for i, deg in enumerate(system.degree_columns[k]) if deg]
+        if degrees:
+            block = block.copy()
+            # the same operations, in the same order, as split_outputs's
+            block[:, degrees] = block[:, degrees] * 180 / math.pi
+        pos += len(cols)
+        if keep_rows:
+            result_rows[k].extend(block.tolist())
+        else:
+            result_rows[k][:] = block[-1:].tolist()
+        if writer is not None:
+            writer.write_rows(k, block)
+    split_outputs(system, values[-1], [[] for _ in system.files], None, encoded_out)
+
+
 def tables_of(system, rows, stem: str) -> list[OutputTable]:
     out = []
     for k, cols in enumerate(system.files):
