@@ -118,7 +118,7 @@ def take_inputs(ask: InputsWanted, system):
                             [display_name(k) for k in missing])
     inputs.fill_missing(constants)
     if missing:
-        warnings.warn("no value for " + ", ".join(display_name(k) for k in missing)
+        warnings.warn("no value for " + some_names([display_name(k) for k in missing], 12)
                       + ": using 0", stacklevel=5)
     if timed:
         take_time(ask.command, inputs, timed)
