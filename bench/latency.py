@@ -8,8 +8,9 @@ time to be told which constants have no value.
 Per model (bench/journeys.py's list and its values: INPUT, the shipped .in, then 1 for
 every constant a run names as having no value, 0 for a product of inertia), each run a
 fresh process (`python -m autolev run FILE -q`) with its own cache folder (AUTOLEV_CACHE):
-    missing   an empty cache, no values by rule: exit time of the run that names the
-              constants without a value (only for a model that needs values by rule)
+    missing   an empty cache, no values by rule: the time until the run names the
+              constants without a value (its note, before the model is formed; the
+              run is then stopped), for a model that needs values by rule
     cold      an empty cache, the model's values: translate, form, build, run, write
     warm      the same cache again, the least of --warm runs
     exit      the run's exit status (0 ran; 1 a diagnostic, e.g. singular at T = 0)
@@ -22,6 +23,8 @@ import argparse
 import json
 import os
 import shutil
+import signal
+import subprocess
 import sys
 import tempfile
 import time
@@ -42,6 +45,33 @@ def timed_run(path: Path, options: list, work: Path, cache: Path, limit: float):
         journeys.autolev_cli("run", path, "--out", run_dir, "-q", *options), work, limit)
 
 
+NAMED = "no value given for"
+
+
+def time_to_note(path: Path, options: list, work: Path, cache: Path, limit: float):
+    """Seconds from the start of a run on an empty `cache` until its stderr names the
+    constants without a value (None: it never did); the run is stopped there."""
+    os.environ["AUTOLEV_CACHE"] = str(cache)
+    env = dict(os.environ, PYTHONPATH=str(journeys.ROOT / "src"))
+    start = time.monotonic()
+    proc = subprocess.Popen([str(a) for a in journeys.autolev_cli(
+        "run", path, "--out", work / "run", "-q", *options)], cwd=work, env=env,
+        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, errors="replace",
+        start_new_session=True)
+    seconds = None
+    try:
+        for line in proc.stderr:
+            if NAMED in line:
+                seconds = time.monotonic() - start
+                break
+            if time.monotonic() - start > limit:
+                break
+    finally:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+    return seconds
+
+
 def measure(ident: str, path: Path, companion: Path | None, warm: int, limit: float,
             scratch: Path) -> dict:
     work = scratch / ident
@@ -54,7 +84,7 @@ def measure(ident: str, path: Path, companion: Path | None, warm: int, limit: fl
     row = {"id": ident, "values": values.source}
     if values.by_rule:
         given = ["--in", str(companion)] if companion else []
-        row["missing"] = timed_run(path, given, work, cache, limit).seconds
+        row["missing"] = time_to_note(path, given, work, cache, limit)
         shutil.rmtree(cache, ignore_errors=True)
     cold = timed_run(path, values.options, work, cache, limit)
     row["cold"] = cold.seconds
@@ -71,12 +101,16 @@ def table(rows: list) -> str:
         cells = []
         for key in ("missing", "cold", "warm"):
             value = r.get(key)
-            mark = "" if value is None or value <= TARGETS[key] else "*"
-            cells.append("-" if value is None else f"{value:.2f}{mark}")
+            if value is None:
+                # asked, and the run never named them before it was stopped
+                cells.append("never*" if key in r else "-")
+                continue
+            mark = "" if value <= TARGETS[key] else "*"
+            cells.append(f"{value:.2f}{mark}")
         lines.append(f"{r['id'][:44]:44} {cells[0]:>8} {cells[1]:>7} {cells[2]:>6} "
                      f"{r['exit']}")
     for key, target in TARGETS.items():
-        over = [r["id"] for r in rows if r.get(key) is not None and r[key] > target]
+        over = [r["id"] for r in rows if key in r and (r[key] is None or r[key] > target)]
         lines.append(f"{key} over {target} s: {len(over)}"
                      + (f" ({', '.join(over)})" if over else ""))
     return "\n".join(lines)
