@@ -3,7 +3,7 @@
 time to be told which constants have no value.
 
     python bench/latency.py [--examples] [--only ID ...] [--warm N] [--limit S]
-                            [--json FILE]
+                            [--against OLD/src] [--json FILE]
 
 Per model (bench/journeys.py's list and its values: INPUT, the shipped .in, then 1 for
 every constant a run names as having no value, 0 for a product of inertia), each run a
@@ -13,9 +13,12 @@ fresh process (`python -m autolev run FILE -q`) with its own cache folder (AUTOL
               run is then stopped), for a model that needs values by rule
     cold      an empty cache, the model's values: translate, form, build, run, write
     warm      the same cache again, the least of --warm runs
-    exit      the run's exit status (0 ran; 1 a diagnostic, e.g. singular at T = 0)
-Targets (issue 32): missing <= 2 s, cold <= 5 s, warm <= 0.3 s.  Models one at a time:
-two runs side by side share two cores and measure each other.
+    exit      the cold run's exit status (0 ran; 1 a diagnostic, e.g. singular at T = 0)
+--against OLD/src measures another checkout's autolev too, model by model right
+before this one (side by side: the machine's load falls on both), and prints
+"old > new" per cell.  Targets (issue 32): missing <= 2 s, cold <= 5 s, warm <= 0.3 s
+(a * marks a miss).  Models one at a time: two runs side by side share two cores and
+measure each other.
 """
 from __future__ import annotations
 
@@ -34,30 +37,40 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import journeys  # noqa: E402
 
 TARGETS = {"missing": 2.0, "cold": 5.0, "warm": 0.3}
+NAMED = "no value given for"      # the note of a run naming constants without a value
 
 
-def timed_run(path: Path, options: list, work: Path, cache: Path, limit: float):
-    """One `autolev run` in a fresh process on `cache`: its Outcome."""
-    os.environ["AUTOLEV_CACHE"] = str(cache)
+def _process(src: Path, path: Path, options: list, work: Path, cache: Path):
+    """`autolev run` of `src`'s autolev in its own process group, on `cache`."""
+    env = dict(os.environ, PYTHONPATH=str(src), AUTOLEV_CACHE=str(cache),
+               OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
     run_dir = work / "run"
     shutil.rmtree(run_dir, ignore_errors=True)
-    return journeys.run_process(
-        journeys.autolev_cli("run", path, "--out", run_dir, "-q", *options), work, limit)
-
-
-NAMED = "no value given for"
-
-
-def time_to_note(path: Path, options: list, work: Path, cache: Path, limit: float):
-    """Seconds from the start of a run on an empty `cache` until its stderr names the
-    constants without a value (None: it never did); the run is stopped there."""
-    os.environ["AUTOLEV_CACHE"] = str(cache)
-    env = dict(os.environ, PYTHONPATH=str(journeys.ROOT / "src"))
-    start = time.monotonic()
-    proc = subprocess.Popen([str(a) for a in journeys.autolev_cli(
-        "run", path, "--out", work / "run", "-q", *options)], cwd=work, env=env,
+    return subprocess.Popen([str(a) for a in journeys.autolev_cli(
+        "run", path, "--out", run_dir, "-q", *options)], cwd=work, env=env,
         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, errors="replace",
         start_new_session=True)
+
+
+def timed_run(src: Path, path: Path, options: list, work: Path, cache: Path,
+              limit: float) -> tuple[float, int | None, str]:
+    """(seconds, exit status or None at the limit, stderr) of one run."""
+    start = time.monotonic()
+    proc = _process(src, path, options, work, cache)
+    try:
+        _, err = proc.communicate(timeout=limit)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        _, err = proc.communicate()
+    return time.monotonic() - start, proc.returncode, err
+
+
+def time_to_note(src: Path, path: Path, options: list, work: Path, cache: Path,
+                 limit: float) -> float | None:
+    """Seconds until a run names the constants without a value (None: it never did);
+    the run is stopped there."""
+    start = time.monotonic()
+    proc = _process(src, path, options, work, cache)
     seconds = None
     try:
         for line in proc.stderr:
@@ -72,47 +85,50 @@ def time_to_note(path: Path, options: list, work: Path, cache: Path, limit: floa
     return seconds
 
 
-def measure(ident: str, path: Path, companion: Path | None, warm: int, limit: float,
-            scratch: Path) -> dict:
-    work = scratch / ident
-    work.mkdir(parents=True)
+def measure(src: Path, path: Path, companion: Path | None, values, warm: int, limit: float,
+            work: Path) -> dict:
+    """One tree's numbers for one model (`values`: journeys.Values)."""
     cache = work / "cache"
-    model = journeys.read_model(path)
-    # the values first (their rounds fill a cache of their own, thrown away)
-    os.environ["AUTOLEV_CACHE"] = str(work / "values-cache")
-    _, values = journeys.run_with_values(ident, path, model, companion, work, limit, {})
-    row = {"id": ident, "values": values.source}
+    shutil.rmtree(cache, ignore_errors=True)
+    row: dict = {}
     if values.by_rule:
         given = ["--in", str(companion)] if companion else []
-        row["missing"] = time_to_note(path, given, work, cache, limit)
+        row["missing"] = time_to_note(src, path, given, work, cache, limit)
         shutil.rmtree(cache, ignore_errors=True)
-    cold = timed_run(path, values.options, work, cache, limit)
-    row["cold"] = cold.seconds
-    row["exit"] = cold.returncode
-    row["warm"] = min(timed_run(path, values.options, work, cache, limit).seconds
+    row["cold"], row["exit"], err = timed_run(src, path, values.options, work, cache, limit)
+    row["warm"] = min(timed_run(src, path, values.options, work, cache, limit)[0]
                       for _ in range(warm))
-    row["reason"] = "" if cold.returncode == 0 else journeys._last_line(cold.stderr)
+    row["reason"] = "" if row["exit"] == 0 else journeys._last_line(err)
     return row
 
 
+def _cell(row: dict, key: str) -> str:
+    if key not in row:
+        return "-"
+    value = row[key]
+    if value is None:
+        return "never*"           # asked, and the run never named them
+    return f"{value:.2f}{'' if value <= TARGETS[key] else '*'}"
+
+
 def table(rows: list) -> str:
-    lines = [f"{'model':44} {'missing':>8} {'cold':>7} {'warm':>6} exit"]
+    """A line per model; with an old tree, `old > new` per cell."""
+    lines = [f"{'model':44} {'missing':>13} {'cold':>13} {'warm':>13} exit"]
     for r in rows:
         cells = []
         for key in ("missing", "cold", "warm"):
-            value = r.get(key)
-            if value is None:
-                # asked, and the run never named them before it was stopped
-                cells.append("never*" if key in r else "-")
-                continue
-            mark = "" if value <= TARGETS[key] else "*"
-            cells.append(f"{value:.2f}{mark}")
-        lines.append(f"{r['id'][:44]:44} {cells[0]:>8} {cells[1]:>7} {cells[2]:>6} "
-                     f"{r['exit']}")
+            new = _cell(r["new"], key)
+            cells.append(new if "old" not in r else f"{_cell(r['old'], key)} > {new}")
+        lines.append(f"{r['id'][:44]:44} {cells[0]:>13} {cells[1]:>13} {cells[2]:>13} "
+                     f"{r['new']['exit']}")
     for key, target in TARGETS.items():
-        over = [r["id"] for r in rows if key in r and (r[key] is None or r[key] > target)]
-        lines.append(f"{key} over {target} s: {len(over)}"
-                     + (f" ({', '.join(over)})" if over else ""))
+        for tree in ("old", "new"):
+            if rows and tree not in rows[0]:
+                continue
+            over = [r["id"] for r in rows if key in r[tree]
+                    and (r[tree][key] is None or r[tree][key] > target)]
+            lines.append(f"{tree}: {key} over {target} s: {len(over)}"
+                         + (f" ({', '.join(over)})" if over else ""))
     return "\n".join(lines)
 
 
@@ -124,17 +140,31 @@ def main(argv=None) -> int:
                     help="models whose id contains ID (repeatable)")
     ap.add_argument("--warm", type=int, default=2, help="warm runs per model (default 2)")
     ap.add_argument("--limit", type=float, default=300, help="seconds per run")
+    ap.add_argument("--against", type=Path, metavar="OLD/src",
+                    help="another checkout's src folder, measured side by side")
     ap.add_argument("--json", type=Path, metavar="FILE", help="write the rows there")
     ns = ap.parse_args(argv)
     ns.corpus, ns.listing = journeys.CORPUS, journeys.LISTING
-    models = journeys.chosen_models(ns)
+    trees = ([("old", ns.against.resolve())] if ns.against else []) + \
+        [("new", journeys.ROOT / "src")]
     rows = []
     with tempfile.TemporaryDirectory(prefix="autolev-latency-") as scratch:
-        for ident, path, companion in models:
+        for ident, path, companion in journeys.chosen_models(ns):
             start = time.monotonic()
-            rows.append(measure(ident, path, companion, ns.warm, ns.limit, Path(scratch)))
-            print(f"{ident}: cold {rows[-1]['cold']:.2f} s, warm {rows[-1]['warm']:.2f} s "
-                  f"({time.monotonic() - start:.0f} s)", file=sys.stderr, flush=True)
+            work = Path(scratch) / ident
+            work.mkdir(parents=True)
+            # the values first (their rounds fill a cache of their own, thrown away)
+            os.environ["AUTOLEV_CACHE"] = str(work / "values-cache")
+            _, values = journeys.run_with_values(ident, path, journeys.read_model(path),
+                                                 companion, work, ns.limit, {})
+            row = {"id": ident, "values": values.source}
+            for tree, src in trees:
+                row[tree] = measure(src, path, companion, values, ns.warm, ns.limit, work)
+            rows.append(row)
+            print(f"{ident}: " + "; ".join(
+                f"{tree} cold {row[tree]['cold']:.2f} s, warm {row[tree]['warm']:.2f} s"
+                for tree, _ in trees) + f" ({time.monotonic() - start:.0f} s)",
+                file=sys.stderr, flush=True)
     print(table(rows))
     if ns.json:
         ns.json.write_text(json.dumps(rows, indent=1))
