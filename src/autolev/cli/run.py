@@ -18,8 +18,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
     path = Path(ns.file)
     options = _plan_options(ns, path)
     if options is not None:
-        from ..runplan import read_plan
-        from ..runplan import KeptOutcome
+        from ..runplan import KeptOutcome, read_plan
         plan = read_plan(path, options)
         if isinstance(plan, KeptOutcome):
             sys.stderr.write(plan.messages)

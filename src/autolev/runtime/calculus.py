@@ -372,7 +372,7 @@ class Definitions:
 
     # -- dependency order ------------------------------------------------------
     def _defined_in(self, expr) -> list[sm.Symbol]:
-        return ordered(s for s in expr.free_symbols if s in self.rhs)
+        return ordered(s for s in symbols_in(expr) if s in self.rhs)
 
     def free(self, sym: sm.Symbol) -> frozenset:
         """Free symbols of the definition of sym (cached: definitions do not change)."""
@@ -427,7 +427,7 @@ class Definitions:
     def depends_on(self, expr, x: sm.Symbol) -> bool:
         """Whether expr depends on x, directly or through definitions."""
         expr = sm.sympify(expr)
-        fs = expr.free_symbols
+        fs = symbols_in(expr)
         if x in fs:
             return True
         # a walk through the definitions that stops where it finds x; the undefined

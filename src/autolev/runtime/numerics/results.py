@@ -190,6 +190,12 @@ def split_outputs(system, values, result_rows, writer, encoded_out: dict) -> Non
         result_rows[k].append(row)
         if writer is not None:
             writer.write(k, row)
+    read_encoded(system, values, pos, encoded_out)
+
+
+def read_encoded(system, values, pos: int, encoded_out: dict) -> None:
+    """The ENCODE quantities from one row of outputs, from position `pos` on (after the
+    files' columns)."""
     for name, shape in system.encode_shapes:
         size = int(np.prod(shape)) if shape else 1
         chunk = values[pos:pos + size]
@@ -217,7 +223,7 @@ def split_output_rows(system, values: np.ndarray, result_rows, writer, encoded_o
             result_rows[k][:] = block[-1:].tolist()
         if writer is not None:
             writer.write_rows(k, block)
-    split_outputs(system, values[-1], [[] for _ in system.files], None, encoded_out)
+    read_encoded(system, values[-1], pos, encoded_out)
 
 
 def tables_of(system, rows, stem: str) -> list[OutputTable]:

@@ -24,6 +24,7 @@ import sympy as sm
 from .. import articulated
 from .. import symbols as S
 from .. import units
+from ..calculus import symbols_in
 from ..errors import AutolevModelError
 from . import clibrary, codegen
 from .cloop import extra_source as loop_extra_source
@@ -168,7 +169,7 @@ class NumericSystem(CompiledEvaluation):
         cset = set(const_defs)
         used = set()
         for e in exprs:
-            used |= e.free_symbols
+            used |= symbols_in(e)
         for s in order:
             if s not in cset:
                 used |= defs.free(s)
@@ -395,7 +396,7 @@ class NumericSystem(CompiledEvaluation):
         defs = self.model.defs
         roots = set()
         for e in exprs:
-            roots |= e.free_symbols
+            roots |= symbols_in(e)
         order = defs.evaluation_order(roots, given)
         syms = set(roots)
         for s in order:
