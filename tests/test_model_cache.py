@@ -570,3 +570,23 @@ def test_a_refused_model_is_refused_again_without_being_built(cache, tmp_path, f
     mended = run_cli(["run", str(model), "--out", str(tmp_path / "a")], env)
     assert mended.returncode == 0, mended.stderr
     assert (tmp_path / "a" / "pushed.1").is_file()
+
+
+def test_a_run_that_fails_fails_again_from_its_plan_with_the_same_advice(cache, tmp_path):
+    model = tmp_path / "pushed.al"
+    model.write_text(PUSHED.replace("INPUT L=2, M=3,", "INPUT L=2, M=0,"))
+    env = dict(os.environ)
+    first = run_cli(["run", str(model), "--out", str(tmp_path / "first")], env)
+    assert first.returncode == 1 and "singular at T = 0" in first.stderr
+    # the advice read the model: the mass of P
+    assert "mass" in first.stderr.split("singular at T = 0", 1)[1]
+    again = run_cli(["run", str(model), "--out", str(tmp_path / "again")], env)
+    assert again.returncode == 1 and "built in 0.0 s (its run plan)" in again.stdout
+    assert "imported: []" in again.stdout
+    failure = [line for line in first.stderr.splitlines() if "singular" in line]
+    assert [line for line in again.stderr.splitlines() if "singular" in line] == failure
+    names = sorted(p.name for p in (tmp_path / "first").iterdir())
+    assert names == sorted(p.name for p in (tmp_path / "again").iterdir())
+    for name in names:
+        assert (tmp_path / "first" / name).read_bytes() == \
+            (tmp_path / "again" / name).read_bytes(), name

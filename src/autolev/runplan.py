@@ -1,12 +1,12 @@
 """Run plans: a warm `autolev run FILE` without the model.
 
-A run without an animation whose every CODE command ended well (integrated in the
-compiled loop, or evaluated and solved: ALGEBRAIC, NONLINEAR) leaves a plan in the
-cache, for the options it was given (values, an .in file by its content, the
-method...): per command, its compiled system as numbers and sources (C, whose libraries
-are found again in the build cache, or Python), its inputs as numbers, the texts of its
-files besides the rows,
-and what the run printed on stderr (notes, warnings).  The next run of the same file
+A run without an animation whose every CODE command was computed (integrated in the
+compiled loop, to its end or to the failure of its integration, or evaluated and
+solved: ALGEBRAIC, NONLINEAR) leaves a plan in the cache, for the options it was given
+(values, an .in file by its content, the method...): per command, its compiled system
+as numbers and sources (C, whose libraries are found again in the build cache, or
+Python), its inputs as numbers, the texts of its files besides the rows, the message
+of its failure, and what the run printed on stderr (notes, warnings).  The next run of the same file
 with the same options, while the file, every file its translation read and autolev
 itself are unchanged (the translation cache's manifest), repeats the run from
 the plan and writes the same files (and the tables and plots asked for, from its
@@ -108,18 +108,21 @@ class KeptOutcome:
 
 
 def can_plan(execution: Execution, result) -> bool:
-    """Whether a command's run can be repeated from a plan: it ended well and used no
-    user functions; integrated, in the compiled loop (its right-hand side C) with C
-    outputs (`autolev run` projects onto no constraints)."""
+    """Whether a command's run can be repeated from a plan: it used no user functions;
+    integrated, in the compiled loop (its right-hand side C) with C outputs (`autolev
+    run` projects onto no constraints).  An integration that failed fails again at the
+    same step (the loop's numbers are the Python's to the last bit): its message is
+    kept."""
     system = execution.system
-    if result.failure is not None or system.specified_functions:
+    if system.specified_functions:
         return False
     return not execution.kind.integrates or (
         system.loop is not None and system.output_function.backend == "c"
         and not system.extra_functions)
 
 
-def planned_command(execution: Execution, label: str, messages: str) -> PlannedCommand:
+def planned_command(execution: Execution, result, label: str,
+                    messages: str) -> PlannedCommand:
     """The command's execution with its system and inputs reduced to numbers."""
     inputs = execution.inputs
     integrates = execution.kind.integrates     # ALGEBRAIC's numbers: execution.algebraic
@@ -127,9 +130,11 @@ def planned_command(execution: Execution, label: str, messages: str) -> PlannedC
         else {}
     initial = inputs.vector(execution.system.states) if integrates else []
     sweeps = execution.algebraic is not None and execution.algebraic.swept is not None
+    failure = None if result.failure is None else (result.failure_time, result.failure)
     reduced = replace(execution, system=PlannedSystem(execution.system,
                                                       execution.state_names, sweeps),
-                      inputs=PlannedInputs(integration, initial), build_seconds=0.0)
+                      inputs=PlannedInputs(integration, initial), build_seconds=0.0,
+                      known_failure=failure)
     return PlannedCommand(reduced, label, messages)
 
 

@@ -87,7 +87,8 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
     planned: list = []
     status = _run_and_report(model, commands, overrides, specified_values(model, ns), ns,
                              path, progress, recorder, planned)
-    if recorder is not None and status == 0 and len(planned) == len(commands):
+    # a command that failed (an integration's failure) is planned, and fails again
+    if recorder is not None and len(planned) == len(commands):
         from ..runplan import write_plan
         write_plan(path, options, model.loaded.source.content.files, load_messages, planned)
     return status
@@ -165,6 +166,8 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
             print(f"{planned.label}: error: {command_error(e.kind, exc)}", file=sys.stderr)
             status = 1
             continue
+        if result.failure:
+            status = 1                  # (its message is among the plan's messages)
         if not ns.quiet:
             print(run_summary(e.kind, e.filename, result, time.monotonic() - began))
             for f in result.files:
@@ -308,8 +311,8 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
             from ..runplan import can_plan, planned_command
             messages = recorder.take()
             if can_plan(done.result.execution, done.result):
-                planned.append(planned_command(done.result.execution, label(done.command),
-                                               messages))
+                planned.append(planned_command(done.result.execution, done.result,
+                                               label(done.command), messages))
     return status
 
 

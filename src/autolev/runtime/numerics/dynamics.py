@@ -152,10 +152,13 @@ def print_schedule(inputs, program: str) -> Schedule:
 
 def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                   compiled: bool = True, constraints=None, extra_values=(),
-                  program: str = "", keep_rows: bool = True) -> None:
+                  program: str = "", keep_rows: bool = True,
+                  known_failure: tuple | None = None) -> None:
     """`program`: the language of Autolev's program for the CODE file ("c", "m", ...),
     whose way of integrating is followed.  `keep_rows`: the Result holds every row
-    (else only the last: a run's memory is then independent of its length)."""
+    (else only the last: a run's memory is then independent of its length).
+    `known_failure`: (T, message) of the failure this run ended with before (a run
+    plan's), said again when it fails there."""
     if not system.nstate:
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
@@ -207,10 +210,13 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
             result.stats.update({"python_until": took_over[0]} if took_over
                                 else {"python_only": True})
     except IntegrationFailure as exc:
-        from .advice import failure_message      # reads the model: only when it failed
         on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
-        result.failure = failure_message(exc, system, inputs, result, zero_params,
-                                          (f, sched, abserr, relerr))
+        if known_failure is not None and known_failure[0] == exc.t:
+            result.failure = known_failure[1]
+        else:
+            from .advice import failure_message      # reads the model: only when it failed
+            result.failure = failure_message(exc, system, inputs, result, zero_params,
+                                              (f, sched, abserr, relerr))
         result.failure_time = exc.t
         if writer is not None:
             writer.note("Error: " + result.failure)

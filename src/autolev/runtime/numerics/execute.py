@@ -43,6 +43,9 @@ class Execution:
     extra_values: list          # the constraints' extra constants
     algebraic: AlgebraicInputs | None   # what ALGEBRAIC/NONLINEAR evaluate with
     build_seconds: float
+    # (T, message) of the integration failure a run plan's run ended with: its advice
+    # read the model, which the plan's replay does not have
+    known_failure: tuple | None = None
 
 
 def execute(execution: Execution, out_dir=None,
@@ -59,7 +62,8 @@ def execute(execution: Execution, out_dir=None,
         if kind.integrates:
             run_dynamics(system, inputs, result, writer, e.method, options.progress,
                          e.zero_params, options.compiled, options.constraints,
-                         e.extra_values, program=e.language, keep_rows=options.keep_rows)
+                         e.extra_values, program=e.language, keep_rows=options.keep_rows,
+                         known_failure=e.known_failure)
         else:
             run_algebraic(system, e.algebraic, result, writer, kind, options.keep_rows)
 
