@@ -310,6 +310,46 @@ def test_kutta_merson_goes_on_in_c_from_where_python_stepped(python_steps):
         assert both[count] == only_c[count] == only_python[count]
 
 
+@pytest.mark.parametrize("python_steps", [0, 7, 150, 200])
+def test_rk45_afresh_each_step_goes_on_in_c_from_where_scipy_stepped(python_steps):
+    """Autolev's Matlab loop (ode45 started afresh over each INTEGSTP) in a cold run:
+    scipy's steps while the C compiles, then the compiled loop from that T and state
+    (nothing else carries over a step): the rows before are scipy's, to the last bit,
+    and the rest the loop's to rounding level (its sums in another order)."""
+    from autolev.runtime.numerics.integrate import Schedule, integrate
+    m = load("double_pendulum")
+    in_c = run(m, TFINAL=0.1).system
+    loop = in_c.compiled_loop(wait=True)
+    python = run(m, TFINAL=0.1, backend="python").system
+    y0 = np.array([0.5, 1.0, 0.0, 0.0])
+    schedule = Schedule(0.0, 20.0, 0.1, 3, restart_each_step=True)
+
+    def rows(f, **how):
+        got = []
+        stats = integrate(f, y0, schedule, "rk45", 1e-9, 1e-9,
+                          lambda t, y: got.append(np.r_[t, y]), **how)
+        return np.array(got), stats
+    in_python, only_python = rows(python.derivatives)
+    in_loop, only_c = rows(in_c.derivatives, loop=loop)
+    asked = []
+
+    def loop_when_built():
+        asked.append(1)
+        return loop if len(asked) > python_steps else None
+    handed, both = rows(python.derivatives, loop_when_built=loop_when_built)
+    before = python_steps // 3 + 1           # rows printed (every 3rd step) by then
+    assert np.array_equal(handed[:before], in_python[:before])
+    assert len(handed) == len(in_loop) == len(in_python)
+    assert np.max(np.abs(handed - in_loop)) < 1e-9
+    if python_steps == 0:
+        assert np.array_equal(handed, in_loop)
+    if 0 < python_steps < 200:
+        assert both["python_until"] == pytest.approx(0.1 * python_steps)
+    assert both.get("python_only", False) == (python_steps == 200)
+    assert both.get("compiled", False) == (python_steps < 200)
+    assert both["steps"] > 200 and "compiled" not in only_python and only_c["compiled"]
+
+
 @pytest.mark.parametrize("method", ["kutta-merson", "rk45"])
 def test_a_cold_run_does_not_wait_for_its_c_and_keeps_it_for_the_next(tmp_path,
                                                                      monkeypatch, method):

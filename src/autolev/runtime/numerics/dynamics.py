@@ -184,13 +184,15 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
     try:
         use_loop = compiled and not system.specified_functions
         # a cold build's C compiles while the run starts on its Python (the back ends
-        # give the same numbers): Kutta-Merson goes on in the compiled loop once it is
-        # there, the other methods call the C then; DOP853 in the loop waits for it
-        # (scipy's DOP853, which Python would step with, sums in another order)
+        # give the same numbers): Kutta-Merson, and RK45 afresh over each step
+        # (Autolev's Matlab loop), go on in the compiled loop once it is there, the
+        # other methods call the C then; DOP853 in the loop waits for it (scipy's
+        # DOP853, which Python would step with, sums in another order)
         ready = system.compiled_loop(wait=use_loop and method == "dop853")
         loop = ready if use_loop else None
+        takes_over = method == "kutta-merson" or method == "rk45" and sched.restart_each_step
         loop_when_built = system.compiled_loop \
-            if use_loop and method == "kutta-merson" and loop is None else None
+            if use_loop and takes_over and loop is None else None
         on_stiff = switch_when_stiff if method == "dop853" else None
         loose_tolerance_note(method.lower(), relerr)
         if constraints:
@@ -206,7 +208,7 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
                                           loop_when_built=loop_when_built,
                                           on_rows=on_row.block))
         stiff_note(result.stats, method)
-        if compiling and loop_when_built is None:      # (Kutta-Merson's says itself)
+        if compiling and loop_when_built is None:      # (a loop taking over says itself)
             result.stats.update({"python_until": took_over[0]} if took_over
                                 else {"python_only": True})
     except IntegrationFailure as exc:

@@ -323,8 +323,9 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
                              method == "rk45" and schedule.restart_each_step):
         return _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row,
                                    progress, on_stiff, on_rows=on_rows)
-    if loop_when_built is not None and method == "kutta-merson":
-        return _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row,
+    if loop_when_built is not None and (method == "kutta-merson" or
+                                        method == "rk45" and schedule.restart_each_step):
+        return _integrate_until_compiled(f, y, t, schedule, method, abserr, relerr, on_row,
                                          progress, stats, loop_when_built, on_rows)
     return _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
                              stats)
@@ -365,27 +366,36 @@ def _km_step(km: KuttaMerson, y, t: float, integstp: float, stats: dict) -> np.n
     return y
 
 
-def _integrate_until_compiled(f, y, t, schedule, abserr, relerr, on_row, progress, stats,
-                              loop_when_built, on_rows=None) -> dict:
-    """Kutta-Merson in Python while the compiled loop is built, then the loop from the
-    same T, state and step (the steps either alone takes: the back ends give the same
-    numbers).  stats["python_until"]: the T where C took over, when Python took a
-    step; stats["python_only"]: it never did."""
-    km = KuttaMerson(f, len(y), abserr, relerr, schedule.fresh_derivatives)
+def _integrate_until_compiled(f, y, t, schedule, method, abserr, relerr, on_row, progress,
+                              stats, loop_when_built, on_rows=None) -> dict:
+    """Kutta-Merson, or RK45 afresh over each step (Autolev's Matlab loop), in Python
+    while the compiled loop is built, then the loop from the same T and state
+    (Kutta-Merson's step too: the back ends give the same numbers; RK45 starts each
+    step anew, its sums in C at rounding level from scipy's).  stats["python_until"]:
+    the T where C took over, when Python took a step; stats["python_only"]: it never
+    did."""
+    km = KuttaMerson(f, len(y), abserr, relerr, schedule.fresh_derivatives) \
+        if method == "kutta-merson" else None
     blocks = schedule.blocks()
     for times, printed in blocks:
         for k, (t_next, shown) in enumerate(zip(times.tolist(), printed.tolist())):
             loop = loop_when_built()
             if loop is not None:
                 rest = itertools.chain([(times[k:], printed[k:])], blocks)
-                more = _integrate_compiled(f, loop, y, schedule, "kutta-merson", abserr,
-                                           relerr, on_row, progress, None, t0=t,
-                                           km_blocks=rest, steps_state=km.steps_state(),
-                                           on_rows=on_rows)
+                more = _integrate_compiled(
+                    f, loop, y, schedule, method, abserr, relerr, on_row, progress, None,
+                    t0=t, km_blocks=rest,
+                    steps_state=km.steps_state() if km is not None else None,
+                    on_rows=on_rows)
                 for count in ("evaluations", "steps", "rejected"):
-                    more[count] += stats.get(count, 0)
-                return dict(more, python_until=t) if km.evaluations else more
-            y = _km_step(km, y, t, schedule.integstp, stats)
+                    if count in more or count in stats:
+                        more[count] = more.get(count, 0) + stats.get(count, 0)
+                return dict(more, python_until=t) if stats["evaluations"] else more
+            if km is not None:
+                y = _km_step(km, y, t, schedule.integstp, stats)
+            else:
+                y = _scipy_interval(f, y, t, t_next, SCIPY_METHODS[method], schedule,
+                                    abserr, relerr, stats)
             t = t_next
             if shown:
                 on_row(t, y)
@@ -404,20 +414,25 @@ def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
                      stats) -> dict:
     """A scipy solver started afresh from (T, y) to T + INTEGSTP, step after step."""
     for t_next, printed in schedule.steps():
-        solver = _scipy_method(name)(
-            f, t, y, t_next, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
-        try:
-            while solver.status == "running":
-                _step(solver, name, stats)
-        finally:
-            stats["evaluations"] += solver.nfev
-        y = solver.y.copy()
+        y = _scipy_interval(f, y, t, t_next, name, schedule, abserr, relerr, stats)
         t = t_next                         # Autolev's accumulated T
         if printed:
             on_row(t, y)
         if progress is not None:
             progress.update(t)
     return stats
+
+
+def _scipy_interval(f, y, t, t_next, name, schedule, abserr, relerr, stats) -> np.ndarray:
+    """The state at t_next from a scipy solver started afresh at (t, y)."""
+    solver = _scipy_method(name)(
+        f, t, y, t_next, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
+    try:
+        while solver.status == "running":
+            _step(solver, name, stats)
+    finally:
+        stats["evaluations"] += solver.nfev
+    return solver.y.copy()
 
 
 def _step(solver, name: str, stats: dict) -> None:
