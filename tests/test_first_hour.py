@@ -98,8 +98,8 @@ def test_constants_without_a_value_are_named_before_the_model_is_formed(tmp_path
     lines = r.stderr.splitlines()
     note = next(k for k, line in enumerate(lines) if "note: no value given for" in line)
     assert lines[note].endswith("no value given for L, G, I, SPARE (INPUT, --set NAME=VALUE "
-                                "or --in FILE.in); the run stops before integrating if its "
-                                "equations use them")
+                                "or --in FILE.in); the run stops before computing if its "
+                                "programs read them")
     refusal = next(k for k, line in enumerate(lines) if "have no value" in line)
     assert note < refusal and "have no value: G, I, L." in lines[refusal]
     # given what the equations use, the run goes on: SPARE, never needed, stays in the note
@@ -115,6 +115,27 @@ def test_constants_without_a_value_are_named_before_the_model_is_formed(tmp_path
     assert [r.returncode for r in runs] == [0, 0], runs[0].stderr + runs[1].stderr
     assert "no value given for SPARE" in runs[0].stderr
     assert "no value given for" not in runs[1].stderr
+
+
+def test_variables_an_algebraic_program_reads_are_named_before_the_model_is_formed(tmp_path):
+    # an ALGEBRAIC program reads the variables its outputs use from its .in file, as it
+    # reads the constants (BioMAC's gait models: no constant, every parameter a variable)
+    path = tmp_path / "arm.al"
+    path.write_text("NEWTONIAN N\nVARIABLES M, L, Q'\nCONSTANTS G\nINPUT G = 9.81, Q = 0.3\n"
+                    "TAU = M*G*L*SIN(Q) + Q'\nENCODE TAU\nCODE ALGEBRAIC() arm.c\n")
+    r = cli("run", path, "--out", tmp_path / "out")
+    assert r.returncode == 1
+    lines = r.stderr.splitlines()
+    note = next(k for k, line in enumerate(lines) if "note: no value given for" in line)
+    assert "no value given for M, L, Q' (INPUT" in lines[note]
+    refusal = next(k for k, line in enumerate(lines) if "have no value" in line)
+    assert note < refusal and "have no value: L, M, Q'." in lines[refusal]
+    # a model that only integrates starts its variables at 0: nothing said of them
+    path.write_text("NEWTONIAN N\nVARIABLES Q'\nQ' = -Q\nOUTPUT Q\n"
+                    "INPUT TFINAL = 0.1\nCODE DYNAMICS() decay.c\n")
+    r = cli("run", path, "--out", tmp_path / "decay")
+    assert r.returncode == 0, r.stderr
+    assert "no value given for" not in r.stderr
 
 
 def test_an_all_zero_in_file_is_a_template_never_filled_in(model_file, tmp_path):

@@ -67,8 +67,8 @@ def test_the_missing_values_named_are_those_of_the_last_codes_program(tmp_path):
                    + "CODE DYNAMICS() tail.c\nINPUT G = 9.81\n" + TAIL)
     whole = translation(model)
     # an INPUT after the CODE is not its program's: G lacks a value there, K is not known
-    assert whole.constants_without_value == ["K"]
-    assert whole.through_last_code().constants_without_value == ["G"]
+    assert whole.inputs_without_value == ["K"]
+    assert whole.through_last_code().inputs_without_value == ["G"]
 
 
 def test_the_module_is_cut_after_the_last_code_call(tmp_path):

@@ -178,18 +178,19 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
 
 def _values_lacking(path: Path, overrides: dict, stream):
     """Before a model is built (its equations formed: a minute on a large model), the
-    note naming the constants that nothing gives a value (INPUT, an assignment, --set);
-    the run refuses once it knows its equations need them; printed on `stream`."""
+    note naming the constants that nothing gives a value (INPUT, an assignment, --set),
+    and the variables for a CODE ALGEBRAIC or NONLINEAR, whose program reads those too;
+    the run refuses once it knows its programs read them; printed on `stream`."""
     given = {name.upper() for name in overrides}
 
     def note(translation) -> None:
         from ..runtime.numerics.inputs import some_names
-        lacking = [name for name in translation.constants_without_value
+        lacking = [name for name in translation.inputs_without_value
                    if name.upper() not in given]
         if lacking:
             print(f"{path}: note: no value given for {some_names(lacking)} (INPUT, --set "
-                  "NAME=VALUE or --in FILE.in); the run stops before integrating if its "
-                  "equations use them", file=stream, flush=True)
+                  "NAME=VALUE or --in FILE.in); the run stops before computing if its "
+                  "programs read them", file=stream, flush=True)
     return note
 
 

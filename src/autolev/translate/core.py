@@ -74,11 +74,12 @@ class Translation:
     # ("constrain", "DEPENDENT" or "AUXILIARY"), every assignment to a name or its
     # elements ("assigned"): for the comments of a SymPy script
     statements_at: dict[tuple[str, str], list[str]] = field(default_factory=dict)
-    # the constants declared that no INPUT gives a value and no statement defines, as the
-    # model spells them: a run needs values for those its equations use (named before
-    # the model is built, which forms its equations)
-    constants_without_value: list[str] = field(default_factory=list)
-    # the Python line of each CODE statement's call, and constants_without_value as it
+    # the constants declared that no INPUT gives a value and no statement defines, and
+    # (after a CODE ALGEBRAIC or NONLINEAR) such variables, as the model spells them: a
+    # run needs values for those its programs read (named before the model is built,
+    # which forms its equations)
+    inputs_without_value: list[str] = field(default_factory=list)
+    # the Python line of each CODE statement's call, and inputs_without_value as it
     # stood at the last (what the last CODE command's program could read)
     code_lines: list[int] = field(default_factory=list)
     lacking_at_last_code: list[str] = field(default_factory=list)
@@ -101,7 +102,7 @@ class Translation:
             return self
         return replace(self, code="\n".join(lines[:last]) + "\n",
                        line_map={n: s for n, s in self.line_map.items() if n <= last},
-                       constants_without_value=list(self.lacking_at_last_code))
+                       inputs_without_value=list(self.lacking_at_last_code))
 
 
 # the generated module's dictionary of probes' values (a dunder name: no Autolev name
@@ -171,7 +172,10 @@ class Translator:
         self.session = Session()
         self.call_depth = 0
         self.defined: set[tuple[str, int]] = set()
-        self.given_by_input: set[str] = set()        # names INPUT gives a value, lower case
+        # names INPUT gives a value, lower case, with their primes (Q, Q')
+        self.given_by_input: set[str] = set()
+        # a CODE ALGEBRAIC or NONLINEAR came: its program reads variables from its .in
+        self.code_reads_variables = False
         # the declared name (key, primes) whose new definition is being read
         self.redefining: tuple[str, int] | None = None
         # made when first asked for: runs X[1] = a, X[2] = b, ... by their statements'
@@ -317,23 +321,34 @@ class Translator:
                            list(self.program.files), list(self.code_spans),
                            dict(self.defined_at), dict(self.probe_errors),
                            {k: list(v) for k, v in self.statements_at.items()},
-                           self.constants_without_value(), code_lines,
+                           self.inputs_without_value(), code_lines,
                            list(self.lacking_at_last_code), self.code_integrates)
 
-    def constants_without_value(self) -> list[str]:
+    def inputs_without_value(self) -> list[str]:
         """The constants declared so far that no INPUT gives a value and no statement
-        defines (Translation's)."""
-        return [self.autolev_name(e) for key, e in self.scalars.items()
-                if e.kind == NameKind.CONSTANT and key not in self.given_by_input
-                and (key, 0) not in self.defined]
+        defines; once a CODE statement that does not integrate came (ALGEBRAIC,
+        NONLINEAR: its program reads the variables its outputs use, as it reads the
+        constants, from its .in file), the variables and their declared derivatives
+        likewise (Translation's)."""
+        lacking = [self.autolev_name(e) for key, e in self.scalars.items()
+                   if e.kind == NameKind.CONSTANT and key not in self.given_by_input
+                   and (key, 0) not in self.defined]
+        if self.code_reads_variables:
+            lacking += [self.autolev_name(e) + "'" * k for key, e in self.scalars.items()
+                        if e.kind in (NameKind.VARIABLE, NameKind.MOTIONVARIABLE)
+                        for k in range(e.order + 1)
+                        if key + "'" * k not in self.given_by_input
+                        and (key, k) not in self.defined]
+        return lacking
 
     def code_call(self, call: str, integrates: bool) -> None:
         """Write a CODE statement's call, noting where it is and what lacks a value."""
         self.code_spans.append(self._span)
         self.code_integrates = self.code_integrates or integrates
+        self.code_reads_variables = self.code_reads_variables or not integrates
         self.emit(call)
         self.code_calls.append(self.lines[-1])
-        self.lacking_at_last_code = self.constants_without_value()
+        self.lacking_at_last_code = self.inputs_without_value()
 
     @staticmethod
     def location(st: ir.Statement) -> str:

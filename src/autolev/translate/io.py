@@ -32,8 +32,7 @@ def input_statement(tr: Translator, st: ir.Input) -> None:
         value = tr.scalar(item.value).code
         if isinstance(target, ir.Name) and target.name.lower() in tr.scalars:
             tr.emit(f"model.input({tr.symbol(target)}, {value}{_unit_arg(item.unit)})")
-            if not target.primes:
-                tr.given_by_input.add(target.name.lower())
+            tr.given_by_input.add(target.name.lower() + "'" * target.primes)
             continue
         if isinstance(target, ir.Name) and _integration_name(target.name) and \
                 target.name.lower() not in tr.scalars and not target.primes:
