@@ -117,6 +117,21 @@ def test_constants_without_a_value_are_named_before_the_model_is_formed(tmp_path
     assert "no value given for" not in runs[1].stderr
 
 
+def test_the_note_before_forming_takes_the_values_of_the_in_file(model_file, tmp_path):
+    refused = cli("run", model_file, "--out", tmp_path / "out")
+    template = tmp_path / "out" / "pend-template.in"
+    assert refused.returncode == 1 and template.is_file()
+    # the template as shipped, never filled in (every value 0): it gives none
+    r = cli("run", model_file, "--out", tmp_path / "a", "--in", template)
+    assert "note: no value given for L, G, I (INPUT" in r.stderr
+    # filled in but for I, whose 0 is then a value: nothing to say, and the run goes
+    partly = tmp_path / "partly.in"
+    partly.write_text(fill(template, {"L": "0.5", "G": "9.81", "TFINAL": "0.1"}))
+    r = cli("run", model_file, "--out", tmp_path / "b", "--in", partly)
+    assert r.returncode == 0, r.stderr
+    assert "no value given for" not in r.stderr
+
+
 def test_variables_an_algebraic_program_reads_are_named_before_the_model_is_formed(tmp_path):
     # an ALGEBRAIC program reads the variables its outputs use from its .in file, as it
     # reads the constants (BioMAC's gait models: no constant, every parameter a variable)

@@ -61,8 +61,9 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
             return _responses_instead(path, translation, recorder, options)
     start = time.monotonic()
     # the note of values lacking is about forming the model: a run plan never says it
-    model = load_model(path, progress, None if ns.infile or ns.zero_missing
-                       else _values_lacking(path, overrides, sys.stderr if recorder is None
+    model = load_model(path, progress, None if ns.zero_missing
+                       else _values_lacking(path, overrides, ns.infile,
+                                            sys.stderr if recorder is None
                                             else recorder.through))
     if model is None:
         print(f"{path}: not run", file=sys.stderr)
@@ -176,22 +177,49 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
     return status
 
 
-def _values_lacking(path: Path, overrides: dict, stream):
+def _values_lacking(path: Path, overrides: dict, infile, stream):
     """Before a model is built (its equations formed: a minute on a large model), the
-    note naming the constants that nothing gives a value (INPUT, an assignment, --set),
-    and the variables for a CODE ALGEBRAIC or NONLINEAR, whose program reads those too;
-    the run refuses once it knows its programs read them; printed on `stream`."""
+    note naming the constants that nothing gives a value (INPUT, an assignment, --set,
+    the --in file), and the variables for a CODE ALGEBRAIC or NONLINEAR, whose program
+    reads those too; the run refuses once it knows its programs read them; printed on
+    `stream`."""
     given = {name.upper() for name in overrides}
 
     def note(translation) -> None:
         from ..runtime.numerics.inputs import some_names
+        from_file = _names_in_file(infile, translation)
+        if from_file is None:
+            return                  # the file decides, and the run says what it lacks
         lacking = [name for name in translation.inputs_without_value
-                   if name.upper() not in given]
+                   if name.upper() not in given and name.upper() not in from_file]
         if lacking:
             print(f"{path}: note: no value given for {some_names(lacking)} (INPUT, --set "
                   "NAME=VALUE or --in FILE.in); the run stops before computing if its "
                   "programs read them", file=stream, flush=True)
     return note
+
+
+def _names_in_file(infile, translation) -> set | None:
+    """The names (upper case) the --in file gives values, none without one or when the
+    values it has for them are all 0 (a template never filled in gives none: the run's
+    rule); None when it cannot be read, or names what the model does not (its values
+    are then read in Autolev's order, whatever the labels say)."""
+    from ..runtime.code_kinds import INTEGRATION_PARAMETERS
+    from ..runtime.numerics.numbers import in_file_lines, parse_number
+    if infile is None:
+        return set()
+    try:
+        text = Path(infile).read_bytes().decode("latin-1")
+    except OSError:
+        return None
+    values = {name.upper(): parse_number(raw) for _, name, raw, _ in in_file_lines(text)}
+    known = {name.upper() for name in translation.names} | set(INTEGRATION_PARAMETERS)
+    if not values or any(name.rstrip("'") not in known for name in values):
+        return None
+    lacking = {name.upper() for name in translation.inputs_without_value}
+    if all(v == 0 for name, v in values.items() if name in lacking):
+        return set()
+    return set(values)
 
 
 def _run_overrides(ns: argparse.Namespace) -> dict:

@@ -26,7 +26,7 @@ from ..calculus import is_real_number
 from ..errors import AutolevModelError
 from ..io import INTEGRATION_PARAMETERS as INTEGRATION
 from ..symbols import TIME
-from .numbers import format_value, parse_number
+from .numbers import format_value, in_file_lines, parse_number
 
 DEFAULTS = {"TINITIAL": 0.0, "TFINAL": 1.0, "INTEGSTP": 0.1, "PRINTINT": 1,
             "ABSERR": 1.0e-8, "RELERR": 1.0e-7}
@@ -218,19 +218,12 @@ class Inputs:
             raise InputFileError(f"{path}: cannot read ({exc.strerror})") from None
         notes = []
         entries = []                       # (lineno, name, value, file unit)
-        for lineno, line in enumerate(text.splitlines(), 1):
-            line = line.rstrip("\r\n")
-            if len(line) < 60 or line[58] != "|":
-                continue
-            name = line[21:42].strip()
-            raw = line[59:].strip()
-            if not name or name.lower() == "quantity" or set(line[:58]) <= {"-", " "}:
-                continue
+        for lineno, name, raw, file_unit in in_file_lines(text):
             value = parse_number(raw)
             if value is None:
                 raise InputFileError(f"{path}:{lineno}:60: expected a number for {name}, "
                                      f"found {raw!r}")
-            entries.append((lineno, name, value, line[42:58].strip()))
+            entries.append((lineno, name, value, file_unit))
         if not entries:
             raise InputFileError(f"{path}: no values found (expected Autolev's layout: "
                                  "a '|' in column 59 and the value from column 60)")

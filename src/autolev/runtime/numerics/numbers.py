@@ -1,5 +1,6 @@
-"""Numbers as Autolev's .in files write them: read (a Fortran D exponent too) and
-written (' 0.0', '-9.81')."""
+"""Autolev's .in files: their lines of values, and numbers as they write them, read (a
+Fortran D exponent too) and written (' 0.0', '-9.81').  No sympy: the command line
+reads the names an .in file gives before the model is built."""
 from __future__ import annotations
 
 import math
@@ -29,3 +30,19 @@ def format_value(v: float) -> str:
             mant, exp = s.split("E")
             s = f"{mant}E{int(exp):+03d}"
     return s if s.startswith("-") else " " + s
+
+
+def in_file_lines(text: str) -> list[tuple[int, str, str, str]]:
+    """(line number, name, value as written, unit) of each value line of an .in file's
+    text: Autolev's layout, the name in columns 22-42, the unit to column 58, a '|' in
+    column 59 and the value after it (headings and rules skipped)."""
+    lines = []
+    for lineno, line in enumerate(text.splitlines(), 1):
+        line = line.rstrip("\r\n")
+        if len(line) < 60 or line[58] != "|":
+            continue
+        name = line[21:42].strip()
+        if not name or name.lower() == "quantity" or set(line[:58]) <= {"-", " "}:
+            continue
+        lines.append((lineno, name, line[59:].strip(), line[42:58].strip()))
+    return lines
