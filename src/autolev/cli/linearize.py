@@ -37,7 +37,7 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
 def _kept_options(ns: argparse.Namespace, path: Path) -> tuple | None:
     """The options that change a linearization's answer (the .in file first), when
     it can be kept: a model file linearized at one point; else None."""
-    if path.suffix.lower() != ".al" or ns.sweep:
+    if path.suffix.lower() == ".py" or ns.sweep:
         return None
     infile = None if ns.infile is None else str(Path(ns.infile).resolve())
     return (infile, ns.set, ns.specified, ns.backend, ns.zero_missing, ns.at, ns.inputs,

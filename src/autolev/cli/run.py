@@ -41,7 +41,7 @@ def _plan_options(ns: argparse.Namespace, path: Path) -> tuple | None:
     """The options that change what a run computes (the .in file first), when a run
     plan can repeat it: a model file run without an animation (plots and tables are
     drawn from the rows); else None."""
-    if path.suffix.lower() != ".al" or ns.func is not cmd_run or ns.animate:
+    if path.suffix.lower() == ".py" or ns.func is not cmd_run or ns.animate:
         return None
     infile = None if ns.infile is None else str(Path(ns.infile).resolve())
     return (infile, ns.set, ns.specified, ns.backend, ns.zero_missing, ns.method, ns.tfinal,
@@ -55,7 +55,7 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
     import time
 
     overrides = _run_overrides(ns)
-    if path.suffix.lower() == ".al" and not ns.first_dynamics:
+    if path.suffix.lower() != ".py" and not ns.first_dynamics:
         translation = _translation_or_none(path)
         if translation is not None and not translation.code_lines:
             return _responses_instead(path, translation, recorder, options)
