@@ -10,7 +10,7 @@ of its failure, and what the run printed on stderr (notes, warnings).  The next 
 with the same options, while the file, every file its translation read and autolev
 itself are unchanged (the translation cache's manifest), repeats the run from
 the plan and writes the same files (and the tables and plots asked for, from its
-rows), importing no sympy (scipy only for what needs it: a linear solve, a scipy method)
+rows), importing no sympy (scipy only for what needs it: a scipy method, a .mat file)
 and translating nothing.  Anything else runs from the model.
 
 A run that writes no file repeats what it printed and its exit status: a model without
