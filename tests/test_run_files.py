@@ -52,7 +52,12 @@ def test_a_full_disk_mid_run_leaves_the_previous_files(model, tmp_path, monkeypa
         written.append(values)
         if len(written) > 3:
             raise OSError(errno.ENOSPC, "No space left on device")
+
+    def fills_up_rows(self, k, block):          # the compiled loop's rows, a block at once
+        for values in block:
+            fills_up(self, k, values)
     monkeypatch.setattr(files.OutputFiles, "write", fills_up)
+    monkeypatch.setattr(files.OutputFiles, "write_rows", fills_up_rows)
     with pytest.raises(AutolevModelError, match="No space left on device"):
         model.simulate(out_dir=out, TFINAL=0.4, Q1=80)
     assert len(written) == 4
