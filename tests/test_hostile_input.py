@@ -77,6 +77,7 @@ def test_a_full_disk_while_writing_rows(tmp_path, monkeypatch):
     def full(self, k, row):
         raise OSError(errno.ENOSPC, "No space left on device", "double_pendulum.1")
     monkeypatch.setattr(files.OutputFiles, "write", full)
+    monkeypatch.setattr(files.OutputFiles, "write_rows", full)     # a block of rows
     with pytest.raises(autolev.runtime.AutolevModelError, match="No space left on device"):
         model.simulate(out_dir=tmp_path / "out", TFINAL=0.1)
 
