@@ -1,6 +1,7 @@
-"""Rows of Autolev's output files as text, many at once: formatted by C's printf where
-a C compiler is found (the "%- 14.6E" of Autolev's own programs, a tenth of Python's
-time on a long run's rows), else by Python's %, which writes the same characters."""
+"""Rows of Autolev's output files as text, many at once: in C where a C compiler is
+found (the "%- 14.6E" of Autolev's own programs, its digits from a scaled double and
+printf's where that cannot settle the rounding: a quarter of Python's time on a long
+run's rows), else by Python's %, which writes the same characters."""
 from __future__ import annotations
 
 import ctypes
