@@ -271,32 +271,40 @@ def test_fast_path_returns_fresh_arrays_and_reports_singularity():
         s.derivatives(0.0, np.array([0.1, 0.0]))
 
 
-@pytest.mark.parametrize("python_steps", [0, 7, 150, 200])
-def test_kutta_merson_goes_on_in_c_from_where_python_stepped(python_steps):
-    """A cold run steps in Python while its C compiles, then hands T, the state and its
-    step to the compiled loop: the rows are those of either alone, to the last bit."""
-    from autolev.runtime.numerics.integrate import Schedule, integrate
+def handed_over(method: str, schedule, python_steps: int) -> dict:
+    """The double pendulum integrated with `method` on `schedule`: in Python alone, in
+    the compiled loop alone, and in Python for `python_steps` steps (a cold run while
+    its C compiles) then handed to the loop; each (rows, stats)."""
+    from autolev.runtime.numerics.integrate import integrate
     m = load("double_pendulum")
     in_c = run(m, TFINAL=0.1).system
     loop = in_c.compiled_loop(wait=True)
     python = run(m, TFINAL=0.1, backend="python").system
     assert loop is not None and python.rhs_function.backend == "python"
     y0 = np.array([0.5, 1.0, 0.0, 0.0])
-    schedule = Schedule(0.0, 20.0, 0.1, 3)
 
     def rows(f, **how):
         got = []
-        stats = integrate(f, y0, schedule, "kutta-merson", 1e-9, 1e-9,
+        stats = integrate(f, y0, schedule, method, 1e-9, 1e-9,
                           lambda t, y: got.append(np.r_[t, y]), **how)
         return np.array(got), stats
-    in_python, only_python = rows(python.derivatives)
-    in_c, only_c = rows(in_c.derivatives, loop=loop)
     asked = []
 
     def loop_when_built():
         asked.append(1)
         return loop if len(asked) > python_steps else None
-    handed, both = rows(python.derivatives, loop_when_built=loop_when_built)
+    return {"python": rows(python.derivatives), "c": rows(in_c.derivatives, loop=loop),
+            "handed": rows(python.derivatives, loop_when_built=loop_when_built)}
+
+
+@pytest.mark.parametrize("python_steps", [0, 7, 150, 200])
+def test_kutta_merson_goes_on_in_c_from_where_python_stepped(python_steps):
+    """A cold run steps in Python while its C compiles, then hands T, the state and its
+    step to the compiled loop: the rows are those of either alone, to the last bit."""
+    from autolev.runtime.numerics.integrate import Schedule
+    runs = handed_over("kutta-merson", Schedule(0.0, 20.0, 0.1, 3), python_steps)
+    (in_python, only_python), (in_c, only_c) = runs["python"], runs["c"]
+    handed, both = runs["handed"]
     assert np.array_equal(in_python, in_c) and np.array_equal(handed, in_c)
     # 200 steps: the compiler never finished, Python did them all
     if 0 < python_steps < 200:
@@ -316,27 +324,11 @@ def test_rk45_afresh_each_step_goes_on_in_c_from_where_scipy_stepped(python_step
     scipy's steps while the C compiles, then the compiled loop from that T and state
     (nothing else carries over a step): the rows before are scipy's, to the last bit,
     and the rest the loop's to rounding level (its sums in another order)."""
-    from autolev.runtime.numerics.integrate import Schedule, integrate
-    m = load("double_pendulum")
-    in_c = run(m, TFINAL=0.1).system
-    loop = in_c.compiled_loop(wait=True)
-    python = run(m, TFINAL=0.1, backend="python").system
-    y0 = np.array([0.5, 1.0, 0.0, 0.0])
-    schedule = Schedule(0.0, 20.0, 0.1, 3, restart_each_step=True)
-
-    def rows(f, **how):
-        got = []
-        stats = integrate(f, y0, schedule, "rk45", 1e-9, 1e-9,
-                          lambda t, y: got.append(np.r_[t, y]), **how)
-        return np.array(got), stats
-    in_python, only_python = rows(python.derivatives)
-    in_loop, only_c = rows(in_c.derivatives, loop=loop)
-    asked = []
-
-    def loop_when_built():
-        asked.append(1)
-        return loop if len(asked) > python_steps else None
-    handed, both = rows(python.derivatives, loop_when_built=loop_when_built)
+    from autolev.runtime.numerics.integrate import Schedule
+    runs = handed_over("rk45", Schedule(0.0, 20.0, 0.1, 3, restart_each_step=True),
+                       python_steps)
+    (in_python, only_python), (in_loop, only_c) = runs["python"], runs["c"]
+    handed, both = runs["handed"]
     before = python_steps // 3 + 1           # rows printed (every 3rd step) by then
     assert np.array_equal(handed[:before], in_python[:before])
     assert len(handed) == len(in_loop) == len(in_python)
