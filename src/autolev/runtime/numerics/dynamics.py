@@ -11,7 +11,7 @@ import warnings
 import numpy as np
 
 from ..errors import AutolevModelError
-from .integrate import IntegrationFailure, Progress, Schedule, integrate
+from .integrate import IntegrationFailure, Progress, Schedule, integrate, loop_takes_over
 from .integration_notes import loose_tolerance_note, stiff_note, switch_when_stiff
 from .results import split_output_rows, split_outputs, tables_of
 from .massmatrix import SingularMassMatrix, scaled_condition
@@ -190,9 +190,8 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         # DOP853, which Python would step with, sums in another order)
         ready = system.compiled_loop(wait=use_loop and method == "dop853")
         loop = ready if use_loop else None
-        takes_over = method == "kutta-merson" or method == "rk45" and sched.restart_each_step
         loop_when_built = system.compiled_loop \
-            if use_loop and takes_over and loop is None else None
+            if use_loop and loop_takes_over(method, sched) and loop is None else None
         on_stiff = switch_when_stiff if method == "dop853" else None
         loose_tolerance_note(method.lower(), relerr)
         if constraints:

@@ -296,6 +296,12 @@ class Progress:
             self.stream.flush()
 
 
+def loop_takes_over(method: str, schedule: Schedule) -> bool:
+    """Whether the compiled loop goes on from any step Python took: Kutta-Merson (its
+    step handed over) and RK45 started afresh over each step (nothing carries over)."""
+    return method == "kutta-merson" or method == "rk45" and schedule.restart_each_step
+
+
 def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
               relerr: float, on_row, progress: Progress | None = None, loop=None,
               on_stiff=None, loop_when_built=None, on_rows=None) -> dict:
@@ -319,12 +325,10 @@ def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
     if not np.all(np.isfinite(f(t, y))):
         raise IntegrationFailure(f"the derivatives are not finite at T = {t:.6g}", t, y)
     on_row(t, y)
-    if loop is not None and (method in ("kutta-merson", "dop853") or
-                             method == "rk45" and schedule.restart_each_step):
+    if loop is not None and (method == "dop853" or loop_takes_over(method, schedule)):
         return _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row,
                                    progress, on_stiff, on_rows=on_rows)
-    if loop_when_built is not None and (method == "kutta-merson" or
-                                        method == "rk45" and schedule.restart_each_step):
+    if loop_when_built is not None and loop_takes_over(method, schedule):
         return _integrate_until_compiled(f, y, t, schedule, method, abserr, relerr, on_row,
                                          progress, stats, loop_when_built, on_rows)
     return _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
