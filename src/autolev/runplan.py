@@ -6,10 +6,10 @@ solved: ALGEBRAIC, NONLINEAR) leaves a plan in the cache, for the options it was
 (values, an .in file by its content, the method...): per command, its compiled system
 as numbers and sources (C, whose libraries are found again in the build cache, or
 Python), its inputs as numbers, the texts of its files besides the rows, the message
-of its failure, and what the run printed on stderr (notes, warnings).  The next run of the same file
-with the same options, while the file, every file its translation read and autolev
-itself are unchanged (the translation cache's manifest), repeats the run from
-the plan and writes the same files (and the tables and plots asked for, from its
+of its failure, and what the run printed on stderr (notes, warnings).  The next run of
+the same file with the same options, while the file, every file its translation read
+and autolev itself are unchanged (the translation cache's manifest), repeats the run
+from the plan and writes the same files (and the tables and plots asked for, from its
 rows), importing no sympy (scipy only for what needs it: a scipy method, a .mat file)
 and translating nothing.  Anything else runs from the model.
 
@@ -180,16 +180,24 @@ def read_plan(path: Path, options: tuple) -> RunPlan | KeptOutcome | None:
 _TRANSCRIPT = (None, "transcript")
 
 
+@dataclass
+class KeptTranscript:
+    """The text of `autolev transcript FILE`: the same files read give the same text."""
+
+    manifest: tuple             # of the files read to make it (cachekeys.manifest)
+    text: str
+
+
 def keep_transcript(path: Path, files_read: list, text: str) -> None:
     """Keep the transcript of the model at `path` (`files_read`: every file read to
     make it)."""
-    _keep(path, _TRANSCRIPT, KeptOutcome(manifest(path, files_read), "", text, 0))
+    _keep(path, _TRANSCRIPT, KeptTranscript(manifest(path, files_read), text))
 
 
 def kept_transcript(path: Path) -> str | None:
     """The transcript of the model at `path`, while every file it read is unchanged."""
-    kept = _kept(path, _TRANSCRIPT, KeptOutcome)
-    return None if kept is None else kept.transcript
+    kept = _kept(path, _TRANSCRIPT, KeptTranscript)
+    return None if kept is None else kept.text
 
 
 @dataclass
