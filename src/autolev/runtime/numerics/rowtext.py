@@ -10,6 +10,7 @@ import functools
 import numpy as np
 
 from .clibrary import CompileError, build_shared_library, compiler
+from .files import row
 
 # a finite double takes at most 14 characters in "%- 14.6E" (-1.797693E+308), as do
 # INF and NAN padded: 15 with the space before it
@@ -102,8 +103,8 @@ def _formatter():
 
 
 def python_rows_text(block) -> str:
-    """The same text by Python's % (a row of numbers at a time)."""
-    return "".join((" %- 14.6E" * len(r) + "\n") % tuple(r) for r in block)
+    """The same text by the writer of a row at a time (files.row, Python's %)."""
+    return "".join(row(r) for r in block)
 
 
 def rows_text(block: np.ndarray) -> str:
