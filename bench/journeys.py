@@ -241,13 +241,19 @@ def _first_error(outcome: Outcome) -> str:
 
 
 # -- running a command -----------------------------------------------------------------
-def run_process(argv: list, cwd: Path, limit: float) -> Outcome:
-    """`argv` in its own process group (killed whole at the time limit)."""
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(
-        [str(ROOT / "src")] + ([os.environ["PYTHONPATH"]] if os.environ.get("PYTHONPATH")
-                               else [])),
+def process_env(src: Path = ROOT / "src", **more: str) -> dict:
+    """The environment of a command's process: autolev from `src`, one thread for BLAS,
+    no display, tracebacks of internal errors shown; `more` set besides."""
+    return dict(os.environ, PYTHONPATH=os.pathsep.join(
+        [str(src)] + ([os.environ["PYTHONPATH"]] if os.environ.get("PYTHONPATH") else [])),
         AUTOLEV_TRACEBACK="1", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1",
-        MPLBACKEND="Agg")
+        MPLBACKEND="Agg", **more)
+
+
+def run_process(argv: list, cwd: Path, limit: float, env: dict | None = None) -> Outcome:
+    """`argv` in its own process group (killed whole at the time limit); `env`: its
+    environment (default process_env())."""
+    env = process_env() if env is None else env
     start = time.monotonic()
     proc = subprocess.Popen([str(a) for a in argv], cwd=cwd, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, errors="replace", env=env,

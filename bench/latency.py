@@ -40,29 +40,20 @@ TARGETS = {"missing": 2.0, "cold": 5.0, "warm": 0.3}
 NAMED = "no value given for"      # the note of a run naming constants without a value
 
 
-def _process(src: Path, path: Path, options: list, work: Path, cache: Path):
-    """`autolev run` of `src`'s autolev in its own process group, on `cache`."""
-    env = dict(os.environ, PYTHONPATH=str(src), AUTOLEV_CACHE=str(cache),
-               OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
+def _argv(path: Path, options: list, work: Path) -> list:
+    """`autolev run` of the model into a fresh folder of `work`."""
     run_dir = work / "run"
     shutil.rmtree(run_dir, ignore_errors=True)
-    return subprocess.Popen([str(a) for a in journeys.autolev_cli(
-        "run", path, "--out", run_dir, "-q", *options)], cwd=work, env=env,
-        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, errors="replace",
-        start_new_session=True)
+    return journeys.autolev_cli("run", path, "--out", run_dir, "-q", *options)
 
 
 def timed_run(src: Path, path: Path, options: list, work: Path, cache: Path,
               limit: float) -> tuple[float, int | None, str]:
-    """(seconds, exit status or None at the limit, stderr) of one run."""
-    start = time.monotonic()
-    proc = _process(src, path, options, work, cache)
-    try:
-        _, err = proc.communicate(timeout=limit)
-    except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        _, err = proc.communicate()
-    return time.monotonic() - start, proc.returncode, err
+    """(seconds, exit status or None at the limit, stderr) of one run of `src`'s
+    autolev on `cache`."""
+    done = journeys.run_process(_argv(path, options, work), work, limit,
+                                journeys.process_env(src, AUTOLEV_CACHE=str(cache)))
+    return done.seconds, done.returncode, done.stderr
 
 
 def time_to_note(src: Path, path: Path, options: list, work: Path, cache: Path,
@@ -70,7 +61,10 @@ def time_to_note(src: Path, path: Path, options: list, work: Path, cache: Path,
     """Seconds until a run names the constants without a value (None: it never did);
     the run is stopped there."""
     start = time.monotonic()
-    proc = _process(src, path, options, work, cache)
+    proc = subprocess.Popen([str(a) for a in _argv(path, options, work)], cwd=work,
+                            env=journeys.process_env(src, AUTOLEV_CACHE=str(cache)),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                            errors="replace", start_new_session=True)
     seconds = None
     try:
         for line in proc.stderr:
