@@ -33,6 +33,7 @@ except ImportError:           # Windows: runs into one folder are not locked
 
 from ..errors import AutolevModelError
 from ..outputs import TEMPORARY_SUFFIX, Written, temporary_beside
+from .numbers import row
 
 
 def safe_stem(filename: str) -> str:
@@ -93,10 +94,6 @@ def _size(count: float) -> str:
         if count < 1000 or unit == "TB":
             return f"{count:.3g} {unit}"
         count /= 1000
-
-
-def row(values) -> str:
-    return "".join(" " + ("%- 14.6E" % v) for v in values) + "\n"
 
 
 class OutputFiles:

@@ -1,6 +1,7 @@
 """Autolev's .in files: their lines of values, and numbers as they write them, read (a
-Fortran D exponent too) and written (' 0.0', '-9.81').  No sympy: the command line
-reads the names an .in file gives before the model is built."""
+Fortran D exponent too) and written (' 0.0', '-9.81'); and the rows of its output
+files.  No sympy: the command line reads the names an .in file gives before the model
+is built."""
 from __future__ import annotations
 
 import math
@@ -30,6 +31,12 @@ def format_value(v: float) -> str:
             mant, exp = s.split("E")
             s = f"{mant}E{int(exp):+03d}"
     return s if s.startswith("-") else " " + s
+
+
+def row(values) -> str:
+    """A line of Autolev's output files: each value as its programs' printf("%- 14.6E")
+    wrote it."""
+    return "".join(" " + ("%- 14.6E" % v) for v in values) + "\n"
 
 
 def in_file_lines(text: str) -> list[tuple[int, str, str, str]]:

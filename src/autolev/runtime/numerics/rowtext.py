@@ -10,7 +10,7 @@ import functools
 import numpy as np
 
 from .clibrary import CompileError, build_shared_library, compiler
-from .files import row
+from .numbers import row
 
 # a finite double takes at most 14 characters in "%- 14.6E" (-1.797693E+308), as do
 # INF and NAN padded: 15 with the space before it
@@ -103,7 +103,7 @@ def _formatter():
 
 
 def python_rows_text(block) -> str:
-    """The same text by the writer of a row at a time (files.row, Python's %)."""
+    """The same text by the writer of a row at a time (numbers.row, Python's %)."""
     return "".join(row(r) for r in block)
 
 
