@@ -157,6 +157,43 @@ def test_taylor_in_several_variables_through_definitions_to_second_order():
         assert abs(complex(got.evalf(subs=point)) - complex(want.evalf(subs=point))) < 1e-11
 
 
+def test_first_order_taylor_is_the_gradient_at_the_point_through_definitions():
+    # order 1 takes each definition's value and gradient at the point in one pass
+    # (Definitions.gradient_at): factors vanishing there (SIN(q)*..., u*...), a point
+    # given by a constant, atan2 and MAX (no forward rule: their partials) and a
+    # definition whose gradient there is 0 while its value is not (W2 at q=0)
+    ns = build("AUTOZ ON\nVARIABLES q, u, r, dq, du, dr\nCONSTANTS c, u0\n"
+               "W1 = SIN(q)*EXP(u*r) + COS(q + c*u)^3\nW2 = COS(q)*(1 + r^2) + u*W1\n"
+               "W3 = ATAN2(W2, 1 + r^2) + MAX(r, c)*W1\n"
+               "T = TAYLOR(W3*W2 + q*u, 0:1, q=0, u=u0, r=0.5)\n"
+               "P = TAYLOR(W3 - W1^2, 1, q=0:dq, u=u0:du, r=0:dr)\n"
+               "L = TAYLOR(W2, 1:1, q=0, u=u0, r=0.5)")
+    q, u, r, c, u0, dq, du, dr = (sm.Symbol(n, real=True)
+                                 for n in ("q", "u", "r", "c", "u0", "dq", "du", "dr"))
+    w1 = sm.sin(q) * sm.exp(u * r) + sm.cos(q + c * u) ** 3
+    w2 = sm.cos(q) * (1 + r**2) + u * w1
+    w3 = sm.atan2(w2, 1 + r**2) + sm.Max(r, c) * w1
+
+    def linear(f, at, steps):
+        """the textbook first-order terms, by sympy on the explicit form"""
+        return sum(f.diff(x).subs(at) * step for x, step in steps)
+
+    at = {q: 0, u: u0, r: sm.Rational(1, 2)}
+    steps = [(q, q), (u, u - u0), (r, r - sm.Rational(1, 2))]
+    f = w3 * w2 + q * u
+    want = {"T": f.subs(at) + linear(f, at, steps), "L": linear(w2, at, steps)}
+    g = w3 - w1**2
+    want["P"] = g.subs({q: 0, u: u0, r: 0}) + linear(g, {q: 0, u: u0, r: 0},
+                                                    [(q, dq), (u, du), (r, dr)])
+    explicit = ns["model"].explicit
+    for name, expected in want.items():
+        got = explicit(ns[name])
+        for point in ({q: 0.3, u: -0.7, r: 0.2, c: 1.3, u0: 0.4, dq: 0.1, du: -0.2, dr: 0.3},
+                      {q: -1.1, u: 0.9, r: 0.8, c: 0.1, u0: -0.5, dq: 0.7, du: 0.6, dr: -0.4}):
+            assert abs(complex(got.evalf(subs=point))
+                       - complex(expected.evalf(subs=point))) < 1e-11, name
+
+
 def test_d_of_a_column_by_a_row_is_the_jacobian_through_definitions():
     ns = build("VARIABLES q{2}\nCONSTANTS c\nW = c*q1\nM = D([SIN(q1)*q2; W*q2], [q1, q2])")
     q1, q2, c = (sm.Symbol(n, real=True) for n in ("q1", "q2", "c"))

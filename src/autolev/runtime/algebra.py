@@ -134,6 +134,11 @@ class AlgebraMixin:
             increments[d] = inc if inc is not None else var - a
 
         def one(e):
+            if hi == 1 and lo <= 1:     # the linear terms: the gradient at the point
+                grad = self.defs.gradient_at(e, at)
+                linear = sm.Add(*[d * grad.get(var, 0) for var, d in steps])
+                terms = ([self.defs.substitute(e, at)] if lo == 0 else []) + [linear]
+                return sm.Add(*terms).xreplace(increments)
             total = []
             term = sm.sympify(e)
             factorial = 1

@@ -32,6 +32,7 @@ from .symbols import TIME, Z, derivative, new_z
 from .errors import AutolevModelError
 from .fastdiff import diff as fast_diff
 from .fastdiff import gradient as fast_gradient
+from .fastdiff import value_and_gradient
 
 
 def _order_key(s) -> tuple:
@@ -257,6 +258,8 @@ class Definitions:
         self._dt_raw: dict[sm.Symbol, sm.Expr] = {}
         self._diff: dict[tuple[sm.Symbol, sm.Symbol], sm.Expr] = {}
         self._subs: dict[tuple[sm.Symbol, frozenset], sm.Expr] = {}
+        # the gradients at a point: {(symbol, point's key): {x: derivative there}}
+        self._grad_at: dict[tuple[sm.Symbol, frozenset], dict] = {}
         # the expansions, per set of symbols kept (EXPLICIT(x, [u]), the hand-off's
         # dependent speeds): {frozenset kept: {symbol: its expansion}}
         self._explicit: dict[frozenset, dict[sm.Symbol, sm.Expr]] = {}
@@ -350,6 +353,7 @@ class Definitions:
         self._dt_raw.clear()
         self._diff.clear()
         self._subs.clear()
+        self._grad_at.clear()
         self._explicit.clear()
 
     def mark_varying(self, *syms: sm.Symbol) -> None:
@@ -519,6 +523,47 @@ class Definitions:
             g = gradient(e, ordered(e.free_symbols))
             rows.append([g.get(x, sm.S.Zero) for x in xs])
         return rows
+
+    def gradient_at(self, expr, point: Mapping) -> dict:
+        """{x: d expr / d x at the point} for the symbols x of `point` ({x: value}), in
+        one forward pass over the definitions that depend on them: each is put at the
+        point and differentiated there at once (`value_and_gradient`), so what vanishes
+        at the point (sin(0), speeds set to 0) drops out before the chain rule
+        multiplies it; differentiating everywhere and then substituting builds every
+        derivative in full first.  The values there fill `substitute`'s cache."""
+        point = {sm.sympify(k): sm.sympify(v) for k, v in point.items()}
+        if any(x in self.rhs for x in point):      # defined x's: the general route
+            return {x: self.substitute(d, point)
+                    for x, d in zip(point, self.jacobian([expr], list(point))[0])}
+        expr = sm.sympify(expr)
+        key = frozenset(point.items())
+        xs = set(point)
+        roots = {s for s in symbols_in(expr) if s in self.rhs}
+        for s in self._post_order(roots, _CachedFor(self._grad_at, key),
+                                  prune=lambda s: not (self.primitive_deps(s) & xs)):
+            value, grad = self._at_point(self.rhs[s], self.free(s), point, key)
+            if (s, key) not in self._subs:
+                self._subs[(s, key)] = self.zify(value)
+            self._grad_at[(s, key)] = {x: self.zify(d) for x, d in grad.items()}
+        return self._at_point(expr, symbols_in(expr), point, key)[1]
+
+    def _at_point(self, expr, fs, point: dict, key) -> tuple:
+        """(expr, its gradient) at the point, from the values and gradients there of
+        the definitions it holds."""
+        values, seeds = {}, {}
+        for f in fs:
+            if f in point:
+                values[f], seeds[f] = point[f], {f: sm.S.One}
+            elif (f, key) in self._grad_at:
+                values[f] = self._subs[(f, key)]
+                if self._grad_at[(f, key)]:
+                    seeds[f] = self._grad_at[(f, key)]
+        if any(_exact_number(v) for v in values.values()):
+            refuse_huge_powers(expr, values)
+        try:
+            return value_and_gradient(expr, values, seeds)
+        except ValueError as exc:    # sympy's refusal of a function's new argument
+            raise refused_substitution(point, exc) from None
 
     def _diff_shallow(self, expr, x, fs=None) -> sm.Expr:
         """Chain rule one level deep, using the cached derivatives of defined symbols."""

@@ -14,7 +14,8 @@ _ONE, _ZERO = sm.S.One, sm.S.Zero
 
 
 def _function_derivative(f, arg):
-    """d f(arg) / d arg for the elementary functions, or None."""
+    """d f(a) / d a at a = arg for the elementary functions (f an instance of one, at
+    any argument), or None."""
     if isinstance(f, sm.sin):
         return sm.cos(arg)
     if isinstance(f, sm.cos):
@@ -22,7 +23,7 @@ def _function_derivative(f, arg):
     if isinstance(f, sm.tan):
         return 1 + sm.tan(arg) ** 2
     if isinstance(f, sm.exp):
-        return f
+        return sm.exp(arg)
     if isinstance(f, sm.log) and len(f.args) == 1:
         return 1 / arg
     if isinstance(f, sm.asin):
@@ -173,3 +174,86 @@ def gradient(expr: sm.Expr, xs) -> dict:
         return r
 
     return g(sm.sympify(expr))
+
+
+def value_and_gradient(expr: sm.Expr, values: dict, seeds: dict) -> tuple:
+    """expr at a point and its gradient there, in one memoised forward pass: `values`
+    {symbol: its value at the point} for the symbols that take one (the rest stay),
+    `seeds` {symbol: {x: d symbol / d x there}} for those with a nonzero gradient.
+    Each node is put at the point once (as xreplace would) and the chain rule applied
+    to the values, so a factor that vanishes there drops its terms before they are
+    built.  Returns (value, {x: d expr / d x}), zero derivatives left out."""
+    memo: dict = {}
+    takes: dict = {}
+
+    def moves(e) -> bool:
+        r = takes.get(e)
+        if r is None:
+            r = e in values if e.is_Atom else any(moves(a) for a in e.args)
+            takes[e] = r
+        return r
+
+    def scaled(grad: dict, factor) -> dict:
+        return {x: t for x, v in grad.items() if (t := factor * v) != 0}
+
+    def at(e) -> tuple:
+        r = memo.get(e)
+        if r is not None:
+            return r
+        if not moves(e):
+            r = (e, {})
+        elif e.is_Symbol:
+            r = (values[e], seeds.get(e, {}))
+        elif e.is_Add or e.is_Mul:
+            parts = [at(a) for a in e.args]
+            vals = [v for v, _ in parts]
+            grads = [g for _, g in parts]
+            r = (e.func(*vals), _sum_gradient(grads) if e.is_Add
+                 else _product_gradient(vals, grads))
+        elif e.is_Pow and not moves(e.exp):
+            vb, gb = at(e.base)
+            r = (vb ** e.exp, scaled(gb, e.exp * vb ** (e.exp - 1)))
+        elif isinstance(e, sm.Function) and len(e.args) == 1:
+            va, ga = at(e.args[0])
+            outer = _function_derivative(e, va)
+            if outer is None:
+                a = sm.Dummy("a")
+                outer = e.func(a).diff(a).xreplace({a: va})
+            r = (e.func(va), scaled(ga, outer))
+        else:   # no rule here (atan2, a moving exponent, Max): its derivative in each symbol
+            acc: dict = {}
+            for f in e.free_symbols & seeds.keys():
+                partial = diff(e, f).xreplace(values)
+                for x, v in seeds[f].items():
+                    acc.setdefault(x, []).append(partial * v)
+            r = (e.xreplace(values), _totals(acc))
+        memo[e] = r
+        return r
+
+    return at(sm.sympify(expr))
+
+
+def _totals(acc: dict) -> dict:
+    """{x: the sum of its terms} without the sums that are 0."""
+    return {x: t for x, ts in acc.items() if (t := sm.Add(*ts)) != 0}
+
+
+def _sum_gradient(grads: list) -> dict:
+    acc: dict = {}
+    for g in grads:
+        for x, v in g.items():
+            acc.setdefault(x, []).append(v)
+    return _totals(acc)
+
+
+def _product_gradient(vals: list, grads: list) -> dict:
+    """The gradient of a product of factors with these values and gradients: a factor
+    whose value is 0 leaves only its own term (two leave none)."""
+    zeros = [i for i, v in enumerate(vals) if v == 0]
+    acc: dict = {}
+    for i, g in enumerate(grads):
+        if g and (not zeros or zeros == [i]):
+            rest = sm.Mul(*(vals[:i] + vals[i + 1:]))
+            for x, v in g.items():
+                acc.setdefault(x, []).append(rest * v)
+    return _totals(acc)
