@@ -56,3 +56,20 @@ def test_gradient_and_diff_agree():
         for v in (X, Y):
             assert _close(grad.get(v, sm.S.Zero), fastdiff.diff(e, v), {X: 0.2, Y: 0.9,
                                                                         Z: -0.4, A: 1.3})
+
+
+def test_value_and_gradient_at_a_point_equal_sympy_substituting_its_derivatives():
+    # the point: x at 0 (sin(0), x*... vanish there), y at a symbol's value, z's value
+    # an expression in a (a chain: z stands for z(a) with dz/dx = a, dz/dy = 0)
+    rng = random.Random(5)
+    values = {X: sm.S.Zero, Y: A + 1, Z: A**2}
+    seeds = {X: {X: sm.S.One}, Y: {Y: sm.S.One}, Z: {X: A}}
+    for _ in range(60):
+        e = _random_expr(rng, 3)
+        value, grad = fastdiff.value_and_gradient(e, values, seeds)
+        chained = {X: sm.diff(e, X) + sm.diff(e, Z) * A, Y: sm.diff(e, Y)}
+        assert _close(value, e.xreplace(values), {A: 0.45}), e
+        for v in (X, Y):
+            want = chained[v].xreplace(values)
+            assert _close(grad.get(v, sm.S.Zero), want, {A: 0.45}), (e, v)
+        assert set(grad) <= {X, Y}
