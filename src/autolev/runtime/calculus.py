@@ -485,7 +485,7 @@ class Definitions:
             return [[self.diff(e, x) for x in xs] for e in exprs]
         roots = set()
         for e in exprs:
-            roots |= {s for s in e.free_symbols if s in self.rhs}
+            roots |= {s for s in symbols_in(e) if s in self.rhs}
         order = self._post_order(roots, {}, prune=lambda s: not (self.primitive_deps(s)
                                                                   & xset))
         grads: dict = {}          # defined symbol -> {x: derivative (zified)}
@@ -520,7 +520,7 @@ class Definitions:
             grads[s] = out
         rows = []
         for e in exprs:
-            g = gradient(e, ordered(e.free_symbols))
+            g = gradient(e, ordered(symbols_in(e)))
             rows.append([g.get(x, sm.S.Zero) for x in xs])
         return rows
 
@@ -567,7 +567,7 @@ class Definitions:
 
     def _diff_shallow(self, expr, x, fs=None) -> sm.Expr:
         """Chain rule one level deep, using the cached derivatives of defined symbols."""
-        fs = expr.free_symbols if fs is None else fs
+        fs = symbols_in(expr) if fs is None else fs
         terms = [fast_diff(expr, x)] if x in fs else []
         for s in fs:
             if s not in self.rhs:
@@ -617,7 +617,7 @@ class Definitions:
 
     def _dt_shallow(self, expr, cache, through, fs=None) -> sm.Expr:
         terms = []
-        for s in (expr.free_symbols if fs is None else fs):
+        for s in (symbols_in(expr) if fs is None else fs):
             if through(s):
                 ds = cache[s]
             elif s is TIME:
@@ -650,7 +650,7 @@ class Definitions:
 
     def _subs_shallow(self, expr, mapping, key, fs=None) -> sm.Expr:
         repl = dict(mapping)
-        for s in (expr.free_symbols if fs is None else fs):
+        for s in (symbols_in(expr) if fs is None else fs):
             if s not in self.rhs:
                 continue
             if s in mapping:

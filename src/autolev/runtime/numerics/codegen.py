@@ -103,13 +103,16 @@ class Program:
             self._pull_common_factors()
         if lift_into is not None:
             self._lift_constant_parts(lift_into)
-        self._hoist_calls()
-        missing = {s for node in post_order([a[1] for a in self.assignments]
-                                             + self.outputs, set())
-                   for s in node.args if s.is_Symbol and s not in self.names}
+        exprs = [a[1] for a in self.assignments] + self.outputs
+        seen: set = set()
+        # one walk, for the check and the hoisting: each one's nodes not met before
+        new_nodes = [post_order([e], seen) for e in exprs]
+        missing = {s for nodes in new_nodes for node in nodes for s in node.args
+                   if s.is_Symbol and s not in self.names}
         missing |= {e for e in self.outputs if e.is_Symbol and e not in self.names}
         if missing:
             raise AutolevModelError("no value for " + ", ".join(sorted(map(str, missing))))
+        self._hoist_calls(exprs, new_nodes)
         return self
 
     def _pull_common_factors(self) -> None:
@@ -183,31 +186,32 @@ class Program:
             self.names[symbol] = f"{arg}_{n}"
         self.inputs[arg] += [symbol for symbol, _ in self.lifted]
 
-    def _hoist_calls(self) -> None:
+    def _hoist_calls(self, roots: list, new_nodes: list) -> None:
         """Every elementary function call (with shared="all": every subexpression
         worth it) that occurs more than once in the program (cos(q1) in every entry of
         a mass matrix: small expressions stay inline in the definitions) is computed
-        once, into its own variable assigned just before its first use."""
-        shared = _repeated([a[1] for a in self.assignments] + self.outputs,
-                                 _worth_a_variable if self._shared == "all" else
-                                 lambda n: isinstance(n, _HOISTED))
+        once, into its own variable assigned just before its first use.  `roots`: the
+        assignments' expressions and the outputs; `new_nodes`: for each, the compound
+        nodes under it not under an earlier one, each after its arguments."""
+        shared = _repeated(roots, [n for nodes in new_nodes for n in nodes],
+                           _worth_a_variable if self._shared == "all"
+                           else lambda n: isinstance(n, _HOISTED))
         if not shared:
             return
-        done: set = set()
         new: list = []
 
-        def hoist(expr):
+        def hoist(nodes):
             # inner calls first; a subtree met before has its calls assigned already
-            for c in post_order([expr], done):
+            for c in nodes:
                 if c in shared:
                     ident = f"h{len(self.bound)}"
                     new.append((ident, c))
                     self.bound[ident] = c
-        for ident, expr in self.assignments:
-            hoist(expr)
+        for (ident, expr), nodes in zip(self.assignments, new_nodes):
+            hoist(nodes)
             new.append((ident, expr))
-        for e in self.outputs:
-            hoist(e)
+        for nodes in new_nodes[len(self.assignments):]:
+            hoist(nodes)
         self.assignments = new
 
 
@@ -237,14 +241,15 @@ def _worth_a_variable(node) -> bool:
     return node.is_Pow or node.is_Function
 
 
-def _repeated(roots: list, wanted=lambda n: isinstance(n, _HOISTED)) -> set:
-    """The elementary function calls that occur more than once in the trees of
-    `roots`: occurrences flow from each node to its arguments in topological order
-    (counted up to 2), so shared subtrees are not walked again."""
+def _repeated(roots: list, nodes: list, wanted) -> set:
+    """The nodes `wanted` picks that occur more than once in the trees of `roots`
+    (`nodes`: their compound nodes, each after its arguments): occurrences flow from
+    each node to its arguments in topological order (counted up to 2), so shared
+    subtrees are not walked again."""
     count: dict = {}
     for r in roots:
         count[r] = min(2, count.get(r, 0) + 1)
-    for node in reversed(post_order(roots, set())):
+    for node in reversed(nodes):
         k = count[node]
         for a in node.args:
             if not a.is_Atom:
