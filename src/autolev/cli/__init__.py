@@ -7,6 +7,7 @@ import os
 import sys
 
 from .. import __version__
+from . import background
 from ..errors import AutolevError, AutolevInternalError, AutolevSyntaxError
 from .cache import add_cache
 from .check import add_check
@@ -59,6 +60,13 @@ def _warnings_as_notes():
         yield
     finally:
         warnings.showwarning = shown
+
+
+def entry() -> int:
+    """The `autolev` command (`python -m autolev`): main, allowed to leave work to the
+    background once a command's output is done (background.py)."""
+    background.allow()
+    return main()
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from . import background
 from .common import megabytes
 
 
@@ -13,6 +14,7 @@ def cmd_cache(ns: argparse.Namespace) -> int:
     from .. import cachekeys, modelcache
 
     if ns.action == "clear":
+        background.wait_for_every_finishing()
         try:
             count, size = modelcache.clear()
         except OSError as exc:

@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 
 from ..errors import AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError
+from . import background
 
 MODEL_SUFFIXES = (".al",)
 MACRO_SUFFIXES = (".a",)
@@ -39,6 +40,8 @@ def load_model(path: Path, progress=None, before_building=None):
     translation of a model to be built (loader.load_translation)."""
     from ..loader import load_for_run, load_python
     from ..runtime.steps import SlowStep
+    if path.suffix.lower() != ".py":
+        background.wait_for_finishing(path, progress)
     try:
         with SlowStep(progress, f"{path}: reading and forming the model"):
             if path.suffix.lower() == ".py":      # a converted model, as it now reads

@@ -7,6 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from . import background
 from .common import (UsageError, has_matplotlib, load_model, name_values, positive_int,
                      refuse_unknown_names, run_options, specified_values, statement_label)
 from .responses import transcript_text
@@ -17,6 +18,9 @@ def cmd_run(ns: argparse.Namespace) -> int:
     run repeats its run plan when it has one (runplan.py), else may leave one."""
     path = Path(ns.file)
     options = _plan_options(ns, path)
+    progress = None if ns.quiet else sys.stderr
+    if path.suffix.lower() != ".py":
+        background.wait_for_finishing(path, progress)
     if options is not None:
         from ..runplan import KeptOutcome, read_plan
         plan = read_plan(path, options)
@@ -26,7 +30,6 @@ def cmd_run(ns: argparse.Namespace) -> int:
             return plan.status
         if plan is not None:
             return _run_from_plan(plan, path, ns)
-    progress = None if ns.quiet else sys.stderr
     if options is None:
         return _run_from_model(path, ns, progress, None, None)
     from ..runplan import Recorder
@@ -59,6 +62,8 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
         translation = _translation_or_none(path)
         if translation is not None and not translation.code_lines:
             return _responses_instead(path, translation, recorder, options)
+    # the compile for later runs may finish after this command returns (background.py)
+    finishing = background.split_off()
     start = time.monotonic()
     # the note of values lacking is about forming the model: a run plan never says it
     model = load_model(path, progress, None if ns.zero_missing
@@ -87,7 +92,7 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
     load_messages = recorder.take() if recorder is not None else ""
     planned: list = []
     status = _run_and_report(model, commands, overrides, specified_values(model, ns), ns,
-                             path, progress, recorder, planned)
+                             path, progress, recorder, planned, finishing)
     # a command that failed (an integration's failure) is planned, and fails again
     if recorder is not None and len(planned) == len(commands):
         from ..runplan import write_plan
@@ -292,10 +297,13 @@ def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list:
 
 def _run_and_report(model, commands: list, overrides: dict, specified: dict,
                     ns: argparse.Namespace, path: Path, progress, recorder=None,
-                    planned: list | None = None) -> int:
+                    planned: list | None = None, finishing=None) -> int:
     """Run the commands and report each; with `recorder`, each command that a run plan
-    can repeat goes into `planned` with what it printed on stderr."""
+    can repeat goes into `planned` with what it printed on stderr.  With `finishing`
+    (background.Finishing), the command returns once the last run's files are written,
+    and the C its run began in Python compiles on in the background."""
     from ..runtime.errors import AutolevModelError
+    from ..runtime.numerics import rowtext
     from ..runtime.steps import SlowStep
     from ..runtime.tools import program_file_name, safe_stem
     label = statement_label(model, path)
@@ -320,7 +328,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
         quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate or ns.csv or ns.mat),
         overwrite=ns.overwrite,
         missing_values="zero" if ns.zero_missing else "refuse"))
-    for done in runs:
+    for number, done in enumerate(runs, 1):
         if done.error is not None:
             print(f"{label(done.command)}: error: {done.error}", file=sys.stderr)
             status = 1
@@ -334,8 +342,15 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
                 print(f"  wrote {f}")
         status = max(status, _after_run(model, done, out_dir, ns, label(done.command)))
         # a cold run began in Python: its C, for the runs to come (kept with the model)
+        system = done.result.execution.system
+        if finishing is not None and number == len(commands) and system.compiling():
+            if progress is not None:
+                print(f"  {label(done.command)}: its C compiles on in the background, for "
+                      "later runs", file=progress)
+            finishing.detach(status, path)
         with SlowStep(progress, f"{label(done.command)}: compiling its C for later runs"):
-            done.result.execution.system.compiled_loop(wait=True)
+            if system.compiled_loop(wait=True) is not None:
+                rowtext.prepare()       # what the loop writes its rows with
         if recorder is not None:
             from ..runplan import can_plan, planned_command
             messages = recorder.take()

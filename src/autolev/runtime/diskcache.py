@@ -53,15 +53,22 @@ _ENTRY = re.compile(r"(al_[0-9a-f]{24}\.(o|so|dll)|(model|translation|plan)_[0-9
 _SIDE = re.compile(r"(\.mac|\.sha256)?")
 _LEGACY_TEMPORARY = re.compile(r"\.\d+(\.[0-9a-f]+)?\.tmp")     # of earlier versions
 _TEMPORARY = re.compile(r"\.(?P<name>.+)\.\d+\.[0-9a-f]+" + re.escape(TEMPORARY_SUFFIX))
+# held by a run finishing its compile in the background (cli/background.py)
+_LOCK = re.compile(r"finishing_[0-9a-f]{40}\.lock")
 
 
 class CacheFolderError(OSError):
     """The cache folder cannot be used or emptied (the message says why)."""
 
 
+def is_finishing_lock(name: str) -> bool:
+    """The lock of a run finishing its compile in the background (cli/background.py)."""
+    return _LOCK.fullmatch(name) is not None
+
+
 def is_ours(name: str) -> bool:
     """A file name autolev writes into its cache (entry, digest, temporary, tag)."""
-    if name == MARKER:
+    if name == MARKER or _LOCK.fullmatch(name):
         return True
     temporary = _TEMPORARY.fullmatch(name)
     if temporary is not None:
@@ -119,6 +126,12 @@ def cache_dir() -> Path:
                       "folder instead (set AUTOLEV_CACHE to a folder of your own, mode 700)",
                       stacklevel=3)
     return fallback_dir()
+
+
+def lasting_dir() -> Path | None:
+    """The cache folder when it outlasts this process (not the private fallback)."""
+    path = cache_dir()
+    return None if _FALLBACK_CACHE and path == _FALLBACK_CACHE[0] else path
 
 
 def fallback_dir() -> Path:

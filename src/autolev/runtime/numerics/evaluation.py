@@ -105,6 +105,10 @@ class CompiledEvaluation:
         if self.constant_values is not None:
             self.set_constant_values(self.constant_values)
 
+    def compiling(self) -> bool:
+        """Whether the right-hand side's C is still compiling."""
+        return self.rhs_compiling is not None and not self.rhs_compiling.done()
+
     def compiled_loop(self, wait: bool = False):
         """The compiled integration loop, or None while the right-hand side's C is still
         compiling (NumericSystem.compile(background=True)): it replaces the Python one

@@ -102,6 +102,12 @@ def _formatter():
     return fn
 
 
+def prepare() -> None:
+    """Build the formatter now (cached for every model): the compiled loop's rows use
+    it, and a cold run that began in Python did not."""
+    _formatter()
+
+
 def python_rows_text(block) -> str:
     """The same text by the writer of a row at a time (numbers.row, Python's %)."""
     return "".join(row(r) for r in block)

@@ -1,0 +1,182 @@
+"""A cold run's last wait, done in the background: the C compiled for later runs.
+
+A cold `autolev run` integrates in Python while its right-hand side's C compiles, and
+that C is for the runs to come (they start from it, or from a run plan that needs it).
+The user has the files before it is built, so the command returns then: at its start
+it forks (before any thread), the parent waits only until the child says its outputs
+are done and exits with the child's status, and the child goes on without a terminal,
+compiles, and writes the caches.  A later command on the same model waits for that
+child (a lock in the cache folder), so it is warm and nothing is built twice.
+
+Only the `autolev` command does this (`allow`), on POSIX, with a lasting cache; set
+AUTOLEV_FOREGROUND=1 to keep the wait in the foreground.
+"""
+from __future__ import annotations
+
+import atexit
+import hashlib
+import os
+import signal
+import sys
+import threading
+from pathlib import Path
+
+FOREGROUND_VARIABLE = "AUTOLEV_FOREGROUND"
+# the signals a user sends the command: passed on to the child doing the work
+_PASSED_ON = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
+_PR_SET_PDEATHSIG = 1               # linux/prctl.h
+
+_allowed = [False]
+
+
+def allow() -> None:
+    """The process is the `autolev` command itself (not a caller of cli.main)."""
+    _allowed[0] = True
+
+
+def lock_file(model_path: Path) -> Path | None:
+    """The lock a model's finishing child holds, or None without a lasting cache."""
+    from ..runtime import diskcache
+    folder = diskcache.lasting_dir()
+    if folder is None:
+        return None
+    digest = hashlib.sha256(str(model_path.resolve()).encode()).hexdigest()[:40]
+    return folder / f"finishing_{digest}.lock"
+
+
+def wait_for_finishing(model_path: Path, progress) -> None:
+    """Wait while an earlier run of this model finishes its compile in the background
+    (announced on `progress` after two seconds)."""
+    lock = lock_file(model_path) if os.name == "posix" else None
+    if lock is None or not lock.exists():
+        return
+    from ..runtime.steps import SlowStep
+    with SlowStep(progress, f"{model_path}: waiting for its C, compiling since an "
+                            "earlier run"):
+        _wait_on(lock)
+
+
+def wait_for_every_finishing() -> None:
+    """Wait while any run finishes its compile in the background (before emptying the
+    cache: what it writes would come after)."""
+    from ..runtime import diskcache
+    folder = diskcache.lasting_dir() if os.name == "posix" else None
+    if folder is None:
+        return
+    for name in sorted(os.listdir(folder)):
+        if diskcache.is_finishing_lock(name):
+            _wait_on(folder / name)
+
+
+def _wait_on(lock: Path) -> bool:
+    """Wait until no process holds `lock`; False when there is none to wait on."""
+    import fcntl
+    try:
+        fd = os.open(lock, os.O_RDONLY | os.O_NOFOLLOW)
+    except OSError:
+        return False                    # none (the usual case), or not ours to read
+    try:
+        fcntl.flock(fd, fcntl.LOCK_SH)
+    finally:
+        os.close(fd)
+    return True
+
+
+class Finishing:
+    """The child's side: `detach` once the outputs are done."""
+
+    def __init__(self, to_parent: int):
+        self._to_parent = to_parent
+
+    def detach(self, status: int, model_path: Path) -> None:
+        """Give the parent `status` (it exits with it) and go on without a terminal,
+        holding the model's lock until this process ends."""
+        lock = lock_file(model_path)
+        if lock is not None:
+            _hold(lock)
+        for stream in (sys.stdout, sys.stderr, sys.__stdout__, sys.__stderr__):
+            if stream is not None:
+                stream.flush()
+        signal.signal(signal.SIGHUP, signal.SIG_IGN)
+        _die_with_parent(0)
+        nothing = os.open(os.devnull, os.O_RDWR)
+        for fd in (0, 1, 2):
+            os.dup2(nothing, fd)
+        os.close(nothing)
+        os.write(self._to_parent, bytes([min(max(status, 0), 255)]))
+        os.close(self._to_parent)
+
+
+def split_off() -> Finishing | None:
+    """In the `autolev` command on POSIX (no thread running, AUTOLEV_FOREGROUND unset):
+    fork; the parent never returns (it exits with the child's status once the child
+    detaches or ends), the child returns its Finishing.  Else None: no background."""
+    if not _allowed[0] or os.name != "posix" or os.environ.get(FOREGROUND_VARIABLE) \
+            or threading.active_count() != 1:
+        return None
+    from ..runtime import diskcache
+    if diskcache.lasting_dir() is None:
+        return None
+    for stream in (sys.stdout, sys.stderr):
+        stream.flush()
+    parent = os.getpid()
+    readable, writable = os.pipe()
+    child = os.fork()
+    if child == 0:
+        os.close(readable)
+        os.setpgid(0, 0)        # the terminal's Ctrl-C reaches the parent, which passes it on
+        _die_with_parent(signal.SIGTERM)
+        if os.getppid() != parent:      # the parent died before that took effect
+            os._exit(1)
+        return Finishing(writable)
+    os.close(writable)
+    _wait_as_parent(child, readable)
+
+
+def _wait_as_parent(child: int, readable: int):
+    """Pass signals on to the child; exit with the status it sends, or with its own."""
+    def pass_on(signum, _frame):
+        try:
+            os.kill(child, signum)
+        except ProcessLookupError:
+            pass
+    for signum in _PASSED_ON:
+        signal.signal(signum, pass_on)
+    said = os.read(readable, 1)
+    if said:
+        os._exit(said[0])
+    _, how = os.waitpid(child, 0)
+    code = os.waitstatus_to_exitcode(how)
+    if code < 0:                        # killed by a signal: end the same way
+        signal.signal(-code, signal.SIG_DFL)
+        os.kill(os.getpid(), -code)
+        code = 128 - code
+    os._exit(code)
+
+
+def _hold(lock: Path) -> None:
+    """Take the lock (without waiting: another run's child may hold it) until exit."""
+    import fcntl
+    try:
+        fd = os.open(lock, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o600)
+    except OSError:
+        return
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        os.close(fd)
+        return
+
+    def release() -> None:
+        lock.unlink(missing_ok=True)    # then a later run finds nothing to wait for
+        os.close(fd)
+    atexit.register(release)
+
+
+def _die_with_parent(signum: int) -> None:
+    """Linux: the child gets `signum` when the parent dies (0: no longer)."""
+    if not sys.platform.startswith("linux"):
+        return
+    import ctypes
+    libc = ctypes.CDLL(None, use_errno=True)
+    libc.prctl(_PR_SET_PDEATHSIG, int(signum), 0, 0, 0)

@@ -1,0 +1,99 @@
+"""A cold `autolev run` returns once its files are written; the C it compiles for later
+runs finishes in the background (cli/background.py), and the next command on the
+model waits for it.  A compiler that takes its time (a wrapper sleeping before gcc)
+keeps the compile pending when the run's files are done."""
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+HARMONIC = Path(__file__).parent / "data" / "numerics" / "harmonic.al"
+SLOW = 4        # seconds the link sleeps: longer than the model's Python run
+
+pytestmark = pytest.mark.skipif(shutil.which("gcc") is None or os.name != "posix",
+                                reason="needs gcc and POSIX (fork, flock)")
+
+
+@pytest.fixture
+def setting(tmp_path):
+    """(model, environment): a copy of harmonic.al, a private cache, a slow compiler."""
+    model = tmp_path / "harmonic.al"
+    shutil.copy(HARMONIC, model)
+    slow_cc = tmp_path / "slow-cc"
+    # the loop's shared object goes into the right-hand side's library only
+    slow_cc.write_text(f"#!/bin/sh\ncase \"$*\" in *shared.o*) sleep {SLOW};; esac\n"
+                       f"exec {shutil.which('gcc')} \"$@\"\n")
+    slow_cc.chmod(0o755)
+    env = dict(os.environ, AUTOLEV_CACHE=str(tmp_path / "cache"), CC=str(slow_cc),
+               AUTOLEV_NO_MODEL_CACHE="0")
+    env.pop("AUTOLEV_FOREGROUND", None)
+    return model, env
+
+
+def autolev(env, *args):
+    return subprocess.run([sys.executable, "-m", "autolev", *map(str, args)],
+                          capture_output=True, text=True, env=env)
+
+
+def cache_names(env) -> list[str]:
+    return sorted(os.listdir(env["AUTOLEV_CACHE"]))
+
+
+def libraries(env) -> list[str]:
+    return [n for n in cache_names(env) if n.endswith(".so")]
+
+
+def locks(env) -> list[str]:
+    return [n for n in cache_names(env) if n.startswith("finishing_")]
+
+
+def test_a_cold_run_returns_before_its_c_and_the_next_run_waits_for_it(setting, tmp_path):
+    model, env = setting
+    first = autolev(env, "run", model, "--out", tmp_path / "one")
+    assert first.returncode == 0, first.stderr
+    assert "in Python (its C was compiling)" in first.stdout
+    assert "its C compiles on in the background, for later runs" in first.stderr
+    # returned with the right-hand side's compile still going (the outputs' C is
+    # built first), its child holding the model's lock
+    before = libraries(env)
+    assert len(locks(env)) == 1
+
+    second = autolev(env, "run", model, "--out", tmp_path / "two")
+    assert second.returncode == 0, second.stderr
+    # it waited, then repeated the plan the first run's child left: the compiled loop
+    assert "(its run plan)" in second.stdout and "in Python" not in second.stdout
+    assert len(libraries(env)) > len(before) and locks(env) == []
+    assert (tmp_path / "two" / "harmonic.1").read_text() == \
+        (tmp_path / "one" / "harmonic.1").read_text()
+
+
+def test_a_failing_run_gives_its_status_and_message_before_its_c(setting, tmp_path):
+    model, env = setting
+    failed = autolev(env, "run", model, "--set", "M=0", "--out", tmp_path / "out")
+    assert failed.returncode == 1
+    assert "singular" in failed.stderr.lower() or "not finite" in failed.stderr, failed.stderr
+    assert "in the background" in failed.stderr and locks(env)
+    again = autolev(env, "run", model, "--set", "M=0", "--out", tmp_path / "out")
+    assert again.returncode == 1
+    assert again.stderr.splitlines()[-1] in failed.stderr
+
+
+def test_autolev_foreground_keeps_the_wait_in_the_command(setting, tmp_path):
+    model, env = setting
+    done = autolev(dict(env, AUTOLEV_FOREGROUND="1"), "run", model, "--out", tmp_path / "out")
+    assert done.returncode == 0, done.stderr
+    assert "in the background" not in done.stderr
+    assert libraries(env) and locks(env) == []
+
+
+def test_emptying_the_cache_waits_for_a_compile_in_the_background(setting, tmp_path):
+    model, env = setting
+    assert autolev(env, "run", model, "--out", tmp_path / "out").returncode == 0
+    assert locks(env)
+    cleared = autolev(env, "cache", "clear")
+    assert cleared.returncode == 0, cleared.stderr
+    # what the child wrote came before the emptying, not after it
+    assert cache_names(env) == ["CACHEDIR.TAG"]
