@@ -67,7 +67,7 @@ class PlannedSystem(CompiledEvaluation):
         self.degree_columns = [list(d) for d in system.degree_columns]
         self.encode_shapes = list(system.encode_shapes)
         self.rhs_function, self.output_function = system.rhs_function, system.output_function
-        self.rhs_compiling = None
+        self.rhs_compiling = self.outputs_compiling = None
         self.extra_functions = dict(system.extra_functions)
         # only a sweep of a constant evaluates them again: then compiled Python, which
         # reads back without sympy (a first evaluation's walk needs the expressions)

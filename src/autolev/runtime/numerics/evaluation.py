@@ -29,8 +29,9 @@ class CompiledEvaluation:
     ({name: (function, size)}); solved (the unknowns the caller supplies at output
     time); mass_structure (how the mass matrix is factored if it is symmetric, or None:
     massmatrix.MassStructure); _factoring (the structure at the constants set, or None);
-    constant_values, specified_values, specified_functions; rhs_compiling (the
-    right-hand side's C being compiled while its Python runs, or None);
+    constant_values, specified_values, specified_functions; rhs_compiling and
+    outputs_compiling (the right-hand side's and the outputs' C being compiled while
+    their Python runs, or None);
     constants_function and derived_constants (the constants computed from the
     parameters, and how many); pivot_count (a recursion's pivots, whose values and
     entries are the last outputs of the right-hand side, or 0)."""
@@ -86,33 +87,39 @@ class CompiledEvaluation:
 
     # -- pickling (a NumericSystem with its model, a run plan's system alone) -------------
     _UNPICKLED = ("loop", "_rhs_out", "_py", "_py_ctx", "specified_functions",
-                  "rhs_compiling", "_factoring")
+                  "rhs_compiling", "outputs_compiling", "_factoring")
 
     def __getstate__(self) -> dict:
         """What rebuilds the system: its expressions (a NumericSystem's) and its
         functions' sources; not the loaded libraries, nor a run's specified functions.
-        A right-hand side still compiling is waited for: the system kept is the
-        compiled one."""
+        C still compiling is waited for: the system kept is the compiled one."""
         self.compiled_loop(wait=True)
         return {k: v for k, v in self.__dict__.items() if k not in self._UNPICKLED}
 
     def __setstate__(self, state: dict) -> None:
         self.__dict__.update(state)
         self.specified_functions = []
-        self.rhs_compiling = None
+        self.rhs_compiling = self.outputs_compiling = None
         self._factoring = None
         self._bind_loop()
         if self.constant_values is not None:
             self.set_constant_values(self.constant_values)
 
     def compiling(self) -> bool:
-        """Whether the right-hand side's C is still compiling."""
-        return self.rhs_compiling is not None and not self.rhs_compiling.done()
+        """Whether C of the right-hand side or the outputs is still compiling."""
+        return any(pending is not None and not pending.done()
+                   for pending in (self.rhs_compiling, self.outputs_compiling))
 
     def compiled_loop(self, wait: bool = False):
         """The compiled integration loop, or None while the right-hand side's C is still
         compiling (NumericSystem.compile(background=True)): it replaces the Python one
-        as soon as it is built (`wait`: once it is)."""
+        as soon as it is built (`wait`: once it is), as the outputs' C replaces theirs."""
+        pending = self.outputs_compiling
+        if pending is not None and (wait or pending.done()):
+            self.outputs_compiling = None
+            function = pending.function()
+            if function is not None:
+                self.output_function = function
         pending = self.rhs_compiling
         if pending is not None and (wait or pending.done()):
             self.rhs_compiling = None

@@ -113,6 +113,7 @@ class NumericSystem(CompiledEvaluation):
         self._integrate = integrate
         self.compiled = False
         self.rhs_compiling = None      # the C right-hand side being built (compile)
+        self.outputs_compiling = None  # and the outputs' C
         self.constants_function = self.rhs_function = self.output_function = None
         self.extra_functions: dict = {}
         self.unknown_positions = [self.states.index(lower_derivative(d))
@@ -226,10 +227,15 @@ class NumericSystem(CompiledEvaluation):
                     rhs, backend, "autolev_rhs", extra_source=loop_source,
                     extra_flags=loop_flags)
         inputs_out = dict(inputs, a=accel_inputs)
-        # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
-        self.output_function = compile_program(
-            codegen.Program(inputs_out, self.output_exprs, defs, fixed).build(integrate),
-            backend if integrate else "python", "autolev_outputs")
+        outputs = codegen.Program(inputs_out, self.output_exprs, defs, fixed).build(integrate)
+        if integrate and self.rhs_compiling is not None:
+            # the outputs' C too: the first rows are the Python's (the same numbers)
+            self.output_function = compile_program(outputs, "python", "autolev_outputs")
+            self.outputs_compiling = CompilingInBackground(outputs, "autolev_outputs")
+        else:
+            # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
+            self.output_function = compile_program(outputs, backend if integrate
+                                                   else "python", "autolev_outputs")
         self.extra_functions = {
             k: (compile_program(codegen.Program(inputs_out, v, defs, fixed).build(), backend,
                                 f"autolev_{k}"), len(v))
