@@ -11,8 +11,11 @@ fresh process (`python -m autolev run FILE -q`) with its own cache folder (AUTOL
     missing   an empty cache, no values by rule: the time until the run names the
               constants without a value (its note, before the model is formed; the
               run is then stopped), for a model that needs values by rule
-    cold      an empty cache, the model's values: translate, form, build, run, write
-    warm      the same cache again, the least of --warm runs
+    cold      an empty cache, the model's values: translate, form, build, run, write,
+              until the command returns (its C for later runs may compile on in the
+              background: autolev run's own, cli/background.py)
+    warm      the same cache again, the least of --warm runs (the first waits for
+              that compile)
     exit      the cold run's exit status (0 ran; 1 a diagnostic, e.g. singular at T = 0)
 --against OLD/src measures another checkout's autolev too, model by model right
 before this one (side by side: the machine's load falls on both), and prints
@@ -147,10 +150,12 @@ def main(argv=None) -> int:
             start = time.monotonic()
             work = Path(scratch) / ident
             work.mkdir(parents=True)
-            # the values first (their rounds fill a cache of their own, thrown away)
-            os.environ["AUTOLEV_CACHE"] = str(work / "values-cache")
+            # the values first (their rounds fill a cache of their own, thrown away, and
+            # wait for their compiles: none goes on beside the timed runs)
+            os.environ.update(AUTOLEV_CACHE=str(work / "values-cache"), AUTOLEV_FOREGROUND="1")
             _, values = journeys.run_with_values(ident, path, journeys.read_model(path),
                                                  companion, work, ns.limit, {})
+            del os.environ["AUTOLEV_FOREGROUND"]
             row = {"id": ident, "values": values.source}
             for tree, src in trees:
                 row[tree] = measure(src, path, companion, values, ns.warm, ns.limit, work)

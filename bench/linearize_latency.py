@@ -45,9 +45,9 @@ def value_of(name: str) -> float:
     return 0.5 + 0.5 * int.from_bytes(digest[:6], "big") / 2.0 ** 48
 
 
-def autolev(src: Path, args: list, cache: Path, limit: float):
+def autolev(src: Path, args: list, cache: Path, limit: float, **more_env):
     """(seconds, completed process) of `python -m autolev ARGS` on the tree `src`."""
-    env = dict(os.environ, AUTOLEV_CACHE=str(cache), PYTHONPATH=str(src))
+    env = dict(os.environ, AUTOLEV_CACHE=str(cache), PYTHONPATH=str(src), **more_env)
     start = time.perf_counter()
     try:
         done = subprocess.run([sys.executable, "-m", "autolev", *args], env=env,
@@ -62,8 +62,9 @@ def filled_in(src: Path, model: Path, work: Path, limit: float) -> Path | None:
     without an INPUT value given value_of."""
     cache = Path(tempfile.mkdtemp(prefix="autolev-lin-"))
     try:
+        # in the foreground: no compile left running into the cache removed below
         autolev(src, ["run", str(model), "--out", str(work / "template"), "--tfinal", "0"],
-                cache, limit)
+                cache, limit, AUTOLEV_FOREGROUND="1")
     finally:
         shutil.rmtree(cache, ignore_errors=True)
     templates = sorted((work / "template").glob("*-template.in"))

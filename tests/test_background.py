@@ -56,8 +56,8 @@ def test_a_cold_run_returns_before_its_c_and_the_next_run_waits_for_it(setting, 
     assert first.returncode == 0, first.stderr
     assert "in Python (its C was compiling)" in first.stdout
     assert "its C compiles on in the background, for later runs" in first.stderr
-    # returned with the right-hand side's compile still going (the outputs' C is
-    # built first), its child holding the model's lock
+    # returned with the right-hand side's compile still going (the outputs' library
+    # may be there), its child holding the model's lock
     before = libraries(env)
     assert len(locks(env)) == 1
 
