@@ -1,11 +1,13 @@
 """A cold `autolev run` returns once its files are written; the C it compiles for later
 runs finishes in the background (cli/background.py), and the next command on the
-model waits for it.  A compiler that takes its time (a wrapper sleeping before gcc)
-keeps the compile pending when the run's files are done."""
+model waits for it.  A compiler that takes its time linking the right-hand side with
+the integration loop (a wrapper sleeping before gcc) keeps that compile pending when
+the run's files are done."""
 import os
 import shutil
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -97,3 +99,34 @@ def test_emptying_the_cache_waits_for_a_compile_in_the_background(setting, tmp_p
     assert cleared.returncode == 0, cleared.stderr
     # what the child wrote came before the emptying, not after it
     assert cache_names(env) == ["CACHEDIR.TAG"]
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc and prctl: Linux")
+def test_the_work_ends_with_a_killed_command(setting, tmp_path):
+    # the command is the parent; the child doing the work dies with it (SIGKILL cannot
+    # be passed on: the child is told by the kernel)
+    model, env = setting
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", "autolev", "run", model, "--out", out,
+                             "--tfinal", "1e6", "--method", "rk45"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children")
+    deadline = time.monotonic() + 60
+    while not children.read_text().split():
+        assert proc.poll() is None and time.monotonic() < deadline
+        time.sleep(0.05)
+    (child,) = children.read_text().split()
+    proc.kill()
+    proc.wait()
+    deadline = time.monotonic() + 30
+    while Path(f"/proc/{child}").exists() and _alive(child):
+        assert time.monotonic() < deadline, "the child outlived the command"
+        time.sleep(0.1)
+
+
+def _alive(pid: str) -> bool:
+    """Not a zombie waiting for its new parent to reap it."""
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().split(") ")[1][0] != "Z"
+    except (OSError, IndexError):
+        return False

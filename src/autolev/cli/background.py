@@ -4,8 +4,8 @@ A cold `autolev run` integrates in Python while its right-hand side's C compiles
 that C is for the runs to come (they start from it, or from a run plan that needs it).
 The user has the files before it is built, so the command returns then: at its start
 it forks (before any thread), the parent waits only until the child says its outputs
-are done and exits with the child's status, and the child goes on without a terminal,
-compiles, and writes the caches.  A later command on the same model waits for that
+are done and exits with the child's status, and the child goes on with its output
+closed, compiles, and writes the caches.  A later command on the same model waits for that
 child (a lock in the cache folder), so it is warm and nothing is built twice.
 
 Only the `autolev` command does this (`allow`), on POSIX, with a lasting cache; set
@@ -68,18 +68,17 @@ def wait_for_every_finishing() -> None:
             _wait_on(folder / name)
 
 
-def _wait_on(lock: Path) -> bool:
-    """Wait until no process holds `lock`; False when there is none to wait on."""
+def _wait_on(lock: Path) -> None:
+    """Wait until no process holds `lock`."""
     import fcntl
     try:
         fd = os.open(lock, os.O_RDONLY | os.O_NOFOLLOW)
     except OSError:
-        return False                    # none (the usual case), or not ours to read
+        return                          # gone meanwhile, or not ours to read
     try:
         fcntl.flock(fd, fcntl.LOCK_SH)
     finally:
         os.close(fd)
-    return True
 
 
 class Finishing:
@@ -89,8 +88,8 @@ class Finishing:
         self._to_parent = to_parent
 
     def detach(self, status: int, model_path: Path) -> None:
-        """Give the parent `status` (it exits with it) and go on without a terminal,
-        holding the model's lock until this process ends."""
+        """Give the parent `status` (it exits with it) and go on with stdin, stdout and
+        stderr closed (/dev/null), holding the model's lock until this process ends."""
         lock = lock_file(model_path)
         if lock is not None:
             _hold(lock)
@@ -120,8 +119,16 @@ def split_off() -> Finishing | None:
     for stream in (sys.stdout, sys.stderr):
         stream.flush()
     parent = os.getpid()
-    readable, writable = os.pipe()
-    child = os.fork()
+    try:
+        readable, writable = os.pipe()
+    except OSError:                     # out of descriptors: the command waits itself
+        return None
+    try:
+        child = os.fork()
+    except OSError:                     # out of processes or memory: the same
+        os.close(readable)
+        os.close(writable)
+        return None
     if child == 0:
         os.close(readable)
         os.setpgid(0, 0)        # the terminal's Ctrl-C reaches the parent, which passes it on

@@ -22,6 +22,11 @@ def pivot_ratios(rhs_out: np.ndarray, pivot_count: int) -> np.ndarray:
         return pivots / rhs_out[end - pivot_count:]
 
 
+def _ready(pending, wait: bool) -> bool:
+    """Whether a background compile (or None) is to be taken now: built, or waited for."""
+    return pending is not None and (wait or pending.done())
+
+
 class CompiledEvaluation:
     """Evaluation of compiled functions, over what a subclass holds: nstate; _n and
     unknown_positions (the accelerations M a = f solves, and where they go in the
@@ -114,15 +119,11 @@ class CompiledEvaluation:
         """The compiled integration loop, or None while the right-hand side's C is still
         compiling (NumericSystem.compile(background=True)): it replaces the Python one
         as soon as it is built (`wait`: once it is), as the outputs' C replaces theirs."""
-        pending = self.outputs_compiling
-        if pending is not None and (wait or pending.done()):
-            self.outputs_compiling = None
-            function = pending.function()
-            if function is not None:
-                self.output_function = function
-        pending = self.rhs_compiling
-        if pending is not None and (wait or pending.done()):
-            self.rhs_compiling = None
+        if _ready(self.outputs_compiling, wait):
+            pending, self.outputs_compiling = self.outputs_compiling, None
+            self.output_function = pending.function() or self.output_function
+        if _ready(self.rhs_compiling, wait):
+            pending, self.rhs_compiling = self.rhs_compiling, None
             function = pending.function()
             if function is not None:
                 self.rhs_function = function
