@@ -5,6 +5,7 @@ the integration loop (a wrapper sleeping before gcc) keeps that compile pending 
 the run's files are done."""
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -130,3 +131,37 @@ def _alive(pid: str) -> bool:
         return Path(f"/proc/{pid}/stat").read_text().split(") ")[1][0] != "Z"
     except (OSError, IndexError):
         return False
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
+def test_ctrl_z_stops_the_work_with_the_command_and_fg_goes_on(setting, tmp_path):
+    model, env = setting
+    proc = subprocess.Popen([sys.executable, "-m", "autolev", "run", model, "--out",
+                             tmp_path / "out", "--tfinal", "1e6", "--method", "rk45"],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    try:
+        children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children")
+        deadline = time.monotonic() + 60
+        while not children.read_text().split():
+            assert proc.poll() is None and time.monotonic() < deadline
+            time.sleep(0.05)
+        (child,) = children.read_text().split()
+        proc.send_signal(signal.SIGTSTP)
+        _wait_for_state(child, "T")
+        _wait_for_state(str(proc.pid), "T")
+        proc.send_signal(signal.SIGCONT)
+        _wait_for_state(child, "RS")
+    finally:
+        proc.kill()
+        proc.wait()
+
+
+def _wait_for_state(pid: str, states: str) -> None:
+    """Until the process is in one of `states` (/proc's letters: T stopped, R, S)."""
+    deadline = time.monotonic() + 30
+    while True:
+        state = Path(f"/proc/{pid}/stat").read_text().split(") ")[1][0]
+        if state in states:
+            return
+        assert time.monotonic() < deadline, f"{pid} stays {state}, not {states}"
+        time.sleep(0.05)

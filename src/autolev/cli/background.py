@@ -147,8 +147,17 @@ def _wait_as_parent(child: int, readable: int):
             os.kill(child, signum)
         except ProcessLookupError:
             pass
+
+    def stop_both(_signum, _frame):     # Ctrl-Z: the work stops with the command
+        pass_on(signal.SIGSTOP, None)
+        signal.signal(signal.SIGTSTP, signal.SIG_DFL)
+        os.kill(os.getpid(), signal.SIGTSTP)
+        # continued (fg, bg): the work goes on too
+        signal.signal(signal.SIGTSTP, stop_both)
+        pass_on(signal.SIGCONT, None)
     for signum in _PASSED_ON:
         signal.signal(signum, pass_on)
+    signal.signal(signal.SIGTSTP, stop_both)
     said = os.read(readable, 1)
     if said:
         os._exit(said[0])
