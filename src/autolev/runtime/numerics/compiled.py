@@ -98,9 +98,11 @@ class CompilingInBackground:
     warning: the caller stays with Python)."""
 
     def __init__(self, prog: Program, name: str, extra_source: str = "",
-                 extra_flags: tuple = ()):
+                 extra_flags: tuple = (), after: CompilingInBackground | None = None):
+        """`after`: a compile to finish first (the cores go to what is needed first)."""
         from . import codegen          # (sympy) the source is printed here, the rest there
         self.name = name
+        self._after = after
         self._source, self._recipe = codegen.c_program(prog, name, extra_source, extra_flags)
         self._call = None
         self._refused: clibrary.CompileError | None = None
@@ -110,6 +112,8 @@ class CompilingInBackground:
         self._thread.start()
 
     def _build(self) -> None:
+        if self._after is not None:
+            self._after._thread.join()
         try:
             self._call = clibrary.c_function(self._source, *self._recipe)
         except clibrary.CompileError as exc:

@@ -119,9 +119,7 @@ class CompiledEvaluation:
         """The compiled integration loop, or None while the right-hand side's C is still
         compiling (NumericSystem.compile(background=True)): it replaces the Python one
         as soon as it is built (`wait`: once it is), as the outputs' C replaces theirs."""
-        if _ready(self.outputs_compiling, wait):
-            pending, self.outputs_compiling = self.outputs_compiling, None
-            self.output_function = pending.function() or self.output_function
+        self._take_outputs(wait)
         if _ready(self.rhs_compiling, wait):
             pending, self.rhs_compiling = self.rhs_compiling, None
             function = pending.function()
@@ -131,6 +129,12 @@ class CompiledEvaluation:
                 if self.constant_values is not None:
                     self.set_constant_values(self.constant_values)
         return self.loop
+
+    def _take_outputs(self, wait: bool) -> None:
+        """The outputs' C in place of their Python once it is built (or waited for)."""
+        if _ready(self.outputs_compiling, wait):
+            pending, self.outputs_compiling = self.outputs_compiling, None
+            self.output_function = pending.function() or self.output_function
 
     def _fill_specified(self, t, x) -> np.ndarray:
         s = self.specified_values
@@ -224,6 +228,7 @@ class CompiledEvaluation:
 
     def outputs(self, t: float, x=(), xdot=None, solved=()) -> np.ndarray:
         """Every output column and ENCODE value at (t, x), in internal units."""
+        self._take_outputs(False)
         return self._call(self.output_function, self.n_outputs, t, x, xdot, solved)
 
     def outputs_rows(self, times: np.ndarray, states: np.ndarray) -> tuple:
@@ -231,6 +236,7 @@ class CompiledEvaluation:
         x columns, and each row's last_conditioning() or None); the accelerations solved at
         each row (NaN where M is singular).  Rows whose specified quantities are Python
         functions of (t, x) go one by one."""
+        self._take_outputs(False)
         n, ns = self._n, self.nstate
         count = len(times)
         out = np.empty((count, self.n_outputs))

@@ -229,9 +229,11 @@ class NumericSystem(CompiledEvaluation):
         inputs_out = dict(inputs, a=accel_inputs)
         outputs = codegen.Program(inputs_out, self.output_exprs, defs, fixed).build(integrate)
         if integrate and self.rhs_compiling is not None:
-            # the outputs' C too: the first rows are the Python's (the same numbers)
+            # the outputs' C too, once the right-hand side's (which the loop waits for)
+            # is built: the first rows are the Python's (the same numbers)
             self.output_function = compile_program(outputs, "python", "autolev_outputs")
-            self.outputs_compiling = CompilingInBackground(outputs, "autolev_outputs")
+            self.outputs_compiling = CompilingInBackground(outputs, "autolev_outputs",
+                                                           after=self.rhs_compiling)
         else:
             # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
             self.output_function = compile_program(outputs, backend if integrate
