@@ -123,13 +123,17 @@ def split_off() -> Finishing | None:
         readable, writable = os.pipe()
     except OSError:                     # out of descriptors: the command waits itself
         return None
+    # held until the parent passes them on: none may come between the fork and that
+    unblock = signal.pthread_sigmask(signal.SIG_BLOCK, _PASSED_ON + (signal.SIGTSTP,))
     try:
         child = os.fork()
     except OSError:                     # out of processes or memory: the same
+        signal.pthread_sigmask(signal.SIG_SETMASK, unblock)
         os.close(readable)
         os.close(writable)
         return None
     if child == 0:
+        signal.pthread_sigmask(signal.SIG_SETMASK, unblock)
         os.close(readable)
         os.setpgid(0, 0)        # the terminal's Ctrl-C reaches the parent, which passes it on
         _die_with_parent(signal.SIGTERM)
@@ -137,11 +141,12 @@ def split_off() -> Finishing | None:
             os._exit(1)
         return Finishing(writable)
     os.close(writable)
-    _wait_as_parent(child, readable)
+    _wait_as_parent(child, readable, unblock)
 
 
-def _wait_as_parent(child: int, readable: int):
-    """Pass signals on to the child; exit with the status it sends, or with its own."""
+def _wait_as_parent(child: int, readable: int, unblock):
+    """Pass signals on to the child (those held since the fork first); exit with the
+    status it sends, or with its own."""
     def pass_on(signum, _frame):
         try:
             os.kill(child, signum)
@@ -158,6 +163,7 @@ def _wait_as_parent(child: int, readable: int):
     for signum in _PASSED_ON:
         signal.signal(signum, pass_on)
     signal.signal(signal.SIGTSTP, stop_both)
+    signal.pthread_sigmask(signal.SIG_SETMASK, unblock)
     said = os.read(readable, 1)
     if said:
         os._exit(said[0])
