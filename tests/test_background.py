@@ -102,12 +102,8 @@ def test_emptying_the_cache_waits_for_a_compile_in_the_background(setting, tmp_p
     assert cache_names(env) == ["CACHEDIR.TAG"]
 
 
-@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc and prctl: Linux")
-def test_the_work_ends_with_a_killed_command(setting, tmp_path):
-    # the command is the parent; the child doing the work dies with it (SIGKILL cannot
-    # be passed on: the child is told by the kernel)
-    model, env = setting
-    out = tmp_path / "out"
+def long_run(model, env, out) -> tuple[subprocess.Popen, str]:
+    """A run of a million seconds in Python's RK45, and the pid of its child (/proc)."""
     proc = subprocess.Popen([sys.executable, "-m", "autolev", "run", model, "--out", out,
                              "--tfinal", "1e6", "--method", "rk45"],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
@@ -117,6 +113,15 @@ def test_the_work_ends_with_a_killed_command(setting, tmp_path):
         assert proc.poll() is None and time.monotonic() < deadline
         time.sleep(0.05)
     (child,) = children.read_text().split()
+    return proc, child
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc and prctl: Linux")
+def test_the_work_ends_with_a_killed_command(setting, tmp_path):
+    # the command is the parent; the child doing the work dies with it (SIGKILL cannot
+    # be passed on: the child is told by the kernel)
+    model, env = setting
+    proc, child = long_run(model, env, tmp_path / "out")
     proc.kill()
     proc.wait()
     deadline = time.monotonic() + 30
@@ -136,16 +141,8 @@ def _alive(pid: str) -> bool:
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
 def test_ctrl_z_stops_the_work_with_the_command_and_fg_goes_on(setting, tmp_path):
     model, env = setting
-    proc = subprocess.Popen([sys.executable, "-m", "autolev", "run", model, "--out",
-                             tmp_path / "out", "--tfinal", "1e6", "--method", "rk45"],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    proc, child = long_run(model, env, tmp_path / "out")
     try:
-        children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children")
-        deadline = time.monotonic() + 60
-        while not children.read_text().split():
-            assert proc.poll() is None and time.monotonic() < deadline
-            time.sleep(0.05)
-        (child,) = children.read_text().split()
         proc.send_signal(signal.SIGTSTP)
         _wait_for_state(child, "T")
         _wait_for_state(str(proc.pid), "T")
