@@ -103,9 +103,11 @@ def test_emptying_the_cache_waits_for_a_compile_in_the_background(setting, tmp_p
 
 
 def long_run(model, env, out) -> tuple[subprocess.Popen, str]:
-    """A run of a million seconds in Python's RK45, and the pid of its child (/proc)."""
+    """A run of a million seconds in Python's RK45, and the pid of its child (/proc).
+    The command has a process group of its own whose parent is the test's: a job, as a
+    shell makes (the kernel ignores Ctrl-Z in an orphaned group, as CI's may be)."""
     proc = subprocess.Popen([sys.executable, "-m", "autolev", "run", model, "--out", out,
-                             "--tfinal", "1e6", "--method", "rk45"],
+                             "--tfinal", "1e6", "--method", "rk45"], process_group=0,
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
     children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children")
     deadline = time.monotonic() + 60
