@@ -159,7 +159,7 @@ def test_taylor_in_several_variables_through_definitions_to_second_order():
 
 def test_first_order_taylor_is_the_gradient_at_the_point_through_definitions():
     # order 1 takes each definition's value and gradient at the point in one pass
-    # (Definitions.gradient_at): factors vanishing there (SIN(q)*..., u*...), a point
+    # (Definitions.at_point): factors vanishing there (SIN(q)*..., u*...), a point
     # given by a constant, atan2 and MAX (no forward rule: their partials) and a
     # definition whose gradient there is 0 while its value is not (W2 at q=0)
     ns = build("AUTOZ ON\nVARIABLES q, u, r, dq, du, dr\nCONSTANTS c, u0\n"

@@ -135,10 +135,9 @@ class AlgebraMixin:
 
         def one(e):
             if hi == 1 and lo <= 1:     # the linear terms: the gradient at the point
-                grad = self.defs.gradient_at(e, at)
+                value, grad = self.defs.at_point(e, at)
                 linear = sm.Add(*[d * grad.get(var, 0) for var, d in steps])
-                terms = ([self.defs.substitute(e, at)] if lo == 0 else []) + [linear]
-                return sm.Add(*terms).xreplace(increments)
+                return (linear + value if lo == 0 else linear).xreplace(increments)
             total = []
             term = sm.sympify(e)
             factorial = 1

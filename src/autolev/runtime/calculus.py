@@ -524,17 +524,19 @@ class Definitions:
             rows.append([g.get(x, sm.S.Zero) for x in xs])
         return rows
 
-    def gradient_at(self, expr, point: Mapping) -> dict:
-        """{x: d expr / d x at the point} for the symbols x of `point` ({x: value}), in
-        one forward pass over the definitions that depend on them: each is put at the
-        point and differentiated there at once (`value_and_gradient`), so what vanishes
-        at the point (sin(0), speeds set to 0) drops out before the chain rule
-        multiplies it; differentiating everywhere and then substituting builds every
-        derivative in full first.  The values there fill `substitute`'s cache."""
+    def at_point(self, expr, point: Mapping) -> tuple:
+        """(expr at the point, {x: d expr / d x there}) for the symbols x of `point`
+        ({x: value}), in one forward pass over the definitions that depend on them:
+        each is put at the point and differentiated there at once
+        (`value_and_gradient`), so what vanishes at the point (sin(0), speeds set to 0)
+        drops out before the chain rule multiplies it; differentiating everywhere and
+        then substituting builds every derivative in full first.  The values there
+        fill `substitute`'s cache."""
         point = {sm.sympify(k): sm.sympify(v) for k, v in point.items()}
         if any(x in self.rhs for x in point):      # defined x's: the general route
-            return {x: self.substitute(d, point)
-                    for x, d in zip(point, self.jacobian([expr], list(point))[0])}
+            return self.substitute(expr, point), {
+                x: self.substitute(d, point)
+                for x, d in zip(point, self.jacobian([expr], list(point))[0])}
         expr = sm.sympify(expr)
         key = frozenset(point.items())
         xs = set(point)
@@ -545,7 +547,7 @@ class Definitions:
             if (s, key) not in self._subs:
                 self._subs[(s, key)] = self.zify(value)
             self._grad_at[(s, key)] = {x: self.zify(d) for x, d in grad.items()}
-        return self._at_point(expr, symbols_in(expr), point, key)[1]
+        return self._at_point(expr, symbols_in(expr), point, key)
 
     def _at_point(self, expr, fs, point: dict, key) -> tuple:
         """(expr, its gradient) at the point, from the values and gradients there of
