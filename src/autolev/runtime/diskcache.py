@@ -68,7 +68,7 @@ def is_finishing_lock(name: str) -> bool:
 
 def is_ours(name: str) -> bool:
     """A file name autolev writes into its cache (entry, digest, temporary, tag)."""
-    if name == MARKER or _LOCK.fullmatch(name):
+    if name == MARKER or is_finishing_lock(name):
         return True
     temporary = _TEMPORARY.fullmatch(name)
     if temporary is not None:
