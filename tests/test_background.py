@@ -164,3 +164,55 @@ def _wait_for_state(pid: str, states: str) -> None:
             return
         assert time.monotonic() < deadline, f"{pid} stays {state}, not {states}"
         time.sleep(0.05)
+
+
+# -- what a kept plan answers: the inputs as the run read them ----------------------
+def _rows_of_a_fresh_run(model, args, env, out) -> str:
+    """The rows a run of `model` writes in an empty cache, in the foreground."""
+    fresh = dict(env, AUTOLEV_CACHE=str(out) + "-cache", AUTOLEV_FOREGROUND="1")
+    done = autolev(fresh, "run", model, *args, "--out", out)
+    assert done.returncode == 0, done.stderr
+    return (out / "harmonic.1").read_text()
+
+
+def _in_file_with_x(env, model, tmp_path, x: str) -> Path:
+    """race.in: the model's own .in file, with the initial X set to `x`."""
+    done = autolev(dict(env, AUTOLEV_FOREGROUND="1", AUTOLEV_CACHE=str(tmp_path / "c0")),
+                   "run", model, "--out", tmp_path / "template")
+    assert done.returncode == 0, done.stderr
+    text = (tmp_path / "template" / "harmonic.in").read_text()
+    race = tmp_path / "race.in"
+    race.write_text(text.replace("| 0.2\n", f"| {x}\n"))
+    assert f"| {x}\n" in race.read_text()
+    return race
+
+
+def test_an_in_file_edited_while_the_compile_finishes_is_read_again(setting, tmp_path):
+    # the plan is filed under the .in file as the run read it (0.2), not as it is when
+    # the background compile ends and the plan is written (1.2)
+    model, env = setting
+    race = _in_file_with_x(env, model, tmp_path, "0.2")
+    first = autolev(env, "run", model, "--in", race, "--out", tmp_path / "one")
+    assert first.returncode == 0 and locks(env), first.stderr
+    race.write_text(race.read_text().replace("| 0.2\n", "| 1.2\n"))
+    expected = _rows_of_a_fresh_run(model, ["--in", race], env, tmp_path / "fresh")
+    assert expected != (tmp_path / "one" / "harmonic.1").read_text()
+    for n, out in enumerate(("two", "three")):     # after the compile, then from a plan
+        again = autolev(env, "run", model, "--in", race, "--out", tmp_path / out)
+        assert again.returncode == 0, again.stderr
+        assert (tmp_path / out / "harmonic.1").read_text() == expected
+        assert "| 1.2\n" in (tmp_path / out / "harmonic.in").read_text()
+        assert ("(its run plan)" in again.stdout) == (n == 1)
+
+
+def test_a_model_edited_while_the_compile_finishes_is_read_again(setting, tmp_path):
+    model, env = setting
+    first = autolev(env, "run", model, "--out", tmp_path / "one")
+    assert first.returncode == 0 and locks(env), first.stderr
+    model.write_text(model.read_text().replace("INPUT K = 4", "INPUT K = 9"))
+    expected = _rows_of_a_fresh_run(model, [], env, tmp_path / "fresh")
+    assert expected != (tmp_path / "one" / "harmonic.1").read_text()
+    for out in ("two", "three"):
+        again = autolev(env, "run", model, "--out", tmp_path / out)
+        assert again.returncode == 0, again.stderr
+        assert (tmp_path / out / "harmonic.1").read_text() == expected

@@ -233,9 +233,21 @@ def test_outputs_written_beside_the_model_keep_its_translation(cache, tmp_path,
     (tmp_path / "o1").mkdir()                    # an --out folder beside it
     assert str(autolev.load(model)["X"]) == "2*A"
     assert len(translated) == 1                 # read back: no macro or function added
-    (tmp_path / "M.A").write_text("Z = 1\n")     # a macro file, any case: looked at again
+    (tmp_path / "M.A").write_text("Z = 1\n")     # a macro no statement calls: not read
+    autolev.load(model)
+    assert len(translated) == 1
+    (tmp_path / "TWICE.r").write_text("2*#1#\n")  # a function file, any case: looked at
     autolev.load(model)
     assert len(translated) == 2
+
+
+def test_a_macro_file_added_for_a_statement_that_calls_it_is_seen(cache, tmp_path):
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nPLACE(3)\n")
+    (tmp_path / "place.a").write_text("X = #1#*A\n")
+    assert str(autolev.load(model)["X"]) == "3*A"
+    (tmp_path / "PLACE.A").write_text("X = #1#+A\n")   # the name in its case: found first
+    assert str(autolev.load(model)["X"]) == "A + 3"
 
 
 def test_a_file_added_where_the_translation_looked_is_seen(cache, tmp_path):

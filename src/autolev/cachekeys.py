@@ -1,6 +1,5 @@
-"""What the caches' keys are made of (no sympy: a warm run's plan is found with them):
-the digest of autolev's own code and the versions it runs on, and the manifest of
-the files a model's translation read."""
+"""What every cache key starts from (no sympy: a warm run's plan is found with it):
+the digest of autolev's own code and the versions it runs on."""
 from __future__ import annotations
 
 import functools
@@ -46,43 +45,3 @@ def code_digest() -> str:
         if path.suffix in (".py", ".c", ".g4") and "__pycache__" not in path.parts:
             h.update(str(path.relative_to(_PACKAGE)).encode() + b"\0" + path.read_bytes())
     return h.hexdigest()
-
-
-def file_key(kind: str, path: Path, raw: bytes, *more: bytes) -> str:
-    """The digest naming a cache entry of `kind` made from the file at `path` that holds
-    `raw` (and from `more`): autolev's code, the file's name and its content."""
-    h = hashlib.sha256(code_digest().encode() + b"\0" + kind.encode() + b"\0"
-                       + str(path).encode("utf-8", "surrogatepass") + b"\0" + raw)
-    for part in more:
-        h.update(b"\0" + part)
-    return h.hexdigest()
-
-
-def manifest(root: Path, files: list[str]) -> tuple:
-    """The digest of every file read, and in every folder looked in (each read file's
-    folder and those up to the model's own) the names that could change what is read:
-    macros and functions (NAME.A, NAME.R) and any name a read file has, in any case
-    (outputs written beside the model change nothing)."""
-    base = root.parent.resolve()
-    digests, folders = [], {base}
-    named = {root.name.lower()}
-    for name in files:
-        path = Path(name)
-        named.update(part.lower() for part in path.parts)
-        try:
-            digests.append((name, hashlib.sha256(path.read_bytes()).hexdigest()))
-        except OSError:
-            digests.append((name, None))
-        folder = path.parent.resolve()
-        while folder not in folders and base in folder.parents:
-            folders.add(folder)
-            folder = folder.parent
-    listings = []
-    for folder in sorted(folders):
-        try:
-            listings.append((str(folder), tuple(sorted(
-                n for n in os.listdir(folder)
-                if n.lower().endswith((".a", ".r")) or n.lower() in named))))
-        except OSError:
-            listings.append((str(folder), None))
-    return tuple(digests), tuple(listings)

@@ -28,7 +28,8 @@ from antlr4.tree.Tree import TerminalNode
 from ._antlr.AutolevParser import AutolevParser as P
 from .errors import Diagnostic
 from .source import (MAX_INCLUDE_DEPTH, MappedText, RunRefused, SourceFile, expand_macro,
-                     find_macro, is_within, mapped_source, placeholders, resolve_run)
+                     find_macro, is_within, mapped_source, names_with_suffix, placeholders,
+                     resolve_run)
 from .syntax import ParsedText, Parser
 
 
@@ -337,12 +338,7 @@ class Includes:
 
     def _function_names_in(self, folder: Path) -> frozenset[str]:
         if folder not in self._function_names:
-            try:
-                names = frozenset(f[:-2].lower() for f in os.listdir(folder)
-                                  if f.lower().endswith(".r"))
-            except OSError:          # an unreadable folder has no functions to offer
-                names = frozenset()
-            self._function_names[folder] = names
+            self._function_names[folder] = names_with_suffix(folder, ".r")
         return self._function_names[folder]
 
     def _find_functions(self, tree, origin: Origin,

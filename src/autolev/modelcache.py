@@ -24,8 +24,10 @@ from pathlib import Path
 
 import sympy as sm
 
-from .cachekeys import PLAN_PREFIX, code_digest, enabled, file_key, manifest
-from .runtime import diskcache
+from . import source  # noqa: F401  (registers the folder lookups a kept translation rechecks)
+from .cachekeys import PLAN_PREFIX, code_digest, enabled
+from .runtime import diskcache, reading
+from .runtime.reading import ReadSet
 from .runtime.libraries import sum_or_product_as_given
 
 PREFIX = "model_"
@@ -108,29 +110,38 @@ def _keep(entry: Path, obj, what: str) -> bool:
 @dataclass
 class _KeptTranslation:
     translation: object
-    manifest: tuple
+    reads: ReadSet              # every file and folder search it read, as it read them
 
 
 def translation(path: Path, make):
     """The translation of the model file at `path`: read back while the file, every
-    file its translation read (RUN files, macros, functions) and the folders where it
-    looked for them are unchanged (a NAME.R added next to the model changes what
-    NAME(x) means); else `make()`, kept when it succeeds."""
+    file its translation read (RUN files, macros, functions) and the answers of the
+    folder searches it made (a NAME.R added next to the model changes what NAME(x)
+    means) are as they were; else `make()`, kept under the digest of the model as
+    `make` read it, unless a file changed while it was read."""
     if not enabled():
         return make()
     try:
-        raw = path.read_bytes()
+        raw = reading.read_bytes(path)
     except OSError:
         return make()                  # the translation reports the unreadable file
-    key_ = file_key("translation", path, raw)
-    entry = diskcache.cache_dir() / f"{TRANSLATION_PREFIX}{key_[:40]}.pickle"
-    kept = _load(entry)
-    if isinstance(kept, _KeptTranslation) and \
-            kept.manifest == manifest(path, kept.translation.files):
+    kept = _load(_translation_entry(path, reading.digest(raw)))
+    if isinstance(kept, _KeptTranslation) and kept.reads.holds():
         return kept.translation
-    result = make()
-    _keep(entry, _KeptTranslation(result, manifest(path, result.files)), "the translation")
+    with reading.recording() as reads:
+        result = make()
+    read_as = reads.digest_of(path)
+    if read_as is not None and not reads.torn:
+        _keep(_translation_entry(path, read_as), _KeptTranslation(result, reads.snapshot()),
+              "the translation")
     return result
+
+
+def _translation_entry(path: Path, digest: str) -> Path:
+    # the path as given: the translation's messages name the model so
+    text = f"{code_digest()}\0translation\0{path}\0{digest}"
+    key_ = hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()
+    return diskcache.cache_dir() / f"{TRANSLATION_PREFIX}{key_[:40]}.pickle"
 
 
 class _ExpressionPickler(pickle.Pickler):

@@ -2,16 +2,17 @@
 
 A run without an animation whose every CODE command was computed (integrated in the
 compiled loop, to its end or to the failure of its integration, or evaluated and
-solved: ALGEBRAIC, NONLINEAR) leaves a plan in the cache, for the options it was given
-(values, an .in file by its content, the method...): per command, its compiled system
-as numbers and sources (C, whose libraries are found again in the build cache, or
+solved: ALGEBRAIC, NONLINEAR) leaves a plan in the cache for its request
+(`request.RunRequest`: every option that can change what it computes, and the model and
+--in file by their digests as the run read them): per command, its compiled system as
+numbers and sources (C, whose libraries are found again in the build cache, or
 Python), its inputs as numbers, the texts of its files besides the rows, the message
-of its failure, and what the run printed on stderr (notes, warnings).  The next run of
-the same file with the same options, while the file, every file its translation read
-and autolev itself are unchanged (the translation cache's manifest), repeats the run
-from the plan and writes the same files (and the tables and plots asked for, from its
-rows), importing no sympy (scipy only for what needs it: a scipy method, a .mat file)
-and translating nothing.  Anything else runs from the model.
+of its failure, and what the run printed on stderr (notes, warnings).  With it go the
+digests of every file the run read, taken when it read them (`runtime.reading`).  The
+next run with the same request, while each of those files is as it was read, repeats
+the run from the plan and writes the same files (and the tables and plots asked for,
+from its rows), importing no sympy (scipy only for what needs it: a scipy method, a
+.mat file) and translating nothing.  Anything else runs from the model.
 
 A run that writes no file repeats what it printed and its exit status: a model without
 a CODE command (the responses Autolev displayed) or one refused before any command ran
@@ -27,8 +28,11 @@ from pathlib import Path
 
 import numpy as np
 
-from .cachekeys import PLAN_PREFIX, enabled, file_key, manifest
-from .runtime import diskcache
+from . import source  # noqa: F401  (registers the folder lookups a kept answer rechecks)
+from .cachekeys import PLAN_PREFIX, enabled
+from .request import Request
+from .runtime import diskcache, reading
+from .runtime.reading import Reads, ReadSet
 from .runtime.code_kinds import INTEGRATION_PARAMETERS
 from .runtime.numerics.clibrary import CompileError
 from .runtime.numerics.evaluation import CompiledEvaluation
@@ -91,7 +95,7 @@ class PlannedCommand:
 
 @dataclass
 class RunPlan:
-    manifest: tuple             # of the files the translation read (cachekeys.manifest)
+    reads: ReadSet              # every file the run read, as it read it
     load_messages: str          # what loading the model printed on stderr
     commands: list
 
@@ -101,10 +105,31 @@ class KeptOutcome:
     """A run that wrote no file, for its options: what it printed and its exit status.
     Nothing outside the model's files decided it (no disk, no compiler, no values)."""
 
-    manifest: tuple             # of the files the translation read (cachekeys.manifest)
+    reads: ReadSet              # every file the run read, as it read it
     messages: str               # what it printed on stderr (notes, diagnostics)
     transcript: str             # what it printed on stdout: the responses, or nothing
     status: int
+
+
+@dataclass
+class KeptTranscript:
+    """The text of `autolev transcript FILE`: the same files read give the same text."""
+
+    reads: ReadSet              # every file read to make it, as read
+    text: str
+
+
+@dataclass
+class KeptLinearization:
+    """The answer of `autolev linearize FILE` for its options (no sweep): the same
+    file, files read and options give the same numbers, so the next such command
+    reports it again without the model (BICYCLE14: 1.6 s of reading the model back and
+    importing sympy and scipy, for a 10-state answer)."""
+
+    reads: ReadSet              # every file the linearization read, as it read it
+    load_messages: str          # what loading the model printed on stderr
+    messages: str               # what the linearization printed on stderr
+    linearization: Linearization
 
 
 def can_plan(execution: Execution, result) -> bool:
@@ -138,118 +163,41 @@ def planned_command(execution: Execution, result, label: str,
     return PlannedCommand(reduced, label, messages)
 
 
-def _entry(path: Path, options: tuple) -> Path | None:
-    """The plan's place in the cache for the model file at `path` run with `options`
-    (what the command line gave that changes the run, the .in file first: by its
-    content too).  None: a file unreadable, or the caches turned off."""
-    if not enabled():
-        return None
-    infile = options[0]
-    try:
-        raw = path.read_bytes()
-        given = Path(infile).read_bytes() if infile is not None else b""
-    except OSError:
-        return None
-    key = file_key("plan", path.resolve(), raw, repr(options).encode("utf-8", "surrogatepass"),
-                   given)
-    return diskcache.cache_dir() / f"{PLAN_PREFIX}{key[:40]}.pickle"
-
-
-def write_plan(path: Path, options: tuple, files_read: list, load_messages: str,
-               commands: list) -> None:
-    """Keep the plan of a run of the model at `path` with `options` (`files_read`: its
-    translation's)."""
-    _keep(path, options, RunPlan(manifest(path, files_read), load_messages, commands))
-
-
-def keep_outcome(path: Path, options: tuple, files_read: list, messages: str,
-                 transcript: str, status: int) -> None:
-    """Keep what a run of the model at `path` with `options` that wrote no file
-    printed, and its exit status (`files_read`: every file its translation read)."""
-    _keep(path, options, KeptOutcome(manifest(path, files_read), messages, transcript,
-                                     status))
-
-
-def read_plan(path: Path, options: tuple) -> RunPlan | KeptOutcome | None:
-    """The plan (or the kept outcome) of the model at `path` run with `options`, while
-    it holds, else None."""
-    return _kept(path, options, (RunPlan, KeptOutcome))
-
-
-# a transcript's options: no .in file (the first of a run's options), made by transcript
-_TRANSCRIPT = (None, "transcript")
-
-
-@dataclass
-class KeptTranscript:
-    """The text of `autolev transcript FILE`: the same files read give the same text."""
-
-    manifest: tuple             # of the files read to make it (cachekeys.manifest)
-    text: str
-
-
-def keep_transcript(path: Path, files_read: list, text: str) -> None:
-    """Keep the transcript of the model at `path` (`files_read`: every file read to
-    make it)."""
-    _keep(path, _TRANSCRIPT, KeptTranscript(manifest(path, files_read), text))
-
-
-def kept_transcript(path: Path) -> str | None:
-    """The transcript of the model at `path`, while every file it read is unchanged."""
-    kept = _kept(path, _TRANSCRIPT, KeptTranscript)
-    return None if kept is None else kept.text
-
-
-@dataclass
-class KeptLinearization:
-    """The answer of `autolev linearize FILE` for its options (no sweep): the same
-    file, files read and options give the same numbers, so the next such command
-    reports it again without the model (BICYCLE14: 1.6 s of reading the model back and
-    importing sympy and scipy, for a 10-state answer)."""
-
-    manifest: tuple             # of the files the translation read (cachekeys.manifest)
-    load_messages: str          # what loading the model printed on stderr
-    messages: str               # what the linearization printed on stderr
-    linearization: Linearization
-
-
-def keep_linearization(path: Path, options: tuple, files_read: list, load_messages: str,
-                       messages: str, linearization: Linearization) -> None:
-    _keep(path, options + ("linearize",),
-          KeptLinearization(manifest(path, files_read), load_messages, messages,
-                            linearization))
-
-
-def kept_linearization(path: Path, options: tuple) -> KeptLinearization | None:
-    """The linearization of the model at `path` with `options`, while it holds."""
-    return _kept(path, options + ("linearize",), KeptLinearization)
-
-
-def _keep(path: Path, options: tuple, kept) -> None:
-    entry = _entry(path, options)
-    if entry is None:
+def keep(request: Request, reads: Reads, make) -> None:
+    """Keep `make(reads.snapshot())` for `request`, filed under the digests `reads`
+    took when the files were read; nothing when they changed while being read (the
+    work mixed two states of them) or the caches are off."""
+    key = request.key(reads) if enabled() else None
+    if key is None or reads.torn:
         return
     try:
-        diskcache.install(pickle.dumps(kept, protocol=pickle.HIGHEST_PROTOCOL), entry)
+        diskcache.install(pickle.dumps(make(reads.snapshot()),
+                                       protocol=pickle.HIGHEST_PROTOCOL), _entry(key))
     except OSError:
         return                      # a full or read-only disk: the next run forms its own
 
 
-def _kept(path: Path, options: tuple, kind: type | tuple):
-    """What `_keep` kept for the model at `path` and `options`, while every file its
-    translation read is unchanged; else None."""
-    entry = _entry(path, options)
-    data = None if entry is None else diskcache.read_verified(entry)
+def kept(request: Request, reads: Reads, kind: type | tuple):
+    """What `keep` kept for `request` with the files it names as now read (noted in
+    `reads`), while every other file it read is as it was; else None."""
+    if not enabled():
+        return None
+    key = request.key(reads)
+    data = None if key is None else diskcache.read_verified(_entry(key))
     if data is None:
         return None
     try:
-        kept = pickle.loads(data)
+        found = pickle.loads(data)
     except CompileError:
         return None                 # its libraries are gone and no compiler rebuilds them
-    if not isinstance(kept, kind) or kept.manifest != manifest(
-            path, [name for name, _ in kept.manifest[0]]):
-        return None
-    return kept
+    with reading.recording(reads):
+        if not isinstance(found, kind) or not found.reads.holds():
+            return None
+    return found
+
+
+def _entry(key: str) -> Path:
+    return diskcache.cache_dir() / f"{PLAN_PREFIX}{key[:40]}.pickle"
 
 
 class Recorder(io.TextIOBase):

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .errors import AutolevFileError, Location
+from .runtime import reading
 
 MAX_INCLUDE_DEPTH = 16
 _PLACEHOLDER = re.compile(r"#(\d+)#")
@@ -58,7 +59,7 @@ class SourceFile:
     def read(cls, path: str | os.PathLike, name: str | None = None) -> "SourceFile":
         p = Path(path)
         try:
-            raw = p.read_bytes()
+            raw = reading.read_bytes(p)
         except OSError as exc:
             raise AutolevFileError(p, f"cannot read: {exc.strerror or exc}") from None
         return cls(name or str(path), decode(raw), p)
@@ -195,6 +196,7 @@ def expand_macro(macro: SourceFile, args: list[str], call: Location, what: str) 
 # ---------------------------------------------------------------------------
 # Finding files the way Autolev users named them (any case, '\' or '/')
 
+@reading.lookup("find file")
 def find_file(base: Path, relative: str) -> Path | None:
     """`base/relative`, matching each path component case-insensitively."""
     parts = [p for p in relative.replace("\\", "/").split("/") if p not in ("", ".")]
@@ -249,6 +251,17 @@ def resolve_run(name: str, including: Path, model_root: Path) -> Path | None:
             break
         base = base.parent
     return None
+
+
+@reading.lookup("names with suffix")
+def names_with_suffix(folder: Path, suffix: str) -> frozenset[str]:
+    """The names (lower case, without `suffix`) of the folder's files ending in `suffix`
+    (any case); none for a folder that cannot be read."""
+    try:
+        return frozenset(f[:-len(suffix)].lower() for f in os.listdir(folder)
+                         if f.lower().endswith(suffix))
+    except OSError:
+        return frozenset()
 
 
 def find_macro(name: str, search_dirs: list[Path], suffix: str = ".a") -> Path | None:

@@ -27,6 +27,7 @@ from . import ir
 from .errors import AutolevError
 from .loader import load
 from .pipeline import parse
+from .runtime import reading
 from .runtime.calculus import is_small
 from .runtime.symbols import TIME, Z, derivative, new_z
 from .runtime.vectors import Dyadic, Vector
@@ -182,15 +183,9 @@ class _Shown:
 
 def transcript(path) -> str:
     """The `.all` transcript of the model at `path` (raises as autolev.load does)."""
-    return transcript_and_files(path)[0]
-
-
-def transcript_and_files(path) -> tuple[str, list[str]]:
-    """The transcript, and every file read to make it (the model's first: what a kept
-    transcript depends on)."""
     p = Path(path)
     program = parse(p)
-    lines, line_of = _as_run(decode(p.read_bytes()).splitlines(), program)
+    lines, line_of = _as_run(decode(reading.read_bytes(p)).splitlines(), program)
     responses: list[Response] = []
     shown_as: list[_Shown] = []
     massive: list[str] = []         # the mass centres and particles declared so far
@@ -235,7 +230,7 @@ def transcript_and_files(path) -> tuple[str, list[str]]:
                     out.append(f"-> ({number}) {name} = {text}")
         if after.get(no):
             out.append("")
-    return "\n".join(out) + "\n", list(program.files)
+    return "\n".join(out) + "\n"
 
 
 def _as_run(lines: list[str], program: ir.Program) -> tuple[list[str], dict[int, int]]:

@@ -15,47 +15,41 @@ from .common import (UsageError, has_matplotlib, listed, load_model, model_value
 
 def cmd_linearize(ns: argparse.Namespace) -> int:
     """Linearize a model's CODE DYNAMICS at an operating point; print the eigenvalues.
-    The answer is kept for the same file and options (runplan.KeptLinearization)."""
+    The answer is kept for its request (request.LinearizeRequest) and the files it
+    read, as read (runplan.KeptLinearization)."""
+    from ..runtime import reading
     path = Path(ns.file)
-    options = _kept_options(ns, path)
-    if options is None:
-        return _linearize(path, ns, None)
-    from ..runplan import Recorder, kept_linearization
-    kept = kept_linearization(path, options)
-    if kept is not None:
-        sys.stderr.write(kept.load_messages + kept.messages)
-        print(f"{path}: linearized as before with these options (the model and the "
-              "files it reads unchanged)", file=sys.stderr)
-        return _report_eigenvalues(path, kept.linearization, ns.out, ns.overwrite)
-    recorder = sys.stderr = Recorder(sys.stderr)
-    try:
-        return _linearize(path, ns, (options, recorder))
-    finally:
-        sys.stderr = recorder.through
-
-
-def _kept_options(ns: argparse.Namespace, path: Path) -> tuple | None:
-    """The options that change a linearization's answer (the .in file first), when
-    it can be kept: a model file linearized at one point; else None."""
     if path.suffix.lower() == ".py" or ns.sweep:
-        return None
-    infile = None if ns.infile is None else str(Path(ns.infile).resolve())
-    return (infile, ns.set, ns.specified, ns.backend, ns.zero_missing, ns.at, ns.inputs,
-            ns.code, ns.lock, ns.constraint, ns.dependent)
+        return _linearize(path, ns, None)
+    from ..request import LinearizeRequest
+    from ..runplan import KeptLinearization, Recorder, kept
+    from .run import Keeping
+    request = LinearizeRequest.of(ns)
+    with reading.recording() as reads:
+        found = kept(request, reads, KeptLinearization)
+        if found is not None:
+            sys.stderr.write(found.load_messages + found.messages)
+            print(f"{path}: linearized as before with these options (the model and the "
+                  "files it reads unchanged)", file=sys.stderr)
+            return _report_eigenvalues(path, found.linearization, ns.out, ns.overwrite)
+        recorder = sys.stderr = Recorder(sys.stderr)
+        try:
+            return _linearize(path, ns, Keeping(request, reads, recorder))
+        finally:
+            sys.stderr = recorder.through
 
 
-def _linearize(path: Path, ns: argparse.Namespace, keeping: tuple | None) -> int:
-    """The linearization from the model; `keeping`: (its options, the Recorder that is
-    sys.stderr) to keep its answer."""
+def _linearize(path: Path, ns: argparse.Namespace, keeping) -> int:
+    """The linearization from the model; `keeping` (run.Keeping): to keep its answer."""
     from ..runtime.errors import AutolevModelError
 
     overrides, point, sweep = _linearize_request(ns)
-    progress = sys.stderr if keeping is None else keeping[1].through
+    progress = sys.stderr if keeping is None else keeping.recorder.through
     model = load_model(path, progress)
     if model is None:
         print(f"{path}: not linearized", file=sys.stderr)
         return 1
-    load_messages = keeping[1].take() if keeping is not None else ""
+    load_messages = keeping.recorder.take() if keeping is not None else ""
     options = dict(inputs=ns.inputs.split(",") if ns.inputs else None,
                    code=int(ns.code) if ns.code and ns.code.isdigit() else ns.code,
                    backend=ns.backend, infile=ns.infile, overrides=overrides,
@@ -71,9 +65,9 @@ def _linearize(path: Path, ns: argparse.Namespace, keeping: tuple | None) -> int
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
     if keeping is not None:
-        from ..runplan import keep_linearization
-        keep_linearization(path, keeping[0], model.loaded.source.content.files,
-                           load_messages, keeping[1].take(), lin)
+        from ..runplan import KeptLinearization
+        messages = keeping.recorder.take()
+        keeping.keep(lambda reads: KeptLinearization(reads, load_messages, messages, lin))
     return _report_eigenvalues(path, lin, ns.out, ns.overwrite)
 
 

@@ -38,20 +38,24 @@ def print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False) 
 
 
 def transcript_text(path: Path) -> str | None:
-    """The transcript of the .al model at `path` (kept, and read back while every file
-    it read is unchanged); None after printing the diagnostics of a model it cannot
-    be made for."""
-    from ..runplan import keep_transcript, kept_transcript
-    text = kept_transcript(path)
-    if text is not None:
-        return text
-    from ..transcript import transcript_and_files
-    try:
-        text, files = transcript_and_files(path)
-    except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
-        print_diagnostics(exc.diagnostics)
-        return None
-    keep_transcript(path, files, text)
+    """The transcript of the .al model at `path` (kept for the files it read, as read,
+    and read back while each is unchanged); None after printing the diagnostics of a
+    model it cannot be made for."""
+    from ..request import TranscriptRequest
+    from ..runplan import KeptTranscript, keep, kept
+    from ..runtime import reading
+    request = TranscriptRequest.of_file(path)
+    with reading.recording() as reads:
+        found = kept(request, reads, KeptTranscript)
+        if found is not None:
+            return found.text
+        from ..transcript import transcript
+        try:
+            text = transcript(path)
+        except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
+            print_diagnostics(exc.diagnostics)
+            return None
+        keep(request, reads, lambda read: KeptTranscript(read, text))
     return text
 
 

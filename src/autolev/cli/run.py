@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from dataclasses import dataclass
 from pathlib import Path
 
 from . import background
@@ -15,53 +16,69 @@ from .responses import transcript_text
 
 def cmd_run(ns: argparse.Namespace) -> int:
     """Translate, build and run the model's CODE commands; write Autolev's files.  A
-    run repeats its run plan when it has one (runplan.py), else may leave one."""
+    run repeats its run plan when it has one (runplan.py), else may leave one; every
+    file it reads is noted as read (runtime.reading), and what it keeps is filed under
+    those digests."""
+    from ..runtime import reading
     path = Path(ns.file)
-    options = _plan_options(ns, path)
+    request = _plan_request(ns, path)
     progress = None if ns.quiet else sys.stderr
     if path.suffix.lower() != ".py":
         background.wait_for_finishing(path, progress)
-    if options is not None:
-        from ..runplan import KeptOutcome, read_plan
-        plan = read_plan(path, options)
+    with reading.recording() as reads:
+        if request is None:
+            return _run_from_model(path, ns, progress, None)
+        from ..runplan import KeptOutcome, Recorder, RunPlan, kept
+        plan = kept(request, reads, (RunPlan, KeptOutcome))
         if isinstance(plan, KeptOutcome):
             sys.stderr.write(plan.messages)
             sys.stdout.write(plan.transcript)
             return plan.status
         if plan is not None:
             return _run_from_plan(plan, path, ns)
-    if options is None:
-        return _run_from_model(path, ns, progress, None, None)
-    from ..runplan import Recorder
-    recorder = sys.stderr = Recorder(sys.stderr)
-    try:
-        return _run_from_model(path, ns, progress, recorder, options)
-    finally:
-        sys.stderr = recorder.through
+        recorder = sys.stderr = Recorder(sys.stderr)
+        try:
+            return _run_from_model(path, ns, progress, Keeping(request, reads, recorder))
+        finally:
+            sys.stderr = recorder.through
 
 
-def _plan_options(ns: argparse.Namespace, path: Path) -> tuple | None:
-    """The options that change what a run computes (the .in file first), when a run
-    plan can repeat it: a model file run without an animation (plots and tables are
-    drawn from the rows); else None."""
+@dataclass(frozen=True)
+class Keeping:
+    """What keeps a run's answer: its request, the record of what it read, and the
+    stream recording what it prints on stderr."""
+
+    request: object             # request.RunRequest
+    reads: object               # runtime.reading.Reads
+    recorder: object            # runplan.Recorder, which is sys.stderr meanwhile
+
+    def keep(self, make) -> None:
+        from ..runplan import keep
+        keep(self.request, self.reads, make)
+
+
+def _plan_request(ns: argparse.Namespace, path: Path):
+    """The run's request (request.RunRequest) when a run plan can repeat it: a model
+    file run without an animation (plots and tables are drawn from the rows); else
+    None."""
     if path.suffix.lower() == ".py" or ns.func is not cmd_run or ns.animate:
         return None
-    infile = None if ns.infile is None else str(Path(ns.infile).resolve())
-    return (infile, ns.set, ns.specified, ns.backend, ns.zero_missing, ns.method, ns.tfinal,
-            ns.quirks, ns.code)
+    from ..request import RunRequest
+    return RunRequest.of(ns)
 
 
-def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
-                    options: tuple | None) -> int:
-    """The run from the model; with `recorder` (sys.stderr recording), its plan kept
-    for `options` when it can be repeated from one."""
+def _run_from_model(path: Path, ns: argparse.Namespace, progress,
+                    keeping: Keeping | None) -> int:
+    """The run from the model; with `keeping`, its plan kept when it can be repeated
+    from one."""
     import time
 
+    recorder = keeping.recorder if keeping is not None else None
     overrides = _run_overrides(ns)
     if path.suffix.lower() != ".py" and not ns.first_dynamics:
         translation = _translation_or_none(path)
         if translation is not None and not translation.code_lines:
-            return _responses_instead(path, translation, recorder, options)
+            return _responses_instead(path, translation, keeping)
     # the compile for later runs may finish after this command returns (background.py)
     finishing = background.split_off()
     start = time.monotonic()
@@ -72,8 +89,8 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
                                             else recorder.through))
     if model is None:
         print(f"{path}: not run", file=sys.stderr)
-        if recorder is not None:
-            _keep_outcome(path, options, None, recorder, "", 1)
+        if keeping is not None:
+            _keep_outcome(keeping, "", 1)
         return 1
     if not ns.quiet and (model.code_commands or ns.first_dynamics):
         print(f"{path}: built in {time.monotonic() - start:.1f} s")
@@ -94,9 +111,9 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress, recorder,
     status = _run_and_report(model, commands, overrides, specified_values(model, ns), ns,
                              path, progress, recorder, planned, finishing)
     # a command that failed (an integration's failure) is planned, and fails again
-    if recorder is not None and len(planned) == len(commands):
-        from ..runplan import write_plan
-        write_plan(path, options, model.loaded.source.content.files, load_messages, planned)
+    if keeping is not None and len(planned) == len(commands):
+        from ..runplan import RunPlan
+        keeping.keep(lambda reads: RunPlan(reads, load_messages, planned))
     return status
 
 
@@ -110,7 +127,7 @@ def _translation_or_none(path: Path):
         return None
 
 
-def _responses_instead(path: Path, translation, recorder, options: tuple | None) -> int:
+def _responses_instead(path: Path, translation, keeping: Keeping | None) -> int:
     """A model that writes no program: what Autolev showed for it, its responses (the
     model is not built for a run)."""
     from ..loader import translation_warnings
@@ -122,21 +139,17 @@ def _responses_instead(path: Path, translation, recorder, options: tuple | None)
               "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
         sys.stdout.write(text)
     status = 0 if text is not None else 1
-    if recorder is not None:
-        _keep_outcome(path, options, list(translation.files), recorder, text or "", status)
+    if keeping is not None:
+        _keep_outcome(keeping, text or "", status)
     return status
 
 
-def _keep_outcome(path: Path, options: tuple, files: list | None, recorder,
-                  transcript: str, status: int) -> None:
-    """Keep a run that wrote no file (runplan.KeptOutcome): what `recorder` took of its
-    stderr, `transcript` on its stdout; `files`: those its translation read (None:
-    those reading the model reads, or nothing kept when it cannot be parsed)."""
-    from ..loader import files_read
-    from ..runplan import keep_outcome
-    files = files_read(path) if files is None else files
-    if files is not None:
-        keep_outcome(path, options, files, recorder.take(), transcript, status)
+def _keep_outcome(keeping: Keeping, transcript: str, status: int) -> None:
+    """Keep a run that wrote no file (runplan.KeptOutcome): what the recorder took of
+    its stderr, `transcript` on its stdout."""
+    from ..runplan import KeptOutcome
+    messages = keeping.recorder.take()
+    keeping.keep(lambda reads: KeptOutcome(reads, messages, transcript, status))
 
 
 def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
@@ -209,12 +222,13 @@ def _names_in_file(infile, translation) -> set | None:
     values it has for them are all 0 (a template never filled in gives none: the run's
     rule); None when it cannot be read, or names what the model does not (its values
     are then read in Autolev's order, whatever the labels say)."""
+    from ..runtime import reading
     from ..runtime.code_kinds import INTEGRATION_PARAMETERS
     from ..runtime.numerics.numbers import in_file_lines, parse_number
     if infile is None:
         return set()
     try:
-        text = Path(infile).read_bytes().decode("latin-1")
+        text = reading.read_bytes(infile).decode("latin-1")
     except OSError:
         return None
     values = {name.upper(): parse_number(raw) for _, name, raw, _ in in_file_lines(text)}

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import sympy as sm
 
-from .. import units
+from .. import reading, units
 from ..calculus import is_real_number
 from ..errors import AutolevModelError
 from ..io import INTEGRATION_PARAMETERS as INTEGRATION
@@ -211,11 +211,13 @@ class Inputs:
         """Values from an Autolev `.in` file; returns warnings (unknown names)."""
         path = Path(path)
         try:
-            text = path.read_bytes().decode("utf-8")
-        except UnicodeDecodeError:
-            text = path.read_bytes().decode("latin-1")
+            raw = reading.read_bytes(path)
         except OSError as exc:
             raise InputFileError(f"{path}: cannot read ({exc.strerror})") from None
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError:
+            text = raw.decode("latin-1")
         notes = []
         entries = []                       # (lineno, name, value, file unit)
         for lineno, name, raw, file_unit in in_file_lines(text):
