@@ -1,10 +1,16 @@
 """The translated examples' equations against independent derivations: hand-derived
 equations, sympy's LagrangesMethod and KanesMethod built from scratch, and the
 results published in SymPy's documentation (shared/seed-systems.md)."""
+import numpy as np
 import sympy as sm
 import sympy.physics.mechanics as me
 
+import autolev
+from autolev.runtime.numerics.prepare import prepare_command
+from helpers import ROOT
 from helpers.mechanics import close, example, random_values, symbols, value
+
+DATA = ROOT / "tests" / "data"
 
 t = me.dynamicsymbols._t
 
@@ -268,3 +274,45 @@ def test_fourbar_noncontributing_forces_equal_sympys_published_values():
     v[symbols(m, "U1'")] = 0.0
     assert abs(value(m, F1, v)) < 1e-9
     assert abs(value(m, F2, v) - (-98.1)) < 1e-9
+
+
+def _double_pendulum_rates(v, L1, L2, M1, M2, g, torque):
+    """(U1', U2') of two point masses on links at absolute angles Q1, Q2 from the
+    downward N1> (gravity along N1>), a torque on the first link: by hand, from the
+    Lagrangian T = (M1+M2)L1^2 U1^2/2 + M2 L2^2 U2^2/2 + M2 L1 L2 cos(Q2-Q1) U1 U2."""
+    q1, q2, u1, u2 = v
+    c, s = sm.cos(q2 - q1), sm.sin(q2 - q1)
+    mass = sm.Matrix([[(M1 + M2) * L1 ** 2, M2 * L1 * L2 * c], [M2 * L1 * L2 * c, M2 * L2 ** 2]])
+    forcing = sm.Matrix([-(M1 + M2) * g * L1 * sm.sin(q1) + M2 * L1 * L2 * s * u2 ** 2 + torque,
+                         -M2 * g * L2 * sm.sin(q2) - M2 * L1 * L2 * s * u1 ** 2])
+    return list(mass.LUsolve(forcing))
+
+
+def test_the_equations_of_a_model_formed_by_solve_are_its_motion():
+    # SOLVE(ZERO, U1', U2') defines the accelerations; mass_matrix and forcing are
+    # still those of Fr + Fr* = 0 in them (they were 0 = 0: M^-1 forcing ~ 1e-15)
+    m = autolev.load(DATA / "equations" / "solved_double_pendulum.al")
+    names = ["Q1", "Q2", "U1", "U2"]
+    state = symbols(m, *names)
+    L1, L2, M1, M2, G = symbols(m, "L1", "L2", "M1", "M2", "G")
+    system = prepare_command(m, m.code_commands[0]).system
+    for seed in range(3):
+        v = random_values(state, seed)
+        consts = {L1: 1, L2: 0.7, M1: 2, M2: 1.5, G: 9.81}
+        tt = 0.3 + seed
+        point = {**v, **consts, m.t: tt}
+        expected = _double_pendulum_rates([v[x] for x in state], 1, 0.7, 2, 1.5, 9.81,
+                                          0.5 * sm.sin(tt))
+        by_matrices = value(m, m.mass_matrix, point).LUsolve(value(m, m.forcing, point))
+        assert close(by_matrices, sm.Matrix(expected))
+        assert close(value(m, m.explicit_form(), point),
+                     sm.Matrix([v[state[2]], v[state[3]]] + expected))
+        ss = m.symbolic_system("combined")
+        given = {x: v[state[names.index(str(x.func))]] for x in ss.states}
+        given.update({c: consts[symbols(m, str(c))] for c in ss.constant_symbols()})
+        given[t] = tt
+        rates = ss.comb_implicit_mat.subs(given).LUsolve(ss.comb_implicit_rhs.subs(given))
+        assert close(rates, sm.Matrix([v[state[2]], v[state[3]]] + expected))
+        x = [v[s] for s in system.states]
+        run = system.derivatives(tt, np.array(x, dtype=float))
+        assert close(sm.Matrix(list(run)), sm.Matrix([v[state[2]], v[state[3]]] + expected))

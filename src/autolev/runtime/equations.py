@@ -139,18 +139,29 @@ class EquationsMixin:
     @property
     def mass_matrix(self) -> sm.Matrix:
         """M in M*u' = forcing (independent speeds; Z-named entries)."""
-        eqs = self.equations()
-        rows = eqs.rows[:len(eqs.speeds), 0]
         ud = self.speed_derivatives
-        jac = self.defs.jacobian(rows, ud)
+        with self._rates_unknown():
+            jac = self.defs.jacobian(self._kane_rows(), ud)
         return sm.Matrix(len(ud), len(ud), lambda i, j: -jac[i][j])
 
     @property
     def forcing(self) -> sm.Matrix:
-        eqs = self.equations()
-        rows = eqs.rows[:len(eqs.speeds), 0]
         zero = {u: 0 for u in self.speed_derivatives}
-        return sm.Matrix([self.defs.substitute(e, zero) for e in rows])
+        with self._rates_unknown():
+            return sm.Matrix([self.defs.substitute(e, zero) for e in self._kane_rows()])
+
+    def _kane_rows(self) -> list:
+        eqs = self.equations()
+        return list(eqs.rows[:len(eqs.speeds), 0])
+
+    def _rates_unknown(self):
+        """The definitions with the speeds' derivatives undefined: Fr + Fr* = 0 holds
+        them as unknowns, which a SOLVE(ZERO, U1', ...) of the model has defined as its
+        solution (the rows would then be 0 = 0, and M^-1 forcing 0)."""
+        rates = set(self.speed_derivatives)
+        now = self.defs.user_definitions()
+        return self.defs.as_of({s: e for s, e in now.items() if s not in rates}
+                               if rates & set(now) else None)
 
     @property
     def mass_matrix_full(self) -> sm.Matrix:
