@@ -43,7 +43,7 @@ def equations_of(model, command, values: bool = True, infile=None,
     from .numerics.command import equations_and_unknowns, output_columns, program_of
     from .numerics.files import safe_stem
     from .numerics.options import RunOptions
-    from .numerics.prepare import InputsWanted, numeric_system, take_inputs
+    from .numerics.prepare import InputsWanted, SystemBuild, numeric_system, take_inputs
 
     kind = command.kind
     if not kind.integrates:
@@ -51,7 +51,8 @@ def equations_of(model, command, values: bool = True, infile=None,
                                 "of motion (those of a CODE DYNAMICS or ODE are written)")
     files = output_columns(model, command)
     solving = equations_and_unknowns(command.args, kind.upper())
-    system = numeric_system(model, command, files, [], solving, "python", False, (), False)
+    system = numeric_system(model, command, files, [], solving,
+                            SystemBuild("python", False, (), False))
     options = RunOptions()
     ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], infile,
                        overrides, None, None, options.missing_values, None)

@@ -16,9 +16,9 @@ from ..io import CodeKind
 from ..steps import SlowStep
 from .advice import inertia_problems
 from .command import (encoded_values, equations_and_unknowns, find_symbol, given_specified,
-                      hidden_in_outputs, names_a_quantity, output_columns, program_file_name,
-                      program_of, solution_columns, solved_by_lu, solver_expressions,
-                      sweep_values, take_time, time_dependence)
+                      hidden_in_outputs, names_a_quantity, output_columns,
+                      program_file_name, program_of, solution_columns, solved_by_lu,
+                      solver_expressions, sweep_values, take_time, time_dependence)
 from .files import safe_stem
 from .inputs import INTEGRATION, Inputs, display_name, some_names
 from .projection import constants_needed
@@ -158,9 +158,10 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
                        internal_values, options.constraints, options.missing_values, out_dir)
     build_start = time.perf_counter()
     what = f"CODE {kind.upper()} {command.filename}"
+    build = SystemBuild.of(options, locked)
     with SlowStep(options.progress, f"{what}: forming its equations"):
         system = numeric_system(model, command, files, encoded, (equations, unknowns),
-                                options.backend, options.quirks, locked, options.recursion)
+                                build)
     fresh = not system.compiled and (compile_functions or system.constants_function is None)
     with model.defs.as_of(program_of(model, command).definitions):
         inputs, kinds, names, extra_constants = take_inputs(ask, system)
@@ -170,8 +171,7 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
         elif fresh:
             system.compile_constants()
     if fresh:                        # kept at the model's own revision, not as_of's view
-        keep_system(model, command, options.backend, options.quirks, locked,
-                    options.recursion, system)
+        keep_system(model, command, build, system)
     build_seconds = time.perf_counter() - build_start
     if system.hidden_in_outputs:
         warnings.warn(
@@ -187,45 +187,58 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
                     extra_constants, build_seconds)
 
 
-def numeric_system(model, command, files, encoded, solving: tuple, backend: str,
-                   quirks: bool, locked, recursion: bool) -> NumericSystem:
+@dataclass(frozen=True)
+class SystemBuild:
+    """What decides how a command's numeric system is built, besides the model: the
+    key under which it is kept for the model's revision (every field, by
+    construction)."""
+
+    backend: str                # "auto", "c" or "python"
+    quirks: bool                # Autolev's programs' quirks reproduced
+    locked: tuple = ()          # coordinates held fixed
+    recursion: bool = True      # a tree's u' by the articulated-body recursion
+
+    @classmethod
+    def of(cls, options: RunOptions, locked=()) -> "SystemBuild":
+        return cls(options.backend, options.quirks, tuple(locked), options.recursion)
+
+
+def numeric_system(model, command, files, encoded, solving: tuple,
+                   build: SystemBuild) -> NumericSystem:
     """The command's numeric system, compiled, as kept for this revision of the model
     (repeated simulate() calls with other inputs reuse its compiled functions); else
     its analysis, to be compiled once its inputs are taken (then `keep_system`)."""
     kind = command.kind
     equations, unknowns = solving
     # the command itself is kept with its system: an id() alone may be reused
-    entry = model.derived.table("numeric systems").get(
-        _system_key(model, command, backend, quirks, locked, recursion))
+    entry = model.derived.table("numeric systems").get(_system_key(model, command, build))
     if entry is not None and entry[0] is command:
         return entry[1]
     program = program_of(model, command)
     with model.defs.as_of(program.definitions):
         return NumericSystem(
-            model, files, encoded, backend=backend, integrate=kind.integrates,
+            model, files, encoded, backend=build.backend, integrate=kind.integrates,
             solving=((equations, unknowns) if kind is CodeKind.ODE
                      else solved_by_lu(model, command)),
             solved=unknowns if kind.solves else (),
             extra=solver_expressions(model.defs, kind, equations, unknowns),
             zero=command.zero if kind is CodeKind.DYNAMICS else None,
-            hidden_in_outputs=hidden_in_outputs(command) if quirks else (),
-            locked=locked, compile_functions=False, recursive=recursion)
+            hidden_in_outputs=hidden_in_outputs(command) if build.quirks else (),
+            locked=build.locked, compile_functions=False, recursive=build.recursion)
 
 
-def _system_key(model, command, backend: str, quirks: bool, locked,
-                recursion: bool) -> tuple:
+def _system_key(model, command, build: SystemBuild) -> tuple:
     # by the command's place in the model (which a model read back from the cache keeps)
     place = next((k for k, c in enumerate(model.code_commands) if c is command),
                  "plain" if command is model.plain_dynamics() else id(command))
-    return (place, backend, quirks, tuple(locked), recursion)
+    return place, build
 
 
-def keep_system(model, command, backend: str, quirks: bool, locked, recursion: bool,
-                system) -> None:
+def keep_system(model, command, build: SystemBuild, system) -> None:
     """A compiled system kept for this revision of the model (after its build, which
     may have formed KANE), and for the cache of built models (keep_built)."""
-    model.derived.table("numeric systems")[
-        _system_key(model, command, backend, quirks, locked, recursion)] = (command, system)
+    model.derived.table("numeric systems")[_system_key(model, command, build)] = \
+        (command, system)
     to_be_kept(model)
 
 
