@@ -437,6 +437,38 @@ def test_outputs_as_autolevs_c_output_routine_computed_them(tmp_path, program, q
     assert said == (program.endswith(".c") and quirks)
 
 
+@pytest.mark.parametrize("quirks", [True, False])
+def test_the_written_c_program_and_the_run_compute_the_same_outputs(tmp_path, quirks, capsys):
+    # `autolev code` and `autolev run` both give Autolev's values (i1 read as 0 in
+    # the output routine) and both say so; with --no-quirks both give the values meant
+    import shutil
+    import subprocess
+
+    from autolev.cli import main
+    from autolev.runtime.numerics.clibrary import compiler
+    if compiler() is None:
+        pytest.skip("no C compiler")
+    model = tmp_path / "pendulum.al"
+    model.write_text(textwrap.dedent(DRIVEN_PENDULUM.replace("FILE", "pendulum.c")))
+    flags = [] if quirks else ["--no-quirks"]
+    assert main(["run", str(model), "--out", str(tmp_path / "run"), *flags]) == 0
+    said_by_run = capsys.readouterr().err
+    assert main(["code", str(model), "--out", str(tmp_path / "code"), *flags]) == 0
+    said_by_code = capsys.readouterr().err
+    for said in (said_by_run, said_by_code):
+        assert ("i1 = 0" in said and "`autolev code`" in said) == quirks, said
+    code = tmp_path / "code"
+    shutil.copy(tmp_path / "run" / "pendulum.in", code / "pendulum.in")
+    subprocess.run([compiler(), "-O0", "-o", "program", "pendulum.c", "-lm"], cwd=code,
+                   check=True, capture_output=True)
+    subprocess.run(["./program"], cwd=code, check=True, capture_output=True)
+    ran = np.loadtxt(tmp_path / "run" / "pendulum.1", comments="%")
+    written = np.loadtxt(code / "pendulum.1", comments="%")
+    assert np.allclose(ran, written, rtol=1e-6, atol=1e-9)
+    kinetic = [_kinetic(row[:3], with_i1=not quirks) for row in ran]
+    assert np.allclose(ran[:, 3], kinetic, rtol=1e-6, atol=1e-9)
+
+
 DECAY = """
     VARIABLES X'
     X' = -3*X

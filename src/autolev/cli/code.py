@@ -25,7 +25,7 @@ def cmd_code(ns: argparse.Namespace) -> int:
         return 1
     out = Path(ns.out)
     try:
-        done = write_programs(model, out, overwrite=ns.overwrite)
+        done = write_programs(model, out, overwrite=ns.overwrite, quirks=ns.quirks)
     except OSError as exc:
         print(f"autolev code: cannot write into {out}: {exc.strerror or exc}",
               file=sys.stderr)
@@ -37,7 +37,10 @@ def cmd_code(ns: argparse.Namespace) -> int:
     for w in done:
         if w.refused:
             print(f"{label(w.command)}: error: {w.refused}", file=sys.stderr)
-        elif not ns.quiet:
+            continue
+        for note in w.notes:
+            print(f"{label(w.command)}: note: {note}", file=sys.stderr)
+        if not ns.quiet:
             print("\n".join(f"wrote {f}" for f in w.files))
     return 1 if refused else 0
 
@@ -57,6 +60,10 @@ def add_code(sub) -> None:
     code.add_argument("file", metavar="FILE", help=".al model")
     code.add_argument("--out", metavar="DIR", default=".",
                       help="folder for the programs (default: the current folder)")
+    code.add_argument("--no-quirks", dest="quirks", action="store_false",
+                      help="compute the values meant where Autolev's programs computed "
+                      "others (a quantity named i1 in a C program's outputs), as "
+                      "`autolev run --no-quirks` does")
     code.add_argument("-q", "--quiet", action="store_true")
     overwrite_option(code)
     code.set_defaults(func=cmd_code)

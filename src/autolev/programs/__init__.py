@@ -3,11 +3,12 @@ Autolev wrote (`autolev code`), so that toolchains built on them rebuild unchang
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path, PureWindowsPath
 
 from ..runtime.errors import AutolevModelError
 from ..runtime.io import CodeKind
+from ..runtime.numerics.command import hidden_note
 from ..runtime.outputs import Written as WrittenFiles
 from ..runtime.outputs import inside, write_output
 from .c import write_c
@@ -41,6 +42,7 @@ class Written:
     command: object
     files: list
     refused: str | None = None
+    notes: list = field(default_factory=list)   # what the user is told of the program
 
 
 def relative_path(filename: str) -> Path:
@@ -56,10 +58,16 @@ def relative_path(filename: str) -> Path:
     return Path(*parts)
 
 
-def program_texts(model, command, sources=None) -> dict:
+def program_texts(model, command, sources=None, quirks: bool = True) -> dict:
     """{relative path: text} of one CODE command's program and its .in file;
     `sources`: {NAME: "file:line: statement"} (the translation's `defined_at`), for
-    comments that say which statement defines each named quantity."""
+    comments that say which statement defines each named quantity; `quirks`: its
+    outputs as Autolev's program computed them (as `autolev run` does)."""
+    return _program(model, command, sources, quirks)[0]
+
+
+def _program(model, command, sources, quirks: bool) -> tuple[dict, list[str]]:
+    """(program_texts, the notes the user is told of the program)."""
     extension = os.path.splitext(command.filename)[1].lower()
     found = WRITERS.get((command.kind, extension))
     if found is None:
@@ -69,30 +77,32 @@ def program_texts(model, command, sources=None) -> dict:
             "code writes CODE ALGEBRAIC and NONLINEAR programs in .c and .m, CODE DYNAMICS "
             "and ODE in .c, .m and Fortran .f/.for)")
     plan_of, write = found
-    plan = plan_of(model, command)
+    plan = plan_of(model, command, quirks)
     plan.sources = dict(sources or {})
-    return {relative_path(name): text for name, text in write(plan).items()}
+    notes = [hidden_note(command.filename, plan.hidden)] if plan.hidden else []
+    return {relative_path(name): text for name, text in write(plan).items()}, notes
 
 
-def write_programs(model, out_dir, commands=None, overwrite: bool = False) -> list[Written]:
+def write_programs(model, out_dir, commands=None, overwrite: bool = False,
+                   quirks: bool = True) -> list[Written]:
     """Write each CODE command's program (default: all of the model's) and the .in
     file it reads into `out_dir`, naming in comments the statements of the model's .al
     file that define its quantities (a model loaded from its translation).  Every text
     is made before any file is written, and each file appears whole (written aside,
     then renamed).  A file in the way that autolev did not write stops it before
-    anything is written, unless `overwrite`."""
+    anything is written, unless `overwrite`.  `quirks`: as program_texts'."""
     sources = model.loaded.defined_at if model.loaded is not None else {}
     out = Path(out_dir)
     done = []
     texts = {}
     for command in (model.code_commands if commands is None else commands):
         try:
-            made = program_texts(model, command, sources)
+            made, notes = _program(model, command, sources, quirks)
         except AutolevModelError as exc:
             done.append(Written(command, [], str(exc)))
             continue
         texts.update(made)
-        done.append(Written(command, [out / p for p in made]))
+        done.append(Written(command, [out / p for p in made], notes=notes))
     if texts:
         out.mkdir(parents=True, exist_ok=True)
     # every name checked first: one that leads outside, or a file of someone else's in

@@ -19,7 +19,8 @@ from ..runtime.io import CodeKind
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs
 from ..runtime.numerics.command import (encoded_values, equations_and_unknowns,
-                                         output_columns, program_file_name, solution_columns,
+                                         hidden_in_outputs, output_columns,
+                                         program_file_name, solution_columns,
                                          solver_expressions, sweep_of, take_time,
                                          time_dependence)
 from ..runtime.numerics.system import NumericSystem, lower_derivative, read_order
@@ -66,6 +67,8 @@ class Plan:
     sweep: "Sweep | None" = None
     # {NAME (upper case, as the program spells it): "file:line: statement"}
     sources: dict = field(default_factory=dict)
+    # the model's quantities Autolev's output routine hid (computed as 0 there)
+    hidden: list = field(default_factory=list)
 
     @property
     def unknowns(self) -> list:
@@ -145,11 +148,12 @@ def is_fortran(filename: str) -> bool:
     return filename.lower().endswith((".f", ".for"))
 
 
-def plan_algebraic(model, command) -> Plan:
+def plan_algebraic(model, command, quirks: bool = True) -> Plan:
     """The plan of a CODE ALGEBRAIC() program (every ENCODE and OUTPUT quantity
     evaluated once from the values its .in file gives, or once per value of a swept
     input), of a CODE ALGEBRAIC(EQ, x, ...) one (the linear equations solved first) and
-    of a CODE NONLINEAR(EQ, x, ...) one (Newton's method from the guesses read)."""
+    of a CODE NONLINEAR(EQ, x, ...) one (Newton's method from the guesses read).
+    `quirks`: its outputs as Autolev's program computed them (as `autolev run` does)."""
     kind = command.kind
     equations, unknowns = equations_and_unknowns(command.args, kind.upper())
     files = solution_columns(command, output_columns(model, command), unknowns)
@@ -158,7 +162,8 @@ def plan_algebraic(model, command) -> Plan:
     with defs.as_of(command.definitions):
         system = NumericSystem(model, files, encoded, integrate=False, solved=unknowns,
                                extra=solver_expressions(defs, kind, equations, unknowns),
-                               compile_functions=False)
+                               hidden_in_outputs=hidden_in_outputs(command) if quirks
+                               else (), compile_functions=False)
         extra = system.extra_exprs
         timed = time_dependence(model, system)
         fixed = dict(system.aux_fixed)
@@ -198,7 +203,7 @@ def plan_algebraic(model, command) -> Plan:
                 specified=list(system.specified), named=named, statements=statements,
                 encoded=encoded_plan, files=out_files, degree_inputs=degrees,
                 values={s: values.values[s] for s in values.names}, solving=solving,
-                sweep=sweep)
+                sweep=sweep, hidden=[s.name for s in system.hidden_in_outputs])
 
 
 def _sweep_of(command, inputs: list, values: Inputs) -> Sweep | None:
@@ -240,6 +245,7 @@ class DynamicsPlan:
     time_unit: str | None = None
     options: tuple = ()         # SUBS / NOSUBS
     sources: dict = field(default_factory=dict)     # as Plan's
+    hidden: list = field(default_factory=list)      # as Plan's
 
     @property
     def derivatives(self) -> list:
@@ -248,10 +254,10 @@ class DynamicsPlan:
         return [d for d in map(S.derivative, self.states) if d not in self.constants]
 
 
-def plan_dynamics(model, command) -> DynamicsPlan:
+def plan_dynamics(model, command, quirks: bool = True) -> DynamicsPlan:
     """The plan of a CODE DYNAMICS() program, or of a CODE ODE(EQ, x'', ...) one: the
     same program, the unknown derivatives solved from the equations in place of
-    Kane's (as `autolev run` integrates it)."""
+    Kane's (as `autolev run` integrates it).  `quirks`: as plan_algebraic's."""
     what = command.kind.upper()
     equations, unknowns = equations_and_unknowns(command.args, what)
     if command.kind is CodeKind.DYNAMICS and command.args:
@@ -265,7 +271,8 @@ def plan_dynamics(model, command) -> DynamicsPlan:
     with defs.as_of(command.definitions):
         system = NumericSystem(model, files, encoded, integrate=True, solving=ode,
                                zero=command.zero if command.kind is CodeKind.DYNAMICS else None,
-                               compile_functions=False)
+                               hidden_in_outputs=hidden_in_outputs(command) if quirks
+                               else (), compile_functions=False)
         if not system.nstate:
             raise AutolevModelError(f"CODE {what}: the model has no state to integrate "
                                     "(no speeds or variables with derivatives)")
@@ -307,7 +314,8 @@ def plan_dynamics(model, command) -> DynamicsPlan:
         rhs_statements=rhs_statements, rates=rates, mass=mass, forcing=forcing,
         unknowns=unknowns, output_statements=out_statements, files=out_files,
         encoded=encoded_plan, named=named, degree_inputs=degrees,
-        time_unit=values.unit_of("T"), options=tuple(command.options))
+        time_unit=values.unit_of("T"), options=tuple(command.options),
+        hidden=[s.name for s in system.hidden_in_outputs])
 
 
 def _shown(system, outputs: list) -> tuple[list, list]:

@@ -260,6 +260,16 @@ def hidden_in_outputs(command) -> tuple:
     return ("i1",) if program_language(command.filename) == "c" else ()
 
 
+def hidden_note(filename: str, hidden) -> str:
+    """What `autolev run` and `autolev code` both say when they compute a program's
+    outputs as Autolev's did, with the model's `hidden` quantities read as 0."""
+    return (f"{filename}: Autolev's C program computed the OUTPUT and ENCODE quantities "
+            "with " + ", ".join(f"{s} = 0" for s in hidden) + " (its output routine's "
+            "counter `int i1` hides the model's i1); `autolev run` and `autolev code` "
+            "reproduce them as it printed them (--no-quirks, or quirks=False, for the "
+            "values meant)")
+
+
 def solver_expressions(defs, kind: CodeKind, equations: list, unknowns: list) -> dict | None:
     """What CODE ALGEBRAIC (the linear system's matrix and right side) and CODE
     NONLINEAR (residuals and their Jacobian) evaluate besides the outputs."""

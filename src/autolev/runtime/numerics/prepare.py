@@ -16,7 +16,7 @@ from ..io import CodeKind
 from ..steps import SlowStep
 from .advice import inertia_problems
 from .command import (encoded_values, equations_and_unknowns, find_symbol, given_specified,
-                      hidden_in_outputs, names_a_quantity, output_columns,
+                      hidden_in_outputs, hidden_note, names_a_quantity, output_columns,
                       program_file_name, program_of, solution_columns, solved_by_lu,
                       solver_expressions, sweep_values, take_time, time_dependence)
 from .files import safe_stem
@@ -174,12 +174,7 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
         keep_system(model, command, build, system)
     build_seconds = time.perf_counter() - build_start
     if system.hidden_in_outputs:
-        warnings.warn(
-            f"{command.filename}: Autolev's C program computed the OUTPUT and ENCODE "
-            "quantities with " + ", ".join(f"{s} = 0" for s in system.hidden_in_outputs)
-            + " (its output routine's counter `int i1` hides the model's i1); reproduced "
-            "as it printed them (--no-quirks, or quirks=False, for the values meant)",
-            stacklevel=3)
+        warnings.warn(hidden_note(command.filename, system.hidden_in_outputs), stacklevel=3)
     set_specified(model, system, specified, warn_unassigned)
     sweep = sweep_values(model, command, inputs)
     system.set_parameters(inputs.vector(system.params))
