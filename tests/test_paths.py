@@ -1,0 +1,99 @@
+"""One answer on every path (bench/paths.py): a fast subset of the path table, and the
+harness's own comparisons shown to catch what they are there to catch."""
+import importlib.util
+import shutil
+import sys
+
+import numpy as np
+import pytest
+
+from helpers import EXAMPLES, ROOT
+
+sys.path.insert(0, str(ROOT / "bench"))
+spec = importlib.util.spec_from_file_location("paths", ROOT / "bench" / "paths.py")
+paths = importlib.util.module_from_spec(spec)
+sys.modules["paths"] = paths
+spec.loader.exec_module(paths)
+
+pytestmark = pytest.mark.skipif(shutil.which("gcc") is None and shutil.which("cc") is None,
+                                reason="the paths include the C back end and written C")
+
+MODELS = [EXAMPLES / "double_pendulum.al",
+          # formed by SOLVE(ZERO, U1', U2'): model.mass_matrix/forcing were 0 = 0
+          ROOT / "tests" / "data" / "equations" / "solved_double_pendulum.al",
+          # a tree of joints: the articulated-body recursion against the mass matrix
+          EXAMPLES / "nlink_pendulum.al"]
+
+
+@pytest.mark.parametrize("model", MODELS, ids=lambda p: p.stem)
+def test_every_path_gives_the_answer_of_a_cold_run(model, tmp_path):
+    row = paths.ModelPaths(model.stem, model, None, tmp_path, 300, 2).all()
+    differing = {p: f"{c.mark}: {c.detail}" for p, c in row.cells.items() if c.differs}
+    assert differing == {}
+    # the paths that compute the same numbers give the same bytes
+    for p in ("warm", "no-cache", "foreground", "python", "api", "module", "r:python",
+              "r:module", "l:warm", "l:no-cache"):
+        assert row.cells[p].mark == "=", (p, row.cells[p])
+    # the model-level equations and the exported script were compared, not skipped
+    for p in ("r:M,f", "r:explicit", "r:symsys", "r:script", "code", "script"):
+        assert row.cells[p].mark in ("=", "~"), (p, row.cells[p])
+
+
+def _files(folder, text):
+    folder.mkdir()
+    (folder / "m.1").write_text(text)
+    return folder
+
+
+def test_identical_files_are_required_where_the_numbers_are_the_same(tmp_path):
+    one = _files(tmp_path / "one", "% t x\n 0.0 1.000000E+00\n 0.1 9.950042E-01\n")
+    assert paths.same_files(one, one).mark == "="
+    two = _files(tmp_path / "two", "% t x\n 0.0 1.000000E+00\n 0.1 9.950043E-01\n")
+    cell = paths.same_files(one, two)
+    assert cell.mark == "DIFF" and "m.1 line 3" in cell.detail
+    three = tmp_path / "three"
+    three.mkdir()
+    assert paths.same_files(one, three).mark == "DIFF"
+
+
+def test_rates_within_the_tolerance_and_beyond_it():
+    reference = {"states": ["Q1", "U1"], "rates": [[0.5, -2.0]]}
+    assert paths.compare_rates(reference, {"states": ["U1", "Q1"],
+                                           "rates": [[-2.0, 0.5]]}).mark == "="
+    near = {"states": ["Q1", "U1"], "rates": [[0.5, -2.0 * (1 + 1e-12)]]}
+    assert paths.compare_rates(reference, near).mark == "~"
+    far = {"states": ["Q1", "U1"], "rates": [[0.5, -2.0 * (1 + 1e-6)]]}
+    assert paths.compare_rates(reference, far).mark == "DIFF"
+    missing = {"states": ["Q1"], "rates": [[0.5]]}
+    assert paths.compare_rates(reference, missing).mark == "-"
+    broken = {"states": ["Q1", "U1"], "rates": [[0.5, float("nan")]]}
+    assert paths.compare_rates(reference, broken).mark == "DIFF"
+
+
+def test_a_stale_answer_is_a_difference(tmp_path):
+    # a warm run that repeats another input's rows is caught by the warm path
+    model = EXAMPLES / "simple_pendulum.al"
+    other = tmp_path / "m.al"
+    other.write_text(model.read_text().replace("INPUT THETA = 10 deg",
+                                               "INPUT THETA = 20 deg"))
+    assert other.read_text() != model.read_text()
+    harness = paths.ModelPaths("m", other, None, tmp_path / "work", 300, 1)
+    (tmp_path / "work").mkdir()
+    assert harness.reference().returncode == 0
+    stale = tmp_path / "stale"
+    outcome = paths.run_process(paths.autolev_cli("run", model, "--out", stale, "-q"),
+                                tmp_path, 300)
+    assert outcome.returncode == 0
+    harness.status = 0
+    cell = harness.compare_outcome("warm", outcome, stale, tmp_path / "work" / "run")
+    assert cell.mark == "DIFF"
+
+
+def test_the_rates_of_a_path_are_those_of_its_model(tmp_path):
+    # the rates process reads its model: another model's rates differ
+    model = EXAMPLES / "simple_pendulum.al"
+    found = paths.rates(model, [], 2, None, None)
+    other = paths.rates(model, ["--set", "L=2"], 2, None, None)
+    assert found["run"]["states"] == other["run"]["states"]
+    assert not np.allclose(found["run"]["rates"], other["run"]["rates"])
+    assert paths.compare_rates(found["run"], other["run"]).mark == "DIFF"
