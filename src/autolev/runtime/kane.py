@@ -183,18 +183,30 @@ def form(system: System, speeds: tuple[list, list, list],
     n = system.newtonian
     partials = _Partials(rows, system.defs)
     fr = [sm.S.Zero] * len(rows)
-    for p, f in system.forces.items():
-        if f.terms:
-            _accumulate(fr, partials(p.vel(n)), f)
-    for a, t in system.torques.items():
-        if t.terms:
-            _accumulate(fr, partials(a.ang_vel_in(n)), t)
     frstar = [sm.S.Zero] * len(rows)
-    if inertia:
-        _inertia_forces(system, partials, frstar)
+    with _auxiliary_held(system.defs, aux):
+        for p, f in system.forces.items():
+            if f.terms:
+                _accumulate(fr, partials(p.vel(n)), f)
+        for a, t in system.torques.items():
+            if t.terms:
+                _accumulate(fr, partials(a.ang_vel_in(n)), t)
+        if inertia:
+            _inertia_forces(system, partials, frstar)
     z = system.defs.zify
     return KaneEquations(indep, aux, dep, sm.Matrix([z(e) for e in fr]),
                          sm.Matrix([z(e) for e in frstar]))
+
+
+def _auxiliary_held(defs: Definitions, aux: list):
+    """The definitions with the auxiliary speeds undefined, while the partial
+    velocities are taken: Autolev kept each one independent there (its Fr row for an
+    independent speed has no part through an auxiliary speed's constraint), though
+    CONSTRAIN(AUXILIARY[...]) solved it (docs/language.md, "Auxiliary speeds")."""
+    now = defs.user_definitions()
+    held = set(aux) | {S.derivative(u) for u in aux}
+    return defs.as_of({s: e for s, e in now.items() if s not in held}
+                      if held & set(now) else None)
 
 
 def _accumulate(total: list, partials: Iterable[Vector], load: Vector) -> None:

@@ -154,10 +154,6 @@ full_mass, full_forcing = (
 U1p = U1.diff(t)
 # intermediates the outputs use (Autolev's Z's, the model's definitions), as
 # functions of time, and what each is, in the order they are computed
-UA1_2 = me.dynamicsymbols('UA1_2')
-UA1p = me.dynamicsymbols('UA1p')
-UA2_2 = me.dynamicsymbols('UA2_2')
-UA2p = me.dynamicsymbols('UA2p')
 z4 = me.dynamicsymbols('z4')
 z6 = me.dynamicsymbols('z6')
 z7 = me.dynamicsymbols('z7')
@@ -173,6 +169,8 @@ z42 = me.dynamicsymbols('z42')
 z43 = me.dynamicsymbols('z43')
 z44 = me.dynamicsymbols('z44')
 Q1p = me.dynamicsymbols('Q1p')
+UA1_2 = me.dynamicsymbols('UA1_2')
+UA2_2 = me.dynamicsymbols('UA2_2')
 z15 = me.dynamicsymbols('z15')
 U2_2 = me.dynamicsymbols('U2_2')
 Q2p = me.dynamicsymbols('Q2p')
@@ -186,6 +184,8 @@ z20 = me.dynamicsymbols('z20')
 z21 = me.dynamicsymbols('z21')
 z22 = me.dynamicsymbols('z22')
 z23 = me.dynamicsymbols('z23')
+UA1p = me.dynamicsymbols('UA1p')
+UA2p = me.dynamicsymbols('UA2p')
 z66 = me.dynamicsymbols('z66')
 z71 = me.dynamicsymbols('z71')
 z33 = me.dynamicsymbols('z33')
@@ -214,10 +214,6 @@ z63 = me.dynamicsymbols('z63')
 z69 = me.dynamicsymbols('z69')
 z70 = me.dynamicsymbols('z70')
 intermediates = [
-    (UA1_2, sm.sympify(0.0)),
-    (UA1p, sm.sympify(0.0)),
-    (UA2_2, sm.sympify(0.0)),
-    (UA2p, sm.sympify(0.0)),
     (z4, -sm.sin(Q2)*sm.sin(Q3) + sm.cos(Q2)*sm.cos(Q3)),
     (z6, sm.sin(Q2)*sm.cos(Q3) + sm.sin(Q3)*sm.cos(Q2)),
     (z7, z4*sm.cos(Q1) - z6*sm.sin(Q1)),
@@ -233,6 +229,8 @@ intermediates = [
     (z43, -L4**2*z7**2/(2*z14) + L4*z40*z7/2),
     (z44, -L3*L4*z1*z7/z14 + z43),
     (Q1p, U1),
+    (UA1_2, sm.sympify(0)),
+    (UA2_2, sm.sympify(0)),
     (z15, L4*z7*(L2*U1*sm.sin(Q1) + L3*U1*z3 + L4*U1*z9 - UA1_2) + L4*z9*(-L2*U1*sm.cos(Q1) - L3*U1*z1 - L4*U1*z7 - UA2_2)),
     (U2_2, z15/z14),
     (Q2p, U2_2),
@@ -246,6 +244,8 @@ intermediates = [
     (z21, Q1p*(-z4*sm.sin(Q1) - z6*sm.cos(Q1)) + z19*sm.cos(Q1) - z20*sm.sin(Q1)),
     (z22, Q1p*(z4*sm.cos(Q1) - z6*sm.sin(Q1)) + z19*sm.sin(Q1) + z20*sm.cos(Q1)),
     (z23, L3*L4*z17*z9 - L3*L4*z18*z7 + z21*(L4**2*z9 + L4*(-L3*z3 - L4*z9)) + z22*(-L4**2*z7 + L4*(L3*z1 + L4*z7))),
+    (UA1p, sm.sympify(0)),
+    (UA2p, sm.sympify(0)),
     (z66, -L4*z7/z14 + z40),
     (z71, -G*L3*RHO*z32 - G*L4*RHO*z44),
     (z33, L3*L4*z3*z9/(2*z14)),

@@ -127,11 +127,10 @@ class NumericSystem(CompiledEvaluation):
         self.specified_functions: list = []
 
     def _fix_speeds(self, locked) -> None:
-        """Auxiliary speeds and the speeds of locked coordinates: 0, as their rates."""
+        """The speeds of locked coordinates: 0, as their rates.  (An auxiliary speed
+        takes the value its CONSTRAIN(AUXILIARY[...]) solved for it: 0 when it only
+        brings a force into evidence, else the motion the constraint allows.)"""
         self.aux_fixed = {}
-        for u in self.model.auxiliary_speeds:
-            self.aux_fixed[u] = 0.0
-            self.aux_fixed[S.derivative(u)] = 0.0
         self.locked = list(locked)
         self._locked_speeds = [self._speed_of_locked(q) for q in self.locked]
         for u in self._locked_speeds:
