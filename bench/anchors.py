@@ -406,7 +406,7 @@ class OursServer:
 
     def op_hello(self, pinocchio: str) -> dict:
         import autolev
-        from autolev.runtime.numerics import clibrary
+        from autolev.engine import clibrary
         self.pinocchio = Pinocchio(Path(pinocchio))
         cc = clibrary.compiler()
         return {"module": str(Path(autolev.__file__).parent), "flags": list(clibrary.C_FLAGS),
@@ -511,7 +511,7 @@ class OursServer:
         import autolev                                # noqa: F401  (this tree's, first)
         import large_models                           # (it puts this checkout's src first)
         from autolev.loader import load_for_run
-        from autolev.runtime.numerics.options import RunOptions
+        from autolev.engine.options import RunOptions
         from autolev.runtime.numerics.prepare import keep_built, prepare_command
         start = time.perf_counter()
         model, _ = load_for_run(path)

@@ -53,7 +53,7 @@ def default_models(folder: Path) -> list[Path]:
 def measure(path: Path, flags: tuple, driver: CDriver) -> tuple:
     import autolev
     from autolev.runtime import MissingValues
-    from autolev.runtime.numerics import clibrary
+    from autolev.engine import clibrary
     clibrary.C_FLAGS = flags
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

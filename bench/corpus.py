@@ -117,7 +117,7 @@ def _run_code(model, out: dict) -> None:
     import tempfile
     import warnings
 
-    from autolev.runtime.errors import AutolevModelError
+    from autolev.engine.errors import AutolevModelError
     from autolev.runtime.numerics.run import run_command
     if not model.code_commands:
         return

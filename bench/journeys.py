@@ -95,7 +95,7 @@ from written_programs import octave, run_octave, with_table_values  # noqa: E402
 
 from autolev.cli import EXIT_INTERNAL  # noqa: E402
 from autolev.programs.f_subroutines import kutta_and_solve  # noqa: E402
-from autolev.runtime.numerics.clibrary import compiler  # noqa: E402
+from autolev.engine.clibrary import compiler  # noqa: E402
 
 COMMANDS = ("check", "convert", "run", "code", "linearize", "animate", "transcript",
             "verify")

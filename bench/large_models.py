@@ -84,10 +84,11 @@ import json, resource, sys, time, warnings
 t0 = time.perf_counter()
 import autolev
 from autolev.loader import load_for_run
-from autolev.runtime.errors import AutolevModelError
-from autolev.runtime.numerics import clibrary, codegen
+from autolev.engine.errors import AutolevModelError
+from autolev.engine import clibrary
+from autolev.runtime.numerics import codegen
 from autolev.runtime.numerics.prepare import keep_built
-from autolev.runtime.numerics.options import RunOptions
+from autolev.engine.options import RunOptions
 from autolev.runtime.numerics.run import run_command
 t1 = time.perf_counter()
 code = {"c": 0, "python": 0, "compile": 0.0}
@@ -187,8 +188,9 @@ sys.path.insert(0, sys.argv[3])
 warnings.simplefilter("ignore")
 import autolev, large_models, rhs_speed
 from autolev.loader import load_for_run
-from autolev.runtime.numerics import clibrary, codegen
-from autolev.runtime.numerics.options import RunOptions
+from autolev.engine import clibrary
+from autolev.runtime.numerics import codegen
+from autolev.engine.options import RunOptions
 from autolev.runtime.numerics.prepare import prepare_command
 model, notes = load_for_run(sys.argv[1])
 infile = sys.argv[2] or None
@@ -338,7 +340,7 @@ def _input_path(program: str) -> str | None:
 
 def autolev_per_eval(program: Path, infile, workdir: Path) -> dict | str:
     """Autolev's eqns1 timed; the compile time of its program too."""
-    from autolev.runtime.numerics import clibrary
+    from autolev.engine import clibrary
     text = program.read_text(errors="replace")
     where = _input_path(text)
     if where is None:

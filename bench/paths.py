@@ -466,7 +466,7 @@ def api_run(path: Path, out: Path, recursion: bool, options: list) -> int:
 
 
 def _run_options(infile, values: dict, recursion: bool):
-    from autolev.runtime.numerics.options import RunOptions
+    from autolev.engine.options import RunOptions
     return RunOptions(infile=infile, overrides=values or None, recursion=recursion,
                       keep_rows=False)
 
@@ -505,7 +505,7 @@ def rates(path: Path, options: list, count: int, module: Path | None,
     import warnings
 
     import autolev
-    from autolev.runtime.numerics.options import RunOptions
+    from autolev.engine.options import RunOptions
     from autolev.runtime.numerics.prepare import prepare_command
     warnings.simplefilter("ignore")
     infile, values = _values(options)

@@ -104,7 +104,7 @@ class CDriver:
     """The timing loop above, compiled once into a temporary folder."""
 
     def __init__(self):
-        from autolev.runtime.numerics import clibrary
+        from autolev.engine import clibrary
         cc = clibrary.compiler()
         if cc is None:
             raise RuntimeError("no C compiler: the C timings need one")

@@ -39,7 +39,7 @@ sys.path.insert(0, str(ROOT / "src"))
 
 import autolev  # noqa: E402
 from autolev.errors import AutolevRuntimeError  # noqa: E402
-from autolev.runtime.errors import AutolevModelError  # noqa: E402
+from autolev.engine.errors import AutolevModelError  # noqa: E402
 from autolev.runtime.numerics.projection import Projector  # noqa: E402
 
 EXAMPLES = ROOT / "autolev_examples"

@@ -221,10 +221,10 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
         return out
     # the CODE command that made this program (a model may RUN another's CODE first)
     program = Path(row["source"].split(":", 1)[1].split("@")[0]).stem.lower()
-    from autolev.runtime.numerics.files import safe_stem
+    from autolev.engine.files import safe_stem
     named = [c for c in commands if safe_stem(c.filename).lower() == program]
     command = named[0] if named else commands[-1]
-    from autolev.runtime.numerics.options import RunOptions
+    from autolev.engine.options import RunOptions
     from autolev.runtime.numerics.run import run_command
     notes = []
     with warnings.catch_warnings(record=True) as caught:

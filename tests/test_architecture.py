@@ -44,7 +44,8 @@ def test_no_import_cycle_in_the_package():
 
 @pytest.mark.parametrize("module", _under("autolev.runtime"))
 def test_runtime_never_imports_the_translator_or_the_parser(module):
-    outside = {m for m in GRAPH[module] if not m.startswith("autolev.runtime")}
+    outside = {m for m in GRAPH[module] if not m.startswith(("autolev.runtime",
+                                                               "autolev.engine"))}
     assert outside <= {"autolev.errors"}, f"{module} imports {sorted(outside)}"
 
 
@@ -85,16 +86,20 @@ def test_no_field_of_a_model_is_read_with_a_default():
     assert found == []
 
 
-def test_the_integration_loop_and_the_output_files_need_no_sympy():
-    # what integrates, evaluates or solves a compiled system and writes its rows reads no
-    # model: a warm run can do without importing sympy (issue 32)
+@pytest.mark.parametrize("module", _under("autolev.engine"))
+def test_the_engine_imports_nothing_outside_itself(module):
+    # what a run plan executes (issue 52): its imports, function-level ones too, stay in
+    # the package, so a warm run needs no model, translator or sympy
+    outside = {m for m in GRAPH[module] if not m.startswith("autolev.engine")}
+    assert outside == set(), f"{module} imports {sorted(outside)}"
+
+
+def test_the_engine_needs_no_sympy_nor_scipy_to_import():
     import subprocess
-    modules = ["dynamics", "integrate", "integration_notes", "cloop", "files", "results",
-               "massmatrix", "options", "algebraic", "execute", "compiled", "pyfunction",
-               "evaluation"]
-    code = ("import sys\n" + "".join(f"import autolev.runtime.numerics.{m}\n" for m in modules)
-            + "import autolev.runtime.diskcache, autolev.runtime.code_kinds\n"
-            "print(sorted(m for m in ('sympy', 'scipy') if m in sys.modules))")
+    engine = ROOT / "src" / "autolev" / "engine"
+    modules = sorted(p.stem for p in engine.glob("*.py") if p.stem != "__init__")
+    code = ("import sys\n" + "".join(f"import autolev.engine.{m}\n" for m in modules)
+            + "print(sorted(m for m in ('sympy', 'scipy') if m in sys.modules))")
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           cwd=ROOT, env={"PYTHONPATH": str(ROOT / "src"), "PATH": ""})
     assert done.returncode == 0, done.stderr

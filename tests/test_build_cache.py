@@ -5,8 +5,8 @@ import stat
 import subprocess
 import pytest
 
-from autolev.runtime import diskcache
-from autolev.runtime.numerics import clibrary
+from autolev.engine import diskcache
+from autolev.engine import clibrary
 from helpers import EXAMPLES
 
 pytestmark = pytest.mark.skipif(clibrary.compiler() is None, reason="needs a C compiler")

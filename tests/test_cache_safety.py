@@ -12,8 +12,9 @@ import sys
 import pytest
 
 import autolev
-from autolev import cachekeys, modelcache
-from autolev.runtime import diskcache
+from autolev.engine import cachekeys
+from autolev import modelcache
+from autolev.engine import diskcache
 from helpers import EXAMPLES
 
 

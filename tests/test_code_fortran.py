@@ -18,7 +18,7 @@ from autolev.loader import load_for_run
 from autolev.programs import program_texts
 from autolev.programs.f import FortranPrinter, statement
 from autolev.programs.f_subroutines import kutta_and_solve
-from autolev.runtime.errors import AutolevModelError
+from autolev.engine.errors import AutolevModelError
 from helpers import CORPUS, EXAMPLES, ROOT, SHARED
 
 GFORTRAN = shutil.which("gfortran")

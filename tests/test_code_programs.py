@@ -13,7 +13,7 @@ import pytest
 
 import autolev
 from autolev.cli import main
-from autolev.runtime.errors import AutolevModelError
+from autolev.engine.errors import AutolevModelError
 from autolev.loader import load_for_run
 from autolev.programs import program_texts, write_programs
 from autolev.programs.plan import input_file_name, plan_algebraic
@@ -504,7 +504,8 @@ def test_an_output_column_that_is_exactly_zero_is_passed_to_writef_as_a_double()
 
 def test_a_model_autolev_code_built_is_kept_in_the_cache_of_built_models(tmp_path,
                                                                          monkeypatch):
-    from autolev import cachekeys, modelcache
+    from autolev.engine import cachekeys
+    from autolev import modelcache
     monkeypatch.setenv("AUTOLEV_CACHE", str(tmp_path / "cache"))
     monkeypatch.delenv(cachekeys.DISABLE_VARIABLE, raising=False)
     path = tmp_path / "arm.al"

@@ -8,7 +8,7 @@ import pytest
 
 import autolev
 from helpers import EXAMPLES, load_model
-from autolev.runtime.numerics import clibrary
+from autolev.engine import clibrary
 
 
 pytestmark = pytest.mark.skipif(clibrary.compiler() is None, reason="needs a C compiler")
@@ -129,7 +129,7 @@ def test_slices_and_blocks_of_a_long_run_continue_exactly_where_they_stopped(met
     m = compiled(load("double_pendulum"))
     system = run(m, TFINAL=0.1).system
     y0 = np.array([0.5, 1.0, 0.0, 0.0])
-    sched = autolev.runtime.numerics.integrate.Schedule(0.0, 20.0, 0.1, 3)
+    sched = autolev.engine.integrate.Schedule(0.0, 20.0, 0.1, 3)
     opts = dict(t0=0.0, rtol=1e-10, atol=1e-10, integstp=0.1, max_step=0.1)
 
     def blocks(size):
@@ -161,7 +161,7 @@ def test_slices_and_blocks_of_a_long_run_continue_exactly_where_they_stopped(met
 def test_the_schedule_in_blocks_is_autolevs_loop():
     """Blocks of any size give the T of repeated addition and the print flags of
     Autolev's counter, the last step printed (a loop written out here as reference)."""
-    from autolev.runtime.numerics.integrate import Schedule
+    from autolev.engine.integrate import Schedule
 
     def reference(t0, t1, h, printint):
         out, t, counter = [], t0, printint
@@ -217,7 +217,7 @@ def test_no_stiffness_is_reported_for_ordinary_models(name, method):
 
 
 def test_cpython_entry_point_gives_the_ctypes_numbers():
-    from autolev.runtime.numerics.cloop import python_include
+    from autolev.engine.cloop import python_include
     system = run(compiled(load("rolling_disc")), TFINAL=0.1).system
     loop = system.loop
     if python_include() is None:
@@ -262,7 +262,7 @@ def test_fast_path_returns_fresh_arrays_and_reports_singularity():
     assert a is not b and np.array_equal(a, b)
     a[:] = 0.0                                # the caller may keep or change it
     assert np.array_equal(system.derivatives(0.0, x), b)
-    from autolev.runtime.numerics.massmatrix import SingularMassMatrix
+    from autolev.engine.massmatrix import SingularMassMatrix
     zero = load("zero_inputs")                # L = 0: a singular mass matrix
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -275,7 +275,7 @@ def handed_over(method: str, schedule, python_steps: int) -> dict:
     """The double pendulum integrated with `method` on `schedule`: in Python alone, in
     the compiled loop alone, and in Python for `python_steps` steps (a cold run while
     its C compiles) then handed to the loop; each (rows, stats)."""
-    from autolev.runtime.numerics.integrate import integrate
+    from autolev.engine.integrate import integrate
     m = load("double_pendulum")
     in_c = run(m, TFINAL=0.1).system
     loop = in_c.compiled_loop(wait=True)
@@ -301,7 +301,7 @@ def handed_over(method: str, schedule, python_steps: int) -> dict:
 def test_kutta_merson_goes_on_in_c_from_where_python_stepped(python_steps):
     """A cold run steps in Python while its C compiles, then hands T, the state and its
     step to the compiled loop: the rows are those of either alone, to the last bit."""
-    from autolev.runtime.numerics.integrate import Schedule
+    from autolev.engine.integrate import Schedule
     runs = handed_over("kutta-merson", Schedule(0.0, 20.0, 0.1, 3), python_steps)
     (in_python, only_python), (in_c, only_c) = runs["python"], runs["c"]
     handed, both = runs["handed"]
@@ -324,7 +324,7 @@ def test_rk45_afresh_each_step_goes_on_in_c_from_where_scipy_stepped(python_step
     scipy's steps while the C compiles, then the compiled loop from that T and state
     (nothing else carries over a step): the rows before are scipy's, to the last bit,
     and the rest the loop's to rounding level (its sums in another order)."""
-    from autolev.runtime.numerics.integrate import Schedule
+    from autolev.engine.integrate import Schedule
     runs = handed_over("rk45", Schedule(0.0, 20.0, 0.1, 3, restart_each_step=True),
                        python_steps)
     (in_python, only_python), (in_loop, only_c) = runs["python"], runs["c"]
@@ -400,7 +400,7 @@ def test_rows_whose_specified_quantities_are_functions_go_one_by_one():
 
 
 def test_rows_formatted_in_c_are_the_characters_pythons_percent_writes():
-    from autolev.runtime.numerics import rowtext
+    from autolev.engine import rowtext
     rng = np.random.default_rng(7)
     mantissas = rng.uniform(1, 10, 4000) * rng.choice([-1, 1], 4000)
     exponents = rng.integers(-320, 309, 4000).astype(float)

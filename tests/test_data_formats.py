@@ -9,7 +9,7 @@ import scipy.io
 
 import autolev
 from autolev.cli import main
-from autolev.runtime.numerics.results import matlab_names
+from autolev.engine.results import matlab_names
 from helpers import EXAMPLES
 from test_linearize import PENDULUM
 

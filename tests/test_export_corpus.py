@@ -16,7 +16,7 @@ import pytest
 
 import autolev
 from autolev.export_mechanics import MOST_SPEEDS, export_sympy
-from autolev.runtime.errors import AutolevModelError, MissingValues
+from autolev.engine.errors import AutolevModelError, MissingValues
 from helpers import ROOT, SHARED
 from helpers.sympy_scripts import (column_relative, equations_difference, rows_difference,
                                    run_script)

@@ -13,7 +13,7 @@ import autolev
 from autolev.cli import main
 from autolev.export_mechanics import export_sympy
 from autolev.runtime.interop import simple_rotation
-from autolev.runtime.errors import AutolevModelError
+from autolev.engine.errors import AutolevModelError
 from helpers import EXAMPLES
 from helpers.sympy_scripts import equations_difference, rows_difference, run_script
 

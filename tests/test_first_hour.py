@@ -327,7 +327,7 @@ def test_an_edited_module_that_breaks_is_a_diagnostic_at_its_line(model_file, tm
 def test_one_panel_per_unit_sharing_time_with_labelled_axes():
     pytest.importorskip("matplotlib", reason="plots need the optional matplotlib")
     from autolev.plots import figure
-    from autolev.runtime.numerics.results import OutputTable
+    from autolev.engine.results import OutputTable
     t = np.linspace(0, 10, 101)
     table = OutputTable("m.1", ["T", "Q1", "Q2", "U1", "ENERGY"],
                         ["sec", "deg", "DEG", "rad/sec", "joules"],
@@ -349,7 +349,7 @@ def test_one_panel_per_unit_sharing_time_with_labelled_axes():
 def test_a_table_without_time_is_plotted_against_its_first_column_and_says_so():
     pytest.importorskip("matplotlib", reason="plots need the optional matplotlib")
     from autolev.plots import figure
-    from autolev.runtime.numerics.results import OutputTable
+    from autolev.engine.results import OutputTable
     x = np.linspace(0, 1, 11)
     fig = figure(OutputTable("sweep.1", ["Q", "Y"], ["deg", None],
                              np.column_stack([x, x ** 2])))

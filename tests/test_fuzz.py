@@ -170,7 +170,7 @@ def careless_write(target, data, mode=0o666):
 
 
 def test_a_write_through_a_planted_link_is_an_escape(tmp_path, monkeypatch):
-    from autolev.runtime import outputs
+    from autolev.engine import outputs
     case = pendulum_case(**{"out/simple_pendulum.in": ["symlink", "@OUTSIDE@/victim1"]})
     (tmp_path / "cwd").mkdir()
     assert fuzz.check_commands_case(case, tmp_path)["outcome"] == "ok"
@@ -180,7 +180,7 @@ def test_a_write_through_a_planted_link_is_an_escape(tmp_path, monkeypatch):
 
 
 def test_a_users_file_replaced_without_overwrite_is_clobbered(tmp_path, monkeypatch):
-    from autolev.runtime import outputs
+    from autolev.engine import outputs
     case = pendulum_case(**{"out/simple_pendulum.c": ["file", "my own program\n"]})
     (tmp_path / "cwd").mkdir()
     assert fuzz.check_commands_case(case, tmp_path)["outcome"] == "diagnosed"
@@ -190,7 +190,7 @@ def test_a_users_file_replaced_without_overwrite_is_clobbered(tmp_path, monkeypa
 
 
 def test_a_temporary_left_behind_is_a_failure(tmp_path, monkeypatch):
-    from autolev.runtime import outputs
+    from autolev.engine import outputs
     really_writes = outputs.write_whole
 
     def leaves_one(target, data, mode=0o666):

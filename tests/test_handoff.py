@@ -10,7 +10,7 @@ import sympy as sm
 
 import autolev
 from autolev.export_mechanics import export_sympy
-from autolev.runtime.errors import AutolevModelError
+from autolev.engine.errors import AutolevModelError
 from autolev.runtime.numerics.prepare import prepare_command
 from helpers import EXAMPLES
 

@@ -70,7 +70,7 @@ def test_a_file_where_the_output_folder_should_be(tmp_path):
 def test_a_full_disk_while_writing_rows(tmp_path, monkeypatch):
     import errno
 
-    from autolev.runtime.numerics import files
+    from autolev.engine import files
     from helpers import EXAMPLES
     model = autolev.load(EXAMPLES / "double_pendulum.al")
 

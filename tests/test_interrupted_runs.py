@@ -28,7 +28,7 @@ import os, signal, sys
 # Ctrl-C as a terminal delivers it, whatever started the tests
 signal.signal(signal.SIGINT, signal.default_int_handler)
 import autolev
-from autolev.runtime.numerics import files
+from autolev.engine import files
 model = autolev.load(sys.argv[1])
 model.simulate(out_dir=sys.argv[2], TFINAL=1)            # the previous run's set
 real, count = os.replace, [0]

@@ -445,7 +445,7 @@ def test_the_written_c_program_and_the_run_compute_the_same_outputs(tmp_path, qu
     import subprocess
 
     from autolev.cli import main
-    from autolev.runtime.numerics.clibrary import compiler
+    from autolev.engine.clibrary import compiler
     if compiler() is None:
         pytest.skip("no C compiler")
     model = tmp_path / "pendulum.al"

@@ -6,7 +6,7 @@ import sympy as sm
 
 from autolev.runtime.libraries import (AutolevModelError, dormand_prince_853,
                                        sum_or_product_as_given)
-from autolev.runtime.numerics.integrate import SCIPY_METHODS, _scipy_method
+from autolev.engine.integrate import SCIPY_METHODS, _scipy_method
 
 
 def test_a_sum_is_rebuilt_from_its_terms_as_given_not_sorted_again():
@@ -41,7 +41,7 @@ def test_the_dop853_tableau_is_the_published_one():
 
 
 def test_the_shipped_dop853_tableau_is_scipys_to_the_last_bit():
-    from autolev.runtime.numerics import dop853_tableau as shipped
+    from autolev.engine import dop853_tableau as shipped
     k = dormand_prince_853()
     assert (shipped.STAGES, shipped.EXTENDED) == (k.stages, k.extended)
     for name, theirs in (("A", k.a), ("B", k.b), ("C", k.c), ("E3", k.e3), ("E5", k.e5),
@@ -51,7 +51,7 @@ def test_the_shipped_dop853_tableau_is_scipys_to_the_last_bit():
 
 def test_the_shipped_rk45_tableau_is_scipys_to_the_last_bit():
     from scipy.integrate import RK45
-    from autolev.runtime.numerics import rk45_tableau as shipped
+    from autolev.engine import rk45_tableau as shipped
     assert shipped.STAGES == RK45.n_stages
     a = np.array(shipped.A).reshape(6, 6)       # scipy's is 6 x 5: no stage uses the last
     assert np.array_equal(a[:, :5], RK45.A) and not a[:, 5].any()
@@ -62,7 +62,7 @@ def test_the_shipped_rk45_tableau_is_scipys_to_the_last_bit():
 def test_the_compiled_loop_reads_the_tableau_without_importing_scipy_integrate():
     import subprocess
     import sys
-    code = ("import sys; from autolev.runtime.numerics import cloop; t = cloop._table(); "
+    code = ("import sys; from autolev.engine import cloop; t = cloop._table(); "
             "print(len(t), 'scipy.integrate' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.split()

@@ -474,7 +474,8 @@ def _jacobians_of(model):
 def test_one_linearization_waits_for_no_compiler_and_a_sweep_compiles_when_it_pays(
         tmp_path, monkeypatch):
     # BICYCLE14: one linearization spent 4 minutes in gcc on 11 MB of C, evaluated once
-    from autolev.runtime.numerics import clibrary, linearize as linearize_module
+    from autolev.engine import clibrary
+    from autolev.runtime.numerics import linearize as linearize_module
     path = tmp_path / "pendulum.al"
     path.write_text(PENDULUM)
     model = autolev.load(path)

@@ -6,9 +6,9 @@ import pytest
 import sympy as sm
 
 import autolev
-from autolev.runtime.numerics import clibrary
-from autolev.runtime.numerics.massmatrix import (MassStructure, SingularMassMatrix,
-                                                 solve_mass_matrix, symmetric)
+from autolev.engine import clibrary
+from autolev.engine.massmatrix import (
+    MassStructure, SingularMassMatrix, solve_mass_matrix, symmetric)
 
 
 def tree_mass_matrix(parents: list, rng) -> np.ndarray:

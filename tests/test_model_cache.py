@@ -11,9 +11,10 @@ import numpy as np
 import pytest
 
 import autolev
-from autolev import cachekeys, loader, modelcache, pipeline
+from autolev.engine import cachekeys
+from autolev import loader, modelcache, pipeline
 from autolev.cli import main
-from autolev.runtime import diskcache
+from autolev.engine import diskcache
 from autolev.runtime.model import Model
 from helpers import EXAMPLES
 

@@ -12,7 +12,8 @@ import pytest
 
 import autolev
 from helpers import load_model
-from autolev.runtime.numerics import clibrary, codegen, files, integrate
+from autolev.engine import clibrary, files, integrate
+from autolev.runtime.numerics import codegen
 from autolev.runtime.numerics.inputs import InputFileError
 
 HERE = Path(__file__).parent
@@ -209,7 +210,7 @@ def test_output_file_names_never_leave_the_output_folder():
     assert files.safe_stem("model/arms/model_angle.f") == "model_angle"
     assert files.safe_stem(r"gait10dof18musc\gait_FK_raw.c") == "gait_FK_raw"
     assert files.safe_stem("../../etc/passwd.c") == "passwd"
-    with pytest.raises(autolev.runtime.errors.AutolevModelError):
+    with pytest.raises(autolev.engine.errors.AutolevModelError):
         files.safe_stem("../..")
 
 
@@ -426,7 +427,7 @@ def test_overrides_use_the_inputs_units_and_unknown_names_are_refused():
     m = load("simple_pendulum")
     r = quiet_simulate(m, THETA=20, TFINAL=0)
     assert r.states[0][0] == pytest.approx(math.radians(20))
-    with pytest.raises(autolev.runtime.errors.AutolevModelError, match="no input named"):
+    with pytest.raises(autolev.engine.errors.AutolevModelError, match="no input named"):
         quiet_simulate(m, LENGTH=2)
 
 

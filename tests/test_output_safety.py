@@ -5,7 +5,7 @@ import sys
 
 import pytest
 
-from autolev.runtime import outputs
+from autolev.engine import outputs
 from helpers import EXAMPLES
 
 PENDULUM = EXAMPLES / "simple_pendulum.al"

@@ -83,7 +83,7 @@ def test_a_constants_program_is_walked_once_then_compiled():
 
 def test_conditions_joined_by_and_or_not_compile_in_both_languages():
     # sympy's And, Or and Not are Functions too: the printer once refused them as such
-    from autolev.runtime.numerics import clibrary
+    from autolev.engine import clibrary
     outputs = constructs()[9:11]
     prog = codegen.Program({"v": [x, y], "c": [a, b, c]}, outputs, Definitions()).build()
     python = codegen.compile_python(prog)[0]

@@ -5,10 +5,10 @@ import dataclasses
 
 import pytest
 
-from autolev import runplan
-from autolev.request import (LinearizeRequest, Request, RunRequest, TranscriptRequest,
-                             ValuesRequest)
-from autolev.runtime import reading
+from autolev.engine import runplan
+from autolev.engine.request import (
+    LinearizeRequest, Request, RunRequest, TranscriptRequest, ValuesRequest)
+from autolev.engine import reading
 from autolev.source import find_file
 
 REQUESTS = [RunRequest, LinearizeRequest, TranscriptRequest]

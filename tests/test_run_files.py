@@ -14,7 +14,7 @@ import pytest
 
 import autolev
 from autolev.runtime import AutolevModelError
-from autolev.runtime.numerics import files
+from autolev.engine import files
 from helpers import EXAMPLES
 
 PENDULUM = EXAMPLES / "double_pendulum.al"
@@ -189,7 +189,7 @@ def test_a_folder_that_refuses_files_is_one_message_and_no_partial_set(model, tm
 
 def test_a_full_disk_is_the_users_error_and_leaves_no_temporary(tmp_path, monkeypatch):
     # the disk fills while rows are written; closing the buffered files then fails too
-    from autolev.runtime.numerics import files
+    from autolev.engine import files
     real = files.os.fdopen
 
     class Full:
@@ -229,7 +229,7 @@ DECAY = "VARIABLES X'\nX' = -X\nINPUT X=1, TINITIAL=0, TFINAL={tfinal}, INTEGSTP
 @pytest.mark.parametrize("tfinal, step, printint", [(1, 0.1, 1), (1, 0.1, 3), (2, 0.25, 8),
                                                     (1, 0.3, 1)])
 def test_the_rows_a_run_expects_are_the_rows_it_writes(tmp_path, tfinal, step, printint):
-    from autolev.runtime.numerics.integrate import Schedule
+    from autolev.engine.integrate import Schedule
     path = tmp_path / "decay.al"
     path.write_text(DECAY.format(tfinal=tfinal, step=step, printint=printint))
     result = autolev.load(path).simulate(out_dir=tmp_path / "o")

@@ -12,8 +12,8 @@ import pytest
 
 import autolev
 from helpers import load_model
-from autolev.runtime.errors import AutolevModelError
-from autolev.runtime.numerics.massmatrix import scaled_condition
+from autolev.engine.errors import AutolevModelError
+from autolev.engine.massmatrix import scaled_condition
 
 from helpers import NUMERICS_DATA as DATA
 

@@ -11,7 +11,7 @@ import pytest
 
 import autolev
 from autolev.runtime import studies
-from autolev.runtime.errors import AutolevModelError
+from autolev.engine.errors import AutolevModelError
 from test_linearize import PENDULUM
 
 

@@ -25,7 +25,7 @@ from sympy.printing.str import StrPrinter
 
 from .runtime import symbols as S
 from .runtime.equations_of import Equations, state_of
-from .runtime.errors import AutolevModelError
+from .engine.errors import AutolevModelError
 
 # names the script itself defines: a model's quantity of the same name is renamed
 SCRIPT_NAMES = frozenset({

@@ -22,7 +22,7 @@ from .export import (RUNNER, ScriptPrinter, expression_text, identifier, quoted_
                      split_at_the_unknowns, sympy_script, values_text)
 from .runtime import symbols as S
 from .runtime.equations_of import Equations, equations_of, state_of
-from .runtime.errors import AutolevModelError
+from .engine.errors import AutolevModelError
 from .runtime.handoff import CONSTRAINT_SOLVER, Handoff, handoff
 from .runtime.interop import simple_rotation
 

@@ -26,10 +26,10 @@ from antlr4 import ParserRuleContext
 from antlr4.tree.Tree import TerminalNode
 
 from ._antlr.AutolevParser import AutolevParser as P
+from .engine.reading import names_with_suffix
 from .errors import Diagnostic
 from .source import (MAX_INCLUDE_DEPTH, MappedText, RunRefused, SourceFile, expand_macro,
-                     find_macro, is_within, mapped_source, names_with_suffix, placeholders,
-                     resolve_run)
+                     find_macro, is_within, mapped_source, placeholders, resolve_run)
 from .syntax import ParsedText, Parser
 
 

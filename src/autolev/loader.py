@@ -21,7 +21,7 @@ from sympy.matrices.exceptions import NonInvertibleMatrixError
 from . import modelcache
 from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError,
                      AutolevSyntaxError, AutolevTranslationError, Diagnostic, Location)
-from .runtime.errors import AutolevModelError
+from .engine.errors import AutolevModelError
 from .runtime.model import Loaded
 from .translate import Translation, translate
 

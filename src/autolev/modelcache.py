@@ -6,7 +6,7 @@ model) is read back from the cache instead.
 The key is the SHA-256 of the module's Python text (which holds every RUN file and
 macro the model reads, expanded), the model's file name, and a digest of autolev's
 source files and of the versions of Python, sympy and numpy: a change to any of them is
-another key.  Entries live in the private cache folder of `runtime.diskcache`, verified
+another key.  Entries live in the private cache folder of `engine.diskcache`, verified
 by their digest before they are read.  The warnings a model's statements gave while it
 was built are kept with it and given again when it is read back.
 
@@ -24,10 +24,9 @@ from pathlib import Path
 
 import sympy as sm
 
-from . import source  # noqa: F401  (registers the folder lookups a kept translation rechecks)
-from .cachekeys import PLAN_PREFIX, code_digest, enabled
-from .runtime import diskcache, reading
-from .runtime.reading import ReadSet
+from .engine.cachekeys import PLAN_PREFIX, code_digest, enabled
+from .engine import diskcache, reading
+from .engine.reading import ReadSet
 from .runtime.libraries import sum_or_product_as_given
 
 PREFIX = "model_"

@@ -13,8 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .runtime.numerics.results import OutputTable
-from .runtime.outputs import write_output
+from .engine.results import OutputTable
+from .engine.outputs import write_output
 
 
 def _unit_key(unit: str | None) -> str:

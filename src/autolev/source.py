@@ -20,7 +20,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .errors import AutolevFileError, Location
-from .runtime import reading
+from .engine import reading
+from .engine.reading import find_file
 
 MAX_INCLUDE_DEPTH = 16
 _PLACEHOLDER = re.compile(r"#(\d+)#")
@@ -194,30 +195,8 @@ def expand_macro(macro: SourceFile, args: list[str], call: Location, what: str) 
 
 
 # ---------------------------------------------------------------------------
-# Finding files the way Autolev users named them (any case, '\' or '/')
-
-@reading.lookup("find file")
-def find_file(base: Path, relative: str) -> Path | None:
-    """`base/relative`, matching each path component case-insensitively."""
-    parts = [p for p in relative.replace("\\", "/").split("/") if p not in ("", ".")]
-    current = base
-    for part in parts:
-        if part == "..":
-            current = current.parent
-            continue
-        exact = current / part
-        try:
-            if exact.exists():
-                current = exact
-                continue
-            matches = [c for c in current.iterdir() if c.name.lower() == part.lower()]
-        except OSError:         # a name too long for the file system, an unreadable folder
-            return None
-        if not matches:
-            return None
-        current = sorted(matches)[0]
-    return current if current.is_file() else None
-
+# Finding files the way Autolev users named them (any case, '\' or '/': the searches
+# themselves are engine.reading's, which a kept answer asks again)
 
 def is_within(path: Path, root: Path) -> bool:
     # realpath, not Path.resolve: a link that leads to itself is a name, not an exception
@@ -251,17 +230,6 @@ def resolve_run(name: str, including: Path, model_root: Path) -> Path | None:
             break
         base = base.parent
     return None
-
-
-@reading.lookup("names with suffix")
-def names_with_suffix(folder: Path, suffix: str) -> frozenset[str]:
-    """The names (lower case, without `suffix`) of the folder's files ending in `suffix`
-    (any case); none for a folder that cannot be read."""
-    try:
-        return frozenset(f[:-len(suffix)].lower() for f in os.listdir(folder)
-                         if f.lower().endswith(suffix))
-    except OSError:
-        return frozenset()
 
 
 def find_macro(name: str, search_dirs: list[Path], suffix: str = ".a") -> Path | None:

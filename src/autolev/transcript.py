@@ -27,7 +27,7 @@ from . import ir
 from .errors import AutolevError
 from .loader import load
 from .pipeline import parse
-from .runtime import reading
+from .engine import reading
 from .runtime.calculus import is_small
 from .runtime.symbols import TIME, Z, derivative, new_z
 from .runtime.vectors import Dyadic, Vector

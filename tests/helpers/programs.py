@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from autolev.runtime.numerics import clibrary
+from autolev.engine import clibrary
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "bench"))
 # how Octave runs a written .m program: shared with bench/journeys.py

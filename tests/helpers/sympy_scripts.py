@@ -13,7 +13,7 @@ import numpy as np
 import sympy as sm
 import sympy.physics.mechanics as me
 
-from autolev.runtime.numerics.options import RunOptions
+from autolev.engine.options import RunOptions
 from autolev.runtime.numerics.prepare import prepare_command
 
 # in a process where autolev cannot be imported: the script's equations at random points

@@ -36,7 +36,7 @@ def allow() -> None:
 
 def lock_file(model_path: Path) -> Path | None:
     """The lock a model's finishing child holds, or None without a lasting cache."""
-    from ..runtime import diskcache
+    from ..engine import diskcache
     folder = diskcache.lasting_dir()
     if folder is None:
         return None
@@ -59,7 +59,7 @@ def wait_for_finishing(model_path: Path, progress) -> None:
 def wait_for_every_finishing() -> None:
     """Wait while any run finishes its compile in the background (before emptying the
     cache: what it writes would come after)."""
-    from ..runtime import diskcache
+    from ..engine import diskcache
     folder = diskcache.lasting_dir() if os.name == "posix" else None
     if folder is None:
         return
@@ -113,7 +113,7 @@ def split_off() -> Finishing | None:
     if not _allowed[0] or os.name != "posix" or os.environ.get(FOREGROUND_VARIABLE) \
             or threading.active_count() != 1:
         return None
-    from ..runtime import diskcache
+    from ..engine import diskcache
     if diskcache.lasting_dir() is None:
         return None
     for stream in (sys.stdout, sys.stderr):

@@ -11,7 +11,8 @@ from .common import megabytes
 
 def cmd_cache(ns: argparse.Namespace) -> int:
     """What the cache holds (built models, compiled code), or empty it."""
-    from .. import cachekeys, modelcache
+    from ..engine import cachekeys
+    from .. import modelcache
 
     if ns.action == "clear":
         background.wait_for_every_finishing()

@@ -80,7 +80,7 @@ def specified_values(model, ns: argparse.Namespace) -> dict:
 def name_values(items, option: str, numbers: bool = False) -> dict:
     """NAME=VALUE items of a repeatable option (with `numbers`, each VALUE a number as
     an .in file writes it); UsageError for one that is not."""
-    from ..runtime.numerics.numbers import parse_number
+    from ..engine.numbers import parse_number
     values = {}
     for item in items or []:
         name, sep, value = item.partition("=")

@@ -13,7 +13,7 @@ def cmd_equations(ns: argparse.Namespace) -> int:
     """Print (or write) the equations of motion of a CODE DYNAMICS or ODE."""
     from ..runtime.equations_of import equations_of
     from ..runtime.equations_text import latex, plain
-    from ..runtime.errors import AutolevModelError
+    from ..engine.errors import AutolevModelError
     from ..runtime.tools import keep_built, write_output
 
     path = Path(ns.file)

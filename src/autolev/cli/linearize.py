@@ -17,12 +17,12 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
     """Linearize a model's CODE DYNAMICS at an operating point; print the eigenvalues.
     The answer is kept for its request (request.LinearizeRequest) and the files it
     read, as read (runplan.KeptLinearization)."""
-    from ..runtime import reading
+    from ..engine import reading
     path = Path(ns.file)
     if path.suffix.lower() == ".py" or ns.sweep:
         return _linearize(path, ns, None)
-    from ..request import LinearizeRequest
-    from ..runplan import KeptLinearization, Recorder, kept
+    from ..engine.request import LinearizeRequest
+    from ..engine.runplan import KeptLinearization, Recorder, kept
     from .run import Keeping
     request = LinearizeRequest.of(ns)
     with reading.recording() as reads:
@@ -41,7 +41,7 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
 
 def _linearize(path: Path, ns: argparse.Namespace, keeping) -> int:
     """The linearization from the model; `keeping` (run.Keeping): to keep its answer."""
-    from ..runtime.errors import AutolevModelError
+    from ..engine.errors import AutolevModelError
 
     overrides, point, sweep = _linearize_request(ns)
     progress = sys.stderr if keeping is None else keeping.recorder.through
@@ -65,7 +65,7 @@ def _linearize(path: Path, ns: argparse.Namespace, keeping) -> int:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
     if keeping is not None:
-        from ..runplan import KeptLinearization
+        from ..engine.runplan import KeptLinearization
         messages = keeping.recorder.take()
         keeping.keep(lambda reads: KeptLinearization(reads, load_messages, messages, lin))
     return _report_eigenvalues(path, lin, ns.out, ns.overwrite)
@@ -109,8 +109,8 @@ def _constraint_values(model, names) -> list:
 def _report_eigenvalues(path: Path, lin, out_dir: str | None, overwrite: bool = False) -> int:
     """Print a linearization's eigenvalues (and write them into `out_dir`)."""
     # not the runtime's façade (it imports sympy): a kept linearization needs neither
-    from ..runtime.numerics.files import safe_stem
-    from ..runtime.outputs import write_output
+    from ..engine.files import safe_stem
+    from ..engine.outputs import write_output
 
     if not lin.steady:
         print(f"{path}: warning: not an equilibrium or a steady motion: the accelerations "

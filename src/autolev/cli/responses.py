@@ -25,7 +25,7 @@ def print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False) 
     if out_dir is None:
         sys.stdout.write(text)
         return 0
-    from ..runtime.outputs import write_output
+    from ..engine.outputs import write_output
     target = out_dir / f"{path.stem}.all"
     try:
         out_dir.mkdir(parents=True, exist_ok=True)
@@ -41,9 +41,9 @@ def transcript_text(path: Path) -> str | None:
     """The transcript of the .al model at `path` (kept for the files it read, as read,
     and read back while each is unchanged); None after printing the diagnostics of a
     model it cannot be made for."""
-    from ..request import TranscriptRequest
-    from ..runplan import KeptTranscript, keep, kept
-    from ..runtime import reading
+    from ..engine.request import TranscriptRequest
+    from ..engine.runplan import KeptTranscript, keep, kept
+    from ..engine import reading
     request = TranscriptRequest.of_file(path)
     with reading.recording() as reads:
         found = kept(request, reads, KeptTranscript)

@@ -17,9 +17,9 @@ from .responses import transcript_text
 def cmd_run(ns: argparse.Namespace) -> int:
     """Translate, build and run the model's CODE commands; write Autolev's files.  A
     run repeats its run plan when it has one (runplan.py), else may leave one; every
-    file it reads is noted as read (runtime.reading), and what it keeps is filed under
+    file it reads is noted as read (engine.reading), and what it keeps is filed under
     those digests."""
-    from ..runtime import reading
+    from ..engine import reading
     path = Path(ns.file)
     request = _plan_request(ns, path)
     progress = None if ns.quiet else sys.stderr
@@ -28,7 +28,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
     with reading.recording() as reads:
         if request is None:
             return _run_from_model(path, ns, progress, None)
-        from ..runplan import KeptOutcome, Recorder, RunPlan, kept
+        from ..engine.runplan import KeptOutcome, Recorder, RunPlan, kept
         plan = kept(request, reads, (RunPlan, KeptOutcome))
         if isinstance(plan, KeptOutcome):
             sys.stderr.write(plan.messages)
@@ -49,11 +49,11 @@ class Keeping:
     stream recording what it prints on stderr."""
 
     request: object             # request.RunRequest
-    reads: object               # runtime.reading.Reads
+    reads: object               # engine.reading.Reads
     recorder: object            # runplan.Recorder, which is sys.stderr meanwhile
 
     def keep(self, make) -> None:
-        from ..runplan import keep
+        from ..engine.runplan import keep
         keep(self.request, self.reads, make)
 
 
@@ -63,7 +63,7 @@ def _plan_request(ns: argparse.Namespace, path: Path):
     None."""
     if path.suffix.lower() == ".py" or ns.func is not cmd_run or ns.animate:
         return None
-    from ..request import RunRequest
+    from ..engine.request import RunRequest
     return RunRequest.of(ns)
 
 
@@ -112,7 +112,7 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress,
                              path, progress, recorder, planned, finishing)
     # a command that failed (an integration's failure) is planned, and fails again
     if keeping is not None and len(planned) == len(commands):
-        from ..runplan import RunPlan
+        from ..engine.runplan import RunPlan
         keeping.keep(lambda reads: RunPlan(reads, load_messages, planned))
     return status
 
@@ -147,7 +147,7 @@ def _responses_instead(path: Path, translation, keeping: Keeping | None) -> int:
 def _keep_outcome(keeping: Keeping, transcript: str, status: int) -> None:
     """Keep a run that wrote no file (runplan.KeptOutcome): what the recorder took of
     its stderr, `transcript` on its stdout."""
-    from ..runplan import KeptOutcome
+    from ..engine.runplan import KeptOutcome
     messages = keeping.recorder.take()
     keeping.keep(lambda reads: KeptOutcome(reads, messages, transcript, status))
 
@@ -157,10 +157,10 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
     import time
     import warnings
 
-    from ..runtime.errors import AutolevModelError
-    from ..runtime.numerics.execute import execute
-    from ..runtime.numerics.options import RunOptions
-    from ..runtime.numerics.results import command_error, run_summary
+    from ..engine.errors import AutolevModelError
+    from ..engine.execute import execute
+    from ..engine.options import RunOptions
+    from ..engine.results import command_error, run_summary
     start = time.monotonic()
     _check_plot(ns)
     if isinstance(ns.plot, str):
@@ -222,9 +222,9 @@ def _names_in_file(infile, translation) -> set | None:
     values it has for them are all 0 (a template never filled in gives none: the run's
     rule); None when it cannot be read, or names what the model does not (its values
     are then read in Autolev's order, whatever the labels say)."""
-    from ..runtime import reading
-    from ..runtime.code_kinds import INTEGRATION_PARAMETERS
-    from ..runtime.numerics.numbers import in_file_lines, parse_number
+    from ..engine import reading
+    from ..engine.code_kinds import INTEGRATION_PARAMETERS
+    from ..engine.numbers import in_file_lines, parse_number
     if infile is None:
         return set()
     try:
@@ -244,7 +244,7 @@ def _names_in_file(infile, translation) -> set | None:
 def _run_overrides(ns: argparse.Namespace) -> dict:
     """--set and --tfinal as {NAME: value}, after checking --method and --plot
     (UsageError)."""
-    from ..runtime.numerics.options import METHODS
+    from ..engine.options import METHODS
     if ns.method is not None and ns.method not in METHODS:
         raise UsageError(f"unknown --method {ns.method} (one of {', '.join(METHODS)})")
     overrides = name_values(ns.set, "--set", numbers=True)
@@ -261,7 +261,7 @@ def _check_plot(ns: argparse.Namespace) -> None:
 
 def _labels_of(model, commands: list) -> list[str]:
     """The output columns the commands write."""
-    from ..runtime.errors import AutolevModelError
+    from ..engine.errors import AutolevModelError
     from ..runtime.numerics.command import output_columns
     labels: list[str] = []
     for command in commands:
@@ -294,7 +294,7 @@ def _plotted_columns(written: list[str], text: str) -> list[str]:
 def _commands_to_run(model, ns: argparse.Namespace, path: Path) -> list:
     """The CODE commands --code or --first-dynamics chose (all by default; none when
     there is nothing to animate)."""
-    from ..runtime.errors import AutolevModelError
+    from ..engine.errors import AutolevModelError
     if not model.code_commands:
         print(f"{path}: no CODE command; animating it as CODE DYNAMICS", file=sys.stderr)
         return [model.plain_dynamics()]
@@ -316,8 +316,8 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
     can repeat goes into `planned` with what it printed on stderr.  With `finishing`
     (background.Finishing), the command returns once the last run's files are written,
     and the C its run began in Python compiles on in the background."""
-    from ..runtime.errors import AutolevModelError
-    from ..runtime.numerics import rowtext
+    from ..engine.errors import AutolevModelError
+    from ..engine import rowtext
     from ..runtime.steps import SlowStep
     from ..runtime.tools import program_file_name, safe_stem
     label = statement_label(model, path)
@@ -366,7 +366,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
             if system.compiled_loop(wait=True) is not None:
                 rowtext.prepare()       # what the loop writes its rows with
         if recorder is not None:
-            from ..runplan import can_plan, planned_command
+            from ..engine.runplan import can_plan, planned_command
             messages = recorder.take()
             if can_plan(done.result.execution, done.result):
                 planned.append(planned_command(done.result.execution, done.result,
@@ -376,7 +376,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
 
 def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -> int:
     """--animate, --csv, --mat and --plot of one finished run."""
-    from ..runtime.errors import AutolevModelError
+    from ..engine.errors import AutolevModelError
     result = done.result
     status = 0
     if ns.animate and result.kind.integrates and len(result.t):
@@ -400,7 +400,7 @@ def _tables_and_plots(result, out_dir: Path, ns: argparse.Namespace, label: str)
     tables = [(f"{result.name}.csv", result.csv_text)] * ns.csv \
         + [(f"{result.name}.mat", result.mat_bytes)] * ns.mat
     if tables and result.outputs:
-        from ..runtime.outputs import write_output
+        from ..engine.outputs import write_output
         try:
             for name, content in tables:
                 written = write_output(out_dir, name, content(), ns.overwrite)

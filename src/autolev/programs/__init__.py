@@ -6,11 +6,11 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path, PureWindowsPath
 
-from ..runtime.errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from ..runtime.io import CodeKind
 from ..runtime.numerics.command import hidden_note
-from ..runtime.outputs import Written as WrittenFiles
-from ..runtime.outputs import inside, write_output
+from ..engine.outputs import Written as WrittenFiles
+from ..engine.outputs import inside, write_output
 from .c import write_c
 from .c_dynamics import write_c_dynamics
 from .f import write_f_dynamics

@@ -9,7 +9,7 @@ from pathlib import Path
 
 from .. import __version__
 from ..runtime import units
-from ..runtime.numerics.files import header as output_header
+from ..engine.files import header as output_header
 from ..runtime.printer import CPrinter
 from .plan import (Plan, c_name, check_names, element_indices, input_file_name, printed,
                    program_name, shown_values, with_sources)

@@ -13,8 +13,8 @@ import sympy as sm
 from .. import __version__
 from ..runtime import symbols as S
 from ..runtime import units
-from ..runtime.errors import AutolevModelError
-from ..runtime.numerics.files import dir_text
+from ..engine.errors import AutolevModelError
+from ..engine.files import dir_text
 from ..runtime.printer import ADD, ATOM, POW, UNARY, CPrinter
 from .f_subroutines import kutta_and_solve
 from .plan import (DynamicsPlan, check_names, dynamics_names, input_file_name, print_dynamics,

@@ -13,10 +13,10 @@ import sympy as sm
 from .. import __version__
 from ..runtime import symbols as S
 from ..runtime import units
-from ..runtime.errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from ..runtime.numerics import codegen
-from ..runtime.numerics.files import header as output_header
-from ..runtime.numerics.numbers import format_value
+from ..engine.files import header as output_header
+from ..engine.numbers import format_value
 from ..runtime.printer import ATOM, POW, CPrinter
 from .plan import (Plan, c_name, check_names, dynamics_names, element_indices,
                    print_dynamics, printed, program_name, shown_values, with_sources)

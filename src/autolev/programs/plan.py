@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 from ..runtime import symbols as S
 from ..runtime import units
-from ..runtime.errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from ..runtime.io import CodeKind
 from ..runtime.numerics import codegen
 from ..runtime.numerics.inputs import Inputs

@@ -11,8 +11,8 @@ from __future__ import annotations
 import importlib
 import importlib.util
 
-_NAMED = {"AutolevModelError": ".errors", "MissingValues": ".errors", "Frame": ".frame",
-          "KaneEquations": ".kane", "Model": ".model", "Body": ".point",
+_NAMED = {"AutolevModelError": "..engine.errors", "MissingValues": "..engine.errors",
+          "Frame": ".frame", "KaneEquations": ".kane", "Model": ".model", "Body": ".point",
           "Particle": ".point", "Point": ".point", "TIME": ".symbols", "Z": ".symbols",
           "derivative": ".symbols", "derivatives": ".symbols", "Dyadic": ".vectors",
           "Vector": ".vectors", "outer": ".vectors"}
@@ -28,7 +28,7 @@ def __getattr__(name: str):
     if name in _NAMED:
         module = importlib.import_module(_NAMED[name], __name__)
     elif importlib.util.find_spec(f"{__name__}.{name}") is not None:
-        # a submodule (`from autolev.runtime import diskcache`): the import system
+        # a submodule (`from autolev.runtime import numerics`): the import system
         # loads it once this fails, without the functions (and sympy)
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     else:

@@ -9,7 +9,7 @@ import sympy as sm
 from . import symbols as S
 from .functions import scalar_values, whole_number
 from .linalg import coefficients, solve_linear
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .frame import body_fixed, rodrigues, space_fixed
 from .vectors import Dyadic, Vector
 

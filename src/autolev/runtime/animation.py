@@ -57,7 +57,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import sympy as sm
 
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .numerics.inputs import Inputs, display_name
 from .vectors import Vector
 

@@ -15,8 +15,8 @@ from time import monotonic
 import numpy as np
 
 from .animation import MARGIN, Motion, grid_lines
-from .errors import AutolevModelError
-from .outputs import temporary_beside, write_whole
+from ..engine.errors import AutolevModelError
+from ..engine.outputs import temporary_beside, write_whole
 
 # the 3-D view the GIF is drawn in (the page starts from it too): radians about up, right
 YAW, PITCH = 0.6, 0.4

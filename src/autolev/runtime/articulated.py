@@ -35,7 +35,7 @@ import sympy as sm
 
 from . import symbols as S
 from .calculus import NumericPoint
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .frame import Frame
 from .kane import System, partial_velocity
 from .point import Body, Particle, Point

@@ -29,7 +29,7 @@ import sympy as sm
 from ..errors import MAX_EXACT_DIGITS
 from .derived import Revision
 from .symbols import TIME, Z, derivative, new_z
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .fastdiff import diff as fast_diff
 from .fastdiff import gradient as fast_gradient
 from .fastdiff import value_and_gradient

@@ -9,7 +9,7 @@ import sympy as sm
 
 from . import kane
 from . import symbols as S
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .functions import VectorColumn
 from .interop import symbolic_system
 from .kane import KaneEquations

@@ -11,7 +11,7 @@ import sympy as sm
 
 from . import symbols as S
 from . import units
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 
 
 @dataclass(frozen=True)
@@ -41,8 +41,8 @@ def equations_of(model, command, values: bool = True, infile=None,
     equations alone (no constant needs a value; constants, initial values and
     integration are left empty)."""
     from .numerics.command import equations_and_unknowns, output_columns, program_of
-    from .numerics.files import safe_stem
-    from .numerics.options import RunOptions
+    from ..engine.files import safe_stem
+    from ..engine.options import RunOptions
     from .numerics.prepare import InputsWanted, SystemBuild, numeric_system, take_inputs
 
     kind = command.kind

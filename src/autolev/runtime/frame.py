@@ -18,7 +18,7 @@ import sympy as sm
 
 from .calculus import Definitions
 from .derived import DerivedCache, Revision
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .interop import to_sympy_frame
 from .vectors import Vector, _s, _vector
 

@@ -9,7 +9,7 @@ import sympy as sm
 
 from .calculus import is_real_number, refuse_huge_powers, refused_substitution
 from .printer import number_value
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .frame import Frame
 from .vectors import Dyadic, Vector, outer
 

@@ -18,7 +18,7 @@ import numpy as np
 import sympy as sm
 
 from . import symbols as S
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .interop import dynamic_map, to_sympy_expr, to_sympy_frame, to_sympy_vector
 
 # the dependent speeds solved from the velocity constraints by Cramer's rule: sympy's

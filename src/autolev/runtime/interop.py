@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import sympy as sm
 
 from . import symbols as S
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 
 if TYPE_CHECKING:
     from .frame import Frame, Scene

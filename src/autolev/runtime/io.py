@@ -6,8 +6,8 @@ from dataclasses import dataclass, field
 
 import sympy as sm
 
-from .code_kinds import INTEGRATION_PARAMETERS, CodeKind
-from .errors import AutolevModelError
+from ..engine.code_kinds import INTEGRATION_PARAMETERS, CodeKind
+from ..engine.errors import AutolevModelError
 from .functions import degrees_to_radians
 from .units import is_degrees
 

@@ -14,7 +14,7 @@ import sympy as sm
 
 from . import symbols as S
 from .calculus import Definitions
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .point import Body, Particle, Point
 from .frame import Frame
 from .vectors import Vector

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sm
 
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 
 
 class LibraryChanged(RuntimeError):

@@ -6,7 +6,7 @@ import cmath
 import sympy as sm
 
 from .calculus import Definitions, NumericPoint
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 
 
 def _small(z: complex) -> bool:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sm
 
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .frame import Frame
 from .point import Body, Particle, Point, point_mass_inertia
 from .vectors import Dyadic, UnitDyadic, Vector

@@ -20,7 +20,7 @@ from .algebra import AlgebraMixin
 from .calculus import Definitions
 from .derived import DerivedCache, Revision
 from .equations import EquationsMixin
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .frame import Frame, Scene, body_fixed, euler_parameter_rates, space_fixed
 from .interop import to_sympy_expr, to_sympy_vector
 from .io import IOMixin

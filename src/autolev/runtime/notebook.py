@@ -1,29 +1,14 @@
-"""How a Model, a Result and a Linearization show themselves in Jupyter (`_repr_html_`):
-what a model declares with its values, a run's columns drawn against time, a
-linearization's eigenvalues.  Every text from a model is escaped: names and
-expressions reach the page as text, never as markup.
+"""How a Model shows itself in Jupyter (`_repr_html_`): what it declares with its
+values (a Result and a Linearization: engine/notebook.py).  Every text from a model
+is escaped: names and expressions reach the page as text, never as markup.
 """
 from __future__ import annotations
 
-import base64
 import html
-import importlib.util
-import io
 
-import numpy as np
 import sympy as sm
 
-
-def _table(rows: list[tuple[str, str]]) -> str:
-    cells = "".join(f"<tr><th style='text-align:left'>{html.escape(k)}</th>"
-                    f"<td style='text-align:left'>{html.escape(v)}</td></tr>" for k, v in rows)
-    return f"<table>{cells}</table>"
-
-
-def _names(items, limit: int = 40) -> str:
-    shown = [str(x) for x in items]
-    return ", ".join(shown[:limit]) + (f", ... ({len(shown)} in all)"
-                                       if len(shown) > limit else "") or "none"
+from ..engine.notebook import names, table
 
 
 def model_html(model) -> str:
@@ -42,77 +27,13 @@ def model_html(model) -> str:
         shown = f"{float(value):g}" if isinstance(value, (int, float, sm.Number)) else value
         return f"{symbol} = {shown}" + (f" {unit}" if unit else "")
     rows = [("Newtonian frame", str(model.newtonian_frame or "none")),
-            ("frames", _names(model.frames_by_name)),
-            ("bodies", _names(f"{b} (mass {b.mass})" for b in model.bodies_list)),
-            ("particles", _names(f"{p} (mass {p.mass})" for p in model.particles_list)),
-            ("motion variables", _names(valued(q) for q in by_kind.get("motionvariable", []))),
-            ("variables", _names(by_kind.get("variable", []))),
-            ("constants", _names(valued(c) for c in by_kind.get("constant", []))),
-            ("specified", _names(by_kind.get("specified", []))),
-            ("CODE commands", _names(f"{c.kind.upper()} {c.filename}"
+            ("frames", names(model.frames_by_name)),
+            ("bodies", names(f"{b} (mass {b.mass})" for b in model.bodies_list)),
+            ("particles", names(f"{p} (mass {p.mass})" for p in model.particles_list)),
+            ("motion variables", names(valued(q) for q in by_kind.get("motionvariable", []))),
+            ("variables", names(by_kind.get("variable", []))),
+            ("constants", names(valued(c) for c in by_kind.get("constant", []))),
+            ("specified", names(by_kind.get("specified", []))),
+            ("CODE commands", names(f"{c.kind.upper()} {c.filename}"
                                      for c in model.code_commands))]
-    return f"<b>autolev model {html.escape(model.name)}</b>" + _table(rows)
-
-
-def _figure_png(result) -> str | None:
-    """The run's output columns against its time as an embedded PNG (matplotlib, when
-    installed; None without it or without rows)."""
-    if importlib.util.find_spec("matplotlib") is None or len(result.t) < 2:
-        return None
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    columns = [(label, unit, values) for label, unit, values in result.columns()
-               if len(values) == len(result.t) and
-               not np.allclose(values, result.t, rtol=1e-6, atol=1e-12)]
-    if not columns:
-        return None
-    fig, ax = plt.subplots(figsize=(6, 3))
-    for label, unit, values in columns[:12]:
-        ax.plot(result.t, values, label=f"{label} ({unit})" if unit else label)
-    ax.set_xlabel("time" if result.kind.integrates else "swept input")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small", loc="best")
-    fig.tight_layout()
-    picture = io.BytesIO()
-    fig.savefig(picture, format="png", dpi=80)
-    plt.close(fig)
-    return base64.b64encode(picture.getvalue()).decode("ascii")
-
-
-def result_html(result) -> str:
-    """What was run, how many rows over which span, a failure if any, and a picture of
-    the output columns (else the first and last rows)."""
-    rows = [("command", f"CODE {result.kind.upper()} {result.name}"),
-            ("rows", str(len(result.t)))]
-    if len(result.t):
-        rows.append(("from, to", f"{result.t[0]:g}, {result.t[-1]:g}"))
-    rows.append(("columns", _names(label for label, _, _ in result.columns())))
-    if result.failure:
-        rows.append(("failure", result.failure))
-    out = f"<b>autolev result</b>{_table(rows)}"
-    png = _figure_png(result)
-    if png is not None:
-        return out + f"<img src='data:image/png;base64,{png}'/>"
-    columns = result.columns()
-    if columns and len(columns[0][2]):
-        head = "".join(f"<th>{html.escape(label)}</th>" for label, _, _ in columns)
-        picked = sorted({0, 1, 2, len(columns[0][2]) - 1} & set(range(len(columns[0][2]))))
-        body = "".join("<tr>" + "".join(f"<td>{values[k]:.6g}</td>" for _, _, values in columns)
-                       + "</tr>" for k in picked)
-        out += f"<table><tr>{head}</tr>{body}</table>"
-    return out
-
-
-def linearization_html(lin) -> str:
-    """The state, the inputs, and the eigenvalue table (roundoff shown as 0)."""
-    lines = lin.eigenvalue_table().splitlines()
-    head = "".join(f"<th>{html.escape(h.replace('_', ' '))}</th>"
-                   for h in lines[0].split(","))
-    body = "".join("<tr>" + "".join(f"<td>{html.escape(cell)}</td>"
-                                    for cell in line.split(",", 4)) + "</tr>"
-                   for line in lines[1:])
-    rows = [("states", _names(lin.states)), ("inputs", _names(lin.inputs)),
-            ("steady", "yes" if lin.steady else "no: the accelerations are not zero here"),
-            ("zero tolerance", f"{lin.zero_tolerance():.2g}")]
-    return f"<b>autolev linearization</b>{_table(rows)}<table><tr>{head}</tr>{body}</table>"
+    return f"<b>autolev model {html.escape(model.name)}</b>" + table(rows)

@@ -12,7 +12,7 @@ from collections import deque
 import sympy as sm
 
 from .interop import to_sympy_point
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .frame import Frame, Scene
 from .vectors import Dyadic, Vector, _vector, outer
 

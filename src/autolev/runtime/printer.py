@@ -17,8 +17,8 @@ import numpy as np
 import sympy as sm
 from sympy.core.numbers import NumberSymbol
 
-from .errors import AutolevModelError
-from .numerics.pyfunction import MATH_ERRORS, fast_namespace, safe_namespace
+from ..engine.errors import AutolevModelError
+from ..engine.pyfunction import MATH_ERRORS, fast_namespace, safe_namespace
 
 _C_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
             "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",

@@ -10,15 +10,15 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from . import studies
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .io import CodeCommand, CodeKind
-from .numerics.files import safe_stem
+from ..engine.files import safe_stem
 from .numerics.prepare import keep_built
-from .numerics.results import Result, command_error, run_summary
+from ..engine.results import Result, command_error, run_summary
 from .numerics.command import names_a_quantity
-from .numerics.options import RunOptions
+from ..engine.options import RunOptions
 from .numerics.run import run_command
-from .outputs import write_output
+from ..engine.outputs import write_output
 
 
 @dataclass

@@ -27,10 +27,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .io import INTEGRATION_PARAMETERS
 from .numerics.command import names_a_quantity
-from .numerics.options import RunOptions
+from ..engine.options import RunOptions
 from .numerics.run import run_command
 
 STUDIES = ("linearize", "simulate")

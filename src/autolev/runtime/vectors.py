@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import sympy as sm
 
-from .errors import AutolevModelError
+from ..engine.errors import AutolevModelError
 from .interop import to_sympy_vector
 
 if TYPE_CHECKING:

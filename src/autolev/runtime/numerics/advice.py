@@ -10,10 +10,10 @@ import sympy as sm
 
 from .. import symbols as S
 from ..calculus import NumericPoint, is_real_number
-from ..errors import AutolevModelError
+from ...engine.errors import AutolevModelError
 from .inputs import display_name
-from .integrate import IntegrationFailure
-from .integration_notes import halving_verdict
+from ...engine.integrate import IntegrationFailure, failure_basis
+from ...engine.integration_notes import halving_verdict
 
 
 def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
@@ -121,9 +121,8 @@ def zero_hint(zero_params) -> str:
 def failure_message(exc: IntegrationFailure, system, inputs, result, zero_params,
                      integration: tuple) -> str:
     """Autolev's message for a failed integration, with what we can tell of its cause."""
-    state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(result.state_names, exc.y))
-    message = (f"Numerical integration failed to converge: {exc}; the state there: {state}"
-               + (zero_hint(zero_params) if result.stats["rows"] <= 1 else ""))
+    message = failure_basis(exc, result.state_names) + (
+        zero_hint(zero_params) if result.stats["rows"] <= 1 else "")
     if "singular" in str(exc) or (result.stats["rows"] <= 1 and "not finite" in str(exc)):
         problems = inertia_problems(system, inputs)
         if problems:

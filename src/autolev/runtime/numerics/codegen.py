@@ -14,10 +14,10 @@ from dataclasses import dataclass, field
 import sympy as sm
 
 from ..calculus import Definitions
-from ..errors import AutolevModelError
-from .clibrary import UNIT_MARK, UNIT_STATEMENTS, c_function, cpus
+from ...engine.errors import AutolevModelError
+from ...engine.clibrary import UNIT_MARK, UNIT_STATEMENTS, c_function, cpus
 from ..printer import CPrinter, PythonPrinter
-from .pyfunction import python_function
+from ...engine.pyfunction import python_function
 
 
 def _factor_out(add):

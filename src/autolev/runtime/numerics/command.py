@@ -13,12 +13,12 @@ import sympy as sm
 
 from .. import symbols as S
 from .. import units
-from ..errors import AutolevModelError
+from ...engine.errors import AutolevModelError
 from ..io import CodeKind
 from ..vectors import Vector
 from .inputs import INTEGRATION, display_name, some_names
-from .numbers import parse_number
-from .results import Column
+from ...engine.numbers import parse_number
+from ...engine.results import Column
 
 
 # -- building -------------------------------------------------------------------------------

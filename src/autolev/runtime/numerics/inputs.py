@@ -21,12 +21,13 @@ from pathlib import Path
 
 import sympy as sm
 
-from .. import reading, units
+from ...engine import reading
+from .. import units
 from ..calculus import is_real_number
-from ..errors import AutolevModelError
+from ...engine.errors import AutolevModelError
 from ..io import INTEGRATION_PARAMETERS as INTEGRATION
 from ..symbols import TIME
-from .numbers import format_value, in_file_lines, parse_number
+from ...engine.numbers import format_value, in_file_lines, parse_number
 
 DEFAULTS = {"TINITIAL": 0.0, "TFINAL": 1.0, "INTEGSTP": 0.1, "PRINTINT": 1,
             "ABSERR": 1.0e-8, "RELERR": 1.0e-7}

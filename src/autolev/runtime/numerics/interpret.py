@@ -17,9 +17,9 @@ import math
 import sympy as sm
 from sympy.core.numbers import NumberSymbol
 
-from ..errors import AutolevModelError
+from ...engine.errors import AutolevModelError
 from ..printer import _PY_FUNCS, fraction_parts
-from .pyfunction import fast_namespace
+from ...engine.pyfunction import fast_namespace
 
 _HELPERS = fast_namespace()
 # sympy's function names -> what the printed Python calls

@@ -28,19 +28,20 @@ import scipy.linalg
 import sympy as sm
 
 from .. import symbols as S
-from ..errors import AutolevModelError
+from ...engine.errors import AutolevModelError
 from ..io import CodeKind
-from . import clibrary, codegen
+from ...engine import clibrary
+from . import codegen
 from .inputs import display_name
 from .projection import Projector
-from .linear import Linearization
+from ...engine.linear import Linearization
 from .command import given_specified, program_of, solved_by_lu, with_undefined
-from .options import RunOptions
+from ...engine.options import RunOptions
 from ..steps import SlowStep
 from .prepare import prepare_command, to_be_kept
 from .compiled import compile_program
-from .dual import DualJacobian, NotDifferentiable
-from .evaluation import pivot_ratios
+from ...engine.dual import DualJacobian, NotDifferentiable
+from ...engine.evaluation import pivot_ratios
 from .system import NumericSystem
 
 

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from .. import symbols as S
 from .. import units
-from ..errors import AutolevModelError, MissingValues
+from ...engine.errors import AutolevModelError, MissingValues
 from ..io import CodeKind
 from ..steps import SlowStep
 from .advice import inertia_problems
@@ -19,10 +19,10 @@ from .command import (encoded_values, equations_and_unknowns, find_symbol, given
                       hidden_in_outputs, hidden_note, names_a_quantity, output_columns,
                       program_file_name, program_of, solution_columns, solved_by_lu,
                       solver_expressions, sweep_values, take_time, time_dependence)
-from .files import safe_stem
+from ...engine.files import safe_stem
 from .inputs import INTEGRATION, Inputs, display_name, some_names
 from .projection import constants_needed
-from .options import RunOptions
+from ...engine.options import RunOptions
 from .system import NumericSystem
 
 

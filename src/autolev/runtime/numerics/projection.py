@@ -14,9 +14,8 @@ import numpy as np
 import sympy as sm
 
 from .. import symbols as S
-from ..errors import AutolevModelError
+from ...engine.errors import AutolevModelError
 from . import codegen
-from .integrate import IntegrationFailure, Schedule, integrate
 from .compiled import compile_program
 from .system import alphabetical
 
@@ -84,36 +83,3 @@ def constants_needed(system, constraints) -> list:
     given = set(system.states) | {S.TIME} | set(system.aux_fixed) | set(system.params)
     _, undefined = system.needed(exprs, given)
     return alphabetical(s for s in undefined if not system.is_specified(s))
-
-
-def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_row,
-                        progress, loop, on_stiff, project: Projector) -> dict:
-    """integrate() from print time to print time, projecting the state at each."""
-    schedule.check()
-    y = np.array(y0, dtype=float)
-    on_row(schedule.tinitial, y)
-    stats = {"method": method, "evaluations": 0, "steps": 0, "projected": True}
-    a = schedule.tinitial
-    for b in (t for block in schedule.print_blocks() for t in block.tolist()):
-        got = []
-        seg = Schedule(a, b, schedule.integstp, 10 ** 9, schedule.fresh_derivatives,
-                       schedule.restart_each_step)
-        try:
-            st = integrate(f, y, seg, method, abserr, relerr,
-                           lambda t, yy: got.append(np.array(yy)), None, loop=loop,
-                           on_stiff=on_stiff)
-        except IntegrationFailure:
-            stats["largest_correction"] = project.largest_correction
-            raise
-        stats["evaluations"] += st.get("evaluations", 0)
-        stats["steps"] += st.get("steps", 0)
-        for key in ("stiff_t", "switched_to", "compiled"):
-            if key in st and key not in stats:
-                stats[key] = st[key]
-        y = project(b, got[-1])
-        on_row(b, y)
-        a = b
-        if progress is not None:
-            progress.update(b)
-    stats["largest_correction"] = project.largest_correction
-    return stats

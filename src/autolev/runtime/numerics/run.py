@@ -7,14 +7,19 @@ overrides), run, and write Autolev's files (`NAME.in`, `NAME.1..k`, `NAME.dir`, 
 """
 from __future__ import annotations
 
-from .algebraic import algebraic_inputs
+import warnings
+
+from ...engine.algebraic import AlgebraicInputs
+from ...engine.code_kinds import CodeKind
+from ...engine.dynamics import print_schedule
+from ...engine.execute import Execution, execute
+from ...engine.options import RunOptions
+from ...engine.results import Result
+from .. import symbols as S
+from .advice import failure_message, zero_hint
 from .command import program_file_name, program_language, program_method
-from .dynamics import print_schedule
-from .execute import Execution, execute
 from .inputs import display_name
-from .options import RunOptions
 from .prepare import prepare_command
-from .results import Result
 
 
 def run_command(model, command, out_dir=None,
@@ -33,18 +38,54 @@ def run_command(model, command, out_dir=None,
     system, inputs = prepared.system, prepared.inputs
     language = program_language(command.filename)
     zero_params = [display_name(p) for p in system.params if inputs.internal(p) == 0.0]
+
+    def advise(failure, result, integration) -> str:
+        return failure_message(failure, system, inputs, result, zero_params, integration)
     execution = Execution(
         kind, prepared.stem, command.filename, program_file_name(command.filename), system,
         inputs, [display_name(x) for x in system.states],
-        {display_name(k): inputs.values[k].given for k in inputs.names}, zero_params,
+        {display_name(k): inputs.values[k].given for k in inputs.names},
         [([c.label for c in cols], [c.unit for c in cols]) for cols in prepared.files],
         inputs.file_text(f"{prepared.stem}.in", prepared.kinds) if out_dir is not None else "",
         [name for name, _ in prepared.encoded], _rows_expected(prepared, command), language,
-        method, inputs.vector(prepared.extra_constants),
+        method,
         None if kind.integrates else algebraic_inputs(
             system, inputs, kind, prepared.unknowns, prepared.sweep, zero_params),
-        prepared.build_seconds)
+        prepared.build_seconds,
+        projector=_projector(system, inputs, options.constraints, prepared, language)
+        if kind.integrates else None,
+        advise=advise if kind.integrates else None)
     return execute(execution, out_dir, options)
+
+
+def _projector(system, inputs, constraints, prepared, language):
+    """The projection onto the configuration `constraints` at each print time, or None
+    (projection works on the model's expressions: imported only when asked for)."""
+    if not constraints:
+        return None
+    from .projection import Projector
+    return Projector(system, constraints, print_schedule(inputs, language).tinitial,
+                     inputs.vector(system.states), inputs.vector(prepared.extra_constants))
+
+
+def algebraic_inputs(system, inputs, kind, unknowns, sweep, zero_params) -> AlgebraicInputs:
+    """The numbers of an evaluation from the run's inputs (warning when the swept
+    input does not enter the outputs)."""
+    swept = None
+    if sweep is not None:
+        if sweep.target in system.params:
+            swept = system.params.index(sweep.target)
+        else:
+            warnings.warn(f"the swept input {display_name(sweep.target)} does not enter the "
+                          "outputs", stacklevel=3)
+    return AlgebraicInputs(
+        inputs.internal(S.TIME) if S.TIME in inputs.values else 0.0,
+        list(inputs.vector(system.params)),
+        list(inputs.vector(unknowns)) if kind.from_guesses else [0.0] * len(unknowns),
+        *((inputs.internal("ABSERR"), inputs.internal("RELERR"))
+          if kind is CodeKind.NONLINEAR else (0.0, 0.0)),
+        [display_name(u) for u in unknowns], swept,
+        None if sweep is None else list(sweep), zero_hint(zero_params))
 
 
 def _rows_expected(prepared, command) -> int:

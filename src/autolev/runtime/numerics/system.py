@@ -25,12 +25,13 @@ from .. import articulated
 from .. import symbols as S
 from .. import units
 from ..calculus import symbols_in
-from ..errors import AutolevModelError
-from . import clibrary, codegen
-from .cloop import extra_source as loop_extra_source
-from .compiled import CompilingInBackground, WalkedFirst, compile_program
-from .evaluation import CompiledEvaluation
-from .massmatrix import MassStructure
+from ...engine.errors import AutolevModelError
+from ...engine import clibrary
+from . import codegen
+from ...engine.cloop import extra_source as loop_extra_source
+from .compiled import WalkedFirst, compile_program, compiling_in_background
+from ...engine.evaluation import CompiledEvaluation
+from ...engine.massmatrix import MassStructure
 
 
 def alphabetical(syms) -> list:
@@ -219,7 +220,7 @@ class NumericSystem(CompiledEvaluation):
             loop_source, loop_flags = loop_extra_source()
             if background and backend == "auto" and clibrary.compiler() is not None:
                 self.rhs_function = compile_program(rhs, "python", "autolev_rhs")
-                self.rhs_compiling = CompilingInBackground(
+                self.rhs_compiling = compiling_in_background(
                     rhs, "autolev_rhs", extra_source=loop_source, extra_flags=loop_flags)
             else:
                 self.rhs_function = compile_program(
@@ -231,8 +232,8 @@ class NumericSystem(CompiledEvaluation):
             # the outputs' C too, once the right-hand side's (which the loop waits for)
             # is built: the first rows are the Python's (the same numbers)
             self.output_function = compile_program(outputs, "python", "autolev_outputs")
-            self.outputs_compiling = CompilingInBackground(outputs, "autolev_outputs",
-                                                           after=self.rhs_compiling)
+            self.outputs_compiling = compiling_in_background(outputs, "autolev_outputs",
+                                                             after=self.rhs_compiling)
         else:
             # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
             self.output_function = compile_program(outputs, backend if integrate

@@ -124,7 +124,7 @@ def _units(tr, c):
     a, b = nargs(tr, c, 2)
     ua, ub = _unit_text(tr, a), _unit_text(tr, b)
     from ...runtime.functions import units_factor
-    from ...runtime.errors import AutolevModelError
+    from ...engine.errors import AutolevModelError
     try:
         units_factor(ua, ub)              # unknown units and unlike kinds: diagnosed here
     except AutolevModelError as exc:

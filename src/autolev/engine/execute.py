@@ -10,8 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..code_kinds import CodeKind
-from ..errors import AutolevModelError
+from .code_kinds import CodeKind
+from .errors import AutolevModelError
 from .algebraic import AlgebraicInputs, run_algebraic
 from .dynamics import run_dynamics
 from .files import RunFiles, check_room, dir_text, encoded_text, termination_cleans_up
@@ -33,19 +33,21 @@ class Execution:
     inputs: object              # Inputs, or a run plan's PlannedInputs
     state_names: list
     given: dict                 # input name -> its value as given
-    zero_params: list           # the constants that are 0, by name
     columns: list               # (labels, units) of each output file
     in_text: str                # NAME.in with the run's values (when it writes files)
     encoded: list               # the ENCODE names (NAME.encode)
     rows_expected: int
     language: str               # of Autolev's program: "c", "m", "f"...
     method: str
-    extra_values: list          # the constraints' extra constants
     algebraic: AlgebraicInputs | None   # what ALGEBRAIC/NONLINEAR evaluate with
     build_seconds: float
     # (T, message) of the integration failure a run plan's run ended with: its advice
     # read the model, which the plan's replay does not have
     known_failure: tuple | None = None
+    # from the model, for an integration (run_dynamics): the projection onto
+    # configuration constraints, and the advice of a failure (a plan has neither)
+    projector: object = None
+    advise: object = None
 
 
 def execute(execution: Execution, out_dir=None,
@@ -61,9 +63,8 @@ def execute(execution: Execution, out_dir=None,
     def perform(writer):
         if kind.integrates:
             run_dynamics(system, inputs, result, writer, e.method, options.progress,
-                         e.zero_params, options.compiled, options.constraints,
-                         e.extra_values, program=e.language, keep_rows=options.keep_rows,
-                         known_failure=e.known_failure)
+                         options.compiled, e.projector, e.advise, program=e.language,
+                         keep_rows=options.keep_rows, known_failure=e.known_failure)
         else:
             run_algebraic(system, e.algebraic, result, writer, kind, options.keep_rows)
 

@@ -10,8 +10,9 @@ import warnings
 
 import numpy as np
 
-from ..errors import AutolevModelError
-from .integrate import IntegrationFailure, Progress, Schedule, integrate, loop_takes_over
+from .errors import AutolevModelError
+from .integrate import (IntegrationFailure, Progress, Schedule, failure_basis, integrate,
+                        integrate_projected, loop_takes_over)
 from .integration_notes import loose_tolerance_note, stiff_note, switch_when_stiff
 from .results import split_output_rows, split_outputs, tables_of
 from .massmatrix import SingularMassMatrix, scaled_condition
@@ -150,15 +151,17 @@ def print_schedule(inputs, program: str) -> Schedule:
     return sched
 
 
-def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
-                  compiled: bool = True, constraints=None, extra_values=(),
-                  program: str = "", keep_rows: bool = True,
-                  known_failure: tuple | None = None) -> None:
+def run_dynamics(system, inputs, result, writer, method, progress,
+                 compiled: bool = True, projector=None, advise=None, program: str = "",
+                 keep_rows: bool = True, known_failure: tuple | None = None) -> None:
     """`program`: the language of Autolev's program for the CODE file ("c", "m", ...),
     whose way of integrating is followed.  `keep_rows`: the Result holds every row
     (else only the last: a run's memory is then independent of its length).
-    `known_failure`: (T, message) of the failure this run ended with before (a run
-    plan's), said again when it fails there."""
+    `projector`: puts a state back onto the configuration constraints at each print
+    time (the model's, compiled; None: no projection).  `advise(failure, result,
+    integration)`: the message of a failed integration, with what the model tells of
+    its cause (None: the failure alone).  `known_failure`: (T, message) of the failure
+    this run ended with before (a run plan's), said again when it fails there."""
     if not system.nstate:
         raise AutolevModelError("nothing to integrate: no variable has a defined "
                                 "derivative and there are no generalized speeds")
@@ -194,10 +197,7 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
             if use_loop and loop_takes_over(method, sched) and loop is None else None
         on_stiff = switch_when_stiff if method == "dop853" else None
         loose_tolerance_note(method.lower(), relerr)
-        if constraints:
-            # projection works on the model's expressions: imported only when asked for
-            from .projection import Projector, integrate_projected
-            projector = Projector(system, constraints, sched.tinitial, y0, extra_values)
+        if projector is not None:
             result.stats.update(integrate_projected(
                 f, y0, sched, method, abserr, relerr, on_row, bar, loop, on_stiff,
                 projector))
@@ -214,10 +214,10 @@ def run_dynamics(system, inputs, result, writer, method, progress, zero_params,
         on_row(exc.t, exc.y)              # Autolev's last row: where it stopped
         if known_failure is not None and known_failure[0] == exc.t:
             result.failure = known_failure[1]
+        elif advise is not None:
+            result.failure = advise(exc, result, (f, sched, abserr, relerr))
         else:
-            from .advice import failure_message      # reads the model: only when it failed
-            result.failure = failure_message(exc, system, inputs, result, zero_params,
-                                              (f, sched, abserr, relerr))
+            result.failure = failure_basis(exc, result.state_names)
         result.failure_time = exc.t
         if writer is not None:
             writer.note("Error: " + result.failure)

@@ -31,8 +31,8 @@ try:
 except ImportError:           # Windows: runs into one folder are not locked
     fcntl = None
 
-from ..errors import AutolevModelError
-from ..outputs import TEMPORARY_SUFFIX, Written, temporary_beside
+from .errors import AutolevModelError
+from .outputs import TEMPORARY_SUFFIX, Written, temporary_beside
 from .numbers import row
 
 
@@ -111,7 +111,7 @@ class OutputFiles:
 
     def write_rows(self, k: int, block) -> None:
         """Rows of file k at once (a numpy array: print times x columns)."""
-        from .rowtext import rows_text      # numpy and ctypes: only a run writes rows
+        from .rowtext import rows_text  # numpy and ctypes: only a run writes rows
         self._handles[k].write(rows_text(block))
 
     def note(self, text: str) -> None:

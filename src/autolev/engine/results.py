@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..code_kinds import CodeKind
+from .code_kinds import CodeKind
 
 
 @dataclass
@@ -89,7 +89,7 @@ class Result:
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the run, and its output columns drawn against time."""
-        from ..notebook import result_html
+        from .notebook import result_html
         return result_html(self)
 
     def columns(self) -> list[tuple[str, str, np.ndarray]]:

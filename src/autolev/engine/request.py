@@ -4,7 +4,7 @@ A kept answer (a run plan, a kept outcome, a linearization, a transcript) is fil
 under its request's key: the digest of autolev's own code, the request's kind, *every*
 field of the request by name (a field added is in the key without anyone remembering
 to put it there), and the digests of the files the request names (the model, an --in
-file) as the command read them (`runtime.reading`).  No sympy: a warm run finds its
+file) as the command read them (`reading.py`).  No sympy: a warm run finds its
 plan with it.
 """
 from __future__ import annotations
@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .cachekeys import code_digest
-from .runtime import reading
+from . import reading
 
 # environment variables that choose how numbers are computed (the compiler, the C or
 # the Python back end): part of every request, as the command saw them

@@ -54,7 +54,7 @@ class Linearization:
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the state, the inputs and the eigenvalue table."""
-        from ..notebook import linearization_html
+        from .notebook import linearization_html
         return linearization_html(self)
 
     def zero_tolerance(self) -> float:

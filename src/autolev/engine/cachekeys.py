@@ -15,7 +15,7 @@ FORMAT = 1
 PLAN_PREFIX = "plan_"
 # set (not 0): no built model, translation or run plan is kept or read
 DISABLE_VARIABLE = "AUTOLEV_NO_MODEL_CACHE"
-_PACKAGE = Path(__file__).resolve().parent
+_PACKAGE = Path(__file__).resolve().parent.parent     # autolev itself
 
 
 def _version_file(package: str, name: str) -> bytes:

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..diskcache import cache_dir, install_or_aside, read_verified, verified
+from .diskcache import cache_dir, install_or_aside, read_verified, verified
 
 # without -fno-math-errno every sqrt may set errno, so gcc keeps each repeated call
 # (the rider-lean bicycle repeats one 117 times); the values are the same bit for bit

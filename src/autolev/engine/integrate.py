@@ -548,3 +548,44 @@ def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, pr
         raise IntegrationFailure(f"the state is not finite at T = {shown:.6g}", tf, y_last)
     raise IntegrationFailure(f"the compiled integrator stopped with code {r}", out["t"],
                              y_last)
+
+
+def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_row,
+                        progress, loop, on_stiff, project) -> dict:
+    """integrate() from print time to print time, projecting the state at each
+    (`project(t, x)`: the state on the constraints; its `largest_correction` is
+    reported)."""
+    schedule.check()
+    y = np.array(y0, dtype=float)
+    on_row(schedule.tinitial, y)
+    stats = {"method": method, "evaluations": 0, "steps": 0, "projected": True}
+    a = schedule.tinitial
+    for b in (t for block in schedule.print_blocks() for t in block.tolist()):
+        got = []
+        seg = Schedule(a, b, schedule.integstp, 10 ** 9, schedule.fresh_derivatives,
+                       schedule.restart_each_step)
+        try:
+            st = integrate(f, y, seg, method, abserr, relerr,
+                           lambda t, yy: got.append(np.array(yy)), None, loop=loop,
+                           on_stiff=on_stiff)
+        except IntegrationFailure:
+            stats["largest_correction"] = project.largest_correction
+            raise
+        stats["evaluations"] += st.get("evaluations", 0)
+        stats["steps"] += st.get("steps", 0)
+        for key in ("stiff_t", "switched_to", "compiled"):
+            if key in st and key not in stats:
+                stats[key] = st[key]
+        y = project(b, got[-1])
+        on_row(b, y)
+        a = b
+        if progress is not None:
+            progress.update(b)
+    stats["largest_correction"] = project.largest_correction
+    return stats
+
+
+def failure_basis(exc: IntegrationFailure, state_names: list) -> str:
+    """Autolev's message for a failed integration, and the state where it stopped."""
+    state = ", ".join(f"{n} = {v:.6g}" for n, v in zip(state_names, exc.y))
+    return f"Numerical integration failed to converge: {exc}; the state there: {state}"

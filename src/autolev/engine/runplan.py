@@ -8,7 +8,7 @@ solved: ALGEBRAIC, NONLINEAR) leaves a plan in the cache for its request
 numbers and sources (C, whose libraries are found again in the build cache, or
 Python), its inputs as numbers, the texts of its files besides the rows, the message
 of its failure, and what the run printed on stderr (notes, warnings).  With it go the
-digests of every file the run read, taken when it read them (`runtime.reading`).  The
+digests of every file the run read, taken when it read them (`reading.py`).  The
 next run with the same request, while each of those files is as it was read, repeats
 the run from the plan and writes the same files (and the tables and plots asked for,
 from its rows), importing no sympy (scipy only for what needs it: a scipy method, a
@@ -28,17 +28,16 @@ from pathlib import Path
 
 import numpy as np
 
-from . import source  # noqa: F401  (registers the folder lookups a kept answer rechecks)
 from .cachekeys import PLAN_PREFIX, enabled
 from .request import Request
-from .runtime import diskcache, reading
-from .runtime.reading import Reads, ReadSet
-from .runtime.code_kinds import INTEGRATION_PARAMETERS
-from .runtime.numerics.clibrary import CompileError
-from .runtime.numerics.evaluation import CompiledEvaluation
-from .runtime.numerics.execute import Execution
-from .runtime.numerics.linear import Linearization
-from .runtime.numerics.results import Column
+from . import diskcache, reading
+from .reading import Reads, ReadSet
+from .code_kinds import INTEGRATION_PARAMETERS
+from .clibrary import CompileError
+from .evaluation import CompiledEvaluation
+from .execute import Execution
+from .linear import Linearization
+from .results import Column
 
 
 class PlannedInputs:
@@ -139,7 +138,7 @@ def can_plan(execution: Execution, result) -> bool:
     same step (the loop's numbers are the Python's to the last bit): its message is
     kept."""
     system = execution.system
-    if system.specified_functions:
+    if system.specified_functions or execution.projector is not None:
         return False
     return not execution.kind.integrates or (
         system.loop is not None and system.output_function.backend == "c"
@@ -159,7 +158,7 @@ def planned_command(execution: Execution, result, label: str,
     reduced = replace(execution, system=PlannedSystem(execution.system,
                                                       execution.state_names, sweeps),
                       inputs=PlannedInputs(integration, initial), build_seconds=0.0,
-                      known_failure=failure)
+                      known_failure=failure, projector=None, advise=None)
     return PlannedCommand(reduced, label, messages)
 
 

@@ -19,6 +19,7 @@ from __future__ import annotations
 import contextlib
 import contextvars
 import hashlib
+import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
@@ -154,3 +155,38 @@ def lookup(name: str):
         _LOOKUPS[name] = looked_up
         return looked_up
     return register
+
+
+# -- the folder searches a model's reading makes --------------------------------------
+@lookup("find file")
+def find_file(base: Path, relative: str) -> Path | None:
+    """`base/relative`, matching each path component case-insensitively."""
+    parts = [p for p in relative.replace("\\", "/").split("/") if p not in ("", ".")]
+    current = base
+    for part in parts:
+        if part == "..":
+            current = current.parent
+            continue
+        exact = current / part
+        try:
+            if exact.exists():
+                current = exact
+                continue
+            matches = [c for c in current.iterdir() if c.name.lower() == part.lower()]
+        except OSError:         # a name too long for the file system, an unreadable folder
+            return None
+        if not matches:
+            return None
+        current = sorted(matches)[0]
+    return current if current.is_file() else None
+
+
+@lookup("names with suffix")
+def names_with_suffix(folder: Path, suffix: str) -> frozenset[str]:
+    """The names (lower case, without `suffix`) of the folder's files ending in `suffix`
+    (any case); none for a folder that cannot be read."""
+    try:
+        return frozenset(f[:-len(suffix)].lower() for f in os.listdir(folder)
+                         if f.lower().endswith(suffix))
+    except OSError:
+        return frozenset()

@@ -1,17 +1,16 @@
 """Evaluating a CODE ALGEBRAIC or NONLINEAR command: once, or once per value of
 its sweep, solving its linear equations or Newton's method first.  Its inputs are
-numbers (AlgebraicInputs, made by `algebraic_inputs` from the model's): no sympy here,
-so that a warm run executes a run plan's ALGEBRAIC and NONLINEAR commands too.
+numbers (AlgebraicInputs, made by runtime/numerics/run.py from the model's): no sympy
+here, so that a warm run executes a run plan's ALGEBRAIC and NONLINEAR commands too.
 """
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..code_kinds import CodeKind
-from ..errors import AutolevModelError
+from .code_kinds import CodeKind
+from .errors import AutolevModelError
 from .results import split_outputs, tables_of
 
 
@@ -28,29 +27,6 @@ class AlgebraicInputs:
     swept: int | None           # the swept constant's place in `parameters`
     points: list | None         # (internal, given) value of each point; None: once
     zero_hint: str              # what a failure says of the constants that are 0
-
-
-def algebraic_inputs(system, inputs, kind, unknowns, sweep, zero_params) -> AlgebraicInputs:
-    """The numbers of an evaluation from the run's inputs (warning when the swept
-    input does not enter the outputs)."""
-    from .. import symbols as S
-    from .advice import zero_hint
-    from .inputs import display_name
-    swept = None
-    if sweep is not None:
-        if sweep.target in system.params:
-            swept = system.params.index(sweep.target)
-        else:
-            warnings.warn(f"the swept input {display_name(sweep.target)} does not enter the "
-                          "outputs", stacklevel=3)
-    return AlgebraicInputs(
-        inputs.internal(S.TIME) if S.TIME in inputs.values else 0.0,
-        list(inputs.vector(system.params)),
-        list(inputs.vector(unknowns)) if kind.from_guesses else [0.0] * len(unknowns),
-        *((inputs.internal("ABSERR"), inputs.internal("RELERR"))
-          if kind is CodeKind.NONLINEAR else (0.0, 0.0)),
-        [display_name(u) for u in unknowns], swept,
-        None if sweep is None else list(sweep), zero_hint(zero_params))
 
 
 def run_algebraic(system, given: AlgebraicInputs, result, writer, kind,
