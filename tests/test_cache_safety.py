@@ -157,3 +157,31 @@ def test_a_fresh_cache_tagged_meanwhile_by_another_thread_is_used(cache, monkeyp
     cache.mkdir(mode=0o700)
     assert diskcache._problem_with(cache) is None
     assert (cache / diskcache.MARKER).is_file()
+
+
+@pytest.mark.parametrize("spoilt", ["a file where the folder goes", "a key cut short"])
+def test_a_key_that_cannot_be_had_costs_the_run_nothing(tmp_path, spoilt):
+    # the cache falls back to a private folder, whose entries this process keys itself
+    # (it was exit 70 and a traceback: the fallback still asked for the user's key)
+    config = tmp_path / "config"
+    if spoilt == "a file where the folder goes":
+        config.write_text("not a folder")
+    else:
+        (config / "autolev").mkdir(parents=True, mode=0o700)
+        (config / "autolev" / "cache.key").write_text("abc\n")
+        (config / "autolev" / "cache.key").chmod(0o600)
+    model = EXAMPLES / "simple_pendulum.al"
+    env = dict(os.environ, AUTOLEV_CACHE=str(tmp_path / "cache"), AUTOLEV_NO_MODEL_CACHE="0",
+               XDG_CONFIG_HOME=str(config))
+    spoilt_run = cli("run", model, "--out", tmp_path / "spoilt", "-q", env=env)
+    assert spoilt_run.returncode == 0, spoilt_run.stderr
+    assert "cannot be trusted: its key" in spoilt_run.stderr
+    assert "internal error" not in spoilt_run.stderr and "Traceback" not in spoilt_run.stderr
+    # nothing kept where the key that would authenticate it is not had
+    assert not (tmp_path / "cache").exists() or not any(
+        n.endswith(".pickle") for n in os.listdir(tmp_path / "cache"))
+    fine = cli("run", model, "--out", tmp_path / "fine", "-q",
+               env=dict(env, XDG_CONFIG_HOME=str(tmp_path / "fine-config")))
+    assert fine.returncode == 0, fine.stderr
+    assert (tmp_path / "spoilt" / "simple_pendulum.1").read_bytes() == \
+        (tmp_path / "fine" / "simple_pendulum.1").read_bytes()

@@ -199,6 +199,8 @@ def not_private(path: Path) -> str | None:
 
 # -- the secret that authenticates entries -----------------------------------------------
 _SECRET: list = []          # (key, where it lives) once read or made
+# the key of this process's own fallback folder, when the user's cannot be kept
+_PROCESS_KEY: list = []
 
 
 def secret_file() -> Path:
@@ -208,14 +210,28 @@ def secret_file() -> Path:
 
 def _secret_problem() -> str | None:
     try:
-        _secret()
+        _user_key()
     except OSError as exc:
         return f"cannot be trusted: its key {secret_file()} {exc.strerror or exc}"
     return None
 
 
 def _secret() -> bytes:
-    """The key of this user's cache (made on first use)."""
+    """The key entries are authenticated with: the user's (made on first use), else,
+    when it cannot be made or read (a read-only home, a file where its folder goes, a
+    key cut short), this process's own: the cache is then this process's private
+    folder (cache_dir), which no other process reads."""
+    try:
+        return _user_key()
+    except OSError:
+        if not _PROCESS_KEY:
+            _PROCESS_KEY.append(secrets.token_bytes(32))
+        return _PROCESS_KEY[0]
+
+
+def _user_key() -> bytes:
+    """The key of this user's cache (made on first use); OSError saying why it cannot
+    be had."""
     path = secret_file()
     if _SECRET and _SECRET[0][1] == path:
         return _SECRET[0][0]
