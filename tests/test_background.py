@@ -216,3 +216,97 @@ def test_a_model_edited_while_the_compile_finishes_is_read_again(setting, tmp_pa
         again = autolev(env, "run", model, "--out", tmp_path / out)
         assert again.returncode == 0, again.stderr
         assert (tmp_path / out / "harmonic.1").read_text() == expected
+
+
+# -- faults: a terminal that stops background writers, a child killed ----------------
+def test_a_terminal_with_tostop_neither_stops_the_work_nor_hangs_the_command(setting,
+                                                                             tmp_path):
+    # the child has a process group of its own: on a terminal with `stty tostop` its
+    # first write stopped it, and the command waited for it forever
+    import fcntl
+    import termios
+    import threading
+    model, env = setting
+    master, slave = os.openpty()
+    attrs = termios.tcgetattr(slave)
+    attrs[3] |= termios.TOSTOP
+    termios.tcsetattr(slave, termios.TCSANOW, attrs)
+
+    def controlling_terminal():          # the command is a session on the terminal
+        fcntl.ioctl(0, termios.TIOCSCTTY, 0)
+    proc = subprocess.Popen([sys.executable, "-m", "autolev", "run", str(model), "--out",
+                             str(tmp_path / "out")], stdin=slave, stdout=slave,
+                            stderr=slave, env=env, start_new_session=True,
+                            preexec_fn=controlling_terminal)
+    os.close(slave)
+    said = []
+
+    def drain():
+        while True:
+            try:
+                chunk = os.read(master, 4096)
+            except OSError:
+                return
+            if not chunk:
+                return
+            said.append(chunk)
+    reader = threading.Thread(target=drain, daemon=True)
+    reader.start()
+    try:
+        assert proc.wait(timeout=60) == 0, b"".join(said).decode(errors="replace")
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    text = b"".join(said).decode(errors="replace")
+    assert "wrote" in text and (tmp_path / "out" / "harmonic.1").exists()
+    # the work finished in the background, on the same terminal
+    deadline = time.monotonic() + 60
+    while locks(env):
+        assert time.monotonic() < deadline, "the background compile never finished"
+        time.sleep(0.2)
+    os.close(master)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc: Linux")
+def test_a_child_killed_before_its_outputs_is_said_not_an_internal_error(setting, tmp_path):
+    # as the OOM killer would: the parent tried to install a handler for SIGKILL
+    # (exit 70, "internal error"); now it says what happened and leaves no part file
+    model, env = setting
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-m", "autolev", "run", model, "--out", out,
+                             "--tfinal", "1e6", "--method", "rk45"], process_group=0,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env,
+                            text=True)
+    children = Path(f"/proc/{proc.pid}/task/{proc.pid}/children")
+    deadline = time.monotonic() + 60
+    while not any(p.name.endswith(".autolev-part") for p in out.glob(".*")):
+        assert proc.poll() is None and time.monotonic() < deadline
+        time.sleep(0.05)
+    (child,) = children.read_text().split()
+    os.kill(int(child), signal.SIGKILL)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 1, err
+    assert "killed (SIGKILL)" in err and "internal error" not in err
+    assert [p.name for p in out.iterdir()] == []
+
+
+def test_autolev_foreground_0_leaves_the_compile_to_the_background(setting, tmp_path):
+    model, env = setting
+    done = autolev(dict(env, AUTOLEV_FOREGROUND="0"), "run", model, "--out", tmp_path / "o")
+    assert done.returncode == 0, done.stderr
+    assert "in the background" in done.stderr and locks(env)
+
+
+def test_a_lock_left_by_a_killed_child_is_removed_by_the_next_run(setting, tmp_path,
+                                                                  monkeypatch):
+    # a child killed after it detached cannot remove its lock (no exit handlers)
+    from autolev.cli.background import lock_file
+    model, env = setting
+    monkeypatch.setenv("AUTOLEV_CACHE", env["AUTOLEV_CACHE"])
+    lock = lock_file(model)
+    lock.write_text("")
+    os.utime(lock, (time.time() - 3600, time.time() - 3600))
+    done = autolev(dict(env, AUTOLEV_FOREGROUND="1"), "run", model, "--out", tmp_path / "o")
+    assert done.returncode == 0, done.stderr
+    assert not lock.exists()

@@ -10,6 +10,13 @@ child (a lock in the cache folder), so it is warm and nothing is built twice.
 
 Only the `autolev` command does this (`allow`), on POSIX, with a lasting cache; set
 AUTOLEV_FOREGROUND=1 to keep the wait in the foreground.
+
+The child has a process group of its own and writes to the terminal while it works
+(progress, messages): it ignores SIGTTOU, so a terminal with `stty tostop` does not stop
+it there.  A child that dies of a signal before its outputs are done makes the parent
+end as it would have: by the signal passed on from the user, else with what happened
+said (SIGKILL, as the system kills for memory: exit 1; any other: a crash, exit 70),
+the child's partial files removed.
 """
 from __future__ import annotations
 
@@ -19,12 +26,17 @@ import os
 import signal
 import sys
 import threading
+import time
 from pathlib import Path
 
 FOREGROUND_VARIABLE = "AUTOLEV_FOREGROUND"
 # the signals a user sends the command: passed on to the child doing the work
 _PASSED_ON = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
 _PR_SET_PDEATHSIG = 1               # linux/prctl.h
+# the exit status of a crash of the work (an internal error, as cli.EXIT_INTERNAL)
+_CRASHED = 70
+# a lock file left by a child killed after it detached is removed once this old
+_STALE_LOCK_SECONDS = 60
 
 _allowed = [False]
 
@@ -69,7 +81,8 @@ def wait_for_every_finishing() -> None:
 
 
 def _wait_on(lock: Path) -> None:
-    """Wait until no process holds `lock`."""
+    """Wait until no process holds `lock`; a lock no process holds is left by a child
+    that was killed (its exit would have removed it): removed once it is old."""
     import fcntl
     try:
         fd = os.open(lock, os.O_RDONLY | os.O_NOFOLLOW)
@@ -77,6 +90,8 @@ def _wait_on(lock: Path) -> None:
         return                          # gone meanwhile, or not ours to read
     try:
         fcntl.flock(fd, fcntl.LOCK_SH)
+        if time.time() - os.fstat(fd).st_mtime > _STALE_LOCK_SECONDS:
+            lock.unlink(missing_ok=True)
     finally:
         os.close(fd)
 
@@ -106,11 +121,18 @@ class Finishing:
         os.close(self._to_parent)
 
 
-def split_off() -> Finishing | None:
+def foreground_asked() -> bool:
+    """AUTOLEV_FOREGROUND set to anything but 0."""
+    return os.environ.get(FOREGROUND_VARIABLE, "") not in ("", "0")
+
+
+def split_off(out_folder: Path) -> Finishing | None:
     """In the `autolev` command on POSIX (no thread running, AUTOLEV_FOREGROUND unset):
     fork; the parent never returns (it exits with the child's status once the child
-    detaches or ends), the child returns its Finishing.  Else None: no background."""
-    if not _allowed[0] or os.name != "posix" or os.environ.get(FOREGROUND_VARIABLE) \
+    detaches or ends), the child returns its Finishing.  Else None: no background.
+    `out_folder`: where the work writes its files (a killed child's partial files
+    there are removed)."""
+    if not _allowed[0] or os.name != "posix" or foreground_asked() \
             or threading.active_count() != 1:
         return None
     from ..engine import diskcache
@@ -136,15 +158,18 @@ def split_off() -> Finishing | None:
         signal.pthread_sigmask(signal.SIG_SETMASK, unblock)
         os.close(readable)
         os.setpgid(0, 0)        # the terminal's Ctrl-C reaches the parent, which passes it on
+        # in a group of its own it is in the background: writing to a terminal with
+        # `stty tostop` would stop it (and the parent waiting for it) for good
+        signal.signal(signal.SIGTTOU, signal.SIG_IGN)
         _die_with_parent(signal.SIGTERM)
         if os.getppid() != parent:      # the parent died before that took effect
             os._exit(1)
         return Finishing(writable)
     os.close(writable)
-    _wait_as_parent(child, readable, unblock)
+    _wait_as_parent(child, readable, unblock, out_folder)
 
 
-def _wait_as_parent(child: int, readable: int, unblock):
+def _wait_as_parent(child: int, readable: int, unblock, out_folder: Path):
     """Pass signals on to the child (those held since the fork first); exit with the
     status it sends, or with its own."""
     def pass_on(signum, _frame):
@@ -169,11 +194,52 @@ def _wait_as_parent(child: int, readable: int, unblock):
         os._exit(said[0])
     _, how = os.waitpid(child, 0)
     code = os.waitstatus_to_exitcode(how)
-    if code < 0:                        # killed by a signal: end the same way
-        signal.signal(-code, signal.SIG_DFL)
-        os.kill(os.getpid(), -code)
-        code = 128 - code
+    if code < 0:
+        _remove_partial_files(out_folder, child)
+        _end_as_the_work(-code)
     os._exit(code)
+
+
+def _end_as_the_work(signum: int) -> None:
+    """The child died of `signum` before its outputs were done: a signal the user sent
+    (passed on) ends the command the same way; SIGKILL (the system's, for memory, or
+    another process's) is said, exit 1; any other is a crash of the work."""
+    name = signal.Signals(signum).name
+    if signum in _PASSED_ON:
+        signal.signal(signum, signal.SIG_DFL)
+        os.kill(os.getpid(), signum)
+        os._exit(128 + signum)
+    if signum == signal.SIGKILL:
+        _say(f"autolev: error: the work was killed ({name}) before its files were written, "
+             "as the system kills a process when memory runs out: its files were not "
+             "written")
+        os._exit(1)
+    _say(f"autolev: internal error: the work crashed ({name}) before its files were "
+         "written: a bug in autolev; please report it with the model and the command")
+    os._exit(_CRASHED)
+
+
+def _say(text: str) -> None:
+    try:
+        os.write(2, (text + "\n").encode())
+    except OSError:
+        pass                            # no terminal left to tell
+
+
+def _remove_partial_files(folder: Path, pid: int) -> None:
+    """The temporaries process `pid` was writing in `folder` (engine.outputs'
+    names, which carry the writer's pid)."""
+    from ..engine.outputs import is_temporary_of
+    try:
+        names = os.listdir(folder)
+    except OSError:
+        return
+    for name in names:
+        if is_temporary_of(name, pid):
+            try:
+                os.unlink(folder / name)
+            except OSError:
+                pass                    # gone already, or not ours to remove
 
 
 def _hold(lock: Path) -> None:

@@ -80,7 +80,7 @@ def _run_from_model(path: Path, ns: argparse.Namespace, progress,
         if translation is not None and not translation.code_lines:
             return _responses_instead(path, translation, keeping)
     # the compile for later runs may finish after this command returns (background.py)
-    finishing = background.split_off()
+    finishing = background.split_off(Path(ns.out))
     start = time.monotonic()
     # the note of values lacking is about forming the model: a run plan never says it
     model = load_model(path, progress, None if ns.zero_missing

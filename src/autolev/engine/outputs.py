@@ -32,6 +32,14 @@ def temporary_beside(target: Path) -> Path:
                             f"{TEMPORARY_SUFFIX}")
 
 
+def is_temporary_of(name: str, pid: int) -> bool:
+    """Whether `name` is a temporary `temporary_beside` made in process `pid`."""
+    if not (name.startswith(".") and name.endswith(TEMPORARY_SUFFIX)):
+        return False
+    parts = name[:-len(TEMPORARY_SUFFIX)].rsplit(".", 2)
+    return len(parts) == 3 and parts[1] == str(pid)
+
+
 def write_whole(target: Path, data: bytes | str, mode: int = 0o666) -> Path:
     """Create or replace `target` with `data` in one step (text as UTF-8, newlines as
     given); `mode` before the umask.  Returns `target`."""
