@@ -118,3 +118,51 @@ def test_a_models_control_characters_never_reach_the_terminal(tmp_path):
     # the response is read by the grammar, which names the character it cannot read
     assert "(2) \\x1b[2JX: not comparable" in v.stdout
     assert "unexpected character U+001B [E001]" in v.stdout
+
+
+def _limited(gigabytes: float):
+    """A child's address space limit (ulimit -v), as a sweep's run would meet it."""
+    import resource
+    limit = int(gigabytes * 2 ** 30)
+    return lambda: resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+
+BIG_SWEEP = SWEEP.format(start=0, stop="1E8", step=1)
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="RLIMIT_AS and /proc: Linux")
+def test_a_sweep_of_1e8_points_is_streamed_under_a_memory_limit(tmp_path):
+    # the points were built whole before the first was evaluated (2.9 GB: "out of
+    # memory"), and Q was said to have no value; now the run goes on from point to point
+    import os
+    import signal
+    import time
+    model = tmp_path / "s.al"
+    model.write_text(BIG_SWEEP)
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", AUTOLEV_FOREGROUND="1")
+    proc = subprocess.Popen([sys.executable, "-m", "autolev", "run", model, "--out",
+                             tmp_path / "out"], stderr=subprocess.PIPE, text=True, env=env,
+                            preexec_fn=_limited(1.5))
+    time.sleep(12)
+    running = proc.poll() is None
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert running, err
+    assert "out of memory" not in err and "no value given for Q" not in err
+    assert "point = " in err                  # how far it is, as it goes
+    assert not [p for p in (tmp_path / "out").iterdir() if p.name.startswith(".")]
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="RLIMIT_AS and /proc: Linux")
+def test_rows_to_be_kept_beyond_the_memory_are_refused_up_front_with_the_numbers(tmp_path):
+    import os
+    model = tmp_path / "s.al"
+    model.write_text(BIG_SWEEP)
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", AUTOLEV_FOREGROUND="1")
+    done = subprocess.run([sys.executable, "-m", "autolev", "run", model, "--out",
+                           tmp_path / "out", "--csv"], capture_output=True, text=True,
+                          env=env, preexec_fn=_limited(1.5), timeout=120)
+    assert done.returncode == 1, done.stderr
+    assert "keeping every row of this run in memory needs about 4.8 GB (1e+08 rows of 1 " \
+           "value)" in done.stderr
+    assert not (tmp_path / "out").exists() or not list((tmp_path / "out").iterdir())

@@ -5,12 +5,14 @@ here, so that a warm run executes a run plan's ALGEBRAIC and NONLINEAR commands 
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from .code_kinds import CodeKind
 from .errors import AutolevModelError
+from .integrate import Progress
 from .results import split_outputs, tables_of
 
 
@@ -25,14 +27,35 @@ class AlgebraicInputs:
     relerr: float
     unknown_names: list
     swept: int | None           # the swept constant's place in `parameters`
-    points: list | None         # (internal, given) value of each point; None: once
+    points: SweepPoints | None  # the sweep's points; None: once
     zero_hint: str              # what a failure says of the constants that are 0
 
 
+@dataclass(frozen=True)
+class SweepPoints:
+    """The points of [q deg = start, stop, step], made one at a time as they are
+    evaluated (a sweep of 1e8 points holds none of them): (internal, given) values,
+    the given one start + step*k in the sweep's unit."""
+
+    start: float
+    step: float
+    count: int
+    degrees: bool               # given in degrees: internal in radians
+
+    def __len__(self) -> int:
+        return self.count
+
+    def __iter__(self):
+        for k in range(self.count):
+            given = self.start + self.step * k
+            yield (given * math.pi / 180 if self.degrees else given), given
+
+
 def run_algebraic(system, given: AlgebraicInputs, result, writer, kind,
-                  keep_rows: bool = True):
+                  keep_rows: bool = True, progress=None):
     """Evaluate (and solve) once, or once per value of the sweep, made and written one
-    at a time; with `keep_rows` False the Result holds only the last row."""
+    at a time; with `keep_rows` False the Result holds only the last row.  A sweep
+    longer than a second says how far it is on `progress` (a stream, or None)."""
     rows = [[] for _ in system.files]
     encoded: dict = {}
     solutions, swept = [], []
@@ -40,7 +63,9 @@ def run_algebraic(system, given: AlgebraicInputs, result, writer, kind,
     n = len(given.unknown_names)
     guess = np.array(given.guesses, dtype=float)
     t = given.t
-    for point in points:
+    bar = Progress(progress, 0, len(points), progress is not None, "point")
+    for k, point in enumerate(points):
+        bar.update(k + 1)
         if not keep_rows:
             rows = [[] for _ in system.files]
             del solutions[:], swept[:]
@@ -66,6 +91,7 @@ def run_algebraic(system, given: AlgebraicInputs, result, writer, kind,
             swept.append(point[1])
         values = system.outputs(t, np.zeros(0), None, x)
         split_outputs(system, values, rows, writer, encoded)
+    bar.done()
     result.t = np.array(swept, dtype=float)
     result.solution = {name: np.array([s[i] for s in solutions])
                        for i, name in enumerate(given.unknown_names)}

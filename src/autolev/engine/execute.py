@@ -14,7 +14,8 @@ from .code_kinds import CodeKind
 from .errors import AutolevModelError
 from .algebraic import AlgebraicInputs, run_algebraic
 from .dynamics import run_dynamics
-from .files import RunFiles, check_room, dir_text, encoded_text, termination_cleans_up
+from .files import (RunFiles, check_memory, check_room, dir_text, encoded_text,
+                    termination_cleans_up)
 from .options import RunOptions
 from .results import Result
 
@@ -55,6 +56,9 @@ def execute(execution: Execution, out_dir=None,
     """Compute a prepared command and write its files into out_dir (see run_command)."""
     e = execution
     system, inputs, kind, stem = e.system, e.inputs, e.kind, e.stem
+    if options.keep_rows:
+        check_memory(e.rows_expected, system.nstate + sum(len(labels)
+                                                          for labels, _ in e.columns))
     result = Result(kind, stem, np.zeros(0), np.zeros((0, system.nstate)),
                     list(e.state_names), [], {}, dict(e.given), system=system,
                     execution=e)
@@ -66,7 +70,8 @@ def execute(execution: Execution, out_dir=None,
                          options.compiled, e.projector, e.advise, program=e.language,
                          keep_rows=options.keep_rows, known_failure=e.known_failure)
         else:
-            run_algebraic(system, e.algebraic, result, writer, kind, options.keep_rows)
+            run_algebraic(system, e.algebraic, result, writer, kind, options.keep_rows,
+                          options.progress)
 
     if out_dir is None:
         perform(None)

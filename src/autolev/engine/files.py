@@ -89,6 +89,47 @@ def check_room(folder: Path, rows: int, columns: list[int]) -> None:
     warnings.warn(f"this run writes {what} into {folder}")
 
 
+# what a kept value costs while a run holds its rows (a Python float in a row list, and
+# the array the rows become at the end)
+KEPT_VALUE_BYTES = 48
+
+
+def check_memory(rows: int, values: int) -> None:
+    """Before a run computes anything: refuse one whose rows, kept in memory (a Result
+    holding every row), would not fit in what this process may still use."""
+    needed = rows * values * KEPT_VALUE_BYTES
+    available = memory_available()
+    if available is None or needed <= available:
+        return
+    raise AutolevModelError(
+        f"keeping every row of this run in memory needs about {_size(needed)} ({rows:.3g} "
+        f"rows of {values} value{'s' if values != 1 else ''}), where {_size(available)} is "
+        "available: its files hold "
+        "every row (autolev run keeps only the last without --plot, --csv or --mat; "
+        "simulate and run take keep_rows=False), or lower TFINAL, raise PRINTINT or "
+        "INTEGSTP, or narrow the sweep")
+
+
+def memory_available() -> float | None:
+    """The memory this process may still take: the machine's available memory, and its
+    own address-space limit less what it uses (None where neither can be read)."""
+    found = []
+    try:
+        found.append(os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE"))
+    except (ValueError, OSError, AttributeError):
+        pass
+    try:
+        import resource
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+        if soft != resource.RLIM_INFINITY:
+            with open("/proc/self/statm") as statm:
+                used = int(statm.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+            found.append(max(soft - used, 0))
+    except (ImportError, OSError, ValueError):
+        pass
+    return min(found) if found else None
+
+
 def _size(count: float) -> str:
     for unit in ("bytes", "kB", "MB", "GB", "TB"):
         if count < 1000 or unit == "TB":

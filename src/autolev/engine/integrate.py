@@ -264,8 +264,9 @@ class KuttaMerson:
 class Progress:
     """A progress line on stderr for runs longer than a second."""
 
-    def __init__(self, stream, t0: float, t1: float, enabled: bool):
-        self.stream = stream
+    def __init__(self, stream, t0: float, t1: float, enabled: bool, what: str = "T"):
+        """`what`: the name of what goes from t0 to t1 (T, or a sweep's point)."""
+        self.stream, self.what = stream, what
         self.t0, self.t1 = t0, t1
         self.enabled = enabled and stream is not None
         self.start = _time.monotonic()
@@ -282,7 +283,8 @@ class Progress:
         self.last = now
         span = self.t1 - self.t0
         frac = (t - self.t0) / span if span else 1.0
-        text = f"  T = {t:.6g} of {self.t1:.6g} ({100 * frac:.0f}%), {now - self.start:.1f} s"
+        text = (f"  {self.what} = {t:.6g} of {self.t1:.6g} ({100 * frac:.0f}%), "
+                f"{now - self.start:.1f} s")
         if self.tty:
             self.stream.write("\r" + text + "   ")
         else:

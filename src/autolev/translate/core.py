@@ -172,7 +172,7 @@ class Translator:
         self.session = Session()
         self.call_depth = 0
         self.defined: set[tuple[str, int]] = set()
-        # names INPUT gives a value, lower case, with their primes (Q, Q')
+        # names INPUT or a CODE ALGEBRAIC sweep gives values, lower case, with their primes
         self.given_by_input: set[str] = set()
         # a CODE ALGEBRAIC or NONLINEAR came: its program reads variables from its .in
         self.code_reads_variables = False

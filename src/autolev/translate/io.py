@@ -130,6 +130,8 @@ def code_statement(tr: Translator, st: ir.Code) -> None:
     if st.sweep is not None:
         sw = st.sweep
         target = tr.name(sw.target.name, sw.target.primes, sw.target).code
+        # the sweep gives the swept input its values: it lacks none
+        tr.given_by_input.add(sw.target.name.lower() + "'" * sw.target.primes)
         opts += (f", sweep=({target}, {tr.scalar(sw.start).code}, {tr.scalar(sw.stop).code}, "
                  f"{tr.scalar(sw.step).code}{_unit_arg(sw.unit)})")
     if st.options:

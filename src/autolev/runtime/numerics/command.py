@@ -339,22 +339,14 @@ MAX_SWEEP_VALUES = 10 ** 9
 
 @dataclass(frozen=True)
 class SweepValues:
-    """The values of [q deg = start, stop, step], made one at a time: given (in the
-    sweep's unit) and internal."""
+    """[q deg = start, stop, step]: its target, its values start + step*k (k < count)
+    given in `unit` (engine.algebraic.SweepPoints makes them, one at a time)."""
 
     target: object
     start: float
     step: float
     count: int
     unit: str | None
-
-    def given(self, k: int) -> float:
-        return self.start + self.step * k
-
-    def __iter__(self):
-        for k in range(self.count):
-            given = self.given(k)
-            yield units.to_internal(given, self.unit), given
 
 
 def sweep_values(model, command, inputs) -> SweepValues | None:

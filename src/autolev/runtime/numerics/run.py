@@ -9,13 +9,14 @@ from __future__ import annotations
 
 import warnings
 
-from ...engine.algebraic import AlgebraicInputs
+from ...engine.algebraic import AlgebraicInputs, SweepPoints
 from ...engine.code_kinds import CodeKind
 from ...engine.dynamics import print_schedule
 from ...engine.execute import Execution, execute
 from ...engine.options import RunOptions
 from ...engine.results import Result
 from .. import symbols as S
+from .. import units
 from .advice import failure_message, zero_hint
 from .command import program_file_name, program_language, program_method
 from .inputs import display_name
@@ -85,7 +86,9 @@ def algebraic_inputs(system, inputs, kind, unknowns, sweep, zero_params) -> Alge
         *((inputs.internal("ABSERR"), inputs.internal("RELERR"))
           if kind is CodeKind.NONLINEAR else (0.0, 0.0)),
         [display_name(u) for u in unknowns], swept,
-        None if sweep is None else list(sweep), zero_hint(zero_params))
+        None if sweep is None else SweepPoints(sweep.start, sweep.step, sweep.count,
+                                               units.is_degrees(sweep.unit)),
+        zero_hint(zero_params))
 
 
 def _rows_expected(prepared, command) -> int:
