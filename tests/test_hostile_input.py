@@ -1,6 +1,8 @@
 """Input that once ended in a Python traceback is a diagnostic at its line now (issue 15,
 item 5, the cases fixed so far)."""
 import math
+import os
+from pathlib import Path
 
 import pytest
 
@@ -268,3 +270,30 @@ def test_substituting_into_powers_that_stay_small(tmp_path):
     m = autolev.load(path)
     assert m["A"] == 1 and m["C"] == sm.Integer(10) ** 900
     assert float(sm.log(m["B"], 2)) == pytest.approx(4294967297)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs: POSIX")
+@pytest.mark.parametrize("kind", ["fifo", "folder", "device"])
+@pytest.mark.parametrize("command", ["check", "run", "convert", "transcript", "verify"])
+def test_a_model_that_is_no_regular_file_is_refused_at_once(tmp_path, kind, command):
+    # `check` of a FIFO named .al waited for a writer forever
+    import subprocess
+    import sys
+    if kind == "fifo":
+        path = tmp_path / "pipe.al"
+        os.mkfifo(path)
+    elif kind == "folder":
+        path = tmp_path / "folder.al"
+        path.mkdir()
+    else:
+        path = Path("/dev/null")
+    args = [command, str(path)] + (["--out", str(tmp_path / "o")]
+                                   if command in ("run", "transcript") else [])
+    done = subprocess.run([sys.executable, "-m", "autolev", *args], capture_output=True,
+                          text=True, timeout=60, cwd=tmp_path)
+    said = done.stdout + done.stderr
+    assert done.returncode == 1, said
+    assert "internal error" not in said
+    # check searches a folder for models: a folder named .al holds none
+    assert ("no .al files found" if (command, kind) == ("check", "folder")
+            else "not a regular file") in said

@@ -72,6 +72,28 @@ def test_user_functions_nest_through_their_arguments(tmp_path):
                              ir.BinOp("+", ir.Name("A"), ir.Number("1")))
 
 
+def test_a_function_called_within_its_own_argument_is_no_recursion(tmp_path):
+    # FN1(FN1(X, Y), Y): the inner call is the caller's text, put where #1# stands; it
+    # was taken for FN1 calling itself (E031, and a false "unknown function" after it)
+    write(tmp_path / "fn1.r", "#1#*#2#\n")
+    write(tmp_path / "fn0.r", "FN1(FN1(#1#, #2#), #2#)\n")
+    f = write(tmp_path / "m.al", "CONSTANTS Q, K\nX = FN0(Q, K)\nY = FN1(FN1(Q, K), K)\n")
+    first, second = autolev.parse(f).statements[-2:]
+    expected = ir.BinOp("*", ir.BinOp("*", ir.Name("Q"), ir.Name("K")), ir.Name("K"))
+    assert first.value == expected and second.value == expected
+
+
+def test_a_function_fan_out_past_the_budget_is_one_error(tmp_path):
+    # each of seven files calls the next twelve times: past the size limit, its one
+    # error and no other (thousands of false "calls itself" and "unknown function")
+    names = [f"f{c}" for c in "abcdefgh"]
+    for name, callee in zip(names, names[1:]):
+        write(tmp_path / f"{name}.r", "+".join([f"{callee}(#1#)"] * 12) + "\n")
+    write(tmp_path / "fh.r", "#1#*2\n")
+    f = write(tmp_path / "m.al", "CONSTANTS X\nY = fa(X)\nZ = 2*X\n")
+    assert [d.code for d in errors(f)] == ["E033"]
+
+
 def test_a_run_file_that_is_a_link_to_itself_is_no_file(tmp_path):
     # found by bench/fuzz.py --mode files: a RuntimeError ("Symlink loop") from resolve()
     (tmp_path / "loop.al").symlink_to("loop.al")

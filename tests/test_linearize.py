@@ -572,3 +572,12 @@ def test_a_run_after_a_linearization_compiles_what_the_linearization_did_not(tmp
         alone = autolev.load(path).simulate(TFINAL=1)
     assert after.system is system and system.compiled
     assert np.array_equal(after.states, alone.states)
+
+
+def test_a_sweep_of_a_name_the_model_lacks_is_a_usage_error(tmp_path, capsys):
+    from autolev.cli import main
+    from helpers import EXAMPLES
+    status = main(["linearize", str(EXAMPLES / "double_pendulum.al"), "--sweep",
+                   "NOPE=0:1:3"])
+    assert status == 2
+    assert "--sweep NOPE: the model has no quantity of that name" in capsys.readouterr().err

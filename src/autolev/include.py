@@ -77,6 +77,11 @@ class FunctionBody:
     origin: Origin
 
 
+# a user function's call whose body was refused, after its diagnostic (a file leading
+# outside, an argument missing, recursion, the size limit): nothing more to say of it
+REFUSED = "refused"
+
+
 @dataclass
 class Piece:
     """One statement of the expanded model."""
@@ -84,7 +89,8 @@ class Piece:
     statement: P.StatementContext
     origin: Origin
     expansion: Expansion | None = None
-    functions: dict[ParserRuleContext, FunctionBody] = field(default_factory=dict)
+    # each user function's call: its body, or REFUSED
+    functions: dict[ParserRuleContext, FunctionBody | str] = field(default_factory=dict)
 
 
 class Includes:
@@ -304,10 +310,13 @@ class Includes:
         return [origin.mapped.slice(a.start.start, a.stop.stop + 1).strip() for a in arg_ctxs]
 
     def _expansion_source(self, origin: Origin, ctx, what: str, name: str, found: Path,
-                          args: list[str]) -> tuple[Path, SourceFile, str] | None:
+                          args: list[str], own_text: bool = True
+                          ) -> tuple[Path, SourceFile, str] | None:
         """(path, source, display name) of the macro or function file `found` for a call
         with `args`, read and registered; None, after its diagnostic, when the file
-        leads outside the model's folder, wants more arguments, or calls itself."""
+        leads outside the model's folder, wants more arguments, or calls itself.  A call
+        that is not the file's `own_text` (it came in as an argument: F(F(X))) is the
+        caller's, not a call of the function in whose body it now stands."""
         found = found.resolve()
         if not is_within(found, self.model_root):
             self._error(origin, ctx, "E025", f"{what} {name}: refused, its file leads outside "
@@ -321,7 +330,7 @@ class Includes:
                         f"but this call gives {len(args)} argument"
                         f"{'s' if len(args) != 1 else ''}")
             return None
-        if found in self._stack or len(self._stack) >= MAX_INCLUDE_DEPTH:
+        if (own_text and found in self._stack) or len(self._stack) >= MAX_INCLUDE_DEPTH:
             self._error(origin, ctx, "E031", f"{what} {name} calls itself (directly or through "
                         f"other {what}s)")
             return None
@@ -342,7 +351,7 @@ class Includes:
         return self._function_names[folder]
 
     def _find_functions(self, tree, origin: Origin,
-                        found: dict[ParserRuleContext, FunctionBody]) -> None:
+                        found: dict[ParserRuleContext, FunctionBody | str]) -> None:
         """Parse the body of every user function called in `tree` (and in those bodies)."""
         todo = [tree]
         while todo:
@@ -351,6 +360,9 @@ class Includes:
                 continue
             if isinstance(node, P.CallAtomContext):
                 body = self._function_body(node, origin)
+                if body is REFUSED:
+                    found[node] = REFUSED
+                    continue
                 if body is not None:   # its arguments are read again inside the body
                     found[node] = body
                     self._stack.append(body.origin.path)
@@ -359,7 +371,9 @@ class Includes:
                     continue
             todo.extend(node.children)
 
-    def _function_body(self, call: P.CallAtomContext, origin: Origin) -> FunctionBody | None:
+    def _function_body(self, call: P.CallAtomContext, origin: Origin) -> FunctionBody | str | None:
+        """The call's body; None when it is no user function's; REFUSED after the
+        diagnostic of one that cannot be expanded."""
         name = call.start.text
         key = (name.lower(), origin.path.parent if origin.path is not None else None)
         if key not in self._function_files:
@@ -369,14 +383,14 @@ class Includes:
             return None
         args = self._args(call, origin)
         got = self._expansion_source(origin, call, "function", name, self._function_files[key],
-                                     args)
+                                     args, not origin.mapped.substituted(call.start.start))
         if got is None:
-            return None
+            return REFUSED
         found, src, display = got
         where = origin.mapped.locate(call.start.start)
         mapped = expand_macro(src, args, where, f"function {name}({', '.join(args)})")
         if not self._spend(origin, len(mapped.text), [call.start.start]):
-            return None
+            return REFUSED
         parsed = self._parse(mapped)
         bodies = [st.getChild(0) for line in parsed.lines
                   if line.tree.statementLine() is not None
@@ -385,5 +399,5 @@ class Includes:
             if not parsed.diagnostics:
                 self._error(origin, call, "E032", f"function {name} ({display}) must hold one "
                             f"expression, not {len(bodies)} statements")
-            return None
+            return REFUSED
         return FunctionBody(bodies[0].expr(), Origin(mapped, found, display))

@@ -23,7 +23,7 @@ from . import ir
 from ._antlr.AutolevParser import AutolevParser as P
 from .dispatch import Dispatch
 from .errors import Diagnostic, Location, Span
-from .include import Includes, Origin, Piece
+from .include import REFUSED, Includes, Origin, Piece
 from .source import SourceFile
 from .syntax import KNOWN_SETTINGS
 
@@ -79,6 +79,7 @@ class Builder:
         self.statements: list[ir.Statement] = []
         self.diagnostics: list[Diagnostic] = []
         self._error_count = 0      # errors of this builder's own, counted as they come
+        self._refused_call = False  # a user function of the statement was refused
         self._ctx: Origin | None = None
         self._piece: Piece | None = None
 
@@ -139,6 +140,7 @@ class Builder:
         node = ctx.getChild(0)
         handler = self._STATEMENTS.lookup(type(node))
         errors_before = self._error_count
+        self._refused_call = False
         try:
             result = handler(self, node)
         except RecursionError:
@@ -146,7 +148,8 @@ class Builder:
             self._error(ctx, "E004", "this statement is nested too deeply to read")
             return
         # a statement found wrong while built is not handed on: check translates the rest
-        if result is not None and self._error_count == errors_before:
+        if result is not None and self._error_count == errors_before \
+                and not self._refused_call:
             self.statements.append(result)
 
     def _common(self, ctx) -> dict:
@@ -491,6 +494,9 @@ class Builder:
     def _call_atom(self, ctx: P.CallAtomContext) -> ir.Expr:
         kids = ctx.children
         body = self._piece.functions.get(ctx) if self._piece.functions else None
+        if body is REFUSED:           # its reading said why: the statement is not built
+            self._refused_call = True
+            return ir.Number("0", span=self._span(ctx))
         if body is not None:          # a user function NAME.R: its expression, built here
             outer, self._ctx = self._ctx, body.origin
             try:

@@ -105,6 +105,11 @@ class MappedText:
         a = self._anchor(offset)
         return a.file.line_text(a.line)
 
+    def substituted(self, offset: int) -> bool:
+        """Whether the text at `offset` was put there for a macro's or function's
+        placeholder (an argument of the call), not written in the file itself."""
+        return not self._anchor(offset).advance
+
     def source_file(self, offset: int) -> SourceFile:
         return self._anchor(offset).file
 
@@ -137,7 +142,8 @@ def _join(lines: list[_PhysicalLine], via: Location | None, via_what: str) -> Ma
     def copy(line: _PhysicalLine, start: int, stop: int) -> None:
         nonlocal pos
         # the anchor in force at `start`, shifted there, then the later ones
-        active = max((a for a in line.anchors if a.offset <= start), key=lambda a: a.offset)
+        # (the last of those at one offset: a placeholder at a line's start is the text)
+        active = [a for a in line.anchors if a.offset <= start][-1]
         shift = (start - active.offset) if active.advance else 0
         anchors.append(_Anchor(pos, active.file, active.line, active.col + shift, active.advance))
         for a in line.anchors:

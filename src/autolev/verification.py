@@ -28,8 +28,9 @@ import sympy as sm
 from sympy import Symbol
 
 from . import ir
-from .errors import (AutolevInternalError, AutolevRuntimeError, AutolevSyntaxError,
-                     AutolevTranslationError, Location, Span, printable)
+from .engine import reading
+from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError,
+                     AutolevSyntaxError, AutolevTranslationError, Location, Span, printable)
 from .include import MAX_EXPANDED_BYTES, MAX_EXPANDED_STATEMENTS
 from .irbuild import Builder
 from .loader import load_translation
@@ -336,7 +337,11 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
     """Replay the responses recorded in an `.all` session (or the `% ->` comments of a
     `.al` file) against our translation; a Report of each response's outcome."""
     p = Path(path)
-    session = read_session(decode(p.read_bytes()), str(p))
+    try:
+        raw = reading.read_bytes(p)
+    except OSError as exc:
+        raise AutolevFileError(p, f"cannot read: {exc.strerror or exc}") from None
+    session = read_session(decode(raw), str(p))
     report = Report(str(p))
     if not session.responses and session.saved:
         # no input of the session printed a response (declarations only): nothing to

@@ -170,9 +170,16 @@ def _linearize_sweep(path: Path, model, sweep, point: dict, options: dict,
     from ..runtime.tools import safe_stem
     from ..runtime.tools import write_output
     from ..runtime.studies import eigenvalues_and_modes, follow_modes
+    from ..engine.errors import AutolevModelError
     name, values = sweep
-    table = model.sweep([dict(point, **{name: v}) for v in values], what="linearize",
-                        as_frame=False, collect=eigenvalues_and_modes, **options)
+    if not model.names_a_quantity(name):
+        raise UsageError(f"--sweep {name}: the model has no quantity of that name")
+    try:
+        table = model.sweep([dict(point, **{name: v}) for v in values], what="linearize",
+                            as_frame=False, collect=eigenvalues_and_modes, **options)
+    except AutolevModelError as exc:
+        print(f"{path}: error: {exc}", file=sys.stderr)
+        return 1
     if "failure" in table.names:
         first = next(k for k, why in enumerate(table["failure"]) if why)
         print(f"{path}: error: at {name} = {values[first]:.6g}: {table['failure'][first]}",

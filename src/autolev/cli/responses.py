@@ -66,7 +66,7 @@ def cmd_verify(ns: argparse.Namespace) -> int:
     from autolev.verification import verify
 
     path = Path(ns.file)
-    if not path.is_file():
+    if not path.exists():
         raise UsageError(f"{path}: no such file")
     report = verify(path, points=ns.points)
     if ns.json:

@@ -18,8 +18,10 @@ from __future__ import annotations
 
 import contextlib
 import contextvars
+import errno
 import hashlib
 import os
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
@@ -128,10 +130,11 @@ def recording(reads: Reads | None = None):
 
 
 def read_bytes(path) -> bytes:
-    """The file's bytes, noted in the current record (OSError as Path.read_bytes)."""
+    """The file's bytes, noted in the current record (OSError as Path.read_bytes); a
+    FIFO, a device or a folder is refused (OSError) without waiting on it."""
     reads = _current.get()
     try:
-        raw = Path(path).read_bytes()
+        raw = _regular_file_bytes(path)
     except OSError:
         if reads is not None:
             reads.note_file(path, None)
@@ -139,6 +142,22 @@ def read_bytes(path) -> bytes:
     if reads is not None:
         reads.note_file(path, raw)
     return raw
+
+
+def _regular_file_bytes(path) -> bytes:
+    # opened without blocking: a FIFO's open waits for a writer, its read for data
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
+    try:
+        mode = os.fstat(fd).st_mode
+        if not stat.S_ISREG(mode):
+            what = ("a folder" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode)
+                    else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+                    else "a socket" if stat.S_ISSOCK(mode) else "not a file")
+            raise OSError(errno.EINVAL, f"not a regular file ({what})", str(path))
+        with os.fdopen(fd, "rb", closefd=False) as f:
+            return f.read()
+    finally:
+        os.close(fd)
 
 
 def lookup(name: str):
