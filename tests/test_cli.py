@@ -216,3 +216,23 @@ def test_a_converted_module_without_code_says_there_is_nothing_to_run(tmp_path):
     shown = subprocess.run([sys.executable, "-m", "autolev", "run", str(model)],
                            capture_output=True, text=True)
     assert shown.returncode == 0 and "-> (3) X = 2*K" in shown.stdout
+
+
+def test_convert_makes_the_folder_its_module_goes_into(tmp_path, capsys):
+    # `-o /missing/x.py` said "leads outside /missing"
+    from autolev.cli import main
+    target = tmp_path / "new" / "sub" / "dp.py"
+    assert main(["convert", str(EXAMPLES / "double_pendulum.al"), "-o", str(target)]) == 0
+    assert target.is_file() and "leads outside" not in capsys.readouterr().err
+
+
+def test_a_relative_cache_setting_is_said_once(tmp_path):
+    import os
+    import subprocess
+    import sys
+    env = dict(os.environ, AUTOLEV_CACHE="relative/cache", AUTOLEV_FOREGROUND="1")
+    done = subprocess.run([sys.executable, "-m", "autolev", "run",
+                           EXAMPLES / "double_pendulum.al", "--out", tmp_path, "-q"],
+                          capture_output=True, text=True, env=env)
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.count("AUTOLEV_CACHE=relative/cache is not an absolute path") == 1

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import autolev
+from helpers import EXAMPLES
 
 STIFF = """% X follows COS(T) with a time constant of 1/K; Y decays slowly
 VARIABLES X', Y'
@@ -97,3 +98,25 @@ def test_a_verbose_run_reports_the_failure_with_its_summary(tmp_path, capsys):
     printed = capsys.readouterr().out
     assert printed.startswith("CODE ODE blowup.c: ")
     assert r.failure in printed and "wrote" in printed
+
+
+def test_a_value_whose_powers_overflow_is_named_where_the_run_fails(tmp_path, capsys):
+    # L = 1e308: the mass matrix M L^2 is inf; the run said only "singular"
+    from autolev.cli import main
+    status = main(["run", str(EXAMPLES / "simple_pendulum.al"), "--out", str(tmp_path),
+                   "-q", "--set", "L=1e308"])
+    err = capsys.readouterr().err
+    assert status == 1
+    assert "L = 1e+308: a product or power of so large a value is beyond double " \
+           "precision" in err
+
+
+def test_a_degree_input_that_overflows_in_radians_says_so(tmp_path, capsys):
+    # THETA = 1e308 deg is finite; pi*THETA is not: it was "must be finite: THETA = 1e+308"
+    from autolev.cli import main
+    status = main(["run", str(EXAMPLES / "simple_pendulum.al"), "--out", str(tmp_path),
+                   "-q", "--set", "THETA=1e308"])
+    err = capsys.readouterr().err
+    assert status == 1
+    assert "inputs beyond double precision once converted to radians: THETA = 1e+308 deg" \
+           in err

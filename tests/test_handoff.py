@@ -207,3 +207,26 @@ def test_kinematical_equations_not_linear_in_the_speeds_are_refused_by_name(tmp_
     with pytest.raises(AutolevModelError, match="the kinematical equation of Q' is not "
                                                 "linear in the speeds"):
         model.to_mechanics()
+
+
+@pytest.mark.skipif(importlib.util.find_spec("pydy") is None,
+                    reason="PyDy is an optional extra (pip install pydy)")
+@pytest.mark.parametrize("given, message", [
+    (dict(TFINAL=-5), "must have the sign of TFINAL - TINITIAL"),
+    (dict(INTEGSTP=0), "INTEGSTP must be a nonzero number"),
+    (dict(INTEGSTP=1e-300), "too small to advance the time"),
+])
+def test_to_pydy_refuses_the_integration_a_run_refuses(given, message):
+    # it took TFINAL = -5 and raised a raw ZeroDivisionError or MemoryError for these
+    model = autolev.load(EXAMPLES / "double_pendulum.al")
+    with pytest.raises(AutolevModelError, match=message):
+        model.to_pydy(**given)
+
+
+@pytest.mark.skipif(importlib.util.find_spec("pydy") is None,
+                    reason="PyDy is an optional extra (pip install pydy)")
+def test_to_pydy_times_are_the_runs_printed_times():
+    model = autolev.load(EXAMPLES / "double_pendulum.al")
+    system = model.to_pydy(TFINAL=1, PRINTINT=3)
+    result = model.simulate(TFINAL=1, PRINTINT=3)
+    assert np.array_equal(np.asarray(system.times), result.t)

@@ -345,3 +345,16 @@ def test_a_column_of_vectors_is_shown_an_element_a_line_and_verifies(tmp_path):
     (tmp_path / "m.all").write_text("\n".join(lines) + "\n")
     report = autolev.verify(tmp_path / "m.all")
     assert report.error is None and report.count("match") == 4
+
+
+def test_a_comments_terminal_escapes_are_printed_as_text(tmp_path, capsys):
+    # the transcript on a terminal: a comment's escape sequences written out, not run
+    from autolev.cli import main
+    model = tmp_path / "esc.al"
+    model.write_text("% \x1b[31mRED\x1b[0m comment\nCONSTANTS A\nX = 2*A\n")
+    assert main(["transcript", str(model)]) == 0
+    out = capsys.readouterr().out
+    assert "\x1b" not in out and "\\x1b[31mRED" in out
+    # the file keeps the model's text as Autolev's .all did
+    assert main(["transcript", str(model), "--out", str(tmp_path / "t")]) == 0
+    assert "\x1b[31mRED" in (tmp_path / "t" / "esc.all").read_text()

@@ -391,3 +391,14 @@ def test_responses_share_one_record_of_the_definitions_known_between_definitions
     defs.define(b, 2 * a)
     assert defs.user_definitions() == {a: x + 1, b: 2 * a}
     assert first == {a: x + 1}                    # the earlier record as it was
+
+
+def test_a_response_of_two_statements_is_not_comparable(tmp_path):
+    # `X = 1 + A; X = 7` was replayed as X = 7
+    from autolev.verification import verify
+    path = tmp_path / "m.al"
+    path.write_text("CONSTANTS A\nX = 1 + A\n% -> X = 1 + A; X = 7\n")
+    report = verify(path)
+    (outcome,) = report.outcomes
+    assert outcome.status == "not comparable"
+    assert "holds 2 statements" in outcome.detail

@@ -158,6 +158,11 @@ def printable(text: str) -> str:
                    for ch in text)
 
 
+def printable_lines(text: str) -> str:
+    """`text` for a terminal: each line printable, the line ends kept."""
+    return "\n".join(printable(line) for line in text.split("\n"))
+
+
 class AutolevError(Exception):
     """Base class of every error this package raises for a user's input."""
 

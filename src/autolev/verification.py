@@ -175,6 +175,15 @@ def _parse_chunk(session: Session, chunk: list[int], texts: dict[int, str],
         refused.setdefault(k, f"Autolev's response does not read: "
                               f"{printable(session.path)}:{session.responses[k].line}: "
                               f"{d.message} [{d.code}]")
+    per_line: dict[int, int] = {}
+    for st in builder.statements:
+        per_line[st.span.start.line] = per_line.get(st.span.start.line, 0) + 1
+    for line, count in per_line.items():
+        if count > 1:               # Autolev printed one assignment a response
+            k = chunk[line - 1]
+            refused.setdefault(k, f"Autolev's response holds {count} statements "
+                                  f"({printable(session.path)}:{session.responses[k].line}); "
+                                  "a response is one NAME = value")
     for st in builder.statements:
         k = chunk[st.span.start.line - 1]
         if k in refused:

@@ -15,7 +15,10 @@ def cmd_cache(ns: argparse.Namespace) -> int:
     from .. import modelcache
 
     if ns.action == "clear":
-        background.wait_for_every_finishing()
+        from ..runtime.steps import SlowStep
+        with SlowStep(sys.stderr, "autolev cache clear: waiting for a compile an earlier "
+                                  "run finishes in the background", after=0.5):
+            background.wait_for_every_finishing()
         try:
             count, size = modelcache.clear()
         except OSError as exc:

@@ -37,6 +37,7 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     if out.is_dir():
         raise UsageError(f"{out} is a folder; -o names the module's file")
     try:
+        out.parent.mkdir(parents=True, exist_ok=True)      # as run --out makes its folder
         write_output(out.parent, out.name, result.code, ns.overwrite)  # whole, or nothing
     except OSError as exc:
         print(f"autolev convert: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)
@@ -73,6 +74,7 @@ def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
     try:
+        out.parent.mkdir(parents=True, exist_ok=True)
         write_output(out.parent, out.name, text, ns.overwrite)
     except OSError as exc:
         print(f"autolev convert: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)

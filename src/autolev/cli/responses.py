@@ -7,7 +7,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..errors import AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError, printable
+from ..errors import (AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError,
+                      printable, printable_lines)
 from .common import UsageError, overwrite_option, print_diagnostics
 
 
@@ -23,7 +24,7 @@ def print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False) 
     if text is None:
         return 1
     if out_dir is None:
-        sys.stdout.write(text)
+        sys.stdout.write(printable_lines(text))     # a model's comments hold escapes too
         return 0
     from ..engine.outputs import write_output
     target = out_dir / f"{path.stem}.all"

@@ -8,6 +8,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..errors import printable_lines
 from . import background
 from .common import (UsageError, has_matplotlib, load_model, name_values, positive_int,
                      refuse_unknown_names, run_options, specified_values, statement_label)
@@ -32,7 +33,7 @@ def cmd_run(ns: argparse.Namespace) -> int:
         plan = kept(request, reads, (RunPlan, KeptOutcome))
         if isinstance(plan, KeptOutcome):
             sys.stderr.write(plan.messages)
-            sys.stdout.write(plan.transcript)
+            sys.stdout.write(printable_lines(plan.transcript))
             return plan.status
         if plan is not None:
             return _run_from_plan(plan, path, ns)
@@ -137,7 +138,7 @@ def _responses_instead(path: Path, translation, keeping: Keeping | None) -> int:
     if text is not None:
         print(f"{path}: no CODE command: the responses Autolev displayed follow "
               "(autolev transcript FILE --out DIR writes them as NAME.all)", file=sys.stderr)
-        sys.stdout.write(text)
+        sys.stdout.write(printable_lines(text))
     status = 0 if text is not None else 1
     if keeping is not None:
         _keep_outcome(keeping, text or "", status)

@@ -89,12 +89,19 @@ _FALLBACK_CACHE: list = []
 _USABLE: set = set()
 
 
+# the settings said to be relative, once each per process
+_SAID_RELATIVE: set = set()
+
+
 def _absolute(variable: str) -> str | None:
     """An environment variable's folder, when it is an absolute path (else None, with a
-    warning when it was set: a relative one would follow the current folder)."""
+    warning, once, when it was set: a relative one would follow the current folder)."""
     value = os.environ.get(variable, "")
     if value and not os.path.isabs(value):
-        warnings.warn(f"{variable}={value} is not an absolute path: ignored", stacklevel=4)
+        if (variable, value) not in _SAID_RELATIVE:
+            _SAID_RELATIVE.add((variable, value))
+            warnings.warn(f"{variable}={value} is not an absolute path: ignored",
+                          stacklevel=4)
         return None
     return value or None
 

@@ -60,6 +60,8 @@ def inside(folder: Path, relative: str | os.PathLike) -> Path:
     """`folder/relative`, its missing folders made, refused (OutsideFolder) when it or a
     folder on its way leads outside `folder`."""
     folder = Path(folder)
+    if not folder.is_dir():
+        raise FileNotFoundError(errno.ENOENT, f"no folder {folder}", str(folder))
     root = folder.resolve()
     target = folder / relative
     parent = target.parent

@@ -293,7 +293,8 @@ def to_pydy(model, infile=None, overrides=None):
     CODE DYNAMICS takes (INPUT, then the .in file `infile`, then `overrides` in the
     quantities' units: AutolevModelError naming those without a value), the dependent
     speeds' where the velocity constraints hold; specified quantities 0; times from
-    TINITIAL to TFINAL every INTEGSTP."""
+    TINITIAL to TFINAL as a run prints them (every PRINTINT-th step of INTEGSTP), the
+    integration parameters refused as a run refuses them."""
     try:
         from pydy.system import System
     except ImportError:
@@ -305,7 +306,7 @@ def to_pydy(model, infile=None, overrides=None):
                       overrides=overrides)
     h = handoff(model, set(eqs.states))
     run = eqs.integration
-    steps = max(1, int(round((run["TFINAL"] - run["TINITIAL"]) / run["INTEGSTP"])))
+    times = _printed_times(run, len(eqs.states))
     constants = {sm.Symbol(c.name): v for c, v in eqs.constants.items()}
     initial = {h.states[x]: v for x, v in eqs.initial.items() if x in h.states}
     at_start = constants | initial | {s: 0.0 for s in h.specified} | {
@@ -313,5 +314,17 @@ def to_pydy(model, infile=None, overrides=None):
     initial |= h.dependent_speeds_at(at_start)
     return System(h.motion(), constants=constants,
                   specifieds={s: 0.0 for s in h.specified} or None,
-                  initial_conditions=initial,
-                  times=np.linspace(run["TINITIAL"], run["TFINAL"], steps + 1))
+                  initial_conditions=initial, times=times)
+
+
+def _printed_times(run: dict, states: int) -> np.ndarray:
+    """The times a run of these integration parameters prints."""
+    from ..engine.files import check_memory
+    from ..engine.integrate import Schedule
+    schedule = Schedule(run["TINITIAL"], run["TFINAL"], run["INTEGSTP"], run["PRINTINT"])
+    try:
+        schedule.check()
+    except ValueError as exc:
+        raise AutolevModelError(str(exc)) from None
+    check_memory(schedule.printed_rows(), states + 1)
+    return np.concatenate([[run["TINITIAL"]]] + list(schedule.print_blocks()))

@@ -107,7 +107,11 @@ def sweep(model, points, what: str = "linearize", *, executor=None,
 
     `executor`: None runs on the local cores (`workers` processes, default all; 1:
     here, in order); else any object with `submit(fn, *args)` (a concurrent.futures
-    Executor, a Dask Client).  `progress`: a stream for progress lines (default: stderr
+    Executor, a Dask Client).  The local workers are forked from this process when it
+    runs no other thread; beside other threads (a sweep from a thread, Jupyter's, a
+    GUI's) they start afresh and import the script that started the sweep, which then
+    needs Python's `if __name__ == "__main__":` guard around what it runs, as every
+    program of separate processes does.  `progress`: a stream for progress lines (default: stderr
     when the study takes more than a few seconds; False: none).  `as_frame`: a pandas
     DataFrame (default when pandas is installed) or a SweepTable (False)."""
     if what not in STUDIES:

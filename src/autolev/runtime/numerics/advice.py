@@ -127,13 +127,17 @@ def failure_message(exc: IntegrationFailure, system, inputs, result, zero_params
         problems = inertia_problems(system, inputs)
         if problems:
             message += "; " + "; ".join(problems)
+    huge = [f"{display_name(p)} = {v:g}" for p, v in zip(system.params,
+                                                           system.constant_values)
+            if abs(v) > 1e100]
     mass = system.last_mass_matrix() if "singular" in str(exc) else None
     if mass is not None and not np.all(np.isfinite(mass)):
-        huge = [f"{display_name(p)} = {v:g}" for p, v in zip(system.params,
-                                                               system.constant_values)
-                if abs(v) > 1e100]
         message += ("; its entries are not finite numbers (inf or NaN): a value beyond "
                     "double precision" + (f" (from {', '.join(huge[:4])}?)" if huge else ""))
+    elif huge and result.stats["rows"] <= 1:
+        # (a tree's recursion has no mass matrix to show: the inputs say it)
+        message += (f"; {', '.join(huge[:4])}: a product or power of so large a value is "
+                    "beyond double precision (inf or NaN), which this failure may come from")
     if exc.cuts:
         f, sched, abserr, relerr = integration
         message += "; " + halving_verdict(f, exc, sched, abserr, relerr)

@@ -147,12 +147,17 @@ class Inputs:
         if negative:
             raise AutolevModelError("error tolerances cannot be negative: " + "; ".join(
                 f"{k} = {v.given:g} (from {v.source})" for k, v in negative))
-        bad = [(k, v) for k, v in self.values.items()
-               if not math.isfinite(v.given) or not math.isfinite(v.internal)]
+        bad = [(k, v) for k, v in self.values.items() if not math.isfinite(v.given)]
         if bad:
             raise AutolevModelError(
                 "inputs must be finite numbers: " + "; ".join(
                     f"{display_name(k)} = {v.given} (from {v.source})" for k, v in bad))
+        overflowing = [(k, v) for k, v in self.values.items() if not math.isfinite(v.internal)]
+        if overflowing:
+            raise AutolevModelError("inputs beyond double precision once converted to "
+                                    "radians: " + "; ".join(
+                                        f"{display_name(k)} = {v.given:g} {self.unit_of(k)} "
+                                        f"(from {v.source})" for k, v in overflowing))
 
     def missing(self, keys) -> list:
         return [k for k in keys if k not in self.values]
