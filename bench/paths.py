@@ -359,6 +359,8 @@ class ModelPaths:
     def script_rows(self, reference: Path, rows: Path) -> Cell:
         """The script's CSV (the first integrating command's columns, file after file)
         written as that command's files, then compared as a program's."""
+        if not stems(reference):
+            return Cell("-", "no OUTPUT: neither writes a row")
         table = np.loadtxt(rows, delimiter=",", skiprows=1, ndmin=2) \
             if len(rows.read_text().splitlines()) > 1 else np.zeros((0, 0))
         if not table.size:
