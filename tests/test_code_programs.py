@@ -550,3 +550,36 @@ def test_the_same_names_in_another_case_compile(tmp_path, capsys):
     done = subprocess.run([P.compiler(), "-Wall", "-o", "case", "case.c", "-lm"],
                           cwd=tmp_path / "out", capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
+
+
+PENDULUM_RATES = """
+NEWTONIAN N
+FRAMES A
+VARIABLES theta', omega'
+CONSTANTS L, G
+SIMPROT(N, A, 3, theta)
+theta' = omega
+omega' = -G/L*SIN(theta)
+ENCODE theta', omega'
+CODE ALGEBRAIC() penalg.c
+"""
+
+
+@needs_cc
+def test_an_encoded_derivative_is_named_as_the_program_names_it(tmp_path):
+    # ENCODE theta', omega': the program declared `double theta'` (10 compiler errors);
+    # the arrays are thetap and omegap, which the program computes by those names
+    model = model_from(tmp_path, PENDULUM_RATES, "penalg.al")
+    assert [e.name for e in plan_algebraic(model, model.code_commands[0]).encoded] == \
+        ["thetap", "omegap"]
+    l, g, theta, omega = 0.8, 9.81, 0.3, 0.2
+    got = run_program(tmp_path, model, {"L": l, "G": g, "theta": theta, "omega": omega})
+    assert got["thetap"] == pytest.approx(omega, rel=1e-15)
+    assert got["omegap"] == pytest.approx(-g / l * math.sin(theta), rel=1e-15)
+
+
+def test_an_encoded_expression_without_a_name_is_refused_before_writing(tmp_path):
+    model = model_from(tmp_path, PENDULUM_RATES.replace("ENCODE theta', omega'",
+                                                        "ENCODE theta + omega"), "p.al")
+    with pytest.raises(AutolevModelError, match="give the expression a name first"):
+        plan_algebraic(model, model.code_commands[0])

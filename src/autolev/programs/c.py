@@ -164,15 +164,16 @@ class CProgram:
                          "double *x);")
         lines += READING_PROTOTYPES
         # the inputs in read order; the others sorted by name ignoring case
-        for group in (p.inputs, by_name(self.computed), by_name(p.specified),
-                      by_name(p.named)):
+        groups = (p.inputs, by_name(self.computed), by_name(p.specified), by_name(p.named))
+        for group in groups:
             if group:
                 lines += wrap("double   ", ",".join(c_name(s) for s in group))
         n = len(self.unknowns)
         solving = [f"COEF[{n}][{n}]", f"RHS[{n}]", f"SOL[{n}]"] if n else []
         if p.solving is not None and p.solving.method == "newton":
             solving += ["abserr", "relerr"]
-        return lines + encoded_declarations(p.encoded, self.z_size, solving) + [""]
+        declared = {c_name(s) for group in groups for s in group}
+        return lines + encoded_declarations(p.encoded, self.z_size, solving, declared) + [""]
 
     def _main(self) -> list[str]:
         p = self.plan
@@ -313,15 +314,18 @@ def output_lines(files: list, encoded: list, texts: list) -> list[str]:
         for index in element_indices(e.shape):
             text = texts.pop(0)
             target = e.name + "".join(f"[{i}]" for i in index)
+            if text == target:
+                continue            # a quantity the program computes by that name already
             lines += [f"  {target} = 0;"] if text == "0" else wrap(f"  {target} = ", text)
     return lines
 
 
-def encoded_declarations(encoded: list, z_size: int, extra=()) -> list[str]:
+def encoded_declarations(encoded: list, z_size: int, extra=(), declared=()) -> list[str]:
     """The line of z, the ENCODE arrays and Encode (BioMAC's cleaners read z's size
-    from its first 32 characters)."""
+    from its first 32 characters); `declared`: names the program declares already (a
+    named quantity ENCODE'd as it is)."""
     arrays = [f"z[{z_size + 1}]"] + [e.name + "".join(f"[{d}]" for d in e.shape)
-                                     for e in encoded]
+                                     for e in encoded if e.shape or e.name not in declared]
     arrays += [f"Encode[{max(1, len(encoded))}]", *extra]
     return wrap("double   Pi,DEGtoRAD,RADtoDEG,", ",".join(arrays))
 

@@ -57,12 +57,14 @@ class CDynamicsProgram:
         lines += READING_PROTOTYPES
         derivatives = p.derivatives
         algebraic = derivatives + [s for s in by_name(p.named) if s not in derivatives]
-        for group in (p.constants, by_name(p.specified), p.states, algebraic):
+        groups = (p.constants, by_name(p.specified), p.states, algebraic)
+        for group in groups:
             if group:
                 lines += wrap("double   ", ",".join(c_name(s) for s in group))
         solving = ([f"COEF[{self.m}][{self.m}]", f"RHS[{self.m}]", f"SOL[{self.m}]"]
                    if self.m > 1 else [])
-        return lines + encoded_declarations(p.encoded, self.z_size, solving) + [""]
+        declared = {c_name(s) for group in groups for s in group}
+        return lines + encoded_declarations(p.encoded, self.z_size, solving, declared) + [""]
 
     def _main(self, statements: list) -> list[str]:
         p = self.plan

@@ -162,7 +162,9 @@ def _showing(plan, texts: list, blank_line: bool = False) -> list[str]:
         for index in element_indices(e.shape):
             target = e.name + ("(" + ",".join(str(i + 1) for i in index) + ")"
                                if index else "")
-            lines.append(f"{target} = {texts.pop(0)};")
+            text = texts.pop(0)
+            if text != target:      # (a quantity computed by that name already)
+                lines.append(f"{target} = {text};")
     if plan.encoded:
         lines += [""] + [f"Encode({k}) = 0.0;" for k in range(1, len(plan.encoded) + 1)]
     return lines
@@ -297,7 +299,10 @@ class MProgram:
         groups = [[c_name(s) for s in p.inputs], [c_name(s) for s in p.specified],
                   sorted((c_name(s) for s in p.named + self.computed),
                          key=lambda n: (n.lower(), n))]
-        misc = ["DEGtoRAD", "RADtoDEG", "z"] + [e.name for e in p.encoded] + ["Encode"]
+        named = {n for g in groups for n in g}
+        misc = ["DEGtoRAD", "RADtoDEG", "z"] + [e.name for e in p.encoded
+                                                 if e.shape or e.name not in named] \
+            + ["Encode"]
         if p.solving is not None and p.solving.method == "newton":
             misc = ["ABSERR", "RELERR"] + misc
         groups.append(misc)

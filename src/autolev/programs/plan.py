@@ -327,8 +327,23 @@ def _shown(system, outputs: list) -> tuple[list, list]:
     for name, shape in system.encode_shapes:
         size = shape[0] * shape[1] if len(shape) == 2 else 1
         elements = [outputs.pop(0) for _ in range(size)]
-        encoded.append(Encoded(name, (shape[0],) if shape[1:] == (1,) else shape, elements))
+        encoded.append(Encoded(encode_name(name), (shape[0],) if shape[1:] == (1,) else shape,
+                               elements))
     return files, encoded
+
+
+_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def encode_name(text: str) -> str:
+    """The program's name of an ENCODE'd quantity: its own, a derivative's primes as p
+    (THETA' is THETAp, as every program names it); refused for what has no name."""
+    base = text.rstrip("'")
+    if _IDENTIFIER.fullmatch(base) is None:
+        raise AutolevModelError(f"ENCODE {text}: a program names each ENCODE array by the "
+                                "quantity's name: give the expression a name first "
+                                "(NAME = ..., then ENCODE NAME)")
+    return base + "p" * (len(text) - len(base))
 
 
 def statements_of(prog: codegen.Program) -> tuple[list, list]:
