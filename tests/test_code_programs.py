@@ -180,12 +180,22 @@ def test_programs_are_written_as_the_users_other_files(tmp_path):
     assert modes == {"arm_raw.c": 0o644, "arm_raw.in": 0o644}
 
 
-def test_a_file_name_leaving_the_output_folder_writes_nothing(tmp_path, capsys):
+def test_a_file_name_leaving_the_output_folder_is_written_inside_it(tmp_path, capsys):
+    # `CODE ... ../../escaped.c` was refused by code and accepted by run: both write in
+    # --out now (run its files, code its program, by the name's own part) and say so
     path = tmp_path / "arm.al"
     path.write_text(ARM.replace("arm_raw.c", "../../escaped.c"))
+    assert main(["code", str(path), "--out", str(tmp_path / "out"), "-q"]) == 0
+    assert "its folders lead outside the output folder" in capsys.readouterr().err
+    assert sorted(p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("escaped*")) \
+        == ["out/escaped.c", "out/escaped.in"]
+
+
+def test_a_code_name_that_is_no_files_is_refused(tmp_path, capsys):
+    path = tmp_path / "arm.al"
+    path.write_text(ARM.replace("arm_raw.c", "../.c"))
     assert main(["code", str(path), "--out", str(tmp_path / "out"), "-q"]) == 1
     assert "unusable file name in CODE" in capsys.readouterr().err
-    assert not list(tmp_path.rglob("escaped*"))
 
 
 def test_kinds_not_written_yet_are_reported_and_the_others_written(tmp_path, capsys):

@@ -111,10 +111,11 @@ def test_code_refuses_a_linked_sub_folder_and_writes_nothing(tmp_path, victim):
 
 
 @pytest.mark.parametrize("args, message", [
-    (["-o", "{tmp}/missing/x.py"], "cannot write"),
+    (["-o", "{tmp}/a_file/x.py"], "cannot write"),
     (["-o", "{tmp}"], "is a folder"),
 ])
 def test_convert_into_a_place_it_cannot_write_is_a_clear_error(tmp_path, args, message):
+    (tmp_path / "a_file").write_text("a file where -o names a folder\n")
     r = cli("convert", PENDULUM, *[a.format(tmp=tmp_path) for a in args])
     assert r.returncode in (1, 2) and message in r.stderr
     assert "internal error" not in r.stderr

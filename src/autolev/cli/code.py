@@ -55,8 +55,9 @@ def add_code(sub) -> None:
         "into C (.c), Matlab (.m) and Fortran 77 (.f, .for: Autolev 3.2's layout, with a "
         ".dir file, the file names in lower case).  Any other kind or language (a Fortran "
         "ALGEBRAIC program, CODE DYNAMICS with arguments) is reported and not written.  "
-        "Folders in a CODE file name are kept under --out; a name that would leave it is "
-        "refused.")
+        "Folders in a CODE file name are kept under --out; a name whose folders would leave "
+        "it (../c/bike.c) is written by its own name in --out, where autolev run writes "
+        "its files, and said.")
     code.add_argument("file", metavar="FILE", help=".al model")
     code.add_argument("--out", metavar="DIR", default=".",
                       help="folder for the programs (default: the current folder)")

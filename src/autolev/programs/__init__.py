@@ -45,17 +45,23 @@ class Written:
     notes: list = field(default_factory=list)   # what the user is told of the program
 
 
-def relative_path(filename: str) -> Path:
-    """The CODE command's file name as a path inside the output folder (its folders
-    kept, as Autolev wrote them relative to where it ran); a name that would leave the
-    folder is refused."""
-    parts = PureWindowsPath(filename.replace("/", "\\")).parts
-    if not parts or PureWindowsPath(filename.replace("/", "\\")).anchor:
-        raise AutolevModelError(f"unusable file name in CODE: {filename!r}")
-    for part in parts:
-        if part.strip() in ("", ".", "..") or any(c in part for c in '<>:"|?*\0'):
-            raise AutolevModelError(f"unusable file name in CODE: {filename!r}")
-    return Path(*parts)
+def relative_path(filename: str) -> tuple[Path, str | None]:
+    """The CODE command's file name as a path inside the output folder: its folders
+    kept (as Autolev wrote them relative to where it ran) while they stay inside; a
+    name whose folders would leave it (`../c/bike.c`, an absolute path) is written by
+    its own name in the output folder, as autolev run writes that program's files
+    there, and said (the note).  A name that is no file's is refused."""
+    path = PureWindowsPath(filename.replace("/", "\\"))
+    parts = [p for p in path.parts if p not in (path.anchor, ".")]
+    if not parts or any(c in p for p in parts for c in '<>:"|?*\0') or \
+            parts[-1].strip() in ("", "..") or not parts[-1].rsplit(".", 1)[0].strip():
+        raise AutolevModelError(f"unusable file name in CODE: {filename!r} (it names no "
+                                "file; give the program a name such as bike.c)")
+    if path.anchor or ".." in parts or any(not p.strip() for p in parts):
+        return Path(parts[-1]), (f"CODE {filename}: its folders lead outside the output "
+                                 f"folder; the program is written there as {parts[-1]}, "
+                                 "beside the files autolev run writes for it")
+    return Path(*parts), None
 
 
 def program_texts(model, command, sources=None, quirks: bool = True) -> dict:
@@ -77,10 +83,12 @@ def _program(model, command, sources, quirks: bool) -> tuple[dict, list[str]]:
             "code writes CODE ALGEBRAIC and NONLINEAR programs in .c and .m, CODE DYNAMICS "
             "and ODE in .c, .m and Fortran .f/.for)")
     plan_of, write = found
+    _, leaving = relative_path(command.filename)  # refused before the work, if it must be
     plan = plan_of(model, command, quirks)
     plan.sources = dict(sources or {})
     notes = [hidden_note(command.filename, plan.hidden)] if plan.hidden else []
-    return {relative_path(name): text for name, text in write(plan).items()}, notes
+    notes += [leaving] if leaving else []
+    return {relative_path(name)[0]: text for name, text in write(plan).items()}, notes
 
 
 def write_programs(model, out_dir, commands=None, overwrite: bool = False,
