@@ -74,6 +74,7 @@ def program_texts(model, command, sources=None, quirks: bool = True) -> dict:
 
 def _program(model, command, sources, quirks: bool) -> tuple[dict, list[str]]:
     """(program_texts, the notes the user is told of the program)."""
+    _, leaving = relative_path(command.filename)  # refused before the work, if it must be
     extension = os.path.splitext(command.filename)[1].lower()
     found = WRITERS.get((command.kind, extension))
     if found is None:
@@ -83,7 +84,6 @@ def _program(model, command, sources, quirks: bool) -> tuple[dict, list[str]]:
             "code writes CODE ALGEBRAIC and NONLINEAR programs in .c and .m, CODE DYNAMICS "
             "and ODE in .c, .m and Fortran .f/.for)")
     plan_of, write = found
-    _, leaving = relative_path(command.filename)  # refused before the work, if it must be
     plan = plan_of(model, command, quirks)
     plan.sources = dict(sources or {})
     notes = [hidden_note(command.filename, plan.hidden)] if plan.hidden else []
