@@ -18,6 +18,11 @@ Integrators:
 * scipy's ``RK45``, ``DOP853``, ``Radau``, ``BDF``, ``LSODA``, ``RK23`` with
   ``max_step=INTEGSTP``, ``rtol=RELERR``, ``atol=ABSERR``; rows come from each
   method's dense output.
+* RK45 started afresh over every INTEGSTP (Autolev's Matlab programs: ode45 from T to
+  T + INTEGSTP in their loop) is scipy's RK45 step for step, computed here in the
+  compiled loop's order of operations (`RK45Interval`: the same sums, in the same
+  order), so that a run's rows are the same whether Python or C took each step (a
+  cold run starts in Python and goes on in C once it is compiled).
 """
 from __future__ import annotations
 
@@ -28,7 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import cloop
+from . import cloop, rk45_tableau
 from .options import METHODS, SCIPY_METHODS
 
 
@@ -261,6 +266,104 @@ class KuttaMerson:
                 self._iasti = 0
 
 
+class RK45Interval:
+    """scipy's RK45 from (t, y) to t_bound, started afresh, as loop.c's
+    al_rk45_interval computes it: the same stages, sums and error norm, component by
+    component in the same order (numpy's elementwise operations are C's; its sums and
+    dot products are not, so none is used), hence the same numbers to the last bit."""
+
+    A, B, C, E = (rk45_tableau.A, rk45_tableau.B, rk45_tableau.C, rk45_tableau.E)
+
+    def __init__(self, f, rtol: float, atol: float, max_step: float):
+        self.f, self.rtol, self.atol, self.max_step = f, rtol, atol, max_step
+        self.evaluations = self.steps = self.rejected = 0
+
+    def _f(self, t: float, y: np.ndarray) -> np.ndarray:
+        self.evaluations += 1
+        return np.asarray(self.f(t, y), dtype=float)
+
+    @staticmethod
+    def _rms(v: np.ndarray) -> float:
+        return math.sqrt(float(np.add.accumulate(v * v)[-1]) / len(v))
+
+    @staticmethod
+    def _factor(err: float, rejected: bool) -> float:
+        """loop.c's al_step_factor (a NaN error: 0.2, as C's comparisons give it)."""
+        factor = 10.0 if err == 0 else 0.9 * math.pow(err, -1.0 / 5)
+        if err < 1:
+            factor = 10.0 if factor > 10.0 else factor
+            return 1.0 if rejected and factor > 1 else factor
+        return factor if factor > 0.2 else 0.2
+
+    def _first_step(self, t: float, y, f0, t_bound: float) -> float:
+        length, sign = abs(t_bound - t), 1.0 if t_bound >= t else -1.0
+        if length == 0.0:
+            return 0.0
+        scale = self.atol + np.abs(y) * self.rtol
+        d0, d1 = self._rms(y / scale), self._rms(f0 / scale)
+        h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
+        h0 = length if h0 > length else h0
+        f1 = self._f(t + h0 * sign, y + h0 * sign * f0)
+        d2 = self._rms((f1 - f0) / scale) / h0
+        if d1 <= 1e-15 and d2 <= 1e-15:
+            h1 = 1e-6 if 1e-6 > h0 * 1e-3 else h0 * 1e-3
+        else:
+            h1 = math.pow(0.01 / (d1 if d1 > d2 else d2), 1.0 / 5)
+        h = 100 * h0
+        h = h1 if h1 < h else h
+        h = length if length < h else h
+        return self.max_step if self.max_step < h else h
+
+    def __call__(self, t: float, y: np.ndarray, t_bound: float) -> np.ndarray:
+        """The state at t_bound; IntegrationFailure as the compiled loop's."""
+        A, B, C, E = self.A, self.B, self.C, self.E
+        n = len(y)
+        sign = 1.0 if t_bound >= t else -1.0
+        K = [self._f(t, y)] + [None] * 6
+        h_abs = self._first_step(t, y, K[0], t_bound)
+        while t != t_bound:
+            min_step = 10 * abs(math.nextafter(t, sign * math.inf) - t)
+            h_abs = self.max_step if h_abs > self.max_step else \
+                min_step if h_abs < min_step else h_abs
+            rejected = False
+            while True:
+                if h_abs < min_step:
+                    raise IntegrationFailure(
+                        f"RK45 failed at T = {t:.6g}: Required step size is less than "
+                        "spacing between numbers.", t, y)
+                t_new = t + h_abs * sign
+                if sign * (t_new - t_bound) > 0:
+                    t_new = t_bound
+                h = t_new - t
+                h_abs = abs(h)
+                for s in range(1, 6):
+                    acc = np.zeros(n)
+                    for j in range(s):
+                        acc = acc + K[j] * A[s * 6 + j]
+                    K[s] = self._f(t + C[s] * h, y + acc * h)
+                acc = np.zeros(n)
+                for s in range(6):
+                    acc = acc + K[s] * B[s]
+                y_new = y + h * acc
+                K[6] = self._f(t + h, y_new)
+                acc = np.zeros(n)
+                for s in range(7):
+                    acc = acc + K[s] * E[s]
+                a, b = np.abs(y), np.abs(y_new)
+                q = acc * h / (self.atol + np.where(a > b, a, b) * self.rtol)
+                err = math.sqrt(float(np.add.accumulate(q * q)[-1]) / n)
+                h_abs *= self._factor(err, rejected)
+                if err < 1:
+                    break
+                rejected = True
+                self.rejected += 1
+            self.steps += 1
+            if not np.all(np.isfinite(y_new)):
+                raise IntegrationFailure(f"the state is not finite at T = {t + h:.6g}", t, y)
+            y, K[0], t = y_new, K[6], t_new
+        return y
+
+
 class Progress:
     """A progress line on stderr for runs longer than a second."""
 
@@ -400,8 +503,7 @@ def _integrate_until_compiled(f, y, t, schedule, method, abserr, relerr, on_row,
             if km is not None:
                 y = _km_step(km, y, t, schedule.integstp, stats)
             else:
-                y = _scipy_interval(f, y, t, t_next, SCIPY_METHODS[method], schedule,
-                                    abserr, relerr, stats)
+                y = _rk45_interval(f, y, t, t_next, schedule, abserr, relerr, stats)
             t = t_next
             if shown:
                 on_row(t, y)
@@ -418,15 +520,29 @@ def _scipy_method(name: str):
 
 def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
                      stats) -> dict:
-    """A scipy solver started afresh from (T, y) to T + INTEGSTP, step after step."""
+    """A scipy solver started afresh from (T, y) to T + INTEGSTP, step after step
+    (RK45 as the compiled loop computes it)."""
     for t_next, printed in schedule.steps():
-        y = _scipy_interval(f, y, t, t_next, name, schedule, abserr, relerr, stats)
+        y = _rk45_interval(f, y, t, t_next, schedule, abserr, relerr, stats) \
+            if name == "RK45" else \
+            _scipy_interval(f, y, t, t_next, name, schedule, abserr, relerr, stats)
         t = t_next                         # Autolev's accumulated T
         if printed:
             on_row(t, y)
         if progress is not None:
             progress.update(t)
     return stats
+
+
+def _rk45_interval(f, y, t, t_next, schedule, abserr, relerr, stats) -> np.ndarray:
+    """The state at t_next from RK45 started afresh at (t, y), as the compiled loop."""
+    step = RK45Interval(f, relerr, abserr, abs(schedule.integstp))
+    try:
+        return step(t, np.array(y, dtype=float), t_next)
+    finally:
+        stats["evaluations"] += step.evaluations
+        stats["steps"] += step.steps
+        stats["rejected"] = stats.get("rejected", 0) + step.rejected
 
 
 def _scipy_interval(f, y, t, t_next, name, schedule, abserr, relerr, stats) -> np.ndarray:
