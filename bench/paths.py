@@ -574,8 +574,8 @@ def rates(path: Path, options: list, count: int, module: Path | None,
             found[name] = {"mark": "slow", "detail": f"over {RATE_PATH_LIMIT:g} s"}
         except _NotApplicable as exc:
             found[name] = {"mark": "-", "detail": str(exc)}
-        except (autolev.AutolevError, ArithmeticError, ValueError, np.linalg.LinAlgError) \
-                as exc:
+        except (autolev.AutolevError, ArithmeticError, ValueError, TypeError,
+                NotImplementedError, np.linalg.LinAlgError) as exc:
             found[name] = {"mark": "fail", "detail": f"{type(exc).__name__}: "
                            + str(exc).splitlines()[0][:150]}
 
@@ -683,8 +683,12 @@ def symbolic_rates(model, command, system, points, params, extra) -> dict:
     by_name = {str(p): v for p, v in params.items()}
     consts = sorted(ss.constant_symbols(), key=str)
     from sympy.core.function import AppliedUndef
-    specified = {f: 0 for f in ss.comb_implicit_rhs.atoms(AppliedUndef)
-                 | ss.comb_implicit_mat.atoms(AppliedUndef) if f not in plain}
+    both = (ss.comb_implicit_rhs, ss.comb_implicit_mat)
+    undefined = {f for e in both for f in e.atoms(AppliedUndef) if f not in plain}
+    # their derivatives (PX'' of a base's prescribed motion) 0, and themselves the value
+    # the run gives them: an input's (a VARIABLE given by INPUT), else 0
+    specified = {d: 0 for e in both for d in e.atoms(sm.Derivative)
+                 if d.expr in undefined} | {f: by_name.get(str(f.func), 0) for f in undefined}
     args = [t] + list(plain.values()) + consts
     n = len(ss.states) - len(model.dependent_speeds)      # the differential rows
     mass = sm.lambdify(args, ss.comb_implicit_mat[:n, :n].xreplace(specified)
