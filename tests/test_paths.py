@@ -97,3 +97,13 @@ def test_the_rates_of_a_path_are_those_of_its_model(tmp_path):
     assert found["run"]["states"] == other["run"]["states"]
     assert not np.allclose(found["run"]["rates"], other["run"]["rates"])
     assert paths.compare_rates(found["run"], other["run"]).mark == "DIFF"
+
+
+def test_rates_of_an_ill_conditioned_mass_matrix_are_compared_to_its_rounding():
+    # two solves of M u' = f in another order part by about eps cond(M), no more
+    reference = {"states": ["U"], "rates": [[1.0]], "condition": 4.5e10}
+    near = {"states": ["U"], "rates": [[1.0 + 1.2e-8]]}
+    far = {"states": ["U"], "rates": [[1.0 + 1e-3]]}
+    assert paths.compare_rates(reference, near).mark == "~"
+    assert paths.compare_rates(dict(reference, condition=1.0), near).mark == "DIFF"
+    assert paths.compare_rates(reference, far).mark == "DIFF"
