@@ -9,6 +9,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import autolev
@@ -162,11 +163,19 @@ def test_a_kinematic_chain_program_gives_the_values_derived_by_hand(tmp_path):
     assert [got[f"TIP[{i}]"] for i in range(4)] == pytest.approx(want, rel=1e-13)
 
 
-def test_a_name_the_program_itself_uses_is_refused(tmp_path):
-    # the program's own loop counter: Autolev printed the name and changed its meaning
+@needs_cc
+def test_a_name_the_program_itself_uses_is_renamed(tmp_path):
+    # the program's own loop counter: Autolev printed the name and changed its meaning;
+    # the model's iloop is written iloop_, said, and the program computes as with L1
     model = model_from(tmp_path, ARM.replace("L1", "iloop"))
-    with pytest.raises(AutolevModelError, match="iloop cannot be a name in the C"):
-        program_texts(model, model.code_commands[0])
+    (written,) = write_programs(model, tmp_path / "out")
+    assert written.notes == ["arm_raw.c: iloop is written iloop_ in the C program, where "
+                             "iloop names something of the program's or C's own"]
+    assert "iloop_" in (tmp_path / "out" / "arm_raw.c").read_text()
+    l1, l2, q1, q2 = 0.7, 0.4, 0.3, -1.1
+    got = run_program(tmp_path, model, {"iloop": l1, "L2": l2, "Q1": q1, "Q2": q2})
+    assert got["TIP[0]"] == pytest.approx(l1 * math.cos(q1) + l2 * math.cos(q1 + q2),
+                                          rel=1e-14)
 
 
 def test_programs_are_written_as_the_users_other_files(tmp_path):
@@ -539,15 +548,23 @@ def test_each_named_quantity_says_which_statement_of_the_model_defines_it(tmp_pa
     assert c_comment("X = 1 */ Y \u00e9") == "/* X = 1 * / Y ? */"
 
 
+@needs_cc
 @pytest.mark.parametrize("name", ["gamma", "index", "j0", "y1", "hypot", "y0", "j1", "erf",
                                   "nan", "stdin", "M_PI", "unix"])
-def test_a_name_the_c_library_declares_is_refused(tmp_path, capsys, name):
+def test_a_name_the_c_library_declares_is_renamed_and_compiles(tmp_path, capsys, name):
     # glibc's headers declare these in gcc's default mode: the program would not compile
+    # with them (it was refused); written NAME_, it compiles and computes Y = K*NAME
     path = tmp_path / "lib.al"
-    path.write_text(f"CONSTANTS {name}, K\nY = K*{name}\nINPUT K=2\nOUTPUT Y\n"
+    path.write_text(f"CONSTANTS {name}, K\nY = K*{name}\nINPUT K=2, {name}=3\nOUTPUT Y\n"
                     "CODE ALGEBRAIC() lib.c\n")
-    assert main(["code", str(path), "--out", str(tmp_path / "out")]) == 1
-    assert f"{name} cannot be a name in the C program" in capsys.readouterr().err
+    assert main(["code", str(path), "--out", str(tmp_path / "out")]) == 0
+    assert f"{name} is written {name}_ in the C program" in capsys.readouterr().err
+    out = tmp_path / "out"
+    done = subprocess.run([P.compiler(), "-Wall", "-o", "lib", "lib.c", "-lm"], cwd=out,
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    subprocess.run(["./lib"], cwd=out, capture_output=True, check=True)
+    assert float((out / "lib.1").read_text().split()[-1]) == pytest.approx(6.0)
 
 
 @needs_cc
@@ -593,3 +610,35 @@ def test_an_encoded_expression_without_a_name_is_refused_before_writing(tmp_path
                                                         "ENCODE theta + omega"), "p.al")
     with pytest.raises(AutolevModelError, match="give the expression a name first"):
         plan_algebraic(model, model.code_commands[0])
+
+
+MATLAB_NAMES = """
+VARIABLES q'
+MOTIONVARIABLES' u'
+CONSTANTS gamma, L, g, VAR, Index
+q' = u
+u' = -g/L*SIN(q) - gamma*u + Index*VAR
+INPUT gamma = 0.3, L = 1, g = 9.81, VAR = 0.5, Index = 0.1, q = 0.4, u = 0
+INPUT TFINAL = 1, INTEGSTP = 0.1
+OUTPUT q, u, gamma
+CODE ODE() swing.m
+"""
+
+
+def test_matlab_names_are_renamed_only_where_they_break_the_program(tmp_path):
+    # gamma (a function the program may call), u (its S-function's argument) and VAR
+    # (its state) are renamed, with a note; Index and L are Matlab's to keep (Matlab
+    # tells case apart): they were refused in any case
+    model = model_from(tmp_path, MATLAB_NAMES, "swing.al")
+    (written,) = write_programs(model, tmp_path / "out")
+    assert sorted(n.split(":")[1].split()[0] for n in written.notes) == \
+        ["VAR", "gamma", "u"]
+    text = (tmp_path / "out" / "swing.m").read_text()
+    assert "global   g gamma_ Index L VAR_;" in text and "global   q u_;" in text
+    if P.octave() is None:
+        pytest.skip("GNU Octave runs the Matlab program; it is not installed")
+    ran = P.run_octave("swing", tmp_path / "out")
+    assert ran.returncode == 0, ran.stderr
+    ours = np.loadtxt(tmp_path / "out" / "swing.1", comments="%")
+    rows = autolev.load(tmp_path / "swing.al").simulate().outputs[0]
+    assert np.allclose(ours[:, 1], rows["q"], rtol=1e-6, atol=1e-9)

@@ -136,13 +136,14 @@ def test_a_matlab_program_gives_the_values_derived_by_hand(text, stem, check, tm
     check(*program_rows(tmp_path, text, f"{stem}.m"))
 
 
-def test_names_the_solving_program_uses_are_refused(tmp_path, capsys):
+def test_names_the_solving_program_uses_are_renamed(tmp_path, capsys):
     model = tmp_path / "model.al"
     model.write_text(LINEAR.format(name="lin.c").replace("CONSTANTS A, B", "CONSTANTS A, B, "
                                                          "COEF").replace("- 3", "- 3*COEF"))
-    assert main(["code", str(model), "--out", str(tmp_path / "out")]) == 1
-    assert "COEF cannot be a name in the C program" in capsys.readouterr().err
-    assert not (tmp_path / "out").exists()
+    assert main(["code", str(model), "--out", str(tmp_path / "out")]) == 0
+    assert "COEF is written COEF_ in the C program" in capsys.readouterr().err
+    text = (tmp_path / "out" / "lin.c").read_text()
+    assert "COEF_" in text and "double   A,B,COEF_" in text
 
 
 TUTORIALS = CORPUS / "NikhilPappu+autolev-parser" / "test_files"

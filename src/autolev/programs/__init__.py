@@ -88,7 +88,8 @@ def _program(model, command, sources, quirks: bool) -> tuple[dict, list[str]]:
     plan.sources = dict(sources or {})
     notes = [hidden_note(command.filename, plan.hidden)] if plan.hidden else []
     notes += [leaving] if leaving else []
-    return {relative_path(name)[0]: text for name, text in write(plan).items()}, notes
+    texts = {relative_path(name)[0]: text for name, text in write(plan).items()}
+    return texts, notes + plan.notes
 
 
 def write_programs(model, out_dir, commands=None, overwrite: bool = False,

@@ -11,18 +11,20 @@ from .. import __version__
 from ..runtime import units
 from ..engine.files import header as output_header
 from ..runtime.printer import CPrinter
-from .plan import (Plan, c_name, check_names, element_indices, input_file_name, printed,
+from .plan import (Plan, c_name, rename_clashes, element_indices, input_file_name, printed,
                    program_name, shown_values, with_sources)
 
-# C's keywords, the standard names the program calls, and the program's own names
-RESERVED = frozenset("""
+# C's keywords, as spelt (C tells case apart)
+KEYWORDS = frozenset("""
 auto break case char const continue default do double else enum extern float for goto
 if inline int long register restrict return short signed sizeof static struct switch
-typedef union unsigned void volatile while main eqns1 output readf pgets writef z encode
-pi degtorad radtodeg fptr iloop file null errno sin cos tan asin acos atan atan2 sinh
-cosh tanh exp log log10 pow sqrt fabs floor ceil fmod trunc round printf fprintf sprintf
-puts fopen fclose fgets strtod strlen strcpy exit isspace va_list va_start va_arg va_end
-_nan t
+typedef union unsigned void volatile while
+""".split())
+# the program's own names, as spelt, where the model's quantities are read and written
+# (main, eqns1, output): its functions, globals and their locals
+OWN_NAMES = frozenset("""
+main eqns1 output readf pgets writef z Encode Pi DEGtoRAD RADtoDEG _NAN Fptr fileName
+iloop
 """.split())
 
 
@@ -78,21 +80,20 @@ def c_string(text: str, fmt: bool = False) -> str:
 
 
 # names a program that solves equations or sweeps an input uses besides
-SOLVING_RESERVED = frozenset("coef rhs sol solve abserr relerr iter ipoint converged "
-                             "fmax".split())
+SOLVING_NAMES = frozenset("COEF RHS SOL solve abserr relerr iter ipoint converged".split())
 
 
 class CProgram:
     """The text of one plan's C program."""
 
     def __init__(self, plan: Plan):
-        check_names(plan, RESERVED | (SOLVING_RESERVED if plan.solves_or_sweeps()
-                                      else frozenset()), "C", LIBRARY_NAMES)
+        rename_clashes(plan, KEYWORDS | OWN_NAMES | LIBRARY_NAMES
+                       | (SOLVING_NAMES if plan.solves_or_sweeps() else frozenset()), "C")
         self.plan = plan
         self.name = program_name(plan.filename)
         self.stem = self.name.rpartition(".")[0] or self.name
         self.unknowns, self.computed = plan.unknowns, plan.computed
-        self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named
+        self.where = {s: plan.name_of(s) for s in plan.inputs + plan.specified + plan.named
                       + self.computed}
         self.nfiles = len(plan.files)
 
@@ -109,7 +110,7 @@ class CProgram:
         """(eqns1's statements, output()'s) as lines, intermediates in z slots."""
         p = self.plan
         part = printed(p.statements, shown_values(p), self.where,
-                       CPrinter, lambda k: f"z[{k}]")
+                       CPrinter, lambda k: f"z[{k}]", name_of=p.name_of)
         self.z_size = part.top
         computed = _lines(part, p.sources)
         if p.solving is not None:
@@ -120,7 +121,7 @@ class CProgram:
         """eqns1's solution of the equations for the unknowns, before the outputs."""
         solving, n = self.plan.solving, len(self.unknowns)
         part = printed(solving.statements, solving.matrix + solving.right, self.where,
-                       CPrinter, lambda k: f"z[{k}]")
+                       CPrinter, lambda k: f"z[{k}]", name_of=self.plan.name_of)
         self.z_size = max(self.z_size, part.top)
         matrix, right = part.values[:n * n], part.values[n * n:]
         body = _lines(part, self.plan.sources)
@@ -128,7 +129,7 @@ class CProgram:
             for j in range(n):
                 body += wrap(f"  COEF[{i}][{j}] = ", matrix[i * n + j])
             body += wrap(f"  RHS[{i}] = ", f"-({right[i]})")
-        names = [c_name(u) for u in self.unknowns]
+        names = [self.plan.name_of(u) for u in self.unknowns]
         if solving.method == "linear":
             return (["/* Solve the linear equations for " + ", ".join(names) + " */"]
                     + body + [f"  if( solve({n}, COEF[0], RHS, SOL) )",
@@ -167,12 +168,12 @@ class CProgram:
         groups = (p.inputs, by_name(self.computed), by_name(p.specified), by_name(p.named))
         for group in groups:
             if group:
-                lines += wrap("double   ", ",".join(c_name(s) for s in group))
+                lines += wrap("double   ", ",".join(p.name_of(s) for s in group))
         n = len(self.unknowns)
         solving = [f"COEF[{n}][{n}]", f"RHS[{n}]", f"SOL[{n}]"] if n else []
         if p.solving is not None and p.solving.method == "newton":
             solving += ["abserr", "relerr"]
-        declared = {c_name(s) for group in groups for s in group}
+        declared = {p.name_of(s) for group in groups for s in group}
         return lines + encoded_declarations(p.encoded, self.z_size, solving, declared) + [""]
 
     def _main(self) -> list[str]:
@@ -189,18 +190,19 @@ class CProgram:
                             ("the guess of each unknown", guesses)):
             if group:
                 lines.append(f"/* Read {what} from input file */")
-                lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in group),
+                lines += wrap("readf(Fptr[0],", ",".join("&" + p.name_of(s) for s in group),
                               ",NULL);")
         if guesses:
             lines += ["/* Read the tolerances of Newton's method from input file */",
                       "readf(Fptr[0],&abserr,&relerr,NULL);"]
-        lines += [""] + headings_and_units(self.stem, p.files, p.degree_inputs)
+        lines += [""] + headings_and_units(self.stem, p.files,
+                                           [p.name_of(s) for s in p.degree_inputs])
         lines += ["", "/* Evaluate output quantities */"]
         sweep = p.sweep
         if sweep is None:
             lines += ["eqns1();", "output( Fptr );", ""]
         else:
-            name = c_name(sweep.target) if sweep.target is not None else None
+            name = p.name_of(sweep.target) if sweep.target is not None else None
             lines += [f"for(ipoint = 0; ipoint < {sweep.count}; ipoint++)", "  {"]
             if name is not None:
                 lines.append(f"  {name} = {sweep.start!r} + {sweep.step!r}*ipoint;")
@@ -216,7 +218,7 @@ class CProgram:
             lines.append("int      iter, converged;")
         lines += ["", "/* Evaluate constants */"]
         # quantities to be specified: 0, as in Autolev's programs
-        lines += [f"  {c_name(s)} = 0;" for s in self.plan.specified]
+        lines += [f"  {self.plan.name_of(s)} = 0;" for s in self.plan.specified]
         return lines + computed + ["", "", "/* Evaluate output quantities */", "}"]
 
     def _output(self, written: list) -> list[str]:
@@ -274,7 +276,7 @@ def opening(infile: str, stem: str, nfiles: int) -> list[str]:
 
 def headings_and_units(stem: str, files: list, degree_inputs: list) -> list[str]:
     """The headings of the output files (file 1's also on the screen), then the unit
-    conversions of the inputs."""
+    conversions of the inputs (`degree_inputs`: their names in the program)."""
     lines = ["/* Write heading(s) to output file(s) */"]
     for k, cols in enumerate(files, 1):
         head = output_header(f"{stem}.{k}", [c[1] for c in cols], [c[2] for c in cols])
@@ -282,7 +284,7 @@ def headings_and_units(stem: str, files: list, degree_inputs: list) -> list[str]
             lines.append(f'fprintf({target}, "{c_string(head, fmt=True)}");')
     lines += ["", "/* Unit conversions */", "  Pi       = 3.141592653589793;",
               "  DEGtoRAD = Pi/180.0;", "  RADtoDEG = 180.0/Pi;"]
-    return lines + [f"  {c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in degree_inputs]
+    return lines + [f"  {n} = {n}*DEGtoRAD;" for n in degree_inputs]
 
 
 def farewell(infile: str, stem: str, nfiles: int) -> list[str]:

@@ -7,34 +7,36 @@ from __future__ import annotations
 
 from ..runtime import symbols as S
 from ..runtime.printer import CPrinter
-from .c import (LIBRARY_NAMES, READING_AND_WRITING, READING_PROTOTYPES, RESERVED, SOLVE,
-                _lines, banner, by_name, encoded_declarations, farewell, headings_and_units,
-                opening, output_lines, wrap)
-from .plan import (DynamicsPlan, c_name, check_names, dynamics_names, input_file_name,
-                   print_dynamics, program_name)
+from .c import (KEYWORDS, LIBRARY_NAMES, OWN_NAMES, READING_AND_WRITING, READING_PROTOTYPES,
+                SOLVE, _lines, banner, by_name, encoded_declarations, farewell,
+                headings_and_units, opening, output_lines, wrap)
+from .plan import (DynamicsPlan, dynamics_names, input_file_name, print_dynamics,
+                   program_name, rename_clashes)
 
-_DYNAMICS_RESERVED = RESERVED | frozenset(
-    "var varp boundary kutta solve coef rhs sol iprint printint tinitial tfinal "
-    "integstp abserr relerr _printint".split())
+# a DYNAMICS program's own names besides, as spelt: kutta's and solve's, eqns1's
+# arguments, main's integration parameters and counters, the macro NUMY
+_DYNAMICS_NAMES = frozenset("""
+kutta solve COEF RHS SOL VAR VARp boundary T TINITIAL TFINAL INTEGSTP iprint printint
+_printint abserr relerr NUMY
+""".split())
 
 
 class CDynamicsProgram:
     """The text of one DynamicsPlan's C program."""
 
     def __init__(self, plan: DynamicsPlan):
-        check_names(plan, _DYNAMICS_RESERVED, "C", LIBRARY_NAMES)
+        rename_clashes(plan, KEYWORDS | OWN_NAMES | LIBRARY_NAMES | _DYNAMICS_NAMES, "C")
         self.plan = plan
         self.name = program_name(plan.filename)
         self.stem = self.name.rpartition(".")[0] or self.name
         self.nfiles = len(plan.files)
         self.n, self.m = len(plan.states), len(plan.unknowns)
-        self.names = dynamics_names(plan)
+        self.names = dynamics_names(plan, plan.name_of)
         self.z_size = 0
 
     def text(self) -> str:
         p = self.plan
-        parts = print_dynamics(p, self.names, CPrinter,
-                               lambda k: f"z[{k}]")
+        parts = print_dynamics(p, self.names, CPrinter, lambda k: f"z[{k}]", p.name_of)
         self.z_size = parts.z_size
         kutta = [f"#define  NUMY      {self.n}        /* the states kutta integrates */"]
         lines = (self._top() + self._main(_lines(parts.constants, p.sources)) + ["", ""]
@@ -60,10 +62,10 @@ class CDynamicsProgram:
         groups = (p.constants, by_name(p.specified), p.states, algebraic)
         for group in groups:
             if group:
-                lines += wrap("double   ", ",".join(c_name(s) for s in group))
+                lines += wrap("double   ", ",".join(p.name_of(s) for s in group))
         solving = ([f"COEF[{self.m}][{self.m}]", f"RHS[{self.m}]", f"SOL[{self.m}]"]
                    if self.m > 1 else [])
-        declared = {c_name(s) for group in groups for s in group}
+        declared = {p.name_of(s) for group in groups for s in group}
         return lines + encoded_declarations(p.encoded, self.z_size, solving, declared) + [""]
 
     def _main(self, statements: list) -> list[str]:
@@ -78,22 +80,23 @@ class CDynamicsProgram:
         lines += opening(infile, self.stem, self.nfiles)
         lines.append("/* Read values of constants from input file */")
         if p.constants:
-            lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in p.constants),
+            lines += wrap("readf(Fptr[0],", ",".join("&" + p.name_of(s) for s in p.constants),
                           ",NULL);")
         else:
             lines.append("pgets(Fptr[0], NULL);")
         lines += ["", "/* Read the initial value of each variable from input file */"]
-        lines += wrap("readf(Fptr[0],", ",".join("&" + c_name(s) for s in p.states),
+        lines += wrap("readf(Fptr[0],", ",".join("&" + p.name_of(s) for s in p.states),
                       ",NULL);")
         lines += ["", "/* Read integration parameters from input file */",
                   "readf(Fptr[0],&TINITIAL,&TFINAL,&INTEGSTP,&_printint,&abserr,&relerr,"
                   "NULL);",
                   "printint = (int)_printint;", ""]
-        lines += headings_and_units(self.stem, p.files, p.degree_inputs)
+        lines += headings_and_units(self.stem, p.files,
+                                    [p.name_of(s) for s in p.degree_inputs])
         lines += ["", "/* Evaluate constants */"] + statements
         lines += ["", "/* Initialize time, print counter, variables array for integrator */",
                   "  T      = TINITIAL;", "  iprint = 0;"]
-        lines += [f"  VAR[{k}] = {c_name(x)};" for k, x in enumerate(p.states)]
+        lines += [f"  VAR[{k}] = {p.name_of(x)};" for k, x in enumerate(p.states)]
         lines += ["", "/* Initalize numerical integrator, with call to eqns1 at T=TINITIAL */",
                   f"kutta(eqns1, {self.n}, VAR, &T, INTEGSTP, abserr, relerr, 0);", "",
                   "/* Numerically integrate; print results */",
@@ -120,16 +123,16 @@ class CDynamicsProgram:
                  "void     eqns1        (double T, double VAR[], double VARp[], char "
                  "boundary)", "{", "(void)T; (void)boundary;", "",
                  "/* Update variables after integration step */"]
-        lines += [f"  {c_name(x)} = VAR[{k}];" for k, x in enumerate(p.states)]
+        lines += [f"  {p.name_of(x)} = VAR[{k}];" for k, x in enumerate(p.states)]
         if p.specified:
             lines += ["", "/* Quantities to be specified */"]
-            lines += [f"  {c_name(s)} = 0;" for s in p.specified]
+            lines += [f"  {p.name_of(s)} = 0;" for s in p.specified]
         lines += [""] + statements
         for target, text in parts.rates:
             lines += wrap(f"  {target} = ", text)
         mass, forcing = parts.mass, parts.forcing
         if self.m == 1:
-            lines += wrap(f"  {c_name(p.unknowns[0])} = ", f"({forcing[0]})/({mass[0]})")
+            lines += wrap(f"  {p.name_of(p.unknowns[0])} = ", f"({forcing[0]})/({mass[0]})")
         elif self.m > 1:
             for i in range(self.m):
                 for j in range(self.m):
@@ -138,9 +141,9 @@ class CDynamicsProgram:
             lines += [f"  if( solve({self.m}, COEF[0], RHS, SOL) )",
                       '    {printf("\\n The mass matrix is singular at T = %g\\n", T);'
                       "  exit(1);}"]
-            lines += [f"  {c_name(u)} = SOL[{i}];" for i, u in enumerate(p.unknowns)]
+            lines += [f"  {p.name_of(u)} = SOL[{i}];" for i, u in enumerate(p.unknowns)]
         lines += ["", "/* Update derivative array prior to integration step */"]
-        lines += [f"  VARp[{k}] = {c_name(S.derivative(x))};"
+        lines += [f"  VARp[{k}] = {p.name_of(S.derivative(x))};"
                   for k, x in enumerate(p.states)]
         return lines + ["}"]
 

@@ -18,21 +18,26 @@ from ..runtime.numerics import codegen
 from ..engine.files import header as output_header
 from ..engine.numbers import format_value
 from ..runtime.printer import ATOM, POW, CPrinter
-from .plan import (Plan, c_name, check_names, dynamics_names, element_indices,
-                   print_dynamics, printed, program_name, shown_values, with_sources)
+from .plan import (Plan, c_name, dynamics_names, element_indices, print_dynamics, printed,
+                   program_name, rename_clashes, shown_values, with_sources)
 
-RESERVED = frozenset("""
+# Matlab's keywords, the functions a program may call and Matlab's constants, as spelt
+# (Matlab tells case apart)
+LANGUAGE_NAMES = frozenset("""
 break case catch classdef continue else elseif end for function global if otherwise
-parfor persistent return spmd switch try while z encode pi degtorad radtodeg output
-fileidentifier readuserinput docalculations printuseroutput writeoutput
-closeoutputfilesandterminate openoutputfilesandwriteheadings sin cos tan asin acos atan
-atan2 sinh cosh tanh asinh acosh atanh exp log sqrt abs floor ceil fix round max min
-sign gamma erf zeros fopen fclose fprintf error disp ans nan inf eps i j
+parfor persistent return spmd switch try while sin cos tan asin acos atan atan2 sinh cosh
+tanh asinh acosh atanh exp log log10 sqrt abs floor ceil fix round max min sign gamma erf
+zeros fopen fclose fprintf error disp warning length all any nan NaN inf Inf eps pi i j
+ans
 """.split())
-
+# the program's own names, as spelt: its functions and the globals they share
+OWN_NAMES = frozenset("""
+z Encode Pi DEGtoRAD RADtoDEG Output FileIdentifier fileIdentifier
+numberOfOutputQuantities ReadUserInput DoCalculations PrintUserOutput WriteOutput
+CloseOutputFilesAndTerminate OpenOutputFilesAndWriteHeadings
+""".split())
 # names a program that solves equations or sweeps an input uses besides
-_SOLVING_RESERVED = frozenset("coef rhs solutiontoaxequalsb abserr relerr iter ipoint "
-                              "all".split())
+_SOLVING_NAMES = frozenset("COEF RHS SolutionToAxEqualsB ABSERR RELERR iter ipoint".split())
 
 _FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
           "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
@@ -193,14 +198,15 @@ class MProgram:
     """The text of one plan's Matlab program."""
 
     def __init__(self, plan: Plan):
-        check_names(plan, RESERVED | (_SOLVING_RESERVED if plan.solves_or_sweeps()
-                                      else frozenset()), "Matlab")
         self.plan = plan
         self.name = program_name(plan.filename)
         self.function = function_name(plan.filename)
+        rename_clashes(plan, LANGUAGE_NAMES | OWN_NAMES | {self.function}
+                       | (_SOLVING_NAMES if plan.solves_or_sweeps() else frozenset()),
+                       "Matlab")
         self.stem = self.name.rpartition(".")[0]
         self.unknowns, self.computed = plan.unknowns, plan.computed
-        self.where = {s: c_name(s) for s in plan.inputs + plan.specified + plan.named
+        self.where = {s: plan.name_of(s) for s in plan.inputs + plan.specified + plan.named
                       + self.computed}
 
     def text(self) -> str:
@@ -212,7 +218,7 @@ class MProgram:
         order = [k for k in range(len(later)) if not later[k]] + \
             [k for k in range(len(later)) if later[k]]
         part = printed(p.statements, shown_values(p), self.where, MatlabPrinter,
-                       lambda k: f"z({k})", order=order)
+                       lambda k: f"z({k})", order=order, name_of=p.name_of)
         size = part.top
         solution = []
         if p.solving is not None:
@@ -236,11 +242,11 @@ class MProgram:
         lines += self._function("ReadUserInput", globals_, self._table() + [
             "", "% Unit conversions", "Pi       = 3.141592653589793;",
             "DEGtoRAD = Pi/180.0;", "RADtoDEG = 180.0/Pi;"]
-            + [f"{c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
+            + [f"{p.name_of(s)} = {p.name_of(s)}*DEGtoRAD;" for s in p.degree_inputs]
             + ["", "% Reserve space and initialize matrices", f"z = zeros({size},1);",
                "", "% Evaluate constants"] + constants)
         lines += self._function("DoCalculations", globals_, [
-            "% Quantities to be specified"] + [f"{c_name(s)} = 0;" for s in p.specified]
+            "% Quantities to be specified"] + [f"{p.name_of(s)} = 0;" for s in p.specified]
             + [""] + solution + calculations)
         lines += self._function("Output = PrintUserOutput", globals_,
                                 _showing(p, part.values, blank_line=True))
@@ -256,7 +262,7 @@ class MProgram:
         sweep = self.plan.sweep
         lines = [f"for ipoint = 0:{sweep.count - 1}"]
         if sweep.target is not None:
-            name = c_name(sweep.target)
+            name = self.plan.name_of(sweep.target)
             lines.append(f"  {name} = {sweep.start!r} + {sweep.step!r}*ipoint;")
             if sweep.degrees:
                 lines.append(f"  {name} = {name}*DEGtoRAD;")
@@ -267,7 +273,8 @@ class MProgram:
         above `offset`, the constants' being kept), and the highest slot."""
         solving, n = self.plan.solving, len(self.unknowns)
         part = printed(solving.statements, solving.matrix + solving.right, self.where,
-                       MatlabPrinter, lambda k: f"z({k})", offset)
+                       MatlabPrinter, lambda k: f"z({k})", offset,
+                       name_of=self.plan.name_of)
         matrix, right = part.values[:n * n], part.values[n * n:]
         body = _m_lines(part.statements, self.plan.sources)
         body += [f"COEF = zeros({n},{n});"]
@@ -276,7 +283,7 @@ class MProgram:
         body += [f"RHS = zeros(1,{n});"] + [f"RHS({i + 1}) = -({right[i]});"
                                             for i in range(n)]
         body.append("SolutionToAxEqualsB = COEF\\RHS';")
-        names = [c_name(u) for u in self.unknowns]
+        names = [self.plan.name_of(u) for u in self.unknowns]
         if solving.method == "linear":
             lines = [f"% Solve the linear equations for {', '.join(names)}"] + body
             lines += [f"{name} = SolutionToAxEqualsB({i});" for i, name in enumerate(names, 1)]
@@ -296,8 +303,8 @@ class MProgram:
     # -- pieces ---------------------------------------------------------------------
     def _globals(self) -> list[str]:
         p = self.plan
-        groups = [[c_name(s) for s in p.inputs], [c_name(s) for s in p.specified],
-                  sorted((c_name(s) for s in p.named + self.computed),
+        groups = [[p.name_of(s) for s in p.inputs], [p.name_of(s) for s in p.specified],
+                  sorted((p.name_of(s) for s in p.named + self.computed),
                          key=lambda n: (n.lower(), n))]
         named = {n for g in groups for n in g}
         misc = ["DEGtoRAD", "RADtoDEG", "z"] + [e.name for e in p.encoded
@@ -320,7 +327,7 @@ class MProgram:
         for s in self.plan.inputs:
             value = self.plan.values[s]
             unit = value.unit or "UNITS"
-            rows.append(f"{c_name(s):<32}= {format_value(value.given) + ';':<25}"
+            rows.append(f"{self.plan.name_of(s):<32}= {format_value(value.given) + ';':<25}"
                         f"% {unit:<20}{'Initial Guess' if s in unknowns else 'Constant'}")
         if self.plan.solving is not None and self.plan.solving.method == "newton":
             rows.append("")
@@ -358,11 +365,13 @@ def write_m(plan: Plan) -> dict:
 
 
 
-_DYNAMICS_RESERVED = RESERVED | frozenset(
-    "var varp sys t u coef rhs solutiontoaxequalsb printcounter odematlaboptions "
-    "timeodearray varodearray timeatendofarray tinitial tfinal integstp printint abserr "
-    "relerr mdlderivatives mdloutputs mdlterminate sfunction mdlinitializesizes "
-    "solveordinarydifferentialequations ode45 odeset warning length".split())
+# a DYNAMICS program's own names besides: its S-function's and ode45's, its loop's
+_DYNAMICS_NAMES = frozenset("""
+VAR VARp sys u t x flag T Sfunction mdlDerivatives mdlOutputs mdlTerminate
+mdlInitializeSizes SolveOrdinaryDifferentialEquations PrintCounter OdeMatlabOptions
+TimeOdeArray VarOdeArray TimeAtEndOfArray TINITIAL TFINAL INTEGSTP PRINTINT ABSERR RELERR
+ode45 odeset COEF RHS SolutionToAxEqualsB
+""".split())
 
 _INTEGRATION_ROWS = (("TINITIAL", "Initial Time"), ("TFINAL", "Final Time"),
                      ("INTEGSTP", "Integration Step"), ("PRINTINT", "Print-Integer"),
@@ -374,18 +383,19 @@ class MDynamicsProgram(MProgram):
     ode45 over every INTEGSTP (as `autolev run` integrates a .m CODE file)."""
 
     def __init__(self, plan):
-        check_names(plan, _DYNAMICS_RESERVED, "Matlab")
         self.plan = plan
         self.name = program_name(plan.filename)
         self.function = function_name(plan.filename)
+        rename_clashes(plan, LANGUAGE_NAMES | OWN_NAMES | _DYNAMICS_NAMES | {self.function},
+                       "Matlab")
         self.stem = self.name.rpartition(".")[0]
         self.n, self.m = len(plan.states), len(plan.unknowns)
-        self.names = dynamics_names(plan)
+        self.names = dynamics_names(plan, plan.name_of)
         self.z_size = 0
 
     def text(self) -> str:
         p = self.plan
-        parts = print_dynamics(p, self.names, MatlabPrinter, lambda k: f"z({k})")
+        parts = print_dynamics(p, self.names, MatlabPrinter, lambda k: f"z({k})", p.name_of)
         constants, outputs = parts.constants, parts.outputs
         self.z_size = parts.z_size
         g = self._globals()
@@ -395,11 +405,11 @@ class MDynamicsProgram(MProgram):
         lines += self._function("VAR = ReadUserInput", g, self._table() + [
             "", "% Unit conversions", "Pi       = 3.141592653589793;",
             "DEGtoRAD = Pi/180.0;", "RADtoDEG = 180.0/Pi;"]
-            + [f"{c_name(s)} = {c_name(s)}*DEGtoRAD;" for s in p.degree_inputs]
+            + [f"{p.name_of(s)} = {p.name_of(s)}*DEGtoRAD;" for s in p.degree_inputs]
             + ["", "% Reserve space and initialize matrices", f"z = zeros({self.z_size},1);",
                "", "% Evaluate constants"] + self._lines(constants)
             + ["", "% Set the initial values of the states"]
-            + [f"VAR({k}) = {c_name(x)};" for k, x in enumerate(p.states, 1)])
+            + [f"VAR({k}) = {p.name_of(x)};" for k, x in enumerate(p.states, 1)])
         if p.files:
             lines += self._function("OpenOutputFilesAndWriteHeadings", [], self._headings())
         lines += ["", "", "", "%" + "=" * 75,
@@ -450,7 +460,7 @@ class MDynamicsProgram(MProgram):
         algebraic = derivatives + sorted((s for s in p.named if s not in derivatives),
                                          key=lambda s: (c_name(s).lower(), c_name(s)))
         groups = [p.constants, p.specified, p.states, algebraic]
-        lines = [f"global   {' '.join(c_name(s) for s in g)};" for g in groups if g]
+        lines = [f"global   {' '.join(p.name_of(s) for s in g)};" for g in groups if g]
         misc = ["DEGtoRAD", "RADtoDEG", "z"] + [e.name for e in p.encoded] + \
             (["Encode"] if p.encoded else [])
         return lines + [f"global   {' '.join(misc)};",
@@ -463,7 +473,7 @@ class MDynamicsProgram(MProgram):
         for group, what in ((p.constants, "Constant"), (p.states, "Initial Value")):
             for s in group:
                 value = p.values[s]
-                rows.append(f"{c_name(s):<32}= {format_value(value.given) + ';':<25}"
+                rows.append(f"{p.name_of(s):<32}= {format_value(value.given) + ';':<25}"
                             f"% {value.unit or 'UNITS':<20}{what}")
             rows.append("")
         time_unit = p.time_unit or "UNITS"
@@ -478,10 +488,10 @@ class MDynamicsProgram(MProgram):
     def _derivatives(self, statements, parts) -> list[str]:
         p = self.plan
         lines = ["% Update variables after integration step"]
-        lines += [f"{c_name(x)} = VAR({k});" for k, x in enumerate(p.states, 1)]
+        lines += [f"{p.name_of(x)} = VAR({k});" for k, x in enumerate(p.states, 1)]
         if p.specified:
             lines += ["", "% Quantities to be specified"]
-            lines += [f"{c_name(s)} = 0;" for s in p.specified]
+            lines += [f"{p.name_of(s)} = 0;" for s in p.specified]
         lines += [""] + statements
         lines += [f"{target} = {text};" for target, text in parts.rates]
         mass, forcing = parts.mass, parts.forcing
@@ -493,10 +503,10 @@ class MDynamicsProgram(MProgram):
             lines += [f"RHS({i + 1}) = {forcing[i]};" for i in range(self.m)]
             lines.append("SolutionToAxEqualsB = COEF\\RHS';")
             lines += ["", "% Update variables after uncoupling equations"]
-            lines += [f"{c_name(u)} = SolutionToAxEqualsB({i});"
+            lines += [f"{p.name_of(u)} = SolutionToAxEqualsB({i});"
                       for i, u in enumerate(p.unknowns, 1)]
         lines += ["", "% Update derivative array prior to integration step"]
-        lines += [f"VARp({k}) = {c_name(S.derivative(x))};"
+        lines += [f"VARp({k}) = {p.name_of(S.derivative(x))};"
                   for k, x in enumerate(p.states, 1)]
         return lines + ["", "sys = VARp';"]
 

@@ -69,6 +69,14 @@ class Plan:
     sources: dict = field(default_factory=dict)
     # the model's quantities Autolev's output routine hid (computed as 0 there)
     hidden: list = field(default_factory=list)
+    # {symbol: its name in the program} where the model's name is the language's or the
+    # program's own (rename_clashes), and what the user is told of it
+    renamed: dict = field(default_factory=dict)
+    notes: list = field(default_factory=list)
+
+    def name_of(self, sym) -> str:
+        """A quantity's name in this program: c_name's, unless renamed."""
+        return self.renamed.get(sym) or c_name(sym)
 
     @property
     def unknowns(self) -> list:
@@ -246,6 +254,12 @@ class DynamicsPlan:
     options: tuple = ()         # SUBS / NOSUBS
     sources: dict = field(default_factory=dict)     # as Plan's
     hidden: list = field(default_factory=list)      # as Plan's
+    renamed: dict = field(default_factory=dict)     # as Plan's
+    notes: list = field(default_factory=list)       # as Plan's
+
+    def name_of(self, sym) -> str:
+        """A quantity's name in this program: c_name's, unless renamed."""
+        return self.renamed.get(sym) or c_name(sym)
 
     @property
     def derivatives(self) -> list:
@@ -557,9 +571,9 @@ def c_name(sym) -> str:
 def check_names(plan, reserved: frozenset, language: str,
                 exact: frozenset = frozenset()) -> None:
     """Autolev printed the user's names as they are: a name the program's own text
-    uses (or the language reserves) would change its meaning, so it is refused.
-    `reserved`: in lower case, met in any case; `exact`: met as spelt (a library's
-    names, in a language that tells case apart)."""
+    uses (or the language reserves) would change its meaning, so it is refused (the
+    Fortran programs; C and Matlab rename: rename_clashes).  `reserved`: in lower
+    case, met in any case; `exact`: met as spelt."""
     symbols = [s for group in ("inputs", "constants", "states", "named", "specified")
                for s in getattr(plan, group, []) if s != S.TIME]    # T is the program's
     names = [c_name(s) for s in symbols] + [e.name for e in plan.encoded]
@@ -568,3 +582,29 @@ def check_names(plan, reserved: frozenset, language: str,
         raise AutolevModelError(
             f"{plan.filename}: {', '.join(clashes)} cannot be a name in the {language} "
             "program (the program or the language uses it); rename it in the model")
+
+
+def rename_clashes(plan, taken: frozenset, language: str) -> None:
+    """A model's quantity or ENCODE array named as the program or the language names
+    something of its own (`taken`, as spelt: C and Matlab tell case apart) would change
+    the program's meaning: it is written with underscores appended until its name is
+    free, each renaming said (plan.notes)."""
+    symbols = [s for group in ("inputs", "constants", "states", "named", "specified")
+               for s in getattr(plan, group, []) if s != S.TIME]    # T is the program's
+    used = {c_name(s) for s in symbols} | {e.name for e in plan.encoded} | set(taken)
+
+    def free(name: str) -> str:
+        new = name + "_"
+        while new in used:
+            new += "_"
+        used.add(new)
+        plan.notes.append(f"{plan.filename}: {name} is written {new} in the {language} "
+                          f"program, where {name} names something of the program's or "
+                          f"{language}'s own")
+        return new
+    for s in dict.fromkeys(symbols):
+        if c_name(s) in taken:
+            plan.renamed[s] = free(c_name(s))
+    for e in plan.encoded:
+        if e.name in taken:
+            e.name = free(e.name)
