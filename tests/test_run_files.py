@@ -263,3 +263,72 @@ def test_a_run_that_writes_much_says_so_first(tmp_path, monkeypatch, capsys):
     assert main(["run", str(path), "--out", str(tmp_path / "o"), "-q"]) == 0
     # 101 rows of two 15-character values and a newline
     assert f"this run writes about {101 * 31 / 1000:.3g} kB" in capsys.readouterr().err
+
+
+# the head of a Matlab program as Autolev 4.1 wrote it (MAE-223's bicycle14.m, cut to a
+# spring's names): the input values sit in ReadUserInput, one `NAME = value;` a line
+AUTOLEVS_MATLAB = """function SPRING
+SolveOrdinaryDifferentialEquations
+% File  SPRING.m  created by Autolev 4.1 on Thu Jul 06 17:45:29 2006
+
+
+%===========================================================================
+function VAR = ReadUserInput
+global   K M;
+global   X V;
+global   Xp Vp;
+global   DEGtoRAD RADtoDEG z;
+global   TINITIAL TFINAL INTEGSTP PRINTINT ABSERR RELERR;
+
+%-------------------------------+--------------------------+-------------------+-----------------
+% Quantity                      | Value                    | Units             | Description
+%-------------------------------|--------------------------|-------------------|-----------------
+K                               =  9.0;                    % UNITS               Constant
+M                               =  1.0;                    % UNITS               Constant
+
+X                               =  0.25;                   % UNITS               Initial Value
+V                               =  0.0;                    % UNITS               Initial Value
+
+TINITIAL                        =  0.0;                    % sec                 Initial Time
+TFINAL                          =  1.0;                    % sec                 Final Time
+INTEGSTP                        =  0.1;                    % sec                 Integration Step
+PRINTINT                        =  1;                      % Positive Integer    Print-Integer
+ABSERR                          =  1.0E-08;                %                     Absolute Error
+RELERR                          =  1.0E-07 ;               %                     Relative Error
+%-------------------------------+--------------------------+-------------------+-----------------
+
+% Unit conversions
+Pi       = 3.141592653589793;
+
+% Evaluate constants
+z(1) = K/M;
+
+%===========================================================================
+function sys = mdlDerivatives(T,VAR,u)
+X = 7.0;
+"""
+
+SPRING = """VARIABLES X', V'
+CONSTANTS K, M
+X' = V
+V' = -K/M*X
+INPUT K = 4, M = 1, X = 1, V = 0, TFINAL = 2, INTEGSTP = 0.5
+OUTPUT X
+CODE DYNAMICS() spring.m
+"""
+
+
+def test_the_inputs_of_an_autolev_matlab_program_are_read_by_in(tmp_path):
+    # Autolev's Matlab programs hold their input values inline: a Matlab user has that
+    # file, not an .in (it was refused: "no values found")
+    model = tmp_path / "spring.al"
+    model.write_text(SPRING)
+    program = tmp_path / "SPRING.m"
+    program.write_text(AUTOLEVS_MATLAB)
+    result = autolev.load(model).simulate(infile=program, out_dir=tmp_path / "out")
+    assert result.inputs["K"] == 9.0 and result.inputs["X"] == 0.25
+    assert result.t[-1] == pytest.approx(1.0)               # its integration too
+    # X = 0.25 cos(3 T): the values came from ReadUserInput, not from mdlDerivatives
+    assert np.allclose(result.outputs[0]["X"], 0.25 * np.cos(3 * result.t), atol=1e-6)
+    written = (tmp_path / "out" / "spring.in").read_text()
+    assert "| 9.0" in written and "| 0.25" in written

@@ -39,10 +39,18 @@ def row(values) -> str:
     return "".join(" " + ("%- 14.6E" % v) for v in values) + "\n"
 
 
+# a value line of a Matlab program's ReadUserInput: NAME = value; % UNIT  Description
+_MATLAB_VALUE = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*)\s*=\s*([^;%]*?)\s*;\s*%(.*)$")
+
+
 def in_file_lines(text: str) -> list[tuple[int, str, str, str]]:
     """(line number, name, value as written, unit) of each value line of an .in file's
     text: Autolev's layout, the name in columns 22-42, the unit to column 58, a '|' in
-    column 59 and the value after it (headings and rules skipped)."""
+    column 59 and the value after it (headings and rules skipped).  The text of a
+    Matlab program Autolev wrote holds its inputs in ReadUserInput instead (`NAME =
+    value;  % UNIT  Description`): those are its value lines."""
+    if re.search(r"^function\s+(VAR\s*=\s*)?ReadUserInput\b", text, re.M):
+        return _matlab_input_lines(text)
     lines = []
     for lineno, line in enumerate(text.splitlines(), 1):
         line = line.rstrip("\r\n")
@@ -52,4 +60,20 @@ def in_file_lines(text: str) -> list[tuple[int, str, str, str]]:
         if not name or name.lower() == "quantity" or set(line[:58]) <= {"-", " "}:
             continue
         lines.append((lineno, name, line[59:].strip(), line[42:58].strip()))
+    return lines
+
+
+def _matlab_input_lines(text: str) -> list[tuple[int, str, str, str]]:
+    """The value lines of a Matlab program's ReadUserInput (to its next function)."""
+    lines, inside = [], False
+    for lineno, line in enumerate(text.splitlines(), 1):
+        if line.startswith("function"):
+            inside = re.match(r"function\s+(VAR\s*=\s*)?ReadUserInput\b", line) is not None
+            continue
+        found = _MATLAB_VALUE.match(line.strip()) if inside else None
+        if found is not None:
+            # the comment: the unit in its first 20 characters (after a space), then
+            # what the value is
+            name, value, comment = found.groups()
+            lines.append((lineno, name, value, comment[1:21].strip()))
     return lines

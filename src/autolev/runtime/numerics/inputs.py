@@ -210,6 +210,9 @@ class Inputs:
             primed = up[:-k] + "'" * k          # Q1P -> Q1', Q1PP -> Q1''
             if primed in cands:
                 return cands[primed]
+        if up.endswith("_") and up.rstrip("_"):
+            # a program of `autolev code` writes a name its language uses with _ added
+            return self.lookup(wanted.rstrip("_"))
         return None
 
     # -- .in files ---------------------------------------------------------------------
