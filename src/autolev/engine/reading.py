@@ -154,8 +154,12 @@ def _regular_file_bytes(path) -> bytes:
                     else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
                     else "a socket" if stat.S_ISSOCK(mode) else "not a file")
             raise OSError(errno.EINVAL, f"not a regular file ({what})", str(path))
-        with os.fdopen(fd, "rb", closefd=False) as f:
-            return f.read()
+        chunks = []
+        while True:
+            chunk = os.read(fd, 1 << 20)
+            if not chunk:
+                return b"".join(chunks)
+            chunks.append(chunk)
     finally:
         os.close(fd)
 
