@@ -304,3 +304,48 @@ def test_accelerations_the_model_defines_are_named_when_sympys_equations_differ(
     # differentiated in A, the angular acceleration is sympy's, and so are the equations
     assert "\nLevel: mechanics." in script_of(tmp_path, "spun.al",
                                               spun.replace("DT(W_B_A>, N)", "DT(W_B_A>, A)"))
+
+
+NO_VALUES = """NEWTONIAN N
+FRAMES A
+PARTICLES P
+MOTIONVARIABLES' Q', U'
+CONSTANTS L, G, M, kane, loads, bodies, kd_eqs, sin
+MASS P = M
+SIMPROT(N, A, 3, Q)
+Q' = U
+P_NO_P> = L*A1>
+V_P_N> = DT(P_NO_P>, N)
+GRAVITY(G*N1>)
+TORQUE(N/A, -kane*U*A3> - (loads + bodies*kd_eqs)*SIN(Q)*sin*A3>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT Q = 0.5, U = 0.1, TFINAL = 1, INTEGSTP = 0.1
+OUTPUT Q, U
+CODE DYNAMICS() novalues.c
+"""
+
+
+def test_a_model_without_values_is_exported_and_its_script_names_them(tmp_path, capsys):
+    # it was refused ("8 constants ... have no value"); constants named as the script's
+    # own variables (kane, loads, bodies, kd_eqs) or numpy's sin crashed the script
+    import subprocess
+    import sys
+    path = tmp_path / "novalues.al"
+    path.write_text(NO_VALUES)
+    script = tmp_path / "novalues_sympy.py"
+    assert main(["convert", "--to", "sympy", str(path), "-o", str(script)]) == 0
+    assert "no value given for bodies, G, kane, kd_eqs, L, loads, M, sin" in \
+        capsys.readouterr().err
+    ran = subprocess.run([sys.executable, str(script)], capture_output=True, text=True)
+    assert ran.returncode == 1 and "no value for" in ran.stderr and "sin" in ran.stderr
+    assert "Traceback" not in ran.stderr
+    # given values, its equations are ours and its rows those of a run
+    text = script.read_text()
+    line = next(x for x in text.splitlines() if x.startswith("constants = {"))
+    script.write_text(text.replace(line, line.replace("None", "0.7")))
+    model = autolev.load(path)
+    values = dict.fromkeys(["L", "G", "M", "kane", "loads", "bodies", "kd_eqs", "sin"], 0.7)
+    found = run_script(script, tmp_path / "rows.csv")
+    assert equations_difference(model, model.code_commands[0], found) <= 1e-10
+    assert rows_difference(model, tmp_path / "rows.csv", **values) <= 1e-6

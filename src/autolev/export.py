@@ -33,7 +33,9 @@ SCRIPT_NAMES = frozenset({
     "unknown_states", "mass_matrix", "forcing", "full_mass", "full_forcing", "system",
     "constants", "initial_conditions", "specified", "integration", "outputs",
     "numeric_functions", "integrate", "main", "row", "column", "k", "j", "intermediates",
-    "expanded", "after_solving"})
+    "expanded", "after_solving", "kane", "loads", "bodies", "kd_eqs",
+    "velocity_constraints", "dependent", "auxiliary", "at_start", "coefficients", "rest",
+    "lacking"})
 
 
 class ScriptPrinter(StrPrinter):
@@ -176,8 +178,11 @@ def sympy_script(eqs: Equations, source: str, why: str | None = None) -> str:
 def values_text(eqs: Equations, names: dict, p) -> list:
     """The script's `constants`, `initial_conditions`, `specified`, `integration` and
     `outputs`, with `names` for the model's symbols and `p` printing expressions."""
-    out = ["# values (SI units, radians) from the model's INPUT statements",
-           "constants = {" + ", ".join(f"{names[c]}: {number_text(v)}"
+    lacking = [names[c] for c, v in eqs.constants.items() if v is None]
+    out = ["# values (SI units, radians) from the model's INPUT statements"
+           + ("; None: no value given (give one here)" if lacking else ""),
+           "constants = {" + ", ".join(f"{names[c]}: "
+                                       + ("None" if v is None else number_text(v))
                                        for c, v in eqs.constants.items()) + "}",
            "initial_conditions = {" + ", ".join(f"{names[x]}: {number_text(v)}"
                                                 for x, v in eqs.initial.items()) + "}",
@@ -236,11 +241,12 @@ RUNNER = '''def expanded(expr):
 def numeric_functions():
     """full_mass, full_forcing and the outputs as numpy functions of (t, state, constants,
     specified values[, unknowns]), each computing the intermediates in order."""
-    plain = {f: sm.Dummy() for f in states + list(specified) + unknowns
+    # every argument a Dummy: a model's constant named `sin` must not shadow numpy's
+    plain = {f: sm.Dummy() for f in states + list(specified) + unknowns + list(constants)
              + [name for name, _ in intermediates + after_solving]}
     steps = [(plain[name], value.xreplace(plain)) for name, value in intermediates]
     late = [(plain[name], value.xreplace(plain)) for name, value in after_solving]
-    arguments = [t, [plain[x] for x in states], list(constants),
+    arguments = [t, [plain[x] for x in states], [plain[c] for c in constants],
                  [plain[s] for s in specified]]
 
     def function(expr, more=(), after=()):
@@ -257,6 +263,9 @@ def numeric_functions():
 def integrate(tfinal=None):
     """The OUTPUT rows from TINITIAL to TFINAL (or `tfinal`) as Autolev's programs print
     them, as an array (a column per output)."""
+    lacking = [str(c) for c, v in constants.items() if v is None]
+    if lacking:
+        raise ValueError(f"no value for {', '.join(lacking)}: give each in `constants`")
     mass, force, columns = numeric_functions()
     p = [constants[c] for c in constants]
     x0 = np.array([initial_conditions[x] for x in states], dtype=float)
@@ -297,7 +306,11 @@ def integrate(tfinal=None):
 
 
 def main(argv):
-    rows = integrate()
+    try:
+        rows = integrate()
+    except ValueError as exc:
+        sys.stderr.write(f"{__file__}: {exc}\\n")
+        return 1
     text = ",".join(label for label, _, _ in outputs) + "\\n" + "".join(
         ",".join(repr(float(v)) for v in row) + "\\n" for row in rows)
     if argv:

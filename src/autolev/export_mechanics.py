@@ -12,6 +12,8 @@ so `python OUT.py` integrates and writes as that script does.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import sympy as sm
 import sympy.physics.mechanics as me
@@ -298,17 +300,19 @@ def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
             ""]
     out += values_text(eqs, names, p)
     if h.dependent:
-        out += ["# the dependent speeds start where the velocity constraints hold",
-                "at_start = {t: integration['TINITIAL'], **constants, **initial_conditions,",
-                "            **{s: v(integration['TINITIAL']) if callable(v) else v",
-                "               for s, v in specified.items()}"
+        out += ["# the dependent speeds start where the velocity constraints hold (once every",
+                "# constant has a value)",
+                "if None not in constants.values():",
+                "    at_start = {t: integration['TINITIAL'], **constants, **initial_conditions,",
+                "                **{s: v(integration['TINITIAL']) if callable(v) else v",
+                "                   for s, v in specified.items()}"
                 + (", **dict.fromkeys(auxiliary, 0)}" if h.auxiliary else "}"),
-                "coefficients, rest = sm.linear_eq_to_matrix(",
-                "    [me.msubs(c, kane.kindiffdict()) for c in velocity_constraints], "
+                "    coefficients, rest = sm.linear_eq_to_matrix(",
+                "        [me.msubs(c, kane.kindiffdict()) for c in velocity_constraints], "
                 "dependent)",
-                "initial_conditions.update(zip(dependent, np.linalg.solve(",
-                "    np.array(coefficients.xreplace(at_start), dtype=float),",
-                "    np.array(rest.xreplace(at_start), dtype=float).ravel())))"]
+                "    initial_conditions.update(zip(dependent, np.linalg.solve(",
+                "        np.array(coefficients.xreplace(at_start), dtype=float),",
+                "        np.array(rest.xreplace(at_start), dtype=float).ravel())))"]
     out += ["", "", RUNNER]
     return "\n".join(out) + "\n"
 
@@ -325,14 +329,31 @@ def _definitions_wanted(eqs: Equations, definitions: list) -> set:
     return wanted
 
 
+@dataclass(frozen=True)
+class SympyExport:
+    """A SymPy script and the constants it holds without a value (None there)."""
+
+    text: str
+    lacking: list
+
+
 def export_sympy(model, source: str, command=None, infile=None, overrides=None,
-                 level: str = "auto") -> str:
+                 level: str = "auto", missing_values: str = "keep") -> str:
     """The SymPy script of the model's first integrating CODE command (or `command`);
     `source`: the model's file, named in the script; its values as a run takes them
     (INPUT, then the .in file `infile`, then `overrides` in the quantities' units).
     `level`: "mechanics", "equations", or "auto" (mechanics when the model allows it,
     else equations with the reason in the script); AutolevModelError when "mechanics"
-    is asked of a model it cannot take."""
+    is asked of a model it cannot take.  The equations need no numbers: a constant
+    without a value stays a symbol (`missing_values="keep"`: None in `constants`, the
+    script says so when it is run; "refuse": as a run refuses it)."""
+    return sympy_export(model, source, command, infile, overrides, level,
+                        missing_values).text
+
+
+def sympy_export(model, source: str, command=None, infile=None, overrides=None,
+                 level: str = "auto", missing_values: str = "keep") -> SympyExport:
+    """export_sympy's script, with the names of the constants it has no value for."""
     if level not in LEVELS:
         raise ValueError(f"level is one of {', '.join(LEVELS)}, not {level!r}")
     if command is None:
@@ -341,16 +362,18 @@ def export_sympy(model, source: str, command=None, infile=None, overrides=None,
             raise AutolevModelError("the model has no CODE DYNAMICS or ODE to export "
                                     "(its equations of motion)")
         command = integrating[0]
-    eqs = equations_of(model, command, infile=infile, overrides=overrides)
+    eqs = equations_of(model, command, infile=infile, overrides=overrides,
+                       missing_values=missing_values)
+    lacking = [c.name for c, v in eqs.constants.items() if v is None]
     if level == "equations":
-        return sympy_script(eqs, source)
+        return SympyExport(sympy_script(eqs, source), lacking)
     why, h = mechanics_handoff(model, command, eqs)
     if h is not None:
-        return mechanics_script(h, eqs, model, source)
+        return SympyExport(mechanics_script(h, eqs, model, source), lacking)
     if level == "mechanics":
         raise AutolevModelError(f"the mechanics level does not take this model: {why} "
                                 "(--level equations writes its equations)")
-    return sympy_script(eqs, source, why)
+    return SympyExport(sympy_script(eqs, source, why), lacking)
 
 
 def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Handoff | None]:

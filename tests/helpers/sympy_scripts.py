@@ -29,11 +29,16 @@ script, csv = sys.argv[1:3]
 ns = runpy.run_path(script)
 rng = np.random.default_rng(33)
 constants, specified = list(ns['constants']), list(ns['specified'])
+# as Dummies: a model's constant may be named as numpy's functions (sin), which a nested
+# argument list of lambdify would not rename
+as_dummy = {c: sm.Dummy(str(c)) for c in constants}
+placeholders = [as_dummy[c] for c in constants]
 if 'kane' in ns:
     kane = ns['kane']
     states = list(kane.q) + list(kane.u)
-    f = sm.lambdify([ns['t'], states, constants, specified],
-                    [ns['full_mass'], ns['full_forcing']], cse=True)
+    f = sm.lambdify([ns['t'], states, placeholders, specified],
+                    [ns['full_mass'].xreplace(as_dummy), ns['full_forcing'].xreplace(as_dummy)],
+                    cse=True)
     level = 'mechanics'
 else:
     states = ns['states']
@@ -47,7 +52,8 @@ if dependent:
     zero = dict.fromkeys(ns.get('auxiliary', []), 0)
     a, b = sm.linear_eq_to_matrix([me.msubs(c, kane.kindiffdict(), zero)
                                    for c in ns['velocity_constraints']], dependent)
-    held = sm.lambdify([ns['t'], states[:-len(dependent)], constants, specified], [a, b])
+    held = sm.lambdify([ns['t'], states[:-len(dependent)], placeholders, specified],
+                       [a.xreplace(as_dummy), b.xreplace(as_dummy)])
 def named(s):
     # a rate of a specified quantity (mechanics level) by its name and primes: px''
     if isinstance(s, sm.Derivative):
@@ -108,8 +114,9 @@ def equations_difference(model, command, found: dict) -> float:
         assert names == found["states"]
         # the model's constants, as everything handed to sympy names them; a VARIABLE
         # nothing defines is one of them in a run (symbolic_system keeps it a function)
-        constants = [sm.Symbol(n) for n in found["constants"]]
+        constants = [sm.Dummy(n) for n in found["constants"]]
         as_run = {me.dynamicsymbols(c.name): c for c in constants}
+        as_run.update({sm.Symbol(c.name): c for c in constants})
         ours = sm.lambdify([me.dynamicsymbols._t, system.states, constants,
                             [specified_named(n) for n in found["specified"]]],
                            [m.xreplace(as_run) for m in (system.comb_implicit_mat,

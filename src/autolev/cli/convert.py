@@ -49,7 +49,8 @@ def cmd_convert(ns: argparse.Namespace) -> int:
 
 def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
     """The model's equations of motion as a standalone SymPy script."""
-    from ..export_mechanics import export_sympy
+    from ..export_mechanics import sympy_export
+    from ..runtime.numerics.inputs import some_names
     from ..engine.errors import AutolevModelError
     from ..runtime.tools import write_output
     from .common import load_model, refuse_unknown_names
@@ -68,14 +69,18 @@ def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
         return 1
     refuse_unknown_names(model, overrides)
     try:
-        text = export_sympy(model, path.name, infile=ns.infile, overrides=overrides,
-                            level=ns.level or "auto")
+        script = sympy_export(model, path.name, infile=ns.infile, overrides=overrides,
+                              level=ns.level or "auto")
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
+    if script.lacking:
+        print(f"{path}: note: no value given for {some_names(script.lacking)}: the "
+              "script's `constants` holds None for them (give each there, or here with "
+              "--set NAME=VALUE or --in FILE); its equations need none", file=sys.stderr)
     try:
         out.parent.mkdir(parents=True, exist_ok=True)
-        write_output(out.parent, out.name, text, ns.overwrite)
+        write_output(out.parent, out.name, script.text, ns.overwrite)
     except OSError as exc:
         print(f"autolev convert: cannot write {out}: {exc.strerror or exc}", file=sys.stderr)
         return 1

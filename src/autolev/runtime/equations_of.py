@@ -26,7 +26,7 @@ class Equations:
     mass: list              # rows of the mass matrix
     forcing: list
     definitions: list       # (symbol, expression), dependencies first
-    constants: dict         # symbol -> value (SI units, radians)
+    constants: dict         # symbol -> value (SI units, radians); None: no value given
     initial: dict           # state -> value
     specified: list         # symbols given as functions of time
     integration: dict       # TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR
@@ -34,15 +34,16 @@ class Equations:
 
 
 def equations_of(model, command, values: bool = True, infile=None,
-                 overrides=None) -> Equations:
+                 overrides=None, missing_values: str = "refuse") -> Equations:
     """The equations, values and outputs `autolev run` uses for an integrating CODE
     command (DYNAMICS or ODE), its values taken as a run takes them (INPUT, then the .in
     file `infile`, then `overrides` in the quantities' units); without `values`, the
     equations alone (no constant needs a value; constants, initial values and
-    integration are left empty)."""
+    integration are left empty).  `missing_values`: "refuse" (a constant without a
+    value is refused, as a run refuses it) or "keep" (its value is None)."""
     from .numerics.command import equations_and_unknowns, output_columns, program_of
     from ..engine.files import safe_stem
-    from ..engine.options import RunOptions
+    from .numerics.inputs import DEFAULT_SOURCE
     from .numerics.prepare import InputsWanted, SystemBuild, numeric_system, take_inputs
 
     kind = command.kind
@@ -53,9 +54,9 @@ def equations_of(model, command, values: bool = True, infile=None,
     solving = equations_and_unknowns(command.args, kind.upper())
     system = numeric_system(model, command, files, [], solving,
                             SystemBuild("python", False, (), False))
-    options = RunOptions()
     ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], infile,
-                       overrides, None, None, options.missing_values, None)
+                       overrides, None, None,
+                       missing_values, None)
     with model.defs.as_of(program_of(model, command).definitions):
         inputs = take_inputs(ask, system)[0] if values else None
         n = len(system.implicit_unknowns)
@@ -75,14 +76,16 @@ def equations_of(model, command, values: bool = True, infile=None,
             | set(system.implicit_unknowns)
         order = model.defs.evaluation_order(
             {s for e in roots for s in e.free_symbols}, given)
-        # speeds fixed for the run (auxiliary ones at 0) first, then what is defined
+        # speeds fixed for the run (a locked coordinate's, at 0) first, then what is defined
         definitions = [(s, sm.sympify(v)) for s, v in system.aux_fixed.items()] + \
             [(s, model.defs.rhs[s]) for s in order if s not in system.aux_fixed]
     return Equations(
         model_name=model.name, command=f"CODE {kind.upper()} {command.filename}",
         states=list(system.states), rates=rates, unknowns=list(system.implicit_unknowns),
         mass=mass, forcing=forcing, definitions=definitions,
-        constants={p: inputs.internal(p) for p in system.params} if values else {},
+        constants={p: None if inputs.values[p].source == DEFAULT_SOURCE
+                   else inputs.internal(p)
+                   for p in system.params} if values else {},
         initial={x: inputs.internal(x) for x in system.states} if values else {},
         specified=list(system.specified),
         integration={name: inputs.internal(name) for name in

@@ -132,15 +132,17 @@ outputs = [
     ('Q4', 'm', Q4),
     ('Q5', 'm', Q5),
 ]
-# the dependent speeds start where the velocity constraints hold
-at_start = {t: integration['TINITIAL'], **constants, **initial_conditions,
-            **{s: v(integration['TINITIAL']) if callable(v) else v
-               for s, v in specified.items()}}
-coefficients, rest = sm.linear_eq_to_matrix(
-    [me.msubs(c, kane.kindiffdict()) for c in velocity_constraints], dependent)
-initial_conditions.update(zip(dependent, np.linalg.solve(
-    np.array(coefficients.xreplace(at_start), dtype=float),
-    np.array(rest.xreplace(at_start), dtype=float).ravel())))
+# the dependent speeds start where the velocity constraints hold (once every
+# constant has a value)
+if None not in constants.values():
+    at_start = {t: integration['TINITIAL'], **constants, **initial_conditions,
+                **{s: v(integration['TINITIAL']) if callable(v) else v
+                   for s, v in specified.items()}}
+    coefficients, rest = sm.linear_eq_to_matrix(
+        [me.msubs(c, kane.kindiffdict()) for c in velocity_constraints], dependent)
+    initial_conditions.update(zip(dependent, np.linalg.solve(
+        np.array(coefficients.xreplace(at_start), dtype=float),
+        np.array(rest.xreplace(at_start), dtype=float).ravel())))
 
 
 def expanded(expr):
@@ -153,11 +155,12 @@ def expanded(expr):
 def numeric_functions():
     """full_mass, full_forcing and the outputs as numpy functions of (t, state, constants,
     specified values[, unknowns]), each computing the intermediates in order."""
-    plain = {f: sm.Dummy() for f in states + list(specified) + unknowns
+    # every argument a Dummy: a model's constant named `sin` must not shadow numpy's
+    plain = {f: sm.Dummy() for f in states + list(specified) + unknowns + list(constants)
              + [name for name, _ in intermediates + after_solving]}
     steps = [(plain[name], value.xreplace(plain)) for name, value in intermediates]
     late = [(plain[name], value.xreplace(plain)) for name, value in after_solving]
-    arguments = [t, [plain[x] for x in states], list(constants),
+    arguments = [t, [plain[x] for x in states], [plain[c] for c in constants],
                  [plain[s] for s in specified]]
 
     def function(expr, more=(), after=()):
@@ -174,6 +177,9 @@ def numeric_functions():
 def integrate(tfinal=None):
     """The OUTPUT rows from TINITIAL to TFINAL (or `tfinal`) as Autolev's programs print
     them, as an array (a column per output)."""
+    lacking = [str(c) for c, v in constants.items() if v is None]
+    if lacking:
+        raise ValueError(f"no value for {', '.join(lacking)}: give each in `constants`")
     mass, force, columns = numeric_functions()
     p = [constants[c] for c in constants]
     x0 = np.array([initial_conditions[x] for x in states], dtype=float)
@@ -214,7 +220,11 @@ def integrate(tfinal=None):
 
 
 def main(argv):
-    rows = integrate()
+    try:
+        rows = integrate()
+    except ValueError as exc:
+        sys.stderr.write(f"{__file__}: {exc}\n")
+        return 1
     text = ",".join(label for label, _, _ in outputs) + "\n" + "".join(
         ",".join(repr(float(v)) for v in row) + "\n" for row in rows)
     if argv:

@@ -36,6 +36,9 @@ DESCRIPTIONS = {"TINITIAL": "Initial Time", "TFINAL": "Final Time",
                 "ABSERR": "Absolute Error", "RELERR": "Relative Error"}
 
 
+# where a value nothing gave comes from (0, as Autolev's programs took it)
+DEFAULT_SOURCE = "default (no INPUT)"
+
 class InputFileError(AutolevModelError):
     """A malformed `.in` file (carries file and line)."""
 
@@ -162,7 +165,7 @@ class Inputs:
     def missing(self, keys) -> list:
         return [k for k in keys if k not in self.values]
 
-    def fill_missing(self, keys, source: str = "default (no INPUT)") -> list:
+    def fill_missing(self, keys, source: str = DEFAULT_SOURCE) -> list:
         """Give 0 to keys without a value; returns them."""
         missing = self.missing(keys)
         for k in missing:

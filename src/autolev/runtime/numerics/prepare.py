@@ -54,7 +54,7 @@ class InputsWanted:
     overrides: dict | None
     internal_values: dict | None
     constraints: object
-    missing_values: str
+    missing_values: str     # "refuse", "zero" (0, with a warning) or "keep" (0, silently)
     out_dir: object
 
     @property
@@ -117,7 +117,7 @@ def take_inputs(ask: InputsWanted, system):
                                              ask.stem, ask.command.filename),
                             [display_name(k) for k in missing])
     inputs.fill_missing(constants)
-    if missing:
+    if missing and ask.missing_values == "zero":
         warnings.warn("no value for " + some_names([display_name(k) for k in missing], 12)
                       + ": using 0", stacklevel=5)
     if timed:
