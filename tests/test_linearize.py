@@ -581,3 +581,41 @@ def test_a_sweep_of_a_name_the_model_lacks_is_a_usage_error(tmp_path, capsys):
                    "NOPE=0:1:3"])
     assert status == 2
     assert "--sweep NOPE: the model has no quantity of that name" in capsys.readouterr().err
+
+
+FREE_CART = """NEWTONIAN N
+FRAMES A
+PARTICLES C, P, R
+MOTIONVARIABLES' X'', Y'', Q'', Z''
+CONSTANTS L, MC, MP, K, MR
+SIMPROT(N, A, 3, Q)
+P_NO_C> = X*N1> + Y*N2>
+P_C_P> = L*A1>
+P_NO_R> = Z*N3>
+V_C_N> = DT(P_NO_C>, N)
+V_P_N> = DT(P_NO_C> + P_C_P>, N)
+V_R_N> = DT(P_NO_R>, N)
+MASS C = MC, P = MP, R = MR
+FORCE(C/P, -K*Q*A2>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT L = 0.5, MC = 2, MP = 1, K = 3, MR = 1
+CODE DYNAMICS() cart.c
+"""
+
+
+def test_each_ignorable_coordinate_is_named_once_among_the_zero_eigenvalues(tmp_path):
+    # a cart free in the plane with a sprung pendulum, and a particle free along N3: by
+    # hand, nothing depends on X, Y or Z (three double zeros); the pendulum pushes the
+    # cart along A2 = N2 to first order, so X'' and Z'' are 0 and Y'' is not
+    path = tmp_path / "cart.al"
+    path.write_text(FREE_CART)
+    lin = autolev.load(path).linearize({"X": 0, "Y": 0, "Q": 0, "Z": 0})
+    rows = [row.split(",") for row in lin.eigenvalue_table().splitlines()[1:]]
+    notes = [r[4] for r in rows if r[:2] == ["0", "0"]]
+    assert len(notes) == 6
+    assert sorted(notes) == sorted([
+        "X is ignorable (nothing depends on it)", "Y is ignorable (nothing depends on it)",
+        "Z is ignorable (nothing depends on it)",
+        "X' is constant (its rate depends on nothing)",
+        "Z' is constant (its rate depends on nothing)", "zero"])

@@ -67,27 +67,35 @@ class Linearization:
     def eigenvalue_table(self) -> str:
         """The eigenvalues as CSV: real part, imaginary part, and for a complex pair the
         frequency (Hz) and damping ratio; parts within `zero_tolerance()` of 0 shown as 0,
-        and a zero eigenvalue whose mode is a coordinate nothing depends on noted."""
+        and the zero eigenvalues' notes (`zero_notes()`)."""
         tol = self.zero_tolerance()
-        values, vectors = self.modes()
         lines = ["real,imaginary,frequency_hz,damping_ratio,note"]
-        for k, ev in enumerate(values):
+        notes = iter(self.zero_notes())
+        for ev in self.eigenvalues():
             ev = complex(ev.real if abs(ev.real) >= tol else 0.0,
                          ev.imag if abs(ev.imag) >= tol else 0.0)
             mag = abs(ev)
             freq = f"{abs(ev.imag) / (2 * np.pi):.12g}" if ev.imag != 0 else ""
             zeta = f"{0.0 - ev.real / mag:.12g}" if ev.imag != 0 and mag > 0 else ""
-            note = self._zero_mode(vectors[:, k], tol) if ev == 0 else ""
+            note = next(notes, "zero") if ev == 0 else ""
             lines.append(f"{ev.real:.15g},{ev.imag:.15g},{freq},{zeta},{note}")
         return "\n".join(lines) + "\n"
 
-    def _zero_mode(self, vector: np.ndarray, tol: float) -> str:
-        """What a zero eigenvalue is: the coordinate its mode moves when nothing depends
-        on that coordinate (its column of A is zero), else plain zero."""
-        j = int(np.argmax(np.abs(vector)))
-        if np.all(np.abs(self.A[:, j]) <= tol):
-            return f"{self.states[j]} is ignorable (nothing depends on it)"
-        return "zero"
+    def zero_notes(self) -> list:
+        """What the zero eigenvalues are, one note each as far as A shows it: a state
+        nothing depends on (its column of A is zero: an ignorable coordinate) and a state
+        whose rate depends on nothing (its row is zero: constant), each named once, in the
+        states' order.  A zero eigenvalue is repeated (an ignorable coordinate and its
+        speed make a double zero), so which note goes with which copy is a convention."""
+        tol = self.zero_tolerance()
+        ignorable = [j for j in range(len(self.states)) if np.all(np.abs(self.A[:, j]) <= tol)]
+        constant = [j for j in range(len(self.states)) if j not in ignorable
+                    and np.all(np.abs(self.A[j, :]) <= tol)]
+        count = int(np.sum(np.abs(self.eigenvalues()) < tol))
+        notes = [f"{self.states[j]} is ignorable (nothing depends on it)" for j in ignorable]
+        notes += [f"{self.states[j]} is constant (its rate depends on nothing)"
+                  for j in constant]
+        return notes[:count]
 
     def modes(self) -> tuple[np.ndarray, np.ndarray]:
         """(eigenvalues, eigenvectors as columns, each of unit norm), in the order of
