@@ -248,9 +248,22 @@ def test_check_reports_in_one_round(tmp_path):
     assert r.returncode == 1
     assert [f.split(": error: ")[0] for f in found] == [
         f"{path}:4:16", f"{path}:5:1", f"{path}:7:5", f"{path}:8:6"]
-    assert "unknown command SIMPORT(); did you mean SIMPROT?" in found[1]
+    assert "unknown command SIMPORT(): not one of Autolev's, and no macro file simport.a " \
+        "(any case) next to rounds.al; did you mean SIMPROT?" in found[1]
     assert "did you mean SIN, SINH or SIGN?" in found[2]
     assert "unknown CODE kind 'DYNAMIC'" in found[3]
+
+
+def test_a_call_of_a_missing_macro_says_which_file_was_looked_for(tmp_path):
+    # CONTACT() meant contact.a, which is not beside the model: the file is what is missing
+    path = tmp_path / "m.al"
+    path.write_text("NEWTONIAN N\nCONTACT()\n")
+    r = cli("check", path)
+    assert r.returncode == 1
+    assert f"{path}:2:1: error: unknown command CONTACT(): not one of Autolev's, and no " \
+        "macro file contact.a (any case) next to m.al" in r.stdout + r.stderr
+    (tmp_path / "CONTACT.A").write_text("% a macro of nothing\n")
+    assert cli("check", path).returncode == 0
 
 
 @pytest.mark.parametrize("command", ["run", "linearize", "animate"])

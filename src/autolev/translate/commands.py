@@ -3,6 +3,8 @@ DISPLAY, and the commands of no family of their own: SOLVE, EIG, ANIMATE and the
 in-place ones (EXPAND(X) rewrites X).  kinematics.py and dynamics.py add theirs."""
 from __future__ import annotations
 
+from pathlib import Path
+
 from .. import ir
 from .assignments import assign
 from .core import STATEMENTS, Translator
@@ -40,7 +42,11 @@ def command_statement(tr: Translator, st: ir.Command) -> None:
         tr.expr(c)      # checked, and displayed by Autolev; nothing to keep
         tr.emit("# (displayed by Autolev; nothing to compute)")
         return
-    raise tr.error(f"unknown command {name}()"
+    # a statement that is only a call is a macro call where NAME.A exists (read before
+    # translation): none was found, so say where it was looked for
+    beside = Path(st.span.start.file).name if st.span is not None else "the model"
+    raise tr.error(f"unknown command {name}(): not one of Autolev's, and no macro file "
+                   f"{c.name.lower()}.a (any case) next to {beside}"
                    + did_you_mean(name, [*COMMANDS, *IN_PLACE, *FUNCTIONS]), c, "T003")
 
 
