@@ -322,3 +322,13 @@ def test_the_program_of_code_ode_reads_the_undefined_derivative(tmp_path):
     subprocess.run(["./kin"], cwd=tmp_path / "prog", check=True, capture_output=True)
     assert np.array_equal(rows_of(tmp_path / "prog" / "kin.1"),
                           rows_of(tmp_path / "run" / "kin.1"))
+
+
+@pytest.mark.parametrize("command", [["run"], ["linearize"], ["convert", "--to", "sympy"]])
+def test_an_input_file_that_is_not_there_is_a_usage_error(tmp_path, command):
+    # the command line names a file that is not there: exit 2 before the model is read
+    path = tmp_path / "m.al"
+    path.write_text("NEWTONIAN N\n")
+    r = cli(*command, path, "--in", tmp_path / "gone.in")
+    assert r.returncode == 2
+    assert f"--in {tmp_path / 'gone.in'}: no such file" in r.stderr

@@ -69,6 +69,14 @@ def entry() -> int:
     return main()
 
 
+def _refuse_missing_input_file(ns: argparse.Namespace) -> None:
+    """A --in file that is not there is a mistake in the command line (exit 2), said
+    before the model is read."""
+    infile = vars(ns).get("infile")
+    if infile is not None and not os.path.lexists(infile):
+        raise UsageError(f"--in {infile}: no such file")
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = build_parser()
     ns = ap.parse_args(argv)
@@ -76,6 +84,7 @@ def main(argv: list[str] | None = None) -> int:
         ap.print_help()
         return 2
     try:
+        _refuse_missing_input_file(ns)
         with _warnings_as_notes():
             return ns.func(ns)
     except UsageError as exc:

@@ -61,8 +61,6 @@ def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
     if out.resolve() == path.resolve():
         raise UsageError(f"refusing to overwrite the model {path}")
     overrides = name_values(ns.set, "--set", numbers=True)
-    if ns.infile is not None and not Path(ns.infile).is_file():
-        raise UsageError(f"--in {ns.infile}: no such file")
     model = load_model(path)
     if model is None:
         print(f"{path}: not converted", file=sys.stderr)
