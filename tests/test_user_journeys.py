@@ -332,3 +332,19 @@ def test_an_input_file_that_is_not_there_is_a_usage_error(tmp_path, command):
     r = cli(*command, path, "--in", tmp_path / "gone.in")
     assert r.returncode == 2
     assert f"--in {tmp_path / 'gone.in'}: no such file" in r.stderr
+
+
+@pytest.mark.parametrize("command", [["run"], ["linearize"], ["code"], ["equations"],
+                                     ["transcript"], ["convert", "--to", "sympy"],
+                                     ["convert"]])
+def test_every_command_shows_the_errors_check_shows(tmp_path, command):
+    # a syntax error (line 4) and, on lines that read, an unknown function and an unknown
+    # CODE kind: each command stops with all three, as check lists them
+    path = tmp_path / "three.al"
+    path.write_text("NEWTONIAN N\nBODIES A\nMOTIONVARIABLES' Q', U'\nCONSTANTS L, K M\n"
+                    "SIMPROT(N, A, 3, Q)\nQ' = U\nX = SINN(Q) + M\nZERO = FR() + FRSTAR()\n"
+                    "KANE()\nCODE DYNAMIC() r.c\n")
+    r = cli(*command, path, cwd=tmp_path)
+    assert r.returncode == 1
+    found = [line.split(": error: ")[0] for line in r.stderr.splitlines() if ": error: " in line]
+    assert found == [f"{path}:4:16", f"{path}:7:5", f"{path}:10:6"]

@@ -30,6 +30,15 @@ def print_diagnostics(diagnostics, prefix: str = "") -> None:
         print(prefix + d.format(), file=sys.stderr)
 
 
+def failure_diagnostics(path: Path, exc) -> list:
+    """What stopped a model, as `check` shows it: after a syntax error the statements
+    that did read are translated too, so every command shows the errors in one round."""
+    if not isinstance(exc, AutolevSyntaxError) or path.suffix.lower() == ".py":
+        return exc.diagnostics
+    from .check import check_file
+    return check_file(path)
+
+
 def print_warning(message, category, filename, lineno, file=None, line=None):
     print(f"autolev: warning: {message}", file=sys.stderr)
 
@@ -49,7 +58,7 @@ def load_model(path: Path, progress=None, before_building=None):
             else:
                 model, notes = load_for_run(path, before_building)
     except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
-        print_diagnostics(exc.diagnostics)
+        print_diagnostics(failure_diagnostics(path, exc))
         return None
     for note in notes:
         print(note, file=sys.stderr)

@@ -7,7 +7,8 @@ import sys
 from pathlib import Path
 
 from ..errors import AutolevSyntaxError, AutolevTranslationError
-from .common import UsageError, name_values, overwrite_option, print_diagnostics
+from .common import (UsageError, failure_diagnostics, name_values, overwrite_option,
+                     print_diagnostics)
 
 
 def cmd_convert(ns: argparse.Namespace) -> int:
@@ -25,8 +26,9 @@ def cmd_convert(ns: argparse.Namespace) -> int:
     try:
         result = translation(path)
     except (AutolevSyntaxError, AutolevTranslationError) as exc:
-        print_diagnostics(exc.diagnostics)
-        n = sum(d.severity == "error" for d in exc.diagnostics)
+        shown = failure_diagnostics(path, exc)
+        print_diagnostics(shown)
+        n = sum(d.severity == "error" for d in shown)
         print(f"{path}: not converted ({n} error{'s' if n != 1 else ''})", file=sys.stderr)
         return 1
     print_diagnostics(result.diagnostics)

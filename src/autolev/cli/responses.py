@@ -9,7 +9,7 @@ from pathlib import Path
 
 from ..errors import (AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError,
                       printable, printable_lines)
-from .common import UsageError, overwrite_option, print_diagnostics
+from .common import UsageError, failure_diagnostics, overwrite_option, print_diagnostics
 
 
 def cmd_transcript(ns: argparse.Namespace) -> int:
@@ -54,7 +54,7 @@ def transcript_text(path: Path) -> str | None:
         try:
             text = transcript(path)
         except (AutolevSyntaxError, AutolevTranslationError, AutolevRuntimeError) as exc:
-            print_diagnostics(exc.diagnostics)
+            print_diagnostics(failure_diagnostics(path, exc))
             return None
         keep(request, reads, lambda read: KeptTranscript(read, text))
     return text
