@@ -48,6 +48,8 @@ MAKERS = {
     "W104": ("INPUT ZZ = 1\n", {}),
     "W105": ("VARIABLES T\n", {}),
     "W106": ("X = COS(1)\n", {"cos.R": "#1#\n"}),
+    "W107": ("NEWTONIAN N\nBODIES A\nMOTIONVARIABLES' Q'\nSIMPROT(N, A, 3, Q)\n"
+             "X = FRSTAR()\n", {}),
     "T001": ("NEWTONIAN N\nX = 1/N1>\n", {}),
     "T002": ("X = Q9\n", {}),
     "T003": ("X = FOO(1)\n", {}),

@@ -421,3 +421,37 @@ def test_a_singular_inertia_is_named_when_the_run_fails(tmp_path):
     r = spinner(tmp_path, "1, 1, 1").simulate()
     assert not r.ok and r.failure_time == 0.0
     assert "body A has a singular central inertia (principal inertias 0, 0, 3)" in r.failure
+
+
+PINNED_ROD = """NEWTONIAN N
+BODIES A
+MOTIONVARIABLES' Q', U'
+CONSTANTS L, M, G
+SIMPROT(N, A, 3, Q)
+Q' = U
+P_NO_AO> = L*A1>
+W_A_N> = U*A3>
+V_AO_N> = DT(P_NO_AO>, N)
+MASS A = M
+GRAVITY(G*N1>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT L = 1, M = 1, G = 9.8, Q = 1, U = 0
+OUTPUT Q
+CODE DYNAMICS() r.c
+"""
+
+
+def test_check_warns_of_a_turning_body_without_inertia_that_run_refuses(tmp_path):
+    # A turns about NO with no INERTIA: run refuses it, and check says so at FRSTAR()
+    path = tmp_path / "rod.al"
+    path.write_text(PINNED_ROD)
+    checked = cli("check", path)
+    assert checked.returncode == 0
+    assert f"{path}:12:15: warning: body A has no INERTIA, and it turns" in checked.stdout
+    ran = cli("run", path, "--out", tmp_path / "out")
+    assert ran.returncode == 1 and "the inertia of body A is not given" in ran.stderr
+    # given its inertia, neither says a word of it
+    path.write_text(PINNED_ROD.replace("MASS A = M\n", "MASS A = M\nINERTIA A, 0, 0, 1\n"))
+    assert "W107" not in cli("check", path).stdout
+    assert cli("run", path, "--out", tmp_path / "out2").returncode == 0

@@ -94,6 +94,9 @@ _ALL = (
     Code("W106", "a stray .a or .R file named as a function of Autolev's own, not read",
          "cos.R has the name of Autolev's own function COS: the function is meant here, "
          "the file is not read"),
+    Code("W107", "FRSTAR() where a body that turns has no inertia given",
+         "body A has no INERTIA, and it turns (m.al:5): FRSTAR() needs its inertia "
+         "(INERTIA A, I11, I22, I33)"),
     Code("T001", "wrong type: an operand, argument or value of a type the operation does "
          "not take", "FORCE takes a vector, not a scalar"),
     Code("T002", "not declared or defined: a name read before any declaration or value; "

@@ -31,7 +31,7 @@ def assignment(tr: Translator, st: ir.Assignment) -> None:
 
 # what an assignment to a reserved vector gives its first part
 _GIVES = {"angvel": "angular velocity", "vel": "velocity", "force": "load", "torque": "load",
-          "angacc": "acceleration", "acc": "acceleration"}
+          "angacc": "acceleration", "acc": "acceleration", "inertia": "inertia"}
 
 
 def _note_mechanics(tr: Translator, target: ir.VectorName) -> None:

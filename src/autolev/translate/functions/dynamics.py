@@ -17,7 +17,31 @@ def _fr(tr, c):
 @function("FRSTAR")
 def _frstar(tr, c):
     nargs(tr, c, 0)
+    _warn_inertia_lacking(tr, c)
     return Typed("model.frstar()", ValueType.MATRIX)
+
+
+def _warn_inertia_lacking(tr, c) -> None:
+    """FRSTAR() needs the inertia of every body that turns: the bodies oriented or given
+    an angular velocity, with no INERTIA nor I_B_O>> so far, are named (the run refuses
+    them unless they turn not at all)."""
+    lacking = []
+    for entry in tr.entities.values():
+        if entry.kind != NameKind.BODY:
+            continue
+        name = tr.autolev_name(entry)
+        turned = tr.statements_at.get(("orientation", name.upper())) \
+            or tr.statements_at.get(("angular velocity", name.upper()))
+        if turned and ("inertia", name.upper()) not in tr.statements_at:
+            lacking.append((name, turned[0]))
+    if len(lacking) == 1:
+        (name, where), = lacking
+        tr.warn(f"body {name} has no INERTIA, and it turns ({where}): FRSTAR() needs its "
+                f"inertia (INERTIA {name}, I11, I22, I33)", c, "W107")
+    elif lacking:
+        tr.warn(f"bodies {', '.join(name for name, _ in lacking)} have no INERTIA, and they "
+                f"turn ({lacking[0][0]}: {lacking[0][1]}): FRSTAR() needs their inertia "
+                "(INERTIA B, I11, I22, I33 for each)", c, "W107")
 
 
 def _things(tr, args, kinds=(NameKind.BODY, NameKind.PARTICLE)) -> list[str]:
