@@ -81,10 +81,15 @@ def test_missing_values_stop_the_run_with_what_to_do_and_a_template(model_file, 
     period = 2 * math.pi * math.sqrt((0.02 + 0.25) / (9.81 * 0.5))
     crossings = t[1:][(q[:-1] > 0) & (q[1:] <= 0)]
     assert abs((crossings[1] - crossings[0]) - period) < 2e-3
-    # a second refusal does not replace the template the user may be filling in
+    # the run done, the template left unfilled is gone: it described a refusal
+    assert not template.exists()
+    # a second refusal does not replace the template the user may be filling in, and a
+    # run done does not remove it once changed
+    assert cli("run", model_file, "--out", out).returncode == 1 and template.is_file()
     template.write_text(template.read_text() + "% my notes\n")
     r = cli("run", model_file, "--out", out)
     assert r.returncode == 1 and "from before is still there" in r.stderr
+    assert cli("run", model_file, "--out", out, "--in", tmp_path / "mine.in").returncode == 0
     assert template.read_text().endswith("% my notes\n")
 
 

@@ -619,3 +619,17 @@ def test_each_ignorable_coordinate_is_named_once_among_the_zero_eigenvalues(tmp_
         "Z is ignorable (nothing depends on it)",
         "X' is constant (its rate depends on nothing)",
         "Z' is constant (its rate depends on nothing)", "zero"])
+
+
+@pytest.mark.parametrize("point", [None, {}])
+def test_linearizing_without_an_operating_point_says_where_it_linearized(tmp_path, point):
+    path = tmp_path / "cart.al"
+    path.write_text(FREE_CART)
+    model = autolev.load(path)
+    with pytest.warns(UserWarning, match="no operating point given: linearized where the "
+                      "INPUT values put the state"):
+        lin = model.linearize(point)
+    assert lin.point["X"] == 0 and lin.point["Q"] == 0       # no INPUT for them: 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        model.linearize({"Q": 0.1})

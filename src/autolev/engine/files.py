@@ -243,12 +243,15 @@ class RunFiles:
         """The previous run's tables and `.encode` this run did not write (fewer OUTPUT
         statements, no ENCODE), and what was drawn or converted from its results (plots,
         CSV, Matlab files, animations; written again after this run when asked): they
-        would pass for this run's.  Only files autolev wrote and nobody changed since."""
+        would pass for this run's; and the `-template.in` of a run refused for want of
+        values.  Only files autolev wrote and nobody changed since."""
         names = {p.name for p in written}
         gone = []
-        for path in self.folder.glob(f"{glob_escape(self.stem)}.*"):
+        # and the template a run refused for want of values left, still unfilled
+        template = self.folder / f"{self.stem}-template.in"
+        for path in [*self.folder.glob(f"{glob_escape(self.stem)}.*"), template]:
             suffix = path.name[len(self.stem) + 1:]
-            if path.name in names or not _superseded_suffix(suffix):
+            if path.name in names or (path != template and not _superseded_suffix(suffix)):
                 continue
             if path.is_file() and not path.is_symlink() and path.name in \
                     self._written.records and self._written.ours(path.name):

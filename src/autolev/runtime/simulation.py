@@ -5,6 +5,7 @@ from __future__ import annotations
 import html
 import sys
 import time
+import warnings
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -242,6 +243,11 @@ class SimulationMixin:
         quantities the model leaves undefined, as simulate's values for them.
         `progress`: a stream told of steps past two seconds (forming, compiling)."""
         from .numerics.linearize import linearize   # scipy.linalg: see linearize_symbolic
+        if not operating_point:
+            warnings.warn("no operating point given: linearized where the INPUT values put "
+                          "the state (0 for a state with none); name one with operating_point= "
+                          "in Python, --at NAME=VALUE on the command line",
+                          stacklevel=2)
         try:
             return linearize(self, self.command_to_linearize(code), operating_point,
                              inputs, backend=backend, infile=infile,

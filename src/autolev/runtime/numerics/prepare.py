@@ -23,6 +23,7 @@ from ...engine.files import safe_stem
 from .inputs import INTEGRATION, Inputs, display_name, some_names
 from .projection import constants_needed
 from ...engine.options import RunOptions
+from ...engine.outputs import Written
 from .system import NumericSystem
 
 
@@ -289,6 +290,7 @@ def missing_message(model, missing, inputs, kinds, out_dir, stem: str,
         folder.mkdir(parents=True, exist_ok=True)
         with open(template, "x", encoding="utf-8", newline="\n") as h:
             h.write(inputs.file_text(template.name, kinds))
+        Written(folder).record([template.name])     # a later run removes it, if unfilled
         text += f"; a template to fill in, with every input: {template}"
     except FileExistsError:
         text += f"; the template {template} from before is still there (fill it in)"
