@@ -295,6 +295,32 @@ def test_run_files_and_macros_are_shown_as_they_ran_and_the_transcript_replays(t
     assert report.error is None and report.count("match") == 3
 
 
+def test_a_transcript_with_user_functions_replays_from_another_folder(tmp_path):
+    # a user function's call is shown as typed (Autolev echoed its input): the session,
+    # kept elsewhere, is replayed with --model-folder, and without it the message says so
+    # on lines of their own
+    model = tmp_path / "model"
+    model.mkdir()
+    (model / "sq.r").write_text("#1#^2\n")
+    (model / "main.al").write_text("CONSTANTS L\nX = sq(L) + 1\n")
+    out = tmp_path / "tr"
+    wrote = subprocess.run([sys.executable, "-m", "autolev", "transcript", model / "main.al",
+                            "--out", out], capture_output=True, text=True)
+    assert wrote.returncode == 0, wrote.stderr
+    assert f"--model-folder {model}" in wrote.stdout
+    assert "   (2) X = sq(L) + 1" in (out / "main.all").read_text()
+    alone = subprocess.run([sys.executable, "-m", "autolev", "verify", out / "main.all"],
+                           capture_output=True, text=True)
+    assert alone.returncode == 1 and "\\x0a" not in alone.stderr
+    assert "unknown function SQ()" in alone.stderr.splitlines()[0]
+    assert alone.stderr.splitlines()[-1] == "(a session kept apart from its model finds " \
+        "the model's .a, .R and RUN files with --model-folder DIR)"
+    found = subprocess.run([sys.executable, "-m", "autolev", "verify", out / "main.all",
+                            "--model-folder", model], capture_output=True, text=True)
+    assert found.returncode == 0, found.stderr
+    assert autolev.verify(out / "main.all", folder=model).count("match") == 1
+
+
 def test_a_run_file_run_by_a_run_file_is_shown_once_as_it_ran(tmp_path):
     # BioMAC's gait2dc_stick.al RUNs gait2dc_FK.al, which RUNs gait2dc_kin.al: the inner
     # RUN's statements stand in its place, the RUN itself is not shown (it would run the

@@ -98,13 +98,15 @@ class Includes:
     files read (`files`, `sources`) and the diagnostics of reading them."""
 
     def __init__(self, filename: str, path: Path | None, parser: Parser | None = None,
-                 reserved: frozenset[str] = frozenset()):
+                 reserved: frozenset[str] = frozenset(), folder: Path | None = None):
         """`reserved`: Autolev's own commands and functions (upper case), which a file
-        of the same name beside the model does not replace."""
+        of the same name beside the model does not replace; `folder`: the model's folder
+        (its macros, functions and RUN files) when not `path`'s (a session kept apart)."""
         self.filename = filename
         self.reserved = reserved
         self.root_path = path.resolve() if path is not None else None
-        self.model_root = self.root_path.parent if self.root_path is not None else None
+        self.model_root = Path(folder).resolve() if folder is not None else \
+            self.root_path.parent if self.root_path is not None else None
         self.parser = parser or Parser()
         self.diagnostics: list[Diagnostic] = []
         self.files: list[str] = [filename]

@@ -71,10 +71,11 @@ def _gc_paused():
 
 class Builder:
     def __init__(self, filename: str, path: Path | None,
-                 reserved: frozenset[str] = frozenset()):
-        """`reserved`: Autolev's own commands and functions (see Includes)."""
+                 reserved: frozenset[str] = frozenset(), folder: Path | None = None):
+        """`reserved`, `folder`: Autolev's own commands and functions, and the model's
+        folder when not `path`'s (see Includes)."""
         self.filename = filename
-        self.includes = Includes(filename, path, reserved=reserved)
+        self.includes = Includes(filename, path, reserved=reserved, folder=folder)
         self.symbols = ir.SymbolTable()
         self.statements: list[ir.Statement] = []
         self.diagnostics: list[Diagnostic] = []

@@ -12,14 +12,16 @@ from .source import SourceFile
 from .translate import Probe, Translation, translate, vocabulary
 
 
-def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
+def parse(source: str | os.PathLike, filename: str | None = None,
+          folder: Path | None = None) -> Program:
     """Read Autolev source into a `Program`.
 
     `source` is the text of a model, or a path to read: a `pathlib.Path`, or a string
     of one line that names a file (or ends in .al, then a missing file is an error).
     `filename` names the model in diagnostics; user macros (NAME.A) and `RUN` files are
-    looked up next to it.  Raises `AutolevSyntaxError` with all diagnostics when the
-    model cannot be read, `AutolevFileError` when its file cannot.
+    looked up next to it, then in `folder` (the model's folder, for a text kept apart
+    from it: a session's transcript).  Raises `AutolevSyntaxError` with all diagnostics
+    when the model cannot be read, `AutolevFileError` when its file cannot.
     """
     source = _as_path(source)
     if isinstance(source, os.PathLike):
@@ -28,7 +30,7 @@ def parse(source: str | os.PathLike, filename: str | None = None) -> Program:
     else:
         src = SourceFile(filename or "<string>", source)
         path = Path(filename) if filename else None
-    builder = Builder(src.name, path, reserved=vocabulary())
+    builder = Builder(src.name, path, reserved=vocabulary(), folder=folder)
     builder.build_source(src)
     if builder.errors:
         raise AutolevSyntaxError(sorted(builder.diagnostics, key=sort_key))
@@ -48,11 +50,11 @@ def _as_path(source):
 
 
 def translation(source: str | os.PathLike, filename: str | None = None,
-                probes: tuple[Probe, ...] = ()) -> Translation:
+                probes: tuple[Probe, ...] = (), folder: Path | None = None) -> Translation:
     """Parse and translate; returns the `Translation` (code, line map, diagnostics), with
-    the lines keeping `probes` (translate.Probe).  Raises AutolevSyntaxError or
-    AutolevTranslationError."""
-    program = source if isinstance(source, Program) else parse(source, filename)
+    the lines keeping `probes` (translate.Probe); `folder`: as parse's.  Raises
+    AutolevSyntaxError or AutolevTranslationError."""
+    program = source if isinstance(source, Program) else parse(source, filename, folder)
     result = translate(program, probes=probes)
     errors = [d for d in result.diagnostics if d.severity == "error"]
     if errors:

@@ -18,6 +18,8 @@ executed but what the translator wrote from it.
 """
 from __future__ import annotations
 
+import bisect
+import heapq
 import math
 import re
 from dataclasses import dataclass, field
@@ -36,7 +38,9 @@ from .irbuild import Builder
 from .loader import load_translation
 from .pipeline import translation
 from .printed import read_plain
+from .engine.integrate import Progress
 from .runtime.calculus import NumericPoint
+from .runtime.steps import SlowStep
 from .runtime.symbols import Z
 from .runtime.vectors import Dyadic, Vector
 from .source import SourceFile, decode
@@ -277,11 +281,13 @@ class Replay:
 _ATTEMPTS = 6
 
 
-def replay(session: Session, p: Path, parsed: dict[int, ParsedResponse]) -> Replay:
+def replay(session: Session, p: Path, parsed: dict[int, ParsedResponse],
+           folder: Path | None = None) -> Replay:
     """Translate and run the session's model with a probe of our value of each parsed
     response's name (but a Z's) and of the value of its expression, if it has one; a
     probe our model cannot evaluate is dropped (reported as missing) and the model run
-    again."""
+    again.  `folder`: the model's folder (its macros and functions), when not the
+    session's."""
     probes: list[Probe] = []
     for k, pr in parsed.items():
         r = session.responses[k]
@@ -296,13 +302,16 @@ def replay(session: Session, p: Path, parsed: dict[int, ParsedResponse]) -> Repl
     for _attempt in range(_ATTEMPTS):
         kept = tuple(probe for probe in probes if probe.key not in failed)
         try:
-            tr = translation(session.source, str(p), kept)
+            tr = translation(session.source, str(p), kept, folder)
         except AutolevSyntaxError as exc:
             result.error = f"the model does not parse: {exc}"
             return result
         except AutolevTranslationError as exc:
             first = next(d for d in exc.diagnostics if d.severity == "error")
             result.error = f"the model does not translate: {first.format()}"
+            if first.code in ("T003", "E022") and folder is None:
+                result.error += ("\n(a session kept apart from its model finds the model's "
+                                 ".a, .R and RUN files with --model-folder DIR)")
             return result
         try:
             model = load_translation(tr, str(p))
@@ -342,9 +351,13 @@ def replay(session: Session, p: Path, parsed: dict[int, ParsedResponse]) -> Repl
     return result
 
 
-def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
+def verify(path, points: int = 3, tolerance: float = 2e-6,
+           folder: Path | None = None, progress=None) -> Report:
     """Replay the responses recorded in an `.all` session (or the `% ->` comments of a
-    `.al` file) against our translation; a Report of each response's outcome."""
+    `.al` file) against our translation; a Report of each response's outcome.
+    `folder`: the model's folder, where its macros, functions and RUN files are, when
+    the session is elsewhere (looked for beside the session first).  `progress`: a
+    stream told of steps past two seconds and of the responses compared."""
     p = Path(path)
     try:
         raw = reading.read_bytes(p)
@@ -360,14 +373,19 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
     if not session.responses:
         report.error = "no responses recorded (an .all transcript, or % -> comments)"
         return report
-    parsed, refused = parse_responses(session)
-    replayed = replay(session, p, parsed)
+    count = len(session.responses)
+    with SlowStep(progress, f"{p}: reading {count} responses"):
+        parsed, refused = parse_responses(session)
+    with SlowStep(progress, f"{p}: translating and running the session's model"):
+        replayed = replay(session, p, parsed, folder)
     if replayed.error is not None:
         report.error = replayed.error
         return report
     model = replayed.model
     sample = _SamplePoints(model, points)
+    compared = Progress(progress, 0, count, progress is not None, "responses compared")
     for k, r in enumerate(session.responses):
+        compared.update(k)
         if k in refused:
             report.outcomes.append(Outcome(r, "not comparable", refused[k]))
         elif k in replayed.theirs_missing:
@@ -389,6 +407,7 @@ def verify(path, points: int = 3, tolerance: float = 2e-6) -> Report:
             ours, known = replayed.ours[k]
             report.outcomes.append(_compare(sample.wanted(known), r, ours,
                                             replayed.theirs[k], session.path, tolerance))
+    compared.done()
     _judge_z_responses(session, parsed, report)
     return report
 
@@ -399,35 +418,58 @@ def _judge_z_responses(session: Session, parsed: dict[int, ParsedResponse],
     to print: it is compared through the first later response that uses it (directly or
     through other Z's) and could be compared."""
     responses = session.responses
-    uses = [{n.name.upper() for n in ir.walk(parsed[k].value) if isinstance(n, ir.Name)}
-            if k in parsed and parsed[k].value is not None else set()
-            for k in range(len(responses))]
+    lhs = [r.lhs.strip().upper() for r in responses]
+    # the responses using each name, in order, and where each name is given again
+    users: dict[str, list[int]] = {}
+    given: dict[str, list[int]] = {}
+    for k in range(len(responses)):
+        given.setdefault(lhs[k], []).append(k)
+        if k in parsed and parsed[k].value is not None:
+            for name in {n.name.upper() for n in ir.walk(parsed[k].value)
+                         if isinstance(n, ir.Name)}:
+                users.setdefault(name, []).append(k)
     for k, r in enumerate(responses):
         if report.outcomes[k] is not None:
             continue
-        name = r.lhs.strip().upper()
-        reach = {name}
-        judged = None
-        for j in range(k + 1, len(responses)):
-            if responses[j].lhs.strip().upper() == name:
-                break                            # Z renumbered: later uses are another's
-            if not (uses[j] & reach):
-                continue
-            if _is_z(responses[j].lhs):
-                reach.add(responses[j].lhs.strip().upper())
-                continue
-            o = report.outcomes[j]
-            if o is not None and o.status in ("match", "mismatch"):
-                judged = (o, responses[j])
-                break
+        name = lhs[k]
+        again = given[name]
+        # Z renumbered: later uses are another's
+        end = again[i] if (i := bisect.bisect_right(again, k)) < len(again) else len(lhs)
+        judged = _first_comparable_user(k, end, name, users, lhs, report.outcomes)
         if judged is None:
             report.outcomes[k] = Outcome(r, "not comparable", "Autolev's intermediate "
                                          "variable, used by no later response that could "
                                          "be compared")
         else:
-            o, user = judged
+            user = responses[judged]
+            o = report.outcomes[judged]
             report.outcomes[k] = Outcome(r, o.status, f"{o.detail}, as part of "
                                          f"({user.number}) {user.lhs}")
+
+
+def _first_comparable_user(k: int, end: int, name: str, users: dict, lhs: list,
+                           outcomes: list) -> int | None:
+    """The first response after k and before `end` that uses `name` (directly, or
+    through the Z's after k that use it) and was compared; visited in order, as a scan
+    of the responses would, but only those using a name reached."""
+    reach = {name}
+    waiting = [j for j in users.get(name, ()) if k < j < end]
+    heapq.heapify(waiting)
+    seen = set(waiting)
+    while waiting:
+        j = heapq.heappop(waiting)
+        if _is_z(lhs[j]):
+            if lhs[j] not in reach:
+                reach.add(lhs[j])
+                for later in users.get(lhs[j], ()):
+                    if j < later < end and later not in seen:
+                        seen.add(later)
+                        heapq.heappush(waiting, later)
+            continue
+        o = outcomes[j]
+        if o is not None and o.status in ("match", "mismatch"):
+            return j
+    return None
 
 
 # (seed, span of the pseudo-random values) of the points tried, in order

@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 
 from ..errors import (AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError,
-                      printable, printable_lines)
+                      printable_lines)
 from .common import UsageError, failure_diagnostics, overwrite_option, print_diagnostics
 
 
@@ -35,6 +35,12 @@ def print_transcript(path: Path, out_dir: Path | None, overwrite: bool = False) 
         print(f"autolev transcript: cannot write {target}: {exc.strerror}", file=sys.stderr)
         return 1
     print(f"wrote {target}")
+    model_folder = path.resolve().parent
+    if out_dir.resolve() != model_folder and any(
+            f.suffix.lower() == ".r" for f in model_folder.iterdir()):
+        # the transcript shows a user function's call as it was typed, as Autolev did
+        print(f"  verify it with: autolev verify {target} --model-folder {path.parent}"
+              " (its user functions' .R files are there)")
     return 0
 
 
@@ -69,18 +75,21 @@ def cmd_verify(ns: argparse.Namespace) -> int:
     path = Path(ns.file)
     if not path.exists():
         raise UsageError(f"{path}: no such file")
-    report = verify(path, points=ns.points)
+    folder = Path(ns.model_folder) if ns.model_folder else None
+    if folder is not None and not folder.is_dir():
+        raise UsageError(f"--model-folder {folder}: no such folder")
+    report = verify(path, points=ns.points, folder=folder, progress=sys.stderr)
     if ns.json:
         print(json.dumps(report.as_dict(), indent=1))
     else:
         if report.error:
-            print(printable(f"{path}: {report.error}"), file=sys.stderr)
+            print(printable_lines(f"{path}: {report.error}"), file=sys.stderr)
         for o in report.outcomes:
             if o.status == "match" and not ns.all:
                 continue
             r = o.response
-            line = printable(f"{path}:{r.line}: ({r.number}) {r.lhs}: {o.status}: "
-                             f"{o.detail}")
+            line = printable_lines(f"{path}:{r.line}: ({r.number}) {r.lhs}: {o.status}: "
+                                   f"{o.detail}")
             if o.status == "mismatch" and o.ours is not None:
                 line += f"\n    ours {_short(o.ours)}\n    Autolev's {_short(o.theirs)}"
             print(line)
@@ -120,4 +129,8 @@ def add_verify(sub) -> None:
     ver.add_argument("--all", action="store_true", help="list the matches too")
     ver.add_argument("--points", type=int, default=3, metavar="N",
                      help="sample points per response (default 3)")
+    ver.add_argument("--model-folder", metavar="DIR",
+                     help="the model's folder, where its macro (.a), function (.R) and RUN "
+                     "files are, for a session kept elsewhere (a transcript written with "
+                     "--out); looked in after the session's own folder")
     ver.set_defaults(func=cmd_verify)
