@@ -579,3 +579,61 @@ def test_real_models_are_drawn_as_skeletons(corpus, tmp_path, case, fixed, joint
     lo, hi = m.view_box()
     points = m.picture.reshape(-1, 3)
     assert np.all(lo <= points.min(axis=0)) and np.all(points.max(axis=0) <= hi)
+
+
+CHAIN_OF_MASS_CENTRES = """NEWTONIAN N
+BODIES A, B, C
+MOTIONVARIABLES' Q{3}', U{3}'
+CONSTANTS L1, L2, L3, M, G
+SIMPROT(N, A, 3, Q1)
+SIMPROT(N, B, 3, Q2)
+SIMPROT(N, C, 3, Q3)
+Q1' = U1
+Q2' = U2
+Q3' = U3
+P_NO_AO> = L1/2*A1>
+P_NO_BO> = L1*A1> + L2/2*B1>
+P_NO_CO> = L1*A1> + L2*B1> + L3/2*C1>
+V_AO_N> = DT(P_NO_AO>, N)
+V_BO_N> = DT(P_NO_BO>, N)
+V_CO_N> = DT(P_NO_CO>, N)
+MASS A = M, B = M, C = M
+INERTIA A, 0, 0, M*L1^2/12
+INERTIA B, 0, 0, M*L2^2/12
+INERTIA C, 0, 0, M*L3^2/12
+{centre}
+GRAVITY(G*N1>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT L1 = 1, L2 = 0.8, L3 = 0.6, M = 1, G = 9.81, Q1 = 0.5, Q2 = 1, Q3 = 1.5
+INPUT TFINAL = 0.5, INTEGSTP = 0.1
+OUTPUT Q1, Q2, Q3
+CODE DYNAMICS() chain.c
+"""
+
+
+@pytest.mark.parametrize("centre", ["", "POINTS CM\nP_NO_CM> = CM(NO)"])
+def test_a_chain_known_by_its_mass_centres_is_drawn_through_its_joints(tmp_path, centre):
+    # no joint is a named point: each link's end is where the model's next part begins
+    # (L1*A1>, then L2*B1> on), found along the links to the mass centres; the system's
+    # mass centre, a weighted sum, passes no joint (its link is drawn whole)
+    path = tmp_path / "chain.al"
+    path.write_text(CHAIN_OF_MASS_CENTRES.replace("{centre}", centre))
+    model = autolev.load(path)
+    result = model.simulate()
+    m = animation.motion(model, result, max_frames=6)
+    names = ["NO", "AO", "A/B", "BO", "B/C", "CO"]
+    assert [n for n in m.names if n != "CM"] == names
+    assert sorted((m.names[a], m.names[b]) for a, b in m.edges if "CM" not in
+                  (m.names[a], m.names[b])) == [
+        ("A/B", "B/C"), ("A/B", "BO"), ("B/C", "CO"), ("NO", "A/B"), ("NO", "AO")]
+    drawn = [m.names.index(n) for n in names]
+    for k in range(len(m.times)):
+        q1, q2, q3 = (np.interp(m.times[k], result.t, result.outputs[0][n])
+                      for n in ("Q1", "Q2", "Q3"))
+        a, b, c = ([math.cos(q), math.sin(q), 0.0] for q in (q1, q2, q3))
+        joint_ab = np.array(a)
+        joint_bc = joint_ab + 0.8 * np.array(b)
+        by_hand = [np.zeros(3), 0.5 * np.array(a), joint_ab, joint_ab + 0.4 * np.array(b),
+                   joint_bc, joint_bc + 0.3 * np.array(c)]
+        assert np.allclose(m.xyz[k][drawn], by_hand, atol=1e-6)

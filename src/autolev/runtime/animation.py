@@ -12,6 +12,13 @@ What is drawn follows rules of this tool (Autolev drew nothing itself):
   is the chain and not a fan from the point every output is measured from.  Any other
   such link closes a loop (a four-bar or parallelogram with its last side positioned)
   and is drawn.
+* **Joints.** A link written in several frames (P_NO_BO> = L1*A1> + L2/2*B1>) is split
+  part by part where each point it passes is known: a point the links already reach by
+  that partial sum, or, on a link to a body's mass centre whose last part is in that
+  body's frame, the end of a part that runs along a link the model gave from the same
+  start, to or beyond that link's end (P_NO_AO> = L1/2*A1>: a joint at L1*A1>).  Such a
+  joint is drawn but not labelled (the model never named it); a two-link chain is then
+  drawn as a chain and not as a fan from the pivot.
 * **Segments.** A link whose length and measure numbers along N's own axes both change
   (over the run or at the probe state) places the figure in N rather than being part of
   it (P_O_P1> = Q1*N1> + Q2*N2>, or P_O_CM> = CM(O) built on it): it is not drawn, nor
@@ -59,6 +66,7 @@ import sympy as sm
 
 from ..engine.errors import AutolevModelError
 from .numerics.inputs import Inputs, display_name
+from .point import Body
 from .vectors import Vector
 
 # frames drawn at most: more rows are sampled evenly (the page and the GIF stay small)
@@ -223,6 +231,7 @@ def motion(model, result, max_frames: int = MAX_FRAMES, overrides=None) -> Motio
                      f"{'it' if one else 'them'}): "
                      + "; ".join(([f"{_some(left_out)} not drawn"] if left_out else [])
                                  + (["down not known from GRAVITY"] if down_unknown else [])))
+    points, links = _split_at_joints(points, links)
     exprs = [e for link in links for e in _link_expressions(link.vector, newtonian)]
     exprs += [e for g in gravity for e in g.to_matrix(newtonian)]
     rows = np.unique(np.linspace(0, len(result.t) - 1, min(max_frames, len(result.t)))
@@ -285,6 +294,105 @@ def _links(points, usable=None) -> list[_Link]:
                 if usable is None or usable(vector):
                     found.append(_Link(a, index[q], vector, _locality(vector)))
     return sorted(found, key=lambda link: link.locality)
+
+
+@dataclass(eq=False)
+class _Joint:
+    """Where a link's part in one frame ends and its part in the next begins
+    (P_NO_BO> = L1*A1> + L2/2*B1>: at L1*A1> from NO); not one of the model's points."""
+
+    name: str
+
+
+def _split_at_joints(points, links) -> tuple[list, list[_Link]]:
+    """Each link with measure numbers in several frames split, part by part in the
+    order the model wrote them, where every point it passes is known: a point already
+    reached from the link's start by that partial sum (a link's end, or a joint made
+    before); or, on a link to a body's mass centre whose last part is in the body's
+    frame, a joint at the end of a part that runs along a link the model gave from the
+    part's start, in its frame, to or beyond that link's end (P_NO_AO> = L1/2*A1> and
+    P_NO_BO> = L1*A1> + L2/2*B1>: a joint at L1*A1>).  Any other link is kept whole (the
+    system's mass centre, a weighted sum, passes no joint), and a part that is a link
+    already taken is not taken again."""
+    points = list(points)
+    reached = {}                     # (point, vector's key) -> the point it reaches
+    along: dict[int, list] = {}      # point -> the one-frame vectors from it
+    for link in links:
+        reached[(link.a, _vector_key(link.vector))] = link.b
+        reached[(link.b, _vector_key(-link.vector))] = link.a
+        if len(link.vector.terms) == 1:
+            along.setdefault(link.a, []).append(link.vector)
+            along.setdefault(link.b, []).append(-link.vector)
+    split = []
+    for link in links:
+        if len(link.vector.terms) < 2:
+            split.append(link)
+            continue
+        start, end, vector = _toward_mass_centre(link, points)
+        frames = list(vector.terms)
+        pieces = [Vector({f: vector.terms[f]}) for f in frames]
+        joints_allowed = _is_mass_centre_of(points[end], frames[-1])
+        ends = []                    # each part's end: a point's index, or None (a joint)
+        here, total = start, Vector()
+        for k, piece in enumerate(pieces):
+            total = total + piece
+            there = end if k == len(pieces) - 1 else reached.get((start, _vector_key(total)))
+            if there is None and not (joints_allowed and any(
+                    _runs_to_or_beyond(piece, v) for v in along.get(here, ()))):
+                break
+            ends.append(there)
+            here = there
+        if len(ends) < len(pieces):
+            split.append(link)
+            continue
+        here, total = start, Vector()
+        for k, (piece, there) in enumerate(zip(pieces, ends)):
+            total = total + piece
+            joint = there is None
+            if joint:
+                there = len(points)
+                points.append(_Joint(f"{frames[k].name}/{frames[k + 1].name}"))
+            if joint or reached.get((here, _vector_key(piece))) != there:
+                reached[(here, _vector_key(piece))] = there
+                reached[(there, _vector_key(-piece))] = here
+                along.setdefault(here, []).append(piece)
+                along.setdefault(there, []).append(-piece)
+                split.append(_Link(here, there, piece, _locality(piece)))
+            reached.setdefault((start, _vector_key(total)), there)
+            here = there
+    return points, sorted(split, key=lambda link: link.locality)
+
+
+def _is_mass_centre_of(point, frame) -> bool:
+    return isinstance(frame, Body) and frame.masscenter is point
+
+
+def _toward_mass_centre(link, points) -> tuple:
+    """(start, end, vector from start): the link walked toward its end that is the mass
+    centre of the body its first part (walked back) is in, else as the model gave it."""
+    frames = list(link.vector.terms)
+    if _is_mass_centre_of(points[link.a], frames[0]):
+        backward = {f: tuple(-c for c in link.vector.terms[f]) for f in reversed(frames)}
+        return link.b, link.a, Vector(backward)
+    return link.a, link.b, link.vector
+
+
+def _runs_to_or_beyond(piece, given) -> bool:
+    """Whether `piece` is `given` (both in one frame) times a number of at least 1."""
+    (frame, comps), = piece.terms.items()
+    if frame not in given.terms:
+        return False
+    base = given.terms[frame]
+    k = next(i for i, c in enumerate(base) if c != 0)
+    ratio = sm.simplify(comps[k] / base[k])
+    return bool(ratio.is_number and ratio.is_real and ratio >= 1 and
+                all(sm.simplify(c - ratio * b) == 0 for c, b in zip(comps, base)))
+
+
+def _vector_key(vector) -> tuple:
+    """A vector's measure numbers, expanded, by frame: equal for equal sums."""
+    return tuple(sorted((id(f), tuple(sm.expand(c) for c in comps))
+                        for f, comps in vector.terms.items()))
 
 
 def _locality(vector) -> tuple:
@@ -413,7 +521,8 @@ class _Figure:
         return _Drawing([self.points[k].name for k in order], self.xyz[:, order], edges,
                         [SEGMENT] * len(edges),
                         [i for i, k in enumerate(order) if self.points[k] in heavy],
-                        {i for i, k in enumerate(order) if self.points[k] in masscenters},
+                        {i for i, k in enumerate(order) if self.points[k] in masscenters
+                         or isinstance(self.points[k], _Joint)},
                         self.notes)
 
 
@@ -449,6 +558,8 @@ def _fixed_points(model, points) -> set:
     newtonian = model.newtonian_frame
     fixed = set()
     for p in points:
+        if isinstance(p, _Joint):
+            continue           # placed by its links only
         if p is newtonian.declared_origin:
             fixed.add(p)
         elif p.has_vel(newtonian):
