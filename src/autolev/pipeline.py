@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
-from .errors import AutolevSyntaxError, AutolevTranslationError
+from .errors import AutolevSyntaxError, AutolevTranslationError, Diagnostic
 from .ir import Program
 from .irbuild import Builder, sort_key
 from .source import SourceFile
@@ -39,6 +40,36 @@ def parse(source: str | os.PathLike, filename: str | None = None,
     return program
 
 
+def diagnostics(path: Path, macro: bool = False) -> list:
+    """Every diagnostic of the file at `path` (a macro's text when `macro`), in file
+    order: the syntax, then, for the statements that read, what the translation finds
+    (one round: a name only a line that did not read declares is not reported again).
+    Nothing is built or run."""
+    src = SourceFile.read(path, str(path))
+    builder = Builder(src.name, path, reserved=vocabulary())
+    if macro:
+        builder.build_macro_source(src)
+        return sorted(builder.diagnostics, key=sort_key)
+    builder.build_source(src)
+    program = builder.program()
+    more = [d for d in translate(program).diagnostics[len(program.diagnostics):]
+            if not _follows_from(d, builder.errors)]
+    return sorted(builder.diagnostics + more, key=sort_key)
+
+
+def _follows_from(d: Diagnostic, syntax_errors: list[Diagnostic]) -> bool:
+    """Whether a translation diagnostic only repeats a syntax error: a name it calls
+    undeclared or of the wrong kind is a word of a line that did not read (whose
+    declaration or definition is then missing)."""
+    if d.code not in ("T002", "T008") or not syntax_errors:
+        return False
+    words = {w.lower() for e in syntax_errors
+             for w in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", e.source_line or "")}
+    named = re.findall(r"'([A-Za-z_][A-Za-z0-9_]*)", d.message)
+    named += re.findall(r"^([A-Za-z_][A-Za-z0-9_]*) has no value", d.message)
+    return any(n.lower() in words for n in named)
+
+
 def _as_path(source):
     """A string that is a file's name, as a Path; model text is left as it is."""
     if not isinstance(source, str) or "\n" in source or "\r" in source:
@@ -67,4 +98,4 @@ def transpile(source: str | os.PathLike, filename: str | None = None) -> str:
     return translation(source, filename).code
 
 
-__all__ = ["parse", "translation", "transpile"]
+__all__ = ["diagnostics", "parse", "translation", "transpile"]

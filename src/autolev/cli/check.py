@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import re
 import sys
 from pathlib import Path
 
@@ -30,34 +29,8 @@ def check_file(path: Path) -> list[Diagnostic]:
     then (for a model that reads) everything the translation finds -- undeclared
     names, wrong kinds, unknown functions -- so that a clean check means the model
     converts.  Nothing is built or run."""
-    from ..irbuild import Builder, sort_key
-    from ..source import SourceFile
-    from ..translate import translate, vocabulary
-
-    src = SourceFile.read(path, str(path))
-    builder = Builder(src.name, path, reserved=vocabulary())
-    if path.suffix.lower() in MACRO_SUFFIXES:
-        builder.build_macro_source(src)
-        return sorted(builder.diagnostics, key=sort_key)
-    builder.build_source(src)
-    program = builder.program()
-    # the statements that read are translated even when others did not: one round
-    more = [d for d in translate(program).diagnostics[len(program.diagnostics):]
-            if not _follows_from(d, builder.errors)]
-    return sorted(builder.diagnostics + more, key=sort_key)
-
-
-def _follows_from(d: Diagnostic, syntax_errors: list[Diagnostic]) -> bool:
-    """Whether a translation diagnostic only repeats a syntax error: a name it calls
-    undeclared or of the wrong kind is a word of a line that did not read (whose
-    declaration or definition is then missing)."""
-    if d.code not in ("T002", "T008") or not syntax_errors:
-        return False
-    words = {w.lower() for e in syntax_errors
-             for w in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", e.source_line or "")}
-    named = re.findall(r"'([A-Za-z_][A-Za-z0-9_]*)", d.message)
-    named += re.findall(r"^([A-Za-z_][A-Za-z0-9_]*) has no value", d.message)
-    return any(n.lower() in words for n in named)
+    from ..pipeline import diagnostics
+    return diagnostics(path, macro=path.suffix.lower() in MACRO_SUFFIXES)
 
 
 def cmd_check(ns: argparse.Namespace) -> int:

@@ -35,8 +35,8 @@ def failure_diagnostics(path: Path, exc) -> list:
     that did read are translated too, so every command shows the errors in one round."""
     if not isinstance(exc, AutolevSyntaxError) or path.suffix.lower() == ".py":
         return exc.diagnostics
-    from .check import check_file
-    return check_file(path)
+    from ..pipeline import diagnostics
+    return diagnostics(path)
 
 
 def print_warning(message, category, filename, lineno, file=None, line=None):
