@@ -20,7 +20,8 @@ def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
     """Bodies and particles whose mass (or a principal inertia) is negative or not a
     number (and, with `zero`, zero) as the run uses them: a constant its equations do
     not contain (a planar model's I11 or I12) counts as 0 and never had a value chosen
-    for it, and a mass or inertia holding one is not called zero or singular."""
+    for it: a mass or inertia holding one is not called zero or singular, and an axis
+    whose moment holds one is left out of the principal inertias judged."""
     m = system.model
     values = {p: inputs.internal(p) for p in system.params}
     # a sweep asks at every point: what depends only on the model is found once, and
@@ -29,7 +30,7 @@ def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
     plan = kept.get(tuple(system.params))
     if plan is None:
         plan = kept[tuple(system.params)] = _inertia_plan(m, values)
-    masses, partial, unused, held = plan
+    masses, partial, judged_axes, unused, held = plan
     key = (tuple(system.params), zero, tuple(values[p] for p in held))
     if kept.get("last", (None,))[0] == key:
         return kept["last"][1]
@@ -43,8 +44,9 @@ def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
     for name, mass_expr, inertia in masses:
         mass_partial, inertia_partial = partial[name]
         mass = num(mass_expr)
-        principal = [] if inertia is None else principal_inertias(
-            np.array([[num(inertia[i, j]) for j in range(3)] for i in range(3)]))
+        axes = judged_axes[name]
+        principal = [] if inertia is None or not axes else principal_inertias(
+            np.array([[num(inertia[i, j]) for j in axes] for i in axes]))
         zero_mass = zero and not mass_partial
         if math.isinf(mass) or not all(map(math.isfinite, principal)):
             out.append(f"{name} has a {'mass' if math.isinf(mass) else 'central inertia'} "
@@ -66,7 +68,8 @@ def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
 
 def _inertia_plan(m, values: dict) -> tuple:
     """(masses with their central inertias, which hold constants the run does not use,
-    those constants, the constants of the run they hold) of the model as it stands."""
+    the axes of each inertia whose moment holds none, those constants, the constants of
+    the run they hold) of the model as it stands."""
     unused = set()
 
     def primitives(e):
@@ -94,11 +97,16 @@ def _inertia_plan(m, values: dict) -> tuple:
     partial = {name: (unused_in(mass), inertia is not None
                       and any([unused_in(e) for e in inertia]))
                for name, mass, inertia in masses}
+    # a principal submatrix of a body's inertia is positive semidefinite when the whole
+    # is: the axes the run reads are judged whatever the numbers on the others
+    judged_axes = {name: [] if inertia is None
+                   else [i for i in range(3) if not (primitives(inertia[i, i]) & unused)]
+                   for name, _, inertia in masses}
     held = set()
     for _, mass, inertia in masses:
         for e in [mass] + ([] if inertia is None else list(inertia)):
             held |= primitives(e)
-    return masses, partial, unused, [p for p in values if p in held]
+    return masses, partial, judged_axes, unused, [p for p in values if p in held]
 
 
 def principal_inertias(numbers) -> list[float]:
