@@ -2,7 +2,7 @@
 """Fuzzing: no input may end in a Python traceback, a hang, a blown memory limit, a file
 written or read outside its place, or a wrong answer.
 
-Five modes.
+Six modes.
 
 mutation (the default): takes the models of the public corpus (or, without it, the
 project's own examples), mutates them (characters and lines deleted, inserted,
@@ -47,6 +47,11 @@ thread at once: on worker processes, on a shared thread pool or process pool, lo
 in the thread or before; now and then one more afterwards on workers forked from the
 worker.  Each table must be the one the same sweep gives alone in one process.
 
+stale: a command run on a small model, ONE input changed at a random moment (an .in
+value, a statement, a macro or RUN file, --set, --specified, a number knob, a file
+added), the command run twice more: each answer must be a fresh run's of the final
+inputs in an empty cache (bench/fuzz_stale.py says how; outcomes stale and error).
+
 Each case is written (under its own file name) into a private folder of a long-lived
 worker subprocess, which parses, translates and loads it (`autolev.parse`,
 `autolev.translation`, `autolev.loader.load_translation`), or runs its commands
@@ -90,7 +95,8 @@ slowest cases of each mode and seed.  The exit status is 1 on any failure.
         # (DIR/case, DIR/outside) and its commands printed
 
 One file over 600 lines on purpose: the script is also its own worker subprocess
-(`--worker`), which must run from a checkout with nothing of the bench but itself.
+(`--worker`), which must run from a checkout with nothing of the bench but itself (and
+fuzz_stale.py, the stale mode, beside it).
 """
 from __future__ import annotations
 
@@ -123,6 +129,10 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "src"))
 
 import autolev  # noqa: E402
+
+if str(Path(__file__).resolve().parent) not in sys.path:     # loaded by path (the tests)
+    sys.path.append(str(Path(__file__).resolve().parent))
+import fuzz_stale  # noqa: E402
 
 # characters that matter to the lexer, plus some that never should appear
 ALPHABET = ("abcdefghijklmnopqrstuvwxyzQ0123456789 \t\n\r&%'><=+-*/^()[]{},;:._#$\\\"!?@~`|"
@@ -282,6 +292,7 @@ class Case:
     strays: list = field(default_factory=list)      # files named as Autolev's own words
     commands: list = field(default_factory=list)    # autolev's arguments, per command
     sweeps: list = field(default_factory=list)      # threads mode: one per thread
+    change: dict = field(default_factory=dict)      # stale mode: what changes, when
 
 
 def log_uniform(rng: random.Random, lo: int, hi: int) -> int:
@@ -1516,9 +1527,15 @@ def threads_case(seed: int, index: int) -> Case:
                 sweeps=sweeps)
 
 
+def stale_case(seed: int, index: int) -> Case:
+    """Case `index` of seed `seed` of the stale mode (bench/fuzz_stale.py)."""
+    return Case(**fuzz_stale.stale_case(seed, index))
+
+
 MODES = {"grammar": (GENERATORS, None), "files": (FILES_GENERATORS, files_case),
          "commands": (COMMANDS_GENERATORS, commands_case),
-         "threads": (THREADS_GENERATORS, threads_case)}
+         "threads": (THREADS_GENERATORS, threads_case),
+         "stale": (fuzz_stale.GENERATORS, stale_case)}
 
 
 def make_case(mode: str, seed: int, index: int) -> Case:
@@ -2011,7 +2028,7 @@ def judge_sweeps(case: Case, tables: list, failures: list, truths: list) -> list
 
 
 CHECKS = {"files": check_files_case, "commands": check_commands_case,
-          "threads": check_threads_case}
+          "threads": check_threads_case, "stale": fuzz_stale.check_stale_case}
 
 
 def worker_main(folder: Path, memory_mb: int) -> int:
@@ -2212,14 +2229,15 @@ def run_cases(cases: list[Case], jobs: int = 1, timeout: float = 60.0,
 # Reports
 
 OUTCOMES = ("ok", "diagnosed", "crash", "hang", "memory", "escaped", "clobbered", "leftover",
-            "wrong")
+            "wrong", "stale", "error")
 FAILURES = OUTCOMES[2:]
 # what each mode can tell ("-" in the table for the rest)
 MEASURED = {"mutation": ("ok", "diagnosed", "crash"), "grammar": OUTCOMES[:6],
             "files": OUTCOMES[:6] + ("wrong",), "commands": OUTCOMES,
-            "threads": OUTCOMES[:5] + ("wrong",)}
+            "threads": OUTCOMES[:5] + ("wrong",), "stale": fuzz_stale.OUTCOMES}
 # seconds a case may take, by mode (--timeout overrides)
-TIMEOUTS = {"grammar": 60.0, "files": 120.0, "commands": 180.0, "threads": 120.0}
+TIMEOUTS = {"grammar": 60.0, "files": 120.0, "commands": 180.0, "threads": 120.0,
+            "stale": 900.0}
 
 
 @dataclass
@@ -2235,14 +2253,15 @@ class Row:
 
 def table(rows: list[Row], first: str) -> str:
     width = {o: max(len(o), 5) for o in OUTCOMES}
-    head = (f"{first:<10} {'seed':>4} {'cases':>6} "
+    label = max([10] + [len(r.label) for r in rows])
+    head = (f"{first:<{label}} {'seed':>4} {'cases':>6} "
             + " ".join(f"{o:>{width[o]}}" for o in OUTCOMES)
             + f" {'slowest s':>9} {'peak RSS MB':>11} {'total s':>8}")
     out = [head, "-" * len(head)]
     for r in rows:
         counts = " ".join(f"{r.outcomes[o] if o in r.measured else '-':>{width[o]}}"
                           for o in OUTCOMES)
-        out.append(f"{r.label:<10} {r.seed:>4} {sum(r.outcomes.values()):>6} {counts} "
+        out.append(f"{r.label:<{label}} {r.seed:>4} {sum(r.outcomes.values()):>6} {counts} "
                    f"{r.slowest:>9.2f} {r.peak_rss_mb:>11.0f} {r.total:>8.1f}")
     return "\n".join(out)
 
@@ -2269,6 +2288,7 @@ def describe(case: Case) -> str:
               in case.links.items()]
     parts += ["$ autolev " + " ".join(argv) for argv in case.commands]
     parts += [f"sweep: {json.dumps(spec)}" for spec in case.sweeps]
+    parts += fuzz_stale.described(case) if case.mode == "stale" else []
     return "\n".join(parts)
 
 
@@ -2325,6 +2345,8 @@ def grammar_rows(seed: int, n: int, jobs: int, timeout: float, memory_mb: int,
 def write_case(case: Case, into: Path) -> list[str]:
     """A case's files written into a folder as the worker makes them (case/, outside/);
     its commands, as they are run there."""
+    if case.mode == "stale":
+        return fuzz_stale.write_case(case, into)
     into.mkdir(parents=True, exist_ok=True)
     case_dir, _ = set_up(case, into)
     model = case_dir / case.filename
@@ -2359,7 +2381,7 @@ def main() -> int:
     global CORPUS
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--mode", default="mutation",
-                    help="mutation, grammar, files, commands, threads, or several "
+                    help="mutation, grammar, files, commands, threads, stale, or several "
                     "comma-separated; all: every one")
     ap.add_argument("--mutants", type=int, default=10000, help="mutation mode: mutants")
     ap.add_argument("--cases", type=int, default=10000, help="other modes: cases per seed")
@@ -2372,7 +2394,7 @@ def main() -> int:
     ap.add_argument("--jobs", type=int, default=1, help="other modes: worker processes")
     ap.add_argument("--timeout", type=float,
                     help="seconds per case (default: grammar and files 60, commands 180, "
-                    "threads 120)")
+                    "threads 120, stale 900)")
     ap.add_argument("--memory-mb", type=int, default=2048, help="worker memory limit")
     ap.add_argument("--corpus", type=Path, default=CORPUS)
     ap.add_argument("--replay", metavar="SEED:INDEX",
@@ -2390,7 +2412,7 @@ def main() -> int:
     unknown = [m for m in modes if m != "mutation" and m not in MODES]
     if unknown:
         ap.error(f"--mode: no mode {', '.join(unknown)}")
-    CORPUS = ns.corpus
+    CORPUS = fuzz_stale.CORPUS = ns.corpus
     if ns.replay:
         seed, index = (int(x) for x in ns.replay.split(":"))
         mode = "grammar" if modes == ["mutation"] else modes[0]

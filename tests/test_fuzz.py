@@ -266,3 +266,157 @@ def test_replay_writes_a_case_and_its_commands(tmp_path):
     assert (tmp_path / "case" / case.filename).is_file()
     for name, (kind, _) in case.links.items():
         assert (tmp_path / "case" / name).is_symlink() == (kind == "symlink")
+
+
+# -- stale mode ---------------------------------------------------------------------
+stale = fuzz.fuzz_stale
+HARMONIC = ROOT / "tests" / "data" / "numerics" / "harmonic.al"
+
+
+def test_stale_cases_are_deterministic_and_change_one_input_each():
+    cases = [fuzz.make_case("stale", 5, i) for i in range(300)]
+    assert cases == [fuzz.make_case("stale", 5, i) for i in range(300)]
+    assert {c.generator for c in cases} == set(stale.GENERATORS)
+    assert {c.change["command"] for c in cases} == set(stale.COMMAND_WEIGHTS)
+    for c in cases:
+        kind = c.change["kind"]
+        first, after = c.commands
+        knobs_first, knobs_after = c.change["knobs"]
+        # the change is the kind's and no other
+        assert (first != after) == (kind in ("set", "specified")), c
+        assert (knobs_first != knobs_after) == (kind == "env"), c
+        assert bool(c.change["edits"]) == (kind in ("model", "macro", "run-file", "added")), c
+        assert (c.change["in_edit"] is not None) == (kind == "in"), c
+        for name, text in c.change["edits"].items():
+            files = {c.filename: c.text, **c.files}
+            assert (name in files) == (kind != "added") and files.get(name) != text, c
+    # the models: examples, generated chains with macros and RUN files, files added
+    sources = " ".join(c.change["source"] for c in cases)
+    assert "example" in sources and "macros" in sources and "run-file" in sources
+    assert {"missing-variant", "missing-macro", "missing-run", "missing-function"} <= \
+        set(sources.split())
+
+
+def harmonic_case(moment: str = "locked") -> "fuzz.Case":
+    """harmonic.al run, its spring's INPUT K = 4 made 9 at `moment`."""
+    text = HARMONIC.read_text()
+    edited = text.replace("INPUT K = 4", "INPUT K = 9")
+    assert edited != text
+    argv = ["run", "--out", "{out}", "-q", "harmonic.al"]
+    change = {"kind": "model", "moment": moment, "command": "run",
+              "source": "example harmonic", "edits": {"harmonic.al": edited},
+              "in_file": False, "in_edit": None, "knobs": [{}, {}], "delay": 0.3,
+              "write": "replace", "warm": False, "link_sleep": 0.5}
+    return fuzz.Case(0, f"model@{moment}", "harmonic.al", text, mode="stale",
+                     commands=[argv, list(argv)], change=change)
+
+
+@pytest.fixture(scope="module")
+def stale_shared(tmp_path_factory):
+    """The folder a fuzz run's workers share (the fresh answers kept there)."""
+    return tmp_path_factory.mktemp("stale-shared")
+
+
+def test_an_answer_moved_by_the_change_is_ok(stale_shared):
+    folder = stale_shared / "worker-ok"
+    folder.mkdir()
+    result = stale.check_stale_case(harmonic_case(), folder)
+    # the first command's answer (of K = 4) is not the fresh one: a run repeating it would
+    # be found
+    assert (result["outcome"], result["stage"]) == ("ok", "run:moved"), result["detail"]
+
+
+@pytest.mark.parametrize("second_run, outcome, said", [
+    ("the first run's files", "stale", "the answer of the old inputs"),
+    ("exit status 1", "error", "an exit status other than the fresh run's"),
+])
+def test_a_wrong_second_run_is_found(stale_shared, monkeypatch, second_run, outcome, said):
+    folder = stale_shared / f"worker-{outcome}"
+    folder.mkdir()
+    really_finishes = stale.Running.finish
+
+    def finishes_wrongly(self):
+        ran = really_finishes(self)
+        if self.label != "out2":
+            return ran
+        if second_run == "exit status 1":
+            return stale.replace(ran, status=1)
+        fuzz.shutil.rmtree(ran.out)
+        fuzz.shutil.copytree(self.session.work / "out1", ran.out)
+        return ran
+    monkeypatch.setattr(stale.Running, "finish", finishes_wrongly)
+    result = stale.check_stale_case(harmonic_case(), folder)
+    assert (result["outcome"], result["stage"]) == (outcome, "out2"), result["detail"]
+    assert said in result["detail"] and "timeline:" in result["detail"]
+
+
+def test_a_crash_is_exit_status_70_a_signal_or_a_traceback():
+    def ended(status, stderr=""):
+        return stale.Ran("out2", ["run"], {}, status, "", stderr, 0.0, 1.0, None)
+    assert stale.crashed(ended(0)) is None and stale.crashed(ended(1, "error: ...")) is None
+    assert stale.crashed(ended(None)) is None           # over time: a hang
+    assert stale.crashed(ended(70)) and stale.crashed(ended(-9))
+    assert stale.crashed(ended(1, "Traceback (most recent call last):\n"))
+
+
+def test_fresh_answers_are_kept_by_the_final_inputs(tmp_path, monkeypatch):
+    files = {"harmonic.al": HARMONIC.read_bytes()}
+    argv = ["run", "--out", "{out}", "-q", "harmonic.al"]
+    answer = stale.fresh_answer(tmp_path, tmp_path / "w", files, "run", argv, {})
+    assert answer["status"] == 0 and "file harmonic.1" in answer["parts"]
+    runs = []
+
+    def counted(self, label, argv, knobs):
+        runs.append(argv)
+        return stale.Ran(label, argv, knobs, 0, "", "", 0.0, 0.0, None)
+    monkeypatch.setattr(stale.Session, "run", counted)
+    assert stale.fresh_answer(tmp_path, tmp_path / "w", dict(files), "run", argv, {}) == answer
+    assert runs == []
+    other = {"harmonic.al": files["harmonic.al"].replace(b"K = 4", b"K = 5")}
+    assert stale.fresh_answer(tmp_path, tmp_path / "w", other, "run", argv, {})["parts"] == {}
+    assert len(runs) == 1
+
+
+def test_a_command_over_its_time_limit_is_killed_with_its_background_child(tmp_path,
+                                                                          monkeypatch):
+    monkeypatch.setattr(stale, "COMMAND_SECONDS", 3.0)
+    model_dir = tmp_path / "model"
+    model_dir.mkdir()
+    fuzz.shutil.copy(HARMONIC, model_dir)
+    session = stale.Session(tmp_path, model_dir, stale.slow_compiler(tmp_path))
+    # a million seconds in Python's RK45: the work goes on in the command's child
+    ran = session.run("long", ["run", "--out", "{out}", "--tfinal", "1e6", "--method", "rk45",
+                               "harmonic.al"], {})
+    assert ran.status is None and 3 <= ran.ended - ran.began < 10
+    session.end()
+    assert stale.tagged(session.tag) == []
+
+
+def test_a_stale_case_replays_by_hand(tmp_path):
+    case = harmonic_case("during")
+    commands = fuzz.write_case(case, tmp_path)
+    assert (tmp_path / "model" / "harmonic.al").read_text() == case.text
+    assert "INPUT K = 9" in (tmp_path / "change" / "harmonic.al").read_text()
+    # the first command in the background, the file changed while it runs
+    started = next(k for k, c in enumerate(commands) if c.endswith(" &"))
+    assert commands[started + 1:started + 4] == ["sleep 0.3", "cp {} harmonic.al".format(
+        tmp_path / "change" / "harmonic.al"), "wait"]
+    assert any("AUTOLEV_FOREGROUND=1" in c and "fresh-cache" in c for c in commands)
+
+
+def test_fixed_seed_stale_cases_are_never_stale():
+    # an .in value edited while the background child holds the lock; a missing RUN file
+    # added while a model without CODE runs (a kept outcome)
+    cases = [fuzz.make_case("stale", 2024, i) for i in (24, 13)]
+    assert [c.generator for c in cases] == ["in@locked", "added@during"]
+    assert [c.change["command"] for c in cases] == ["run", "outcome"]
+    results = fuzz.run_cases(cases, jobs=1, timeout=300)
+    assert [r.outcome for r in results] == ["ok"] * 2, [r.detail for r in results]
+
+
+@pytest.mark.slow
+def test_more_fixed_seed_stale_cases_are_never_stale():
+    cases = [fuzz.make_case("stale", 2024, i) for i in range(40)]
+    results = fuzz.run_cases(cases, jobs=2, timeout=300)
+    assert not [r for r in results if r.outcome != "ok"], \
+        [(r.index, r.outcome, r.detail) for r in results if r.outcome != "ok"]
