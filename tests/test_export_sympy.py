@@ -105,5 +105,6 @@ def test_values_come_from_an_in_file_and_set_as_a_run_takes_them(tmp_path, capsy
                  "-o", str(script), "-q"]) == 0
     constants = {str(k): v for k, v in runpy.run_path(str(script))["constants"].items()}
     assert constants["L2"] == 2.0 and constants["M1"] == 3.0 and constants["L1"] == 1.0
-    assert main(["convert", str(source), "--in", "x.in"]) == 2
+    assert main(["convert", str(source), "--in",
+                 str(tmp_path / "run" / "double_pendulum.in")]) == 2
     assert "--in and --set give the values of a --to sympy script" in capsys.readouterr().err
