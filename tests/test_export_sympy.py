@@ -108,3 +108,27 @@ def test_values_come_from_an_in_file_and_set_as_a_run_takes_them(tmp_path, capsy
     assert main(["convert", str(source), "--in",
                  str(tmp_path / "run" / "double_pendulum.in")]) == 2
     assert "--in and --set give the values of a --to sympy script" in capsys.readouterr().err
+
+
+def test_the_script_of_a_matlab_program_integrates_as_its_ode45(tmp_path):
+    # CODE DYNAMICS() into a .m: Autolev's program calls ode45, the run integrates with
+    # RK45, and so must the script (DOP853 gave up on a stiff corpus model the run ran)
+    text = (EXAMPLES / "double_pendulum.al").read_text()
+    model = tmp_path / "dp_matlab.al"
+    model.write_text(text.replace("double_pendulum.c", "dp_matlab.m"))
+    assert "dp_matlab.m" in model.read_text()
+    script, csv = tmp_path / "dp_sympy.py", tmp_path / "rows.csv"
+    assert main(["convert", "--to", "sympy", "--level", "equations", str(model),
+                 "-o", str(script), "-q"]) == 0
+    assert runpy.run_path(str(script))["integration_method"] == "RK45"
+    done = subprocess.run([sys.executable, "-c", WITHOUT_AUTOLEV, str(script), str(csv)],
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    rows = np.loadtxt(csv, delimiter=",", skiprows=1, ndmin=2)
+    result = autolev.load(model).simulate()
+    ours = np.column_stack([t.data for t in result.outputs])
+    assert rows.shape == ours.shape
+    # one method and tolerances (the run's RK45 restarts at each output, as ode45's
+    # program integrates step by step): within the digits the rows print
+    scale = np.maximum(1.0, np.abs(ours).max(axis=0))
+    assert np.all(np.abs(rows - ours) <= 1e-6 * scale)

@@ -31,7 +31,8 @@ from .engine.errors import AutolevModelError
 SCRIPT_NAMES = frozenset({
     "sys", "np", "sm", "me", "solve_ivp", "t", "states", "rates", "unknowns",
     "unknown_states", "mass_matrix", "forcing", "full_mass", "full_forcing", "system",
-    "constants", "initial_conditions", "specified", "integration", "outputs",
+    "constants", "initial_conditions", "specified", "integration", "integration_method",
+    "outputs",
     "numeric_functions", "integrate", "main", "row", "column", "k", "j", "intermediates",
     "expanded", "after_solving", "kane", "loads", "bodies", "kd_eqs",
     "velocity_constraints", "dependent", "auxiliary", "at_start", "coefficients", "rest",
@@ -122,8 +123,8 @@ def sympy_script(eqs: Equations, source: str, why: str | None = None) -> str:
            "Importing defines `system` (a sympy.physics.mechanics.SymbolicSystem: full_mass *",
            "d(states)/dt = full_forcing, in the intermediates), `constants`,",
            "`initial_conditions` and `specified`;",
-           "`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy (DOP853,",
-           "RELERR and ABSERR) and writes the OUTPUT columns as CSV.",
+           "`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy",
+           f"({eqs.method}, RELERR and ABSERR) and writes the OUTPUT columns as CSV.",
            '"""',
            "import sys", "", "import numpy as np", "import sympy as sm",
            "import sympy.physics.mechanics as me", "from scipy.integrate import solve_ivp", "",
@@ -175,6 +176,11 @@ def sympy_script(eqs: Equations, source: str, why: str | None = None) -> str:
     return "\n".join(out) + "\n"
 
 
+# why each scipy method stands for the integrator of the program Autolev wrote
+METHOD_REASONS = {"RK45": "Matlab's ode45, as the .m program",
+                  "DOP853": "scipy has no Kutta-Merson (the C program's)"}
+
+
 def values_text(eqs: Equations, names: dict, p) -> list:
     """The script's `constants`, `initial_conditions`, `specified`, `integration` and
     `outputs`, with `names` for the model's symbols and `p` printing expressions."""
@@ -190,6 +196,8 @@ def values_text(eqs: Equations, names: dict, p) -> list:
            "specified = {" + ", ".join(f"{names[s]}: 0.0" for s in eqs.specified) + "}",
            "integration = {" + ", ".join(f"{k!r}: {number_text(v)}"
                                          for k, v in eqs.integration.items()) + "}",
+           "# scipy's method for the program's integrator: " + METHOD_REASONS[eqs.method],
+           f"integration_method = {eqs.method!r}",
            "# OUTPUT columns: (label, unit, expression in the unit)",
            "outputs = ["]
     for label, unit, expr, degrees in eqs.outputs:
@@ -298,7 +306,7 @@ def integrate(tfinal=None):
             times.append(time)
     if len(times) == 1:
         return np.array([row_at(t0, x0)])
-    solution = solve_ivp(rates_of, (t0, times[-1]), x0, method="DOP853", t_eval=times,
+    solution = solve_ivp(rates_of, (t0, times[-1]), x0, method=integration_method, t_eval=times,
                          rtol=integration["RELERR"], atol=integration["ABSERR"])
     if not solution.success:
         raise RuntimeError(solution.message)

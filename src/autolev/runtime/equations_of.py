@@ -31,6 +31,7 @@ class Equations:
     specified: list         # symbols given as functions of time
     integration: dict       # TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR
     outputs: list           # (label, unit, expression, in degrees)
+    method: str             # scipy's integrator standing for the program's (RK45, DOP853)
 
 
 def equations_of(model, command, values: bool = True, infile=None,
@@ -41,7 +42,8 @@ def equations_of(model, command, values: bool = True, infile=None,
     equations alone (no constant needs a value; constants, initial values and
     integration are left empty).  `missing_values`: "refuse" (a constant without a
     value is refused, as a run refuses it) or "keep" (its value is None)."""
-    from .numerics.command import equations_and_unknowns, output_columns, program_of
+    from .numerics.command import (equations_and_unknowns, output_columns, program_method,
+                                   program_of)
     from ..engine.files import safe_stem
     from .numerics.inputs import DEFAULT_SOURCE
     from .numerics.prepare import InputsWanted, SystemBuild, numeric_system, take_inputs
@@ -91,7 +93,9 @@ def equations_of(model, command, values: bool = True, infile=None,
         integration={name: inputs.internal(name) for name in
                      ("TINITIAL", "TFINAL", "INTEGSTP", "ABSERR", "RELERR")}
         | {"PRINTINT": int(inputs.values["PRINTINT"].given)} if values else {},
-        outputs=outputs)
+        outputs=outputs,
+        # a .m program integrates with ode45 (scipy's RK45); scipy has no Kutta-Merson
+        method="RK45" if program_method(command.filename) == "rk45" else "DOP853")
 
 
 def state_of(unknown):

@@ -5,8 +5,8 @@ Level: mechanics.  Frames, points, particles and rigid bodies, loads and the
 kinematical differential equations as the model gives them; sympy's KanesMethod
 forms the equations of motion when the script is imported.  Importing defines
 `kane` (its equations formed), `constants`, `initial_conditions` and `specified`;
-`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy (DOP853,
-RELERR and ABSERR) and writes the OUTPUT columns as CSV.
+`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy
+(DOP853, RELERR and ABSERR) and writes the OUTPUT columns as CSV.
 """
 import sys
 
@@ -97,6 +97,8 @@ initial_conditions = {E1: 0.0, E2: 0.0, E3: 0.0, E4: 1.0, U1: 0.1, U2: 2.0, U3: 
 # each a number or a function of time; 0 unless given
 specified = {}
 integration = {'TINITIAL': 0.0, 'TFINAL': 10.0, 'INTEGSTP': 0.05, 'ABSERR': 1e-08, 'RELERR': 1e-07, 'PRINTINT': 1}
+# scipy's method for the program's integrator: scipy has no Kutta-Merson (the C program's)
+integration_method = 'DOP853'
 # OUTPUT columns: (label, unit, expression in the unit)
 outputs = [
     ('T', '', t),
@@ -177,7 +179,7 @@ def integrate(tfinal=None):
             times.append(time)
     if len(times) == 1:
         return np.array([row_at(t0, x0)])
-    solution = solve_ivp(rates_of, (t0, times[-1]), x0, method="DOP853", t_eval=times,
+    solution = solve_ivp(rates_of, (t0, times[-1]), x0, method=integration_method, t_eval=times,
                          rtol=integration["RELERR"], atol=integration["ABSERR"])
     if not solution.success:
         raise RuntimeError(solution.message)
