@@ -800,12 +800,17 @@ def one(item, limit: float, states: int, keep: Path | None) -> Row:
 
 
 def run_all(models, limit: float, jobs: int, states: int, keep: Path | None = None,
-            progress=None) -> list[Row]:
+            progress=None, on_row=lambda done: None) -> list[Row]:
+    """Every model's row; `on_row` is given the rows done so far after each one (a run
+    cut short keeps what it measured)."""
     lock = threading.Lock()
+    done: list[Row] = []
 
     def each(item):
         row = one(item, limit, states, keep)
         with lock:
+            done.append(row)
+            on_row(list(done))
             if progress is not None:
                 bad = sum(c.differs for c in row.cells.values())
                 print(f"  {row.ident}: {bad} differences ({row.seconds:.0f} s)",
@@ -853,7 +858,9 @@ def main(argv=None) -> int:
         print("no model found (see --corpus, --listing, --only)", file=sys.stderr)
         return 2
     start = time.monotonic()
-    rows = run_all(models, ns.limit, ns.jobs, ns.states, ns.keep, progress=sys.stderr)
+    rows = run_all(models, ns.limit, ns.jobs, ns.states, ns.keep, progress=sys.stderr,
+                   on_row=(lambda done: write_json(ns.json, done)) if ns.json else
+                   (lambda done: None))
     print(table(rows))
     print()
     for p, tally in counts(rows).items():
@@ -861,12 +868,17 @@ def main(argv=None) -> int:
     bad = sum(c.differs for r in rows for c in r.cells.values())
     print(f"\n{len(rows)} models, {bad} unexplained differences, "
           f"{time.monotonic() - start:.0f} s")
-    if ns.json:
-        ns.json.write_text(json.dumps({"models": {r.ident: {
-            "values": r.values, "seconds": round(r.seconds, 1),
-            "cells": {p: asdict(c) for p, c in r.cells.items()}} for r in rows}},
-            indent=1) + "\n")
     return 1 if bad else 0
+
+
+def write_json(path: Path, rows: list[Row]) -> None:
+    """Every cell of the rows so far, replacing the file whole (never half written)."""
+    part = path.with_name(path.name + ".part")
+    part.write_text(json.dumps({"models": {r.ident: {
+        "values": r.values, "seconds": round(r.seconds, 1),
+        "cells": {p: asdict(c) for p, c in r.cells.items()}} for r in rows}},
+        indent=1) + "\n")
+    part.replace(path)
 
 
 if __name__ == "__main__":
