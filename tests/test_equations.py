@@ -316,3 +316,16 @@ def test_the_equations_of_a_model_formed_by_solve_are_its_motion():
         x = [v[s] for s in system.states]
         run = system.derivatives(tt, np.array(x, dtype=float))
         assert close(sm.Matrix(list(run)), sm.Matrix([v[state[2]], v[state[3]]] + expected))
+
+
+def test_a_shared_expression_goes_to_sympy_once_per_distinct_part():
+    # a model's expanded forcing shares its parts (the Whipple's: 2 255 distinct, a tree
+    # too large to walk); each level here doubles the tree, 2**60 leaves in all
+    from autolev.runtime.interop import dynamic_map, to_sympy_expr
+    m = example("double_pendulum")
+    mapping = dynamic_map(m.scene)
+    q1 = symbols(m, "Q1")
+    ours, theirs = q1, mapping[q1]
+    for _ in range(60):
+        ours, theirs = sm.sin(ours) * ours + 1, sm.sin(theirs) * theirs + 1
+    assert to_sympy_expr(m.scene, ours, mapping) == theirs

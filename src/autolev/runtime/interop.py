@@ -50,9 +50,27 @@ def to_sympy_expr(scene: "Scene", expr, mapping: dict | None = None, keep=frozen
     """The expression (or matrix) with every definition expanded but those of the symbols
     in `keep` (the hand-off's dependent speeds), in dynamicsymbols."""
     mapping = mapping if mapping is not None else dynamic_map(scene)
+    done: dict = {}
     if isinstance(expr, sm.MatrixBase):
-        return expr.applyfunc(lambda e: scene.defs.explicit(e, keep).xreplace(mapping))
-    return scene.defs.explicit(expr, keep).xreplace(mapping)
+        return expr.applyfunc(lambda e: _replaced(scene.defs.explicit(e, keep), mapping, done))
+    return _replaced(scene.defs.explicit(expr, keep), mapping, done)
+
+
+def _replaced(expr, mapping: dict, done: dict):
+    """`expr.xreplace(mapping)` once per distinct subexpression: an expanded model shares
+    its subexpressions (the Whipple's forcing: 2 255 of them, a tree too large to walk)."""
+    found = done.get(expr)
+    if found is not None:
+        return found
+    if expr in mapping:
+        found = mapping[expr]
+    elif not expr.args:
+        found = expr
+    else:
+        args = [_replaced(a, mapping, done) for a in expr.args]
+        found = expr.func(*args) if any(a is not b for a, b in zip(args, expr.args)) else expr
+    done[expr] = found
+    return found
 
 
 # the two axes a rotation about axis k turns, in right-handed order
