@@ -245,7 +245,7 @@ def _names_in_file(infile, translation) -> set | None:
 def _run_overrides(ns: argparse.Namespace) -> dict:
     """--set and --tfinal as {NAME: value}, after checking --method and --plot
     (UsageError)."""
-    from ..engine.options import METHODS
+    from ..engine.integrators import METHODS
     if ns.method is not None and ns.method not in METHODS:
         raise UsageError(f"unknown --method {ns.method} (one of {', '.join(METHODS)})")
     overrides = name_values(ns.set, "--set", numbers=True)
