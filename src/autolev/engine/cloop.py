@@ -248,7 +248,7 @@ class CompiledLoop:
                     budget = min(max(200.0, budget * (0.1 / max(elapsed, 1e-6))), 1e7)
             if r != DONE:
                 break
-        rest = times[int(st[ST_ROW]):] if not stepped else np.zeros(0)
+        rest = np.zeros(0) if stepped else times[int(st[ST_ROW]):]
         stats = {"evaluations": int(st[ST_NFEV]), "steps": int(st[ST_NSTEP]),
                  "rejected": int(st[ST_NREJ])}
         return {"status": r, "t": float(st[ST_T]), "y": y, "stats": stats, "rest": rest,
