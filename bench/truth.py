@@ -34,6 +34,7 @@ sys.path.insert(0, str(ROOT / "src"))
 sys.path.insert(0, str(ROOT / "bench"))
 
 import autolev  # noqa: E402
+from autolev.engine.integrators import for_run  # noqa: E402
 from corpus import corpus_models  # noqa: E402
 
 TRUTH = ROOT.parent / "shared" / "truth"
@@ -388,7 +389,7 @@ def main() -> int:
         rows = [r for r in rows if ns.only in r["id"] or ns.only in r["run"]]
     results = []
     for row in rows:
-        method = ns.method or ("rk45" if row["kind"] == "m" else "kutta-merson")
+        method = for_run(ns.method, row["kind"]).name
         r = run_one(row, models, method, ns.keep)
         results.append(r)
         worst = r.get("worst")

@@ -7,6 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from ..engine.integrators import METHODS, of_program
 from ..errors import AutolevRuntimeError, AutolevSyntaxError, AutolevTranslationError
 from . import background
 
@@ -170,9 +171,10 @@ def run_options(parser) -> None:
     parser.add_argument("--out", default=".", metavar="DIR",
                         help="folder for the output files (default: the current folder)")
     parser.add_argument("--method", default=None, metavar="M",
-                        help="integrator: kutta-merson, rk45, dop853, radau, bdf, lsoda, "
-                        "rk23 (default: the one of Autolev's program for each CODE file: "
-                        "rk45 -- Matlab's ode45 -- for .m, else Kutta-Merson)")
+                        help=f"integrator: {', '.join(METHODS)} (default: the one of "
+                        "Autolev's program for each CODE file: "
+                        f"{of_program('m').name} -- Matlab's ode45 -- for .m, else "
+                        "Kutta-Merson)")
     parser.add_argument("--tfinal", type=float, metavar="T", help="final time (TFINAL)")
     parser.add_argument("--no-quirks", dest="quirks", action="store_false",
                         help="compute the values meant where Autolev's programs computed "

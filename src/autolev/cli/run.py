@@ -4,7 +4,9 @@ files written, plotted and animated.
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -60,9 +62,10 @@ class Keeping:
 
 def _plan_request(ns: argparse.Namespace, path: Path):
     """The run's request (request.RunRequest) when a run plan can repeat it: a model
-    file run without an animation (plots and tables are drawn from the rows); else
-    None."""
-    if path.suffix.lower() == ".py" or ns.func is not cmd_run or ns.animate:
+    file run without an output format drawn from the model (an animation; plots and
+    tables are drawn from the rows); else None."""
+    if path.suffix.lower() == ".py" or ns.func is not cmd_run or \
+            any(f.asked(ns) for f in OUTPUT_FORMATS if f.from_model):
         return None
     from ..engine.request import RunRequest
     return RunRequest.of(ns)
@@ -163,7 +166,7 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
     from ..engine.options import RunOptions
     from ..engine.results import command_error, run_summary
     start = time.monotonic()
-    _check_plot(ns)
+    _check_needs(ns)
     if isinstance(ns.plot, str):
         ns.plot = _plotted_columns([label for planned in plan.commands
                                     for labels, _ in planned.execution.columns
@@ -181,7 +184,7 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
                 warnings.simplefilter("ignore")      # its run's are among its messages
                 result = execute(e, Path(ns.out), RunOptions(
                     progress=None if ns.quiet else sys.stderr, infile=ns.infile,
-                    keep_rows=bool(ns.plot or ns.csv or ns.mat), overwrite=ns.overwrite))
+                    keep_rows=_rows_needed(ns), overwrite=ns.overwrite))
         except AutolevModelError as exc:
             print(f"{planned.label}: error: {command_error(e.kind, exc)}", file=sys.stderr)
             status = 1
@@ -192,7 +195,8 @@ def _run_from_plan(plan, path: Path, ns: argparse.Namespace) -> int:
             print(run_summary(e.kind, e.filename, result, time.monotonic() - began))
             for f in result.files:
                 print(f"  wrote {f}")
-        status = max(status, _tables_and_plots(result, Path(ns.out), ns, planned.label))
+        status = max(status, _write_formats(FinishedRun(result, Path(ns.out), ns,
+                                                        planned.label)))
     return status
 
 
@@ -243,21 +247,16 @@ def _names_in_file(infile, translation) -> set | None:
 
 
 def _run_overrides(ns: argparse.Namespace) -> dict:
-    """--set and --tfinal as {NAME: value}, after checking --method and --plot
-    (UsageError)."""
-    from ..engine.options import METHODS
+    """--set and --tfinal as {NAME: value}, after checking --method and what the output
+    formats asked for need (UsageError)."""
+    from ..engine.integrators import METHODS
     if ns.method is not None and ns.method not in METHODS:
         raise UsageError(f"unknown --method {ns.method} (one of {', '.join(METHODS)})")
     overrides = name_values(ns.set, "--set", numbers=True)
     if ns.tfinal is not None:
         overrides["TFINAL"] = ns.tfinal
-    _check_plot(ns)
+    _check_needs(ns)
     return overrides
-
-
-def _check_plot(ns: argparse.Namespace) -> None:
-    if ns.plot and not has_matplotlib():
-        raise UsageError("--plot needs matplotlib (pip install 'autolev[plot]')")
 
 
 def _labels_of(model, commands: list) -> list[str]:
@@ -340,7 +339,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
     runs = model.run_commands(commands, out_dir, keep_going=True, options=RunOptions(
         method=ns.method, backend=ns.backend, infile=ns.infile,
         progress=progress, overrides=overrides, specified=specified,
-        quirks=ns.quirks, keep_rows=bool(ns.plot or ns.animate or ns.csv or ns.mat),
+        quirks=ns.quirks, keep_rows=_rows_needed(ns),
         overwrite=ns.overwrite,
         missing_values="zero" if ns.zero_missing else "refuse"))
     for number, done in enumerate(runs, 1):
@@ -355,7 +354,8 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
             print(done.summary())
             for f in done.result.files:
                 print(f"  wrote {f}")
-        status = max(status, _after_run(model, done, out_dir, ns, label(done.command)))
+        status = max(status, _write_formats(FinishedRun(done.result, out_dir, ns,
+                                                        label(done.command), model)))
         # a cold run began in Python: its C, for the runs to come (kept with the model)
         system = done.result.execution.system
         if finishing is not None and number == len(commands) and system.compiling():
@@ -373,57 +373,6 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
                 planned.append(planned_command(done.result.execution, done.result,
                                                label(done.command), messages))
     return status
-
-
-def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -> int:
-    """--animate, --csv, --mat and --plot of one finished run."""
-    from ..engine.errors import AutolevModelError
-    result = done.result
-    status = 0
-    if ns.animate and result.kind.integrates and len(result.t):
-        try:
-            for f in _animate(model, result, out_dir, ns, label):
-                if not ns.quiet:
-                    print(f"  wrote {f}")
-        except AutolevModelError as exc:
-            print(f"{label}: error: cannot animate {done.command.filename}: {exc}",
-                  file=sys.stderr)
-            status = 1
-        except OSError as exc:
-            print(f"{label}: error: cannot write the animation into {out_dir}: "
-                  f"{exc.strerror or exc}", file=sys.stderr)
-            status = 1
-    return max(status, _tables_and_plots(result, out_dir, ns, label))
-
-
-def _tables_and_plots(result, out_dir: Path, ns: argparse.Namespace, label: str) -> int:
-    """--csv, --mat and --plot of one finished run (from its model or its plan)."""
-    tables = [(f"{result.name}.csv", result.csv_text)] * ns.csv \
-        + [(f"{result.name}.mat", result.mat_bytes)] * ns.mat
-    if tables and result.outputs:
-        from ..engine.outputs import write_output
-        try:
-            for name, content in tables:
-                written = write_output(out_dir, name, content(), ns.overwrite)
-                if not ns.quiet:
-                    print(f"  wrote {written}")
-        except OSError as exc:
-            print(f"{label}: error: cannot write {name} into {out_dir}: "
-                  f"{exc.strerror or exc}", file=sys.stderr)
-            return 1
-    if ns.plot and result.outputs:
-        from ..plots import write_chosen_png, write_pngs
-        try:
-            pictures = write_pngs(result, out_dir, ns.overwrite) if ns.plot is True \
-                else write_chosen_png(result, out_dir, ns.plot, ns.overwrite)
-        except OSError as exc:
-            print(f"{label}: error: cannot write the plots into {out_dir}: "
-                  f"{exc.strerror or exc}", file=sys.stderr)
-            return 1
-        for f in pictures:
-            if not ns.quiet:
-                print(f"  wrote {f}")
-    return 0
 
 
 def cmd_animate(ns: argparse.Namespace) -> int:
@@ -460,6 +409,150 @@ def _animate(model, result, out_dir: Path, ns, label: str) -> list[Path]:
     return written
 
 
+@dataclass(frozen=True)
+class FinishedRun:
+    """A finished run, as the output formats write from it: its Result, the output
+    folder, the command line, the label its messages begin with, and its model (None:
+    the run was repeated from its run plan, which no format drawn from the model is)."""
+
+    result: object              # engine.results.Result
+    out_dir: Path
+    ns: argparse.Namespace
+    label: str
+    model: object = None
+
+
+@dataclass(frozen=True)
+class OutputFormat:
+    """A file `autolev run` also writes from a finished run when its flag (--NAME) asks:
+    `write(finished)` writes it and returns the files written (AutolevModelError: the
+    model cannot give it); `called`: what a failure to write it calls it ({name}: the
+    run's name); `needs_rows`: the run keeps every row for it, not only the last;
+    `needs`: the package without which the flag is refused, installed by autolev's
+    extra `extra`; `from_model`: drawn from the model as well as the rows, so no run
+    plan repeats a run asking for it; `value`: the metavar of the value the flag may
+    take (None: a plain switch)."""
+
+    name: str
+    help: str
+    write: Callable[[FinishedRun], list]
+    called: str
+    needs_rows: bool = True
+    needs: str | None = None
+    extra: str | None = None
+    from_model: bool = False
+    value: str | None = None
+
+    @property
+    def flag(self) -> str:
+        return "--" + self.name
+
+    def asked(self, ns: argparse.Namespace) -> bool:
+        return bool(getattr(ns, self.name))
+
+    def add_flag(self, parser) -> None:
+        if self.value is None:
+            parser.add_argument(self.flag, action="store_true", help=self.help)
+        else:
+            parser.add_argument(self.flag, nargs="?", const=True, metavar=self.value,
+                                help=self.help)
+
+
+def _write_plots(run: FinishedRun) -> list[Path]:
+    """A PNG per output file, or one of the --plot COLUMNS."""
+    if not run.result.outputs:
+        return []
+    from ..plots import write_chosen_png, write_pngs
+    ns = run.ns
+    if ns.plot is True:
+        return write_pngs(run.result, run.out_dir, ns.overwrite)
+    return write_chosen_png(run.result, run.out_dir, ns.plot, ns.overwrite)
+
+
+def _write_table(run: FinishedRun, name: str, content) -> list[Path]:
+    """The output columns in one file, `content()` its text or bytes."""
+    if not run.result.outputs:
+        return []
+    from ..engine.outputs import write_output
+    return [write_output(run.out_dir, name, content(), run.ns.overwrite)]
+
+
+def _write_csv(run: FinishedRun) -> list[Path]:
+    return _write_table(run, f"{run.result.name}.csv", run.result.csv_text)
+
+
+def _write_mat(run: FinishedRun) -> list[Path]:
+    return _write_table(run, f"{run.result.name}.mat", run.result.mat_bytes)
+
+
+def _write_animation(run: FinishedRun) -> list[Path]:
+    """The motion of a CODE DYNAMICS or ODE that took a step."""
+    from ..engine.errors import AutolevModelError
+    result = run.result
+    if not (result.kind.integrates and len(result.t)):
+        return []
+    try:
+        return _animate(run.model, result, run.out_dir, run.ns, run.label)
+    except AutolevModelError as exc:
+        raise AutolevModelError(f"cannot animate {result.execution.filename}: {exc}") \
+            from None
+
+
+ANIMATION = OutputFormat(
+    "animate", "also write the motion of each CODE DYNAMICS: NAME.html (a 3-D view to "
+    "rotate and scrub) and, with matplotlib, NAME.gif", _write_animation, "the animation",
+    from_model=True)
+# in the order of `autolev run --help`, and of the files written
+OUTPUT_FORMATS = (
+    OutputFormat("plot", "also write a PNG per output file; with COLUMNS (e.g. Q1,U1: "
+                 "output labels, any case) one picture NAME.plot.png of those columns "
+                 "against time (needs matplotlib)", _write_plots, "the plots",
+                 needs="matplotlib", extra="plot", value="COLUMNS"),
+    OutputFormat("csv", "also write NAME.csv: every output column (T once), a row per "
+                 "printed row, the labels as its header", _write_csv, "{name}.csv"),
+    OutputFormat("mat", "also write NAME.mat (Matlab): a column vector per output label, "
+                 "with `labels` and `units`", _write_mat, "{name}.mat"),
+    ANIMATION,
+)
+
+
+def _rows_needed(ns: argparse.Namespace) -> bool:
+    """Whether the output formats asked for need every row of a run."""
+    return any(f.needs_rows and f.asked(ns) for f in OUTPUT_FORMATS)
+
+
+def _check_needs(ns: argparse.Namespace) -> None:
+    """UsageError when an output format asked for lacks the package it needs."""
+    for f in OUTPUT_FORMATS:
+        if f.needs is not None and f.asked(ns) and importlib.util.find_spec(f.needs) is None:
+            raise UsageError(f"{f.flag} needs {f.needs} (pip install 'autolev[{f.extra}]')")
+
+
+def _write_formats(run: FinishedRun) -> int:
+    """The files of every output format the command line asks for, each said as
+    written, or its failure (1) said and the others written still."""
+    from ..engine.errors import AutolevModelError
+    status = 0
+    for f in OUTPUT_FORMATS:
+        if not f.asked(run.ns):
+            continue
+        try:
+            written = f.write(run)
+        except AutolevModelError as exc:
+            print(f"{run.label}: error: {exc}", file=sys.stderr)
+            status = 1
+            continue
+        except OSError as exc:
+            print(f"{run.label}: error: cannot write {f.called.format(name=run.result.name)} "
+                  f"into {run.out_dir}: {exc.strerror or exc}", file=sys.stderr)
+            status = 1
+            continue
+        if not run.ns.quiet:
+            for path in written:
+                print(f"  wrote {path}")
+    return status
+
+
 def add_run(sub) -> None:
     run = sub.add_parser("run", help="run a model's CODE commands (simulate)",
                          description="Translate and build FILE, then perform its CODE "
@@ -467,19 +560,8 @@ def add_run(sub) -> None:
                          "ALGEBRAIC and NONLINEAR solved.  Writes Autolev's files NAME.in, "
                          "NAME.1 ... NAME.k (one per OUTPUT) and NAME.dir into --out.")
     run_options(run)
-    run.add_argument("--plot", nargs="?", const=True, metavar="COLUMNS",
-                     help="also write a PNG per output file; with COLUMNS (e.g. Q1,U1: "
-                     "output labels, any case) one picture NAME.plot.png of those "
-                     "columns against time (needs matplotlib)")
-    run.add_argument("--csv", action="store_true",
-                     help="also write NAME.csv: every output column (T once), a row per "
-                     "printed row, the labels as its header")
-    run.add_argument("--mat", action="store_true",
-                     help="also write NAME.mat (Matlab): a column vector per output label, "
-                     "with `labels` and `units`")
-    run.add_argument("--animate", action="store_true",
-                     help="also write the motion of each CODE DYNAMICS: NAME.html (a 3-D "
-                     "view to rotate and scrub) and, with matplotlib, NAME.gif")
+    for output_format in OUTPUT_FORMATS:
+        output_format.add_flag(run)
     run.add_argument("--code", action="append", metavar="FILE",
                      help="run only this CODE command (its file name, e.g. bike.c, or "
                      "its 0-based index); repeatable")
@@ -502,5 +584,5 @@ def add_animate(sub) -> None:
                       "matplotlib is installed)")
     anim.add_argument("--frames", type=positive_int, default=None, metavar="N",
                       help="frames at most (default 400; the rows are sampled evenly)")
-    anim.set_defaults(func=cmd_animate, plot=False, csv=False, mat=False, animate=True,
-                      first_dynamics=True)
+    anim.set_defaults(func=cmd_animate, first_dynamics=True,
+                      **{f.name: f is ANIMATION for f in OUTPUT_FORMATS})

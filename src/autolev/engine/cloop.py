@@ -10,6 +10,7 @@ integrate.py; the same steps are taken (tests compare the two).
 from __future__ import annotations
 
 import ctypes
+import functools
 import importlib.machinery
 import importlib.util
 import math
@@ -21,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import dop853_tableau, rk45_tableau
+from .integrators import DOP853, integrator_named
 
 LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
 PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
@@ -67,11 +68,6 @@ ST_SIZE = 24
 (OP_RTOL, OP_ATOL, OP_MAXSTEP, OP_TBOUND, OP_STIFF_STOP, OP_BUDGET, OP_INTEGSTP,
  OP_FRESH) = range(8)
 
-METHOD_CODES = {"kutta-merson": 0, "dop853": 1, "rk45": 2}
-# the methods whose rows come after every INTEGSTP step (Autolev's loop), not at print
-# times inside a step: Kutta-Merson, and RK45 afresh over each step (Matlab's programs)
-STEPPED = (0, 2)
-
 
 @dataclass(frozen=True)
 class KuttaMersonState:
@@ -95,20 +91,12 @@ class _Context(ctypes.Structure):
                 ("col", _P), ("gather", _P)]
 
 
-def _table(method: str = "dop853") -> np.ndarray:
+@functools.cache
+def _table(method: str = DOP853.name) -> np.ndarray:
     """A method's tables as one array, in the order the C loop reads them (the shipped
     tableaux: no scipy import): DOP853's A (16 x 16), B, C, E3, E5, D (4 x 16);
-    RK45's A (6 x 6), B, C, E."""
-    table = _TABLES.get(method)
-    if table is None:
-        k = rk45_tableau if method == "rk45" else dop853_tableau
-        parts = ((k.A, k.B, k.C, k.E) if method == "rk45" else
-                 (k.A, k.B, k.C, k.E3, k.E5, k.D))
-        table = _TABLES[method] = np.array(sum(parts, ()), dtype=float)
-    return table
-
-
-_TABLES: dict = {}
+    RK45's A (6 x 6), B, C, E; Kutta-Merson's none."""
+    return np.array(integrator_named(method).tableau, dtype=float)
 
 
 class CompiledLoop:
@@ -204,7 +192,8 @@ class CompiledLoop:
         fail_h, stiff_t, hlamb, and rest (DOP853: the print times of the current block
         not reached when it stopped).  `steps_state`: Kutta-Merson's state where Python
         stepped until now (KuttaMerson.steps_state): its step and stiffness counts."""
-        code = METHOD_CODES[method]
+        integrator = integrator_named(method)
+        code, stepped = integrator.loop_code, integrator.stepped
         n = self.n
         y = np.array(y0, dtype=float)
         st = np.zeros(ST_SIZE)
@@ -232,7 +221,7 @@ class CompiledLoop:
                 op[OP_TBOUND] = end
             flags = np.ascontiguousarray(printed if printed is not None else
                                          np.ones(len(times)), dtype=np.intc)
-            nrows = int(flags.sum()) if code in STEPPED else len(times)
+            nrows = int(flags.sum()) if stepped else len(times)
             rows = np.zeros((max(1, nrows), n))
             rtimes = np.zeros(max(1, nrows))
             st[ST_ROW] = st[ST_KMROWS] = 0
@@ -245,9 +234,9 @@ class CompiledLoop:
                 start = _time.perf_counter()
                 r = self._integrate(*args)
                 elapsed = _time.perf_counter() - start
-                written = int(st[ST_KMROWS] if code in STEPPED else st[ST_ROW])
+                written = int(st[ST_KMROWS] if stepped else st[ST_ROW])
                 if written > done_rows:
-                    t_rows = (rtimes[done_rows:written] if code in STEPPED
+                    t_rows = (rtimes[done_rows:written] if stepped
                               else times[done_rows:written])
                     on_rows(np.array(t_rows), rows[done_rows:written].copy())
                     done_rows = written
@@ -259,7 +248,7 @@ class CompiledLoop:
                     budget = min(max(200.0, budget * (0.1 / max(elapsed, 1e-6))), 1e7)
             if r != DONE:
                 break
-        rest = times[int(st[ST_ROW]):] if code not in STEPPED else np.zeros(0)
+        rest = np.zeros(0) if stepped else times[int(st[ST_ROW]):]
         stats = {"evaluations": int(st[ST_NFEV]), "steps": int(st[ST_NSTEP]),
                  "rejected": int(st[ST_NREJ])}
         return {"status": r, "t": float(st[ST_T]), "y": y, "stats": stats, "rest": rest,

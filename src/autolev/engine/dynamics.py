@@ -11,9 +11,10 @@ import warnings
 import numpy as np
 
 from .errors import AutolevModelError
-from .integrate import (IntegrationFailure, Progress, Schedule, failure_basis, integrate,
-                        integrate_projected, loop_takes_over)
+from .integrate import (Integration, IntegrationFailure, Progress, Schedule, failure_basis,
+                        integrate_projected)
 from .integration_notes import loose_tolerance_note, stiff_note, switch_when_stiff
+from .integrators import Integrator
 from .results import split_output_rows, split_outputs, tables_of
 from .massmatrix import SingularMassMatrix, scaled_condition
 
@@ -151,7 +152,7 @@ def print_schedule(inputs, program: str) -> Schedule:
     return sched
 
 
-def run_dynamics(system, inputs, result, writer, method, progress,
+def run_dynamics(system, inputs, result, writer, integrator: Integrator, progress,
                  compiled: bool = True, projector=None, advise=None, program: str = "",
                  keep_rows: bool = True, known_failure: tuple | None = None) -> None:
     """`program`: the language of Autolev's program for the CODE file ("c", "m", ...),
@@ -159,7 +160,7 @@ def run_dynamics(system, inputs, result, writer, method, progress,
     (else only the last: a run's memory is then independent of its length).
     `projector`: puts a state back onto the configuration constraints at each print
     time (the model's, compiled; None: no projection).  `advise(failure, result,
-    integration)`: the message of a failed integration, with what the model tells of
+    integration)`: the message of a failed `Integration`, with what the model tells of
     its cause (None: the failure alone).  `known_failure`: (T, message) of the failure
     this run ended with before (a run plan's), said again when it fails there."""
     if not system.nstate:
@@ -191,22 +192,20 @@ def run_dynamics(system, inputs, result, writer, method, progress,
         # (Autolev's Matlab loop), go on in the compiled loop once it is there, the
         # other methods call the C then; DOP853 in the loop waits for it (scipy's
         # DOP853, which Python would step with, sums in another order)
-        ready = system.compiled_loop(wait=use_loop and method == "dop853")
+        ready = system.compiled_loop(wait=use_loop and integrator.waits_for_loop)
         loop = ready if use_loop else None
         loop_when_built = system.compiled_loop \
-            if use_loop and loop_takes_over(method, sched) and loop is None else None
-        on_stiff = switch_when_stiff if method == "dop853" else None
-        loose_tolerance_note(method.lower(), relerr)
+            if use_loop and integrator.hands_over(sched) and loop is None else None
+        integration = Integration(
+            f, sched, integrator, abserr, relerr, on_row, bar, loop,
+            switch_when_stiff if integrator.switches_when_stiff else None, loop_when_built,
+            on_row.block)
+        loose_tolerance_note(integrator, relerr)
         if projector is not None:
-            result.stats.update(integrate_projected(
-                f, y0, sched, method, abserr, relerr, on_row, bar, loop, on_stiff,
-                projector))
+            result.stats.update(integrate_projected(integration, y0, projector))
         else:
-            result.stats.update(integrate(f, y0, sched, method, abserr, relerr, on_row,
-                                          bar, loop=loop, on_stiff=on_stiff,
-                                          loop_when_built=loop_when_built,
-                                          on_rows=on_row.block))
-        stiff_note(result.stats, method)
+            result.stats.update(integration.run(y0))
+        stiff_note(result.stats, integrator)
         if compiling and loop_when_built is None:      # (a loop taking over says itself)
             result.stats.update({"python_until": took_over[0]} if took_over
                                 else {"python_only": True})
@@ -215,7 +214,7 @@ def run_dynamics(system, inputs, result, writer, method, progress,
         if known_failure is not None and known_failure[0] == exc.t:
             result.failure = known_failure[1]
         elif advise is not None:
-            result.failure = advise(exc, result, (f, sched, abserr, relerr))
+            result.failure = advise(exc, result, integration)
         else:
             result.failure = failure_basis(exc, result.state_names)
         result.failure_time = exc.t

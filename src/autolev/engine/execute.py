@@ -16,6 +16,7 @@ from .algebraic import AlgebraicInputs, run_algebraic
 from .dynamics import run_dynamics
 from .files import (RunFiles, check_memory, check_room, dir_text, encoded_text,
                     termination_cleans_up)
+from .integrators import Integrator
 from .options import RunOptions
 from .results import Result
 
@@ -39,7 +40,7 @@ class Execution:
     encoded: list               # the ENCODE names (NAME.encode)
     rows_expected: int
     language: str               # of Autolev's program: "c", "m", "f"...
-    method: str
+    integrator: Integrator | None   # what an integration steps with (None: no integration)
     algebraic: AlgebraicInputs | None   # what ALGEBRAIC/NONLINEAR evaluate with
     build_seconds: float
     # (T, message) of the integration failure a run plan's run ended with: its advice
@@ -66,7 +67,7 @@ def execute(execution: Execution, out_dir=None,
 
     def perform(writer):
         if kind.integrates:
-            run_dynamics(system, inputs, result, writer, e.method, options.progress,
+            run_dynamics(system, inputs, result, writer, e.integrator, options.progress,
                          options.compiled, e.projector, e.advise, program=e.language,
                          keep_rows=options.keep_rows, known_failure=e.known_failure)
         else:

@@ -5,10 +5,11 @@ accumulated by repeated addition, as there); a row is printed at TINITIAL, after
 PRINTINT steps, and at the first step where T + 0.01*INTEGSTP reaches TFINAL, so the
 last row may lie past TFINAL when TFINAL is not on the grid.
 
-Integrators:
+The integrators are engine/integrators.py's records; an integration's parts are one
+`Integration`.  The ways of stepping:
 
-* ``kutta-merson`` -- the adaptive Kutta-Merson of Autolev's C and Fortran programs,
-  step for step: each call advances exactly INTEGSTP; the error estimate of a step is
+* Kutta-Merson -- the adaptive Kutta-Merson of Autolev's C and Fortran programs, step
+  for step: each call advances exactly INTEGSTP; the error estimate of a step is
   |y1 - y2|/5 (third- against fourth-order); a step fails when, for some state, it is
   at least both RELERR*|y1| and ABSERR, and is then halved; a step is doubled (within
   INTEGSTP) when every error is 64 times smaller; the net number of halvings is capped
@@ -29,13 +30,16 @@ from __future__ import annotations
 import itertools
 import math
 import time as _time
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from . import cloop, rk45_tableau
-from .options import METHODS, SCIPY_METHODS
+from .integrators import SCIPY_METHODS, Integrator, integrator_named
 
+__all__ = ["SCIPY_METHODS", "Integration", "IntegrationFailure", "KuttaMerson", "Progress",
+           "RK45Interval", "Schedule", "failure_basis", "integrate", "integrate_projected"]
 
 
 class IntegrationFailure(Exception):
@@ -401,65 +405,76 @@ class Progress:
             self.stream.flush()
 
 
-def loop_takes_over(method: str, schedule: Schedule) -> bool:
-    """Whether the compiled loop goes on from any step Python took: Kutta-Merson (its
-    step handed over) and RK45 started afresh over each step (nothing carries over)."""
-    return method == "kutta-merson" or method == "rk45" and schedule.restart_each_step
+@dataclass(frozen=True)
+class Integration:
+    """One integration of y' = f(t, y) on `schedule` with `integrator` to ABSERR and
+    RELERR, on_row(t, y) taking each printed row.
+
+    `progress`: the Progress line it updates.  `loop`: a CompiledLoop of the same
+    right-hand side, in which the integrators it runs (Integrator.in_loop) then run
+    (the same steps; DOP853's and RK45's sums in C differ from scipy's at rounding
+    level).  `on_stiff(t, hlamb)`: called when the compiled loop finds the equations
+    stiff at time t for an integrator that switches then (DOP853): the integrator to go
+    on with from there (scipy's), or None (the same method goes on, scipy's).
+    `loop_when_built()`: while the loop is being compiled, it or None (not yet); an
+    integrator that hands over (Kutta-Merson) steps in Python until it is there, then
+    goes on in C from the same state and step.  `on_rows(times, states)`: takes the
+    compiled loop's rows a slice at a time, in place of on_row for each."""
+
+    f: Callable
+    schedule: Schedule
+    integrator: Integrator
+    abserr: float
+    relerr: float
+    on_row: Callable
+    progress: Progress | None = None
+    loop: cloop.CompiledLoop | None = None
+    on_stiff: Callable | None = None
+    loop_when_built: Callable | None = None
+    on_rows: Callable | None = None
+
+    def run(self, y0: np.ndarray) -> dict:
+        """Integrate from y0 at TINITIAL; its stats (method, evaluations, steps, ...).
+        Raises IntegrationFailure (after the rows up to then were given)."""
+        schedule = self.schedule
+        schedule.check()
+        y = np.array(y0, dtype=float)
+        t = schedule.tinitial
+        stats = {"method": self.integrator.name, "evaluations": 0, "steps": 0}
+        if not np.all(np.isfinite(self.f(t, y))):
+            raise IntegrationFailure(f"the derivatives are not finite at T = {t:.6g}", t, y)
+        self.on_row(t, y)
+        if self.loop is not None and self.integrator.in_loop(schedule):
+            return _integrate_compiled(self, y)
+        if self.loop_when_built is not None and self.integrator.hands_over(schedule):
+            return _integrate_until_compiled(self, y, t, stats)
+        return _integrate_python(self, y, t, stats)
 
 
 def integrate(f, y0: np.ndarray, schedule: Schedule, method: str, abserr: float,
               relerr: float, on_row, progress: Progress | None = None, loop=None,
               on_stiff=None, loop_when_built=None, on_rows=None) -> dict:
-    """Integrate y' = f(t, y) on the schedule, calling on_row(t, y) at print times.
-    Raises IntegrationFailure (after the rows up to then were given).
-
-    `loop`: a CompiledLoop of the same right-hand side; Kutta-Merson, DOP853 and RK45
-    started afresh over each step (Autolev's Matlab loop) then run in C (the same
-    steps; DOP853's and RK45's sums in C differ from scipy's at rounding level).
-    `on_stiff(t, hlamb)`: called when the compiled DOP853 finds the equations stiff at
-    time t; if it returns a scipy method name the run goes on from there with that
-    method, else DOP853 goes on.  `loop_when_built()`:
-    while the loop is being compiled, it or None (not yet); Kutta-Merson steps in
-    Python until it is there, then goes on in C from the same state and step.
-    `on_rows(times, states)`: takes the compiled loop's rows a slice at a time, in
-    place of on_row for each."""
-    schedule.check()
-    y = np.array(y0, dtype=float)
-    t = schedule.tinitial
-    stats = {"method": method, "evaluations": 0, "steps": 0}
-    if not np.all(np.isfinite(f(t, y))):
-        raise IntegrationFailure(f"the derivatives are not finite at T = {t:.6g}", t, y)
-    on_row(t, y)
-    if loop is not None and (method == "dop853" or loop_takes_over(method, schedule)):
-        return _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row,
-                                   progress, on_stiff, on_rows=on_rows)
-    if loop_when_built is not None and loop_takes_over(method, schedule):
-        return _integrate_until_compiled(f, y, t, schedule, method, abserr, relerr, on_row,
-                                         progress, stats, loop_when_built, on_rows)
-    return _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
-                             stats)
+    """Integration.run with the integrator given by name (ValueError for an unknown
+    one) and the other parts one by one (Integration says what each is)."""
+    return Integration(f, schedule, integrator_named(method), abserr, relerr, on_row,
+                       progress, loop, on_stiff, loop_when_built, on_rows).run(y0)
 
 
-def _integrate_python(f, y, t, schedule, method, abserr, relerr, on_row, progress,
-                      stats) -> dict:
-    if method == "kutta-merson":
-        km = KuttaMerson(f, len(y), abserr, relerr, schedule.fresh_derivatives)
+def _integrate_python(run: Integration, y, t, stats) -> dict:
+    schedule = run.schedule
+    if run.integrator.kutta_merson:
+        km = KuttaMerson(run.f, len(y), run.abserr, run.relerr, schedule.fresh_derivatives)
         for t_next, printed in schedule.steps():
             y = _km_step(km, y, t, schedule.integstp, stats)
             t = t_next                     # Autolev's accumulated T
             if printed:
-                on_row(t, y)
-            if progress is not None:
-                progress.update(t)
+                run.on_row(t, y)
+            if run.progress is not None:
+                run.progress.update(t)
         return stats
-    name = SCIPY_METHODS.get(method.lower())
-    if name is None:
-        raise ValueError(f"unknown integrator {method!r} (one of {', '.join(METHODS)})")
     if schedule.restart_each_step:
-        return _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
-                                stats)
-    return _scipy_rows(f, y, t, schedule.print_blocks(), schedule.final_time(), name,
-                       schedule, abserr, relerr, on_row, progress, stats)
+        return _scipy_each_step(run, y, t, stats)
+    return _scipy_rows(run, y, t, schedule.print_blocks(), schedule.final_time(), stats)
 
 
 def _km_step(km: KuttaMerson, y, t: float, integstp: float, stats: dict) -> np.ndarray:
@@ -475,27 +490,25 @@ def _km_step(km: KuttaMerson, y, t: float, integstp: float, stats: dict) -> np.n
     return y
 
 
-def _integrate_until_compiled(f, y, t, schedule, method, abserr, relerr, on_row, progress,
-                              stats, loop_when_built, on_rows=None) -> dict:
+def _integrate_until_compiled(run: Integration, y, t, stats) -> dict:
     """Kutta-Merson, or RK45 afresh over each step (Autolev's Matlab loop), in Python
     while the compiled loop is built, then the loop from the same T and state
     (Kutta-Merson's step too: the back ends give the same numbers; RK45 starts each
     step anew, its sums in C at rounding level from scipy's).  stats["python_until"]:
     the T where C took over, when Python took a step; stats["python_only"]: it never
     did."""
-    km = KuttaMerson(f, len(y), abserr, relerr, schedule.fresh_derivatives) \
-        if method == "kutta-merson" else None
+    schedule = run.schedule
+    km = KuttaMerson(run.f, len(y), run.abserr, run.relerr, schedule.fresh_derivatives) \
+        if run.integrator.kutta_merson else None
     blocks = schedule.blocks()
     for times, printed in blocks:
         for k, (t_next, shown) in enumerate(zip(times.tolist(), printed.tolist())):
-            loop = loop_when_built()
+            loop = run.loop_when_built()
             if loop is not None:
                 rest = itertools.chain([(times[k:], printed[k:])], blocks)
                 more = _integrate_compiled(
-                    f, loop, y, schedule, method, abserr, relerr, on_row, progress, None,
-                    t0=t, km_blocks=rest,
-                    steps_state=km.steps_state() if km is not None else None,
-                    on_rows=on_rows)
+                    replace(run, loop=loop, on_stiff=None), y, t0=t, stepped_blocks=rest,
+                    steps_state=km.steps_state() if km is not None else None)
                 for count in ("evaluations", "steps", "rejected"):
                     if count in more or count in stats:
                         more[count] = more.get(count, 0) + stats.get(count, 0)
@@ -503,12 +516,12 @@ def _integrate_until_compiled(f, y, t, schedule, method, abserr, relerr, on_row,
             if km is not None:
                 y = _km_step(km, y, t, schedule.integstp, stats)
             else:
-                y = _rk45_interval(f, y, t, t_next, schedule, abserr, relerr, stats)
+                y = _rk45_interval(run, y, t, t_next, stats)
             t = t_next
             if shown:
-                on_row(t, y)
-            if progress is not None:
-                progress.update(t)
+                run.on_row(t, y)
+            if run.progress is not None:
+                run.progress.update(t)
     return dict(stats, python_only=True)
 
 
@@ -518,25 +531,23 @@ def _scipy_method(name: str):
     return getattr(scipy.integrate, name)
 
 
-def _scipy_each_step(f, y, t, name, schedule, abserr, relerr, on_row, progress,
-                     stats) -> dict:
+def _scipy_each_step(run: Integration, y, t, stats) -> dict:
     """A scipy solver started afresh from (T, y) to T + INTEGSTP, step after step
     (RK45 as the compiled loop computes it)."""
-    for t_next, printed in schedule.steps():
-        y = _rk45_interval(f, y, t, t_next, schedule, abserr, relerr, stats) \
-            if name == "RK45" else \
-            _scipy_interval(f, y, t, t_next, name, schedule, abserr, relerr, stats)
+    for t_next, printed in run.schedule.steps():
+        y = _rk45_interval(run, y, t, t_next, stats) if run.integrator.loop_afresh_only \
+            else _scipy_interval(run, y, t, t_next, stats)
         t = t_next                         # Autolev's accumulated T
         if printed:
-            on_row(t, y)
-        if progress is not None:
-            progress.update(t)
+            run.on_row(t, y)
+        if run.progress is not None:
+            run.progress.update(t)
     return stats
 
 
-def _rk45_interval(f, y, t, t_next, schedule, abserr, relerr, stats) -> np.ndarray:
+def _rk45_interval(run: Integration, y, t, t_next, stats) -> np.ndarray:
     """The state at t_next from RK45 started afresh at (t, y), as the compiled loop."""
-    step = RK45Interval(f, relerr, abserr, abs(schedule.integstp))
+    step = RK45Interval(run.f, run.relerr, run.abserr, abs(run.schedule.integstp))
     try:
         return step(t, np.array(y, dtype=float), t_next)
     finally:
@@ -545,10 +556,11 @@ def _rk45_interval(f, y, t, t_next, schedule, abserr, relerr, stats) -> np.ndarr
         stats["rejected"] = stats.get("rejected", 0) + step.rejected
 
 
-def _scipy_interval(f, y, t, t_next, name, schedule, abserr, relerr, stats) -> np.ndarray:
+def _scipy_interval(run: Integration, y, t, t_next, stats) -> np.ndarray:
     """The state at t_next from a scipy solver started afresh at (t, y)."""
-    solver = _scipy_method(name)(
-        f, t, y, t_next, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
+    name = run.integrator.scipy_name
+    solver = _scipy_method(name)(run.f, t, y, t_next, max_step=abs(run.schedule.integstp),
+                                 rtol=run.relerr, atol=run.abserr)
     try:
         while solver.status == "running":
             _step(solver, name, stats)
@@ -570,22 +582,22 @@ def _step(solver, name: str, stats: dict) -> None:
                                  solver.t_old, solver.dense_output()(solver.t_old))
 
 
-def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, progress,
-                stats) -> dict:
+def _scipy_rows(run: Integration, y, t, blocks, t_end, stats) -> dict:
     """Rows at the print times of `blocks` (arrays of times after t, up to t_end) from
     a scipy solver started at (t, y) and bounded by t_end (scipy's solvers take their
     end once, at the start)."""
     if t_end == t:
         return stats
-    solver = _scipy_method(name)(
-        f, t, y, t_end, max_step=abs(schedule.integstp), rtol=relerr, atol=abserr)
+    name = run.integrator.scipy_name
+    solver = _scipy_method(name)(run.f, t, y, t_end, max_step=abs(run.schedule.integstp),
+                                 rtol=run.relerr, atol=run.abserr)
     direction = 1 if t_end >= t else -1
     for times in blocks:
         k = 0
         while k < len(times):
             if solver.status == "finished":    # the end reached exactly: the rest coincide
                 for tk in times[k:].tolist():
-                    on_row(tk, solver.y.copy())
+                    run.on_row(tk, solver.y.copy())
                 break
             try:
                 _step(solver, name, stats)
@@ -599,93 +611,96 @@ def _scipy_rows(f, y, t, blocks, t_end, name, schedule, abserr, relerr, on_row, 
                 else:
                     interp = interp or solver.dense_output()
                     yk = interp(tk)
-                on_row(tk, yk)
+                run.on_row(tk, yk)
                 k += 1
-            if progress is not None:
-                progress.update(solver.t)
+            if run.progress is not None:
+                run.progress.update(solver.t)
     return stats
 
 
-def _integrate_compiled(f, loop, y, schedule, method, abserr, relerr, on_row, progress,
-                        on_stiff, t0=None, km_blocks=None, steps_state=None,
-                        on_rows=None) -> dict:
-    """The schedule in C; Kutta-Merson from `t0` over `km_blocks` (the schedule's blocks
-    from there) in `steps_state`, when Python stepped until then."""
+def _integrate_compiled(run: Integration, y, t0=None, stepped_blocks=None,
+                        steps_state=None) -> dict:
+    """The schedule in C; a stepped integrator (Integrator.stepped) from `t0` over
+    `stepped_blocks` (the schedule's blocks from there) in `steps_state`, when Python
+    stepped until then."""
+    schedule, integrator = run.schedule, run.integrator
     t0 = schedule.tinitial if t0 is None else t0
-    opts = {"t0": t0, "rtol": relerr, "atol": abserr, "integstp": schedule.integstp,
+    opts = {"t0": t0, "rtol": run.relerr, "atol": run.abserr, "integstp": schedule.integstp,
             "max_step": abs(schedule.integstp), "fresh": schedule.fresh_derivatives}
-    if method in ("kutta-merson", "rk45"):
+    if integrator.stepped:
         blocks = ((times, printed, None) for times, printed in
-                  (schedule.blocks() if km_blocks is None else km_blocks))
+                  (schedule.blocks() if stepped_blocks is None else stepped_blocks))
     else:
         blocks = ((times, None, end) for times, end in schedule.bounded_print_blocks())
 
     def row_by_row(ts, rows):
         for tk, yk in zip(ts.tolist(), rows):
-            on_row(tk, yk)
+            run.on_row(tk, yk)
 
-    out = loop.run(method, y, blocks, opts, on_rows or row_by_row, progress,
-                   stiff_stop=on_stiff is not None, steps_state=steps_state)
-    stats = dict(out["stats"], method=method, compiled=True)
+    out = run.loop.run(integrator.name, y, blocks, opts, run.on_rows or row_by_row,
+                       run.progress, stiff_stop=run.on_stiff is not None,
+                       steps_state=steps_state)
+    stats = dict(out["stats"], method=integrator.name, compiled=True)
     r, tf, hf = out["status"], out["fail_t"], out["fail_h"]
     if out["stiff_t"] == out["stiff_t"]:
         stats["stiff_t"] = out["stiff_t"]
     if r == cloop.DONE:
         return stats
     if r == cloop.STIFF:
-        switch = on_stiff(out["stiff_t"], out["hlamb"])
-        if switch is None:       # go on with DOP853 (scipy's, from the same state)
-            switch = "dop853"
-        stats["switched_to"] = switch
-        more = {"method": switch, "evaluations": 0, "steps": 0}
+        switch = run.on_stiff(out["stiff_t"], out["hlamb"])
+        if switch is None:       # go on with the same method (scipy's, from the same state)
+            switch = integrator
+        stats["switched_to"] = switch.name
+        more = {"method": switch.name, "evaluations": 0, "steps": 0}
         rest = itertools.chain([out["rest"]], (times for times, _, _ in blocks))
-        _scipy_rows(f, out["y"], out["t"], rest, schedule.final_time(),
-                    SCIPY_METHODS[switch], schedule, abserr, relerr, on_row, progress, more)
+        _scipy_rows(replace(run, integrator=switch), out["y"], out["t"], rest,
+                    schedule.final_time(), more)
         stats["evaluations"] += more["evaluations"]
         stats["steps"] += more["steps"]
         return stats
     y_last = out["y"]
     if r == cloop.SINGULAR:
         raise IntegrationFailure(f"the mass matrix is singular at T = {tf:.6g}", tf,
-                                 loop.yfail)
+                                 run.loop.yfail)
     if r == cloop.CUTS:
         raise IntegrationFailure(
             f"the step size has been halved too many times at T = {tf:.4E}", tf, y_last,
             cuts=True)
     if r == cloop.SMALL_STEP:
-        if method == "kutta-merson":
+        if integrator.kutta_merson:
             raise IntegrationFailure(
                 f"the step size {hf:.14E} is too small relative to the time {tf:.14E}; "
                 "integration halted because of numerical round-off", tf, y_last)
-        raise IntegrationFailure(f"{SCIPY_METHODS[method]} failed at T = {tf:.6g}: "
+        raise IntegrationFailure(f"{integrator.scipy_name} failed at T = {tf:.6g}: "
                                  "Required step size is less than spacing between "
                                  "numbers.", tf, y_last)
     if r == cloop.NONFINITE:
         # Kutta-Merson and RK45 name the time they stepped to, as their Python loops
-        shown = tf + hf if method in ("kutta-merson", "rk45") else tf
+        shown = tf + hf if integrator.stepped else tf
         raise IntegrationFailure(f"the state is not finite at T = {shown:.6g}", tf, y_last)
     raise IntegrationFailure(f"the compiled integrator stopped with code {r}", out["t"],
                              y_last)
 
 
-def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_row,
-                        progress, loop, on_stiff, project) -> dict:
-    """integrate() from print time to print time, projecting the state at each
+def integrate_projected(run: Integration, y0, project) -> dict:
+    """The integration from print time to print time, projecting the state at each
     (`project(t, x)`: the state on the constraints; its `largest_correction` is
-    reported)."""
+    reported); neither its progress nor a loop being built goes to the segments."""
+    schedule = run.schedule
     schedule.check()
     y = np.array(y0, dtype=float)
-    on_row(schedule.tinitial, y)
-    stats = {"method": method, "evaluations": 0, "steps": 0, "projected": True}
+    run.on_row(schedule.tinitial, y)
+    stats = {"method": run.integrator.name, "evaluations": 0, "steps": 0,
+             "projected": True}
     a = schedule.tinitial
     for b in (t for block in schedule.print_blocks() for t in block.tolist()):
         got = []
         seg = Schedule(a, b, schedule.integstp, 10 ** 9, schedule.fresh_derivatives,
                        schedule.restart_each_step)
+        segment = replace(run, schedule=seg, on_row=lambda t, yy: got.append(np.array(yy)),
+                          progress=None, loop_when_built=None, on_rows=None)
         try:
-            st = integrate(f, y, seg, method, abserr, relerr,
-                           lambda t, yy: got.append(np.array(yy)), None, loop=loop,
-                           on_stiff=on_stiff)
+            st = segment.run(y)
         except IntegrationFailure:
             stats["largest_correction"] = project.largest_correction
             raise
@@ -695,10 +710,10 @@ def integrate_projected(f, y0, schedule: Schedule, method, abserr, relerr, on_ro
             if key in st and key not in stats:
                 stats[key] = st[key]
         y = project(b, got[-1])
-        on_row(b, y)
+        run.on_row(b, y)
         a = b
-        if progress is not None:
-            progress.update(b)
+        if run.progress is not None:
+            run.progress.update(b)
     stats["largest_correction"] = project.largest_correction
     return stats
 

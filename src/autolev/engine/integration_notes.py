@@ -8,68 +8,61 @@ import warnings
 
 import numpy as np
 
-from .integrate import IntegrationFailure
+from .integrate import Integration, IntegrationFailure
+from .integrators import LSODA, RADAU, Integrator
 
 
-def switch_when_stiff(t: float, hlamb: float) -> str:
+def switch_when_stiff(t: float, hlamb: float) -> Integrator:
     # Radau, not LSODA: on the lightly damped stiff spring chain of
     # bench/work_precision.py LSODA took 1.4 ms to 680 ms depending on the tolerance,
     # Radau 5 to 133 ms at every tolerance
     warnings.warn(f"the equations are stiff from T = {t:.6g} (step size times the largest "
                   f"eigenvalue ~ {hlamb:.3g}, beyond DOP853's stability): going on with "
-                  "Radau (implicit); ask for --method radau from the start to avoid the "
-                  "switch", stacklevel=2)
-    return "radau"
+                  f"{RADAU.scipy_name} (implicit); ask for --method {RADAU.name} from the "
+                  "start to avoid the switch", stacklevel=2)
+    return RADAU
 
 
-# RELERR at and above which a method is known to give qualitatively wrong motion
-# over long runs: the relative energy error of the conservative double pendulum over
-# 100 s (Q1 = 30 deg, Q2 = 60 deg; bench/work_precision.py) exceeds 1 % there --
-# RK23 1.5 % at 1e-4; RK45 8.8 %, LSODA 4.3 %, BDF 11 % at 1e-3 (steps not bounded
-# by INTEGSTP); Radau, DOP853 and Kutta-Merson stay below 0.1 % at 1e-3.
-LOOSE_RELERR = {"rk23": 1e-4, "rk45": 1e-3, "lsoda": 1e-3, "bdf": 1e-3, "radau": 1e-2,
-                "dop853": 1e-2, "kutta-merson": 1e-2}
+def loose_tolerance_note(integrator: Integrator, relerr: float) -> None:
+    limit = integrator.loose_relerr
+    if relerr >= limit:
+        warnings.warn(f"RELERR = {relerr:g} is loose for {integrator.name}: at RELERR >= "
+                      f"{limit:g} it is known to give qualitatively wrong motion over long "
+                      "runs (a conservative double pendulum gains or loses over 1 % of its "
+                      f"energy in 100 s); use RELERR <= {limit / 100:g}", stacklevel=4)
 
 
-def loose_tolerance_note(method: str, relerr: float) -> None:
-    limit = LOOSE_RELERR.get(method)
-    if limit is not None and relerr >= limit:
-        warnings.warn(f"RELERR = {relerr:g} is loose for {method}: at RELERR >= {limit:g} it "
-                      "is known to give qualitatively wrong motion over long runs (a "
-                      "conservative double pendulum gains or loses over 1 % of its energy in "
-                      f"100 s); use RELERR <= {limit / 100:g}", stacklevel=4)
-
-
-def stiff_note(stats: dict, method: str) -> None:
+def stiff_note(stats: dict, integrator: Integrator) -> None:
     t = stats.get("stiff_t")
     if t is None or stats.get("switched_to"):
         return
-    warnings.warn(f"the equations are stiff from T = {t:.6g}: {method}'s steps are limited "
-                  "by its stability, not by the error asked for (a slow run); an implicit "
-                  "method (--method lsoda or radau; method='lsoda') takes far fewer steps",
-                  stacklevel=3)
+    warnings.warn(f"the equations are stiff from T = {t:.6g}: {integrator.name}'s steps are "
+                  "limited by its stability, not by the error asked for (a slow run); an "
+                  f"implicit method (--method {LSODA.name} or {RADAU.name}; "
+                  f"method='{LSODA.name}') takes far fewer steps", stacklevel=3)
 
 
 # h*|lambda| where Kutta-Merson stops being stable on the negative real axis
 KM_STABILITY = 3.5
 
 
-def halving_verdict(f, failure, schedule, abserr: float, relerr: float) -> str:
+def halving_verdict(integration: Integration, failure: IntegrationFailure) -> str:
     """Why Kutta-Merson's step was halved too often: zero tolerances, or stiffness
     (judged by the Jacobian's eigenvalues where it stopped), or neither."""
+    abserr, relerr = integration.abserr, integration.relerr
     if abserr <= 0 and relerr <= 0:
         return ("ABSERR and RELERR are both 0, which no step can satisfy: give them "
                 "values (e.g. ABSERR = 1E-8, RELERR = 1E-7)")
-    floor = abs(schedule.integstp) / 2 ** 20
-    rho = spectral_radius(f, failure.t, failure.y)
+    floor = abs(integration.schedule.integstp) / 2 ** 20
+    rho = spectral_radius(integration.f, failure.t, failure.y)
     if rho is None:
         return "the derivatives are not finite near that state"
     if rho * floor > KM_STABILITY:
         return (f"the equations are stiff there (the Jacobian's largest eigenvalue is "
                 f"about {rho:.3g} in size: Kutta-Merson needs steps below "
                 f"{KM_STABILITY / rho:.2g}, finer than the {floor:.2g} its 20 halvings of "
-                "INTEGSTP allow); an implicit method takes them in stride: --method radau "
-                "(method='radau')")
+                f"INTEGSTP allow); an implicit method takes them in stride: --method "
+                f"{RADAU.name} (method='{RADAU.name}')")
     verdict = (f"the equations are not stiff there (the Jacobian's largest eigenvalue is "
                f"about {rho:.3g} in size)")
     if abserr <= 0:

@@ -4,30 +4,25 @@ from __future__ import annotations
 
 from dataclasses import dataclass, fields, replace
 
-# the integrators by the names a user gives (scipy's solve_ivp names for the rest)
-SCIPY_METHODS = {"rk45": "RK45", "dop853": "DOP853", "radau": "Radau", "bdf": "BDF",
-                 "lsoda": "LSODA", "rk23": "RK23"}
-METHODS = ("kutta-merson",) + tuple(SCIPY_METHODS)
-
 
 @dataclass(frozen=True)
 class RunOptions:
-    """`method`: the integrator (None: that of Autolev's program for the CODE file,
-    ode45 ("rk45") for a .m file, else its Kutta-Merson); `backend`: "auto" (C when a
-    compiler is found), "c" or "python"; `infile`: an Autolev .in file read over the
-    INPUT values; `specified`: {name: a function f(t) or f(t, x), a number, or a sympy
-    expression} for specified quantities the model leaves undefined; `progress`: a
-    stream for progress lines (None: none); `overrides`: {name: value} in the
-    quantities' own units, read last; `compiled`: the integration loop in C where the
-    right-hand side is; `constraints`: configuration constraints g(q) kept at their
-    initial values by projection at every print time; `quirks`: compute what
+    """`method`: the integrator's name (integrators.METHODS; None: that of Autolev's
+    program for the CODE file, ode45 ("rk45") for a .m file, else its Kutta-Merson);
+    `backend`: "auto" (C when a compiler is found), "c" or "python"; `infile`: an
+    Autolev .in file read over the INPUT values; `specified`: {name: a function f(t) or
+    f(t, x), a number, or a sympy expression} for specified quantities the model leaves
+    undefined; `progress`: a stream for progress lines (None: none); `overrides`: {name:
+    value} in the quantities' own units, read last; `compiled`: the integration loop in
+    C where the right-hand side is; `constraints`: configuration constraints g(q) kept
+    at their initial values by projection at every print time; `quirks`: compute what
     Autolev's programs computed where they were wrong (docs/language.md); `keep_rows`:
     the Result holds every row (False: only the last; the files hold them all);
     `missing_values`: "refuse" (constants without a value stop the run before anything
-    is compiled) or "zero"; `overwrite`: replace files in the output folder that
-    autolev did not write; `recursion`: a model whose bodies form a tree of joints has
-    its accelerations from the articulated-body recursion (runtime/articulated.py;
-    False: Kane's mass matrix solved at each evaluation, as Autolev's programs did)."""
+    is compiled) or "zero"; `overwrite`: replace files in the output folder that autolev
+    did not write; `recursion`: a model whose bodies form a tree of joints has its
+    accelerations from the articulated-body recursion (runtime/articulated.py; False:
+    Kane's mass matrix solved at each evaluation, as Autolev's programs did)."""
 
     method: str | None = None
     backend: str = "auto"

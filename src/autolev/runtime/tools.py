@@ -3,7 +3,8 @@ runtime's modules may move without the CLI knowing (the façade of `autolev.cli`
 from .numerics.command import program_file_name
 from ..engine.files import safe_stem
 from ..engine.numbers import parse_number
-from ..engine.options import METHODS, RunOptions
+from ..engine.integrators import METHODS
+from ..engine.options import RunOptions
 from .numerics.prepare import keep_built
 from ..engine.outputs import Written, write_output
 

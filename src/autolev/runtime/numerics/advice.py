@@ -12,7 +12,7 @@ from .. import symbols as S
 from ..calculus import NumericPoint, is_real_number
 from ...engine.errors import AutolevModelError
 from .inputs import display_name
-from ...engine.integrate import IntegrationFailure, failure_basis
+from ...engine.integrate import Integration, IntegrationFailure, failure_basis
 from ...engine.integration_notes import halving_verdict
 
 
@@ -127,7 +127,7 @@ def zero_hint(zero_params) -> str:
 
 
 def failure_message(exc: IntegrationFailure, system, inputs, result, zero_params,
-                     integration: tuple) -> str:
+                     integration: Integration) -> str:
     """Autolev's message for a failed integration, with what we can tell of its cause."""
     message = failure_basis(exc, result.state_names) + (
         zero_hint(zero_params) if result.stats["rows"] <= 1 else "")
@@ -147,6 +147,5 @@ def failure_message(exc: IntegrationFailure, system, inputs, result, zero_params
         message += (f"; {', '.join(huge[:4])}: a product or power of so large a value is "
                     "beyond double precision (inf or NaN), which this failure may come from")
     if exc.cuts:
-        f, sched, abserr, relerr = integration
-        message += "; " + halving_verdict(f, exc, sched, abserr, relerr)
+        message += "; " + halving_verdict(integration, exc)
     return message

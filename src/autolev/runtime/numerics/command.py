@@ -97,13 +97,6 @@ def program_file_name(filename: str) -> str:
     return filename.lower() if program_language(filename) in ("f", "for") else filename
 
 
-def program_method(filename: str) -> str:
-    """The integrator of the program Autolev wrote for a CODE file: Matlab's programs
-    call ode45 (Dormand-Prince 5(4), which is scipy's RK45), the C and Fortran ones
-    their Kutta-Merson."""
-    return "rk45" if program_language(filename) == "m" else "kutta-merson"
-
-
 def time_dependence(model, system) -> list[str]:
     """What an ALGEBRAIC or NONLINEAR program computes that depends on T (OUTPUT columns,
     ENCODE arrays, its equations).  Such a program has no time of its own: it reads T

@@ -12,13 +12,15 @@ import warnings
 from ...engine.algebraic import AlgebraicInputs, SweepPoints
 from ...engine.code_kinds import CodeKind
 from ...engine.dynamics import print_schedule
+from ...engine.errors import AutolevModelError
 from ...engine.execute import Execution, execute
+from ...engine.integrators import Integrator, for_run
 from ...engine.options import RunOptions
 from ...engine.results import Result
 from .. import symbols as S
 from .. import units
 from .advice import failure_message, zero_hint
-from .command import program_file_name, program_language, program_method
+from .command import program_file_name, program_language
 from .inputs import display_name
 from .prepare import prepare_command
 
@@ -29,15 +31,15 @@ def run_command(model, command, out_dir=None,
     (None: no files), written as one set: a file there that autolev did not write
     stops the run before it computes anything, unless `options.overwrite`."""
     kind = command.kind
-    method = options.method or program_method(command.filename)
-    # an integration may start on the Python while the C compiles, but DOP853 in the
-    # compiled loop (run_dynamics) and a projection onto constraints
+    language = program_language(command.filename)
+    integrator = _integrator(options.method, language) if kind.integrates else None
+    # an integration may start on the Python while the C compiles, but not one that
+    # waits for the compiled loop (run_dynamics) nor a projection onto constraints
     starts_now = (kind.integrates and not options.constraints
-                  and not (method == "dop853" and options.compiled))
+                  and not (integrator.waits_for_loop and options.compiled))
     prepared = prepare_command(model, command, options, out_dir=out_dir,
                                starts_now=starts_now)
     system, inputs = prepared.system, prepared.inputs
-    language = program_language(command.filename)
     zero_params = [display_name(p) for p in system.params if inputs.internal(p) == 0.0]
 
     def advise(failure, result, integration) -> str:
@@ -49,7 +51,7 @@ def run_command(model, command, out_dir=None,
         [([c.label for c in cols], [c.unit for c in cols]) for cols in prepared.files],
         inputs.file_text(f"{prepared.stem}.in", prepared.kinds) if out_dir is not None else "",
         [name for name, _ in prepared.encoded], _rows_expected(prepared, command), language,
-        method,
+        integrator,
         None if kind.integrates else algebraic_inputs(
             system, inputs, kind, prepared.unknowns, prepared.sweep, zero_params),
         prepared.build_seconds,
@@ -57,6 +59,15 @@ def run_command(model, command, out_dir=None,
         if kind.integrates else None,
         advise=advise if kind.integrates else None)
     return execute(execution, out_dir, options)
+
+
+def _integrator(name: str | None, language: str) -> Integrator:
+    """The integrator asked for by name, else that of Autolev's program in `language`;
+    an unknown name is the run's error."""
+    try:
+        return for_run(name, language)
+    except ValueError as exc:
+        raise AutolevModelError(str(exc)) from None
 
 
 def _projector(system, inputs, constraints, prepared, language):
