@@ -176,11 +176,6 @@ def sympy_script(eqs: Equations, source: str, why: str | None = None) -> str:
     return "\n".join(out) + "\n"
 
 
-# why each scipy method stands for the integrator of the program Autolev wrote
-METHOD_REASONS = {"RK45": "Matlab's ode45, as the .m program",
-                  "DOP853": "scipy has no Kutta-Merson (the C program's)"}
-
-
 def values_text(eqs: Equations, names: dict, p) -> list:
     """The script's `constants`, `initial_conditions`, `specified`, `integration` and
     `outputs`, with `names` for the model's symbols and `p` printing expressions."""
@@ -196,7 +191,7 @@ def values_text(eqs: Equations, names: dict, p) -> list:
            "specified = {" + ", ".join(f"{names[s]}: 0.0" for s in eqs.specified) + "}",
            "integration = {" + ", ".join(f"{k!r}: {number_text(v)}"
                                          for k, v in eqs.integration.items()) + "}",
-           "# scipy's method for the program's integrator: " + METHOD_REASONS[eqs.method],
+           "# scipy's method for the program's integrator: " + eqs.method_reason,
            f"integration_method = {eqs.method!r}",
            "# OUTPUT columns: (label, unit, expression in the unit)",
            "outputs = ["]

@@ -102,6 +102,13 @@ def of_program(language: str) -> Integrator:
     return RK45 if language == "m" else KUTTA_MERSON
 
 
+def scipy_stand_in(integrator: Integrator) -> Integrator:
+    """The solver a script without autolev integrates with in place of `integrator`:
+    itself where scipy has it, else DOP853 (an embedded pair with error control, as
+    Kutta-Merson is, of higher order)."""
+    return integrator if integrator.scipy_name is not None else DOP853
+
+
 def for_run(name: str | None, language: str) -> Integrator:
     """The integrator a run asked for by name, else (no name) that of Autolev's
     program in that language."""

@@ -31,7 +31,8 @@ class Equations:
     specified: list         # symbols given as functions of time
     integration: dict       # TINITIAL, TFINAL, INTEGSTP, PRINTINT, ABSERR, RELERR
     outputs: list           # (label, unit, expression, in degrees)
-    method: str             # scipy's integrator standing for the program's (RK45, DOP853)
+    method: str             # the scipy solver standing for the program's integrator
+    method_reason: str      # why that one
 
 
 def equations_of(model, command, values: bool = True, infile=None,
@@ -42,8 +43,9 @@ def equations_of(model, command, values: bool = True, infile=None,
     equations alone (no constant needs a value; constants, initial values and
     integration are left empty).  `missing_values`: "refuse" (a constant without a
     value is refused, as a run refuses it) or "keep" (its value is None)."""
-    from .numerics.command import (equations_and_unknowns, output_columns, program_method,
+    from .numerics.command import (equations_and_unknowns, output_columns, program_language,
                                    program_of)
+    from ..engine.integrators import of_program, scipy_stand_in
     from ..engine.files import safe_stem
     from .numerics.inputs import DEFAULT_SOURCE
     from .numerics.prepare import InputsWanted, SystemBuild, numeric_system, take_inputs
@@ -81,6 +83,8 @@ def equations_of(model, command, values: bool = True, infile=None,
         # speeds fixed for the run (a locked coordinate's, at 0) first, then what is defined
         definitions = [(s, sm.sympify(v)) for s, v in system.aux_fixed.items()] + \
             [(s, model.defs.rhs[s]) for s in order if s not in system.aux_fixed]
+    program = of_program(program_language(command.filename))
+    stand_in = scipy_stand_in(program)
     return Equations(
         model_name=model.name, command=f"CODE {kind.upper()} {command.filename}",
         states=list(system.states), rates=rates, unknowns=list(system.implicit_unknowns),
@@ -93,9 +97,9 @@ def equations_of(model, command, values: bool = True, infile=None,
         integration={name: inputs.internal(name) for name in
                      ("TINITIAL", "TFINAL", "INTEGSTP", "ABSERR", "RELERR")}
         | {"PRINTINT": int(inputs.values["PRINTINT"].given)} if values else {},
-        outputs=outputs,
-        # a .m program integrates with ode45 (scipy's RK45); scipy has no Kutta-Merson
-        method="RK45" if program_method(command.filename) == "rk45" else "DOP853")
+        outputs=outputs, method=stand_in.scipy_name,
+        method_reason=f"the program's own ({program.name})" if stand_in is program
+        else f"scipy has no {program.name} (the program's)")
 
 
 def state_of(unknown):

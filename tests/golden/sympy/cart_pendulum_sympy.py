@@ -94,7 +94,7 @@ initial_conditions = {TH: 0.5235987755982988, TH_rate: 0.0, X: 0.0, X_rate: 0.0}
 # each a number or a function of time; 0 unless given
 specified = {}
 integration = {'TINITIAL': 0.0, 'TFINAL': 5.0, 'INTEGSTP': 0.01, 'ABSERR': 1e-08, 'RELERR': 1e-07, 'PRINTINT': 1}
-# scipy's method for the program's integrator: scipy has no Kutta-Merson (the C program's)
+# scipy's method for the program's integrator: scipy has no kutta-merson (the program's)
 integration_method = 'DOP853'
 # OUTPUT columns: (label, unit, expression in the unit)
 outputs = [

@@ -107,7 +107,7 @@ initial_conditions = {Q1: 0.5235987755982988, Q2: 1.0471975511965976, U1: 0.0, U
 # each a number or a function of time; 0 unless given
 specified = {}
 integration = {'TINITIAL': 0.0, 'TFINAL': 10.0, 'INTEGSTP': 0.01, 'ABSERR': 1e-08, 'RELERR': 1e-08, 'PRINTINT': 1}
-# scipy's method for the program's integrator: scipy has no Kutta-Merson (the C program's)
+# scipy's method for the program's integrator: scipy has no kutta-merson (the program's)
 integration_method = 'DOP853'
 # OUTPUT columns: (label, unit, expression in the unit)
 outputs = [

@@ -97,7 +97,7 @@ initial_conditions = {E1: 0.0, E2: 0.0, E3: 0.0, E4: 1.0, U1: 0.1, U2: 2.0, U3: 
 # each a number or a function of time; 0 unless given
 specified = {}
 integration = {'TINITIAL': 0.0, 'TFINAL': 10.0, 'INTEGSTP': 0.05, 'ABSERR': 1e-08, 'RELERR': 1e-07, 'PRINTINT': 1}
-# scipy's method for the program's integrator: scipy has no Kutta-Merson (the C program's)
+# scipy's method for the program's integrator: scipy has no kutta-merson (the program's)
 integration_method = 'DOP853'
 # OUTPUT columns: (label, unit, expression in the unit)
 outputs = [

@@ -81,7 +81,7 @@ initial_conditions = {THETA: 0.17453292519943295, THETA_rate: 0.0}
 # each a number or a function of time; 0 unless given
 specified = {}
 integration = {'TINITIAL': 0.0, 'TFINAL': 5.0, 'INTEGSTP': 0.01, 'ABSERR': 1e-08, 'RELERR': 1e-07, 'PRINTINT': 1}
-# scipy's method for the program's integrator: scipy has no Kutta-Merson (the C program's)
+# scipy's method for the program's integrator: scipy has no kutta-merson (the program's)
 integration_method = 'DOP853'
 # OUTPUT columns: (label, unit, expression in the unit)
 outputs = [

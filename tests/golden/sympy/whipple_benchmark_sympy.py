@@ -207,7 +207,7 @@ initial_conditions = {Q1: 0.0, Q2: 0.0, Q3: 0.0, Q4: 0.0, Q5: 0.3141592653589793
 # each a number or a function of time; 0 unless given
 specified = {}
 integration = {'TINITIAL': 0.0, 'TFINAL': 1.0, 'INTEGSTP': 0.1, 'ABSERR': 1e-08, 'RELERR': 1e-07, 'PRINTINT': 1}
-# scipy's method for the program's integrator: scipy has no Kutta-Merson (the C program's)
+# scipy's method for the program's integrator: scipy has no kutta-merson (the program's)
 integration_method = 'DOP853'
 # OUTPUT columns: (label, unit, expression in the unit)
 outputs = [
