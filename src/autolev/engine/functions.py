@@ -1,8 +1,9 @@
 """The functions a model's expressions hold, one record each (`FunctionSpec`): the sympy
-function, the derivative, and the spelling in every language a program is printed in.
-Every other place that computes or prints a function on numbers reads it here: the
-printers (C, Python, Fortran, Matlab), a program's walk and its numpy fallback and the
-dual numbers.  Without sympy, so that a warm run reads it too.
+function, the values in complex precision, the derivative, and the spelling in every
+language a program is printed in.  Every other place that computes or prints a function
+reads it here: the printers (C, Python, Fortran, Matlab), a program's walk and its numpy
+fallback, the dual numbers, fastdiff and the complex walk of the definitions.  Without
+sympy, so that a warm run reads it too.
 
 A spelling is a callee (`sin`, `math.sin`: called with the printed arguments) or a
 template whose `{0}`, `{1}` are the printed arguments; a two-argument template of a
@@ -12,6 +13,7 @@ both take: `m` is sympy, or the printed Python's functions by sympy's names.
 """
 from __future__ import annotations
 
+import cmath
 import functools
 import re
 from collections.abc import Callable
@@ -26,11 +28,17 @@ class FunctionSpec:
     # the derivative of MAX)
     autolev: str | None
     # sympy's function of this name (Int and Round: Autolev's own, in
-    # runtime/functions.py)
+    # runtime/sympy_functions.py)
     sympy: str
     arity: int | None = 1                  # None: one or more arguments
+    # in complex double precision on sympy's principal branches, and the arguments on a
+    # branch cut where cmath takes the other side (left to sympy)
+    complex_double: Callable | None = None
+    branch_cut: Callable | None = None
     differential: Callable | None = None   # None: sympy's own; none on dual numbers
     steps: bool = False                    # constant between jumps: its derivative is 0
+    real_only: bool = False                # the rule holds of real arguments (else sympy's)
+    hoisted: bool = False                  # a repeated call is computed once (codegen)
     c: str | None = None
     python: str | None = None              # on `math` and pyfunction's helpers
     # the numpy fallback's counterpart of the function of its own its Python calls
@@ -77,16 +85,23 @@ def called_names(language: str) -> frozenset[str]:
     return frozenset(name for spec in FUNCTION_SPECS for name in spec.calls(language))
 
 
+def _on_a_real_cut(z: complex) -> bool:
+    return z.imag == 0 and abs(z.real) > 1
+
+
 SIN = FunctionSpec(
-    "SIN", "sin",
+    "SIN", "sin", hoisted=True,
+    complex_double=cmath.sin,
     differential=lambda m, x, dx: m.cos(x) * dx,
     c="sin", python="math.sin", numpy="sin", fortran="SIN", matlab="sin")
 COS = FunctionSpec(
-    "COS", "cos",
+    "COS", "cos", hoisted=True,
+    complex_double=cmath.cos,
     differential=lambda m, x, dx: -m.sin(x) * dx,
     c="cos", python="math.cos", numpy="cos", fortran="COS", matlab="cos")
 TAN = FunctionSpec(
-    "TAN", "tan",
+    "TAN", "tan", hoisted=True,
+    complex_double=cmath.tan,
     differential=lambda m, x, dx: (1 + m.tan(x) ** 2) * dx,
     c="tan", python="math.tan", numpy="tan", fortran="TAN", matlab="tan")
 SEC = FunctionSpec(
@@ -105,31 +120,37 @@ COT = FunctionSpec(
     c="(1.0/tan({0}))", python="(1.0/math.tan({0}))", fortran="(1/TAN({0}))",
     matlab="(1.0/tan({0}))")
 ASIN = FunctionSpec(
-    "ASIN", "asin",
+    "ASIN", "asin", hoisted=True,
+    complex_double=cmath.asin, branch_cut=_on_a_real_cut,
     differential=lambda m, x, dx: 1 / m.sqrt(1 - x * x) * dx,
     c="asin", python="math.asin", numpy="arcsin", fortran="ASIN", matlab="asin")
 ACOS = FunctionSpec(
-    "ACOS", "acos",
+    "ACOS", "acos", hoisted=True,
+    complex_double=cmath.acos, branch_cut=_on_a_real_cut,
     differential=lambda m, x, dx: -1 / m.sqrt(1 - x * x) * dx,
     c="acos", python="math.acos", numpy="arccos", fortran="ACOS", matlab="acos")
 ATAN = FunctionSpec(
-    "ATAN", "atan",
+    "ATAN", "atan", hoisted=True,
+    complex_double=cmath.atan, branch_cut=lambda z: z.real == 0 and abs(z.imag) > 1,
     differential=lambda m, x, dx: 1 / (1 + x * x) * dx,
     c="atan", python="math.atan", numpy="arctan", fortran="ATAN", matlab="atan")
 ATAN2 = FunctionSpec(
-    "ATAN2", "atan2", arity=2,
+    "ATAN2", "atan2", arity=2, hoisted=True,
     differential=lambda m, y, x, dy, dx: (x * dy - y * dx) / (x * x + y * y),
     c="atan2", python="math.atan2", numpy="arctan2", fortran="ATAN2", matlab="atan2")
 SINH = FunctionSpec(
-    "SINH", "sinh",
+    "SINH", "sinh", hoisted=True,
+    complex_double=cmath.sinh,
     differential=lambda m, x, dx: m.cosh(x) * dx,
     c="sinh", python="math.sinh", numpy="sinh", fortran="SINH", matlab="sinh")
 COSH = FunctionSpec(
-    "COSH", "cosh",
+    "COSH", "cosh", hoisted=True,
+    complex_double=cmath.cosh,
     differential=lambda m, x, dx: m.sinh(x) * dx,
     c="cosh", python="math.cosh", numpy="cosh", fortran="COSH", matlab="cosh")
 TANH = FunctionSpec(
-    "TANH", "tanh",
+    "TANH", "tanh", hoisted=True,
+    complex_double=cmath.tanh,
     differential=lambda m, x, dx: (1 - m.tanh(x) ** 2) * dx,
     c="tanh", python="math.tanh", numpy="tanh", fortran="TANH", matlab="tanh")
 ASINH = FunctionSpec(
@@ -145,11 +166,13 @@ ATANH = FunctionSpec(
     differential=lambda m, x, dx: 1 / (1 - x * x) * dx,
     c="atanh", python="math.atanh", numpy="arctanh", fortran="ATANH", matlab="atanh")
 EXP = FunctionSpec(
-    "EXP", "exp",
+    "EXP", "exp", hoisted=True,
+    complex_double=cmath.exp,
     differential=lambda m, x, dx: m.exp(x) * dx,
     c="exp", python="math.exp", numpy="exp", fortran="EXP", matlab="exp")
 LOG = FunctionSpec(
-    "LOG", "log",
+    "LOG", "log", hoisted=True,
+    complex_double=cmath.log,
     differential=lambda m, x, dx: 1 / x * dx,
     c="log", python="math.log", numpy="log", fortran="LOG", matlab="log")
 SQRT = FunctionSpec(
@@ -158,34 +181,35 @@ SQRT = FunctionSpec(
     c="sqrt", python="math.sqrt", numpy="sqrt", fortran="SQRT", matlab="sqrt")
 ABS = FunctionSpec(
     "ABS", "Abs",
-    differential=lambda m, x, dx: m.sign(x) * dx,
+    complex_double=abs,
+    differential=lambda m, x, dx: m.sign(x) * dx, real_only=True,
     c="fabs", python="math.fabs", numpy="abs", fortran="ABS", matlab="abs")
 SIGN = FunctionSpec(
     "SIGN", "sign",
-    steps=True,
+    steps=True, real_only=True,
     c="((double)((({0}) > 0) - (({0}) < 0)))", python="_sign", numpy="sign",
     fortran="(MERGE(1.0D0, 0.0D0, {0} .GT. 0) - MERGE(1.0D0, 0.0D0, {0} .LT. 0))", matlab="sign")
 # sympy's second argument is its value at 0, which the programs take as 1/2
 HEAVISIDE = FunctionSpec(
     None, "Heaviside", arity=2,
-    steps=True,
+    steps=True, real_only=True,
     c="(({0}) > 0 ? 1.0 : (({0}) < 0 ? 0.0 : 0.5))", python="_heaviside({0})",
     numpy="_np_heaviside", fortran="MERGE(1.0D0, MERGE(0.0D0, 0.5D0, {0} .LT. 0), {0} .GT. 0)")
 FLOOR = FunctionSpec(
     "FLOOR", "floor",
-    steps=True,
+    steps=True, real_only=True,
     c="floor", python="math.floor", numpy="floor", fortran="DBLE(FLOOR({0}, 8))", matlab="floor")
 CEIL = FunctionSpec(
     "CEIL", "ceiling",
-    steps=True,
+    steps=True, real_only=True,
     c="ceil", python="math.ceil", numpy="ceil", fortran="DBLE(CEILING({0}, 8))", matlab="ceil")
 INT = FunctionSpec(
     "INT", "Int",
-    steps=True,
+    steps=True, real_only=True,
     c="trunc", python="_trunc", numpy="trunc", fortran="AINT", matlab="fix")
 ROUND = FunctionSpec(
     "ROUND", "Round",
-    steps=True,
+    steps=True, real_only=True,
     c="round", python="_round", numpy="_np_round", fortran="ANINT", matlab="round")
 MAX = FunctionSpec(
     "MAX", "Max", arity=None,
