@@ -10,6 +10,7 @@ import sympy as sm
 from .calculus import is_real_number, refuse_huge_powers, refused_substitution
 from .sympy_functions import Int, Round
 from ..engine.errors import AutolevModelError
+from ..engine.functions import MAX, MIN
 from .frame import Frame
 from .vectors import Dyadic, Vector, outer
 
@@ -132,12 +133,12 @@ def set_element(m, index: tuple, value) -> sm.Matrix:
 
 def maximum(*args):
     """MAX(a, b, ...)."""
-    return sm.Max(*_comparable("MAX", args))
+    return sm.Max(*_comparable(MAX.autolev, args))
 
 
 def minimum(*args):
     """MIN(a, b, ...)."""
-    return sm.Min(*_comparable("MIN", args))
+    return sm.Min(*_comparable(MIN.autolev, args))
 
 
 def _comparable(what: str, args) -> list:
