@@ -17,7 +17,7 @@ from . import ir
 from .dispatch import Dispatch
 from .errors import AutolevError, Diagnostic, Location
 from .runtime import symbols as S
-from .translate.functions.scalars import ELEMENTARY
+from .engine.functions import FUNCTION_BY_NAME
 
 
 class SpecifiedValueError(AutolevError):
@@ -153,10 +153,9 @@ def _binary(b: _Builder, e: ir.BinOp):
 def _call(b: _Builder, e: ir.Call):
     name = e.name.upper()
     args = [b.build(a) for a in e.args]
-    if name in ELEMENTARY and len(args) == 1:
-        return getattr(sm, ELEMENTARY[name])(args[0])
-    if name == "ATAN2" and len(args) == 2:
-        return sm.atan2(*args)
-    if name == "LOG10" and len(args) == 1:
-        return sm.log(args[0], 10)
+    spec = FUNCTION_BY_NAME.get(name)
+    # a function the translation writes as sympy's own is built here the same way
+    if spec is not None and spec.callee is not None and spec.callee.startswith("sm.") \
+            and spec.arity == len(args):
+        return getattr(sm, spec.callee.removeprefix("sm."))(*args, *spec.fixed_arguments)
     return b.refuse(e, f"{name} with {len(args)} argument{'s' * (len(args) != 1)}")

@@ -13,10 +13,12 @@ from __future__ import annotations
 
 import marshal
 import math
+from types import SimpleNamespace
 
 import numpy as np
 
-from .pyfunction import MATH_ERRORS, fast_namespace
+from .functions import FUNCTION_SPECS, FunctionSpec
+from .pyfunction import MATH_ERRORS, fast_namespace, python_callables
 
 
 class NotDifferentiable(Exception):
@@ -114,12 +116,22 @@ def _real(v):
     return v
 
 
-def _chain(f, df):
-    """f on floats and duals, with f'(v) = df(v)."""
-    def apply(x):
-        if isinstance(x, Dual):
-            return Dual(f(x.v), df(x.v) * x.g)
-        return f(x)
+def _differentiable(f, differential, arity: int | None):
+    """f on floats and duals, with d f = differential(the rules' floats, *arguments,
+    *their changes)."""
+    if arity == 1:              # most calls: without the general case's lists
+        def apply_one(x):
+            if isinstance(x, Dual):
+                return Dual(f(x.v), differential(_FLOATS, x.v, x.g))
+            return f(x)
+        return apply_one
+
+    def apply(*args):
+        if not any(isinstance(a, Dual) for a in args):
+            return f(*args)
+        values = [_value(a) for a in args]
+        changes = [a.g if isinstance(a, Dual) else 0.0 for a in args]
+        return Dual(f(*values), differential(_FLOATS, *values, *changes))
     return apply
 
 
@@ -130,59 +142,38 @@ def _flat(f):
     return apply
 
 
-def _atan2(y, x):
-    if not isinstance(y, Dual) and not isinstance(x, Dual):
-        return math.atan2(y, x)
-    yv, xv = _value(y), _value(x)
-    r2 = xv * xv + yv * yv
-    g = 0.0
-    if isinstance(y, Dual):
-        g = (xv / r2) * y.g
-    if isinstance(x, Dual):
-        g = g - (yv / r2) * x.g
-    return Dual(math.atan2(yv, xv), g)
-
-
-def _missing(name: str):
+def _missing(f, name: str):
     def apply(*args):
         if any(isinstance(a, Dual) for a in args):
             raise NotDifferentiable(f"no derivative of {name} here")
-        return getattr(math, name)(*args)
+        return f(*args)
     return apply
 
 
-class _DualMath:
-    """`math` for dual numbers (what the printed Python calls as math.NAME)."""
+def _on_duals(spec: FunctionSpec, f):
+    """The function of `spec` computed as `f` on floats, on floats and duals."""
+    if spec.steps:
+        return _flat(f)
+    if spec.differential is None:
+        return _missing(f, spec.name)
+    return _differentiable(f, spec.differential, spec.arity)
 
-    pi, e, nan, inf = math.pi, math.e, math.nan, math.inf
-    sin = staticmethod(_chain(math.sin, math.cos))
-    cos = staticmethod(_chain(math.cos, lambda v: -math.sin(v)))
-    tan = staticmethod(_chain(math.tan, lambda v: 1.0 + math.tan(v) ** 2))
-    asin = staticmethod(_chain(math.asin, lambda v: 1.0 / math.sqrt(1.0 - v * v)))
-    acos = staticmethod(_chain(math.acos, lambda v: -1.0 / math.sqrt(1.0 - v * v)))
-    atan = staticmethod(_chain(math.atan, lambda v: 1.0 / (1.0 + v * v)))
-    sinh = staticmethod(_chain(math.sinh, math.cosh))
-    cosh = staticmethod(_chain(math.cosh, math.sinh))
-    tanh = staticmethod(_chain(math.tanh, lambda v: 1.0 - math.tanh(v) ** 2))
-    asinh = staticmethod(_chain(math.asinh, lambda v: 1.0 / math.sqrt(v * v + 1.0)))
-    acosh = staticmethod(_chain(math.acosh, lambda v: 1.0 / math.sqrt(v * v - 1.0)))
-    atanh = staticmethod(_chain(math.atanh, lambda v: 1.0 / (1.0 - v * v)))
-    exp = staticmethod(_chain(math.exp, math.exp))
-    log = staticmethod(_chain(math.log, lambda v: 1.0 / v))
-    sqrt = staticmethod(_chain(math.sqrt, lambda v: 0.5 / math.sqrt(v)))
-    # |x|' = sign(x), 0 at 0 (as sympy's derivative of Abs gives)
-    fabs = staticmethod(_chain(math.fabs, lambda v: float((v > 0) - (v < 0))))
-    erf = staticmethod(_chain(math.erf, lambda v: 2.0 / math.sqrt(math.pi) * math.exp(-v * v)))
-    floor = staticmethod(_flat(math.floor))
-    ceil = staticmethod(_flat(math.ceil))
-    atan2 = staticmethod(_atan2)
-    gamma = staticmethod(_missing("gamma"))
+
+_FAST = fast_namespace()
+# what the differentials call on floats: the printed Python's functions by sympy's names
+_FLOATS = SimpleNamespace(pi=math.pi, **python_callables(_FAST))
+# the records by the function of their own their printed Python calls (math.sin, _sign)
+_CALLING = {s.python_callee: s for s in FUNCTION_SPECS if s.python_callee is not None}
+# `math` for dual numbers (what the printed Python calls as math.NAME)
+_DUAL_MATH = SimpleNamespace(pi=math.pi, e=math.e, nan=math.nan, inf=math.inf, **{
+    name.removeprefix("math."): _on_duals(s, getattr(math, name.removeprefix("math.")))
+    for name, s in _CALLING.items() if name.startswith("math.")})
 
 
 def _namespace() -> dict:
-    fast = fast_namespace()
-    names = {k: _flat(fast[k]) for k in ("_sign", "_heaviside", "_trunc", "_round")}
-    return dict(names, math=_DualMath)
+    names = {name: _on_duals(s, _FAST[name]) for name, s in _CALLING.items()
+             if not name.startswith("math.")}
+    return dict(names, math=_DUAL_MATH)
 
 
 class DualJacobian:

@@ -9,6 +9,8 @@ import math
 
 import numpy as np
 
+from .functions import FUNCTION_SPECS, written
+
 
 def _sign(x):
     return (x > 0) - (x < 0)
@@ -33,37 +35,66 @@ def _np_round(x):
     return t + np.copysign(1.0, x) * (np.abs(x - t) >= 0.5)
 
 
+def _np_heaviside(x):
+    return np.heaviside(x, 0.5)
+
+
+# the functions the spellings name that neither math nor numpy has, by their own names
+_HELPERS = {f.__name__: f for f in (_sign, _heaviside, _trunc, _round, _np_round,
+                                     _np_heaviside)}
+# the functions of their own the records' Python calls -> the fallback's spelling
+_NUMPY_OF = {s.python_callee: s.numpy for s in FUNCTION_SPECS if s.numpy is not None}
+_NUMPY_OF_MATH = {name.removeprefix("math."): numpy for name, numpy in _NUMPY_OF.items()
+                  if name.startswith("math.")}
+# the helpers it calls -> the fallback's spelling (_sign: numpy's sign)
+_NUMPY_OF_HELPER = {name: numpy for name, numpy in _NUMPY_OF.items() if name in _HELPERS}
+
+
+def _numpy_function(spelling: str):
+    if spelling.startswith("scipy.special."):
+        import scipy.special   # 0.1 s to import: only where math raised
+        return getattr(scipy.special, spelling.removeprefix("scipy.special."))
+    return _HELPERS[spelling] if spelling in _HELPERS else getattr(np, spelling)
+
+
 class _NumpyMath:
     """`math` for the fallback evaluation: numpy's functions, which give inf and nan
     where math raises (as the C code does)."""
 
     def __getattr__(self, name):
-        if name in ("gamma", "erf"):
-            import scipy.special   # 0.1 s to import: only where math raised
-            return getattr(scipy.special, name)
-        return getattr(np, {"fabs": "abs", "atan2": "arctan2", "asin": "arcsin",
-                            "acos": "arccos", "atan": "arctan", "asinh": "arcsinh",
-                            "acosh": "arccosh", "atanh": "arctanh"}.get(name, name))
+        return _numpy_function(_NUMPY_OF_MATH.get(name, name))
 
 
 # what the math module raises where C gives inf or nan
 MATH_ERRORS = (ZeroDivisionError, ValueError, OverflowError, TypeError)
 
 
-def _np_heaviside(x):
-    return np.heaviside(x, 0.5)
-
-
 def fast_namespace() -> dict:
     """What the printed Python calls: the math module and C's sign, step, trunc, round."""
-    return {"math": math, "_sign": _sign, "_heaviside": _heaviside, "_trunc": _trunc,
-            "_round": _round}
+    return {"math": math, **{name: _HELPERS[name] for name in _NUMPY_OF_HELPER}}
 
 
 def safe_namespace() -> dict:
     """The same names on numpy, which gives inf and nan where math raises (as C does)."""
-    return {"math": _NumpyMath(), "_sign": np.sign, "_heaviside": _np_heaviside,
-            "_trunc": np.trunc, "_round": _np_round}
+    return {"math": _NumpyMath(), **{name: _numpy_function(numpy)
+                                     for name, numpy in _NUMPY_OF_HELPER.items()}}
+
+
+def python_callables(namespace: dict) -> dict:
+    """{sympy's name of a function: what its printed Python computes} in `namespace`
+    (fast_namespace's or the dual numbers'): the callee itself, or a template compiled
+    as a function of its arguments."""
+    out = {}
+    for spec in FUNCTION_SPECS:
+        if spec.sympy is None or spec.python is None:
+            continue
+        if "{" in spec.python:
+            args = [f"args[{k}]" for k in range(spec.arity)]
+            text = "lambda *args: " + written(spec.python, args)
+        else:
+            text = spec.python
+        out[spec.sympy] = eval(text, dict(namespace))
+    return out
 
 
 def python_function(source: str, name: str, n_in: int, code=None):

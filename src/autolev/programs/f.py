@@ -31,11 +31,6 @@ _CALL = re.compile(r"(?<![A-Za-z0-9_])([A-Za-z][A-Za-z0-9_]*)\(")
 LONGEST_NAME = 63        # what gfortran accepts (Fortran 77 itself allowed 6)
 FIRST_UNIT = 21          # NAME.1 is unit 21, NAME.2 unit 22, ...; the .in file is 20
 
-_FUNCS = {"sin": "SIN", "cos": "COS", "tan": "TAN", "asin": "ASIN", "acos": "ACOS",
-          "atan": "ATAN", "sinh": "SINH", "cosh": "COSH", "tanh": "TANH",
-          "asinh": "ASINH", "acosh": "ACOSH", "atanh": "ATANH", "exp": "EXP",
-          "log": "LOG", "Abs": "ABS", "atan2": "ATAN2", "erf": "ERF", "gamma": "GAMMA",
-          "Int": "AINT", "Round": "ANINT"}
 _RELATIONS = {"<": ".LT.", "<=": ".LE.", ">": ".GT.", ">=": ".GE.", "==": ".EQ.",
               "!=": ".NE."}
 
@@ -61,8 +56,8 @@ class FortranPrinter(CPrinter):
     a unary minus only where Fortran allows one (never right after an operator)."""
 
     ONE = "1"               # an INTEGER numerator: X is DOUBLE PRECISION in 1/X
-
-    FUNCS = _FUNCS
+    LANGUAGE, LANGUAGE_NAME = "fortran", "Fortran"
+    GENERATES = "Fortran"
 
     def _atom(self, e):
         if e is sm.true or e is sm.false:
@@ -86,7 +81,7 @@ class FortranPrinter(CPrinter):
             return str(int(e)), (ADD if e < 0 else ATOM)
         return double(float(e)), (ADD if e < 0 else ATOM)
 
-    def _real(self, e) -> str:
+    def _argument(self, e) -> str:
         """`e` where Fortran needs a DOUBLE PRECISION value (an intrinsic's argument)."""
         if e.is_Integer:
             return double(float(e))
@@ -97,45 +92,17 @@ class FortranPrinter(CPrinter):
             return "EXP(1.0D0)", ATOM
         return double(float(e)), ATOM
 
-    def _sqrt(self, base) -> str:
-        return f"SQRT({self._real(base)})"
-
     def _power(self, base, exp):
         return f"{self._wrap(base, ATOM)}**{self._wrap(exp, ATOM)}", POW
-
-    def _function(self, e):
-        name = type(e).__name__
-        args = [self._real(a) for a in e.args]
-        if name in self.funcs:
-            if name == "log" and len(args) == 2:
-                return f"(LOG({args[0]})/LOG({args[1]}))", ATOM
-            return f"{self.funcs[name]}({', '.join(args)})", ATOM
-        if name in ("floor", "ceiling"):     # an INTEGER*8 result, as a double again
-            return f"DBLE({name.upper()}({args[0]}, 8))", ATOM
-        if name in ("Max", "Min"):
-            return f"{name.upper()}({', '.join(args)})", ATOM
-        if name == "sign":
-            a = args[0]
-            return (f"(MERGE(1.0D0, 0.0D0, {a} .GT. 0) - MERGE(1.0D0, 0.0D0, {a} .LT. 0))",
-                    ATOM)
-        if name == "Heaviside":
-            a = args[0]
-            return (f"MERGE(1.0D0, MERGE(0.0D0, 0.5D0, {a} .LT. 0), {a} .GT. 0)", ATOM)
-        if name == "factorial":
-            return f"GAMMA({args[0]} + 1)", ATOM
-        if name in ("sec", "csc", "cot"):
-            inner = {"sec": "COS", "csc": "SIN", "cot": "TAN"}[name]
-            return f"(1/{inner}({args[0]}))", ATOM
-        raise AutolevModelError(f"cannot generate Fortran for the function {name}")
 
     def _piecewise(self, e):
         pieces = list(e.args)
         if pieces[-1][1] is not sm.true:
             raise AutolevModelError("a piecewise quantity without a value for every case "
                                     "has no Fortran 77 form: write the program in C")
-        text = self._real(pieces[-1][0])
+        text = self._argument(pieces[-1][0])
         for value, cond in reversed(pieces[:-1]):
-            text = f"MERGE({self._real(value)}, {text}, {self._p(cond)[0]})"
+            text = f"MERGE({self._argument(value)}, {text}, {self._p(cond)[0]})"
         return text, ATOM
 
     def _relational(self, e):

@@ -14,6 +14,7 @@ from .. import __version__
 from ..runtime import symbols as S
 from ..runtime import units
 from ..engine.errors import AutolevModelError
+from ..engine.functions import called_names
 from ..runtime.numerics import codegen
 from ..engine.files import header as output_header
 from ..engine.numbers import format_value
@@ -21,15 +22,13 @@ from ..runtime.printer import ATOM, POW, CPrinter
 from .plan import (Plan, c_name, dynamics_names, element_indices, print_dynamics, printed,
                    program_name, rename_clashes, shown_values, with_sources)
 
-# Matlab's keywords, the functions a program may call and Matlab's constants, as spelt
-# (Matlab tells case apart)
+# Matlab's keywords and constants and the functions a program may call (its layout's,
+# log10, and those the function records spell), as spelt (Matlab tells case apart)
 LANGUAGE_NAMES = frozenset("""
 break case catch classdef continue else elseif end for function global if otherwise
-parfor persistent return spmd switch try while sin cos tan asin acos atan atan2 sinh cosh
-tanh asinh acosh atanh exp log log10 sqrt abs floor ceil fix round max min sign gamma erf
-zeros fopen fclose fprintf error disp warning length all any nan NaN inf Inf eps pi i j
-ans
-""".split())
+parfor persistent return spmd switch try while log10 zeros fopen fclose fprintf error
+disp warning length all any nan NaN inf Inf eps pi i j ans
+""".split()) | called_names("matlab")
 # the program's own names, as spelt: its functions and the globals they share
 OWN_NAMES = frozenset("""
 z Encode Pi DEGtoRAD RADtoDEG Output FileIdentifier fileIdentifier
@@ -39,12 +38,6 @@ CloseOutputFilesAndTerminate OpenOutputFilesAndWriteHeadings
 # names a program that solves equations or sweeps an input uses besides
 _SOLVING_NAMES = frozenset("COEF RHS SolutionToAxEqualsB ABSERR RELERR iter ipoint".split())
 
-_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
-          "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
-          "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "exp": "exp",
-          "log": "log", "floor": "floor", "ceiling": "ceil", "Abs": "abs",
-          "atan2": "atan2", "erf": "erf", "gamma": "gamma", "Int": "fix",
-          "Round": "round", "sign": "sign"}
 _RULE = "%" + "-" * 31 + "+" + "-" * 26 + "+" + "-" * 19 + "+" + "-" * 17
 
 
@@ -52,7 +45,7 @@ class MatlabPrinter(CPrinter):
     """The C printer's walk, with Matlab's power operator, function names and
     constants."""
 
-    FUNCS = _FUNCS
+    LANGUAGE, LANGUAGE_NAME = "matlab", "Matlab"
 
     def _constant(self, e):
         if e is sm.pi:
@@ -75,20 +68,6 @@ class MatlabPrinter(CPrinter):
 
     def _power(self, base, exp):
         return f"{self._wrap(base, ATOM)}^{self._wrap(exp, ATOM)}", POW
-
-    def _function(self, e):
-        name = type(e).__name__
-        if name in ("Max", "Min"):
-            args = [self._p(a)[0] for a in e.args]
-            text = args[0]
-            for a in args[1:]:
-                text = f"{name.lower()}({text}, {a})"
-            return text, ATOM
-        if name == "Heaviside":
-            raise AutolevModelError("Heaviside has no Matlab function to print it as")
-        if name == "factorial":
-            return f"gamma({self._p(e.args[0])[0]} + 1.0)", ATOM
-        return super()._function(e)
 
     def _piecewise(self, e):
         raise AutolevModelError("a piecewise quantity has no expression form in Matlab: "

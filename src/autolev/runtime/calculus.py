@@ -17,7 +17,6 @@ computed iteratively in dependency order (no recursion on the depth of the chain
 """
 from __future__ import annotations
 
-import cmath
 import math
 import zlib
 from collections.abc import Iterable, Mapping
@@ -33,6 +32,7 @@ from ..engine.errors import AutolevModelError
 from .fastdiff import diff as fast_diff
 from .fastdiff import gradient as fast_gradient
 from .fastdiff import value_and_gradient
+from .sympy_functions import SPEC_OF_FUNCTION
 
 
 def _order_key(s) -> tuple:
@@ -121,18 +121,9 @@ class _NotFast(Exception):
     """A node the double-precision walk leaves to sympy."""
 
 
-# one-argument functions taken in complex double precision (principal branches, as
-# sympy's numbers take them)
-_ELEMENTARY = {sm.sin: cmath.sin, sm.cos: cmath.cos, sm.tan: cmath.tan,
-               sm.exp: cmath.exp, sm.asin: cmath.asin, sm.acos: cmath.acos,
-               sm.atan: cmath.atan, sm.sinh: cmath.sinh, sm.cosh: cmath.cosh,
-               sm.tanh: cmath.tanh, sm.Abs: abs}
-
-
-# arguments on a branch cut of these, where the two conventions part
-_ON_A_CUT = {sm.asin: lambda a: a.imag == 0 and abs(a.real) > 1,
-             sm.acos: lambda a: a.imag == 0 and abs(a.real) > 1,
-             sm.atan: lambda a: a.real == 0 and abs(a.imag) > 1}
+# the functions taken in complex double precision (principal branches, as sympy's
+# numbers take them)
+_IN_COMPLEX = {f: s for f, s in SPEC_OF_FUNCTION.items() if s.complex_double is not None}
 
 
 def _fast_number(e, values: dict, memo: dict) -> complex:
@@ -155,13 +146,11 @@ def _fast_number(e, values: dict, memo: dict) -> complex:
     elif e.is_Pow:
         base = _fast_number(e.base, values, memo)
         out = base ** (int(e.exp) if e.exp.is_Integer else _fast_number(e.exp, values, memo))
-    elif e.func in _ELEMENTARY:
-        arg = _fast_number(e.args[0], values, memo)
-        if e.func in _ON_A_CUT and _ON_A_CUT[e.func](arg):
+    elif (spec := _IN_COMPLEX.get(e.func)) is not None and len(e.args) == spec.arity:
+        args = [_fast_number(a, values, memo) for a in e.args]
+        if spec.branch_cut is not None and spec.branch_cut(*args):
             raise _NotFast(e)      # cmath and sympy take opposite sides of the cut there
-        out = complex(_ELEMENTARY[e.func](arg))
-    elif e.func is sm.log and len(e.args) == 1:
-        out = cmath.log(_fast_number(e.args[0], values, memo))
+        out = complex(spec.complex_double(*args))
     else:
         raise _NotFast(e)
     if not (math.isfinite(out.real) and math.isfinite(out.imag)):

@@ -10,39 +10,32 @@ from __future__ import annotations
 
 import sympy as sm
 
+from .sympy_functions import SPEC_OF_FUNCTION
+
 _ONE, _ZERO = sm.S.One, sm.S.Zero
 
 
-def _function_derivative(f, arg):
-    """d f(a) / d a at a = arg for the elementary functions (f an instance of one, at
-    any argument), or None."""
-    if isinstance(f, sm.sin):
-        return sm.cos(arg)
-    if isinstance(f, sm.cos):
-        return -sm.sin(arg)
-    if isinstance(f, sm.tan):
-        return 1 + sm.tan(arg) ** 2
-    if isinstance(f, sm.exp):
-        return sm.exp(arg)
-    if isinstance(f, sm.log) and len(f.args) == 1:
-        return 1 / arg
-    if isinstance(f, sm.asin):
-        return 1 / sm.sqrt(1 - arg ** 2)
-    if isinstance(f, sm.acos):
-        return -1 / sm.sqrt(1 - arg ** 2)
-    if isinstance(f, sm.atan):
-        return 1 / (1 + arg ** 2)
-    if isinstance(f, sm.sinh):
-        return sm.cosh(arg)
-    if isinstance(f, sm.cosh):
-        return sm.sinh(arg)
-    if isinstance(f, sm.tanh):
-        return 1 - sm.tanh(arg) ** 2
-    if isinstance(f, sm.Abs) and arg.is_real:
-        return sm.sign(arg)
-    if isinstance(f, (sm.sign, sm.floor, sm.ceiling)) and arg.is_real:
+# the records with a rule here: those a model writes (one only sympy's calculus writes,
+# as the Heaviside step of MAX's derivative, keeps sympy's own: DiracDelta)
+_RULES = {f: s for f, s in SPEC_OF_FUNCTION.items()
+          if s.autolev is not None and (s.differential is not None or s.steps)}
+
+
+def _rule(func, args):
+    """The record whose rule differentiates func(*args), or None."""
+    spec = _RULES.get(func)
+    if spec is None or spec.arity not in (None, len(args)):
+        return None
+    if spec.real_only and not all(a.is_real for a in args):
+        return None
+    return spec
+
+
+def _differential(spec, args, changes):
+    """d f for changes of its arguments, by the record's rule."""
+    if spec.steps:
         return _ZERO
-    return None
+    return spec.differential(sm, *args, *changes)
 
 
 def diff(expr: sm.Expr, x: sm.Symbol) -> sm.Expr:
@@ -85,13 +78,8 @@ def diff(expr: sm.Expr, x: sm.Symbol) -> sm.Expr:
                 r = p * b ** (p - 1) * d(b)
             else:
                 r = e * (d(p) * sm.log(b) + (p * d(b) / b if has(b) else 0))
-        elif isinstance(e, sm.Function) and len(e.args) == 1:
-            (arg,) = e.args
-            outer = _function_derivative(e, arg)
-            r = outer * d(arg) if outer is not None else e.diff(x)
-        elif isinstance(e, sm.atan2):
-            y, xx = e.args
-            r = (xx * d(y) - y * d(xx)) / (xx ** 2 + y ** 2)
+        elif (spec := _rule(e.func, e.args)) is not None:
+            r = _differential(spec, e.args, [d(a) for a in e.args])
         else:
             r = e.diff(x)
         memo[e] = r
@@ -153,18 +141,10 @@ def gradient(expr: sm.Expr, xs) -> dict:
                 r = {x: ts[0] for x, ts in acc.items()}
             else:
                 r = {x: diff(e, x) for x in dep}
-        elif isinstance(e, sm.Function) and len(e.args) == 1:
-            (arg,) = e.args
-            outer = _function_derivative(e, arg)
-            if outer is None:
-                r = {x: e.diff(x) for x in dep}
-            else:
-                r = {x: outer * v for x, v in g(arg).items()}
-        elif isinstance(e, sm.atan2):
-            y, xx = e.args
-            gy, gx = g(y), g(xx)
-            den = xx ** 2 + y ** 2
-            r = {x: (xx * gy.get(x, _ZERO) - y * gx.get(x, _ZERO)) / den for x in dep}
+        elif (spec := _rule(e.func, e.args)) is not None:
+            grads = [g(a) for a in e.args]
+            r = {x: _differential(spec, e.args, [ga.get(x, _ZERO) for ga in grads])
+                 for x in dict.fromkeys(x for ga in grads for x in ga)}
         else:
             r = {x: e.diff(x) for x in dep}
         r = {x: v for x, v in r.items() if v != 0}
@@ -213,12 +193,14 @@ def value_and_gradient(expr: sm.Expr, values: dict, seeds: dict) -> tuple:
             r = (vb ** e.exp, scaled(gb, e.exp * vb ** (e.exp - 1)))
         elif isinstance(e, sm.Function) and len(e.args) == 1:
             va, ga = at(e.args[0])
-            outer = _function_derivative(e, va)
-            if outer is None:
+            spec = _rule(e.func, [va])
+            if spec is None:
                 a = sm.Dummy("a")
                 outer = e.func(a).diff(a).xreplace({a: va})
+            else:
+                outer = _differential(spec, [va], [_ONE])
             r = (e.func(va), scaled(ga, outer))
-        else:   # no rule here (atan2, a moving exponent, Max): its derivative in each symbol
+        else:   # not one argument (atan2, a moving exponent, Max): each symbol's part
             acc: dict = {}
             for f in e.free_symbols & seeds.keys():
                 partial = diff(e, f).xreplace(values)

@@ -8,8 +8,9 @@ import numpy as np
 import sympy as sm
 
 from .calculus import is_real_number, refuse_huge_powers, refused_substitution
-from .printer import number_value
+from .sympy_functions import Int, Round
 from ..engine.errors import AutolevModelError
+from ..engine.functions import MAX, MIN
 from .frame import Frame
 from .vectors import Dyadic, Vector, outer
 
@@ -132,12 +133,12 @@ def set_element(m, index: tuple, value) -> sm.Matrix:
 
 def maximum(*args):
     """MAX(a, b, ...)."""
-    return sm.Max(*_comparable("MAX", args))
+    return sm.Max(*_comparable(MAX.autolev, args))
 
 
 def minimum(*args):
     """MIN(a, b, ...)."""
-    return sm.Min(*_comparable("MIN", args))
+    return sm.Min(*_comparable(MIN.autolev, args))
 
 
 def _comparable(what: str, args) -> list:
@@ -379,62 +380,6 @@ def epsilon(x, tol):
     def clean(e):
         return e.xreplace({f: 0 for f in e.atoms(sm.Float) if abs(float(f)) < tol})
     return _map(x, clean)
-
-
-def _truncated(q) -> int:
-    return int(q)
-
-
-def _rounded(q) -> int:
-    t = int(q)
-    return t + (1 if q > 0 else -1) if abs(q - t) >= sm.Rational(1, 2) else t
-
-
-class _IntegerValued(sm.Function):
-    """A function of Autolev's whose value is an integer near x (`_integer` says
-    which): one node, not sign(x)*floor(|x|), which holds x twice and doubles the tree
-    at every level of nesting.  Its derivative is 0."""
-
-    @classmethod
-    def eval(cls, x):
-        return _integer_of(x, cls._integer)
-
-    def _eval_is_integer(self):
-        return self.args[0].is_extended_real
-
-    def _eval_is_real(self):
-        return self.args[0].is_extended_real
-
-    def fdiff(self, argindex=1):
-        return sm.S.Zero
-
-
-class Int(_IntegerValued):
-    """INT(x) of Autolev: x truncated toward zero."""
-
-    _integer = staticmethod(_truncated)
-
-
-class Round(_IntegerValued):
-    """ROUND(x) of Autolev: the nearest integer, halves away from zero (C's round)."""
-
-    _integer = staticmethod(_rounded)
-
-
-def _integer_of(x, integer):
-    """INT or ROUND of a number: exact for a rational or a decimal, the double-precision
-    value otherwise (as Autolev computed it; an exact evaluation of COS(SINH(1E7))
-    needs millions of digits), None (kept as it is) for a symbol, an infinity or nan."""
-    if isinstance(x, _IntegerValued):
-        return x
-    if not x.is_number or x.is_extended_real is False:
-        return None
-    if x.is_Rational:
-        return sm.Integer(integer(x))
-    if x.is_Float:
-        return sm.Integer(integer(sm.Rational(x))) if x.is_finite else None
-    v = number_value(x)
-    return sm.Integer(integer(sm.Rational(v))) if math.isfinite(v) else None
 
 
 def integer_part(x):

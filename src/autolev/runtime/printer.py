@@ -18,21 +18,8 @@ import sympy as sm
 from sympy.core.numbers import NumberSymbol
 
 from ..engine.errors import AutolevModelError
+from ..engine.functions import FUNCTION_BY_SYMPY, SQRT, written
 from ..engine.pyfunction import MATH_ERRORS, fast_namespace, safe_namespace
-
-_C_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
-            "atan": "atan", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
-            "asinh": "asinh", "acosh": "acosh", "atanh": "atanh", "exp": "exp",
-            "log": "log", "floor": "floor", "ceiling": "ceil", "Abs": "fabs",
-            "atan2": "atan2", "erf": "erf", "gamma": "tgamma", "Int": "trunc",
-            "Round": "round"}
-_PY_FUNCS = {"sin": "math.sin", "cos": "math.cos", "tan": "math.tan", "asin": "math.asin",
-             "acos": "math.acos", "atan": "math.atan", "sinh": "math.sinh",
-             "cosh": "math.cosh", "tanh": "math.tanh", "asinh": "math.asinh",
-             "acosh": "math.acosh", "atanh": "math.atanh", "exp": "math.exp",
-             "log": "math.log", "floor": "math.floor", "ceiling": "math.ceil",
-             "Abs": "math.fabs", "atan2": "math.atan2", "erf": "math.erf",
-             "gamma": "math.gamma", "Int": "_trunc", "Round": "_round"}
 
 class Precedence(IntEnum):
     """How tightly a printed construct binds (higher binds tighter): a subexpression
@@ -67,13 +54,16 @@ class CodePrinter:
     """The walk every language's printer shares: each expression once, in sympy's
     argument order, compound subexpressions printed once; `names` maps symbols to
     their code.  A language is a subclass that gives its words (the class attributes)
-    and overrides the hooks where its syntax differs (`_power`, `_sign`,
-    `_heaviside`, `_extremum`, `_factorial`, `_choice`, `_truth`)."""
+    and overrides the hooks where its syntax differs (`_power`, `_choice`, `_truth`,
+    `_argument`); its functions are spelt by the records of engine/functions.py."""
 
     ONE = "1.0"             # the numerator of a reciprocal
-    # the language's words: sympy's function names -> its own; logic; NaN, infinity,
-    # pi, e; the square root
-    FUNCS: dict
+    # the language: its field of the function records, its name in messages, and what
+    # a refusal says cannot be generated
+    LANGUAGE: str
+    LANGUAGE_NAME: str
+    GENERATES = "numeric code"
+    # the language's words: logic; NaN, infinity, pi, e
     AND: str
     OR: str
     NOT: str
@@ -81,11 +71,9 @@ class CodePrinter:
     INF: str
     PI: str
     E: str
-    SQRT: str
 
     def __init__(self, names: dict):
         self.names = names
-        self.funcs = self.FUNCS
         self._memo: dict = {}
 
     def __call__(self, expr) -> str:
@@ -202,7 +190,11 @@ class CodePrinter:
         return self._power(base, exp)
 
     def _sqrt(self, base) -> str:
-        return f"{self.SQRT}({self._p(base)[0]})"
+        return written(SQRT.spelling(self.LANGUAGE), [self._argument(base)])
+
+    def _argument(self, e) -> str:
+        """`e` as a function's argument."""
+        return self._p(e)[0]
 
     # -- hooks: what each language says its own way ----------------------------------
     def _truth(self, value: bool) -> str:
@@ -212,45 +204,22 @@ class CodePrinter:
         """base**exp for an exponent other than 1/2, -1 and -1/2: (text, precedence)."""
         raise NotImplementedError
 
-    def _sign(self, a: str) -> str:
-        raise NotImplementedError
-
-    def _heaviside(self, a: str) -> str:
-        raise NotImplementedError
-
-    def _extremum(self, name: str, args: list) -> str:
-        """Max or Min of the printed args."""
-        raise NotImplementedError
-
-    def _factorial(self, a: str) -> str:
-        raise NotImplementedError
-
     def _choice(self, condition: str, value: str, otherwise: str) -> str:
         """value where condition holds, else otherwise."""
         raise NotImplementedError
 
-
     def _function(self, e):
         name = type(e).__name__
-        args = [self._p(a)[0] for a in e.args]
-        if name in self.funcs:
-            if name == "log" and len(args) == 2:
-                log = self.funcs["log"]
-                return f"({log}({args[0]})/{log}({args[1]}))", ATOM
-            return f"{self.funcs[name]}({', '.join(args)})", ATOM
-        if name == "sign":
-            return self._sign(args[0]), ATOM
-        if name == "Heaviside":
-            return self._heaviside(args[0]), ATOM
-        if name in ("Max", "Min"):
-            return self._extremum(name, args), ATOM
-        if name == "factorial":
-            return self._factorial(args[0]), ATOM
-        if name in ("sec", "csc", "cot"):
-            inner = {"sec": "cos", "csc": "sin", "cot": "tan"}[name]
-            return f"(1.0/{self.funcs[inner]}({args[0]}))", ATOM
-        raise AutolevModelError(f"cannot generate numeric code for the function {name}")
-
+        args = [self._argument(a) for a in e.args]
+        spec = FUNCTION_BY_SYMPY.get(name)
+        if spec is None or spec.arity not in (None, len(args)):
+            raise AutolevModelError(f"cannot generate {self.GENERATES} for the function "
+                                    f"{name}")
+        spelling = spec.spelling(self.LANGUAGE)
+        if spelling is None:
+            raise AutolevModelError(f"{name} has no {self.LANGUAGE_NAME} function to print "
+                                    "it as")
+        return written(spelling, args), ATOM
 
     def _piecewise(self, e):
         text = self.NAN
@@ -258,7 +227,6 @@ class CodePrinter:
             v = self._p(value)[0]
             text = v if cond is sm.true else self._choice(self._p(cond)[0], v, text)
         return text, ATOM
-
 
     def _relational(self, e):
         op = {"<": "<", "<=": "<=", ">": ">", ">=": ">=", "==": "==", "!=": "!="}[e.rel_op]
@@ -268,11 +236,10 @@ class CodePrinter:
 class CPrinter(CodePrinter):
     """C (math.h)."""
 
-    FUNCS = _C_FUNCS
+    LANGUAGE, LANGUAGE_NAME = "c", "C"
     AND, OR, NOT = " && ", " || ", "!"
     NAN, INF = "NAN", "INFINITY"
     PI, E = "M_PI", "M_E"
-    SQRT = "sqrt"
 
     def _truth(self, value: bool) -> str:
         return "1" if value else "0"
@@ -280,34 +247,17 @@ class CPrinter(CodePrinter):
     def _power(self, base, exp):
         return f"pow({self._p(base)[0]}, {self._p(exp)[0]})", ATOM
 
-    def _sign(self, a: str) -> str:
-        return f"((double)((({a}) > 0) - (({a}) < 0)))"
-
-    def _heaviside(self, a: str) -> str:
-        return f"(({a}) > 0 ? 1.0 : (({a}) < 0 ? 0.0 : 0.5))"
-
-    def _extremum(self, name: str, args: list) -> str:
-        fn = "fmax" if name == "Max" else "fmin"
-        text = args[0]
-        for a in args[1:]:
-            text = f"{fn}({text}, {a})"
-        return text
-
-    def _factorial(self, a: str) -> str:
-        return f"tgamma({a} + 1.0)"
-
     def _choice(self, condition: str, value: str, otherwise: str) -> str:
         return f"(({condition}) ? ({value}) : ({otherwise}))"
 
 
 class PythonPrinter(CodePrinter):
-    """Python on `math` (and this module's _sign, _heaviside, _trunc, _round)."""
+    """Python on `math` (and engine/pyfunction.py's _sign, _heaviside, _trunc, _round)."""
 
-    FUNCS = _PY_FUNCS
+    LANGUAGE, LANGUAGE_NAME = "python", "Python"
     AND, OR, NOT = " and ", " or ", "not "
     NAN, INF = "math.nan", "math.inf"
     PI, E = "math.pi", "math.e"
-    SQRT = "math.sqrt"
 
     def _truth(self, value: bool) -> str:
         return str(value)
@@ -321,18 +271,6 @@ class PythonPrinter(CodePrinter):
             # Python's ** with an integer exponent: like C's pow for these values
             return f"{self._wrap(base, ATOM)}**{int(exp)}", POW
         return f"{self._wrap(base, ATOM)}**{self._wrap(exp, ATOM)}", POW
-
-    def _sign(self, a: str) -> str:
-        return f"_sign({a})"
-
-    def _heaviside(self, a: str) -> str:
-        return f"_heaviside({a})"
-
-    def _extremum(self, name: str, args: list) -> str:
-        return f"{name.lower()}({', '.join(args)})"
-
-    def _factorial(self, a: str) -> str:
-        return f"math.gamma({a} + 1.0)"
 
     def _choice(self, condition: str, value: str, otherwise: str) -> str:
         return f"(({value}) if ({condition}) else ({otherwise}))"

@@ -17,6 +17,7 @@ from ..calculus import Definitions
 from ...engine.errors import AutolevModelError
 from ...engine.clibrary import UNIT_MARK, UNIT_STATEMENTS, c_function, cpus
 from ..printer import CPrinter, PythonPrinter
+from ..sympy_functions import SPEC_OF_FUNCTION
 from ...engine.pyfunction import python_function
 
 
@@ -47,8 +48,7 @@ def _factor_out(add):
 
 
 # elementary functions whose repeated calls are computed once
-_HOISTED = (sm.sin, sm.cos, sm.tan, sm.exp, sm.log, sm.asin, sm.acos, sm.atan, sm.atan2,
-            sm.sinh, sm.cosh, sm.tanh)
+_HOISTED = tuple(f for f, s in SPEC_OF_FUNCTION.items() if s.hoisted)
 
 
 @dataclass

@@ -18,13 +18,13 @@ import sympy as sm
 from sympy.core.numbers import NumberSymbol
 
 from ...engine.errors import AutolevModelError
-from ..printer import _PY_FUNCS, fraction_parts
-from ...engine.pyfunction import fast_namespace
+from ...engine.functions import SQRT
+from ..printer import fraction_parts
+from ...engine.pyfunction import fast_namespace, python_callables
 
-_HELPERS = fast_namespace()
-# sympy's function names -> what the printed Python calls
-_CALLS = {name: (getattr(math, text[5:]) if text.startswith("math.") else _HELPERS[text])
-          for name, text in _PY_FUNCS.items()}
+# sympy's function names -> what the printed Python computes
+_CALLS = python_callables(fast_namespace())
+_SQRT = _CALLS[SQRT.sympy]
 _HALF, _MINUS_HALF = sm.Rational(1, 2), sm.Rational(-1, 2)
 
 
@@ -145,11 +145,11 @@ class _Walk:
     def _pow(self, e):
         base, exp = e.base, e.exp
         if exp == _HALF:
-            return math.sqrt(self(base))
+            return _SQRT(self(base))
         if exp == -1:
             return 1.0 / self(base)
         if exp == _MINUS_HALF:
-            return 1.0 / math.sqrt(self(base))
+            return 1.0 / _SQRT(self(base))
         b = self(base)
         if exp == 2:
             return b * b
@@ -158,24 +158,12 @@ class _Walk:
         return b ** self(exp)
 
     def _function(self, e):
-        name = type(e).__name__
         args = [self(a) for a in e.args]
-        call = _CALLS.get(name)
-        if call is not None:
-            if name == "log" and len(args) == 2:
-                return math.log(args[0]) / math.log(args[1])
-            return call(*args)
-        if name == "sign":
-            return _HELPERS["_sign"](args[0])
-        if name == "Heaviside":
-            return _HELPERS["_heaviside"](args[0])
-        if name in ("Max", "Min"):
-            return (max if name == "Max" else min)(*args)
-        if name == "factorial":
-            return math.gamma(args[0] + 1.0)
-        if name in ("sec", "csc", "cot"):
-            return 1.0 / {"sec": math.cos, "csc": math.sin, "cot": math.tan}[name](args[0])
-        raise AutolevModelError(f"cannot generate numeric code for the function {name}")
+        call = _CALLS.get(type(e).__name__)
+        if call is None:
+            raise AutolevModelError("cannot generate numeric code for the function "
+                                    f"{type(e).__name__}")
+        return call(*args)
 
 
 _RELATIONS = {"<": lambda a, b: a < b, "<=": lambda a, b: a <= b, ">": lambda a, b: a > b,
