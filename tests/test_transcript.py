@@ -66,6 +66,8 @@ def test_the_printer_writes_autolev_not_python():
     assert expression(r / 4) == "0.25*R" and expression(q ** sm.Rational(3, 2)) == "Q^1.5"
     assert expression(sm.Float(7e-6) * q) == "7E-06*Q"
     assert expression(1 - 2 * q ** 2 - 2 * r ** 2) == "1 - 2*Q^2 - 2*R^2"
+    # Autolev's names of functions, not sympy's (CEIL, not CEILING)
+    assert expression(sm.ceiling(q) + sm.floor(r)) == "CEIL(Q) + FLOOR(R)"
 
 
 def test_z_variables_are_shown_before_what_uses_them_and_the_transcript_replays(tmp_path):

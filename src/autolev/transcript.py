@@ -28,6 +28,7 @@ from .errors import AutolevError
 from .loader import load
 from .pipeline import parse
 from .engine import reading
+from .engine.functions import FUNCTION_BY_SYMPY
 from .runtime.calculus import is_small
 from .runtime.symbols import TIME, Z, derivative, new_z
 from .runtime.vectors import Dyadic, Vector
@@ -76,7 +77,9 @@ class AutolevPrinter(StrPrinter):
         return "I"
 
     def _print_Function(self, expr) -> str:
-        name = type(expr).__name__.upper()
+        # Autolev's own name (CEIL, not sympy's ceiling)
+        spec = FUNCTION_BY_SYMPY.get(type(expr).__name__)
+        name = spec.autolev if spec is not None and spec.autolev else type(expr).__name__.upper()
         return f"{name}({', '.join(self._print(a) for a in expr.args)})"
 
     def _print_Abs(self, expr) -> str:
