@@ -126,6 +126,22 @@ def space_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
     return mats[2] * mats[1] * mats[0], tuple(w)
 
 
+def angular_velocity_in_both(angles, kind: str, dt) -> tuple[tuple, tuple]:
+    """(measure numbers in child, in parent) of the angular velocity of a BODYijk or
+    SPACEijk sequence, each summed from the rotations it passes (no product with the
+    direction cosines to undo: a body-fixed sequence's in the parent holds the first two
+    angles alone, a space-fixed one's in the child likewise the last two)."""
+    sequence = kind[4:] if kind.startswith("body") else kind[5:]
+    mats, rates = _simple_rotations(angles, sequence, dt)
+    if kind.startswith("body"):
+        child = [_product(mats[i + 1:]).T * rates[i] for i in range(3)]
+        parent = [_product(mats[:i]) * rates[i] for i in range(3)]
+    else:
+        child = [_product(mats[i::-1]).T * rates[i] for i in range(3)]
+        parent = [_product(mats[:i:-1]) * rates[i] for i in range(3)]
+    return tuple(sum(child, sm.zeros(3, 1))), tuple(sum(parent, sm.zeros(3, 1)))
+
+
 def euler_parameters(e, dt) -> tuple[sm.Matrix, tuple]:
     """(parent.dcm(child), angular velocity measure numbers in child) for Euler
     parameters e1, e2, e3 (vector part) and e4 (scalar part)."""

@@ -21,7 +21,7 @@ from .calculus import Definitions
 from .derived import DerivedCache, Revision
 from .equations import EquationsMixin
 from ..engine.errors import AutolevModelError
-from .frame import Frame, Scene, body_fixed, euler_parameter_rates, space_fixed
+from .frame import Frame, Scene, angular_velocity_in_both, euler_parameter_rates
 from .interop import to_sympy_expr, to_sympy_vector
 from .io import IOMixin
 from .kane import KaneEquations, SymbolInfo
@@ -454,14 +454,14 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
             raise AutolevModelError(f"KINDIFFS needs W_{child.name}_{parent.name}> "
                                     "assigned first (in terms of the speeds)")
         kind = kind.lower()
-        target = child.ang_vel_in(parent).components_in(child)
+        w_given = child.ang_vel_in(parent)
         coords = [sm.sympify(q) for q in coords]
         rates = [S.derivative(q) for q in coords]
         if kind == "euler":
             if len(coords) != 4:
                 raise AutolevModelError("KINDIFFS(..., EULER, e1, e2, e3, e4) takes 4 "
                                         "parameters")
-            solution = euler_parameter_rates(coords, target)
+            solution = euler_parameter_rates(coords, w_given.components_in(child))
         else:
             if len(coords) != 3:
                 raise AutolevModelError(f"KINDIFFS(..., {kind.upper()}, ...) takes 3 angles")
@@ -469,15 +469,18 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
             # 3-D pendulum's q4 = 0 with its speed made dependent)
             def rate(q):
                 return S.derivative(q) if isinstance(q, sm.Symbol) else self.defs.dt_raw(q)
-            if kind.startswith("body"):
-                _, implied = body_fixed(coords, kind[4:], rate)
-            elif kind.startswith("space"):
-                dcm, w_parent = space_fixed(coords, kind[5:], rate)
-                implied = tuple(dcm.T * sm.Matrix(w_parent))
-            else:
+            if not kind.startswith(("body", "space")):
                 raise AutolevModelError(f"KINDIFFS does not know the rotation type "
                                         f"{kind.upper()}")
-            eqs = [implied[i] - target[i] for i in range(3)]
+            w_child, w_parent = angular_velocity_in_both(coords, kind, rate)
+            # the equations in the frame W_B_N> is written in (N's axes: in N), where the
+            # sequence's angular velocity holds two of the angles and W no direction
+            # cosine, so the small solve has little to simplify
+            if set(w_given.terms) == {parent}:
+                implied, wanted = w_parent, w_given.components_in(parent)
+            else:
+                implied, wanted = w_child, w_given.components_in(child)
+            eqs = [implied[i] - wanted[i] for i in range(3)]
             a, r = coefficients(eqs, rates, self.defs)
             solution = _solve_small(a, -r)
         for rate, value in zip(rates, solution):
@@ -604,9 +607,13 @@ def _split(names) -> list[str]:
 
 
 def _solve_small(a: sm.Matrix, b: sm.Matrix) -> list:
-    """Exact solve of a small system (kinematical equations), simplified."""
-    sol = a.LUsolve(b)
-    return [sm.trigsimp(sm.cancel(sm.together(e))) for e in sol]
+    """Exact solve of a small system (kinematical equations) by its adjugate: the
+    determinant and the adjugate's entries, a few trigonometric terms each, simplified
+    alone (SIN(Q)^2 + COS(Q)^2 is 1), never the solution's larger expressions."""
+    det = sm.trigsimp(a.det(method="berkowitz"))
+    adj = a.adjugate(method="berkowitz").applyfunc(sm.trigsimp)
+    return [sm.cancel(sm.together(sum(adj[i, j] * b[j] for j in range(b.rows)) / det))
+            for i in range(a.rows)]
 
 
 class _ModuleName:
