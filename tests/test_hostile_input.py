@@ -297,3 +297,23 @@ def test_a_model_that_is_no_regular_file_is_refused_at_once(tmp_path, kind, comm
     # check searches a folder for models: a folder named .al holds none
     assert ("no .al files found" if (command, kind) == ("check", "folder")
             else "not a regular file") in said
+
+
+@pytest.mark.skipif(os.name != "posix", reason="symbolic links: POSIX")
+@pytest.mark.parametrize("command", ["run", "code", "linearize", "animate", "equations",
+                                     "check", "convert"])
+def test_a_model_that_is_a_link_to_itself_is_refused(tmp_path, command):
+    # the name of the lock of a background compile resolved the model's path first:
+    # RuntimeError (a symlink loop), exit 70, before the read said what was wrong
+    import subprocess
+    import sys
+    os.symlink("loop.al", tmp_path / "loop.al")
+    args = [command, "loop.al"] + (["--out", str(tmp_path / "o")]
+                                   if command in ("run", "code", "animate") else [])
+    done = subprocess.run([sys.executable, "-m", "autolev", *args], capture_output=True,
+                          text=True, timeout=60, cwd=tmp_path,
+                          env=dict(os.environ, AUTOLEV_CACHE=str(tmp_path / "cache")))
+    said = done.stdout + done.stderr
+    assert done.returncode == 1, said
+    assert "internal error" not in said
+    assert "loop.al" in said and "Too many levels of symbolic links" in said
