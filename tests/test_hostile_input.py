@@ -317,3 +317,18 @@ def test_a_model_that_is_a_link_to_itself_is_refused(tmp_path, command):
     assert done.returncode == 1, said
     assert "internal error" not in said
     assert "loop.al" in said and "Too many levels of symbolic links" in said
+
+
+def test_a_folder_where_a_table_goes_is_named(tmp_path):
+    # told to overwrite, the run's rename of its table onto a folder fails: the message
+    # named the table's temporary (.double_pendulum.1.PID.HEX.autolev-part), not the folder
+    from helpers import EXAMPLES
+    model = autolev.load(EXAMPLES / "double_pendulum.al")
+    (tmp_path / "double_pendulum.1").mkdir()
+    with pytest.raises(autolev.runtime.AutolevModelError) as info:
+        model.simulate(out_dir=tmp_path, TFINAL=0.1, overwrite=True)
+    said = str(info.value)
+    assert str(tmp_path / "double_pendulum.1") + ")" in said and "autolev-part" not in said
+    # no temporary left, and no .dir: the set does not pass for complete
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert "double_pendulum.dir" not in names and not [n for n in names if n[0] == "."]
