@@ -50,6 +50,7 @@ import ctypes
 import errno
 import os
 import random
+import re
 import resource
 import select
 import shlex
@@ -728,13 +729,29 @@ def _make_writable(folder: Path) -> None:
 # ---------------------------------------------------------------------------------
 # The judgement
 
-def crash_of(ended: Ended) -> str | None:
-    """How a command crashed: exit status 70, a traceback, an internal error."""
+def crash_of(ended: Ended, sent: list = ()) -> str | None:
+    """How a command crashed: exit status 70, a traceback, an internal error.  A
+    KeyboardInterrupt in Python's own start (importing runpy, finding the module: no
+    frame of autolev's), when the case sent SIGINT, is the interrupt's end: no program
+    can take it there."""
     text = ended.printed()
-    if ended.status == 70 or "Traceback (most recent call last)" in text or \
-            "internal error" in text:
+    if ended.status == 70 or "internal error" in text or (
+            "Traceback (most recent call last)" in text and not (
+                any(s["signal"] == "SIGINT" for s in sent) and python_start_interrupted(text))):
         return f"exit status {ended.status}:\n{text[-3000:]}"
     return None
+
+
+_FRAME = re.compile(r'File "([^"]*)", line \d+')
+
+
+def python_start_interrupted(text: str) -> bool:
+    """A KeyboardInterrupt traceback none of whose frames is autolev's."""
+    lines = text.rstrip().splitlines()
+    frames = _FRAME.findall(text)
+    return bool(lines) and lines[-1].strip() == "KeyboardInterrupt" and bool(frames) and \
+        text.count("Traceback (most recent call last)") == 1 and \
+        not any(f"{os.sep}autolev{os.sep}" in frame for frame in frames)
 
 
 def expected_statuses(sent: list) -> dict:
@@ -754,7 +771,7 @@ def expected_statuses(sent: list) -> dict:
 
 
 def judge_faulted(play: Play, ended: Ended) -> None:
-    crashed = crash_of(ended)
+    crashed = crash_of(ended, play.sent)
     if crashed:
         play.problem("crash", "faulted", crashed)
         return

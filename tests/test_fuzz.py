@@ -510,6 +510,24 @@ def test_the_exit_statuses_a_signal_explains():
     assert allowed(("SIGKILL", "child")) == {0: False, 1: True}
 
 
+def test_a_traceback_is_a_crash_but_an_interrupt_before_autolev_runs():
+    def ended(status, text):
+        return background.Ended("faulted", status, "", text, 0.0, 1.0)
+    in_python = ('Traceback (most recent call last):\n  File "<frozen runpy>", line 189, in '
+                 '_run_module_as_main\n  File "<frozen runpy>", line 112, in '
+                 '_get_module_details\nKeyboardInterrupt\n')
+    in_autolev = in_python.replace(
+        "KeyboardInterrupt", '  File "/src/autolev/cli/run.py", line 3, in cmd_run\n'
+        "KeyboardInterrupt")
+    sigint = [{"signal": "SIGINT", "to": "parent"}]
+    assert background.crash_of(ended(-2, in_python), sigint) is None
+    assert background.crash_of(ended(-2, in_python), [])          # SIGINT not sent
+    assert background.crash_of(ended(-2, in_autolev), sigint)
+    assert background.crash_of(ended(70, ""), sigint)
+    assert background.crash_of(ended(1, "autolev: internal error: ..."), sigint)
+    assert background.crash_of(ended(130, ""), sigint) is None
+
+
 def misbehaving(tmp_path, monkeypatch, script: str) -> None:
     """The cases' command replaced by `script` (Python; sys.argv: autolev's arguments)."""
     program = tmp_path / "misbehaving.py"
