@@ -10,8 +10,9 @@ from pathlib import Path
 
 from ..errors import printable_lines
 from . import background
-from .common import (UsageError, has_matplotlib, load_model, name_values, positive_int,
-                     refuse_unknown_names, run_options, specified_values, statement_label)
+from .common import (UsageError, failed_write, has_matplotlib, load_model, name_values,
+                     positive_int, refuse_unknown_names, run_options, specified_values,
+                     statement_label)
 from .responses import transcript_text
 
 
@@ -391,7 +392,7 @@ def _after_run(model, done, out_dir: Path, ns: argparse.Namespace, label: str) -
             status = 1
         except OSError as exc:
             print(f"{label}: error: cannot write the animation into {out_dir}: "
-                  f"{exc.strerror or exc}", file=sys.stderr)
+                  f"{failed_write(exc)}", file=sys.stderr)
             status = 1
     return max(status, _tables_and_plots(result, out_dir, ns, label))
 
@@ -418,7 +419,7 @@ def _tables_and_plots(result, out_dir: Path, ns: argparse.Namespace, label: str)
                 else write_chosen_png(result, out_dir, ns.plot, ns.overwrite)
         except OSError as exc:
             print(f"{label}: error: cannot write the plots into {out_dir}: "
-                  f"{exc.strerror or exc}", file=sys.stderr)
+                  f"{failed_write(exc)}", file=sys.stderr)
             return 1
         for f in pictures:
             if not ns.quiet:
