@@ -2,7 +2,7 @@
 """Fuzzing: no input may end in a Python traceback, a hang, a blown memory limit, a file
 written or read outside its place, or a wrong answer.
 
-Six modes.
+Eight modes.
 
 mutation (the default): takes the models of the public corpus (or, without it, the
 project's own examples), mutates them (characters and lines deleted, inserted,
@@ -52,6 +52,20 @@ value, a statement, a macro or RUN file, --set, --specified, a number knob, a fi
 added), the command run twice more: each answer must be a fresh run's of the final
 inputs in an empty cache (bench/fuzz_stale.py says how; outcomes stale and error).
 
+background: a cold `autolev run --out` on a small model and ONE fault at a random moment:
+a signal to the command or to its background child (SIGINT, SIGTERM, SIGHUP, SIGKILL,
+SIGSTOP or SIGTSTP then SIGCONT), a terminal with `stty tostop` (left alone, ^C, ^Z and
+fg, a hang-up), the cache folder removed, read-only or a file, the config folder
+read-only or the cache key cut short; then a recovery run, held against a fresh run in
+an empty cache (bench/fuzz_background.py says how; outcomes leaked, leftover, wrong).
+
+hostile: a FIFO, a folder, a device or a terminal behind a link, a socket, an unreadable
+file, a link to itself where a command reads (the model, an --in file, a RUN, macro or
+function file, a session) or writes (an output's name), under check, run, code,
+convert, linearize, transcript, verify and animate --format html: each command ends
+within seconds, with a message naming the file, writing nothing through the object nor
+outside its output folder, leaving no process (bench/fuzz_hostile.py).
+
 Each case is written (under its own file name) into a private folder of a long-lived
 worker subprocess, which parses, translates and loads it (`autolev.parse`,
 `autolev.translation`, `autolev.loader.load_translation`), or runs its commands
@@ -78,6 +92,8 @@ the files it wrote) lives in the run's folder, never the user's.  Outcomes:
   wrong      files: stray files changed the model's translation; commands: a C program
              autolev wrote does not compile; threads: a table that is not the sweep's
              own (the model whose rows it holds is named)
+  leaked     background, hostile: a process of the case alive after its command and its
+             background child ended
 
 Each case has its own random stream (from the mode, the seed and its index), so
 `--replay` regenerates it alone.  A table follows: one row per mode and seed (wall
@@ -86,7 +102,8 @@ parsed), then one row per seed and generator (summed case times); and the three
 slowest cases of each mode and seed.  The exit status is 1 on any failure.
 
     python bench/fuzz.py [--mutants 10000] [--seed 1] [--corpus DIR]
-    python bench/fuzz.py --mode grammar|files|commands|threads|all (or several,
+    python bench/fuzz.py --mode grammar|files|commands|threads|stale|background|hostile|all
+                         (or several,
                          comma-separated) [--cases 10000] [--seeds 1,2] [--jobs 1]
                          [--minutes M] [--timeout S] [--memory-mb 2048]
     python bench/fuzz.py --replay SEED:INDEX > case.al   # one grammar case's source
@@ -96,7 +113,8 @@ slowest cases of each mode and seed.  The exit status is 1 on any failure.
 
 One file over 600 lines on purpose: the script is also its own worker subprocess
 (`--worker`), which must run from a checkout with nothing of the bench but itself (and
-fuzz_stale.py, the stale mode, beside it).
+the modules of the later modes beside it: fuzz_stale.py, fuzz_background.py,
+fuzz_hostile.py).
 """
 from __future__ import annotations
 
@@ -132,6 +150,8 @@ import autolev  # noqa: E402
 
 if str(Path(__file__).resolve().parent) not in sys.path:     # loaded by path (the tests)
     sys.path.append(str(Path(__file__).resolve().parent))
+import fuzz_background  # noqa: E402
+import fuzz_hostile  # noqa: E402
 import fuzz_stale  # noqa: E402
 
 # characters that matter to the lexer, plus some that never should appear
@@ -1532,10 +1552,22 @@ def stale_case(seed: int, index: int) -> Case:
     return Case(**fuzz_stale.stale_case(seed, index))
 
 
+def background_case(seed: int, index: int) -> Case:
+    """Case `index` of seed `seed` of the background mode (bench/fuzz_background.py)."""
+    return Case(**fuzz_background.background_case(seed, index))
+
+
+def hostile_files_case(seed: int, index: int) -> Case:
+    """Case `index` of seed `seed` of the hostile mode (bench/fuzz_hostile.py)."""
+    return Case(**fuzz_hostile.hostile_case(seed, index))
+
+
 MODES = {"grammar": (GENERATORS, None), "files": (FILES_GENERATORS, files_case),
          "commands": (COMMANDS_GENERATORS, commands_case),
          "threads": (THREADS_GENERATORS, threads_case),
-         "stale": (fuzz_stale.GENERATORS, stale_case)}
+         "stale": (fuzz_stale.GENERATORS, stale_case),
+         "background": (fuzz_background.GENERATORS, background_case),
+         "hostile": (fuzz_hostile.GENERATORS, hostile_files_case)}
 
 
 def make_case(mode: str, seed: int, index: int) -> Case:
@@ -2028,7 +2060,9 @@ def judge_sweeps(case: Case, tables: list, failures: list, truths: list) -> list
 
 
 CHECKS = {"files": check_files_case, "commands": check_commands_case,
-          "threads": check_threads_case, "stale": fuzz_stale.check_stale_case}
+          "threads": check_threads_case, "stale": fuzz_stale.check_stale_case,
+          "background": fuzz_background.check_background_case,
+          "hostile": fuzz_hostile.check_hostile_case}
 
 
 def worker_main(folder: Path, memory_mb: int) -> int:
@@ -2229,15 +2263,16 @@ def run_cases(cases: list[Case], jobs: int = 1, timeout: float = 60.0,
 # Reports
 
 OUTCOMES = ("ok", "diagnosed", "crash", "hang", "memory", "escaped", "clobbered", "leftover",
-            "wrong", "stale", "error")
+            "wrong", "stale", "error", "leaked")
 FAILURES = OUTCOMES[2:]
 # what each mode can tell ("-" in the table for the rest)
 MEASURED = {"mutation": ("ok", "diagnosed", "crash"), "grammar": OUTCOMES[:6],
             "files": OUTCOMES[:6] + ("wrong",), "commands": OUTCOMES,
-            "threads": OUTCOMES[:5] + ("wrong",), "stale": fuzz_stale.OUTCOMES}
+            "threads": OUTCOMES[:5] + ("wrong",), "stale": fuzz_stale.OUTCOMES,
+            "background": fuzz_background.OUTCOMES, "hostile": fuzz_hostile.OUTCOMES}
 # seconds a case may take, by mode (--timeout overrides)
 TIMEOUTS = {"grammar": 60.0, "files": 120.0, "commands": 180.0, "threads": 120.0,
-            "stale": 900.0}
+            "stale": 900.0, "background": 600.0, "hostile": 300.0}
 
 
 @dataclass
@@ -2289,6 +2324,8 @@ def describe(case: Case) -> str:
     parts += ["$ autolev " + " ".join(argv) for argv in case.commands]
     parts += [f"sweep: {json.dumps(spec)}" for spec in case.sweeps]
     parts += fuzz_stale.described(case) if case.mode == "stale" else []
+    parts += fuzz_background.described(case) if case.mode == "background" else []
+    parts += fuzz_hostile.described(case) if case.mode == "hostile" else []
     return "\n".join(parts)
 
 
@@ -2347,6 +2384,10 @@ def write_case(case: Case, into: Path) -> list[str]:
     its commands, as they are run there."""
     if case.mode == "stale":
         return fuzz_stale.write_case(case, into)
+    if case.mode == "background":
+        return fuzz_background.write_case(case, into)
+    if case.mode == "hostile":
+        return fuzz_hostile.write_case(case, into)
     into.mkdir(parents=True, exist_ok=True)
     case_dir, _ = set_up(case, into)
     model = case_dir / case.filename
@@ -2381,8 +2422,8 @@ def main() -> int:
     global CORPUS
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--mode", default="mutation",
-                    help="mutation, grammar, files, commands, threads, stale, or several "
-                    "comma-separated; all: every one")
+                    help="mutation, grammar, files, commands, threads, stale, background, "
+                    "hostile, or several comma-separated; all: every one")
     ap.add_argument("--mutants", type=int, default=10000, help="mutation mode: mutants")
     ap.add_argument("--cases", type=int, default=10000, help="other modes: cases per seed")
     ap.add_argument("--first", type=int, default=0,
@@ -2393,8 +2434,8 @@ def main() -> int:
     ap.add_argument("--seeds", help="several seeds, comma-separated (instead of --seed)")
     ap.add_argument("--jobs", type=int, default=1, help="other modes: worker processes")
     ap.add_argument("--timeout", type=float,
-                    help="seconds per case (default: grammar and files 60, commands 180, "
-                    "threads 120, stale 900)")
+                    help="seconds per case (default: grammar 60, files 120, commands 180, "
+                    "threads 120, stale 900, background 600, hostile 300)")
     ap.add_argument("--memory-mb", type=int, default=2048, help="worker memory limit")
     ap.add_argument("--corpus", type=Path, default=CORPUS)
     ap.add_argument("--replay", metavar="SEED:INDEX",

@@ -236,3 +236,35 @@ def test_a_relative_cache_setting_is_said_once(tmp_path):
                           capture_output=True, text=True, env=env)
     assert done.returncode == 0, done.stderr
     assert done.stderr.count("AUTOLEV_CACHE=relative/cache is not an absolute path") == 1
+
+
+# Ctrl-C while the command starts, before main takes it: no traceback (issue 50)
+_INTERRUPTED_IMPORT = """
+import runpy, sys
+interrupted = sys.argv[1]
+class Interrupt:
+    def find_spec(self, name, path, target=None):
+        if name == interrupted:
+            raise KeyboardInterrupt
+sys.meta_path.insert(0, Interrupt())
+sys.argv = ["autolev", "--version"]
+runpy.run_module("autolev", run_name="__main__", alter_sys=True)
+"""
+
+
+@pytest.mark.parametrize("module", ["autolev.errors", "autolev.cli.background"])
+def test_an_interrupt_while_the_command_starts_ends_it_without_a_traceback(module):
+    # SIGINT while `python -m autolev` imported its package or its command line
+    done = subprocess.run([sys.executable, "-c", _INTERRUPTED_IMPORT, module],
+                          capture_output=True, text=True, timeout=60)
+    assert done.returncode == 130, done.stderr
+    assert "Traceback" not in done.stderr and "KeyboardInterrupt" not in done.stderr
+
+
+def test_an_interrupt_while_the_command_line_is_read_is_exit_130(monkeypatch):
+    from autolev import cli
+
+    def interrupted():
+        raise KeyboardInterrupt
+    monkeypatch.setattr(cli, "build_parser", interrupted)
+    assert cli.entry() == 130

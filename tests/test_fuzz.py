@@ -2,6 +2,7 @@
 check the modes make is shown to fail on what it is there to find (a case over the time
 limit is a hang, a write through a planted link an escape, rows of another model wrong)."""
 import importlib.util
+import os
 import random
 import sys
 
@@ -420,3 +421,263 @@ def test_more_fixed_seed_stale_cases_are_never_stale():
     results = fuzz.run_cases(cases, jobs=2, timeout=300)
     assert not [r for r in results if r.outcome != "ok"], \
         [(r.index, r.outcome, r.detail) for r in results if r.outcome != "ok"]
+
+
+# -- background mode ----------------------------------------------------------------
+background = fuzz.fuzz_background
+hostile = fuzz.fuzz_hostile
+
+
+def test_background_cases_are_deterministic_and_draw_every_fault():
+    cases = [fuzz.make_case("background", 5, i) for i in range(300)]
+    assert cases == [fuzz.make_case("background", 5, i) for i in range(300)]
+    assert cases != [fuzz.make_case("background", 6, i) for i in range(300)]
+    faults = [c.change for c in cases]
+    assert {c.generator for c in cases} == set(background.GENERATORS)
+    assert {f["signal"] for f in faults if "signal" in f} == set(background.SIGNALS)
+    assert {f["event"] for f in faults if "event" in f} == set(background.TERMINAL_EVENTS)
+    assert {(f["family"], f["action"]) for f in faults if "action" in f} == \
+        {("cache", a) for a in background.CACHE_FAULTS} | \
+        {("config", a) for a in background.CONFIG_FAULTS}
+    assert {f["moment"] for f in faults} == set(background.MOMENTS)
+    # the children are signalled while the outputs are written and while they compile
+    assert {f["moment"] for f in faults if f["family"] == "signal-child"} == \
+        {"early", "compiling"}
+    assert {"example", "chain"} == {c.change["source"].split()[0] for c in cases}
+    assert all(c.commands[0][:3] == ["run", "--out", "{out}"] for c in cases)
+
+
+def background_case(family: str, **fault) -> "fuzz.Case":
+    """harmonic.al run with one fault of `family` (the rest of the fault given)."""
+    text = HARMONIC.read_text()
+    change = {"family": family, "source": "example harmonic", "link_sleep": 0.5,
+              "delay": 0.0, **fault}
+    return fuzz.Case(0, family, "harmonic.al", text, mode="background",
+                     commands=[["run", "--out", "{out}", "harmonic.al"]], change=change)
+
+
+@pytest.fixture(scope="module")
+def background_shared(tmp_path_factory):
+    """The folder a fuzz run's workers share (the fresh answers and compiler there)."""
+    return tmp_path_factory.mktemp("background-shared")
+
+
+@pytest.fixture
+def notes(monkeypatch):
+    """What the cases played note (the fault sent, typed, applied)."""
+    said: list[str] = []
+    really_notes = background.Play.note
+
+    def note(self, text):
+        said.append(text)
+        really_notes(self, text)
+    monkeypatch.setattr(background.Play, "note", note)
+    return said
+
+
+@pytest.mark.parametrize("family, fault, landed", [
+    ("signal-parent", {"signal": "SIGTERM", "moment": "early", "delay": 0.3},
+     "SIGTERM sent to the parent"),
+    ("signal-child", {"signal": "SIGKILL", "moment": "compiling", "delay": 0.2},
+     "SIGKILL sent to the child"),
+    ("terminal", {"event": "ctrl-z", "moment": "early", "delay": 0.3, "pause": 0.5},
+     "ctrl-z typed"),
+    ("cache", {"action": "read-only", "moment": "compiling", "delay": 0.2,
+               "repair": False}, "the cache read-only"),
+    ("config", {"action": "truncated", "moment": "early", "delay": 0.4,
+                "key_length": 16, "repair": False}, "the cache key cut to 16 bytes"),
+])
+def test_a_fault_of_each_family_is_survived(background_shared, notes, family, fault,
+                                            landed):
+    folder = background_shared / f"worker-{family}"
+    folder.mkdir()
+    result = background.check_background_case(background_case(family, **fault), folder)
+    assert result["outcome"] == "ok", result["detail"]
+    assert [n for n in notes if n.startswith(landed)], notes
+    assert "the recovery run ended, exit status 0" in notes
+    if family == "signal-parent":      # it died of what it was sent
+        assert result["stage"] in ("early, exit -15", "early, exit 143")
+
+
+def test_the_exit_statuses_a_signal_explains():
+    def allowed(*sent):
+        return background.expected_statuses([{"signal": s, "to": to} for s, to in sent])
+    assert allowed() == {0: False}
+    assert allowed(("SIGSTOP", "child"), ("SIGCONT", "child")) == {0: False}
+    # exit 1 must say why
+    assert allowed(("SIGINT", "parent")) == {0: False, 1: True, 130: False, -2: False}
+    assert allowed(("SIGKILL", "parent")) == {0: False, -9: False}
+    assert allowed(("SIGKILL", "child")) == {0: False, 1: True}
+
+
+def test_a_traceback_is_a_crash_but_an_interrupt_before_autolev_runs():
+    def ended(status, text):
+        return background.Ended("faulted", status, "", text, 0.0, 1.0)
+    in_python = ('Traceback (most recent call last):\n  File "<frozen runpy>", line 189, in '
+                 '_run_module_as_main\n  File "<frozen runpy>", line 112, in '
+                 '_get_module_details\nKeyboardInterrupt\n')
+    in_autolev = in_python.replace(
+        "KeyboardInterrupt", '  File "/src/autolev/cli/run.py", line 3, in cmd_run\n'
+        "KeyboardInterrupt")
+    sigint = [{"signal": "SIGINT", "to": "parent"}]
+    assert background.crash_of(ended(-2, in_python), sigint) is None
+    assert background.crash_of(ended(-2, in_python), [])          # SIGINT not sent
+    assert background.crash_of(ended(-2, in_autolev), sigint)
+    assert background.crash_of(ended(70, ""), sigint)
+    assert background.crash_of(ended(1, "autolev: internal error: ..."), sigint)
+    assert background.crash_of(ended(130, ""), sigint) is None
+
+
+def misbehaving(tmp_path, monkeypatch, script: str) -> None:
+    """The cases' command replaced by `script` (Python; sys.argv: autolev's arguments)."""
+    program = tmp_path / "misbehaving.py"
+    program.write_text(script)
+    monkeypatch.setattr(background, "PROGRAM", [sys.executable, str(program)])
+
+
+def test_an_internal_error_is_a_crash(background_shared, tmp_path, monkeypatch):
+    misbehaving(tmp_path, monkeypatch, "import sys\n"
+                "print('autolev: internal error: a bug in autolev', file=sys.stderr)\n"
+                "sys.exit(70)\n")
+    case = background_case("config", action="truncated", moment="before", key_length=0,
+                           repair=False)
+    result = background.check_background_case(case, background_shared / "worker-crash")
+    assert result["outcome"] == "crash" and "exit status 70" in result["detail"]
+
+
+def test_a_process_left_running_is_leaked_and_killed(background_shared, tmp_path,
+                                                     monkeypatch):
+    # the real command, after starting a process that outlives it (with the case's tag)
+    misbehaving(tmp_path, monkeypatch, "import os, subprocess, sys\n"
+                "subprocess.Popen(['sleep', '300'], start_new_session=True)\n"
+                "os.execv(sys.executable, [sys.executable, '-m', 'autolev', *sys.argv[1:]])\n")
+    monkeypatch.setattr(background, "LINGER_SECONDS", 1.0)
+    case = background_case("cache", action="remove", moment="early", delay=0.2,
+                           repair=False)
+    result = background.check_background_case(case, background_shared / "worker-leak")
+    assert result["outcome"] == "leaked" and "sleep 300" in result["detail"]
+    assert not [pid for pid in background_sleepers() if pid]
+
+
+def background_sleepers() -> list[int]:
+    """`sleep 300` processes still alive (the test's leak, killed by the case)."""
+    found = []
+    for entry in os.listdir("/proc"):
+        try:
+            line = open(f"/proc/{entry}/cmdline", "rb").read()
+        except OSError:
+            continue
+        if line == b"sleep\x00300\x00" and background._alive(int(entry)):
+            found.append(int(entry))
+    return found
+
+
+def test_a_temporary_the_recovery_run_leaves_is_a_leftover(background_shared, tmp_path,
+                                                          monkeypatch):
+    misbehaving(tmp_path, monkeypatch, "import os, subprocess, sys\n"
+                "done = subprocess.call([sys.executable, '-m', 'autolev', *sys.argv[1:]])\n"
+                "out = sys.argv[sys.argv.index('--out') + 1]\n"
+                "open(os.path.join(out, '.harmonic.1.999.beef.autolev-part'), 'w').close()\n"
+                "sys.exit(done)\n")
+    case = background_case("signal-child", signal="SIGSTOP", moment="compiling",
+                           delay=0.1, pause=0.2)
+    result = background.check_background_case(case, background_shared / "worker-left")
+    assert result["outcome"] == "leftover", result["detail"]
+    assert "out/.harmonic.1.999.beef.autolev-part" in result["detail"]
+
+
+# -- hostile mode -------------------------------------------------------------------
+def test_hostile_cases_are_deterministic_and_draw_every_kind():
+    cases = [fuzz.make_case("hostile", 5, i) for i in range(300)]
+    assert cases == [fuzz.make_case("hostile", 5, i) for i in range(300)]
+    assert {c.generator for c in cases} == set(hostile.WHERES)
+    assert {c.change["kind"] for c in cases} == set(hostile.READ_KINDS)
+    assert {c.change["kind"] for c in cases if c.generator == "output"} == \
+        set(hostile.WRITE_KINDS)
+    assert {c.change["command"] for c in cases} == set(hostile.COMMANDS)
+    for c in cases:     # each command reads or writes the hostile name
+        assert c.change["command"] in (hostile.WRITTEN if c.generator == "output"
+                                       else hostile.READERS[c.generator])
+
+
+def hostile_case(where: str, kind: str, argv: list, overwrite: bool = False) -> "fuzz.Case":
+    files = hostile.pendulum(1)
+    name = hostile.NAMES.get(where) or f"out/{argv[-1].replace('.al', '.c')}"
+    change = {"where": where, "kind": kind, "command": argv[0], "name": name,
+              "overwrite": overwrite}
+    return fuzz.Case(0, where, "x.al", files.pop("x.al"), mode="hostile", files=files,
+                     commands=[argv], change=change)
+
+
+@pytest.mark.parametrize("where, kind, argv", [
+    ("model", "fifo", ["check", "x.al"]),
+    ("macro", "fifo-held", ["run", "--out", "{out}", "--tfinal", "0.2", "x.al"]),
+    ("in", "devzero", ["linearize", "--in", "vals.in", "x.al"]),
+    ("output", "tty", ["code", "--out", "{out}", "x.al"]),
+    ("output", "fifo-held", ["code", "--out", "{out}", "x.al"]),
+])
+def test_hostile_files_are_refused_or_replaced(tmp_path, where, kind, argv):
+    result = hostile.check_hostile_case(hostile_case(where, kind, argv), tmp_path / "w")
+    assert result["outcome"] == "ok", result["detail"]
+
+
+def test_a_read_blocked_on_a_fifo_is_a_hang(tmp_path, monkeypatch):
+    misbehaving(tmp_path, monkeypatch, "import sys\nopen(sys.argv[-1]).read()\n")
+    monkeypatch.setattr(hostile, "COMMAND_SECONDS", 2.0)
+    result = hostile.check_hostile_case(hostile_case("model", "fifo", ["check", "x.al"]),
+                                        tmp_path / "w")
+    assert result["outcome"] == "hang", result["detail"]
+
+
+def test_a_write_through_a_fifo_is_clobbered(tmp_path, monkeypatch):
+    misbehaving(tmp_path, monkeypatch, "import os, sys\n"
+                "out = sys.argv[sys.argv.index('--out') + 1]\n"
+                "open(os.path.join(out, 'x.c'), 'w').write('int x;\\n')\n")
+    result = hostile.check_hostile_case(
+        hostile_case("output", "fifo-held", ["code", "--out", "{out}", "x.al"]),
+        tmp_path / "w")
+    assert result["outcome"] == "clobbered" and "written through out/x.c" in \
+        result["detail"]
+
+
+def test_a_failure_must_name_the_file(tmp_path, monkeypatch):
+    misbehaving(tmp_path, monkeypatch, "import sys\n"
+                "print('autolev: error: cannot read a file', file=sys.stderr)\n"
+                "sys.exit(1)\n")
+    result = hostile.check_hostile_case(hostile_case("model", "dir", ["check", "x.al"]),
+                                        tmp_path / "w")
+    assert result["outcome"] == "wrong" and "without naming x.al" in result["detail"]
+    assert hostile._names_it("autolev: error: x.al: cannot read", "x.al")
+    assert not hostile._names_it("error (out/.x.1.4752.bcb9.autolev-part)", "out/x.1")
+
+
+def test_a_process_a_hostile_command_leaves_is_leaked(tmp_path, monkeypatch):
+    misbehaving(tmp_path, monkeypatch, "import os, subprocess, sys\n"
+                "subprocess.Popen(['sleep', '300'], start_new_session=True)\n"
+                "os.execv(sys.executable, [sys.executable, '-m', 'autolev', *sys.argv[1:]])\n")
+    monkeypatch.setattr(hostile, "LINGER_SECONDS", 1.0)
+    result = hostile.check_hostile_case(hostile_case("model", "socket", ["check", "x.al"]),
+                                        tmp_path / "w")
+    assert result["outcome"] == "leaked" and "sleep 300" in result["detail"]
+    assert not background_sleepers()
+
+
+def test_fixed_seed_hostile_cases_in_a_worker_never_fail():
+    # (the background cases are played in the worker by the same CHECKS)
+    assert fuzz.CHECKS["background"] is background.check_background_case
+    cases = [fuzz.make_case("hostile", 2024, i) for i in range(4)]
+    results = fuzz.run_cases(cases, jobs=1, timeout=120)
+    assert not [r for r in results if r.outcome != "ok"], \
+        [(r.index, r.outcome, r.detail) for r in results if r.outcome != "ok"]
+
+
+def test_background_and_hostile_cases_replay_by_hand(tmp_path):
+    case = background_case("signal-parent", signal="SIGINT", moment="early", delay=0.4)
+    commands = fuzz.write_case(case, tmp_path / "b")
+    assert (tmp_path / "b" / "model" / "harmonic.al").read_text() == case.text
+    started = next(k for k, c in enumerate(commands) if c.endswith("& pid=$!"))
+    assert commands[started + 1:started + 4] == ["sleep 0.4", "kill -INT $pid", "wait $pid"]
+    case = hostile_case("model", "fifo", ["check", "x.al"])
+    commands = fuzz.write_case(case, tmp_path / "h")
+    assert "rm -rf x.al; mkfifo x.al" in commands
+    assert commands[-1].endswith("-m autolev check x.al; echo exit $?")

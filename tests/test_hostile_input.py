@@ -297,3 +297,88 @@ def test_a_model_that_is_no_regular_file_is_refused_at_once(tmp_path, kind, comm
     # check searches a folder for models: a folder named .al holds none
     assert ("no .al files found" if (command, kind) == ("check", "folder")
             else "not a regular file") in said
+
+
+@pytest.mark.skipif(os.name != "posix", reason="symbolic links: POSIX")
+@pytest.mark.parametrize("command", ["run", "code", "linearize", "animate", "equations",
+                                     "check", "convert"])
+def test_a_model_that_is_a_link_to_itself_is_refused(tmp_path, command):
+    # the name of the lock of a background compile resolved the model's path first:
+    # RuntimeError (a symlink loop), exit 70, before the read said what was wrong
+    import subprocess
+    import sys
+    os.symlink("loop.al", tmp_path / "loop.al")
+    args = [command, "loop.al"] + (["--out", str(tmp_path / "o")]
+                                   if command in ("run", "code", "animate") else [])
+    done = subprocess.run([sys.executable, "-m", "autolev", *args], capture_output=True,
+                          text=True, timeout=60, cwd=tmp_path,
+                          env=dict(os.environ, AUTOLEV_CACHE=str(tmp_path / "cache")))
+    said = done.stdout + done.stderr
+    assert done.returncode == 1, said
+    assert "internal error" not in said
+    assert "loop.al" in said and "Too many levels of symbolic links" in said
+
+
+def test_a_folder_where_a_table_goes_is_named(tmp_path):
+    # told to overwrite, the run's rename of its table onto a folder fails: the message
+    # named the table's temporary (.double_pendulum.1.PID.HEX.autolev-part), not the folder
+    from helpers import EXAMPLES
+    model = autolev.load(EXAMPLES / "double_pendulum.al")
+    (tmp_path / "double_pendulum.1").mkdir()
+    with pytest.raises(autolev.runtime.AutolevModelError) as info:
+        model.simulate(out_dir=tmp_path, TFINAL=0.1, overwrite=True)
+    said = str(info.value)
+    assert str(tmp_path / "double_pendulum.1") + ")" in said and "autolev-part" not in said
+    # no temporary left, and no .dir: the set does not pass for complete
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert "double_pendulum.dir" not in names and not [n for n in names if n[0] == "."]
+
+
+def test_check_names_the_included_file_it_cannot_read(tmp_path, monkeypatch, capsys):
+    # a RUN file that cannot be read was said of the model: "m.al: error: cannot read:
+    # Permission denied" of a model that reads
+    from autolev.cli import main
+    from autolev.engine import reading
+    (tmp_path / "values.al").write_text("INPUT A = 1\n")
+    model = tmp_path / "m.al"
+    model.write_text("CONSTANTS A\nRUN values.al\nX = 2*A\n")
+    really_reads = reading._regular_file_bytes
+
+    def unreadable(path):
+        if Path(path).name == "values.al":
+            raise PermissionError(13, "Permission denied", str(path))
+        return really_reads(path)
+    monkeypatch.setattr(reading, "_regular_file_bytes", unreadable)
+    assert main(["check", str(model)]) == 1
+    said = capsys.readouterr().out
+    assert "values.al: cannot read: Permission denied" in said, said
+
+
+def test_check_of_a_folder_named_as_a_model_names_it(tmp_path, capsys):
+    from autolev.cli import main
+    (tmp_path / "x.al").mkdir()
+    assert main(["check", str(tmp_path / "x.al")]) == 1
+    assert f"no .al files found in {tmp_path / 'x.al'}" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("command, name", [("code", "pendulum.c"), ("code", "pendulum.in"),
+                                           ("animate", "pendulum.html")])
+def test_a_folder_where_an_output_goes_is_named(tmp_path, capsys, command, name):
+    # told to overwrite, the rename onto the folder failed: "cannot write into OUT: Is a
+    # directory", without the name
+    from autolev.cli import main
+    model = tmp_path / "pendulum.al"
+    model.write_text("NEWTONIAN N\nFRAMES A\nPARTICLES P\nMOTIONVARIABLES' Q''\n"
+                     "CONSTANTS L, M, G\nSIMPROT(N, A, 3, Q)\nP_NO_P> = L*A1>\n"
+                     "V2PTS(N, A, NO, P)\nMASS P = M\nGRAVITY(G*N1>)\n"
+                     "ZERO = FR() + FRSTAR()\nKANE()\nINPUT L = 1, M = 1, G = 9.8, Q = 0.1\n"
+                     "INPUT TFINAL = 0.1, INTEGSTP = 0.01\nOUTPUT T, Q\n"
+                     "CODE DYNAMICS() pendulum.c\n")
+    out = tmp_path / "out"
+    (out / name).mkdir(parents=True)
+    args = [command, "--overwrite", "--out", str(out), str(model)]
+    if command == "animate":
+        args[1:1] = ["--format", "html", "--backend", "python"]
+    assert main(args) == 1
+    said = capsys.readouterr().err
+    assert f"Is a directory ({out / name})" in said, said

@@ -129,6 +129,8 @@ def test_macros_and_functions_linked_outside_the_model_folder_are_refused(tmp_pa
     found = diagnostics(f)
     assert [d.code for d in found] == ["E025", "E025"]
     assert all("SECRET-TEXT" not in (d.message + (d.source_line or "")) for d in found)
+    # each says which of the model's files is the link (not only the call's name)
+    assert ["leak.a" in found[0].message, "leakf.r" in found[1].message] == [True, True]
 
 
 def test_run_includes_a_file(tmp_path):

@@ -14,9 +14,6 @@ from __future__ import annotations
 
 import importlib
 
-from .errors import (AutolevError, AutolevFileError, AutolevInternalError, AutolevRuntimeError,
-                     AutolevSyntaxError, AutolevTranslationError, Diagnostic, Location, Span)
-
 __version__ = "0.1.0"
 __all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "write_programs",
            "export_sympy", "Program",
@@ -28,10 +25,18 @@ __all__ = ["parse", "translation", "transpile", "load", "verify", "grid", "write
 _LAZY = {"Program": ".ir", "parse": ".pipeline", "translation": ".pipeline",
          "transpile": ".pipeline", "load": ".loader", "verify": ".verification",
          "grid": ".runtime.studies", "write_programs": ".programs",
-         "export_sympy": ".export_mechanics"}
+         "export_sympy": ".export_mechanics",
+         # lazy too: `python -m autolev` imports the package before its __main__, which
+         # takes a Ctrl-C while the command starts (nothing here may take long)
+         **{name: ".errors" for name in (
+             "AutolevError", "AutolevFileError", "AutolevInternalError",
+             "AutolevRuntimeError", "AutolevSyntaxError", "AutolevTranslationError",
+             "Diagnostic", "Location", "Span")}}
 
 
 def __getattr__(name: str):
+    if name == "errors":            # the module itself, as when it was imported here
+        return importlib.import_module(".errors", __name__)
     if name not in _LAZY:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     value = getattr(importlib.import_module(_LAZY[name], __name__), name)

@@ -59,7 +59,7 @@ _ALL = (
          "RUN a.al: the file includes itself"),
     Code("E024", "RUN files nested too deep", "RUN x.al: files nested deeper than 32 levels"),
     Code("E025", "a macro or function whose file leads outside the model's folder",
-         "macro M: refused, its file leads outside the model's folder (...), through a link"),
+         "macro M: refused, its file m.a leads outside the model's folder (...), through a link"),
     Code("E030", "a macro or function call with fewer arguments than its text uses",
          "macro M (m.a) uses #3# but this call gives 2 arguments"),
     Code("E031", "a macro or function that calls itself", "function F calls itself"),

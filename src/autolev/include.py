@@ -319,10 +319,12 @@ class Includes:
         leads outside the model's folder, wants more arguments, or calls itself.  A call
         that is not the file's `own_text` (it came in as an argument: F(F(X))) is the
         caller's, not a call of the function in whose body it now stands."""
+        link = found
         found = found.resolve()
         if not is_within(found, self.model_root):
-            self._error(origin, ctx, "E025", f"{what} {name}: refused, its file leads outside "
-                        f"the model's folder ({self.model_root}), through a link")
+            self._error(origin, ctx, "E025", f"{what} {name}: refused, its file "
+                        f"{self._display_name(link)} leads outside the model's folder "
+                        f"({self.model_root}), through a link")
             return None
         display = self._display_name(found)
         src = self._read(found, display)

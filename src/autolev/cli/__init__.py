@@ -66,7 +66,10 @@ def entry() -> int:
     """The `autolev` command (`python -m autolev`): main, allowed to leave work to the
     background once a command's output is done (background.py)."""
     background.allow()
-    return main()
+    try:
+        return main()
+    except KeyboardInterrupt:       # before main's own handling: reading the command line
+        return 130
 
 
 def _refuse_missing_input_file(ns: argparse.Namespace) -> None:

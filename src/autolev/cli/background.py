@@ -52,7 +52,9 @@ def lock_file(model_path: Path) -> Path | None:
     folder = diskcache.lasting_dir()
     if folder is None:
         return None
-    digest = hashlib.sha256(str(model_path.resolve()).encode()).hexdigest()[:40]
+    # realpath: a model that is a link to itself resolves to a name (Path.resolve raises
+    # RuntimeError), which its read then refuses with the reason
+    digest = hashlib.sha256(os.path.realpath(model_path).encode()).hexdigest()[:40]
     return folder / f"finishing_{digest}.lock"
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -33,10 +34,15 @@ def check_file(path: Path) -> list[Diagnostic]:
     return diagnostics(path, macro=path.suffix.lower() in MACRO_SUFFIXES)
 
 
+def _same_file(a, b) -> bool:
+    return os.path.realpath(a) == os.path.realpath(b)
+
+
 def cmd_check(ns: argparse.Namespace) -> int:
     files = model_files(ns.files)
-    if not files:
-        print("autolev check: no .al files found", file=sys.stderr)
+    if not files:       # only folders were named (a file named is checked, there or not)
+        print(f"autolev check: no .al files found in {', '.join(ns.files)}",
+              file=sys.stderr)
         return 1
     report = []
     n_errors = n_warnings = n_bad = 0
@@ -45,7 +51,8 @@ def cmd_check(ns: argparse.Namespace) -> int:
             diags = check_file(path)
         except AutolevFileError as exc:
             diags = []
-            failure = exc.reason
+            # a file the model includes (RUN, macro, function) is named: the model reads
+            failure = exc.reason if _same_file(exc.path, path) else str(exc)
         except AutolevError as exc:
             diags = []
             failure = str(exc)

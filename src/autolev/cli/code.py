@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from .common import load_model, overwrite_option, statement_label
+from .common import failed_write, load_model, overwrite_option, statement_label
 
 
 def cmd_code(ns: argparse.Namespace) -> int:
@@ -27,7 +27,7 @@ def cmd_code(ns: argparse.Namespace) -> int:
     try:
         done = write_programs(model, out, overwrite=ns.overwrite, quirks=ns.quirks)
     except OSError as exc:
-        print(f"autolev code: cannot write into {out}: {exc.strerror or exc}",
+        print(f"autolev code: cannot write into {out}: {failed_write(exc)}",
               file=sys.stderr)
         return 1
     finally:

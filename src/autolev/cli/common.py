@@ -40,6 +40,14 @@ def failure_diagnostics(path: Path, exc) -> list:
     return diagnostics(path)
 
 
+def failed_write(exc: OSError) -> str:
+    """Why a file could not be written, and which: a rename's target (filename2), not
+    the temporary it renamed (a folder in the way of out/x.c said only 'Is a
+    directory')."""
+    where = exc.filename2 or exc.filename
+    return f"{exc.strerror or exc}" + (f" ({where})" if where and exc.strerror else "")
+
+
 def print_warning(message, category, filename, lineno, file=None, line=None):
     print(f"autolev: warning: {message}", file=sys.stderr)
 

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .common import (UsageError, has_matplotlib, listed, load_model, model_value_options,
-                     name_values, overwrite_option, specified_values)
+from .common import (UsageError, failed_write, has_matplotlib, listed, load_model,
+                     model_value_options, name_values, overwrite_option, specified_values)
 
 
 def cmd_linearize(ns: argparse.Namespace) -> int:
@@ -131,7 +131,7 @@ def _report_eigenvalues(path: Path, lin, out_dir: str | None, overwrite: bool = 
             contents.append((f"{stem}-linear.mat", lin.mat_bytes()))
             written = [write_output(out, name, data, overwrite) for name, data in contents]
         except OSError as exc:
-            print(f"autolev linearize: cannot write into {out}: {exc.strerror or exc}",
+            print(f"autolev linearize: cannot write into {out}: {failed_write(exc)}",
                   file=sys.stderr)
             return 1
         for target in written:
@@ -220,7 +220,7 @@ def _linearize_sweep(path: Path, model, sweep, point: dict, options: dict,
                     folder / f"{stem}-sweep.png", name, values, eigenvalues,
                     f"{path.name}: eigenvalues", ns.overwrite))
         except OSError as exc:
-            print(f"autolev linearize: cannot write into {folder}: {exc.strerror or exc}",
+            print(f"autolev linearize: cannot write into {folder}: {failed_write(exc)}",
                   file=sys.stderr)
             return 1
         for target in written:

@@ -12,8 +12,9 @@ from pathlib import Path
 
 from ..errors import printable_lines
 from . import background
-from .common import (UsageError, has_matplotlib, load_model, name_values, positive_int,
-                     refuse_unknown_names, run_options, specified_values, statement_label)
+from .common import (UsageError, failed_write, has_matplotlib, load_model, name_values,
+                     positive_int, refuse_unknown_names, run_options, specified_values,
+                     statement_label)
 from .responses import transcript_text
 
 
@@ -544,7 +545,7 @@ def _write_formats(run: FinishedRun) -> int:
             continue
         except OSError as exc:
             print(f"{run.label}: error: cannot write {f.called.format(name=run.result.name)} "
-                  f"into {run.out_dir}: {exc.strerror or exc}", file=sys.stderr)
+                  f"into {run.out_dir}: {failed_write(exc)}", file=sys.stderr)
             status = 1
             continue
         if not run.ns.quiet:

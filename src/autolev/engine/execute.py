@@ -118,6 +118,7 @@ def _writing(folder: Path):
     try:
         yield
     except OSError as exc:
-        where = exc.filename or folder
+        # a rename names its target second: the file in the way, not the temporary
+        where = exc.filename2 or exc.filename or folder
         raise AutolevModelError(f"cannot write the output files into {folder}: "
                                 f"{exc.strerror or exc} ({where})") from None
