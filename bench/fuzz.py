@@ -2235,7 +2235,7 @@ def run_cases(cases: list[Case], jobs: int = 1, timeout: float = 60.0,
         if result is not None:
             results.append(result)
             if progress is not None:
-                progress(len(results), len(cases))
+                progress(results, len(cases))
     with tempfile.TemporaryDirectory(prefix="autolev-fuzz-") as tmp:
         pool = [Worker(Path(tmp), k, memory_mb) for k in range(max(1, min(jobs, len(cases))))]
         try:
@@ -2338,10 +2338,20 @@ def mode_rows(mode: str, seed: int, n: int, jobs: int, timeout: float, memory_mb
     t0 = time.perf_counter()
     step = 500 if mode == "grammar" else 100
 
-    def progress(done: int, total: int) -> None:
-        if done % step == 0:
-            print(f"  {mode} seed {seed}: {done}/{total} cases, "
-                  f"{time.perf_counter() - t0:.0f} s", file=sys.stderr, flush=True)
+    def progress(done: list, total: int) -> None:
+        # a failure said when found and the tally with each step: a run cut short
+        # keeps what it learnt
+        last = done[-1]
+        if last.outcome in FAILURES:
+            print(f"  {last.outcome} {seed}:{last.index} ({last.generator}): "
+                  f"{_printable((last.detail or '').strip()[-200:], 200)}",
+                  file=sys.stderr, flush=True)
+        if len(done) % step == 0:
+            tally = Counter(r.outcome for r in done)
+            print(f"  {mode} seed {seed}: {len(done)}/{total} cases, "
+                  f"{time.perf_counter() - t0:.0f} s; "
+                  + ", ".join(f"{o} {tally[o]}" for o in OUTCOMES if tally[o]),
+                  file=sys.stderr, flush=True)
     deadline = None if minutes is None else time.monotonic() + 60 * minutes
     results = run_cases(list(cases.values()), jobs, timeout, memory_mb, progress, deadline)
     total = time.perf_counter() - t0
