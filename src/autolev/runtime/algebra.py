@@ -10,6 +10,7 @@ from . import symbols as S
 from .functions import scalar_values, whole_number
 from .linalg import coefficients, solve_linear
 from ..engine.errors import AutolevModelError
+from .derived import mutation
 from .frame import body_fixed, rodrigues, space_fixed
 from .vectors import Dyadic, Vector
 
@@ -152,6 +153,7 @@ class AlgebraMixin:
             return sm.Add(*total).xreplace(increments)
         return self.map_scalars(value, one)
 
+    @mutation
     def solve(self, equations, unknowns) -> None:
         """SOLVE(E, x, y, ...): solve equations linear in the unknowns; the solutions
         become the definitions (RHS) of the unknowns."""
@@ -182,6 +184,7 @@ class AlgebraMixin:
             self.solved_rates.append(SolvedRates(
                 tuple(unknowns), tuple(eqs), tuple(self.defs.rhs[u] for u in unknowns)))
 
+    @mutation
     def _keep_speeds(self, unknowns) -> None:
         """A generalized speed u stays one when SOLVE defines u' (SOLVE(ZERO, U')), although
         a variable whose derivative is defined is otherwise a coordinate."""
@@ -191,7 +194,6 @@ class AlgebraMixin:
             return
         speeds = set(self.generalized_speeds(complete=False)[0])
         self.solved_speeds.update(b for b in bases if b in speeds)
-        self.note_change()
 
     def _dynamical_rows(self, eqs: list, unknowns: list) -> list:
         """After KANE(F1, ..., Fk), ZERO holds the n dynamical rows and then the k rows
@@ -223,12 +225,12 @@ class AlgebraMixin:
             return sm.Add(*[self.defs.zify(c) * m for m, c in parts.items()])
         return self.map_scalars(value, one)
 
+    @mutation
     def zee_not(self, names) -> sm.Matrix:
         """ZEE_NOT = [x, y]: names kept visible (never hidden in a Z); its value, what
         Autolev answered and what a later ZEE_NOT reads, is the row of those names."""
         kept = list(names) if not isinstance(names, sm.Basic) else [names]
         self.settings["ZEE_NOT"] = kept
-        self.note_change()
         return sm.Matrix([kept])
 
     def inv(self, m):
@@ -249,6 +251,7 @@ class AlgebraMixin:
             return self.defs.zify(m.det(method="berkowitz"))
         return self.defs.zify(m.det(method="bareiss"))
 
+    @mutation
     def nicheck(self):
         """NICHECK(): kinetic energy minus the work done on the system since TINITIAL
         (the sum over r of the integral of F_r u_r), written as Autolev's programs and
@@ -267,9 +270,9 @@ class AlgebraMixin:
         self.inputs.setdefault(work, (sm.S.Zero, None))
         return self.ke() + work
 
+    @mutation
     def setting(self, name: str, value) -> None:
         self.settings[name] = value
-        self.note_change()
         if name == "DEGREES":
             self.degrees = value != "OFF"
         elif name == "COMPLEX":

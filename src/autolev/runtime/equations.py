@@ -12,6 +12,7 @@ from . import symbols as S
 from ..engine.errors import AutolevModelError
 from .functions import VectorColumn
 from .interop import symbolic_system
+from .derived import mutation
 from .kane import KaneEquations
 from .linalg import coefficients, solve_linear
 
@@ -65,6 +66,7 @@ class EquationsMixin:
         """FRSTAR(): generalized inertia forces."""
         return self._form().frstar
 
+    @mutation
     def kane(self, *unknowns) -> KaneEquations:
         """KANE(): take Fr + Fr* = 0 as the dynamical equations; KANE(F1, ...) also solves
         the auxiliary rows for the listed unknowns (noncontributing forces)."""
@@ -78,7 +80,6 @@ class EquationsMixin:
             for sym, val in zip(eqs.unknowns, solution):
                 self.define(sym, val)
         self.kane_equations = eqs
-        self.note_change()
         return eqs
 
     def _formed_for(self, unknowns) -> KaneEquations:

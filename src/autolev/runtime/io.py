@@ -8,10 +8,12 @@ import sympy as sm
 
 from ..engine.code_kinds import INTEGRATION_PARAMETERS, CodeKind
 from ..engine.errors import AutolevModelError
+from .derived import mutation
 from .functions import degrees_to_radians
 from .units import is_degrees
 
 class IOMixin:
+    @mutation
     def input(self, target, value, unit: str | None = None) -> None:
         """INPUT x = value [unit]: a number for the numerics (value may be an expression
         of earlier inputs)."""
@@ -20,12 +22,10 @@ class IOMixin:
             if key not in INTEGRATION_PARAMETERS:
                 raise AutolevModelError(f"INPUT {target}: not a declared name")
             self.inputs[key] = (sm.sympify(value), unit)
-            self.note_change()
             return
         if not isinstance(target, sm.Symbol):
             raise AutolevModelError(f"INPUT gives values to names, not to {target}")
         self.inputs[target] = (sm.sympify(value), unit)
-        self.note_change()
 
     def input_value(self, target):
         """INPUT(x): the value INPUT gave to x."""
@@ -53,6 +53,7 @@ class IOMixin:
             values[s] = self.input_value(s)
         return expr.xreplace(values)
 
+    @mutation
     def output(self, *items) -> None:
         """OUTPUT e1 [unit], e2, ...: one more output file, these columns."""
         cols = []
@@ -61,22 +62,22 @@ class IOMixin:
             unit = item[2] if len(item) > 2 else None
             cols.append((value, label, unit))
         self.outputs.append(cols)
-        self.note_change()
 
+    @mutation
     def units(self, target, unit: str) -> None:
         """UNITS x = unit."""
         self.unit_of[target if not isinstance(target, str) else target.upper()] = unit
-        self.note_change()
 
+    @mutation
     def unit_system(self, *names: str) -> None:
         self.unit_system_names = tuple(names)
-        self.note_change()
 
+    @mutation
     def encode(self, *items) -> None:
         """ENCODE A, B: quantities the generated program evaluates."""
         self.encoded.extend(items)
-        self.note_change()
 
+    @mutation
     def code(self, kind: str, filename: str, args=None, sweep=None, options=(),
              zero=None) -> None:
         """CODE DYNAMICS|ALGEBRAIC|NONLINEAR|ODE(args) file: a program to run, with the
@@ -92,7 +93,6 @@ class IOMixin:
             inputs=dict(self.inputs), units=dict(self.unit_of),
             zero=None if zero is None else sm.Matrix(zero),
             definitions=self.defs.user_definitions()))
-        self.note_change()
 
 
 @dataclass

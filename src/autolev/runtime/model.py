@@ -18,7 +18,7 @@ import sympy as sm
 from . import symbols as S
 from .algebra import AlgebraMixin
 from .calculus import Definitions
-from .derived import DerivedCache, Revision
+from .derived import DerivedCache, Revision, mutation
 from .equations import EquationsMixin
 from ..engine.errors import AutolevModelError
 from .frame import Frame, Scene, body_fixed, euler_parameter_rates, space_fixed
@@ -90,7 +90,8 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         self._kinematics_pending: dict = {}   # U -> f(q') awaiting inversion
         # what its frames and points share; unit_quaternions: (e1, e2, e3, e4) of
         # DIRCOS(..., EULER, ...)
-        self.scene = Scene(self.defs, self.info, self.derived, self.point, self._changed)
+        self.scene = Scene(self.defs, self.info, self.derived, self.point,
+                           self._orientation_changed)
         self.gravity_vectors: list[Vector] = []  # g> of each GRAVITY statement, in order
         # the expression D(E, x) last differentiated, and the names it was asked about
         self.d_row: tuple = (None, [])
@@ -187,8 +188,9 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         return self._named("vector", name.rstrip(">"))
 
     def note_change(self) -> None:
-        """Every change to the model comes here (its frames' and points' through their
-        Scene, its definitions' through its Definitions): it bumps the one revision."""
+        """What follows each of the model's `mutation` methods (its frames' and points'
+        notices come through their Scene, its definitions' through its Definitions): it
+        bumps the one revision."""
         self._revision.bump()
 
     @property
@@ -201,21 +203,18 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         known stale; the derived cache is keyed on it."""
         return self._revision.key
 
-    def _changed(self, orientation: bool) -> None:
-        """What a change to the frames and points means for the rest: an orientation
-        changes the direction cosines derived along their paths."""
-        if orientation:
-            for f in self.frames_by_name.values():
-                f.forget_derived()
-            for p in self.points_by_name.values():
-                p.forget_derived()
+    def _orientation_changed(self) -> None:
+        """An orientation changes the direction cosines derived along the frames' paths
+        (kept until then, not per revision: only orientations change them)."""
+        for f in self.frames_by_name.values():
+            f.forget_derived()
 
     # -- declarations ------------------------------------------------------------------
+    @mutation
     def newtonian(self, name: str) -> Frame:
         """NEWTONIAN N: the inertial frame and its origin NO (at rest in N)."""
         frame = self.frame(name)
         self.newtonian_frame = frame
-        self.note_change()
         origin = self.point(name + "O")
         origin.set_vel(frame, Vector())
         origin.set_acc(frame, Vector())
@@ -227,6 +226,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
             raise AutolevModelError("no NEWTONIAN frame was declared")
         return self.newtonian_frame
 
+    @mutation
     def frame(self, name: str) -> Frame:
         f = Frame(name, self.scene)
         self.frames_by_name[name] = f
@@ -236,6 +236,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         out = tuple(self.frame(n) for n in _split(names))
         return out[0] if len(out) == 1 else out
 
+    @mutation
     def body(self, name: str) -> Body:
         center = self.point(name + "O")
         b = Body(name, self.scene, center)
@@ -247,6 +248,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         out = tuple(self.body(n) for n in _split(names))
         return out[0] if len(out) == 1 else out
 
+    @mutation
     def point(self, name: str) -> Point:
         p = Point(name, self.scene)
         self.points_by_name[name] = p
@@ -256,6 +258,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         out = tuple(self.point(n) for n in _split(names))
         return out[0] if len(out) == 1 else out
 
+    @mutation
     def particle(self, name: str) -> Particle:
         p = Particle(name, self.scene)
         self.points_by_name[name] = p
@@ -266,6 +269,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         out = tuple(self.particle(n) for n in _split(names))
         return out[0] if len(out) == 1 else out
 
+    @mutation
     def _declare(self, names, kind: str, order: int = 0, sign: str | None = None):
         out = []
         for n in _split(names):
@@ -281,7 +285,6 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
                         d = S.derivative(sym, k)
                         self.info.setdefault(d, SymbolInfo(kind, order - k, len(self.info)))
             out.append(sym)
-        self.note_change()
         return out[0] if len(out) == 1 else tuple(out)
 
     def constants(self, *names: str, sign: str | None = None):
@@ -304,6 +307,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         return info.kind if info else None
 
     # -- definitions -----------------------------------------------------------------
+    @mutation
     def define(self, sym, value) -> None:
         """X = value for a declared X (or X', X''): a definition, not a substitution."""
         if isinstance(sym, sm.Matrix):
@@ -320,10 +324,8 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
             # the speed; it is solved for the rates once they can all be determined
             self._kinematics_pending[sym] = value
             self._resolve_kinematics()
-            self.note_change()
             return
         self.defs.define(sym, value)
-        self.note_change()
 
     def _rates_in(self, value) -> set:
         """Undefined first derivatives of variables that appear in value."""
@@ -493,14 +495,14 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         self.add_force(b, value)
         self.add_force(a, -_vector(value))
 
+    @mutation
     def add_force(self, point: Point, value) -> None:
         self.forces[point] = self.forces.get(point, Vector()) + _vector(value)
-        self.note_change()
 
+    @mutation
     def set_force(self, point: Point, value) -> None:
         """FORCE_P> = F>"""
         self.forces[point] = _vector(value)
-        self.note_change()
 
     def force_on(self, point: Point) -> Vector:
         """FORCE_P>: the resultant force applied to P so far."""
@@ -515,17 +517,18 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         self.add_torque(b, value)
         self.add_torque(a, -_vector(value))
 
+    @mutation
     def add_torque(self, frame: Frame, value) -> None:
         self.torques[frame] = self.torques.get(frame, Vector()) + _vector(value)
-        self.note_change()
 
+    @mutation
     def set_torque(self, frame: Frame, value) -> None:
         self.torques[frame] = _vector(value)
-        self.note_change()
 
     def torque_on(self, frame: Frame) -> Vector:
         return self.torques.get(frame, Vector())
 
+    @mutation
     def gravity(self, g, *bodies) -> None:
         """GRAVITY(g>[, B, P, ...]): m*g> on the mass center of every body and particle
         (or of those listed)."""
@@ -543,19 +546,19 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
                 raise AutolevModelError(f"GRAVITY acts on bodies and particles, not {b!r}")
 
     # -- constraints -----------------------------------------------------------------
+    @mutation
     def constrain(self, equations, dependent) -> None:
         """CONSTRAIN(DEPENDENT[u...]): solve the motion constraints (= 0) for the listed
         speeds, which are then defined in terms of the others."""
         self.dependent_constraints += self._solve_speeds(equations, dependent, "DEPENDENT")
         self.dependent_speeds.extend(s for s in dependent if s not in self.dependent_speeds)
-        self.note_change()
 
+    @mutation
     def constrain_auxiliary(self, equations, auxiliary) -> None:
         """CONSTRAIN(AUXILIARY[u...]): the listed speeds bring noncontributing forces into
         evidence; they are solved from their constraints (zero in simulation)."""
         self._solve_speeds(equations, auxiliary, "AUXILIARY")
         self.auxiliary_speeds.extend(s for s in auxiliary if s not in self.auxiliary_speeds)
-        self.note_change()
 
     def _solve_speeds(self, equations, speeds, what: str) -> list:
         """Define `speeds` by the constraints `equations` (each = 0), which it returns."""
