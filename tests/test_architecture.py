@@ -92,8 +92,7 @@ def model_reads(text: str) -> list[tuple[int, str]]:
             continue
         args = node.args.posonlyargs + node.args.args + node.args.kwonlyargs
         bound = {a.arg for a in args if a.arg in ("model", "m") or (
-            getattr(a, "annotation", None) is not None
-            and re.search(r"\bModel\b", ast.unparse(a.annotation)))}
+            a.annotation is not None and re.search(r"\bModel\b", ast.unparse(a.annotation)))}
         inner = list(ast.walk(node))
         for sub in inner:
             if isinstance(sub, ast.Assign) and (

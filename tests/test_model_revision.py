@@ -6,6 +6,7 @@ import sympy as sm
 import autolev
 from autolev.engine.errors import AutolevModelError
 import autolev.runtime.model  # noqa: F401  (its modules' mutations, listed at import)
+from autolev.runtime.constraints import SolvedRates
 from autolev.runtime.derived import MUTATIONS
 from helpers import EXAMPLES
 
@@ -83,33 +84,36 @@ def mutations(m):
     def frame():
         return m.frame("F")
     return {
-        "Model.newtonian": lambda: m.newtonian("G"),
-        "Model.frame": frame,
-        "Model.body": body,
-        "Model.point": lambda: m.point("R"),
-        "Model.particle": lambda: m.particle("S"),
+        "Registry.set_newtonian": lambda: m.newtonian("G"),
+        "Registry.add_frame": frame,
+        "Registry.add_body": body,
+        "Registry.add_point": lambda: m.point("R"),
+        "Registry.add_particle": lambda: m.particle("S"),
         "Model._declare": lambda: m.constants("EXTRA"),
         "Model.define": lambda: m.define(m.variables("W"), 2 * q1),
-        "Model.add_force": lambda: m.add_force(p1, l1 * n.x),
-        "Model.set_force": lambda: m.set_force(p1, l1 * n.y),
-        "Model.add_torque": lambda: m.add_torque(a, l1 * n.z),
-        "Model.set_torque": lambda: m.set_torque(a, 2 * l1 * n.z),
-        "Model.gravity": lambda: m.gravity(l1 * n.x),
-        "Model.constrain": lambda: m.constrain([m.quantity("U2") - u1], [m.quantity("U2")]),
-        "Model.constrain_auxiliary": lambda: m.constrain_auxiliary(
+        "Loads.add_force": lambda: m.add_force(p1, l1 * n.x),
+        "Loads.set_force": lambda: m.set_force(p1, l1 * n.y),
+        "Loads.add_torque": lambda: m.add_torque(a, l1 * n.z),
+        "Loads.set_torque": lambda: m.set_torque(a, 2 * l1 * n.z),
+        "Loads.gravity": lambda: m.gravity(l1 * n.x),
+        "Constraints.add_dependent": lambda: m.constrain([m.quantity("U2") - u1],
+                                                         [m.quantity("U2")]),
+        "Constraints.add_auxiliary": lambda: m.constrain_auxiliary(
             [m.motion_variables("UA")], [m.quantity("UA")]),
-        "EquationsMixin.kane": lambda: m.kane(),
-        "AlgebraMixin.solve": lambda: m.solve([m.variables("X") - l1], [m.quantity("X")]),
-        "AlgebraMixin._keep_speeds": lambda: m._keep_speeds([sm.Symbol("U1'")]),
+        "Constraints.add_solved_rates": lambda: m.constraints.add_solved_rates(
+            SolvedRates((), (), ())),
+        "Constraints.keep_speeds": lambda: m._keep_speeds([sm.Symbol("U1'")]),
+        "FormedEquations.take": lambda: m.kane(),
         "AlgebraMixin.zee_not": lambda: m.zee_not([q1]),
         "AlgebraMixin.setting": lambda: m.setting("AUTOZ", "ON"),
         "AlgebraMixin.nicheck": lambda: m.nicheck(),
-        "IOMixin.input": lambda: m.input(l1, 3),
-        "IOMixin.output": lambda: m.output((q1, "Q1", None)),
-        "IOMixin.units": lambda: m.units(l1, "m"),
-        "IOMixin.unit_system": lambda: m.unit_system("kg", "m", "s"),
-        "IOMixin.encode": lambda: m.encode(("X", q1)),
-        "IOMixin.code": lambda: m.code("dynamics", "again.c"),
+        "IOStatements.input": lambda: m.input(l1, 3),
+        "IOStatements.input_unless_given": lambda: m.io.input_unless_given(l1, 3),
+        "IOStatements.output": lambda: m.output((q1, "Q1", None)),
+        "IOStatements.units": lambda: m.units(l1, "m"),
+        "IOStatements.unit_system": lambda: m.unit_system("kg", "m", "s"),
+        "IOStatements.encode": lambda: m.encode(("X", q1)),
+        "IOStatements.code": lambda: m.code("dynamics", "again.c"),
         "Frame.orient_dcm": lambda: frame().orient_dcm(n, sm.eye(3)),
         "Frame.orient_euler_parameters": lambda: frame().orient_euler_parameters(
             n, *m.variables("E1", "E2", "E3", "E4")),
@@ -159,3 +163,14 @@ def test_an_angular_velocity_assigned_later_changes_a_derived_acceleration(model
     a.set_ang_vel(n, 2 * model.quantity("U1") * n.z)
     assert r.acc(n) != early
     assert r.acc(n) == r.vel(n).dt(n)
+
+
+def test_what_the_parts_hold_changes_only_through_their_methods(model):
+    # a read-only mapping, or a copy: no change can skip the revision
+    with pytest.raises(TypeError):
+        model.forces[model.entity("P1")] = model.entity("N").x
+    with pytest.raises(TypeError):
+        model.inputs[model.quantity("L1")] = (2, None)
+    model.particles_list.clear()
+    model.code_commands.clear()
+    assert len(model.particles_list) == 2 and len(model.code_commands) == 1

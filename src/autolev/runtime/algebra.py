@@ -2,27 +2,16 @@
 Model): EVALUATE, COEF, EXCLUDE, INCLUDE, TAYLOR, SOLVE, ZEE, INV, DET, NICHECK."""
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy as sm
 
 from . import symbols as S
 from .functions import scalar_values, whole_number
+from .constraints import SolvedRates
 from .linalg import coefficients, solve_linear
 from ..engine.errors import AutolevModelError
 from .derived import mutation
 from .frame import body_fixed, rodrigues, space_fixed
 from .vectors import Dyadic, Vector
-
-
-@dataclass(frozen=True)
-class SolvedRates:
-    """A SOLVE that defined generalized speeds' derivatives (SOLVE(ZERO, U4', U6')): the
-    derivatives, the equations (each = 0) it solved for them, and their definitions."""
-
-    unknowns: tuple
-    equations: tuple
-    solution: tuple
 
 
 class AlgebraMixin:
@@ -153,7 +142,6 @@ class AlgebraMixin:
             return sm.Add(*total).xreplace(increments)
         return self.map_scalars(value, one)
 
-    @mutation
     def solve(self, equations, unknowns) -> None:
         """SOLVE(E, x, y, ...): solve equations linear in the unknowns; the solutions
         become the definitions (RHS) of the unknowns."""
@@ -181,10 +169,9 @@ class AlgebraMixin:
             self.define(u, v)
         rates = {S.derivative(b) for b in self.solved_speeds}
         if all(u in rates for u in unknowns):
-            self.solved_rates.append(SolvedRates(
+            self.constraints.add_solved_rates(SolvedRates(
                 tuple(unknowns), tuple(eqs), tuple(self.defs.rhs[u] for u in unknowns)))
 
-    @mutation
     def _keep_speeds(self, unknowns) -> None:
         """A generalized speed u stays one when SOLVE defines u' (SOLVE(ZERO, U')), although
         a variable whose derivative is defined is otherwise a coordinate."""
@@ -193,7 +180,7 @@ class AlgebraMixin:
         if not bases or self.newtonian_frame is None:
             return
         speeds = set(self.generalized_speeds(complete=False)[0])
-        self.solved_speeds.update(b for b in bases if b in speeds)
+        self.constraints.keep_speeds(b for b in bases if b in speeds)
 
     def _dynamical_rows(self, eqs: list, unknowns: list) -> list:
         """After KANE(F1, ..., Fk), ZERO holds the n dynamical rows and then the k rows
@@ -267,7 +254,7 @@ class AlgebraMixin:
             work = self.variables(name)
             self._nicheck_work = work
         self.define(S.derivative(work), self.defs.zify(-power))
-        self.inputs.setdefault(work, (sm.S.Zero, None))
+        self.io.input_unless_given(work, sm.S.Zero)
         return self.ke() + work
 
     @mutation

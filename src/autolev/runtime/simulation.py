@@ -100,10 +100,10 @@ class SimulationMixin:
             forcing=lambda: self.forcing, mechanics=self.kane_system)
         return ModelSnapshot(
             command=command, place=place, definitions=self.defs, symbols=dict(self.info),
-            outputs=tuple(self.outputs[:command.n_outputs]),
-            encoded=tuple(self.encoded[:command.n_encoded]), units=dict(self.unit_of),
-            solved_rates=tuple(self.solved_rates), solved_speeds=frozenset(self.solved_speeds),
-            bodies=tuple(self.bodies_list), particles=tuple(self.particles_list),
+            outputs=self.io.outputs[:command.n_outputs],
+            encoded=self.io.encoded[:command.n_encoded], units=dict(self.unit_of),
+            solved_rates=self.constraints.solved_rates, solved_speeds=self.solved_speeds,
+            bodies=self.registry.bodies, particles=self.registry.particles,
             dynamics=dynamics, derived=self.derived, names_a_quantity=self.names_a_quantity,
             systems_changed=self._systems_changed)
 
