@@ -512,12 +512,13 @@ class OursServer:
         import large_models                           # (it puts this checkout's src first)
         from autolev.loader import load_for_run
         from autolev.engine.options import RunOptions
-        from autolev.runtime.numerics.prepare import keep_built, prepare_command
+        from autolev.runtime.numerics.prepare import prepare_command
         start = time.perf_counter()
         model, _ = load_for_run(path)
-        prepared = prepare_command(model, model.plain_dynamics(),
+        command = model.plain_dynamics()
+        prepared = prepare_command(model.snapshot_for(command), command,
                                    RunOptions(missing_values="zero"))
-        keep_built(model)
+        model.keep_built()
         system = prepared.system
         if system.loop is None:
             return {"skip": "its right-hand side is not C: no compiled loop to time"}

@@ -127,7 +127,7 @@ def _run_code(model, out: dict) -> None:
         for command in model.code_commands:
             systems = model.__dict__.setdefault("_numeric_systems", {})
             try:
-                r = run_command(model, command, out_dir=tmp)
+                r = run_command(model.snapshot_for(command), out_dir=tmp)
             except AutolevModelError as exc:
                 when = ("after the build" if any(k[0] == id(command) for k in systems)
                         else "before the build")

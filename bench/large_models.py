@@ -87,7 +87,6 @@ from autolev.loader import load_for_run
 from autolev.engine.errors import AutolevModelError
 from autolev.engine import clibrary
 from autolev.runtime.numerics import codegen
-from autolev.runtime.numerics.prepare import keep_built
 from autolev.engine.options import RunOptions
 from autolev.runtime.numerics.run import run_command
 t1 = time.perf_counter()
@@ -117,8 +116,8 @@ with tempfile.TemporaryDirectory() as out:
     for command in commands:
         start = time.perf_counter()
         try:
-            result = run_command(model, command, out, RunOptions(infile=infile,
-                                                                  missing_values="zero"))
+            result = run_command(model.snapshot_for(command), out,
+                                 RunOptions(infile=infile, missing_values="zero"))
         except AutolevModelError:
             failed += 1
             continue
@@ -129,7 +128,7 @@ with tempfile.TemporaryDirectory() as out:
         run += elapsed
         if first_row is None:
             first_row = t2 - t0 + result.stats.get("build_seconds", 0.0)
-keep_built(model)
+model.keep_built()
 t3 = time.perf_counter()
 print(json.dumps({
     "import": t1 - t0, "load": t2 - t1, "build": build, "run": run - build,
@@ -197,7 +196,8 @@ infile = sys.argv[2] or None
 commands = [c for c in model.code_commands if c.kind in ("dynamics", "ode")] \
     or list(model.code_commands) or [model.plain_dynamics()]
 command = commands[-1]
-prepared = prepare_command(model, command, RunOptions(infile=infile, missing_values="zero"))
+prepared = prepare_command(model.snapshot_for(command), command,
+                           RunOptions(infile=infile, missing_values="zero"))
 system = prepared.system
 values = prepared.inputs
 def by_name(symbols):

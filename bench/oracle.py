@@ -132,7 +132,8 @@ class OurSide:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             model = autolev.load(path)
-            self.system = prepare_command(model, model.code_commands[0]).system
+            self.system = prepare_command(model.snapshot_for(model.code_commands[0]),
+                                          model.code_commands[0]).system
         self.states = [str(s) for s in self.system.states]
         self.outputs = [str(c.expr) for cols in self.system.files for c in cols]
 

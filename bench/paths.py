@@ -557,7 +557,7 @@ def rates(path: Path, options: list, count: int, module: Path | None,
     index, command = next((k, c) for k, c in enumerate(model.code_commands)
                           if c.kind.integrates)
     given = RunOptions(infile=infile, overrides=values or None)
-    prepared = prepare_command(model, command, given)
+    prepared = prepare_command(model.snapshot_for(command), command, given)
     system = prepared.system
     names = [str(s) for s in system.states]
     x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
@@ -585,12 +585,14 @@ def rates(path: Path, options: list, count: int, module: Path | None,
                            + str(exc).splitlines()[0][:150]}
 
     def again(**changes):
-        other = prepare_command(model, command, given.but(**changes)).system
+        other = prepare_command(model.snapshot_for(command), command,
+                                given.but(**changes)).system
         return {"mark": "ok", "states": [str(s) for s in other.states], "rates": of(other)}
 
     def by_mass_matrix():
         found_ = again(recursion=False)
-        other = prepare_command(model, command, given.but(recursion=False)).system
+        other = prepare_command(model.snapshot_for(command), command,
+                                given.but(recursion=False)).system
         conditions = []
         for t, x in points:                  # each solve's rounding: eps * cond(M)
             other.derivatives(t, x)
@@ -611,7 +613,8 @@ def rates(path: Path, options: list, count: int, module: Path | None,
         def from_module():
             from autolev.loader import load_python
             other = load_python(module)
-            prepared_ = prepare_command(other, other.code_commands[index], given)
+            prepared_ = prepare_command(other.snapshot_for(other.code_commands[index]),
+                                        other.code_commands[index], given)
             return {"mark": "ok", "states": [str(s) for s in prepared_.system.states],
                     "rates": of(prepared_.system)}
         taking("module", from_module)

@@ -233,8 +233,7 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
         known = {}
         if overrides:
             from autolev.runtime.numerics.inputs import Inputs
-            probe = Inputs(model, list(model.info), given=command.inputs,
-                           unit_table=command.units)
+            probe = Inputs(model.defs, list(model.info), command.inputs, command.units)
             for k, v in overrides.items():
                 if probe.lookup(k) is not None:
                     known[k] = v
@@ -242,7 +241,7 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
                     notes.append(f"{k} not an input here")
         try:
             # the reference program read these values, zeros of a template included
-            result = run_command(model, command, workdir, RunOptions(
+            result = run_command(model.snapshot_for(command), workdir, RunOptions(
                 method=method, infile=infile, overrides=known, missing_values="zero"))
         except autolev.AutolevError as exc:
             out["status"] = f"run failed: {exc}"
@@ -261,7 +260,7 @@ def run_one(row, models: dict, method: str, keep: Path | None) -> dict:
                      ABSERR=ins.get("ABSERR", 1e-8) * 1e-3)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            fine = run_command(model, command, None, RunOptions(
+            fine = run_command(model.snapshot_for(command), None, RunOptions(
                 method=method, infile=infile, overrides=tight, missing_values="zero"))
         k = min(len(fine.t), len(result.t))      # a failed run: the rows both have
         if k > 1:

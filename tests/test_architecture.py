@@ -1,4 +1,5 @@
 """The package's shape: its import graph (tools/import_graph.py) and its layers."""
+import ast
 import importlib.util
 import re
 import sys
@@ -77,6 +78,50 @@ def test_no_runtime_module_but_the_models_own_imports_it_even_for_types():
         if re.search(r"from \.+model import|runtime\.model|import model\b", text):
             found.append(str(path.relative_to(runtime)))
     assert found == []
+
+
+def model_reads(text: str) -> list[tuple[int, str]]:
+    """(line, expression) of every attribute read on a Model in a module's text: on a
+    parameter named `model` or `m` or annotated `Model`, on a name bound to one
+    (`m = system.model`), and of any `.model` held by another object."""
+    found = set()
+    for node in ast.walk(ast.parse(text)):
+        if isinstance(node, ast.Attribute) and node.attr == "model":
+            found.add((node.lineno, ast.unparse(node)))
+        if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            continue
+        args = node.args.posonlyargs + node.args.args + node.args.kwonlyargs
+        bound = {a.arg for a in args if a.arg in ("model", "m") or (
+            a.annotation is not None and re.search(r"\bModel\b", ast.unparse(a.annotation)))}
+        inner = list(ast.walk(node))
+        for sub in inner:
+            if isinstance(sub, ast.Assign) and (
+                    isinstance(sub.value, ast.Attribute) and sub.value.attr == "model"
+                    or isinstance(sub.value, ast.Name) and sub.value.id in bound):
+                bound |= {t.id for t in sub.targets if isinstance(t, ast.Name)}
+        for sub in inner:
+            if isinstance(sub, ast.Attribute) and isinstance(sub.value, ast.Name) \
+                    and sub.value.id in bound:
+                found.add((sub.lineno, ast.unparse(sub)))
+    return sorted(found)
+
+
+def test_the_model_read_scanner_sees_each_way_of_holding_a_model():
+    text = ("def f(model):\n    return model.defs\n"
+            "def g(system):\n    m = system.model\n    return lambda: m.info\n"
+            "def h(x: 'Model', y: ModelSnapshot):\n    return x.outputs, y.outputs\n")
+    assert model_reads(text) == [(2, "model.defs"), (4, "system.model"), (5, "m.info"),
+                                 (7, "x.outputs")]
+
+
+def test_the_numerics_never_read_a_model_only_its_snapshot():
+    # the numerics take what they need as one ModelSnapshot (Model.snapshot_for): a
+    # change to the Model's attributes cannot reach them unseen
+    numerics = ROOT / "src" / "autolev" / "runtime" / "numerics"
+    found = [f"{path.relative_to(ROOT)}:{line}: {expr}"
+             for path in sorted(numerics.glob("*.py"))
+             for line, expr in model_reads(path.read_text())]
+    assert found == [], "the numerics read the Model:\n" + "\n".join(found)
 
 
 def test_no_field_of_a_model_is_read_with_a_default():

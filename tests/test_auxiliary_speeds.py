@@ -69,7 +69,8 @@ def oracle():
 def test_the_run_integrates_the_motion_the_auxiliary_constraint_allows(oracle):
     # the run held U2 at 0 (Q2' = 0, P left the line); Autolev solved U2 from it
     model = autolev.load(SLING)
-    system = prepare_command(model, model.code_commands[0]).system
+    command = model.code_commands[0]
+    system = prepare_command(model.snapshot_for(command), command).system
     assert [str(x) for x in system.states] == ["Q1", "Q2", "U1"]
     rng = np.random.default_rng(3)
     for x in [np.array([0.4, 2.2, 0.7])] + [rng.uniform([0, 1.8, -1], [0.8, 2.6, 1])

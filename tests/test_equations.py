@@ -295,7 +295,8 @@ def test_the_equations_of_a_model_formed_by_solve_are_its_motion():
     names = ["Q1", "Q2", "U1", "U2"]
     state = symbols(m, *names)
     L1, L2, M1, M2, G = symbols(m, "L1", "L2", "M1", "M2", "G")
-    system = prepare_command(m, m.code_commands[0]).system
+    command = m.code_commands[0]
+    system = prepare_command(m.snapshot_for(command), command).system
     for seed in range(3):
         v = random_values(state, seed)
         consts = {L1: 1, L2: 0.7, M1: 2, M2: 1.5, G: 9.81}

@@ -39,7 +39,7 @@ def test_the_scripts_equations_give_our_rates(scripts, name):
     script = runpy.run_path(str(scripts / f"{name}_sympy.py"))     # defines, integrates not
     model = autolev.load(EXAMPLES / f"{name}.al")
     command = next(c for c in model.code_commands if c.kind.integrates)
-    system = prepare_command(model, command).system
+    system = prepare_command(model.snapshot_for(command), command).system
     states, constants = script["states"], list(script["constants"])
     assert [str(s.func) for s in states] == [str(x).replace("'", "p") for x in system.states]
     assert [str(c) for c in constants] == [str(p) for p in system.params]

@@ -27,7 +27,7 @@ def test_sympys_kanes_method_gives_our_rates(name):
     h = model.to_mechanics()
     assert isinstance(h.kane, me.KanesMethod)
     command = next(c for c in model.code_commands if c.kind.integrates)
-    system = prepare_command(model, command).system
+    system = prepare_command(model.snapshot_for(command), command).system
     time = me.dynamicsymbols._t
     x = [h.states[s] for s in system.states]            # our state order
     sympy_state = h.coordinates + h.speeds + h.dependent

@@ -657,7 +657,8 @@ def test_solves_accelerations_as_accurately_as_the_mass_matrix_allows(tmp_path):
     from autolev.runtime.numerics.prepare import prepare_command
     links = 4
     model = load(tmp_path, _chain(links), "chain.al")
-    system = prepare_command(model, model.code_commands[0]).system
+    command = model.code_commands[0]
+    system = prepare_command(model.snapshot_for(command), command).system
     by_sympy = _chain_by_sympy(links)
     lengths, masses = [1.0] * links, [1e-6, 1e-4, 1e-2, 1.0]
     values = {f"L{i + 1}": v for i, v in enumerate(lengths)}

@@ -110,7 +110,8 @@ def central_differences(system, t, x, h=1e-6):
 def test_jacobians_agree_with_differences_of_the_right_hand_side(name, point):
     model = autolev.load(EXAMPLES / f"{name}.al")
     lin = model.linearize(point)
-    system = prepare_command(model, model.command_to_run(), internal_values=point).system
+    command = model.command_to_run()
+    system = prepare_command(model.snapshot_for(command), command, internal_values=point).system
     x = np.array([lin.point[s] for s in lin.states])
     assert np.allclose(system.derivatives(0.0, x), lin.rates, rtol=1e-13, atol=1e-13)
     assert np.allclose(lin.A, central_differences(system, 0.0, x), rtol=1e-6, atol=1e-7)

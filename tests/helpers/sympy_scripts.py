@@ -129,7 +129,8 @@ def equations_difference(model, command, found: dict) -> float:
                         largest_difference(forcing, np.asarray(our_forcing).ravel()))
         return worst
     # the constants' values are the driver's (set_parameters): none is needed here
-    system = prepare_command(model, command, RunOptions(missing_values="zero")).system
+    system = prepare_command(model.snapshot_for(command), command,
+                             RunOptions(missing_values="zero")).system
     # in the run's order (sympy's dependent speeds after them); named as identifiers (X'
     # as Xp, a name the script uses renamed)
     n = len(system.states)

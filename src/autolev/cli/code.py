@@ -12,7 +12,6 @@ from .common import failed_write, load_model, overwrite_option, statement_label
 def cmd_code(ns: argparse.Namespace) -> int:
     """Write the programs a model's CODE commands name, in Autolev's layout."""
     from ..programs import write_programs
-    from ..runtime.tools import keep_built
 
     path = Path(ns.file)
     model = load_model(path)
@@ -31,7 +30,7 @@ def cmd_code(ns: argparse.Namespace) -> int:
               file=sys.stderr)
         return 1
     finally:
-        keep_built(model)        # loaded as for a run: it goes into the cache now
+        model.keep_built()        # loaded as for a run: it goes into the cache now
     refused = [w for w in done if w.refused]
     label = statement_label(model, path)
     for w in done:

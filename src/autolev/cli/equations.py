@@ -14,7 +14,7 @@ def cmd_equations(ns: argparse.Namespace) -> int:
     from ..runtime.equations_of import equations_of
     from ..runtime.equations_text import latex, plain
     from ..engine.errors import AutolevModelError
-    from ..runtime.tools import keep_built, write_output
+    from ..runtime.tools import write_output
 
     path = Path(ns.file)
     model = load_model(path, sys.stderr)
@@ -32,7 +32,7 @@ def cmd_equations(ns: argparse.Namespace) -> int:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
     finally:
-        keep_built(model)
+        model.keep_built()
     text = plain(eqs) if ns.sympy else latex(eqs)
     if ns.output is None:
         sys.stdout.write(text)

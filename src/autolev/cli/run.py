@@ -267,7 +267,7 @@ def _labels_of(model, commands: list) -> list[str]:
     labels: list[str] = []
     for command in commands:
         try:
-            files = output_columns(model, command)
+            files = output_columns(model.snapshot_for(command), command)
         except AutolevModelError:
             continue                # its run reports the OUTPUT it cannot write
         labels += [c.label for cols in files for c in cols]

@@ -164,18 +164,19 @@ def plan_algebraic(model, command, quirks: bool = True) -> Plan:
     `quirks`: its outputs as Autolev's program computed them (as `autolev run` does)."""
     kind = command.kind
     equations, unknowns = equations_and_unknowns(command.args, kind.upper())
-    files = solution_columns(command, output_columns(model, command), unknowns)
-    encoded = encoded_values(model, command)
+    snapshot = model.snapshot_for(command)
+    files = solution_columns(command, output_columns(snapshot, command), unknowns)
+    encoded = encoded_values(snapshot)
     defs = model.defs
     with defs.as_of(command.definitions):
-        system = NumericSystem(model, files, encoded, integrate=False, solved=unknowns,
+        system = NumericSystem(snapshot, files, encoded, integrate=False, solved=unknowns,
                                extra=solver_expressions(defs, kind, equations, unknowns),
                                hidden_in_outputs=hidden_in_outputs(command) if quirks
                                else (), compile_functions=False)
         extra = system.extra_exprs
-        timed = time_dependence(model, system)
+        timed = time_dependence(system)
         fixed = dict(system.aux_fixed)
-        inputs = read_order(system.params, model) + ([S.TIME] if timed else [])
+        inputs = read_order(system.params, system.symbols) + ([S.TIME] if timed else [])
         given = {"in": inputs, "s": list(system.specified), "u": list(system.solved)}
         prog = codegen.Program(given, system.output_exprs, defs, fixed).build(shared="all")
         solving, solver_named = None, []
@@ -196,9 +197,9 @@ def plan_algebraic(model, command, quirks: bool = True) -> Plan:
     out_files, encoded_plan = _shown(system, prog.outputs)
     read = [s for s in inputs if command.sweep is None or s != command.sweep[0]]
     guesses = list(unknowns) if kind.from_guesses else []
-    values = Inputs(model, read + guesses,
-                    integration=("ABSERR", "RELERR") if guesses else (),
-                    given=command.inputs, unit_table={**model.unit_of, **command.units})
+    values = Inputs(model.defs, read + guesses, command.inputs,
+                    {**model.unit_of, **command.units},
+                    integration=("ABSERR", "RELERR") if guesses else ())
     if timed:
         take_time(command, values, timed)
     values.fill_missing(read + guesses, "0 (no INPUT)")
@@ -278,12 +279,13 @@ def plan_dynamics(model, command, quirks: bool = True) -> DynamicsPlan:
         raise AutolevModelError("CODE DYNAMICS with arguments is not written as a "
                                 "program yet")
     ode = (equations, unknowns) if command.kind is CodeKind.ODE else None
-    files = output_columns(model, command)
-    encoded = encoded_values(model, command)
+    snapshot = model.snapshot_for(command)
+    files = output_columns(snapshot, command)
+    encoded = encoded_values(snapshot)
     defs = model.defs
     filename = program_file_name(command.filename)
     with defs.as_of(command.definitions):
-        system = NumericSystem(model, files, encoded, integrate=True, solving=ode,
+        system = NumericSystem(snapshot, files, encoded, integrate=True, solving=ode,
                                zero=command.zero if command.kind is CodeKind.DYNAMICS else None,
                                hidden_in_outputs=hidden_in_outputs(command) if quirks
                                else (), compile_functions=False)
@@ -313,8 +315,8 @@ def plan_dynamics(model, command, quirks: bool = True) -> DynamicsPlan:
     mass, forcing = rhs[n:n + m * m], rhs[n + m * m:n + m * m + m]
     out_files, encoded_plan = _shown(system, out_prog.outputs)
     constants, states = list(system.params), list(system.states)
-    values = Inputs(model, constants + states, given=command.inputs,
-                    unit_table={**model.unit_of, **command.units})
+    values = Inputs(model.defs, constants + states, command.inputs,
+                    {**model.unit_of, **command.units})
     values.fill_missing(constants + states, "0 (no INPUT)")
     kinds = {**{c: "Constant" for c in constants}, **{x: "Initial Value" for x in states}}
     text = values.file_text(input_file_name(filename), kinds,

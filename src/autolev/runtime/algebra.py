@@ -2,26 +2,16 @@
 Model): EVALUATE, COEF, EXCLUDE, INCLUDE, TAYLOR, SOLVE, ZEE, INV, DET, NICHECK."""
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy as sm
 
 from . import symbols as S
 from .functions import scalar_values, whole_number
+from .constraints import SolvedRates
 from .linalg import coefficients, solve_linear
 from ..engine.errors import AutolevModelError
+from .derived import mutation
 from .frame import body_fixed, rodrigues, space_fixed
 from .vectors import Dyadic, Vector
-
-
-@dataclass(frozen=True)
-class SolvedRates:
-    """A SOLVE that defined generalized speeds' derivatives (SOLVE(ZERO, U4', U6')): the
-    derivatives, the equations (each = 0) it solved for them, and their definitions."""
-
-    unknowns: tuple
-    equations: tuple
-    solution: tuple
 
 
 class AlgebraMixin:
@@ -179,7 +169,7 @@ class AlgebraMixin:
             self.define(u, v)
         rates = {S.derivative(b) for b in self.solved_speeds}
         if all(u in rates for u in unknowns):
-            self.solved_rates.append(SolvedRates(
+            self.constraints.add_solved_rates(SolvedRates(
                 tuple(unknowns), tuple(eqs), tuple(self.defs.rhs[u] for u in unknowns)))
 
     def _keep_speeds(self, unknowns) -> None:
@@ -190,8 +180,7 @@ class AlgebraMixin:
         if not bases or self.newtonian_frame is None:
             return
         speeds = set(self.generalized_speeds(complete=False)[0])
-        self.solved_speeds.update(b for b in bases if b in speeds)
-        self.note_change()
+        self.constraints.keep_speeds(b for b in bases if b in speeds)
 
     def _dynamical_rows(self, eqs: list, unknowns: list) -> list:
         """After KANE(F1, ..., Fk), ZERO holds the n dynamical rows and then the k rows
@@ -223,12 +212,12 @@ class AlgebraMixin:
             return sm.Add(*[self.defs.zify(c) * m for m, c in parts.items()])
         return self.map_scalars(value, one)
 
+    @mutation
     def zee_not(self, names) -> sm.Matrix:
         """ZEE_NOT = [x, y]: names kept visible (never hidden in a Z); its value, what
         Autolev answered and what a later ZEE_NOT reads, is the row of those names."""
         kept = list(names) if not isinstance(names, sm.Basic) else [names]
         self.settings["ZEE_NOT"] = kept
-        self.note_change()
         return sm.Matrix([kept])
 
     def inv(self, m):
@@ -249,6 +238,7 @@ class AlgebraMixin:
             return self.defs.zify(m.det(method="berkowitz"))
         return self.defs.zify(m.det(method="bareiss"))
 
+    @mutation
     def nicheck(self):
         """NICHECK(): kinetic energy minus the work done on the system since TINITIAL
         (the sum over r of the integral of F_r u_r), written as Autolev's programs and
@@ -264,12 +254,12 @@ class AlgebraMixin:
             work = self.variables(name)
             self._nicheck_work = work
         self.define(S.derivative(work), self.defs.zify(-power))
-        self.inputs.setdefault(work, (sm.S.Zero, None))
+        self.io.input_unless_given(work, sm.S.Zero)
         return self.ke() + work
 
+    @mutation
     def setting(self, name: str, value) -> None:
         self.settings[name] = value
-        self.note_change()
         if name == "DEGREES":
             self.degrees = value != "OFF"
         elif name == "COMPLEX":

@@ -673,7 +673,7 @@ def _given_nowhere(model, system, exprs, overrides) -> set:
 
 def _figure_inputs(model, lacking: list, overrides) -> Inputs:
     """The values of the constants only the figure uses: INPUT, then `overrides`."""
-    inputs = Inputs(model, lacking, ())
+    inputs = Inputs(model.defs, lacking, model.inputs, model.unit_of, ())
     for name, value in (overrides or {}).items():
         if inputs.lookup(name) is not None:
             inputs.set(name, value)

@@ -2,6 +2,7 @@
 while it stays valid."""
 from __future__ import annotations
 
+import functools
 from collections.abc import Hashable
 
 
@@ -21,6 +22,35 @@ class Revision:
     @property
     def key(self) -> tuple:
         return (self.count, self.view)
+
+
+def mutation(method):
+    """A method that changes what its owner holds: the owner's `note_change()` (a bump of
+    the model's revision) follows it, even when it fails partway, so no caller has to
+    remember it.  Each is listed in MUTATIONS (tests/test_model_revision.py calls every
+    one)."""
+    @functools.wraps(method)
+    def changing(owner, *args, **kwargs):
+        try:
+            return method(owner, *args, **kwargs)
+        finally:
+            owner.note_change()
+    MUTATIONS.append(changing)
+    return changing
+
+
+MUTATIONS: list = []
+
+
+class Owned:
+    """A part of a model (its registry, loads, constraints, I/O statements): what it
+    holds changes only through its `mutation` methods, each bumping the revision."""
+
+    def __init__(self, revision: Revision) -> None:
+        self.revision = revision
+
+    def note_change(self) -> None:
+        self.revision.bump()
 
 
 class DerivedCache:

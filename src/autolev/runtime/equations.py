@@ -1,8 +1,8 @@
 """Kane's method on a model and the equations it gives (a mixin of Model): the
 generalized speeds, FR(), FRSTAR(), KANE(), PARTIALS, and the equations in the forms
 sympy users know (mass matrix, forcing, explicit form, SymbolicSystem).  kane.py does
-the forming; here the model's state is gathered for it and its answer kept with the
-model's revision."""
+the forming; here the model's state is gathered for it, and its answer kept with the
+model's revision in the model's part FormedEquations."""
 from __future__ import annotations
 
 import sympy as sm
@@ -12,8 +12,38 @@ from . import symbols as S
 from ..engine.errors import AutolevModelError
 from .functions import VectorColumn
 from .interop import symbolic_system
+from .derived import Owned, mutation
 from .kane import KaneEquations
 from .linalg import coefficients, solve_linear
+
+
+class FormedEquations(Owned):
+    """Kane's equations KANE() took (None before it), and the last ones formed, kept for
+    the revision they were formed at (a part of Model)."""
+
+    def __init__(self, revision) -> None:
+        super().__init__(revision)
+        self._taken: KaneEquations | None = None
+        self._formed: tuple | None = None       # (revision key, with inertia, equations)
+
+    @property
+    def taken(self) -> KaneEquations | None:
+        return self._taken
+
+    @mutation
+    def take(self, equations: KaneEquations) -> None:
+        self._taken = equations
+
+    def formed(self, inertia: bool, form) -> KaneEquations:
+        """The equations formed at this revision (with Fr* when `inertia`), `form(inertia)`
+        when none are kept for it."""
+        key = self.revision.key
+        kept = self._formed
+        if kept is not None and kept[0] == key and (kept[1] or not inertia):
+            return kept[2]
+        equations = form(inertia)
+        self._formed = (key, inertia, equations)
+        return equations
 
 
 class EquationsMixin:
@@ -34,14 +64,16 @@ class EquationsMixin:
         return kane.generalized_speeds(self.kane_system(), declared)
 
     def _form(self, inertia: bool = True) -> KaneEquations:
-        key = (self.revision(), inertia)
-        if self._formed is not None and self._formed[0][0] == key[0] and \
-                (self._formed[0][1] or not inertia):
-            return self._formed[1]
+        return self.formed_equations.formed(inertia, self._formed_now)
+
+    def _formed_now(self, inertia: bool) -> KaneEquations:
         speeds = self.generalized_speeds()
-        eqs = kane.form(self.kane_system(), speeds, inertia)
-        self._formed = (key, eqs)
-        return eqs
+        return kane.form(self.kane_system(), speeds, inertia)
+
+    @property
+    def kane_equations(self) -> KaneEquations | None:
+        """The equations KANE() took, None before it."""
+        return self.formed_equations.taken
 
     def speed_column(self, which: str, order: int = 0) -> sm.Matrix:
         """U_INDEPENDENT, U_DEPENDENT, U_AUXILIARY (primed: their derivatives)."""
@@ -77,8 +109,7 @@ class EquationsMixin:
             solution = solve_linear(a, -r, self.defs, "the auxiliary equations (KANE)")
             for sym, val in zip(eqs.unknowns, solution):
                 self.define(sym, val)
-        self.kane_equations = eqs
-        self.note_change()
+        self.formed_equations.take(eqs)
         return eqs
 
     def _formed_for(self, unknowns) -> KaneEquations:

@@ -54,14 +54,15 @@ def equations_of(model, command, values: bool = True, infile=None,
     if not kind.integrates:
         raise AutolevModelError(f"CODE {kind.upper()} {command.filename} has no equations "
                                 "of motion (those of a CODE DYNAMICS or ODE are written)")
-    files = output_columns(model, command)
+    snapshot = model.snapshot_for(command)
+    files = output_columns(snapshot, command)
     solving = equations_and_unknowns(command.args, kind.upper())
-    system = numeric_system(model, command, files, [], solving,
+    system = numeric_system(snapshot, command, files, [], solving,
                             SystemBuild("python", False, (), False))
-    ask = InputsWanted(model, command, safe_stem(command.filename), solving[1], infile,
+    ask = InputsWanted(snapshot, command, safe_stem(command.filename), solving[1], infile,
                        overrides, None, None,
                        missing_values, None)
-    with model.defs.as_of(program_of(model, command).definitions):
+    with model.defs.as_of(program_of(snapshot, command).definitions):
         inputs = take_inputs(ask, system)[0] if values else None
         n = len(system.implicit_unknowns)
         rows, nstate = system.rhs_exprs, system.nstate

@@ -17,7 +17,7 @@ from typing import Callable
 import sympy as sm
 
 from .calculus import Definitions
-from .derived import DerivedCache, Revision
+from .derived import DerivedCache, Revision, mutation
 from ..engine.errors import AutolevModelError
 from .interop import to_sympy_frame
 from .vectors import Vector, _s, _vector
@@ -27,24 +27,24 @@ from .vectors import Vector, _s, _vector
 class Scene:
     """What the frames and points of one model share, instead of the model itself: its
     definitions, its declared symbols (`info`, for sympy's dynamicsymbols), what is
-    derived from it, its points by name (`point`: made on first use), and the notice
-    of a change to its kinematics (`changed(orientation)`), which bumps the model's
-    revision."""
+    derived from it, its points by name (`point`: made on first use), and what an
+    orientation's change drops (`orientation_changed`: the direction cosines derived
+    along paths)."""
 
     defs: Definitions
     info: dict
     derived: DerivedCache
     point: Callable
-    changed: Callable
+    orientation_changed: Callable
     unit_quaternions: list = field(default_factory=list)
 
     @property
     def revision(self) -> Revision:
         return self.derived.revision
 
-    def note_change(self, orientation: bool = False) -> None:
+    def note_change(self) -> None:
+        """What follows each `mutation` of a frame or point: the model's revision."""
         self.revision.bump()
-        self.changed(orientation)
 
 
 # -- rotations: direction cosines and angular velocities of a rotation's angles ---------
@@ -206,6 +206,7 @@ class Frame:
         return self._origin
 
     @origin.setter
+    @mutation
     def origin(self, point) -> None:
         self._origin = point
 
@@ -218,7 +219,11 @@ class Frame:
         """Drop the direction cosines derived along paths (an orientation changed)."""
         self._dcm_cache.clear()
 
+    def note_change(self) -> None:
+        self.scene.note_change()
+
     # -- orientation ------------------------------------------------------------------
+    @mutation
     def orient_dcm(self, parent: "Frame", dcm, ang_vel: Vector | None = None) -> None:
         """Orient self relative to parent with parent.dcm(self) == dcm (Autolev's
         PARENT_SELF = [...]).  The implied angular velocity is ang_vel if given,
@@ -230,7 +235,7 @@ class Frame:
             raise AutolevModelError(f"a direction cosine matrix is 3x3, not {dcm.shape}")
         self._dcm_edges[parent] = dcm.T
         parent._dcm_edges[self] = dcm
-        self.scene.note_change(orientation=True)
+        self.scene.orientation_changed()
         if parent not in self._w_user:
             w = ang_vel if ang_vel is not None else _DerivedAngVel(parent, self)
             self._w_edges[parent] = w
@@ -276,6 +281,7 @@ class Frame:
         dcm, w = rodrigues((g1, g2, g3), self.scene.defs.dt_raw)
         self.orient_dcm(parent, dcm, Vector({self: w}))
 
+    @mutation
     def orient_euler_parameters(self, parent: "Frame", e1, e2, e3, e4) -> None:
         """DIRCOS(parent, self, EULER, e1, e2, e3, e4) with e4 the scalar part."""
         dcm, w = euler_parameters((e1, e2, e3, e4), self.scene.defs.dt_raw)
@@ -334,6 +340,7 @@ class Frame:
         return other is self or self._path(other, lambda f: f._dcm_edges) is not None
 
     # -- angular velocity and acceleration --------------------------------------------
+    @mutation
     def set_ang_vel(self, other: "Frame", value) -> None:
         """W_self_other> = value (overrides what the orientation implies)."""
         value = _vector(value)
@@ -371,6 +378,7 @@ class Frame:
             total = total + a._w_edge(b)
         return total
 
+    @mutation
     def set_ang_acc(self, other: "Frame", value) -> None:
         self._alf_user[other] = _vector(value)
         other._alf_user[self] = -_vector(value)

@@ -1,17 +1,112 @@
-"""INPUT, OUTPUT, UNITS, ENCODE and CODE: what a model records for its numerics
-(a mixin of Model).  Running them is autolev.runtime.simulation's."""
+"""INPUT, OUTPUT, UNITS, ENCODE and CODE: what a model records for its numerics (its
+part IOStatements, and the statements' verbs, a mixin of Model).  Running them is
+autolev.runtime.simulation's."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from types import MappingProxyType
 
 import sympy as sm
 
 from ..engine.code_kinds import INTEGRATION_PARAMETERS, CodeKind
 from ..engine.errors import AutolevModelError
+from .derived import Owned, mutation
 from .functions import degrees_to_radians
 from .units import is_degrees
 
+class IOStatements(Owned):
+    """What INPUT, OUTPUT, UNITS, UNITSYSTEM, ENCODE and CODE recorded, in order (a part of
+    Model, changed only through its methods)."""
+
+    def __init__(self, revision) -> None:
+        super().__init__(revision)
+        self._inputs: dict = {}          # symbol or integration name -> (value, unit)
+        self._outputs: tuple = ()        # one list of (expr, label, unit) per OUTPUT
+        self._units: dict = {}           # UNITS x = unit
+        self._unit_system: tuple = ()
+        self._encoded: tuple = ()        # (name, value) of ENCODE
+        self._commands: tuple = ()       # each CODE's CodeCommand
+
+    @property
+    def inputs(self) -> MappingProxyType:
+        return MappingProxyType(self._inputs)
+
+    @property
+    def outputs(self) -> tuple:
+        return self._outputs
+
+    @property
+    def unit_of(self) -> MappingProxyType:
+        return MappingProxyType(self._units)
+
+    @property
+    def unit_system_names(self) -> tuple:
+        return self._unit_system
+
+    @property
+    def encoded(self) -> tuple:
+        return self._encoded
+
+    @property
+    def code_commands(self) -> tuple:
+        return self._commands
+
+    @mutation
+    def input(self, key, value, unit: str | None) -> None:
+        self._inputs[key] = (value, unit)
+
+    @mutation
+    def input_unless_given(self, key, value) -> None:
+        self._inputs.setdefault(key, (value, None))
+
+    @mutation
+    def output(self, columns: list) -> None:
+        self._outputs += (columns,)
+
+    @mutation
+    def units(self, key, unit: str) -> None:
+        self._units[key] = unit
+
+    @mutation
+    def unit_system(self, names: tuple) -> None:
+        self._unit_system = names
+
+    @mutation
+    def encode(self, items: tuple) -> None:
+        self._encoded += items
+
+    @mutation
+    def code(self, command: CodeCommand) -> None:
+        self._commands += (command,)
+
+
 class IOMixin:
+    """The statements' verbs; what they record is the model's `io` (IOStatements)."""
+
+    @property
+    def inputs(self) -> MappingProxyType:
+        return self.io.inputs
+
+    @property
+    def outputs(self) -> list:
+        return list(self.io.outputs)
+
+    @property
+    def unit_of(self) -> MappingProxyType:
+        return self.io.unit_of
+
+    @property
+    def unit_system_names(self) -> tuple:
+        return self.io.unit_system_names
+
+    @property
+    def encoded(self) -> list:
+        return list(self.io.encoded)
+
+    @property
+    def code_commands(self) -> list:
+        return list(self.io.code_commands)
+
     def input(self, target, value, unit: str | None = None) -> None:
         """INPUT x = value [unit]: a number for the numerics (value may be an expression
         of earlier inputs)."""
@@ -19,13 +114,11 @@ class IOMixin:
             key = target.upper()
             if key not in INTEGRATION_PARAMETERS:
                 raise AutolevModelError(f"INPUT {target}: not a declared name")
-            self.inputs[key] = (sm.sympify(value), unit)
-            self.note_change()
+            self.io.input(key, sm.sympify(value), unit)
             return
         if not isinstance(target, sm.Symbol):
             raise AutolevModelError(f"INPUT gives values to names, not to {target}")
-        self.inputs[target] = (sm.sympify(value), unit)
-        self.note_change()
+        self.io.input(target, sm.sympify(value), unit)
 
     def input_value(self, target):
         """INPUT(x): the value INPUT gave to x."""
@@ -60,22 +153,18 @@ class IOMixin:
             value, label = item[0], item[1]
             unit = item[2] if len(item) > 2 else None
             cols.append((value, label, unit))
-        self.outputs.append(cols)
-        self.note_change()
+        self.io.output(cols)
 
     def units(self, target, unit: str) -> None:
         """UNITS x = unit."""
-        self.unit_of[target if not isinstance(target, str) else target.upper()] = unit
-        self.note_change()
+        self.io.units(target if not isinstance(target, str) else target.upper(), unit)
 
     def unit_system(self, *names: str) -> None:
-        self.unit_system_names = tuple(names)
-        self.note_change()
+        self.io.unit_system(tuple(names))
 
     def encode(self, *items) -> None:
         """ENCODE A, B: quantities the generated program evaluates."""
-        self.encoded.extend(items)
-        self.note_change()
+        self.io.encode(tuple(items))
 
     def code(self, kind: str, filename: str, args=None, sweep=None, options=(),
              zero=None) -> None:
@@ -86,13 +175,12 @@ class IOMixin:
         except ValueError:
             raise AutolevModelError(f"CODE {kind.upper()}: not a kind of program "
                                     "(DYNAMICS, ALGEBRAIC, NONLINEAR or ODE)") from None
-        self.code_commands.append(CodeCommand(
+        self.io.code(CodeCommand(
             typed, filename, list(args or []), sweep, tuple(options),
             n_outputs=len(self.outputs), n_encoded=len(self.encoded),
             inputs=dict(self.inputs), units=dict(self.unit_of),
             zero=None if zero is None else sm.Matrix(zero),
             definitions=self.defs.user_definitions()))
-        self.note_change()
 
 
 @dataclass

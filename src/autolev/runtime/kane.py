@@ -7,7 +7,7 @@ changes a model.
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence, Set
 from dataclasses import dataclass, field
 
 import sympy as sm
@@ -52,8 +52,8 @@ class System:
     newtonian: Frame
     forces: Mapping[Point, Vector]
     torques: Mapping[Frame, Vector]
-    particles: list[Particle]
-    bodies: list[Body]
+    particles: Sequence[Particle]
+    bodies: Sequence[Body]
     defs: Definitions
 
 
@@ -62,9 +62,9 @@ class SpeedDeclarations:
     """What decides which symbols are generalized speeds."""
 
     info: Mapping[sm.Symbol, SymbolInfo]
-    solved: set            # speeds whose derivatives SOLVE defined
-    dependent: list
-    auxiliary: list
+    solved: Set            # speeds whose derivatives SOLVE defined
+    dependent: Sequence
+    auxiliary: Sequence
 
 
 def velocity_sources(system: System, inertia: bool = True, strict: bool = True):

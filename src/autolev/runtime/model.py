@@ -1,16 +1,21 @@
 """The model: everything a translated .al file declares and computes.
 
 Generated code creates one `Model` and calls it statement by statement.  Here is what
-the model declares and holds: the symbol kinds, the definitions table, frames, points
-and bodies, the loads, the constraints; the commands it runs are its mixins': Kane's
-method and its equations (equations.py), mass properties (mass_properties.py), the
-algebra functions (algebra.py), INPUT/OUTPUT/CODE (io.py) and running them
+the model declares: the symbol kinds and the definitions table.  What it holds besides
+is in parts, each changed only through its own methods (each bumping the revision):
+its registry of frames, points, bodies and particles (registry.py), its loads
+(loads.py), its constraints (constraints.py), what INPUT, OUTPUT, UNITS, ENCODE and
+CODE recorded (io.py's IOStatements) and Kane's equations KANE() took or formed last
+(equations.py's FormedEquations).  The commands it runs are its mixins':
+Kane's method and its equations (equations.py), mass properties (mass_properties.py),
+the algebra functions (algebra.py), the I/O statements (io.py) and running them
 (simulation.py).
 """
 from __future__ import annotations
 
 import importlib
 import types
+from types import MappingProxyType
 from dataclasses import dataclass, field, replace
 
 import sympy as sm
@@ -18,16 +23,19 @@ import sympy as sm
 from . import symbols as S
 from .algebra import AlgebraMixin
 from .calculus import Definitions
-from .derived import DerivedCache, Revision
-from .equations import EquationsMixin
+from .constraints import Constraints
+from .derived import DerivedCache, Revision, mutation
+from .equations import EquationsMixin, FormedEquations
 from ..engine.errors import AutolevModelError
 from .frame import Frame, Scene, angular_velocity_in_both, euler_parameter_rates
 from .interop import to_sympy_expr, to_sympy_vector
-from .io import IOMixin
-from .kane import KaneEquations, SymbolInfo
+from .io import IOMixin, IOStatements
+from .kane import SymbolInfo
 from .linalg import coefficients, solve_linear
+from .loads import Loads
 from .mass_properties import MassPropertiesMixin
 from .point import Body, Particle, Point
+from .registry import Registry
 from .simulation import SimulationMixin
 from .vectors import Dyadic, Vector, _vector
 
@@ -59,39 +67,22 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         self.t = S.TIME
         self.degrees = degrees
         self.complex = complex
-        self.newtonian_frame: Frame | None = None
-        self.frames_by_name: dict[str, Frame] = {}
-        self.points_by_name: dict[str, Point] = {}
-        self.bodies_list: list[Body] = []
-        self.particles_list: list[Particle] = []
         self.info: dict[sm.Symbol, SymbolInfo] = {}
-        self.forces: dict[Point, Vector] = {}
-        self.torques: dict[Frame, Vector] = {}
-        self.dependent_speeds: list[sm.Symbol] = []
-        # speeds whose derivatives SOLVE defined: still speeds, not coordinates
-        self.solved_speeds: set[sm.Symbol] = set()
-        # the SOLVEs that defined them, in order (a run solves their equations by LU)
-        self.solved_rates: list = []
-        self.auxiliary_speeds: list[sm.Symbol] = []
-        # the equations (each = 0) CONSTRAIN(DEPENDENT[...]) solved, as given
-        self.dependent_constraints: list = []
-        self.kane_equations: KaneEquations | None = None
-        self._formed: tuple[int, KaneEquations] | None = None
+        # its parts, each bumping the revision when it changes
+        self.registry = Registry(self._revision)
+        self.loads = Loads(self._revision)
+        self.constraints = Constraints(self._revision)
+        self.io = IOStatements(self._revision)
+        self.formed_equations = FormedEquations(self._revision)
         self.settings: dict[str, object] = {}
         self._nicheck_work = None
         # what numerics and interop derive from the model (numeric systems, ...)
         self.derived = DerivedCache(self._revision)
-        self.inputs: dict = {}          # symbol or integration name -> (value, unit)
-        self.outputs: list = []         # one list of (expr, label, unit) per OUTPUT
-        self.unit_of: dict = {}         # UNITS x = unit
-        self.unit_system_names: tuple = ()
-        self.encoded: list = []         # (name, value) of ENCODE
-        self.code_commands: list = []   # (kind, filename, args, sweep, options)
         self._kinematics_pending: dict = {}   # U -> f(q') awaiting inversion
         # what its frames and points share; unit_quaternions: (e1, e2, e3, e4) of
         # DIRCOS(..., EULER, ...)
-        self.scene = Scene(self.defs, self.info, self.derived, self.point, self._changed)
-        self.gravity_vectors: list[Vector] = []  # g> of each GRAVITY statement, in order
+        self.scene = Scene(self.defs, self.info, self.derived, self.point,
+                           self._orientation_changed)
         # the expression D(E, x) last differentiated, and the names it was asked about
         self.d_row: tuple = (None, [])
         self.loaded: Loaded | None = None          # set by the loader, None when built here
@@ -187,13 +178,67 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         return self._named("vector", name.rstrip(">"))
 
     def note_change(self) -> None:
-        """Every change to the model comes here (its frames' and points' through their
-        Scene, its definitions' through its Definitions): it bumps the one revision."""
+        """What follows each of the model's `mutation` methods (its frames' and points'
+        notices come through their Scene, its definitions' through its Definitions): it
+        bumps the one revision."""
         self._revision.bump()
 
     @property
     def unit_quaternions(self) -> list:
         return self.scene.unit_quaternions
+
+    # -- what its parts hold, read (a list is a copy: changing it changes no part) -----
+    @property
+    def newtonian_frame(self) -> Frame | None:
+        return self.registry.newtonian
+
+    @property
+    def frames_by_name(self) -> MappingProxyType:
+        return self.registry.frames
+
+    @property
+    def points_by_name(self) -> MappingProxyType:
+        return self.registry.points
+
+    @property
+    def bodies_list(self) -> list:
+        return list(self.registry.bodies)
+
+    @property
+    def particles_list(self) -> list:
+        return list(self.registry.particles)
+
+    @property
+    def forces(self) -> MappingProxyType:
+        return self.loads.forces
+
+    @property
+    def torques(self) -> MappingProxyType:
+        return self.loads.torques
+
+    @property
+    def gravity_vectors(self) -> list:
+        return list(self.loads.gravity_vectors)
+
+    @property
+    def dependent_speeds(self) -> list:
+        return list(self.constraints.dependent_speeds)
+
+    @property
+    def auxiliary_speeds(self) -> list:
+        return list(self.constraints.auxiliary_speeds)
+
+    @property
+    def dependent_constraints(self) -> list:
+        return list(self.constraints.dependent_constraints)
+
+    @property
+    def solved_speeds(self) -> frozenset:
+        return self.constraints.solved_speeds
+
+    @property
+    def solved_rates(self) -> list:
+        return list(self.constraints.solved_rates)
 
     def revision(self) -> tuple:
         """A value that changes whenever the model is changed (a statement, an INPUT,
@@ -201,21 +246,17 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         known stale; the derived cache is keyed on it."""
         return self._revision.key
 
-    def _changed(self, orientation: bool) -> None:
-        """What a change to the frames and points means for the rest: an orientation
-        changes the direction cosines derived along their paths."""
-        if orientation:
-            for f in self.frames_by_name.values():
-                f.forget_derived()
-            for p in self.points_by_name.values():
-                p.forget_derived()
+    def _orientation_changed(self) -> None:
+        """An orientation changes the direction cosines derived along the frames' paths
+        (kept until then, not per revision: only orientations change them)."""
+        for f in self.frames_by_name.values():
+            f.forget_derived()
 
     # -- declarations ------------------------------------------------------------------
     def newtonian(self, name: str) -> Frame:
         """NEWTONIAN N: the inertial frame and its origin NO (at rest in N)."""
         frame = self.frame(name)
-        self.newtonian_frame = frame
-        self.note_change()
+        self.registry.set_newtonian(frame)
         origin = self.point(name + "O")
         origin.set_vel(frame, Vector())
         origin.set_acc(frame, Vector())
@@ -229,7 +270,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
 
     def frame(self, name: str) -> Frame:
         f = Frame(name, self.scene)
-        self.frames_by_name[name] = f
+        self.registry.add_frame(f)
         return f
 
     def frames(self, *names: str):
@@ -237,10 +278,8 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         return out[0] if len(out) == 1 else out
 
     def body(self, name: str) -> Body:
-        center = self.point(name + "O")
-        b = Body(name, self.scene, center)
-        self.frames_by_name[name] = b
-        self.bodies_list.append(b)
+        b = Body(name, self.scene, self.point(name + "O"))
+        self.registry.add_body(b)
         return b
 
     def bodies(self, *names: str):
@@ -249,7 +288,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
 
     def point(self, name: str) -> Point:
         p = Point(name, self.scene)
-        self.points_by_name[name] = p
+        self.registry.add_point(p)
         return p
 
     def points(self, *names: str):
@@ -258,14 +297,14 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
 
     def particle(self, name: str) -> Particle:
         p = Particle(name, self.scene)
-        self.points_by_name[name] = p
-        self.particles_list.append(p)
+        self.registry.add_particle(p)
         return p
 
     def particles(self, *names: str):
         out = tuple(self.particle(n) for n in _split(names))
         return out[0] if len(out) == 1 else out
 
+    @mutation
     def _declare(self, names, kind: str, order: int = 0, sign: str | None = None):
         out = []
         for n in _split(names):
@@ -281,7 +320,6 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
                         d = S.derivative(sym, k)
                         self.info.setdefault(d, SymbolInfo(kind, order - k, len(self.info)))
             out.append(sym)
-        self.note_change()
         return out[0] if len(out) == 1 else tuple(out)
 
     def constants(self, *names: str, sign: str | None = None):
@@ -304,6 +342,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         return info.kind if info else None
 
     # -- definitions -----------------------------------------------------------------
+    @mutation
     def define(self, sym, value) -> None:
         """X = value for a declared X (or X', X''): a definition, not a substitution."""
         if isinstance(sym, sm.Matrix):
@@ -320,10 +359,8 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
             # the speed; it is solved for the rates once they can all be determined
             self._kinematics_pending[sym] = value
             self._resolve_kinematics()
-            self.note_change()
             return
         self.defs.define(sym, value)
-        self.note_change()
 
     def _rates_in(self, value) -> set:
         """Undefined first derivatives of variables that appear in value."""
@@ -497,17 +534,15 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         self.add_force(a, -_vector(value))
 
     def add_force(self, point: Point, value) -> None:
-        self.forces[point] = self.forces.get(point, Vector()) + _vector(value)
-        self.note_change()
+        self.loads.add_force(point, value)
 
     def set_force(self, point: Point, value) -> None:
         """FORCE_P> = F>"""
-        self.forces[point] = _vector(value)
-        self.note_change()
+        self.loads.set_force(point, value)
 
     def force_on(self, point: Point) -> Vector:
         """FORCE_P>: the resultant force applied to P so far."""
-        return self.forces.get(point, Vector())
+        return self.loads.force_on(point)
 
     def torque(self, frame: Frame, value) -> None:
         """TORQUE(A, T>): add T> to the resultant torque on A."""
@@ -519,46 +554,32 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         self.add_torque(a, -_vector(value))
 
     def add_torque(self, frame: Frame, value) -> None:
-        self.torques[frame] = self.torques.get(frame, Vector()) + _vector(value)
-        self.note_change()
+        self.loads.add_torque(frame, value)
 
     def set_torque(self, frame: Frame, value) -> None:
-        self.torques[frame] = _vector(value)
-        self.note_change()
+        self.loads.set_torque(frame, value)
 
     def torque_on(self, frame: Frame) -> Vector:
-        return self.torques.get(frame, Vector())
+        return self.loads.torque_on(frame)
 
     def gravity(self, g, *bodies) -> None:
         """GRAVITY(g>[, B, P, ...]): m*g> on the mass center of every body and particle
         (or of those listed)."""
-        g = _vector(g)
-        self.gravity_vectors.append(g)
-        targets = list(bodies) if bodies else self.bodies_list + self.particles_list
-        for b in targets:
-            if isinstance(b, Body):
-                self.add_force(b.masscenter, b.mass_checked() * g)
-            elif isinstance(b, Particle):
-                if b.mass is None:
-                    raise AutolevModelError(f"the mass of particle {b.name} is not given")
-                self.add_force(b, b.mass * g)
-            else:
-                raise AutolevModelError(f"GRAVITY acts on bodies and particles, not {b!r}")
+        self.loads.gravity(_vector(g), list(bodies) if bodies
+                           else self.bodies_list + self.particles_list)
 
     # -- constraints -----------------------------------------------------------------
     def constrain(self, equations, dependent) -> None:
         """CONSTRAIN(DEPENDENT[u...]): solve the motion constraints (= 0) for the listed
         speeds, which are then defined in terms of the others."""
-        self.dependent_constraints += self._solve_speeds(equations, dependent, "DEPENDENT")
-        self.dependent_speeds.extend(s for s in dependent if s not in self.dependent_speeds)
-        self.note_change()
+        solved = self._solve_speeds(equations, dependent, "DEPENDENT")
+        self.constraints.add_dependent(solved, dependent)
 
     def constrain_auxiliary(self, equations, auxiliary) -> None:
         """CONSTRAIN(AUXILIARY[u...]): the listed speeds bring noncontributing forces into
         evidence; they are solved from their constraints (zero in simulation)."""
         self._solve_speeds(equations, auxiliary, "AUXILIARY")
-        self.auxiliary_speeds.extend(s for s in auxiliary if s not in self.auxiliary_speeds)
-        self.note_change()
+        self.constraints.add_auxiliary(auxiliary)
 
     def _solve_speeds(self, equations, speeds, what: str) -> list:
         """Define `speeds` by the constraints `equations` (each = 0), which it returns."""

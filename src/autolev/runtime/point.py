@@ -13,6 +13,7 @@ import sympy as sm
 
 from .interop import to_sympy_point
 from ..engine.errors import AutolevModelError
+from .derived import mutation
 from .frame import Frame, Scene
 from .vectors import Dyadic, Vector, _vector, outer
 
@@ -26,13 +27,18 @@ class Point:
         self._pos: dict[Point, Vector] = {}     # other -> self.pos_from(other)
         self._vel: dict[Frame, Vector] = {}
         self._acc: dict[Frame, Vector] = {}
-        self._acc_derived: dict[Frame, Vector] = {}
-        self._vel_derived: dict[Frame, tuple[int, Vector]] = {}
+        # derived when asked, each with the model's revision it was derived at
+        self._acc_derived: dict[Frame, tuple[tuple, Vector]] = {}
+        self._vel_derived: dict[Frame, tuple[tuple, Vector]] = {}
 
     def __repr__(self) -> str:
         return self.name
 
+    def note_change(self) -> None:
+        self.scene.note_change()
+
     # -- position -----------------------------------------------------------------
+    @mutation
     def set_pos(self, other: "Point", value) -> None:
         """P_other_self> = value."""
         if other is self:
@@ -40,7 +46,6 @@ class Point:
         value = _vector(value)
         self._pos[other] = value
         other._pos[self] = -value
-        self.scene.note_change()
 
     def pos_from(self, other: "Point") -> Vector:
         """P_other_self>: the sum of position vectors along the points linking them."""
@@ -76,11 +81,10 @@ class Point:
         return p
 
     # -- velocity and acceleration -----------------------------------------------------
+    @mutation
     def set_vel(self, frame: Frame, value) -> None:
         """V_self_frame> = value."""
         self._vel[frame] = _vector(value)
-        self._acc_derived.pop(frame, None)
-        self.scene.note_change()
 
     def has_vel(self, frame: Frame) -> bool:
         """Whether V_self_frame> is assigned or follows from the positions."""
@@ -125,10 +129,10 @@ class Point:
                     queue.append(q)
         return None
 
+    @mutation
     def set_acc(self, frame: Frame, value) -> None:
         """A_self_frame> = value."""
         self._acc[frame] = _vector(value)
-        self.scene.note_change()
 
     def acc(self, frame: Frame) -> Vector:
         """A_self_frame>: as assigned, else DT(V_self_frame>, frame)."""
@@ -137,17 +141,15 @@ class Point:
         if frame not in self._vel:
             # the velocity itself comes from the positions, as they stand now
             return self.vel(frame).dt(frame)
-        if frame not in self._acc_derived:
-            self._acc_derived[frame] = self.vel(frame).dt(frame)
-        return self._acc_derived[frame]
+        version = self.scene.revision.key
+        cached = self._acc_derived.get(frame)
+        if cached is None or cached[0] != version:
+            cached = self._acc_derived[frame] = (version, self.vel(frame).dt(frame))
+        return cached[1]
 
     def acc_assigned_zero(self, frame: Frame) -> bool:
         """Whether the model assigned A_self_frame> = 0>."""
         return frame in self._acc and not self._acc[frame].terms
-
-    def forget_derived(self) -> None:
-        """Drop the accelerations derived from the velocities (an orientation changed)."""
-        self._acc_derived.clear()
 
     def v2pt_theory(self, other: "Point", outframe: Frame, fixedframe: Frame) -> Vector:
         """V2PTS(outframe, fixedframe, other, self): both points fixed in fixedframe."""
@@ -201,9 +203,9 @@ def _mass_property() -> property:
     def get(self) -> sm.Expr | None:
         return self._mass
 
+    @mutation
     def give(self, value) -> None:
         self._mass = value
-        self.scene.note_change()
     return property(get, give, doc=_mass_property.__doc__)
 
 
@@ -239,6 +241,7 @@ class Body(Frame):
     def frame(self) -> Frame:
         return self
 
+    @mutation
     def set_inertia(self, i11, i22, i33, i12=0, i23=0, i31=0, frame: Frame | None = None,
                     about: Point | None = None) -> None:
         """INERTIA B[_O][(A)], I11, I22, I33[, I12, I23, I31]: the inertia dyadic of the
@@ -251,15 +254,14 @@ class Body(Frame):
             self._inertia, self._inertia_about = dyadic, None
         else:
             self._inertia, self._inertia_about = None, (about, dyadic)
-        self.scene.note_change()
 
+    @mutation
     def set_inertia_dyadic(self, dyadic: Dyadic, about: Point | None = None) -> None:
         """I_B_O>> = dyadic."""
         if about is None or about is self.masscenter:
             self._inertia, self._inertia_about = dyadic, None
         else:
             self._inertia, self._inertia_about = None, (about, dyadic)
-        self.scene.note_change()
 
     @property
     def central_inertia(self) -> Dyadic:

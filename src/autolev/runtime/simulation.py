@@ -12,13 +12,12 @@ from pathlib import Path
 
 from . import studies
 from ..engine.errors import AutolevModelError
-from .io import CodeCommand, CodeKind
+from .io import INTEGRATION_PARAMETERS, CodeCommand, CodeKind
 from ..engine.files import safe_stem
-from .numerics.prepare import keep_built
 from ..engine.results import Result, command_error, run_summary
-from .numerics.command import names_a_quantity
 from ..engine.options import RunOptions
 from .numerics.run import run_command
+from .numerics.snapshot import FormedDynamics, ModelSnapshot
 from ..engine.outputs import write_output
 
 
@@ -76,7 +75,49 @@ class SimulationMixin:
     def names_a_quantity(self, name: str) -> bool:
         """Whether `name` (as --set or an override gives it: Q1, Q1', Q1P, TFINAL, T)
         is an integration parameter or a quantity of the model."""
-        return names_a_quantity(self, name)
+        name = name.strip()
+        if name.upper() in INTEGRATION_PARAMETERS or name.upper() in ("INTEGSTEP", "T"):
+            return True         # T: the time, which a program without time reads
+        primes = len(name) - len(name.upper().rstrip("P"))       # Q1PP is Q1''
+        for candidate in [name] + [name[:-k] + "'" * k for k in range(1, primes + 1)]:
+            try:
+                self.quantity(candidate)
+                return True
+            except KeyError:
+                continue
+        return False
+
+    def snapshot_for(self, command: CodeCommand) -> ModelSnapshot:
+        """What the numerics read of the model for `command` (they never read the model
+        itself): its definitions, symbols, masses, the statements before it, Kane's
+        equations formed when asked, the caches of this revision."""
+        place = next((k for k, c in enumerate(self.code_commands) if c is command), None)
+        if place is None:
+            place = "plain" if command is self.plain_dynamics() else id(command)
+        dynamics = None if self.newtonian_frame is None else FormedDynamics(
+            independent_speeds=lambda: self.generalized_speeds()[0],
+            equations=self.equations, mass_matrix=lambda: self.mass_matrix,
+            forcing=lambda: self.forcing, mechanics=self.kane_system)
+        return ModelSnapshot(
+            command=command, place=place, definitions=self.defs, symbols=dict(self.info),
+            outputs=self.io.outputs[:command.n_outputs],
+            encoded=self.io.encoded[:command.n_encoded], units=dict(self.unit_of),
+            solved_rates=self.constraints.solved_rates, solved_speeds=self.solved_speeds,
+            bodies=self.registry.bodies, particles=self.registry.particles,
+            dynamics=dynamics, derived=self.derived, names_a_quantity=self.names_a_quantity,
+            systems_changed=self._systems_changed)
+
+    def _systems_changed(self) -> None:
+        """A numeric system was built or extended (Jacobians added): the model's entry in
+        the cache of built models is written again once the work is done (keep_built)."""
+        if self.loaded is not None and self.loaded.keeper is not None:
+            self.loaded.keeper.added()
+
+    def keep_built(self) -> None:
+        """The numeric systems built so far go to the cache of built models (the loader's
+        ModelKeeper), once the work that built them is done."""
+        if self.loaded is not None and self.loaded.keeper is not None:
+            self.loaded.keeper.flush(self)
 
     def commands_named(self, code=None) -> list[CodeCommand]:
         """The CODE commands `code` names (see code_command; a list names several, in
@@ -97,7 +138,7 @@ class SimulationMixin:
             for command in commands:
                 start = time.monotonic()
                 try:
-                    result = run_command(self, command, out_dir, options)
+                    result = run_command(self.snapshot_for(command), out_dir, options)
                 except AutolevModelError as exc:
                     if not keep_going:
                         raise
@@ -106,7 +147,7 @@ class SimulationMixin:
                     continue
                 yield CommandRun(command, result, None, time.monotonic() - start)
         finally:
-            keep_built(self)
+            self.keep_built()
 
     def code_command(self, which):
         """A CODE command by its file name (any case, the extension optional: "bike.c",
@@ -143,10 +184,10 @@ class SimulationMixin:
         drift off them otherwise: only the velocity constraints are in the equations).
         Returns a Result (times, states and outputs as numpy arrays)."""
         try:
-            return run_command(self, self.command_to_run(code), out_dir,
+            return run_command(self.snapshot_for(self.command_to_run(code)), out_dir,
                                RunOptions.split(given))
         finally:
-            keep_built(self)
+            self.keep_built()
 
 
     def command_to_run(self, code=None) -> CodeCommand:
@@ -211,8 +252,8 @@ class SimulationMixin:
         the expressions outgrow reading).  See Model.linearize for the rest."""
         # imported here: scipy.linalg costs 0.15 s of every start, and only this needs it
         from .numerics.linearize import MAX_SYMBOLIC_STATES, linearize_symbolic
-        return linearize_symbolic(self, self.command_to_linearize(code), point, inputs,
-                                  locked, max_states or MAX_SYMBOLIC_STATES)
+        return linearize_symbolic(self.snapshot_for(self.command_to_linearize(code)), point,
+                                  inputs, locked, max_states or MAX_SYMBOLIC_STATES)
 
     def sweep(self, points, what: str = "linearize", **options):
         """A parameter study: the model linearized (what="linearize") or simulated
@@ -249,10 +290,10 @@ class SimulationMixin:
                           "in Python, --at NAME=VALUE on the command line",
                           stacklevel=2)
         try:
-            return linearize(self, self.command_to_linearize(code), operating_point,
-                             inputs, backend=backend, infile=infile,
+            return linearize(self.snapshot_for(self.command_to_linearize(code)),
+                             operating_point, inputs, backend=backend, infile=infile,
                              missing_values=missing_values, overrides=overrides,
                              constraints=constraints, dependent=dependent, locked=locked,
                              specified=specified, progress=progress)
         finally:
-            keep_built(self)
+            self.keep_built()

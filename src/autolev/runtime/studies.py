@@ -29,7 +29,6 @@ import numpy as np
 
 from ..engine.errors import AutolevModelError
 from .io import INTEGRATION_PARAMETERS
-from .numerics.command import names_a_quantity
 from ..engine.options import RunOptions
 from .numerics.run import run_command
 
@@ -142,7 +141,7 @@ def _evaluate(model, what: str, point: dict, options: dict, collect) -> dict:
             opts = dict(options)
             command = model.command_to_run(opts.pop("code", None))
             # the rows only when `collect` may want them: memory stays flat otherwise
-            found = run_command(model, command, None, RunOptions(
+            found = run_command(model.snapshot_for(command), None, RunOptions(
                 overrides=point, keep_rows=collect is not None, **opts))
             if found.failure:
                 return {"failure": found.failure, **(collect or _last_row)(found)}
@@ -447,7 +446,7 @@ class Results:
 
 
 def _check_names(model, names: list, what: str) -> None:
-    unknown = sorted(n for n in names if not names_a_quantity(model, n)
+    unknown = sorted(n for n in names if not model.names_a_quantity(n)
                      and not (what == "simulate" and n.upper() in INTEGRATION_PARAMETERS))
     if unknown:
         raise AutolevModelError("points: the model has no quantity named "

@@ -5,8 +5,7 @@ from ..engine.files import safe_stem
 from ..engine.numbers import parse_number
 from ..engine.integrators import METHODS
 from ..engine.options import RunOptions
-from .numerics.prepare import keep_built
 from ..engine.outputs import Written, write_output
 
-__all__ = ["METHODS", "RunOptions", "Written", "keep_built", "parse_number",
-           "program_file_name", "safe_stem", "write_output"]
+__all__ = ["METHODS", "RunOptions", "Written", "parse_number", "program_file_name",
+           "safe_stem", "write_output"]

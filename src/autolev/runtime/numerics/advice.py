@@ -16,28 +16,28 @@ from ...engine.integrate import Integration, IntegrationFailure, failure_basis
 from ...engine.integration_notes import halving_verdict
 
 
-def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
+def inertia_problems(snapshot, system, inputs, zero: bool = True) -> list[str]:
     """Bodies and particles whose mass (or a principal inertia) is negative or not a
     number (and, with `zero`, zero) as the run uses them: a constant its equations do
     not contain (a planar model's I11 or I12) counts as 0 and never had a value chosen
     for it: a mass or inertia holding one is not called zero or singular, and an axis
     whose moment holds one is left out of the principal inertias judged."""
-    m = system.model
     values = {p: inputs.internal(p) for p in system.params}
     # a sweep asks at every point: what depends only on the model is found once, and
     # the answer kept for the last values of the constants the masses and inertias hold
-    kept = m.derived.table("inertia check")
+    kept = snapshot.derived.table("inertia check")
     plan = kept.get(tuple(system.params))
     if plan is None:
-        plan = kept[tuple(system.params)] = _inertia_plan(m, values)
+        plan = kept[tuple(system.params)] = _inertia_plan(snapshot, values)
     masses, partial, judged_axes, unused, held = plan
     key = (tuple(system.params), zero, tuple(values[p] for p in held))
     if kept.get("last", (None,))[0] == key:
         return kept["last"][1]
-    point = NumericPoint(m.defs, {**values, **{f: 0.0 for f in unused}})
+    defs = snapshot.definitions
+    point = NumericPoint(defs, {**values, **{f: 0.0 for f in unused}})
 
     def num(e):
-        z = m.defs.numeric(sm.sympify(e), point)
+        z = defs.numeric(sm.sympify(e), point)
         return z.real if is_real_number(z) else math.nan
 
     out = []
@@ -66,27 +66,28 @@ def inertia_problems(system, inputs, zero: bool = True) -> list[str]:
     return out
 
 
-def _inertia_plan(m, values: dict) -> tuple:
+def _inertia_plan(snapshot, values: dict) -> tuple:
     """(masses with their central inertias, which hold constants the run does not use,
     the axes of each inertia whose moment holds none, those constants, the constants of
     the run they hold) of the model as it stands."""
     unused = set()
+    defs = snapshot.definitions
 
     def primitives(e):
         out = set()
         for f in sm.sympify(e).free_symbols:
-            out |= m.defs.primitive_deps(f) if f in m.defs.rhs else {f}
+            out |= defs.primitive_deps(f) if f in defs.rhs else {f}
         return out
 
     def unused_in(e) -> bool:
         found = {f for f in primitives(e)
-                 if f not in values and f not in m.defs.varying and f != S.TIME}
+                 if f not in values and f not in defs.varying and f != S.TIME}
         unused.update(found)
         return bool(found)
 
-    masses = [(f"particle {p.name}", p.mass, None) for p in m.particles_list
+    masses = [(f"particle {p.name}", p.mass, None) for p in snapshot.particles
               if p.mass is not None]
-    for b in m.bodies_list:
+    for b in snapshot.bodies:
         if b.mass is not None:
             try:
                 inertia = b.central_inertia.to_matrix(b)
@@ -126,13 +127,13 @@ def zero_hint(zero_params) -> str:
     return f" (constants that are 0: {shown})"
 
 
-def failure_message(exc: IntegrationFailure, system, inputs, result, zero_params,
-                     integration: Integration) -> str:
+def failure_message(exc: IntegrationFailure, snapshot, system, inputs, result, zero_params,
+                    integration: Integration) -> str:
     """Autolev's message for a failed integration, with what we can tell of its cause."""
     message = failure_basis(exc, result.state_names) + (
         zero_hint(zero_params) if result.stats["rows"] <= 1 else "")
     if "singular" in str(exc) or (result.stats["rows"] <= 1 and "not finite" in str(exc)):
-        problems = inertia_problems(system, inputs)
+        problems = inertia_problems(snapshot, system, inputs)
         if problems:
             message += "; " + "; ".join(problems)
     huge = [f"{display_name(p)} = {v:g}" for p, v in zip(system.params,

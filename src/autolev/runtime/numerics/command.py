@@ -22,9 +22,9 @@ from ...engine.results import Column
 
 
 # -- building -------------------------------------------------------------------------------
-def output_columns(model, command) -> list[list[Column]]:
+def output_columns(snapshot, command) -> list[list[Column]]:
     files = []
-    for cols in model.outputs[:command.n_outputs]:
+    for cols in snapshot.outputs:
         out = []
         for value, label, unit in cols:
             if not unit:          # UNITS x = unit given before the CODE statement
@@ -46,9 +46,9 @@ def output_columns(model, command) -> list[list[Column]]:
     return files
 
 
-def encoded_values(model, command) -> list:
+def encoded_values(snapshot) -> list:
     out = []
-    for name, value in model.encoded[:command.n_encoded]:
+    for name, value in snapshot.encoded:
         if isinstance(value, Vector):
             raise AutolevModelError(f"ENCODE {name}: a vector; ENCODE its measure numbers")
         if isinstance(value, (list, tuple)):
@@ -97,11 +97,11 @@ def program_file_name(filename: str) -> str:
     return filename.lower() if program_language(filename) in ("f", "for") else filename
 
 
-def time_dependence(model, system) -> list[str]:
+def time_dependence(system) -> list[str]:
     """What an ALGEBRAIC or NONLINEAR program computes that depends on T (OUTPUT columns,
     ENCODE arrays, its equations).  Such a program has no time of its own: it reads T
     from its .in file as it reads its variables (see take_time)."""
-    defs = model.defs
+    defs = system.defs
     named = [(c.label, c.expr) for cols in system.files for c in cols]
     named += list(system.encoded)
     named += [("its equations", e) for v in system.extra_exprs.values() for e in v]
@@ -124,62 +124,63 @@ def take_time(command, inputs, dependent: list[str]) -> None:
                       "reads its variables: T = 0 (give it with --set T=VALUE)", stacklevel=6)
 
 
-def definitions_at(model, command) -> dict:
+def definitions_at(snapshot, command) -> dict:
     """The model's definitions as `command` sees them: those at its CODE line, or the
     model's own for a command made later (a plain run)."""
-    return model.defs.user_definitions() if command.definitions is None \
+    return snapshot.definitions.user_definitions() if command.definitions is None \
         else command.definitions
 
 
-def with_undefined(model, command, symbols: set):
+def with_undefined(snapshot, command, symbols: set):
     """A copy of `command` in which `symbols` have no definition."""
-    return replace(command, definitions={s: e for s, e in definitions_at(model, command).items()
-                                         if s not in symbols})
+    return replace(command, definitions={
+        s: e for s, e in definitions_at(snapshot, command).items() if s not in symbols})
 
 
-def program_of(model, command):
+def program_of(snapshot, command):
     """The command as its numeric system is built: where SOLVE defined the independent
     speeds' derivatives (SOLVE(ZERO, U4', U6', U7')), a copy in which they are undefined,
     their SOLVE's equations being solved at every evaluation instead (`solved_by_lu`).
     Other commands are themselves."""
-    return _solved_numerically(model, command)[0]
+    return _solved_numerically(snapshot, command)[0]
 
 
-def solved_by_lu(model, command) -> tuple | None:
+def solved_by_lu(snapshot, command) -> tuple | None:
     """(equations, unknowns) of the SOLVE that defined the independent speeds'
     derivatives for `command` (a CODE DYNAMICS), which its run solves by LU with
     partial pivoting at every evaluation: SOLVE's accelerations, without the
     cancellations of its closed form, a ratio of determinants (which lost 7 digits at a
     swing bike's state where LU loses 4).  None when the run uses the definitions."""
-    return _solved_numerically(model, command)[1]
+    return _solved_numerically(snapshot, command)[1]
 
 
-def _solved_numerically(model, command) -> tuple:
+def _solved_numerically(snapshot, command) -> tuple:
     """(program_of, solved_by_lu), once per command and revision of the model."""
-    if command.kind is not CodeKind.DYNAMICS or not model.solved_rates \
-            or model.newtonian_frame is None:
+    if command.kind is not CodeKind.DYNAMICS or not snapshot.solved_rates \
+            or snapshot.dynamics is None:
         return command, None
-    kept = model.derived.table("programs solving SOLVE's equations numerically")
+    kept = snapshot.derived.table("programs solving SOLVE's equations numerically")
     entry = kept.get(id(command))
     if entry is not None and entry[0] is command:
         return entry[1]
     found = command, None
-    with model.defs.as_of(command.definitions):
-        rhs = model.defs.rhs
-        in_effect = [r for r in model.solved_rates
+    defs = snapshot.definitions
+    with defs.as_of(command.definitions):
+        rhs = defs.rhs
+        in_effect = [r for r in snapshot.solved_rates
                      if all(rhs.get(u) is v for u, v in zip(r.unknowns, r.solution))]
         if in_effect:
-            wanted = {S.derivative(u) for u in model.generalized_speeds()[0]}
+            wanted = {S.derivative(u) for u in snapshot.dynamics.independent_speeds()}
             solves = [r for r in in_effect if set(r.unknowns) == wanted]
             if solves:
                 solve = solves[-1]
-                found = (with_undefined(model, command, wanted),
+                found = (with_undefined(snapshot, command, wanted),
                          (list(solve.equations), list(solve.unknowns)))
     kept[id(command)] = (command, found)
     return found
 
 
-def given_specified(model, command, specified, overrides):
+def given_specified(snapshot, command, specified, overrides):
     """`command` as if the model had defined, before it, the SPECIFIED quantities it
     leaves undefined and that are given a value -- a number or a sympy expression in
     the model's symbols in `specified`, or a number among the `overrides` (in the
@@ -188,44 +189,45 @@ def given_specified(model, command, specified, overrides):
     overrides that are left."""
     given, functions, rest = {}, {}, {}
     for name, value in (specified or {}).items():
-        sym = find_symbol(model, name)
+        sym = find_symbol(snapshot, name)
         if callable(value) and not isinstance(value, sm.Basic):
             functions[sym] = value
             continue
         given[sym] = sm.sympify(value)
-        if model.defs.depends_on(given[sym], sym):
+        if snapshot.definitions.depends_on(given[sym], sym):
             raise AutolevModelError(f"specified: the value of {display_name(sym)} depends "
                                     f"on {display_name(sym)} itself")
     for name, value in (overrides or {}).items():
-        sym = _undefined_specified(model, name)
+        sym = _undefined_specified(snapshot, name)
         if sym is None:
             rest[name] = value
             continue
         number = _override_number(name, value)
         given[sym] = sm.Float(units.to_internal(number, command.units.get(sym)
-                                                 or model.unit_of.get(sym)))
+                                                 or snapshot.units.get(sym)))
     if not given:
         return command, functions, rest
-    kept = model.derived.table("commands with specified quantities given")
+    kept = snapshot.derived.table("commands with specified quantities given")
     key = (id(command), tuple(sorted((str(k), sm.srepr(v)) for k, v in given.items())))
     entry = kept.get(key)
     if entry is None or entry[0] is not command:
         entry = kept[key] = (command, replace(
-            command, definitions={**definitions_at(model, command), **given}))
+            command, definitions={**definitions_at(snapshot, command), **given}))
     return entry[1], functions, rest
 
 
-def _undefined_specified(model, name: str):
+def _undefined_specified(snapshot, name: str):
     """The SPECIFIED quantity `name` (Q1', Q1P) names when the model leaves it undefined."""
-    if not isinstance(name, str) or not names_a_quantity(model, name) \
+    if not isinstance(name, str) or not snapshot.names_a_quantity(name) \
             or name.strip().upper() in INTEGRATION:
         return None
     try:
-        sym = find_symbol(model, name)
+        sym = find_symbol(snapshot, name)
     except AutolevModelError:
         return None
     base = S.base_and_order(sym)[0]
-    return sym if model.kind_of(base) == "specified" and sym not in model.defs.rhs else None
+    return sym if snapshot.kind_of(base) == "specified" \
+        and sym not in snapshot.definitions.rhs else None
 
 
 def _override_number(name: str, value) -> float:
@@ -276,26 +278,10 @@ def solver_expressions(defs, kind: CodeKind, equations: list, unknowns: list) ->
     return None
 
 
-def names_a_quantity(model, name: str) -> bool:
-    """Whether `name` (as --set or an override gives it: Q1, Q1', Q1P, TFINAL) is an
-    integration parameter or a quantity of the model."""
-    name = name.strip()
-    if name.upper() in INTEGRATION or name.upper() in ("INTEGSTEP", "T"):
-        return True         # T: the time, which a program without time reads
-    primes = len(name) - len(name.upper().rstrip("P"))       # Q1PP is Q1''
-    for candidate in [name] + [name[:-k] + "'" * k for k in range(1, primes + 1)]:
-        try:
-            model.quantity(candidate)
-            return True
-        except KeyError:
-            continue
-    return False
-
-
-def find_symbol(model, name):
+def find_symbol(snapshot, name):
     if isinstance(name, sm.Symbol):
         return name
-    for sym in model.info:
+    for sym in snapshot.symbols:
         if sym.name.upper() == str(name).upper():
             return sym
     raise AutolevModelError(f"specified: no quantity named {name!r}")
@@ -342,6 +328,6 @@ class SweepValues:
     unit: str | None
 
 
-def sweep_values(model, command, inputs) -> SweepValues | None:
+def sweep_values(command, inputs) -> SweepValues | None:
     found = sweep_of(command, inputs)
     return None if found is None else SweepValues(*found)

@@ -67,11 +67,13 @@ def display_name(key) -> str:
 class Inputs:
     """The values of one run, keyed by symbol (or integration parameter name)."""
 
-    def __init__(self, model, names: list, integration=INTEGRATION, given=None,
-                 unit_table=None):
-        self.model = model
-        self.given = model.inputs if given is None else given     # INPUT statements
-        self.unit_table = model.unit_of if unit_table is None else unit_table
+    def __init__(self, defs, names: list, given: dict, unit_table: dict,
+                 integration=INTEGRATION):
+        """`defs`: the definitions an INPUT expression reads; `given`: the INPUT
+        statements' {key: (value, unit)}; `unit_table`: UNITS {key: unit}."""
+        self.defs = defs
+        self.given = given
+        self.unit_table = unit_table
         self.integration = tuple(integration)
         self.names = list(names) + list(self.integration)   # file order
         self.values: dict = {}
@@ -111,7 +113,7 @@ class Inputs:
         # a warm run's set-up; N() rounds other rationals and larger integers its way)
         if expr.is_Float and expr.is_finite or expr.is_Integer and abs(expr) <= 2 ** 53:
             return float(expr)
-        defs = self.model.defs
+        defs = self.defs
         subs = {}
         for f in expr.free_symbols:
             subs[f] = self._symbol_value(f, cache, stack, defs)

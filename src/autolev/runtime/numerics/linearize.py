@@ -38,24 +38,26 @@ from ...engine.linear import Linearization
 from .command import given_specified, program_of, solved_by_lu, with_undefined
 from ...engine.options import RunOptions
 from ..steps import SlowStep
-from .prepare import prepare_command, to_be_kept
+from .prepare import prepare_command
+from .snapshot import ModelSnapshot
 from .compiled import compile_program
 from ...engine.dual import DualJacobian, NotDifferentiable
 from ...engine.evaluation import pivot_ratios
 from .system import NumericSystem
 
 
-def linearize(model, command, operating_point=None, inputs=None, backend: str = "auto",
-              infile=None, missing_values: str = "refuse", overrides=None,
-              constraints=None, dependent=None, locked=None,
+def linearize(snapshot: ModelSnapshot, operating_point=None, inputs=None,
+              backend: str = "auto", infile=None, missing_values: str = "refuse",
+              overrides=None, constraints=None, dependent=None, locked=None,
               specified=None, progress=None) -> Linearization:
-    """The linearization of `command` (a CODE DYNAMICS) at `operating_point`: {name:
-    value} for the model's constants, coordinates, speeds and specified quantities, in
-    SI units and radians.  Names it leaves out take their INPUT (or .in) values;
-    coordinates and speeds without either are 0, specified quantities 0.  `inputs`:
-    the names of the specified quantities that make B's columns (default: all of the
-    program's specified quantities without a definition).  `overrides`: {name: value}
-    in the quantities' own units (as `simulate` takes them), before the point's.
+    """The linearization of the snapshot's command (a CODE DYNAMICS) at
+    `operating_point`: {name: value} for the model's constants, coordinates, speeds and
+    specified quantities, in SI units and radians.  Names it leaves out take their INPUT
+    (or .in) values; coordinates and speeds without either are 0, specified quantities
+    0.  `inputs`: the names of the specified quantities that make B's columns (default:
+    all of the program's specified quantities without a definition).  `overrides`:
+    {name: value} in the quantities' own units (as `simulate` takes them), before the
+    point's.
     `constraints`: configuration constraints g (sympy expressions in the model's
     symbols, g = 0 on the motion); `dependent`: the names of the coordinates they fix
     (default: chosen where G is best conditioned).  `locked`: names of coordinates held
@@ -63,8 +65,8 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     equations dropped); the state leaves them out.  `specified`: {name: number or sympy
     expression} defining specified quantities (see run.given_specified); they are then
     no inputs.  `progress`: a stream told of steps past two seconds."""
-    command, held = _program_to_linearize(model, command, locked)
-    command, functions, overrides = given_specified(model, command, specified, overrides)
+    command, held = _program_to_linearize(snapshot, snapshot.command, locked)
+    command, functions, overrides = given_specified(snapshot, command, specified, overrides)
     if functions:
         raise AutolevModelError("specified: a linearization takes values or expressions "
                                 "for specified quantities, not Python functions: "
@@ -72,14 +74,14 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     point = dict(operating_point or {})
     for q in held:                # a locked coordinate without a value is held at 0
         if q not in command.inputs and not any(
-                _symbol_named(model, name) == q for name in point):
+                _symbol_named(snapshot, name) == q for name in point):
             point[display_name(q)] = 0.0
     specified_values = {}
     for name in list(point):
-        sym = _symbol_named(model, name)
-        if sym is not None and model.kind_of(sym) == "specified":
+        sym = _symbol_named(snapshot, name)
+        if sym is not None and snapshot.kind_of(sym) == "specified":
             specified_values[sym] = float(point.pop(name))
-    prepared = prepare_command(model, command, RunOptions(
+    prepared = prepare_command(snapshot, command, RunOptions(
         backend=backend, infile=infile, overrides=overrides, constraints=constraints,
         missing_values=missing_values, progress=progress), internal_values=point,
         warn_unassigned=False, locked=held, compile_functions=False)
@@ -91,7 +93,7 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
     if unused:
         raise AutolevModelError("these specified quantities are not inputs of "
                                 f"{command.filename}: {', '.join(unused)}")
-    chosen = _chosen_inputs(model, system, inputs)
+    chosen = _chosen_inputs(snapshot, system, inputs)
     n_columns = sum(len(cols) for cols in system.files)
     key = (tuple(display_name(s) for s in chosen), n_columns, backend)
     jacobians = system.jacobians.get(key)
@@ -103,11 +105,12 @@ def linearize(model, command, operating_point=None, inputs=None, backend: str = 
                               f"{jacobians.evaluations} points so far)")
 
     def formed(tier: str, step: str) -> _Jacobians:
-        with model.defs.as_of(program_of(model, command).definitions), SlowStep(
+        program = program_of(snapshot, command)
+        with snapshot.definitions.as_of(program.definitions), SlowStep(
                 progress, f"CODE DYNAMICS {command.filename}: {step}"):
             made = system.jacobians[key] = _jacobian_functions(system, chosen, n_columns,
                                                                tier)
-        to_be_kept(model)
+        snapshot.systems_changed()
         return made
     if tier is not None:
         jacobians = formed(tier, step)
@@ -158,29 +161,30 @@ class SymbolicLinearization:
 MAX_SYMBOLIC_STATES = 12
 
 
-def linearize_symbolic(model, command, point=None, inputs=None, locked=None,
+def linearize_symbolic(snapshot: ModelSnapshot, point=None, inputs=None, locked=None,
                        max_states: int = MAX_SYMBOLIC_STATES) -> SymbolicLinearization:
-    """A and B of `command`'s equations of motion as expressions: every definition and
-    Z expanded, Kane's accelerations solved by sympy's LU (for small models: more than
-    `max_states` states is refused).  `point`: {name: value} substituted (SI units and
-    radians); the rest stay symbols.  Dependent coordinates stay in the state."""
-    command, held = _program_to_linearize(model, command, locked)
+    """A and B of the snapshot's command's equations of motion as expressions: every
+    definition and Z expanded, Kane's accelerations solved by sympy's LU (for small
+    models: more than `max_states` states is refused).  `point`: {name: value}
+    substituted (SI units and radians); the rest stay symbols.  Dependent coordinates
+    stay in the state."""
+    command, held = _program_to_linearize(snapshot, snapshot.command, locked)
     values = {}
     for name, value in (point or {}).items():
-        sym = _symbol_named(model, name)
+        sym = _symbol_named(snapshot, name)
         if sym is None:
             raise AutolevModelError(f"point: the model has no quantity named {name!r}")
         values[sym] = sm.nsimplify(value) if isinstance(value, int) else value
-    program = program_of(model, command)
-    with model.defs.as_of(program.definitions):
-        system = NumericSystem(model, backend="python", zero=command.zero, locked=held,
-                               solving=solved_by_lu(model, command))
+    program = program_of(snapshot, command)
+    with snapshot.definitions.as_of(program.definitions):
+        system = NumericSystem(snapshot, backend="python", zero=command.zero, locked=held,
+                               solving=solved_by_lu(snapshot, command))
         if system.nstate > max_states:
             raise AutolevModelError(
                 f"{system.nstate} states: symbolic A and B are for models of at most "
                 f"{max_states} states (Model.linearize gives them as numbers at a point)")
-        chosen = _chosen_inputs(model, system, inputs)
-        explicit = model.defs.explicit
+        chosen = _chosen_inputs(snapshot, system, inputs)
+        explicit = snapshot.definitions.explicit
         nx, n = system.nstate, len(system.implicit_unknowns)
         rates = [explicit(e) for e in system.rhs_exprs[:nx]]
         if n:
@@ -249,21 +253,22 @@ class _ConfigurationConstraints:
         lin.dependent = [self.names[k] for k in dep]
 
 
-def _program_to_linearize(model, command, locked) -> tuple:
+def _program_to_linearize(snapshot, command, locked) -> tuple:
     """(the command whose equations are linearized, the locked coordinates): a CODE
     DYNAMICS, solving Kane's equations where coordinates are locked."""
     if command.kind is not CodeKind.DYNAMICS:
         raise AutolevModelError(f"CODE {command.kind.upper()} {command.filename}: only a "
                                 "CODE DYNAMICS program has equations of motion to linearize")
-    held = _locked_coordinates(model, locked or ())
-    return (_with_kanes_equations(model, program_of(model, command)) if held else command), held
+    held = _locked_coordinates(snapshot, locked or ())
+    return (_with_kanes_equations(snapshot, program_of(snapshot, command)) if held
+            else command), held
 
 
-def _locked_coordinates(model, names) -> list:
+def _locked_coordinates(snapshot, names) -> list:
     held = []
     for name in names:
-        sym = _symbol_named(model, name)
-        if sym is None or model.kind_of(sym) not in ("variable", "motionvariable") \
+        sym = _symbol_named(snapshot, name)
+        if sym is None or snapshot.kind_of(sym) not in ("variable", "motionvariable") \
                 or S.base_and_order(sym)[1] != 0:
             raise AutolevModelError(f"locked: {name!r} is not a coordinate of the model")
         if sym not in held:
@@ -271,33 +276,34 @@ def _locked_coordinates(model, names) -> list:
     return held
 
 
-def _with_kanes_equations(model, command):
+def _with_kanes_equations(snapshot, command):
     """`command` with the speeds' derivatives undefined again where SOLVE(ZERO, U')
     defined them, so the program solves Kane's equations (which locking can cut down);
     one object per command, so its numeric system is built once."""
-    kept = model.derived.table("commands solving Kane's equations")
+    kept = snapshot.derived.table("commands solving Kane's equations")
     entry = kept.get(id(command))
     if entry is not None and entry[0] is command:
         return entry[1]
-    unsolved = with_undefined(model, command, {S.derivative(u) for u in model.solved_speeds})
+    unsolved = with_undefined(snapshot, command,
+                              {S.derivative(u) for u in snapshot.solved_speeds})
     kept[id(command)] = (command, unsolved)
     return unsolved
 
 
-def _symbol_named(model, name: str):
+def _symbol_named(snapshot, name: str):
     wanted = str(name).strip().upper().replace("'", "P")
-    for sym in model.info:
+    for sym in snapshot.symbols:
         if display_name(sym).upper().replace("'", "P") == wanted:
             return sym
     return None
 
 
-def _chosen_inputs(model, system, names) -> list:
+def _chosen_inputs(snapshot, system, names) -> list:
     if names is None:
         return list(system.specified)
     chosen = []
     for name in names:
-        sym = _symbol_named(model, name)
+        sym = _symbol_named(snapshot, name)
         if sym is None or sym not in system.specified:
             known = ", ".join(display_name(s) for s in system.specified) or "none"
             raise AutolevModelError(f"{name!r} is not a specified quantity this program "
@@ -347,7 +353,7 @@ def _jacobian_functions(system, chosen: list, n_columns: int, backend: str) -> _
     """The right-hand side (rates, M, F) and its Jacobian in the state and the chosen
     inputs; the Jacobian of the OUTPUT columns in the state, the chosen inputs and the
     accelerations: on dual numbers (backend "dual"), else compiled."""
-    defs = system.model.defs
+    defs = system.defs
     variables = list(system.states) + chosen
     rhs = list(system.rhs_exprs)
     c_syms = system.params + system.constant_defs

@@ -16,12 +16,13 @@ from ..io import CodeKind
 from ..steps import SlowStep
 from .advice import inertia_problems
 from .command import (encoded_values, equations_and_unknowns, find_symbol, given_specified,
-                      hidden_in_outputs, hidden_note, names_a_quantity, output_columns,
-                      program_file_name, program_of, solution_columns, solved_by_lu,
-                      solver_expressions, sweep_values, take_time, time_dependence)
+                      hidden_in_outputs, hidden_note, output_columns, program_file_name,
+                      program_of, solution_columns, solved_by_lu, solver_expressions,
+                      sweep_values, take_time, time_dependence)
 from ...engine.files import safe_stem
 from .inputs import INTEGRATION, Inputs, display_name, some_names
 from .projection import constants_needed
+from .snapshot import ModelSnapshot
 from ...engine.options import RunOptions
 from ...engine.outputs import Written
 from .system import NumericSystem
@@ -47,7 +48,7 @@ class Prepared:
 class InputsWanted:
     """What prepare_command was given for the run's inputs."""
 
-    model: object
+    snapshot: ModelSnapshot
     command: object
     stem: str
     unknowns: list
@@ -72,7 +73,7 @@ def take_inputs(ask: InputsWanted, system):
     constants = list(system.params) + extra_constants
     kinds = {p: "Constant" for p in constants}
     names = list(constants)
-    timed = [] if ask.integrate_states else time_dependence(ask.model, system)
+    timed = [] if ask.integrate_states else time_dependence(system)
     if timed:
         names.append(S.TIME)
         kinds[S.TIME] = "Constant"
@@ -86,19 +87,19 @@ def take_inputs(ask: InputsWanted, system):
         integration = ("ABSERR", "RELERR")
     else:
         integration = ()
-    inputs = Inputs(ask.model, names, integration, given=ask.command.inputs,
-                    unit_table=ask.command.units)
+    inputs = Inputs(ask.snapshot.definitions, names, ask.command.inputs, ask.command.units,
+                    integration)
     notes = []
     if ask.infile is not None:
         notes += inputs.read_file_over_model(ask.infile, constants)
     elsewhere = []                    # the model's, but not inputs of this command
     for name, value in (ask.overrides or {}).items():
-        if inputs.lookup(name) is None and names_a_quantity(ask.model, name):
+        if inputs.lookup(name) is None and ask.snapshot.names_a_quantity(name):
             elsewhere.append(name)
             continue
         inputs.set(name, value)
     for name, value in (ask.internal_values or {}).items():
-        if inputs.lookup(name) is None and names_a_quantity(ask.model, name):
+        if inputs.lookup(name) is None and ask.snapshot.names_a_quantity(name):
             elsewhere.append(name)
             continue
         inputs.set_internal(name, value)
@@ -114,7 +115,7 @@ def take_inputs(ask: InputsWanted, system):
         inputs.set_internal(display_name(swept), 0.0, "the sweep")
     missing = inputs.missing(constants)
     if missing and ask.missing_values == "refuse":
-        raise MissingValues(missing_message(ask.model, missing, inputs, kinds, ask.out_dir,
+        raise MissingValues(missing_message(ask.snapshot, missing, inputs, kinds, ask.out_dir,
                                              ask.stem, ask.command.filename),
                             [display_name(k) for k in missing])
     inputs.fill_missing(constants)
@@ -127,14 +128,15 @@ def take_inputs(ask: InputsWanted, system):
     inputs.check_finite()
     degree_rates_note(inputs, names)
     if ask.integrate_states:       # before the build: it needs only the inputs
-        bad = inertia_problems(system, inputs, zero=False)
+        bad = inertia_problems(ask.snapshot, system, inputs, zero=False)
         if bad:
             raise AutolevModelError("masses and inertias must be finite and not negative: "
                                     + "; ".join(bad))
     return inputs, kinds, names, extra_constants
 
 
-def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=None,
+def prepare_command(snapshot: ModelSnapshot, command, options: RunOptions = RunOptions(),
+                    out_dir=None,
                     internal_values=None, warn_unassigned: bool = True,
                     locked=(), starts_now: bool = False,
                     compile_functions: bool = True) -> Prepared:
@@ -147,24 +149,24 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
     Python follows: the right-hand side's C compiles in the background.
     `compile_functions=False`: the constants' function alone (a linearization
     evaluates its own Jacobians)."""
-    command, specified, overrides = given_specified(model, command, options.specified,
+    command, specified, overrides = given_specified(snapshot, command, options.specified,
                                                     options.overrides)
     kind = command.kind
     stem = safe_stem(program_file_name(command.filename))
-    files = output_columns(model, command)
-    encoded = encoded_values(model, command)
+    files = output_columns(snapshot, command)
+    encoded = encoded_values(snapshot)
     equations, unknowns = equations_and_unknowns(command.args, kind.upper())
     files = solution_columns(command, files, unknowns)
-    ask = InputsWanted(model, command, stem, unknowns, options.infile, overrides,
+    ask = InputsWanted(snapshot, command, stem, unknowns, options.infile, overrides,
                        internal_values, options.constraints, options.missing_values, out_dir)
     build_start = time.perf_counter()
     what = f"CODE {kind.upper()} {command.filename}"
     build = SystemBuild.of(options, locked)
     with SlowStep(options.progress, f"{what}: forming its equations"):
-        system = numeric_system(model, command, files, encoded, (equations, unknowns),
+        system = numeric_system(snapshot, command, files, encoded, (equations, unknowns),
                                 build)
     fresh = not system.compiled and (compile_functions or system.constants_function is None)
-    with model.defs.as_of(program_of(model, command).definitions):
+    with snapshot.definitions.as_of(program_of(snapshot, command).definitions):
         inputs, kinds, names, extra_constants = take_inputs(ask, system)
         if fresh and compile_functions:     # inputs first: a refusal costs no compilation
             with SlowStep(options.progress, f"{what}: generating and compiling its code"):
@@ -172,12 +174,12 @@ def prepare_command(model, command, options: RunOptions = RunOptions(), out_dir=
         elif fresh:
             system.compile_constants()
     if fresh:                        # kept at the model's own revision, not as_of's view
-        keep_system(model, command, build, system)
+        keep_system(snapshot, command, build, system)
     build_seconds = time.perf_counter() - build_start
     if system.hidden_in_outputs:
         warnings.warn(hidden_note(command.filename, system.hidden_in_outputs), stacklevel=3)
-    set_specified(model, system, specified, warn_unassigned)
-    sweep = sweep_values(model, command, inputs)
+    set_specified(snapshot, system, specified, warn_unassigned)
+    sweep = sweep_values(command, inputs)
     system.set_parameters(inputs.vector(system.params))
     return Prepared(system, inputs, kinds, stem, files, encoded, unknowns, sweep,
                     extra_constants, build_seconds)
@@ -199,7 +201,7 @@ class SystemBuild:
         return cls(options.backend, options.quirks, tuple(locked), options.recursion)
 
 
-def numeric_system(model, command, files, encoded, solving: tuple,
+def numeric_system(snapshot: ModelSnapshot, command, files, encoded, solving: tuple,
                    build: SystemBuild) -> NumericSystem:
     """The command's numeric system, compiled, as kept for this revision of the model
     (repeated simulate() calls with other inputs reuse its compiled functions); else
@@ -207,58 +209,45 @@ def numeric_system(model, command, files, encoded, solving: tuple,
     kind = command.kind
     equations, unknowns = solving
     # the command itself is kept with its system: an id() alone may be reused
-    entry = model.derived.table("numeric systems").get(_system_key(model, command, build))
+    entry = snapshot.derived.table("numeric systems").get(
+        _system_key(snapshot, command, build))
     if entry is not None and entry[0] is command:
         return entry[1]
-    program = program_of(model, command)
-    with model.defs.as_of(program.definitions):
+    program = program_of(snapshot, command)
+    defs = snapshot.definitions
+    with defs.as_of(program.definitions):
         return NumericSystem(
-            model, files, encoded, backend=build.backend, integrate=kind.integrates,
+            snapshot, files, encoded, backend=build.backend, integrate=kind.integrates,
             solving=((equations, unknowns) if kind is CodeKind.ODE
-                     else solved_by_lu(model, command)),
+                     else solved_by_lu(snapshot, command)),
             solved=unknowns if kind.solves else (),
-            extra=solver_expressions(model.defs, kind, equations, unknowns),
+            extra=solver_expressions(defs, kind, equations, unknowns),
             zero=command.zero if kind is CodeKind.DYNAMICS else None,
             hidden_in_outputs=hidden_in_outputs(command) if build.quirks else (),
             locked=build.locked, compile_functions=False, recursive=build.recursion)
 
 
-def _system_key(model, command, build: SystemBuild) -> tuple:
+def _system_key(snapshot: ModelSnapshot, command, build: SystemBuild) -> tuple:
     # by the command's place in the model (which a model read back from the cache keeps)
-    place = next((k for k, c in enumerate(model.code_commands) if c is command),
-                 "plain" if command is model.plain_dynamics() else id(command))
+    place = snapshot.place if command is snapshot.command else id(command)
     return place, build
 
 
-def keep_system(model, command, build: SystemBuild, system) -> None:
+def keep_system(snapshot: ModelSnapshot, command, build: SystemBuild, system) -> None:
     """A compiled system kept for this revision of the model (after its build, which
-    may have formed KANE), and for the cache of built models (keep_built)."""
-    model.derived.table("numeric systems")[_system_key(model, command, build)] = \
+    may have formed KANE), and for the cache of built models (Model.keep_built)."""
+    snapshot.derived.table("numeric systems")[_system_key(snapshot, command, build)] = \
         (command, system)
-    to_be_kept(model)
+    snapshot.systems_changed()
 
 
-def to_be_kept(model) -> None:
-    """The model's numeric systems changed (one built, Jacobians added): its entry in
-    the cache of built models is written again once the work is done (keep_built)."""
-    if model.loaded is not None and model.loaded.keeper is not None:
-        model.loaded.keeper.added()
-
-
-def keep_built(model) -> None:
-    """The numeric systems built so far go to the cache of built models (loader's
-    ModelKeeper), once the work that built them is done."""
-    if model.loaded is not None and model.loaded.keeper is not None:
-        model.loaded.keeper.flush(model)
-
-
-def set_specified(model, system, specified, warn_unassigned: bool) -> None:
+def set_specified(snapshot: ModelSnapshot, system, specified, warn_unassigned: bool) -> None:
     """Give the system the user's functions of the specified quantities."""
-    functions = {find_symbol(model, k): v for k, v in (specified or {}).items()}
+    functions = {find_symbol(snapshot, k): v for k, v in (specified or {}).items()}
     unused = [sym for sym in functions if sym not in system.set_specified(functions)]
     if unused:
         raise AutolevModelError("specified: " + "; ".join(
-            unused_specified(model, system, sym) for sym in unused))
+            unused_specified(system, sym) for sym in unused))
     given_fns = {i for i, _ in system.specified_functions}
     unassigned = [s for i, s in enumerate(system.specified) if i not in given_fns]
     if unassigned and warn_unassigned:
@@ -266,12 +255,12 @@ def set_specified(model, system, specified, warn_unassigned: bool) -> None:
                       + ", ".join(map(str, unassigned)), stacklevel=4)
 
 
-def missing_message(model, missing, inputs, kinds, out_dir, stem: str,
+def missing_message(snapshot: ModelSnapshot, missing, inputs, kinds, out_dir, stem: str,
                      program: str) -> str:
     """What is missing, how to give it, and where a template to fill in was written
     (the run's output folder; an existing file is never replaced)."""
     # CODE ALGEBRAIC takes variables as inputs too
-    what = ("constant" if all(model.kind_of(S.base_and_order(k)[0]) == "constant"
+    what = ("constant" if all(snapshot.kind_of(S.base_and_order(k)[0]) == "constant"
                               for k in missing) else "input")
     text = (f"{len(missing)} {what}{'s' if len(missing) > 1 else ''} of {program} "
             f"{'have' if len(missing) > 1 else 'has'} no value: "
@@ -302,10 +291,10 @@ def missing_message(model, missing, inputs, kinds, out_dir, stem: str,
     return text
 
 
-def unused_specified(model, system, sym) -> str:
+def unused_specified(system, sym) -> str:
     """Why a function given for `sym` would drive nothing."""
-    if model.defs.rhs.get(sym) is not None:
-        shown = str(model.defs.rhs[sym])
+    if system.defs.rhs.get(sym) is not None:
+        shown = str(system.defs.rhs[sym])
         shown = shown if len(shown) <= 60 else shown[:57] + "..."
         return (f"{sym} is defined in the model ({sym} = {shown}), so a "
                 "function for it would be ignored; functions drive only SPECIFIED "

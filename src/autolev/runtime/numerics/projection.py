@@ -26,13 +26,12 @@ class Projector:
     def __init__(self, system, constraints, t0: float, x0, extra_values=(),
                  max_iter: int = 10):
         """`extra_values`: values of `constants_needed(system, constraints)`."""
-        m = system.model
         exprs = _expressions(constraints)
         for e in exprs:
             if not isinstance(e, sm.Expr):
                 raise AutolevModelError(f"a constraint must be a scalar expression: {e}")
         states = list(system.states)
-        jac = m.defs.jacobian(exprs, states)
+        jac = system.defs.jacobian(exprs, states)
         if all(d == 0 for row in jac for d in row):
             raise AutolevModelError("the constraints do not depend on the state")
         inputs = {"t": [S.TIME],
@@ -40,7 +39,7 @@ class Projector:
                   "c": system.params + system.constant_defs
                   + constants_needed(system, exprs),
                   "s": system.specified}
-        prog = codegen.Program(inputs, exprs + [d for row in jac for d in row], m.defs,
+        prog = codegen.Program(inputs, exprs + [d for row in jac for d in row], system.defs,
                                dict(system.aux_fixed)).build()
         self.function = compile_program(prog, system.backend, "autolev_constraints")
         self.system = system

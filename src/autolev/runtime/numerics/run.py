@@ -23,13 +23,16 @@ from .advice import failure_message, zero_hint
 from .command import program_file_name, program_language
 from .inputs import display_name
 from .prepare import prepare_command
+from .snapshot import ModelSnapshot
 
 
-def run_command(model, command, out_dir=None,
+def run_command(snapshot: ModelSnapshot, out_dir=None,
                 options: RunOptions = RunOptions()) -> Result:
-    """Run one CODE command with `options` (see RunOptions); its files go to out_dir
-    (None: no files), written as one set: a file there that autolev did not write
-    stops the run before it computes anything, unless `options.overwrite`."""
+    """Run the CODE command of `snapshot` (Model.snapshot_for) with `options` (see
+    RunOptions); its files go to out_dir (None: no files), written as one set: a file
+    there that autolev did not write stops the run before it computes anything, unless
+    `options.overwrite`."""
+    command = snapshot.command
     kind = command.kind
     language = program_language(command.filename)
     integrator = _integrator(options.method, language) if kind.integrates else None
@@ -37,13 +40,14 @@ def run_command(model, command, out_dir=None,
     # waits for the compiled loop (run_dynamics) nor a projection onto constraints
     starts_now = (kind.integrates and not options.constraints
                   and not (integrator.waits_for_loop and options.compiled))
-    prepared = prepare_command(model, command, options, out_dir=out_dir,
+    prepared = prepare_command(snapshot, command, options, out_dir=out_dir,
                                starts_now=starts_now)
     system, inputs = prepared.system, prepared.inputs
     zero_params = [display_name(p) for p in system.params if inputs.internal(p) == 0.0]
 
     def advise(failure, result, integration) -> str:
-        return failure_message(failure, system, inputs, result, zero_params, integration)
+        return failure_message(failure, snapshot, system, inputs, result, zero_params,
+                               integration)
     execution = Execution(
         kind, prepared.stem, command.filename, program_file_name(command.filename), system,
         inputs, [display_name(x) for x in system.states],

@@ -39,18 +39,21 @@ def alphabetical(syms) -> list:
     return sorted(syms, key=lambda s: (s.name.lower(), s.name))
 
 
-def read_order(syms, model) -> list:
+def read_order(syms, symbols) -> list:
     """Constants, then variables, then their first derivatives, ... (the order in which
     Autolev's ALGEBRAIC programs read their inputs), each group sorted by name ignoring
-    case."""
+    case; `symbols`: the declared ones' SymbolInfo."""
     def key(s):
         base, order = S.base_and_order(s)
-        return (order, model.kind_of(base) != "constant", base.name.lower(), base.name)
+        info = symbols.get(base)
+        return (order, (info.kind if info else None) != "constant", base.name.lower(),
+                base.name)
     return sorted(syms, key=key)
 
 
 class NumericSystem(CompiledEvaluation):
-    """State, parameters and compiled functions of a model.
+    """State, parameters and compiled functions of a model (what the numerics read of it:
+    a ModelSnapshot).
 
     `outputs`: a list of files, each a list of Column; `encoded`: (name, value) pairs.
     `integrate=False` (ALGEBRAIC/NONLINEAR programs) builds no right-hand side; every
@@ -69,19 +72,22 @@ class NumericSystem(CompiledEvaluation):
     (states, inputs, expressions), for a writer of programs in another language or for
     a run that checks its inputs before anything is compiled, then calls `compile()`."""
 
-    def __init__(self, model, outputs=(), encoded=(), backend: str = "auto",
+    def __init__(self, snapshot, outputs=(), encoded=(), backend: str = "auto",
                  integrate: bool = True, solving=None, solved=(), extra=None,
                  zero=None, hidden_in_outputs=(), locked=(), compile_functions: bool = True,
                  recursive: bool = False):
-        self.model = model
+        # what the system reads of the model once built (kept with it in the cache)
+        self.defs = snapshot.definitions
+        self.symbols = snapshot.symbols
         self.recursive = recursive
         self._zero = zero
         self.backend = backend
-        self._fix_speeds(locked)
+        self._fix_speeds(locked, snapshot.dynamics)
         # the recursion's pivots, then the entries they come from, after f
         # (runtime/articulated.py)
         self.pivots: list = []
-        rates, unknowns, dyn = (self._integrated(solving) if integrate else ({}, [], []))
+        rates, unknowns, dyn = (self._integrated(solving, snapshot) if integrate
+                                else ({}, [], []))
         self.states = alphabetical(rates)
         self.nstate = len(self.states)
         self.implicit_unknowns = unknowns          # derivatives solved from M a = f
@@ -127,13 +133,13 @@ class NumericSystem(CompiledEvaluation):
         self.specified_values = np.zeros(len(self.specified))
         self.specified_functions: list = []
 
-    def _fix_speeds(self, locked) -> None:
+    def _fix_speeds(self, locked, dynamics) -> None:
         """The speeds of locked coordinates: 0, as their rates.  (An auxiliary speed
         takes the value its CONSTRAIN(AUXILIARY[...]) solved for it: 0 when it only
         brings a force into evidence, else the motion the constraint allows.)"""
         self.aux_fixed = {}
         self.locked = list(locked)
-        self._locked_speeds = [self._speed_of_locked(q) for q in self.locked]
+        self._locked_speeds = [self._speed_of_locked(q, dynamics) for q in self.locked]
         for u in self._locked_speeds:
             self.aux_fixed[u] = 0.0
             self.aux_fixed[S.derivative(u)] = 0.0
@@ -159,12 +165,12 @@ class NumericSystem(CompiledEvaluation):
     def _find_inputs(self, exprs: list, given: set, integrate: bool) -> None:
         """The specified quantities, the parameters (constants without a definition) and
         the definitions of constants that the expressions need."""
-        defs = self.model.defs
+        defs = self.defs
         order, undefined = self.needed(exprs, given)
         self.specified = alphabetical(s for s in undefined if self.is_specified(s))
         params = [s for s in undefined if not self.is_specified(s)]
         self.params = (alphabetical(params) if integrate
-                       else read_order(params, self.model))
+                       else read_order(params, self.symbols))
         pset = set(self.params)
         const_defs = [s for s in order if defs.primitive_deps(s) <= pset]
         cset = set(const_defs)
@@ -197,12 +203,12 @@ class NumericSystem(CompiledEvaluation):
         per parameter set: walked, then Python; compiling C would cost more)."""
         return WalkedFirst(
             codegen.Program({"p": self.params}, self.constant_defs + [e for _, e in lifted],
-                            self.model.defs).build(False),
+                            self.defs).build(False),
             "autolev_constants")
 
     def _compile(self, extra: dict, accel_inputs: list, integrate: bool,
                  background: bool) -> None:
-        defs, backend = self.model.defs, self.backend
+        defs, backend = self.defs, self.backend
         inputs = {"t": [S.TIME], "x": self.states, "c": self.params + self.constant_defs,
                   "s": self.specified}
         fixed = dict(self.aux_fixed)
@@ -258,12 +264,11 @@ class NumericSystem(CompiledEvaluation):
 
     # -- pickling (with the model, in the cache of built models) ------------------------
     # -- structure ------------------------------------------------------------------------
-    def _integrated(self, solving) -> tuple[dict, list, list]:
+    def _integrated(self, solving, snapshot) -> tuple[dict, list, list]:
         """({X: rate} for every integrated X, [derivatives solved from M a = f],
         [M entries row by row, then f]).  A rate is X's definition, or the symbol X'
         when X' is itself integrated or solved for, or (CODE ODE()) a constant input."""
-        m = self.model
-        defs = m.defs
+        defs, dynamics = self.defs, snapshot.dynamics
         explicit_only = solving is not None and not solving[0]
         if explicit_only:
             unknowns, dyn = [], []
@@ -281,11 +286,11 @@ class NumericSystem(CompiledEvaluation):
         else:
             unknowns, dyn = [], []
             speeds = []
-            if (m.bodies_list or m.particles_list) and m.newtonian_frame is not None:
-                speeds = m.generalized_speeds()[0]
+            if (snapshot.bodies or snapshot.particles) and dynamics is not None:
+                speeds = dynamics.independent_speeds()
             pending = [u for u in speeds if S.derivative(u) not in defs.rhs]
             if pending or self.locked:
-                eqs = m.equations()
+                eqs = dynamics.equations()
                 if set(eqs.speeds) != set(pending):
                     raise AutolevModelError(
                         "the derivatives of some speeds are defined (SOLVE) and others "
@@ -299,7 +304,7 @@ class NumericSystem(CompiledEvaluation):
                     formed = list(eqs.rows[:len(eqs.speeds), 0]) if rows is None else rows
                     rows = [formed[k] for k in free]
                     unknowns = [unknowns[k] for k in free]
-                recursion = (self._tree_accelerations(eqs)
+                recursion = (self._tree_accelerations(eqs, dynamics)
                              if rows is None and not self.locked else None)
                 if recursion is not None:
                     # explicit: the mass matrix of u' = f is the identity
@@ -308,7 +313,7 @@ class NumericSystem(CompiledEvaluation):
                     f = recursion.rates
                     self.pivots = recursion.pivots + recursion.entries
                 elif rows is None:
-                    mm, f = m.mass_matrix, m.forcing
+                    mm, f = dynamics.mass_matrix(), dynamics.forcing()
                 else:
                     # ZERO as changed after KANE() (Autolev codes the ZERO it has
                     # then: tutorial 8 evaluates constants in ZERO after KANE())
@@ -322,7 +327,7 @@ class NumericSystem(CompiledEvaluation):
         changed = True
         while changed:
             changed = False
-            for sym, info in sorted(m.info.items(), key=lambda kv: kv[1].index):
+            for sym, info in sorted(self.symbols.items(), key=lambda kv: kv[1].index):
                 if info.kind not in ("variable", "motionvariable") or sym in defs.rhs \
                         or sym in self.aux_fixed or sym in rates or sym in self.locked:
                     continue
@@ -338,22 +343,21 @@ class NumericSystem(CompiledEvaluation):
                 changed = True
         return rates, unknowns, dyn
 
-    def _tree_accelerations(self, eqs) -> articulated.Recursion | None:
+    def _tree_accelerations(self, eqs, dynamics) -> articulated.Recursion | None:
         """The speeds' derivatives by the articulated-body recursion, when this system
         is `recursive` and the model is a tree of joints without constraints (see
         runtime/articulated.py); else None: M u' = f from Kane's equations."""
         if not self.recursive or eqs.dependent or eqs.auxiliary or eqs.unknowns:
             return None
         try:
-            return articulated.accelerations(self.model.kane_system(), eqs.speeds)
+            return articulated.accelerations(dynamics.mechanics(), eqs.speeds)
         except articulated.NotATree:
             return None
 
-    def _speed_of_locked(self, q):
+    def _speed_of_locked(self, q, dynamics):
         """U of a locked coordinate Q, from its kinematical equation Q' = U."""
-        m = self.model
-        rate = m.defs.rhs.get(S.derivative(q))
-        independent = m.generalized_speeds()[0] if m.newtonian_frame is not None else []
+        rate = self.defs.rhs.get(S.derivative(q))
+        independent = dynamics.independent_speeds() if dynamics is not None else []
         if rate not in independent:
             raise AutolevModelError(
                 f"{q} cannot be locked: locking needs the kinematical equation {q}' = U "
@@ -380,7 +384,7 @@ class NumericSystem(CompiledEvaluation):
     def _hidden(self, names) -> list:
         """The model's declared symbols spelt exactly as one of `names`."""
         names = set(names)
-        return [s for s in self.model.info
+        return [s for s in self.symbols
                 if S.base_and_order(s)[1] == 0 and s.name in names]
 
     def _as_output_routine(self, out_exprs, rhs_exprs, extra, given) -> list:
@@ -392,16 +396,17 @@ class NumericSystem(CompiledEvaluation):
         shared, _ = self.needed(roots, given) if roots else ([], set())
         keep = frozenset(shared)
         zero = {s: sm.S.Zero for s in self.hidden_in_outputs}
-        changed = [self.model.defs.substitute(e, zero, keep) for e in out_exprs]
+        changed = [self.defs.substitute(e, zero, keep) for e in out_exprs]
         if all(a == b for a, b in zip(changed, out_exprs)):
             self.hidden_in_outputs = []          # no output reads them
         return changed
 
     def is_specified(self, s) -> bool:
-        return self.model.kind_of(S.base_and_order(s)[0]) == "specified"
+        info = self.symbols.get(S.base_and_order(s)[0])
+        return info is not None and info.kind == "specified"
 
     def needed(self, exprs, given) -> tuple[list, set]:
-        defs = self.model.defs
+        defs = self.defs
         roots = set()
         for e in exprs:
             roots |= symbols_in(e)
@@ -415,7 +420,7 @@ class NumericSystem(CompiledEvaluation):
     def _resolve(self, expr):
         """An output expression with derivatives of integrated quantities that have no
         definition (Q'' when Q' = U) replaced by their time derivative."""
-        defs = self.model.defs
+        defs = self.defs
         expr = sm.sympify(expr)
         for _ in range(4):
             subs = {}
@@ -454,7 +459,7 @@ class NumericSystem(CompiledEvaluation):
         extra = list(extra_values)
         inputs = {"t": [S.TIME], "x": self.states, "c": self.params + self.constant_defs,
                   "s": self.specified, "e": extra}
-        fn = compile_program(codegen.Program(inputs, exprs, self.model.defs,
+        fn = compile_program(codegen.Program(inputs, exprs, self.defs,
                                              dict(self.aux_fixed)).build(), "python", name)
         extra_array = np.array([float(extra_values[k]) for k in extra])
 
