@@ -12,7 +12,7 @@ import pytest
 import autolev
 from autolev.runtime import studies
 from autolev.engine.errors import AutolevModelError
-from test_linearize import PENDULUM
+from helpers.models import PENDULUM
 
 
 @pytest.fixture(scope="module")

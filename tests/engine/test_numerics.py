@@ -5,20 +5,16 @@ import os
 import subprocess
 import sys
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import autolev
-from helpers import load_model
+from helpers import EXAMPLES, load_model
 from autolev.engine import clibrary, files, integrate
 from autolev.runtime.numerics import codegen
 from autolev.runtime.numerics.inputs import InputFileError
 
-HERE = Path(__file__).parent
-DATA = HERE / "data" / "numerics"
-EXAMPLES = HERE.parent / "autolev_examples"
 
 
 load = load_model
