@@ -160,7 +160,7 @@ def constraint_drift(quick: bool) -> None:
     r, _ = run(disc, method="dop853", TFINAL=tfinal / 4, ABSERR=1e-8, RELERR=1e-8)
     print(f"rolling disc over {tfinal / 4:g} s: {'ok' if r.ok else r.failure[:60]} -- the "
           "no-slip constraints are solved for the dependent speeds at every evaluation, "
-          "so they hold to rounding at every row (tests/test_numerics.py checks the "
+          "so they hold to rounding at every row (tests/engine/test_numerics.py checks the "
           "contact point's velocity < 1e-9)")
 
 

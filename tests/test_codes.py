@@ -67,7 +67,7 @@ MADE_ELSEWHERE = {
     "E000": "test_a_file_that_cannot_be_read_is_E000 below",
     "E007": "tests/test_dispatch.py",
     "E020": "tests/test_source.py", "E025": "tests/test_source.py",
-    "E033": "tests/test_include.py", "R001": "tests/test_model_faults.py",
+    "E033": "tests/test_include.py", "R001": "tests/runtime/test_model_faults.py",
     "R002": "test_a_python_translation_that_is_not_python_is_R002 below",
     "R003": "test_a_python_translation_without_a_model_is_R003 below",
 }

@@ -186,7 +186,7 @@ def test_file_names_too_long_for_the_file_system(tmp_path, text):
     ("X = DIAGMAT(99999999, 1)", "more than 1000000 elements"),
     ("M[3903042726] = 1", "more than 1000000 elements"),
     # a product: its shape is not known to the translation (of [1, 2] itself, check
-    # reports the index: tests/test_function_kinds.py)
+    # reports the index: tests/translate/test_function_kinds.py)
     ("M = 2*[1, 2]\nX = ROWS(M, 1:99999999)", "indices 1:99999999 are outside 1..1")])
 def test_matrices_too_large_to_build(tmp_path, text, message):
     d = load_error(tmp_path, text + "\n")

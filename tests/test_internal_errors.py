@@ -1,6 +1,6 @@
 """A bug in autolev is reported as one (AutolevInternalError; from the command line,
 exit status 70 and no traceback unless AUTOLEV_TRACEBACK=1), never as the user's failed
-statement; the model's own faults stay R001 diagnostics (tests/test_model_faults.py)."""
+statement; the model's own faults stay R001 diagnostics (tests/runtime/test_model_faults.py)."""
 import pytest
 
 import autolev

@@ -407,9 +407,9 @@ def test_a_response_of_two_statements_is_not_comparable(tmp_path):
 def test_a_long_verification_says_how_far_it_is(tmp_path, monkeypatch):
     # a clock that runs 10 s a reading: the responses compared are counted as they go
     import io
-    from autolev.engine import integrate
+    from autolev.engine import progress
     clock = iter(range(0, 10 ** 6, 10))
-    monkeypatch.setattr(integrate._time, "monotonic", lambda: float(next(clock)))
+    monkeypatch.setattr(progress.time, "monotonic", lambda: float(next(clock)))
     said = io.StringIO()
     report = autolev.verify(DATA / "pendulum.all", progress=said)
     lines = said.getvalue().splitlines()

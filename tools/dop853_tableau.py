@@ -7,7 +7,7 @@ does not import scipy.integrate (over a second) to read them.
     python tools/dop853_tableau.py --check    # exit 1 when the module differs
 
 The numbers are scipy's (Hairer's published dop853 coefficients);
-tests/test_libraries.py checks the module against scipy's table.
+tests/runtime/test_libraries.py checks the module against scipy's table.
 """
 from __future__ import annotations
 

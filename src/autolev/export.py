@@ -11,6 +11,9 @@ NumericSystem and inputs), so the two agree by construction of the same equation
 by a second formulation.  Names stay the model's (`K` is `sm.Symbol('K')`, no
 assumptions), made into Python identifiers; text from the model reaches the script only
 as identifiers it checked or as quoted strings.
+
+Each level's script is a Script: a method per section (the docstring, the symbols, ...,
+the values, the runner), the sections the levels share written once.
 """
 from __future__ import annotations
 
@@ -98,107 +101,179 @@ def identifier(name: str, taken: set) -> str:
     return out
 
 
-def sympy_script(eqs: Equations, source: str, why: str | None = None) -> str:
-    """The standalone script of `eqs` (see the module's docstring); `why`: why the
-    model is written at this level rather than the mechanics level, said at its top."""
-    taken: set = set()
-    names: dict = {S.TIME: "t"}
-    for s in eqs.states + eqs.specified + list(eqs.constants) + [s for s, _ in eqs.definitions]:
-        names[s] = identifier(S.base_and_order(s)[0].name + "p" * S.base_and_order(s)[1],
-                              taken)
-    unknown_names = {}
-    for u in eqs.unknowns:
-        unknown_names[u] = names[u] = identifier(
-            S.base_and_order(u)[0].name + "p" * S.base_and_order(u)[1], taken)
-    printer = ScriptPrinter(names)
-    p = printer.doprint
-    out = [f'"""{quoted_text(eqs.model_name)}: its equations of motion as SymPy expressions, '
-           f"written by autolev from\n{quoted_text(source)} ({quoted_text(eqs.command)}).",
-           "",
-           "Level: equations.  The state, the rates given explicitly, and the mass matrix and",
-           "forcing from which the other rates (`unknowns`) are solved, as Autolev's Kane's",
-           "method formed them, with every intermediate (Autolev's Z's) a named assignment.",
-           *(textwrap.wrap(f"Not the mechanics level: {quoted_text(why)}.", 88) if why
-             else []),
-           "Importing defines `system` (a sympy.physics.mechanics.SymbolicSystem: full_mass *",
-           "d(states)/dt = full_forcing, in the intermediates), `constants`,",
-           "`initial_conditions` and `specified`;",
-           "`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy",
-           f"({eqs.method}, RELERR and ABSERR) and writes the OUTPUT columns as CSV.",
-           '"""',
-           "import sys", "", "import numpy as np", "import sympy as sm",
-           "import sympy.physics.mechanics as me", "from scipy.integrate import solve_ivp", "",
-           "t = me.dynamicsymbols._t", ""]
-    out += ["# the state: functions of time"]
-    out += [f"{names[x]} = me.dynamicsymbols({names[x]!r})" for x in eqs.states]
-    if eqs.specified:
-        out += ["", "# specified quantities: functions of time (values in `specified`)"]
-        out += [f"{names[s]} = me.dynamicsymbols({names[s]!r})" for s in eqs.specified]
-    if eqs.constants:
-        out += ["", "# constants"]
-        out += [f"{names[c]} = sm.Symbol({names[c]!r})" for c in eqs.constants]
-    if eqs.unknowns:
-        out += ["", "# the rates solved from the mass matrix"]
-        out += [f"{unknown_names[u]} = {names[state_of(u)]}.diff(t)" for u in eqs.unknowns]
-    before, after = split_at_the_unknowns(eqs)
-    if eqs.definitions:
-        out += ["", "# intermediates (Autolev's Z's) and the model's definitions, as functions of",
-                "# time, and what each is, in the order they are computed; `expanded(expr)`",
-                "# replaces them in an expression"]
-        out += [f"{names[z]} = me.dynamicsymbols({names[z]!r})" for z, _ in eqs.definitions]
-    out += ["intermediates = ["]
-    out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in before]
-    out += ["]", "# those that need the solved rates (outputs only)", "after_solving = ["]
-    out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in after] + ["]"]
-    out += ["", "states = [" + ", ".join(names[x] for x in eqs.states) + "]",
-            "# d(state)/dt where it is given; None where it is solved (`unknowns`)",
-            "rates = [" + ", ".join("None" if r is None else p(r) for r in eqs.rates) + "]",
-            "unknowns = [" + ", ".join(unknown_names[u] for u in eqs.unknowns) + "]",
-            "unknown_states = [" + ", ".join(
-                str(eqs.states.index(state_of(u))) for u in eqs.unknowns) + "]",
-            f"mass_matrix = sm.Matrix({len(eqs.mass)}, {len(eqs.mass)}, ["
-            + ", ".join(p(e) for r in eqs.mass for e in r) + "])",
-            f"forcing = sm.Matrix({len(eqs.forcing)}, 1, ["
-            + ", ".join(p(e) for e in eqs.forcing) + "])",
-            "",
-            "# as one system: full_mass * d(states)/dt = full_forcing",
-            "full_mass = sm.eye(len(states))",
-            "full_forcing = sm.Matrix([0 if r is None else r for r in rates])",
-            "for row, k in enumerate(unknown_states):",
-            "    full_mass[k, k] = 0",
-            "    for column, j in enumerate(unknown_states):",
-            "        full_mass[k, j] = mass_matrix[row, column]",
-            "    full_forcing[k] = forcing[row]",
-            "system = me.SymbolicSystem(states, full_forcing, mass_matrix=full_mass)",
-            ""]
-    out += values_text(eqs, names, p)
-    out += ["", "", RUNNER]
-    return "\n".join(out) + "\n"
+class Script:
+    """A standalone SymPy script of a command's equations, printed a section at a time:
+    `SECTIONS` names, in the script's order, the methods that give each section's lines;
+    a subclass per level names the model's symbols and writes its own sections."""
+
+    SECTIONS: tuple[str, ...] = ()
+    # what the script is, in its docstring's first line
+    TITLE: str = ""
+
+    eqs: Equations              # the command's equations, values and outputs
+    source: str                 # the model's file, named in the docstring
+    taken: set                  # the identifiers given so far
+    names: dict                 # each symbol (and frame, point, body) -> its identifier
+    unknown_names: dict         # each rate solved from the mass matrix -> its identifier
+    before: list                # (name, value) of the definitions the equations need
+    after: list                 # (name, value) of those that need the solved rates
+    printer: ScriptPrinter      # the expressions, by `names`
+
+    def text(self) -> str:
+        lines: list = []
+        for section in self.SECTIONS:
+            lines += getattr(self, section)()
+        return "\n".join(lines) + "\n"
+
+    def printed(self, expr) -> str:
+        """`expr` as the Python that builds it."""
+        return self.printer.doprint(expr)
+
+    def docstring(self) -> list:
+        eqs = self.eqs
+        return [f'"""{quoted_text(eqs.model_name)}: {self.TITLE}, written by autolev from\n'
+                f"{quoted_text(self.source)} ({quoted_text(eqs.command)}).",
+                "",
+                *self.description(),
+                "`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy",
+                f"({eqs.method}, RELERR and ABSERR) and writes the OUTPUT columns as CSV.",
+                '"""']
+
+    def description(self) -> list:
+        """The docstring's lines on what the level holds and what importing defines."""
+        raise NotImplementedError
+
+    def imports(self) -> list:
+        return ["import sys", "", "import numpy as np", "import sympy as sm",
+                "import sympy.physics.mechanics as me", "from scipy.integrate import solve_ivp",
+                "", "t = me.dynamicsymbols._t", ""]
+
+    def definition_lists(self, after_note: str) -> list:
+        """`intermediates` and `after_solving`: (name, what it is) in the order they are
+        computed; `after_note` says what the second list is."""
+        def entries(definitions) -> list:
+            return [f"    ({self.names[z]}, {expression_text(self.printed, e)}),"
+                    for z, e in definitions]
+        return (["intermediates = ["] + entries(self.before)
+                + ["]", after_note, "after_solving = ["] + entries(self.after) + ["]"])
+
+    def values(self) -> list:
+        """`constants`, `initial_conditions`, `specified`, `integration`,
+        `integration_method` and `outputs`."""
+        eqs, names = self.eqs, self.names
+        lacking = [names[c] for c, v in eqs.constants.items() if v is None]
+        out = ["# values (SI units, radians) from the model's INPUT statements"
+               + ("; None: no value given (give one here)" if lacking else ""),
+               "constants = {" + ", ".join(f"{names[c]}: "
+                                           + ("None" if v is None else number_text(v))
+                                           for c, v in eqs.constants.items()) + "}",
+               "initial_conditions = {" + ", ".join(f"{names[x]}: {number_text(v)}"
+                                                    for x, v in eqs.initial.items()) + "}",
+               "# each a number or a function of time; 0 unless given",
+               "specified = {" + ", ".join(f"{names[s]}: 0.0" for s in eqs.specified) + "}",
+               "integration = {" + ", ".join(f"{k!r}: {number_text(v)}"
+                                             for k, v in eqs.integration.items()) + "}",
+               "# scipy's method for the program's integrator: " + eqs.method_reason,
+               f"integration_method = {eqs.method!r}",
+               "# OUTPUT columns: (label, unit, expression in the unit)",
+               "outputs = ["]
+        for label, unit, expr, degrees in eqs.outputs:
+            shown = self.printed(expr) + (" * 180 / sm.pi" if degrees else "")
+            out.append(f"    ({label!r}, {unit!r}, {shown}),")
+        return out + ["]"]
+
+    def runner(self) -> list:
+        return ["", "", RUNNER]
 
 
-def values_text(eqs: Equations, names: dict, p) -> list:
-    """The script's `constants`, `initial_conditions`, `specified`, `integration` and
-    `outputs`, with `names` for the model's symbols and `p` printing expressions."""
-    lacking = [names[c] for c, v in eqs.constants.items() if v is None]
-    out = ["# values (SI units, radians) from the model's INPUT statements"
-           + ("; None: no value given (give one here)" if lacking else ""),
-           "constants = {" + ", ".join(f"{names[c]}: "
-                                       + ("None" if v is None else number_text(v))
-                                       for c, v in eqs.constants.items()) + "}",
-           "initial_conditions = {" + ", ".join(f"{names[x]}: {number_text(v)}"
-                                                for x, v in eqs.initial.items()) + "}",
-           "# each a number or a function of time; 0 unless given",
-           "specified = {" + ", ".join(f"{names[s]}: 0.0" for s in eqs.specified) + "}",
-           "integration = {" + ", ".join(f"{k!r}: {number_text(v)}"
-                                         for k, v in eqs.integration.items()) + "}",
-           "# scipy's method for the program's integrator: " + eqs.method_reason,
-           f"integration_method = {eqs.method!r}",
-           "# OUTPUT columns: (label, unit, expression in the unit)",
-           "outputs = ["]
-    for label, unit, expr, degrees in eqs.outputs:
-        shown = p(expr) + (" * 180 / sm.pi" if degrees else "")
-        out.append(f"    ({label!r}, {unit!r}, {shown}),")
-    return out + ["]"]
+class EquationsScript(Script):
+    """The equations level (see the module's docstring): the state, the explicit rates,
+    the mass matrix and forcing, every intermediate a named assignment."""
+
+    SECTIONS = ("docstring", "imports", "symbols", "intermediates", "equations", "values",
+                "runner")
+    TITLE = "its equations of motion as SymPy expressions"
+
+    why: str | None             # why not the mechanics level, said at the top (None: not said)
+
+    def __init__(self, eqs: Equations, source: str, why: str | None = None):
+        self.eqs, self.source, self.why = eqs, source, why
+        self.taken, self.names, self.unknown_names = set(), {S.TIME: "t"}, {}
+        for s in (eqs.states + eqs.specified + list(eqs.constants)
+                  + [s for s, _ in eqs.definitions]):
+            self.names[s] = self.identifier_of(s)
+        for u in eqs.unknowns:
+            self.unknown_names[u] = self.names[u] = self.identifier_of(u)
+        self.printer = ScriptPrinter(self.names)
+        self.before, self.after = split_at_the_unknowns(eqs)
+
+    def identifier_of(self, s) -> str:
+        """A derivative's identifier: its quantity's name with a p per order (Xpp)."""
+        base, order = S.base_and_order(s)
+        return identifier(base.name + "p" * order, self.taken)
+
+    def description(self) -> list:
+        return ["Level: equations.  The state, the rates given explicitly, and the mass matrix and",
+                "forcing from which the other rates (`unknowns`) are solved, as Autolev's Kane's",
+                "method formed them, with every intermediate (Autolev's Z's) a named assignment.",
+                *(textwrap.wrap(f"Not the mechanics level: {quoted_text(self.why)}.", 88)
+                  if self.why else []),
+                "Importing defines `system` (a sympy.physics.mechanics.SymbolicSystem: full_mass *",
+                "d(states)/dt = full_forcing, in the intermediates), `constants`,",
+                "`initial_conditions` and `specified`;"]
+
+    def symbols(self) -> list:
+        eqs, names = self.eqs, self.names
+        out = ["# the state: functions of time"]
+        out += [f"{names[x]} = me.dynamicsymbols({names[x]!r})" for x in eqs.states]
+        if eqs.specified:
+            out += ["", "# specified quantities: functions of time (values in `specified`)"]
+            out += [f"{names[s]} = me.dynamicsymbols({names[s]!r})" for s in eqs.specified]
+        if eqs.constants:
+            out += ["", "# constants"]
+            out += [f"{names[c]} = sm.Symbol({names[c]!r})" for c in eqs.constants]
+        if eqs.unknowns:
+            out += ["", "# the rates solved from the mass matrix"]
+            out += [f"{self.unknown_names[u]} = {names[state_of(u)]}.diff(t)"
+                    for u in eqs.unknowns]
+        return out
+
+    def intermediates(self) -> list:
+        out = []
+        if self.eqs.definitions:
+            out += ["", "# intermediates (Autolev's Z's) and the model's definitions, as "
+                    "functions of",
+                    "# time, and what each is, in the order they are computed; "
+                    "`expanded(expr)`",
+                    "# replaces them in an expression"]
+            out += [f"{self.names[z]} = me.dynamicsymbols({self.names[z]!r})"
+                    for z, _ in self.eqs.definitions]
+        return out + self.definition_lists("# those that need the solved rates (outputs only)")
+
+    def equations(self) -> list:
+        """`states`, `rates`, the mass matrix and forcing, and them as one `system`."""
+        eqs, names, p = self.eqs, self.names, self.printed
+        return ["", "states = [" + ", ".join(names[x] for x in eqs.states) + "]",
+                "# d(state)/dt where it is given; None where it is solved (`unknowns`)",
+                "rates = [" + ", ".join("None" if r is None else p(r) for r in eqs.rates) + "]",
+                "unknowns = [" + ", ".join(self.unknown_names[u] for u in eqs.unknowns) + "]",
+                "unknown_states = [" + ", ".join(
+                    str(eqs.states.index(state_of(u))) for u in eqs.unknowns) + "]",
+                f"mass_matrix = sm.Matrix({len(eqs.mass)}, {len(eqs.mass)}, ["
+                + ", ".join(p(e) for r in eqs.mass for e in r) + "])",
+                f"forcing = sm.Matrix({len(eqs.forcing)}, 1, ["
+                + ", ".join(p(e) for e in eqs.forcing) + "])",
+                "",
+                "# as one system: full_mass * d(states)/dt = full_forcing",
+                "full_mass = sm.eye(len(states))",
+                "full_forcing = sm.Matrix([0 if r is None else r for r in rates])",
+                "for row, k in enumerate(unknown_states):",
+                "    full_mass[k, k] = 0",
+                "    for column, j in enumerate(unknown_states):",
+                "        full_mass[k, j] = mass_matrix[row, column]",
+                "    full_forcing[k] = forcing[row]",
+                "system = me.SymbolicSystem(states, full_forcing, mass_matrix=full_mass)",
+                ""]
 
 
 def split_at_the_unknowns(eqs: Equations) -> tuple[list, list]:

@@ -20,13 +20,14 @@ import sympy.physics.mechanics as me
 from sympy.core.function import AppliedUndef
 from sympy.printing.precedence import PRECEDENCE
 
-from .export import (RUNNER, ScriptPrinter, expression_text, identifier, quoted_text,
-                     split_at_the_unknowns, sympy_script, values_text)
+from .export import (EquationsScript, Script, ScriptPrinter, identifier, quoted_text,
+                     split_at_the_unknowns)
 from .runtime import symbols as S
 from .runtime.equations_of import Equations, equations_of, state_of
 from .engine.errors import AutolevModelError
 from .runtime.handoff import CONSTRAINT_SOLVER, Handoff, handoff
 from .runtime.interop import simple_rotation
+from .runtime.model import Model
 
 LEVELS = ("auto", "mechanics", "equations")
 # KanesMethod forms and inverts symbolic matrices: beyond this many speeds it is slow
@@ -99,222 +100,284 @@ def _joined(terms: list, zero: str) -> str:
     return " + ".join(terms).replace("+ -", "- ") if terms else zero
 
 
-def mechanics_script(h: Handoff, eqs: Equations, model, source: str) -> str:
-    """The mechanics-level script of the hand-off `h`, with the values, outputs and
-    integration of `eqs` (the command's equations as `autolev run` takes them)."""
-    taken: set = set()
-    names: dict = {S.TIME: "t", sm.Symbol("t"): "t"}
-    frames = [h.newtonian] + [child for _, child, _, _ in h.orientations]
-    for f in frames:
-        names[f] = identifier(f.name, taken)
-    # the model's coordinates KanesMethod takes (not those the model defines)
-    coordinates = [x for x, f in h.states.items() if f in h.coordinates]
-    for q in coordinates:
-        names[q] = names[h.states[q]] = identifier(q.name, taken)
-    for u in model.speeds:
-        names[u] = names[h.states[u]] = identifier(str(h.states[u].func), taken)
-    for u in h.dependent + h.auxiliary:
-        names[u] = identifier(str(u.func), taken)
-    for ours, force in zip(model.kane_equations.unknowns if h.unknowns else [], h.unknowns):
-        # one name for KANE's unknown in the loads and as the run computes it
-        names[ours] = names[force] = identifier(str(force.func), taken)
-    rates_of_specified = []
-    for s in eqs.specified:
-        base, order = S.base_and_order(s)
-        f = h.specified_of(base)
-        names.setdefault(f, identifier(base.name, taken))
-        if order:
-            # a rate of a specified quantity: its derivative, given a value of its own
-            names[s] = identifier(base.name + "p" * order, taken)
-            rates_of_specified.append((s, f, order))
-        else:
-            names[s] = names[f]
-    for c in h.constants:
-        names[c] = identifier(c.name, taken)
-    plain = {c.name: c for c in h.constants}
-    for c in eqs.constants:
-        names[c] = names[plain[c.name]]
-    for name, point in h.points.items():
-        names[point] = identifier(name, taken)
-    for body in h.bodies:
-        names[body] = identifier(body.name + ("_body" if isinstance(body, me.RigidBody)
-                                              else "_particle"), taken)
-    unknown_names = {}
-    for u in eqs.unknowns:
-        base, order = S.base_and_order(u)
-        unknown_names[u] = names[u] = identifier(base.name + "p" * order, taken)
-    before, after = split_at_the_unknowns(eqs)
-    wanted = _definitions_wanted(eqs, before + after)
-    before = [(z, e) for z, e in before if z in wanted]
-    after = [(z, e) for z, e in after if z in wanted]
-    declared = set(names)
-    for z, _ in before + after:
-        if z not in declared:
-            base, order = S.base_and_order(z)
-            names[z] = identifier(base.name + "p" * order, taken)
-    printer = MechanicsPrinter(names)
-    p = printer.doprint
-    where = model.loaded.defined_at if model.loaded is not None else {}
-    statements = model.loaded.statements_at if model.loaded is not None else {}
+class MechanicsScript(Script):
+    """The mechanics level (see the module's docstring), from the hand-off: the values,
+    the OUTPUT columns and the runner are the equations level's."""
 
-    def said(*keys) -> list[str]:
+    SECTIONS = ("docstring", "imports", "symbols", "frames", "points", "bodies", "loads",
+                "kinematics", "constraints", "kanes_method", "intermediates", "values",
+                "runner")
+    TITLE = "the model in sympy.physics.mechanics"
+
+    h: Handoff                  # the model's frames, points, bodies and loads in sympy
+    model: Model                # the loaded model, for its speeds and statements
+    coordinates: list           # the model's coordinates KanesMethod takes (not those it defines)
+    rates_of_specified: list    # (rate, its quantity's function, order) of each specified rate
+    declared: set               # what the symbols section declares before the intermediates
+    where: dict                 # each quantity's name -> the statement that defines it
+    statements: dict            # (what, name) -> the statements that give it
+    printer: MechanicsPrinter
+
+    def __init__(self, h: Handoff, eqs: Equations, model: Model, source: str):
+        self.h, self.eqs, self.model, self.source = h, eqs, model, source
+        self.taken, self.names, self.unknown_names = set(), {S.TIME: "t", sm.Symbol("t"): "t"}, {}
+        self.coordinates = [x for x, f in h.states.items() if f in h.coordinates]
+        self.rates_of_specified = []
+        self.name_the_mechanics()
+        self.before, self.after = split_at_the_unknowns(eqs)
+        wanted = _definitions_wanted(eqs, self.before + self.after)
+        self.before = [(z, e) for z, e in self.before if z in wanted]
+        self.after = [(z, e) for z, e in self.after if z in wanted]
+        self.declared = set(self.names)
+        for z, _ in self.before + self.after:
+            if z not in self.declared:
+                base, order = S.base_and_order(z)
+                self.names[z] = identifier(base.name + "p" * order, self.taken)
+        self.printer = MechanicsPrinter(self.names)
+        loaded = model.loaded
+        self.where = loaded.defined_at if loaded is not None else {}
+        self.statements = loaded.statements_at if loaded is not None else {}
+
+    def name_the_mechanics(self):
+        """Identifiers for the frames, the states, KANE's unknowns, the specified
+        quantities, the constants, the points, the bodies and the solved rates."""
+        h, eqs, model, names, taken = self.h, self.eqs, self.model, self.names, self.taken
+        frames = [h.newtonian] + [child for _, child, _, _ in h.orientations]
+        for f in frames:
+            names[f] = identifier(f.name, taken)
+        for q in self.coordinates:
+            names[q] = names[h.states[q]] = identifier(q.name, taken)
+        for u in model.speeds:
+            names[u] = names[h.states[u]] = identifier(str(h.states[u].func), taken)
+        for u in h.dependent + h.auxiliary:
+            names[u] = identifier(str(u.func), taken)
+        for ours, force in zip(model.kane_equations.unknowns if h.unknowns else [], h.unknowns):
+            # one name for KANE's unknown in the loads and as the run computes it
+            names[ours] = names[force] = identifier(str(force.func), taken)
+        for s in eqs.specified:
+            base, order = S.base_and_order(s)
+            f = h.specified_of(base)
+            names.setdefault(f, identifier(base.name, taken))
+            if order:
+                # a rate of a specified quantity: its derivative, given a value of its own
+                names[s] = identifier(base.name + "p" * order, taken)
+                self.rates_of_specified.append((s, f, order))
+            else:
+                names[s] = names[f]
+        for c in h.constants:
+            names[c] = identifier(c.name, taken)
+        plain = {c.name: c for c in h.constants}
+        for c in eqs.constants:
+            names[c] = names[plain[c.name]]
+        for name, point in h.points.items():
+            names[point] = identifier(name, taken)
+        for body in h.bodies:
+            names[body] = identifier(body.name + ("_body" if isinstance(body, me.RigidBody)
+                                                  else "_particle"), taken)
+        for u in eqs.unknowns:
+            base, order = S.base_and_order(u)
+            self.unknown_names[u] = names[u] = identifier(base.name + "p" * order, taken)
+
+    def said(self, *keys) -> list[str]:
         """The statements that give (what, name) of each key, as comment lines."""
         lines = [f"# {quoted_text(at)}" for what, name in keys
-                 for at in statements.get((what, name.upper()), [])]
+                 for at in self.statements.get((what, name.upper()), [])]
         return list(dict.fromkeys(lines))
-    out = [f'"""{quoted_text(eqs.model_name)}: the model in sympy.physics.mechanics, written '
-           f"by autolev from\n{quoted_text(source)} ({quoted_text(eqs.command)}).",
-           "",
-           "Level: mechanics.  Frames, points, particles and rigid bodies, loads and the",
-           "kinematical differential equations as the model gives them; sympy's KanesMethod",
-           "forms the equations of motion when the script is imported.  Importing defines",
-           "`kane` (its equations formed), `constants`, `initial_conditions` and `specified`;",
-           "`python THIS.py [OUT.csv]` integrates from TINITIAL to TFINAL with scipy",
-           f"({eqs.method}, RELERR and ABSERR) and writes the OUTPUT columns as CSV.",
-           '"""',
-           "import sys", "", "import numpy as np", "import sympy as sm",
-           "import sympy.physics.mechanics as me", "from scipy.integrate import solve_ivp", "",
-           "t = me.dynamicsymbols._t", "",
-           "# generalized coordinates and speeds: functions of time"]
-    for q in h.coordinates + h.speeds + h.dependent:
-        out.append(f"{names[q]} = me.dynamicsymbols({str(q.func)!r})")
-    if h.auxiliary:
-        out += ["", "# auxiliary speeds: zero in motion, they bring noncontributing forces "
-                "into evidence"]
-        out += said(("assigned", "AUXILIARY"), ("constrain", "AUXILIARY"))
-        out += [f"{names[u]} = me.dynamicsymbols({str(u.func)!r})" for u in h.auxiliary]
-        out.append("auxiliary = [" + ", ".join(names[u] for u in h.auxiliary) + "]")
-    if h.unknowns:
-        out += ["", "# KANE's unknowns: noncontributing forces, which kane.auxiliary_eqs "
-                "(= 0) give"]
-        out += [f"{names[f]} = me.dynamicsymbols({str(f.func)!r})" for f in h.unknowns]
-    if eqs.specified:
-        out += ["", "# specified quantities: functions of time (values in `specified`)"]
-        out += [f"{names[s]} = me.dynamicsymbols({str(s.func)!r})" for s in h.specified
-                if s in names]
-        out += [f"{names[s]} = {names[f]}.diff(t{f', {order}' if order > 1 else ''})"
-                for s, f, order in rates_of_specified]
-    if h.constants:
-        out += ["", "# constants"]
-        out += [f"{names[c]} = sm.Symbol({c.name!r})" for c in h.constants]
-    out += ["", "# reference frames, oriented as the model orients them, with its angular "
-            "velocities", f"{names[h.newtonian]} = me.ReferenceFrame({h.newtonian.name!r})"]
-    for parent, child, dcm, w in h.orientations:
-        out += said(("orientation", child.name), ("angular velocity", child.name))
-        out.append(f"{names[child]} = me.ReferenceFrame({child.name!r})")
-        rotation = simple_rotation(dcm)
-        if rotation is not None:
-            k, angle = rotation
-            out.append(f"{names[child]}.orient_axis({names[parent]}, {printer.unit(parent, k)}"
-                       f", {p(angle)})")
-        else:
-            out.append(f"{names[child]}.orient_explicit({names[parent]}, sm.Matrix(["
-                       + ", ".join("[" + ", ".join(p(e) for e in dcm.row(r)) + "]"
-                                   for r in range(3)) + "]))")
-        if w is not None:
-            out.append(f"{names[child]}.set_ang_vel({names[parent]}, {printer.vector(w)})")
-    out += ["", "# points: positions from the Newtonian origin, velocities in "
-            f"{h.newtonian.name} of those with a mass or a load"]
-    out += [f"{names[pt]} = me.Point({name!r})" for name, pt in h.points.items()]
-    for point, base, r in h.positions:
-        out += said(("position", f"{base.name}/{point.name}"),
-                    ("position", f"{point.name}/{base.name}"))
-        out.append(f"{names[point]}.set_pos({names[base]}, {printer.vector(r)})")
-    for name, v in h.velocities.items():
-        out += said(("velocity", name))
-        out.append(f"{names[h.points[name]]}.set_vel({names[h.newtonian]}, "
-                   f"{printer.vector(v)})")
-    out += ["", "# particles and rigid bodies: masses and central inertias"]
-    for body in h.bodies:
-        out += said(("mass", body.name), ("inertia", body.name))
-        if isinstance(body, me.RigidBody):
-            dyadic, about = body.inertia
-            out.append(f"{names[body]} = me.RigidBody({body.name!r}, "
-                       f"{names[body.masscenter]}, {names[body.frame]}, {p(body.mass)}, "
-                       f"({printer.dyadic(dyadic, body.frame)}, {names[about]}))")
-        else:
-            out.append(f"{names[body]} = me.Particle({body.name!r}, {names[body.point]}, "
-                       f"{p(body.mass)})")
-    out.append("bodies = [" + ", ".join(names[b] for b in h.bodies) + "]")
-    out += ["", "# loads: forces on points, torques on frames", *said(("gravity", "*")),
-            "loads = ["]
-    for on, v in h.loads:
-        out += ["    " + line for line in said(("load", on.name))]
-        out.append(f"    ({names[on]}, {printer.vector(v)}),")
-    out += ["]", "", "# kinematical differential equations (each = 0)", "kd_eqs = ["]
-    for q, equation in zip(coordinates, h.kinematical_equations):
-        defined = where.get(q.name.upper() + "P")
-        out += [f"    # {quoted_text(defined)}"] if defined else []
-        rate = h.states[q].diff(me.dynamicsymbols._t) - equation
-        out.append(f"    {names[q]}.diff(t) - "
-                   f"{printer.parenthesize(rate, PRECEDENCE['Add'])},")
-    out += ["]"]
-    constrained = ""
-    if h.dependent:
-        out += ["", "# velocity constraints (each = 0), which give the dependent speeds "
-                "(CONSTRAIN(DEPENDENT[...]));",
-                "# KanesMethod solves them by Cramer's rule: its default LU divides by "
-                "pivots that",
-                "# vanish at some states where the constraints are regular (0/0)",
-                *said(("assigned", "DEPENDENT"), ("constrain", "DEPENDENT")),
-                "velocity_constraints = ["]
-        out += [f"    {p(c)}," for c in h.velocity_constraints] + ["]"]
-        out.append("dependent = [" + ", ".join(names[u] for u in h.dependent) + "]")
-        constrained += (", u_dependent=dependent, velocity_constraints=velocity_constraints"
-                        f", constraint_solver={CONSTRAINT_SOLVER!r}")
-    if h.auxiliary:
-        constrained += ", u_auxiliary=auxiliary"
-    out += ["",
-            f"kane = me.KanesMethod({names[h.newtonian]}, q_ind=["
-            + ", ".join(names[q] for q in h.coordinates) + "], u_ind=["
-            + ", ".join(names[u] for u in h.speeds) + "], kd_eqs=kd_eqs"
-            + constrained + ")",
-            "kane.kanes_equations(bodies, loads)", "",
-            "# as one system: full_mass * d(states)/dt = full_forcing",
-            "states = list(kane.q) + list(kane.u)"]
-    if h.auxiliary:
-        out += ["# the auxiliary speeds, which the velocity constraints read, are zero in "
+
+    def description(self) -> list:
+        return ["Level: mechanics.  Frames, points, particles and rigid bodies, loads and the",
+                "kinematical differential equations as the model gives them; sympy's KanesMethod",
+                "forms the equations of motion when the script is imported.  Importing defines",
+                "`kane` (its equations formed), `constants`, `initial_conditions` and "
+                "`specified`;"]
+
+    def symbols(self) -> list:
+        """The coordinates and speeds, auxiliary speeds, KANE's unknowns, specified
+        quantities (and their rates) and constants."""
+        h, names = self.h, self.names
+        out = ["# generalized coordinates and speeds: functions of time"]
+        out += [f"{names[q]} = me.dynamicsymbols({str(q.func)!r})"
+                for q in h.coordinates + h.speeds + h.dependent]
+        if h.auxiliary:
+            out += ["", "# auxiliary speeds: zero in motion, they bring noncontributing forces "
+                    "into evidence"]
+            out += self.said(("assigned", "AUXILIARY"), ("constrain", "AUXILIARY"))
+            out += [f"{names[u]} = me.dynamicsymbols({str(u.func)!r})" for u in h.auxiliary]
+            out.append("auxiliary = [" + ", ".join(names[u] for u in h.auxiliary) + "]")
+        if h.unknowns:
+            out += ["", "# KANE's unknowns: noncontributing forces, which kane.auxiliary_eqs "
+                    "(= 0) give"]
+            out += [f"{names[f]} = me.dynamicsymbols({str(f.func)!r})" for f in h.unknowns]
+        if self.eqs.specified:
+            out += ["", "# specified quantities: functions of time (values in `specified`)"]
+            out += [f"{names[s]} = me.dynamicsymbols({str(s.func)!r})" for s in h.specified
+                    if s in names]
+            out += [f"{names[s]} = {names[f]}.diff(t{f', {order}' if order > 1 else ''})"
+                    for s, f, order in self.rates_of_specified]
+        if h.constants:
+            out += ["", "# constants"]
+            out += [f"{names[c]} = sm.Symbol({c.name!r})" for c in h.constants]
+        return out
+
+    def frames(self) -> list:
+        """The frames, oriented (orient_axis for a simple rotation), with their angular
+        velocities."""
+        h, names, p = self.h, self.names, self.printed
+        out = ["", "# reference frames, oriented as the model orients them, with its angular "
+               "velocities", f"{names[h.newtonian]} = me.ReferenceFrame({h.newtonian.name!r})"]
+        for parent, child, dcm, w in h.orientations:
+            out += self.said(("orientation", child.name), ("angular velocity", child.name))
+            out.append(f"{names[child]} = me.ReferenceFrame({child.name!r})")
+            rotation = simple_rotation(dcm)
+            if rotation is not None:
+                k, angle = rotation
+                out.append(f"{names[child]}.orient_axis({names[parent]}, "
+                           f"{self.printer.unit(parent, k)}, {p(angle)})")
+            else:
+                out.append(f"{names[child]}.orient_explicit({names[parent]}, sm.Matrix(["
+                           + ", ".join("[" + ", ".join(p(e) for e in dcm.row(r)) + "]"
+                                       for r in range(3)) + "]))")
+            if w is not None:
+                out.append(f"{names[child]}.set_ang_vel({names[parent]}, "
+                           f"{self.printer.vector(w)})")
+        return out
+
+    def points(self) -> list:
+        h, names = self.h, self.names
+        out = ["", "# points: positions from the Newtonian origin, velocities in "
+               f"{h.newtonian.name} of those with a mass or a load"]
+        out += [f"{names[pt]} = me.Point({name!r})" for name, pt in h.points.items()]
+        for point, base, r in h.positions:
+            out += self.said(("position", f"{base.name}/{point.name}"),
+                             ("position", f"{point.name}/{base.name}"))
+            out.append(f"{names[point]}.set_pos({names[base]}, {self.printer.vector(r)})")
+        for name, v in h.velocities.items():
+            out += self.said(("velocity", name))
+            out.append(f"{names[h.points[name]]}.set_vel({names[h.newtonian]}, "
+                       f"{self.printer.vector(v)})")
+        return out
+
+    def bodies(self) -> list:
+        """The particles and rigid bodies (a body's inertia about its mass center)."""
+        h, names, p = self.h, self.names, self.printed
+        out = ["", "# particles and rigid bodies: masses and central inertias"]
+        for body in h.bodies:
+            out += self.said(("mass", body.name), ("inertia", body.name))
+            if isinstance(body, me.RigidBody):
+                dyadic, about = body.inertia
+                out.append(f"{names[body]} = me.RigidBody({body.name!r}, "
+                           f"{names[body.masscenter]}, {names[body.frame]}, {p(body.mass)}, "
+                           f"({self.printer.dyadic(dyadic, body.frame)}, {names[about]}))")
+            else:
+                out.append(f"{names[body]} = me.Particle({body.name!r}, "
+                           f"{names[body.point]}, {p(body.mass)})")
+        return out + ["bodies = [" + ", ".join(names[b] for b in h.bodies) + "]"]
+
+    def loads(self) -> list:
+        out = ["", "# loads: forces on points, torques on frames",
+               *self.said(("gravity", "*")), "loads = ["]
+        for on, v in self.h.loads:
+            out += ["    " + line for line in self.said(("load", on.name))]
+            out.append(f"    ({self.names[on]}, {self.printer.vector(v)}),")
+        return out + ["]"]
+
+    def kinematics(self) -> list:
+        """`kd_eqs`: each coordinate's rate less what the model says it is."""
+        out = ["", "# kinematical differential equations (each = 0)", "kd_eqs = ["]
+        for q, equation in zip(self.coordinates, self.h.kinematical_equations):
+            defined = self.where.get(q.name.upper() + "P")
+            out += [f"    # {quoted_text(defined)}"] if defined else []
+            rate = self.h.states[q].diff(me.dynamicsymbols._t) - equation
+            out.append(f"    {self.names[q]}.diff(t) - "
+                       f"{self.printer.parenthesize(rate, PRECEDENCE['Add'])},")
+        return out + ["]"]
+
+    def constraints(self) -> list:
+        """The velocity constraints that give the dependent speeds (none without)."""
+        h = self.h
+        if not h.dependent:
+            return []
+        return (["", "# velocity constraints (each = 0), which give the dependent speeds "
+                 "(CONSTRAIN(DEPENDENT[...]));",
+                 "# KanesMethod solves them by Cramer's rule: its default LU divides by "
+                 "pivots that",
+                 "# vanish at some states where the constraints are regular (0/0)",
+                 *self.said(("assigned", "DEPENDENT"), ("constrain", "DEPENDENT")),
+                 "velocity_constraints = ["]
+                + [f"    {self.printed(c)}," for c in h.velocity_constraints] + ["]"]
+                + ["dependent = [" + ", ".join(self.names[u] for u in h.dependent) + "]"])
+
+    def kanes_method(self) -> list:
+        """`kane`, its equations formed, and them as one system."""
+        h, names = self.h, self.names
+        constrained = ""
+        if h.dependent:
+            constrained += (", u_dependent=dependent, velocity_constraints="
+                            f"velocity_constraints, constraint_solver={CONSTRAINT_SOLVER!r}")
+        if h.auxiliary:
+            constrained += ", u_auxiliary=auxiliary"
+        out = ["",
+               f"kane = me.KanesMethod({names[h.newtonian]}, q_ind=["
+               + ", ".join(names[q] for q in h.coordinates) + "], u_ind=["
+               + ", ".join(names[u] for u in h.speeds) + "], kd_eqs=kd_eqs"
+               + constrained + ")",
+               "kane.kanes_equations(bodies, loads)", "",
+               "# as one system: full_mass * d(states)/dt = full_forcing",
+               "states = list(kane.q) + list(kane.u)"]
+        if h.auxiliary:
+            return out + [
+                "# the auxiliary speeds, which the velocity constraints read, are zero in "
                 "motion",
                 "full_mass, full_forcing = (",
                 "    m.xreplace({u.diff(t): 0 for u in auxiliary}).xreplace("
                 "dict.fromkeys(auxiliary, 0))",
                 "    for m in (kane.mass_matrix_full, kane.forcing_full))", ""]
-    else:
-        out += ["full_mass = kane.mass_matrix_full", "full_forcing = kane.forcing_full", ""]
-    state_names = [names[s] for s in h.coordinates + h.speeds + h.dependent]
-    if eqs.unknowns:
-        out += ["# the rates solved from the mass matrix, as the outputs use them"]
-        out += [f"{unknown_names[u]} = {names[state_of(u)]}.diff(t)" for u in eqs.unknowns]
-    if before or after:
-        out += ["# intermediates the outputs use (Autolev's Z's, the model's definitions), as",
-                "# functions of time, and what each is, in the order they are computed"]
-        out += [f"{names[z]} = me.dynamicsymbols({names[z]!r})" for z, _ in before + after
-                if z not in declared]
-    out += ["intermediates = ["]
-    out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in before]
-    out += ["]", "# those that need the solved rates", "after_solving = ["]
-    out += [f"    ({names[z]}, {expression_text(p, e)})," for z, e in after] + ["]"]
-    out += ["unknowns = [" + ", ".join(unknown_names[u] for u in eqs.unknowns) + "]",
+        return out + ["full_mass = kane.mass_matrix_full", "full_forcing = kane.forcing_full",
+                      ""]
+
+    def intermediates(self) -> list:
+        """The solved rates and the definitions the outputs use, and where the solved
+        rates are in the state."""
+        h, eqs, names = self.h, self.eqs, self.names
+        out = []
+        if eqs.unknowns:
+            out += ["# the rates solved from the mass matrix, as the outputs use them"]
+            out += [f"{self.unknown_names[u]} = {names[state_of(u)]}.diff(t)"
+                    for u in eqs.unknowns]
+        if self.before or self.after:
+            out += ["# intermediates the outputs use (Autolev's Z's, the model's definitions), "
+                    "as",
+                    "# functions of time, and what each is, in the order they are computed"]
+            out += [f"{names[z]} = me.dynamicsymbols({names[z]!r})"
+                    for z, _ in self.before + self.after if z not in self.declared]
+        out += self.definition_lists("# those that need the solved rates")
+        state_names = [names[s] for s in h.coordinates + h.speeds + h.dependent]
+        return out + [
+            "unknowns = [" + ", ".join(self.unknown_names[u] for u in eqs.unknowns) + "]",
             "unknown_states = [" + ", ".join(
                 str(state_names.index(names[state_of(u)])) for u in eqs.unknowns) + "]",
             ""]
-    out += values_text(eqs, names, p)
-    if h.dependent:
-        out += ["# the dependent speeds start where the velocity constraints hold (once every",
-                "# constant has a value)",
-                "if None not in constants.values():",
-                "    at_start = {t: integration['TINITIAL'], **constants, **initial_conditions,",
-                "                **{s: v(integration['TINITIAL']) if callable(v) else v",
-                "                   for s, v in specified.items()}"
-                + (", **dict.fromkeys(auxiliary, 0)}" if h.auxiliary else "}"),
-                "    coefficients, rest = sm.linear_eq_to_matrix(",
-                "        [me.msubs(c, kane.kindiffdict()) for c in velocity_constraints], "
-                "dependent)",
-                "    initial_conditions.update(zip(dependent, np.linalg.solve(",
-                "        np.array(coefficients.xreplace(at_start), dtype=float),",
-                "        np.array(rest.xreplace(at_start), dtype=float).ravel())))"]
-    out += ["", "", RUNNER]
-    return "\n".join(out) + "\n"
+
+    def values(self) -> list:
+        """The equations level's values, and the dependent speeds' where the velocity
+        constraints hold."""
+        out = super().values()
+        if not self.h.dependent:
+            return out
+        return out + [
+            "# the dependent speeds start where the velocity constraints hold (once every",
+            "# constant has a value)",
+            "if None not in constants.values():",
+            "    at_start = {t: integration['TINITIAL'], **constants, **initial_conditions,",
+            "                **{s: v(integration['TINITIAL']) if callable(v) else v",
+            "                   for s, v in specified.items()}"
+            + (", **dict.fromkeys(auxiliary, 0)}" if self.h.auxiliary else "}"),
+            "    coefficients, rest = sm.linear_eq_to_matrix(",
+            "        [me.msubs(c, kane.kindiffdict()) for c in velocity_constraints], "
+            "dependent)",
+            "    initial_conditions.update(zip(dependent, np.linalg.solve(",
+            "        np.array(coefficients.xreplace(at_start), dtype=float),",
+            "        np.array(rest.xreplace(at_start), dtype=float).ravel())))"]
 
 
 def _definitions_wanted(eqs: Equations, definitions: list) -> set:
@@ -366,14 +429,14 @@ def sympy_export(model, source: str, command=None, infile=None, overrides=None,
                        missing_values=missing_values)
     lacking = [c.name for c, v in eqs.constants.items() if v is None]
     if level == "equations":
-        return SympyExport(sympy_script(eqs, source), lacking)
+        return SympyExport(EquationsScript(eqs, source).text(), lacking)
     why, h = mechanics_handoff(model, command, eqs)
     if h is not None:
-        return SympyExport(mechanics_script(h, eqs, model, source), lacking)
+        return SympyExport(MechanicsScript(h, eqs, model, source).text(), lacking)
     if level == "mechanics":
         raise AutolevModelError(f"the mechanics level does not take this model: {why} "
                                 "(--level equations writes its equations)")
-    return SympyExport(sympy_script(eqs, source, why), lacking)
+    return SympyExport(EquationsScript(eqs, source, why).text(), lacking)
 
 
 def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Handoff | None]:

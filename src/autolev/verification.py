@@ -38,7 +38,7 @@ from .irbuild import Builder
 from .loader import load_translation
 from .pipeline import translation
 from .printed import read_plain
-from .engine.integrate import Progress
+from .engine.progress import Progress
 from .runtime.calculus import NumericPoint
 from .runtime.steps import SlowStep
 from .runtime.symbols import Z
@@ -383,7 +383,7 @@ def verify(path, points: int = 3, tolerance: float = 2e-6,
         return report
     model = replayed.model
     sample = _SamplePoints(model, points)
-    compared = Progress(progress, 0, count, progress is not None, "responses compared")
+    compared = Progress(progress, "responses compared", 0, count)
     for k, r in enumerate(session.responses):
         compared.update(k)
         if k in refused:

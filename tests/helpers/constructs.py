@@ -1,5 +1,5 @@
 """tests/fixtures/constructs.txt: Autolev statement -> the Python written for it, one
-construct per case (as sqlglot keeps its fixtures).  Read by tests/test_constructs.py,
+construct per case (as sqlglot keeps its fixtures).  Read by tests/translate/test_constructs.py,
 rewritten only by tools/update_goldens.py."""
 from __future__ import annotations
 

@@ -136,6 +136,10 @@ needs_cc = pytest.mark.skipif(compiler() is None, reason="no C compiler on this 
 needs_octave = pytest.mark.skipif(
     octave() is None, reason="GNU Octave runs the Matlab programs; it is not installed "
     "(Debian: apt install octave)")
+GFORTRAN = shutil.which("gfortran")
+needs_gfortran = pytest.mark.skipif(
+    GFORTRAN is None, reason="gfortran compiles the Fortran programs; it is not installed "
+    "(Debian: apt install gfortran)")
 
 
 def run_program(program: Path, flags=("-O2",)):

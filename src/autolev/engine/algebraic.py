@@ -12,7 +12,7 @@ import numpy as np
 
 from .code_kinds import CodeKind
 from .errors import AutolevModelError
-from .integrate import Progress
+from .progress import Progress
 from .results import split_outputs, tables_of
 
 
@@ -63,7 +63,7 @@ def run_algebraic(system, given: AlgebraicInputs, result, writer, kind,
     n = len(given.unknown_names)
     guess = np.array(given.guesses, dtype=float)
     t = given.t
-    bar = Progress(progress, 0, len(points), progress is not None, "point")
+    bar = Progress(progress, "point", 0, len(points))
     for k, point in enumerate(points):
         bar.update(k + 1)
         if not keep_rows:

@@ -4,19 +4,19 @@ rows written as they come, the mass matrix's conditioning watched.
 from __future__ import annotations
 
 import math
-import sys
 import time
 import warnings
 
 import numpy as np
 
 from .errors import AutolevModelError
-from .integrate import (Integration, IntegrationFailure, Progress, Schedule, failure_basis,
+from .integrate import (Integration, IntegrationFailure, Schedule, failure_basis,
                         integrate_projected)
 from .integration_notes import loose_tolerance_note, stiff_note, switch_when_stiff
 from .integrators import Integrator
 from .results import split_output_rows, split_outputs, tables_of
 from .massmatrix import SingularMassMatrix, scaled_condition
+from .progress import Progress
 
 # the scaled condition number of the mass matrix beyond which a run warns (the
 # accelerations then keep fewer than 6 of their 16 significant digits)
@@ -181,8 +181,8 @@ def run_dynamics(system, inputs, result, writer, integrator: Integrator, progres
         except SingularMassMatrix as exc:
             raise IntegrationFailure(str(exc), t, y) from None
 
-    bar = Progress(sys.stderr if progress is None else progress, sched.tinitial,
-                   sched.tfinal, enabled=progress is not False and progress is not None)
+    bar = Progress(None if progress is False else progress, "T", sched.tinitial,
+                   sched.tfinal)
     start = time.perf_counter()
     abserr, relerr = inputs.internal("ABSERR"), inputs.internal("RELERR")
     try:

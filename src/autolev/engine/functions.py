@@ -4,7 +4,7 @@ double and complex precision, the derivative, and the spelling in every language
 program is printed in.  Every other place that knows a function reads it here: the
 translator, the printers (C, Python, Fortran, Matlab), a program's walk and its numpy
 fallback, the dual numbers, fastdiff and the complex walk of the definitions; a
-function missing from one of them is a failing test (tests/test_function_specs.py),
+function missing from one of them is a failing test (tests/engine/test_function_specs.py),
 not a failing run.  Without sympy, so that a warm run reads it too.
 
 A spelling is a callee (`sin`, `math.sin`: called with the printed arguments) or a

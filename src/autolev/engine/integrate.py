@@ -29,7 +29,6 @@ from __future__ import annotations
 
 import itertools
 import math
-import time as _time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
@@ -37,8 +36,9 @@ import numpy as np
 
 from . import cloop, rk45_tableau
 from .integrators import SCIPY_METHODS, Integrator, integrator_named
+from .progress import Progress
 
-__all__ = ["SCIPY_METHODS", "Integration", "IntegrationFailure", "KuttaMerson", "Progress",
+__all__ = ["SCIPY_METHODS", "Integration", "IntegrationFailure", "KuttaMerson",
            "RK45Interval", "Schedule", "failure_basis", "integrate", "integrate_projected"]
 
 
@@ -366,43 +366,6 @@ class RK45Interval:
                 raise IntegrationFailure(f"the state is not finite at T = {t + h:.6g}", t, y)
             y, K[0], t = y_new, K[6], t_new
         return y
-
-
-class Progress:
-    """A progress line on stderr for runs longer than a second."""
-
-    def __init__(self, stream, t0: float, t1: float, enabled: bool, what: str = "T"):
-        """`what`: the name of what goes from t0 to t1 (T, or a sweep's point)."""
-        self.stream, self.what = stream, what
-        self.t0, self.t1 = t0, t1
-        self.enabled = enabled and stream is not None
-        self.start = _time.monotonic()
-        self.last = float("-inf")
-        self.shown = False
-        self.tty = bool(getattr(stream, "isatty", lambda: False)())
-
-    def update(self, t: float) -> None:
-        if not self.enabled:
-            return
-        now = _time.monotonic()
-        if now - self.start < 1.0 or now - self.last < (0.2 if self.tty else 5.0):
-            return
-        self.last = now
-        span = self.t1 - self.t0
-        frac = (t - self.t0) / span if span else 1.0
-        text = (f"  {self.what} = {t:.6g} of {self.t1:.6g} ({100 * frac:.0f}%), "
-                f"{now - self.start:.1f} s")
-        if self.tty:
-            self.stream.write("\r" + text + "   ")
-        else:
-            self.stream.write(text + "\n")
-        self.stream.flush()
-        self.shown = True
-
-    def done(self) -> None:
-        if self.shown and self.tty:
-            self.stream.write("\n")
-            self.stream.flush()
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,7 @@
 """The integrators a run can ask for (`--method NAME`, `method="NAME"`), one record each
 in one table, as scipy's `solve_ivp` keeps its METHODS and pydy's System its
 `ode_solver`.  What differs between them is declared here, and no other module names
-one (tests/test_integrators.py).
+one (tests/engine/test_integrators.py).
 
 The records say which of the engine's ways of stepping runs each (integrate.py):
 Autolev's Kutta-Merson (`KuttaMerson`; loop.c's method 0), scipy's solver classes by

@@ -1,7 +1,7 @@
 """The Dormand-Prince 5(4) tableau of scipy's RK45 (Autolev's Matlab programs call
 ode45, the same pair): the compiled loop integrates with these numbers, so a run does
 not import scipy.integrate to read them.  Each entry is the fraction evaluated in
-double precision as scipy evaluates it; tests/test_libraries.py compares them."""
+double precision as scipy evaluates it; tests/runtime/test_libraries.py compares them."""
 
 STAGES = 6
 

@@ -10,16 +10,18 @@ import io
 import json
 import os
 from pathlib import Path
-from time import monotonic
 
 import numpy as np
 
 from .animation import MARGIN, Motion, grid_lines
 from ..engine.errors import AutolevModelError
 from ..engine.outputs import temporary_beside, write_whole
+from ..engine.progress import Progress
 
 # the 3-D view the GIF is drawn in (the page starts from it too): radians about up, right
 YAW, PITCH = 0.6, 0.4
+# a movie's progress line: `p.gif: frame 3 of 40 (8%)`
+FRAMES = "{what}: frame {position} of {end} ({percent:.0f}%)"
 
 
 # -- the HTML page ---------------------------------------------------------------------------
@@ -221,35 +223,6 @@ def shown_labels(boxes) -> list[bool]:
     return shown
 
 
-class _Progress:
-    """A line on a stream while frames are drawn, as `autolev run` shows its
-    integration's: after a second, every 0.2 s on a terminal (in place) or 5 s otherwise."""
-
-    def __init__(self, stream, what: str, total: int):
-        self.stream, self.what, self.total = stream, what, total
-        self.start = monotonic()
-        self.last = float("-inf")
-        self.shown = False
-        self.tty = stream is not None and stream.isatty()
-
-    def update(self, done: int) -> None:
-        now = monotonic()
-        if self.stream is None or now - self.start < 1.0 or \
-                now - self.last < (0.2 if self.tty else 5.0):
-            return
-        self.last = now
-        text = (f"  {self.what}: frame {done} of {self.total} "
-                f"({100 * done / self.total:.0f}%), {now - self.start:.1f} s")
-        self.stream.write("\r" + text + "   " if self.tty else text + "\n")
-        self.stream.flush()
-        self.shown = True
-
-    def done(self) -> None:
-        if self.shown and self.tty:
-            self.stream.write("\n")
-            self.stream.flush()
-
-
 def write_movie(m: Motion, path: Path, fps: int = 25, progress=None) -> Path:
     """A GIF (Pillow, which matplotlib brings) or an MP4 (needs ffmpeg) by the suffix;
     `progress`: a stream for progress lines (None: quiet)."""
@@ -259,7 +232,8 @@ def write_movie(m: Motion, path: Path, fps: int = 25, progress=None) -> Path:
     if mp4 and not mpl_animation.FFMpegWriter.isAvailable():
         raise AutolevModelError("an MP4 needs ffmpeg, which is not installed; write a "
                                 "GIF or the HTML page instead")
-    report = _Progress(progress, path.name, len(m.times))
+    # as `autolev run` shows its integration's: a line redrawn in place on a terminal
+    report = Progress(progress, path.name, 0, len(m.times), says=FRAMES)
     frames = _frames(m, report)
     if mp4:
         _write_mp4(frames, path, fps)
@@ -321,7 +295,7 @@ def _write_mp4(frames, path: Path, fps: int) -> None:
         aside.unlink(missing_ok=True)
 
 
-def _frames(m: Motion, report: _Progress):
+def _frames(m: Motion, report: Progress):
     """The movie's frames as RGB arrays: the still parts drawn once, each frame's grid,
     segments and points drawn over them by matplotlib, its labels and time by Pillow
     (matplotlib's text is most of the time a frame takes)."""

@@ -1,6 +1,6 @@
 """The private parts of sympy and scipy autolev leans on, each behind one function.
 
-Each is a fact a library does not promise to keep; tests/test_libraries.py checks each
+Each is a fact a library does not promise to keep; tests/runtime/test_libraries.py checks each
 against what autolev needs of it, so a release that changes one fails there, by name,
 not somewhere deep in a run.  Where a library changed one, the function raises
 LibraryChanged (an internal error: autolev must follow the library, the user cannot).

@@ -30,6 +30,7 @@ import numpy as np
 from ..engine.errors import AutolevModelError
 from .io import INTEGRATION_PARAMETERS
 from ..engine.options import RunOptions
+from ..engine.progress import Progress
 from .numerics.run import run_command
 
 STUDIES = ("linearize", "simulate")
@@ -48,6 +49,8 @@ _WORKER_MODELS = threading.local()
 _FORKED: dict = {}
 # evaluated here, without workers, when the points left would take less than this
 LOCAL_SECONDS = 2.0
+# a progress line's words
+SWEEP = "{what}: {position}/{end} points"
 
 
 def grid(**axes) -> list[dict]:
@@ -120,7 +123,11 @@ def sweep(model, points, what: str = "linearize", *, executor=None,
         raise TypeError(f"sweep(what={what!r}) takes no option {', '.join(sorted(unknown))}")
     rows = Points.of(points)
     _check_names(model, rows.names, what)
-    report = _Progress(len(rows), progress)
+    stream = None if progress is False else (
+        sys.stderr if progress is None or progress is True else progress)
+    # a line per 5 % or 10 s, timed from the first point (which builds and compiles)
+    report = Progress(stream, "sweep", 0, len(rows), says=SWEEP, wait=3.0, every=10.0,
+                      in_place=False, steps=20, from_first=True)
     results = Results(len(rows))
     if len(rows) and executor is not None:
         _on_executor(model, executor, what, rows, options, collect, chunk_size, report,
@@ -488,40 +495,3 @@ def _cell(value) -> str:
         return f"{value:.17g}"
     text = str(value)
     return '"' + text.replace('"', '""') + '"' if any(c in text for c in ',"\n') else text
-
-
-class _Progress:
-    """Progress lines on a stream once the points after the first (which builds and
-    compiles) have taken a few seconds: at every 5 % of the points, or every 10 s."""
-
-    def __init__(self, total: int, stream):
-        self.total, self.count = total, 0
-        self.stream = None if stream is False else (
-            sys.stderr if stream is None or stream is True else stream)
-        self.start = self.last = None
-        self.step = -1                  # the last 5 % step shown
-
-    def advance(self, n: int) -> None:
-        self.count += n
-        if self.stream is None:
-            return
-        now = time.monotonic()
-        if self.start is None:          # the clock starts once the first point is done
-            self.start = self.last = now
-            self.first = self.count
-            return
-        step = self.count * 20 // max(self.total, 1)
-        if now - self.start >= 3 and (step > self.step or now - self.last >= 10):
-            self._line(now, step)
-
-    def done(self) -> None:
-        if self.stream is not None and self.step >= 0 and self.step < 20:
-            self._line(time.monotonic(), 20)
-
-    def _line(self, now: float, step: int) -> None:
-        elapsed = now - self.start
-        left = elapsed * (self.total - self.count) / max(self.count - self.first, 1)
-        print(f"  sweep: {self.count}/{self.total} points, {elapsed:.1f} s"
-              + (f", about {left:.0f} s left" if self.count < self.total else ""),
-              file=self.stream, flush=True)
-        self.last, self.step = now, step

@@ -11,7 +11,7 @@ import autolev
 from autolev.cli import main
 from autolev.engine.results import matlab_names
 from helpers import EXAMPLES
-from test_linearize import PENDULUM
+from helpers.models import PENDULUM
 
 
 def autolev_table(path):

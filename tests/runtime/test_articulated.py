@@ -1,6 +1,6 @@
 """The articulated-body recursion (runtime/articulated.py) solves a tree's Kane's
 equations: its accelerations equal those of sympy's KanesMethod built from scratch
-(tests/test_chain_equations.py's systems), loads on points and frames that no body
+(tests/runtime/test_chain_equations.py's systems), loads on points and frames that no body
 carries equal Kane's own Fr, and a model that is not such a tree is refused, so that
 its mass matrix is solved instead (with the same rows in a run)."""
 from __future__ import annotations

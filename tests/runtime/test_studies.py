@@ -12,7 +12,7 @@ import pytest
 import autolev
 from autolev.runtime import studies
 from autolev.engine.errors import AutolevModelError
-from test_linearize import PENDULUM
+from helpers.models import PENDULUM
 
 
 @pytest.fixture(scope="module")
@@ -160,8 +160,9 @@ def test_a_data_frame_when_pandas_is_installed(pendulum):
 
 def test_progress_lines_for_a_long_study(pendulum, monkeypatch):
     import io
+    from autolev.engine import progress
     clock = iter(range(0, 1000, 2))
-    monkeypatch.setattr(studies.time, "monotonic", lambda: float(next(clock)))
+    monkeypatch.setattr(progress.time, "monotonic", lambda: float(next(clock)))
     stream = io.StringIO()
     pendulum.sweep({"L": np.linspace(1, 2, 10)}, workers=1, as_frame=False, progress=stream)
     lines = stream.getvalue().splitlines()

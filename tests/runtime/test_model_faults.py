@@ -11,7 +11,7 @@ from autolev.cli import main
 # Each reaches the runtime: the matrix is a product (its shape is not followed by the
 # translation) and the number a name given a symbol; a literal matrix of the wrong shape
 # or a declared name where a number is needed are reported by check
-# (tests/test_function_kinds.py)
+# (tests/translate/test_function_kinds.py)
 MODEL_FAULTS = [
     ("X = TRACE(2*[1, 2])", 1, "TRACE needs a square matrix, not 1x2"),
     ("CONSTANTS K\nN = K\nX = DIAGMAT(N, 1)", 3,

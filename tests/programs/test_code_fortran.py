@@ -5,7 +5,6 @@ the reference runs of Autolev's own Fortran programs."""
 import csv
 import math
 import re
-import shutil
 import subprocess
 import sys
 
@@ -20,11 +19,8 @@ from autolev.programs.f import FortranPrinter, statement
 from autolev.programs.f_subroutines import kutta_and_solve
 from autolev.engine.errors import AutolevModelError
 from helpers import CORPUS, EXAMPLES, ROOT, SHARED
+from helpers.programs import GFORTRAN, needs_gfortran
 
-GFORTRAN = shutil.which("gfortran")
-needs_gfortran = pytest.mark.skipif(
-    GFORTRAN is None, reason="gfortran compiles the Fortran programs; it is not installed "
-    "(Debian: apt install gfortran)")
 # EQNS1(T, VAR, VARp, BOUNDARY) has Autolev's arguments whether the model reads them
 FLAGS = ["-Wall", "-Wno-unused-dummy-argument", "-O2"]
 

@@ -5,20 +5,16 @@ import os
 import subprocess
 import sys
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import autolev
-from helpers import load_model
+from helpers import EXAMPLES, load_model
 from autolev.engine import clibrary, files, integrate
 from autolev.runtime.numerics import codegen
 from autolev.runtime.numerics.inputs import InputFileError
 
-HERE = Path(__file__).parent
-DATA = HERE / "data" / "numerics"
-EXAMPLES = HERE.parent / "autolev_examples"
 
 
 load = load_model
@@ -500,10 +496,11 @@ def test_encode_values_are_written_with_one_based_names(tmp_path):
 
 def test_progress_line_appears_only_after_a_second(monkeypatch):
     import io
+    from autolev.engine import progress
     clock = iter([0.0, 0.5, 1.5, 1.6, 7.0])
-    monkeypatch.setattr(integrate._time, "monotonic", lambda: next(clock))
+    monkeypatch.setattr(progress.time, "monotonic", lambda: next(clock))
     stream = io.StringIO()
-    bar = integrate.Progress(stream, 0.0, 10.0, enabled=True)   # start: t = 0.0 s
+    bar = progress.Progress(stream, "T", 0.0, 10.0)     # start: t = 0.0 s
     bar.update(1.0)              # 0.5 s: too early
     bar.update(2.0)              # 1.5 s: shown
     bar.update(2.5)              # 1.6 s: not a tty, next line only after 5 s

@@ -13,7 +13,9 @@ from pathlib import Path
 
 import pytest
 
-HARMONIC = Path(__file__).parent / "data" / "numerics" / "harmonic.al"
+from helpers import NUMERICS_DATA
+
+HARMONIC = NUMERICS_DATA / "harmonic.al"
 SLOW = 4        # seconds the link sleeps: longer than the model's Python run
 
 pytestmark = pytest.mark.skipif(shutil.which("gcc") is None or os.name != "posix",

@@ -28,8 +28,7 @@ from autolev.runtime.sympy_functions import sympy_function
 from autolev.translate import translate
 from autolev.translate.functions.table import FUNCTIONS
 from helpers import ROOT
-from helpers.programs import compiler, needs_cc, needs_octave, run_octave
-from test_code_fortran import GFORTRAN, needs_gfortran
+from helpers.programs import GFORTRAN, compiler, needs_cc, needs_gfortran, needs_octave, run_octave
 
 # each record's test line: points of its domain, away from its jumps and poles (a point
 # is the arguments of one call)

@@ -414,10 +414,11 @@ def test_a_figure_with_no_fixed_point_or_several_says_where_it_is_drawn(tmp_path
 
 def test_the_gif_says_how_far_it_is(monkeypatch):
     import io
+    from autolev.engine import progress
     clock = iter(range(0, 1000, 3))               # three seconds between two looks
-    monkeypatch.setattr(animation_output, "monotonic", lambda: next(clock))
+    monkeypatch.setattr(progress.time, "monotonic", lambda: next(clock))
     stream = io.StringIO()                        # not a terminal: a line every 5 s
-    report = animation_output._Progress(stream, "p.gif", 40)
+    report = progress.Progress(stream, "p.gif", 0, 40, says=animation_output.FRAMES)
     for k in range(1, 41):
         report.update(k)
     report.done()
