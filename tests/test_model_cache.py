@@ -606,3 +606,15 @@ def test_a_run_that_fails_fails_again_from_its_plan_with_the_same_advice(cache, 
     for name in names:
         assert (tmp_path / "first" / name).read_bytes() == \
             (tmp_path / "again" / name).read_bytes(), name
+
+
+def test_a_model_built_with_c_is_not_read_back_where_c_is_refused(cache, tmp_path, monkeypatch):
+    # found by bench/fuzz.py --mode stale: AUTOLEV_NO_C=1 after a run with C read the
+    # built model back, whose compiled functions then failed to compile (exit 70)
+    monkeypatch.setenv("AUTOLEV_FOREGROUND", "1")
+    monkeypatch.delenv("AUTOLEV_NO_C", raising=False)
+    assert main(["run", str(PENDULUM), "--out", str(tmp_path / "c"), "-q"]) == 0
+    monkeypatch.setenv("AUTOLEV_NO_C", "1")
+    assert main(["run", str(PENDULUM), "--out", str(tmp_path / "no_c"), "-q"]) == 0
+    assert (tmp_path / "c" / "double_pendulum.1").read_bytes() == \
+        (tmp_path / "no_c" / "double_pendulum.1").read_bytes()

@@ -47,7 +47,9 @@ class Built:
 
 
 def key(code: str, filename: str) -> str:
-    text = f"{code_digest()}\0{filename}\0{code}"
+    # a built model holds compiled functions: the knobs that choose them are in its key
+    from .engine.request import environment
+    text = f"{code_digest()}\0{filename}\0{code}\0{environment()!r}"
     return hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()
 
 
