@@ -20,3 +20,12 @@ def corpus() -> Path:
     if not CORPUS.is_dir():
         pytest.skip(f"corpus not materialized at {CORPUS} (see shared/corpus/materialize.py)")
     return CORPUS
+
+
+@pytest.fixture(autouse=True)
+def _background_left_to_the_command():
+    # the fork of background.py belongs to the `autolev` process alone: a test leaving it
+    # allowed makes every later in-process run fork the test session itself
+    yield
+    from autolev.cli import background
+    assert not background.allowed(), "a test left background.allow() in force"

@@ -2,6 +2,7 @@
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -268,3 +269,14 @@ def test_an_interrupt_while_the_command_line_is_read_is_exit_130(monkeypatch):
         raise KeyboardInterrupt
     monkeypatch.setattr(cli, "build_parser", interrupted)
     assert cli.entry() == 130
+
+
+def test_the_command_once_over_leaves_no_fork_to_later_callers_of_main(monkeypatch):
+    # a test calling entry() left it allowed: every later in-process `run` forked pytest
+    from autolev import cli
+    from autolev.cli import background
+    monkeypatch.setattr(sys, "argv", ["autolev", "--version"])
+    with pytest.raises(SystemExit):
+        cli.entry()
+    assert not background.allowed()
+    assert background.split_off(Path(".")) is None

@@ -70,6 +70,9 @@ def entry() -> int:
         return main()
     except KeyboardInterrupt:       # before main's own handling: reading the command line
         return 130
+    finally:
+        # a caller that goes on after it (a test) must not fork in its later main() calls
+        background.disallow()
 
 
 def _refuse_missing_input_file(ns: argparse.Namespace) -> None:

@@ -46,6 +46,16 @@ def allow() -> None:
     _allowed[0] = True
 
 
+def disallow() -> None:
+    """The command is over: later calls of cli.main wait in the foreground."""
+    _allowed[0] = False
+
+
+def allowed() -> bool:
+    """Whether a command may leave its last wait to a forked child now."""
+    return _allowed[0]
+
+
 def lock_file(model_path: Path) -> Path | None:
     """The lock a model's finishing child holds, or None without a lasting cache."""
     from ..engine import diskcache
@@ -134,7 +144,7 @@ def split_off(out_folder: Path) -> Finishing | None:
     detaches or ends), the child returns its Finishing.  Else None: no background.
     `out_folder`: where the work writes its files (a killed child's partial files
     there are removed)."""
-    if not _allowed[0] or os.name != "posix" or foreground_asked() \
+    if not allowed() or os.name != "posix" or foreground_asked() \
             or threading.active_count() != 1:
         return None
     from ..engine import diskcache
