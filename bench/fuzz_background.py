@@ -213,8 +213,9 @@ def environment(work: Path, tag: str, compiler: str | None, link_sleep: float) -
 
 # The session leader of a terminal case: a job-control shell in a few lines.  It makes
 # the terminal (its stdin) its controlling terminal, starts the command as a job of its
-# own process group in the foreground, continues it (`fg`) after a stop, passes a
-# hang-up on to it, and reports to a file: "job PID", "stopped N", "hangup", "status N".
+# own process group in the foreground, continues it (`fg`) `pause` seconds after a stop
+# (a negative pause: never, as a shell leaves a job stopped), passes a hang-up on to
+# it, and reports to a file: "job PID", "stopped N", "hangup", "status N".
 _SHELL = r"""
 import fcntl, os, signal, sys, termios, time
 report, pause, argv = sys.argv[1], float(sys.argv[2]), sys.argv[3:]
@@ -254,6 +255,8 @@ while True:
     _, how = os.waitpid(job, os.WUNTRACED)
     if os.WIFSTOPPED(how):
         say(f"stopped {os.WSTOPSIG(how)}")
+        if pause < 0:
+            continue
         time.sleep(pause)
         try:
             os.tcsetpgrp(0, job)
@@ -626,7 +629,7 @@ class Play:
         terminal = Terminal() if fault["family"] == "terminal" else None
         try:
             command = Command(self, "faulted", argv, fault["link_sleep"], terminal,
-                              fault.get("pause", 0.0))
+                              fault.get("pause", -1.0))
             self.note("the command started")
             if moment == "early":
                 if command.wait(fault["delay"]):
@@ -634,6 +637,10 @@ class Play:
                 self.apply(command, terminal)
             ended = command.finish()
             self.note(f"the command ended, exit status {ended.status}")
+            stops = [line for line in command.shell_said() if line.startswith("stopped")]
+            if terminal is not None and stops and fault["event"] != "ctrl-z":
+                self.problem("hang", "faulted", f"the command stopped ({stops[0]}) with no "
+                             "^Z typed: a shell leaves it stopped")
             if moment == "compiling":
                 holders = lock_holders(self.tag)
                 time.sleep(fault["delay"])
@@ -688,10 +695,12 @@ def _command_line(pid: int) -> str:
 
 
 def kill_tagged(tag: str) -> None:
-    for _ in range(3):
-        left = fuzz_stale.tagged(tag)
-        if not left:
-            return
+    """Kill the case's processes and wait until they are gone: on a loaded machine a
+    killed process lingers a while, and a later case or test would count it."""
+    deadline = time.monotonic() + 10
+    while left := fuzz_stale.tagged(tag):
+        if time.monotonic() > deadline:
+            raise RuntimeError(f"processes of case {tag} outlived SIGKILL: {left}")
         for pid in left:
             with _gone():
                 os.kill(pid, signal.SIGKILL)

@@ -572,6 +572,17 @@ def background_sleepers() -> list[int]:
     return found
 
 
+def test_a_command_stopped_on_its_terminal_without_a_ctrl_z_is_a_hang(background_shared,
+                                                                     tmp_path, monkeypatch):
+    # as a background writer on a terminal with tostop was (SIGTTOU): a shell leaves it
+    misbehaving(tmp_path, monkeypatch, "import os, signal\n"
+                "os.kill(os.getpid(), signal.SIGSTOP)\n")
+    monkeypatch.setattr(background, "COMMAND_SECONDS", 3.0)
+    case = background_case("terminal", event="tostop", moment="early", delay=0.1)
+    result = background.check_background_case(case, background_shared / "worker-stop")
+    assert result["outcome"] == "hang" and "with no ^Z typed" in result["detail"]
+
+
 def test_a_temporary_the_recovery_run_leaves_is_a_leftover(background_shared, tmp_path,
                                                           monkeypatch):
     misbehaving(tmp_path, monkeypatch, "import os, subprocess, sys\n"
