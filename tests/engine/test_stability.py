@@ -1,6 +1,6 @@
 """Stress cases of the numerics, each with the behaviour that must not regress:
 bad inputs and inertias named, near-singular mass matrices warned about, stiffness
-detected (see also test_compiled_loop.py), constraint drift removed by projection,
+detected (see also tests/engine/test_compiled_loop.py), constraint drift removed by projection,
 energy kept by a conservative run."""
 import math
 import subprocess
