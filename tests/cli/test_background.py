@@ -312,3 +312,50 @@ def test_a_lock_left_by_a_killed_child_is_removed_by_the_next_run(setting, tmp_p
     done = autolev(dict(env, AUTOLEV_FOREGROUND="1"), "run", model, "--out", tmp_path / "o")
     assert done.returncode == 0, done.stderr
     assert not lock.exists()
+
+
+# a shell that outlives its terminal's hang-up and passes nothing on: the command's job
+# meets the hang-up only as EIO on its next write
+_SURVIVING_SHELL = r"""
+import fcntl, os, signal, sys, termios
+report = sys.argv[1]
+fcntl.ioctl(0, termios.TIOCSCTTY, 0)
+signal.signal(signal.SIGHUP, signal.SIG_IGN)
+signal.signal(signal.SIGTTOU, signal.SIG_IGN)
+job = os.fork()
+if job == 0:
+    os.setpgid(0, 0)
+    signal.signal(signal.SIGHUP, signal.SIG_DFL)
+    signal.signal(signal.SIGTTOU, signal.SIG_DFL)
+    os.execv(sys.executable, [sys.executable, "-m", "autolev", *sys.argv[2:]])
+os.setpgid(job, job)
+os.tcsetpgrp(0, job)
+open(report + ".started", "w").close()
+_, how = os.waitpid(job, 0)
+with open(report, "w") as f:
+    f.write(str(os.waitstatus_to_exitcode(how)))
+"""
+
+
+@pytest.mark.parametrize("foreground", ["1", "0"])
+def test_a_terminal_that_hangs_up_ends_the_command_as_a_hang_up(setting, tmp_path,
+                                                                 foreground):
+    # its write's EIO was an internal error (exit 70), or exit 1 when even that message
+    # failed: a user closing a window is no bug of autolev's
+    model, env = setting
+    env["AUTOLEV_FOREGROUND"] = foreground
+    master, slave = os.openpty()
+    report = tmp_path / "status"
+    shell = subprocess.Popen([sys.executable, "-c", _SURVIVING_SHELL, str(report), "run",
+                              str(model), "--out", str(tmp_path / "out")],
+                             stdin=slave, stdout=slave, stderr=slave, env=env,
+                             start_new_session=True)
+    os.close(slave)
+    deadline = time.monotonic() + 30
+    while not Path(f"{report}.started").exists():
+        assert time.monotonic() < deadline and shell.poll() is None, "the shell never began"
+        time.sleep(0.02)
+    os.close(master)                    # the window closed before the command wrote
+    assert shell.wait(timeout=60) == 0
+    assert report.read_text() == str(-signal.SIGHUP)
+    assert not (tmp_path / "out" / "harmonic.1").exists()

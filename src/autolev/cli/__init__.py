@@ -3,7 +3,10 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import errno
 import os
+import select
+import signal
 import sys
 
 from .. import __version__
@@ -101,6 +104,8 @@ def main(argv: list[str] | None = None) -> int:
         print(exc, file=sys.stderr)
         return 1
     except AutolevInternalError as exc:
+        if _terminal_hung_up(exc):
+            _end_as_hung_up()
         _report_internal_error(exc)
         return EXIT_INTERNAL
     except AutolevError as exc:
@@ -117,11 +122,38 @@ def main(argv: list[str] | None = None) -> int:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
     except Exception as exc:  # noqa: BLE001 -- what escapes every stage is autolev's bug
+        if _terminal_hung_up(exc):
+            _end_as_hung_up()
         internal = AutolevInternalError(getattr(ns, "file", None) or "autolev",
                                         f"running `autolev {ns.command}`", exc)
         internal.__cause__ = exc
         _report_internal_error(internal)
         return EXIT_INTERNAL
+
+
+def _terminal_hung_up(exc: BaseException) -> bool:
+    """An I/O error (EIO) from writing to a terminal that hung up (its window closed, its
+    connection lost) while the command ran: the user is gone, nothing is wrong in autolev.
+    A hung-up terminal polls as POLLHUP on the command's output or error stream."""
+    seen = exc
+    while seen is not None and not (isinstance(seen, OSError) and seen.errno == errno.EIO):
+        seen = seen.__cause__ or seen.__context__
+    if seen is None:
+        return False
+    poller = select.poll()
+    for fd in (1, 2):
+        poller.register(fd, select.POLLOUT)
+    return any(events & select.POLLHUP for _, events in poller.poll(0))
+
+
+def _end_as_hung_up() -> None:
+    """End as a hang-up ends a command (SIGHUP), saying so where the error stream is not
+    the terminal that went."""
+    with contextlib.suppress(OSError):
+        print("autolev: error: its terminal hung up; the command ended", file=sys.stderr)
+    signal.signal(signal.SIGHUP, signal.SIG_DFL)
+    os.kill(os.getpid(), signal.SIGHUP)
+    os._exit(128 + signal.SIGHUP)
 
 
 def _report_internal_error(exc: AutolevInternalError) -> None:
