@@ -358,4 +358,3 @@ def test_a_terminal_that_hangs_up_ends_the_command_as_a_hang_up(setting, tmp_pat
     os.close(master)                    # the window closed before the command wrote
     assert shell.wait(timeout=60) == 0
     assert report.read_text() == str(-signal.SIGHUP)
-    assert not (tmp_path / "out" / "harmonic.1").exists()

@@ -1,5 +1,6 @@
 """The `autolev` command line: check, --version, --help."""
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -280,3 +281,25 @@ def test_the_command_once_over_leaves_no_fork_to_later_callers_of_main(monkeypat
         cli.entry()
     assert not background.allowed()
     assert background.split_off(Path(".")) is None
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full (Linux)")
+@pytest.mark.parametrize("command", [["check"], ["convert"], ["run", "--out", "{tmp}"]])
+@pytest.mark.parametrize("streams", ["output", "output and error"])
+def test_a_full_disk_under_the_output_is_said_not_an_internal_error(command, streams,
+                                                                    tmp_path):
+    # `autolev check x.al > file` on a full disk was exit 70, "a bug in autolev"
+    argv = [a.replace("{tmp}", str(tmp_path / "out")) for a in command]
+    errors = tmp_path / "errors"
+    model = tmp_path / "double_pendulum.al"
+    model.write_text((EXAMPLES / "double_pendulum.al").read_text())
+    with open("/dev/full", "w") as full, open(errors, "w") as said:
+        done = subprocess.run([sys.executable, "-m", "autolev", argv[0], str(model),
+                               *argv[1:]],
+                              stdout=full, stderr=full if streams != "output" else said,
+                              cwd=tmp_path, timeout=120)
+    assert done.returncode == 1
+    if streams == "output":
+        text = errors.read_text()
+        assert "cannot write its output: No space left on device" in text
+        assert "internal error" not in text and "Traceback" not in text

@@ -11,6 +11,7 @@ import sys
 
 from .. import __version__
 from . import background
+from .streams import StreamWriteError, name_the_standard_streams
 from ..errors import AutolevError, AutolevInternalError, AutolevSyntaxError
 from .cache import add_cache
 from .check import add_check
@@ -69,8 +70,16 @@ def entry() -> int:
     """The `autolev` command (`python -m autolev`): main, allowed to leave work to the
     background once a command's output is done (background.py)."""
     background.allow()
+    name_the_standard_streams()
     try:
-        return main()
+        status = main()
+        sys.stdout.flush()              # what is still buffered: its failure said as any
+        return status
+    except StreamWriteError as exc:     # in that flush, or in saying an error
+        if _terminal_hung_up(exc):
+            _end_as_hung_up()
+        _said_why_a_stream_failed(exc)
+        return 1
     except KeyboardInterrupt:       # before main's own handling: reading the command line
         return 130
     finally:
@@ -106,6 +115,8 @@ def main(argv: list[str] | None = None) -> int:
     except AutolevInternalError as exc:
         if _terminal_hung_up(exc):
             _end_as_hung_up()
+        if _said_why_a_stream_failed(exc):
+            return 1
         _report_internal_error(exc)
         return EXIT_INTERNAL
     except AutolevError as exc:
@@ -124,6 +135,8 @@ def main(argv: list[str] | None = None) -> int:
     except Exception as exc:  # noqa: BLE001 -- what escapes every stage is autolev's bug
         if _terminal_hung_up(exc):
             _end_as_hung_up()
+        if _said_why_a_stream_failed(exc):
+            return 1
         internal = AutolevInternalError(getattr(ns, "file", None) or "autolev",
                                         f"running `autolev {ns.command}`", exc)
         internal.__cause__ = exc
@@ -131,14 +144,20 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_INTERNAL
 
 
+def _os_error_in(exc: BaseException) -> OSError | None:
+    """The OSError `exc` is, or was raised from."""
+    seen = exc
+    while seen is not None and not isinstance(seen, OSError):
+        seen = seen.__cause__ or seen.__context__
+    return seen
+
+
 def _terminal_hung_up(exc: BaseException) -> bool:
     """An I/O error (EIO) from writing to a terminal that hung up (its window closed, its
     connection lost) while the command ran: the user is gone, nothing is wrong in autolev.
     A hung-up terminal polls as POLLHUP on the command's output or error stream."""
-    seen = exc
-    while seen is not None and not (isinstance(seen, OSError) and seen.errno == errno.EIO):
-        seen = seen.__cause__ or seen.__context__
-    if seen is None:
+    cause = _os_error_in(exc)
+    if cause is None or cause.errno != errno.EIO:
         return False
     poller = select.poll()
     for fd in (1, 2):
@@ -154,6 +173,29 @@ def _end_as_hung_up() -> None:
     signal.signal(signal.SIGHUP, signal.SIG_DFL)
     os.kill(os.getpid(), signal.SIGHUP)
     os._exit(128 + signal.SIGHUP)
+
+
+def _said_why_a_stream_failed(exc: BaseException) -> bool:
+    """`exc` came from writing the command's output or error stream (a full disk, a device
+    that refuses it): the user's disk, not autolev's bug.  The stream is let go (its text
+    to /dev/null) and the failure said where it can be.  Whether it was."""
+    cause = _os_error_in(exc)
+    if not isinstance(cause, StreamWriteError):
+        return False
+    _let_go(sys.stdout if cause.stream == "output" else sys.stderr)
+    try:
+        print(f"autolev: error: cannot write its {cause.stream}: {cause.strerror}",
+              file=sys.stderr, flush=True)
+    except OSError:
+        _let_go(sys.stderr)             # the error output fails too: nothing can be said
+    return True
+
+
+def _let_go(stream) -> None:
+    """The stream's descriptor on /dev/null: what is written to it, at exit too, goes."""
+    nothing = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(nothing, stream.fileno())
+    os.close(nothing)
 
 
 def _report_internal_error(exc: AutolevInternalError) -> None:
