@@ -358,3 +358,41 @@ def test_a_terminal_that_hangs_up_ends_the_command_as_a_hang_up(setting, tmp_pat
     os.close(master)                    # the window closed before the command wrote
     assert shell.wait(timeout=60) == 0
     assert report.read_text() == str(-signal.SIGHUP)
+
+
+def test_a_lock_just_left_by_a_killed_child_is_removed_by_the_next_run(setting, tmp_path,
+                                                                       monkeypatch):
+    # a child killed while it compiled (or whose cache turned read-only) left its lock;
+    # the next run, warm, forked no child to take it over, and it stayed for a minute
+    from autolev.cli.background import lock_file
+    model, env = setting
+    monkeypatch.setenv("AUTOLEV_CACHE", env["AUTOLEV_CACHE"])
+    lock = lock_file(model)
+    lock.write_text("")                 # as new: only no process holds it
+    done = autolev(dict(env, AUTOLEV_FOREGROUND="1"), "run", model, "--out", tmp_path / "o")
+    assert done.returncode == 0, done.stderr
+    assert not lock.exists()
+
+
+def test_a_childs_lock_is_made_held_and_a_held_one_is_left_alone(setting, monkeypatch):
+    # the lock appears under its name already held (made aside, locked, then linked),
+    # so that a lock no process holds is always one left behind, and removed as such
+    import fcntl
+
+    from autolev.cli import background
+    model, env = setting
+    monkeypatch.setenv("AUTOLEV_CACHE", env["AUTOLEV_CACHE"])
+    lock = background.lock_file(model)
+    lock.write_text("")                 # left by a killed child: taken over
+    fd = background._hold(lock)
+    assert fd is not None and lock.exists()
+    assert os.fstat(fd).st_ino == os.stat(lock).st_ino
+    probe = os.open(lock, os.O_RDONLY)
+    with pytest.raises(BlockingIOError):
+        fcntl.flock(probe, fcntl.LOCK_SH | fcntl.LOCK_NB)
+    # held: another child does not take it, nor does a waiter remove it
+    assert background._hold(lock) is None
+    background._remove_if_left(lock)
+    assert lock.exists() and os.stat(lock).st_ino == os.fstat(fd).st_ino
+    os.close(probe)
+    assert [n for n in os.listdir(lock.parent) if n.startswith(".")] == []

@@ -6,7 +6,10 @@ The user has the files before it is built, so the command returns then: at its s
 it forks (before any thread), the parent waits only until the child says its outputs
 are done and exits with the child's status, and the child goes on with its output
 closed, compiles, and writes the caches.  A later command on the same model waits for that
-child (a lock in the cache folder), so it is warm and nothing is built twice.
+child (a lock in the cache folder), so it is warm and nothing is built twice.  The lock
+appears already held (made aside, locked, then linked to its name) and goes before it is
+let go, so a lock no process holds is one a killed child left: the next command removes
+it.
 
 Only the `autolev` command does this (`allow`), on POSIX, with a lasting cache; set
 AUTOLEV_FOREGROUND=1 to keep the wait in the foreground.
@@ -26,7 +29,6 @@ import os
 import signal
 import sys
 import threading
-import time
 from pathlib import Path
 
 FOREGROUND_VARIABLE = "AUTOLEV_FOREGROUND"
@@ -35,8 +37,6 @@ _PASSED_ON = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
 _PR_SET_PDEATHSIG = 1               # linux/prctl.h
 # the exit status of a crash of the work (an internal error, as cli.EXIT_INTERNAL)
 _CRASHED = 70
-# a lock file left by a child killed after it detached is removed once this old
-_STALE_LOCK_SECONDS = 60
 
 _allowed = [False]
 
@@ -93,8 +93,9 @@ def wait_for_every_finishing() -> None:
 
 
 def _wait_on(lock: Path) -> None:
-    """Wait until no process holds `lock`; a lock no process holds is left by a child
-    that was killed (its exit would have removed it): removed once it is old."""
+    """Wait until no process holds `lock`; then remove it if it is still there: a lock
+    no process holds was left by a child that was killed, or whose cache turned
+    read-only (a child's lock appears already held, and goes before it is let go)."""
     import fcntl
     try:
         fd = os.open(lock, os.O_RDONLY | os.O_NOFOLLOW)
@@ -102,8 +103,30 @@ def _wait_on(lock: Path) -> None:
         return                          # gone meanwhile, or not ours to read
     try:
         fcntl.flock(fd, fcntl.LOCK_SH)
-        if time.time() - os.fstat(fd).st_mtime > _STALE_LOCK_SECONDS:
-            lock.unlink(missing_ok=True)
+    finally:
+        os.close(fd)
+    _remove_if_left(lock)
+
+
+def _remove_if_left(lock: Path) -> bool:
+    """Remove `lock` if no process holds it (left behind); whether it is gone.  It is
+    removed while this process holds it, and only if the name still leads to it: a run
+    that takes the name meanwhile cannot have its fresh lock removed."""
+    import fcntl
+    try:
+        fd = os.open(lock, os.O_RDONLY | os.O_NOFOLLOW)
+    except FileNotFoundError:
+        return True
+    except OSError:
+        return False
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        if os.lstat(lock).st_ino != os.fstat(fd).st_ino:
+            return False                # replaced meanwhile: a fresh one
+        lock.unlink()
+        return True
+    except OSError:                     # held (a child compiles), or not ours to remove
+        return False
     finally:
         os.close(fd)
 
@@ -254,23 +277,55 @@ def _remove_partial_files(folder: Path, pid: int) -> None:
                 pass                    # gone already, or not ours to remove
 
 
-def _hold(lock: Path) -> None:
-    """Take the lock (without waiting: another run's child may hold it) until exit."""
+def _hold(lock: Path) -> int | None:
+    """Take the lock until exit (without waiting: another run's child may hold it);
+    its descriptor, or None.  The lock is made aside, locked, then linked to its name,
+    so that it is never there unheld while its child lives; one left by a killed child
+    is taken over."""
     import fcntl
+
+    from ..engine.outputs import temporary_beside
+    aside = temporary_beside(lock)
     try:
-        fd = os.open(lock, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o600)
+        fd = os.open(aside, os.O_RDWR | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o600)
     except OSError:
-        return
+        return None
     try:
-        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)      # nobody else knows the file
+        linked = _link_held(aside, lock)
     except OSError:
+        linked = False
+    finally:
+        _unlink_quietly(aside)
+    if not linked:
         os.close(fd)
-        return
+        return None
 
     def release() -> None:
-        lock.unlink(missing_ok=True)    # then a later run finds nothing to wait for
+        _unlink_quietly(lock)           # first: a lock there unheld is one left behind
         os.close(fd)
     atexit.register(release)
+    return fd
+
+
+def _link_held(aside: Path, lock: Path) -> bool:
+    """Give the held file `aside` the lock's name; False when another child holds the
+    lock (OSError when the folder takes no links)."""
+    for _ in range(3):                  # a left lock removed, the name taken again
+        try:
+            os.link(aside, lock)
+            return True
+        except FileExistsError:
+            if not _remove_if_left(lock):       # another child holds it
+                return False
+    return False
+
+
+def _unlink_quietly(path: Path) -> None:
+    try:
+        path.unlink(missing_ok=True)
+    except OSError:
+        pass                            # the cache turned read-only, or went away
 
 
 def _die_with_parent(signum: int) -> None:
