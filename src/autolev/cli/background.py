@@ -31,10 +31,11 @@ import sys
 import threading
 from pathlib import Path
 
+from ..engine.parentage import die_with_parent
+
 FOREGROUND_VARIABLE = "AUTOLEV_FOREGROUND"
 # the signals a user sends the command: passed on to the child doing the work
 _PASSED_ON = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT)
-_PR_SET_PDEATHSIG = 1               # linux/prctl.h
 # the exit status of a crash of the work (an internal error, as cli.EXIT_INTERNAL)
 _CRASHED = 70
 
@@ -147,7 +148,7 @@ class Finishing:
             if stream is not None:
                 stream.flush()
         signal.signal(signal.SIGHUP, signal.SIG_IGN)
-        _die_with_parent(0)
+        die_with_parent(0)
         nothing = os.open(os.devnull, os.O_RDWR)
         for fd in (0, 1, 2):
             os.dup2(nothing, fd)
@@ -196,7 +197,7 @@ def split_off(out_folder: Path) -> Finishing | None:
         # in a group of its own it is in the background: writing to a terminal with
         # `stty tostop` would stop it (and the parent waiting for it) for good
         signal.signal(signal.SIGTTOU, signal.SIG_IGN)
-        _die_with_parent(signal.SIGTERM)
+        die_with_parent(signal.SIGTERM)
         if os.getppid() != parent:      # the parent died before that took effect
             os._exit(1)
         return Finishing(writable)
@@ -326,12 +327,3 @@ def _unlink_quietly(path: Path) -> None:
         path.unlink(missing_ok=True)
     except OSError:
         pass                            # the cache turned read-only, or went away
-
-
-def _die_with_parent(signum: int) -> None:
-    """Linux: the child gets `signum` when the parent dies (0: no longer)."""
-    if not sys.platform.startswith("linux"):
-        return
-    import ctypes
-    libc = ctypes.CDLL(None, use_errno=True)
-    libc.prctl(_PR_SET_PDEATHSIG, int(signum), 0, 0, 0)

@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from .diskcache import cache_dir, install_or_aside, read_verified, verified
+from .parentage import killed_with_parent
 
 # without -fno-math-errno every sqrt may set errno, so gcc keeps each repeated call
 # (the rider-lean bicycle repeats one 117 times); the values are the same bit for bit
@@ -64,7 +65,7 @@ def build_object(source: str, flags: tuple) -> bytes:
         src.write_text(source)
         out = Path(tmp) / obj.name
         r = subprocess.run([cc, *flags, "-fPIC", "-c", "-o", str(out), str(src)],
-                           capture_output=True, text=True)
+                           capture_output=True, text=True, preexec_fn=killed_with_parent())
         if r.returncode != 0:
             raise CompileError(r.stderr.strip()[-2000:])
         data = out.read_bytes()
@@ -104,7 +105,7 @@ def build_shared_library(source: str, flags: tuple | None = None,
             objects.append(obj)
             procs.append(subprocess.Popen([cc, *flags, "-fPIC", "-c", "-o", str(obj), str(src)],
                                           stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                          text=True))
+                                          text=True, preexec_fn=killed_with_parent()))
         errors = []
         for proc in procs:
             _, err = proc.communicate()
@@ -114,7 +115,7 @@ def build_shared_library(source: str, flags: tuple | None = None,
             raise CompileError("\n".join(errors)[-2000:])
         out = Path(tmp) / lib.name
         r = subprocess.run([cc, "-shared", "-o", str(out), *map(str, objects + shared), "-lm"],
-                           capture_output=True, text=True)
+                           capture_output=True, text=True, preexec_fn=killed_with_parent())
         if r.returncode != 0:
             raise CompileError(r.stderr.strip()[-2000:])
         return install_or_aside(out.read_bytes(), lib)
