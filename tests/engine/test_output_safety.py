@@ -176,3 +176,22 @@ def test_animate_replaces_a_planted_link_but_not_a_users_page(tmp_path, victim):
     r = cli("animate", PENDULUM, "--format", "html", "--out", out, "-q")
     assert r.returncode == 1 and "--overwrite" in r.stderr
     assert (out / "simple_pendulum.html").read_text() == "<p>my page</p>"
+
+
+def test_a_record_a_killed_process_was_writing_leaves_no_temporary(tmp_path, monkeypatch):
+    # a background child killed (SIGKILL) as it wrote the record of its output folder
+    # left `.<record>.<pid>.<hex>.autolev-part` in the state folder for good
+    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
+    out = tmp_path / "out"
+    out.mkdir()
+    outputs.write_output(out, "a.1", "1\n")
+    record = outputs.Written(out).path
+    gone = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True, check=True)
+    dead = record.with_name(f".{record.name}.{gone.stdout.strip()}.0a1b2c3d"
+                            f"{outputs.TEMPORARY_SUFFIX}")
+    living = outputs.temporary_beside(record)      # this process's: being written
+    dead.write_text("{")
+    living.write_text("{")
+    outputs.write_output(out, "a.2", "2\n")
+    assert not dead.exists() and living.exists()

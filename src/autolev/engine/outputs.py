@@ -160,6 +160,7 @@ class Written:
                                            "files": self.records}, sort_keys=True), 0o600)
         if new:
             _drop_records_of_folders_gone(folder)
+        _remove_temporaries_of_the_dead(folder, self.path.name)
 
     def forget(self, names) -> None:
         for name in names:
@@ -171,6 +172,26 @@ def records_dir() -> Path:
     state = os.environ.get("XDG_STATE_HOME", "")
     base = state if os.path.isabs(state) else os.path.expanduser("~/.local/state")
     return Path(base) / "autolev" / "written"
+
+
+def _remove_temporaries_of_the_dead(folder: Path, record: str) -> None:
+    """The temporaries of `record` left by a process that was killed while it wrote it
+    (as the system kills for memory): each names its writer, gone now."""
+    for path in folder.glob(f".{record}.*{TEMPORARY_SUFFIX}"):
+        writer = path.name[:-len(TEMPORARY_SUFFIX)].rsplit(".", 2)[1]
+        if writer.isdigit() and is_temporary_of(path.name, int(writer)) \
+                and not _alive(int(writer)):
+            path.unlink(missing_ok=True)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True                     # another user's process: alive
+    return True
 
 
 def _drop_records_of_folders_gone(folder: Path) -> None:
