@@ -62,3 +62,12 @@ def test_a_compiler_dies_with_the_run_that_started_it(tmp_path, unit):
         if run.poll() is None:
             run.kill()
             run.wait()
+
+
+def test_no_subprocess_is_started_with_a_preexec_fn():
+    # a preexec_fn makes subprocess fork plainly, which runs OpenBLAS's fork handler: it
+    # stopped OpenBLAS's threads under a solve in another thread (a cold run's compile
+    # beside its integration), and the solve waited for ever (CI hung in a linearize)
+    from pathlib import Path
+    src = Path(__file__).resolve().parents[2] / "src" / "autolev"
+    assert [p.name for p in src.rglob("*.py") if "preexec_fn=" in p.read_text()] == []

@@ -64,8 +64,8 @@ def build_object(source: str, flags: tuple) -> bytes:
         src = Path(tmp) / "shared.c"
         src.write_text(source)
         out = Path(tmp) / obj.name
-        r = subprocess.run([cc, *flags, "-fPIC", "-c", "-o", str(out), str(src)],
-                           capture_output=True, text=True, preexec_fn=killed_with_parent())
+        r = subprocess.run(killed_with_parent([cc, *flags, "-fPIC", "-c", "-o", str(out),
+                                               str(src)]), capture_output=True, text=True)
         if r.returncode != 0:
             raise CompileError(r.stderr.strip()[-2000:])
         data = out.read_bytes()
@@ -103,9 +103,9 @@ def build_shared_library(source: str, flags: tuple | None = None,
             src.write_text(unit)
             obj = Path(tmp) / f"unit{k}.o"
             objects.append(obj)
-            procs.append(subprocess.Popen([cc, *flags, "-fPIC", "-c", "-o", str(obj), str(src)],
-                                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                          text=True, preexec_fn=killed_with_parent()))
+            procs.append(subprocess.Popen(
+                killed_with_parent([cc, *flags, "-fPIC", "-c", "-o", str(obj), str(src)]),
+                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True))
         errors = []
         for proc in procs:
             _, err = proc.communicate()
@@ -114,8 +114,9 @@ def build_shared_library(source: str, flags: tuple | None = None,
         if errors:
             raise CompileError("\n".join(errors)[-2000:])
         out = Path(tmp) / lib.name
-        r = subprocess.run([cc, "-shared", "-o", str(out), *map(str, objects + shared), "-lm"],
-                           capture_output=True, text=True, preexec_fn=killed_with_parent())
+        r = subprocess.run(killed_with_parent([cc, "-shared", "-o", str(out),
+                                               *map(str, objects + shared), "-lm"]),
+                           capture_output=True, text=True)
         if r.returncode != 0:
             raise CompileError(r.stderr.strip()[-2000:])
         return install_or_aside(out.read_bytes(), lib)

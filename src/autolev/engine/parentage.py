@@ -3,7 +3,6 @@ compilers a run starts do not outlive it when it is killed (as the system kills 
 memory), nor does a background child outlive its command."""
 from __future__ import annotations
 
-import signal
 import sys
 
 _PR_SET_PDEATHSIG = 1               # linux/prctl.h
@@ -18,14 +17,17 @@ def die_with_parent(signum: int) -> None:
     ctypes.CDLL(None, use_errno=True).prctl(_PR_SET_PDEATHSIG, int(signum), 0, 0, 0)
 
 
-def killed_with_parent():
-    """A subprocess preexec_fn: the started process (a compiler) is killed when the
-    process that waits for it dies; None off Linux."""
-    if not sys.platform.startswith("linux"):
-        return None
-    import ctypes
-    prctl = ctypes.CDLL(None, use_errno=True).prctl     # looked up before the fork
+# sets the death signal, then becomes the compiler: the run starts this with vfork (no
+# preexec_fn, whose plain fork runs OpenBLAS's fork handler, which stops its threads under
+# a solve running in another thread: the solve then waited for ever)
+_LAUNCHER = ("import ctypes, os, sys; "
+             "ctypes.CDLL(None, use_errno=True).prctl(1, 9, 0, 0, 0); "
+             "os.execv(sys.argv[1], sys.argv[1:])")
 
-    def set_death_signal() -> None:
-        prctl(_PR_SET_PDEATHSIG, int(signal.SIGKILL), 0, 0, 0)
-    return set_death_signal
+
+def killed_with_parent(argv: list) -> list:
+    """`argv` started so that the process (a compiler) is killed when the thread that
+    waits for it dies (Linux; elsewhere `argv` as it is)."""
+    if not sys.platform.startswith("linux") or not sys.executable:
+        return argv
+    return [sys.executable, "-S", "-I", "-c", _LAUNCHER, *argv]
