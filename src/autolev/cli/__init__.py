@@ -76,9 +76,7 @@ def entry() -> int:
         sys.stdout.flush()              # what is still buffered: its failure said as any
         return status
     except StreamWriteError as exc:     # in that flush, or in saying an error
-        if _terminal_hung_up(exc):
-            _end_as_hung_up()
-        _said_why_a_stream_failed(exc)
+        _ended_by_its_streams(exc)
         return 1
     except KeyboardInterrupt:       # before main's own handling: reading the command line
         return 130
@@ -113,9 +111,7 @@ def main(argv: list[str] | None = None) -> int:
         print(exc, file=sys.stderr)
         return 1
     except AutolevInternalError as exc:
-        if _terminal_hung_up(exc):
-            _end_as_hung_up()
-        if _said_why_a_stream_failed(exc):
+        if _ended_by_its_streams(exc):
             return 1
         _report_internal_error(exc)
         return EXIT_INTERNAL
@@ -130,12 +126,10 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     except BrokenPipeError:
         # output piped into `head` and the like: stop quietly
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        _let_go(sys.stdout)
         return 1
     except Exception as exc:  # noqa: BLE001 -- what escapes every stage is autolev's bug
-        if _terminal_hung_up(exc):
-            _end_as_hung_up()
-        if _said_why_a_stream_failed(exc):
+        if _ended_by_its_streams(exc):
             return 1
         internal = AutolevInternalError(getattr(ns, "file", None) or "autolev",
                                         f"running `autolev {ns.command}`", exc)
@@ -173,6 +167,14 @@ def _end_as_hung_up() -> None:
     signal.signal(signal.SIGHUP, signal.SIG_DFL)
     os.kill(os.getpid(), signal.SIGHUP)
     os._exit(128 + signal.SIGHUP)
+
+
+def _ended_by_its_streams(exc: BaseException) -> bool:
+    """`exc` came from the command's own output or error stream: a terminal that hung up
+    ends the command here, as a hang-up; any other failure is said.  Whether it was."""
+    if _terminal_hung_up(exc):
+        _end_as_hung_up()
+    return _said_why_a_stream_failed(exc)
 
 
 def _said_why_a_stream_failed(exc: BaseException) -> bool:

@@ -46,11 +46,6 @@ class _StandardStream(io.RawIOBase):
         except OSError as exc:
             raise StreamWriteError(self._stream, exc) from exc
 
-    def close(self) -> None:
-        # the descriptor outlives this object (the interpreter's own streams share it)
-        self.flush()
-        super().close()
-
 
 def _named(text: io.TextIOWrapper, fd: int, stream: str) -> io.TextIOWrapper:
     """`text` again, buffered as it was (unbuffered under python -u, PYTHONUNBUFFERED)."""

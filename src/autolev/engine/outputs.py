@@ -32,12 +32,17 @@ def temporary_beside(target: Path) -> Path:
                             f"{TEMPORARY_SUFFIX}")
 
 
+def temporary_writer(name: str) -> int | None:
+    """The process that made `name` with `temporary_beside`, or None for another name."""
+    if not (name.startswith(".") and name.endswith(TEMPORARY_SUFFIX)):
+        return None
+    parts = name[:-len(TEMPORARY_SUFFIX)].rsplit(".", 2)
+    return int(parts[1]) if len(parts) == 3 and parts[1].isdigit() else None
+
+
 def is_temporary_of(name: str, pid: int) -> bool:
     """Whether `name` is a temporary `temporary_beside` made in process `pid`."""
-    if not (name.startswith(".") and name.endswith(TEMPORARY_SUFFIX)):
-        return False
-    parts = name[:-len(TEMPORARY_SUFFIX)].rsplit(".", 2)
-    return len(parts) == 3 and parts[1] == str(pid)
+    return temporary_writer(name) == pid
 
 
 def write_whole(target: Path, data: bytes | str, mode: int = 0o666) -> Path:
@@ -178,9 +183,8 @@ def _remove_temporaries_of_the_dead(folder: Path, record: str) -> None:
     """The temporaries of `record` left by a process that was killed while it wrote it
     (as the system kills for memory): each names its writer, gone now."""
     for path in folder.glob(f".{record}.*{TEMPORARY_SUFFIX}"):
-        writer = path.name[:-len(TEMPORARY_SUFFIX)].rsplit(".", 2)[1]
-        if writer.isdigit() and is_temporary_of(path.name, int(writer)) \
-                and not _alive(int(writer)):
+        writer = temporary_writer(path.name)
+        if writer is not None and not _alive(writer):
             path.unlink(missing_ok=True)
 
 

@@ -3,6 +3,7 @@ compilers a run starts do not outlive it when it is killed (as the system kills 
 memory), nor does a background child outlive its command."""
 from __future__ import annotations
 
+import signal
 import sys
 
 _PR_SET_PDEATHSIG = 1               # linux/prctl.h
@@ -21,7 +22,8 @@ def die_with_parent(signum: int) -> None:
 # preexec_fn, whose plain fork runs OpenBLAS's fork handler, which stops its threads under
 # a solve running in another thread: the solve then waited for ever)
 _LAUNCHER = ("import ctypes, os, sys; "
-             "ctypes.CDLL(None, use_errno=True).prctl(1, 9, 0, 0, 0); "
+             f"ctypes.CDLL(None, use_errno=True).prctl({_PR_SET_PDEATHSIG}, "
+             f"{int(signal.SIGKILL)}, 0, 0, 0); "
              "os.execv(sys.argv[1], sys.argv[1:])")
 
 
