@@ -7,7 +7,7 @@ import sympy.physics.mechanics as me
 
 import autolev
 from autolev.runtime.numerics.prepare import prepare_command
-from helpers import ROOT
+from helpers import EXAMPLES, ROOT
 from helpers.mechanics import close, example, random_values, symbols, value
 
 DATA = ROOT / "tests" / "data"
@@ -330,3 +330,26 @@ def test_a_shared_expression_goes_to_sympy_once_per_distinct_part():
     for _ in range(60):
         ours, theirs = sm.sin(ours) * ours + 1, sm.sin(theirs) * theirs + 1
     assert to_sympy_expr(m.scene, ours, mapping) == theirs
+
+
+def test_frstar_after_fr_takes_each_partial_velocity_once(monkeypatch):
+    # ZERO = FR() + FRSTAR(): FR() forms Fr, FRSTAR() adds Fr* over the same partial
+    # velocities (it used to form Fr again, every partial velocity taken twice); the
+    # rows stay Autolev's (test_double_pendulum_rows_equal_autolevs_printed_rows)
+    from autolev.runtime import kane
+    taken = []
+    real = kane.partial_velocity
+
+    def counted(v, u, defs):
+        taken.append((v, u))
+        return real(v, u, defs)
+    monkeypatch.setattr(kane, "partial_velocity", counted)
+    m = example("double_pendulum")
+    assert "FR() + FRSTAR()" in (EXAMPLES / "double_pendulum.al").read_text().upper()
+    assert taken and len(taken) == len({(str(v), u) for v, u in taken})
+    zero = m.loaded.namespace["ZERO"]
+    q1, q2, u1, u2, u1d, u2d = symbols(m, "Q1", "Q2", "U1", "U2", "U1'", "U2'")
+    fr, frstar = m.fr(), m.frstar()
+    v = random_values([q1, q2, u1, u2, u1d, u2d], 5)
+    v.update(dict(zip(symbols(m, "L1", "L2", "M1", "M2", "G"), (0.8, 0.6, 1.3, 0.9, 9.81))))
+    assert close(value(m, fr + frstar, v), value(m, zero, v))

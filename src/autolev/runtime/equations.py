@@ -18,13 +18,13 @@ from .linalg import coefficients, solve_linear
 
 
 class FormedEquations(Owned):
-    """Kane's equations KANE() took (None before it), and the last ones formed, kept for
-    the revision they were formed at (a part of Model)."""
+    """Kane's equations KANE() took (None before it), and the last forming, kept for the
+    revision it was made at (a part of Model)."""
 
     def __init__(self, revision) -> None:
         super().__init__(revision)
         self._taken: KaneEquations | None = None
-        self._formed: tuple | None = None       # (revision key, with inertia, equations)
+        self._forming: tuple | None = None       # (revision key, kane.Forming)
 
     @property
     def taken(self) -> KaneEquations | None:
@@ -34,16 +34,14 @@ class FormedEquations(Owned):
     def take(self, equations: KaneEquations) -> None:
         self._taken = equations
 
-    def formed(self, inertia: bool, form) -> KaneEquations:
-        """The equations formed at this revision (with Fr* when `inertia`), `form(inertia)`
-        when none are kept for it."""
+    def formed(self, inertia: bool, system: kane.System, speeds) -> KaneEquations:
+        """The equations of `system` formed at this revision (with Fr* when `inertia`), by
+        the forming kept for it, else by a new one over `speeds()`."""
         key = self.revision.key
-        kept = self._formed
-        if kept is not None and kept[0] == key and (kept[1] or not inertia):
-            return kept[2]
-        equations = form(inertia)
-        self._formed = (key, inertia, equations)
-        return equations
+        kept = self._forming
+        if kept is None or kept[0] != key:
+            kept = self._forming = (key, kane.Forming(system.defs, speeds()))
+        return kept[1].equations(system, inertia)
 
 
 class EquationsMixin:
@@ -64,11 +62,8 @@ class EquationsMixin:
         return kane.generalized_speeds(self.kane_system(), declared)
 
     def _form(self, inertia: bool = True) -> KaneEquations:
-        return self.formed_equations.formed(inertia, self._formed_now)
-
-    def _formed_now(self, inertia: bool) -> KaneEquations:
-        speeds = self.generalized_speeds()
-        return kane.form(self.kane_system(), speeds, inertia)
+        return self.formed_equations.formed(inertia, self.kane_system(),
+                                            self.generalized_speeds)
 
     @property
     def kane_equations(self) -> KaneEquations | None:

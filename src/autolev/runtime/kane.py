@@ -170,32 +170,54 @@ class _Partials:
         return self._by_vector[key][1]
 
 
-def form(system: System, speeds: tuple[list, list, list],
-         inertia: bool = True) -> KaneEquations:
-    """Fr and (with `inertia`) Fr*, one row per independent then auxiliary speed of
-    `speeds` = (independent, dependent, auxiliary), Z-named."""
-    indep, dep, aux = speeds
-    rows = indep + aux
-    if not rows:
-        raise AutolevModelError("no generalized speeds: the velocities depend on no "
-                                "motion variable (declare MOTIONVARIABLES, or give "
-                                "kinematical equations q' = ...)")
-    n = system.newtonian
-    partials = _Partials(rows, system.defs)
-    fr = [sm.S.Zero] * len(rows)
-    frstar = [sm.S.Zero] * len(rows)
-    with _auxiliary_held(system.defs, aux):
+class Forming:
+    """Kane's equations of one system and its speeds, formed as far as they are asked
+    for: Fr at the first request, Fr* only when one asks for it, both over one set of
+    partial velocities (FR() then FRSTAR() takes each partial velocity once).  It keeps
+    no System: each request reads the model's as it stands (at one revision)."""
+
+    def __init__(self, defs: Definitions, speeds: tuple[list, list, list]) -> None:
+        indep, dep, aux = speeds
+        if not indep + aux:
+            raise AutolevModelError("no generalized speeds: the velocities depend on no "
+                                    "motion variable (declare MOTIONVARIABLES, or give "
+                                    "kinematical equations q' = ...)")
+        self.indep, self.dep, self.aux = indep, dep, aux
+        self._partials = _Partials(indep + aux, defs)
+        self._fr: sm.Matrix | None = None
+        self._formed: dict[bool, KaneEquations] = {}
+
+    def equations(self, system: System, inertia: bool = True) -> KaneEquations:
+        """Fr and (with `inertia`) Fr*, one row per independent then auxiliary speed,
+        Z-named; the same object for each later request at this inertia."""
+        kept = self._formed.get(inertia)
+        if kept is not None:
+            return kept
+        n_rows = len(self.indep) + len(self.aux)
+        fr = self._fr
+        with _auxiliary_held(system.defs, self.aux):
+            raw_fr = self._active_forces(system) if fr is None else None
+            frstar = [sm.S.Zero] * n_rows
+            if inertia:
+                _inertia_forces(system, self._partials, frstar)
+        z = system.defs.zify
+        if fr is None:       # zified after Fr*'s terms, as one forming always named them
+            fr = self._fr = sm.Matrix([z(e) for e in raw_fr])
+        equations = KaneEquations(self.indep, self.aux, self.dep, fr,
+                                  sm.Matrix([z(e) for e in frstar]))
+        self._formed[inertia] = equations
+        return equations
+
+    def _active_forces(self, system: System) -> list:
+        n = system.newtonian
+        fr = [sm.S.Zero] * (len(self.indep) + len(self.aux))
         for p, f in system.forces.items():
             if f.terms:
-                _accumulate(fr, partials(p.vel(n)), f)
+                _accumulate(fr, self._partials(p.vel(n)), f)
         for a, t in system.torques.items():
             if t.terms:
-                _accumulate(fr, partials(a.ang_vel_in(n)), t)
-        if inertia:
-            _inertia_forces(system, partials, frstar)
-    z = system.defs.zify
-    return KaneEquations(indep, aux, dep, sm.Matrix([z(e) for e in fr]),
-                         sm.Matrix([z(e) for e in frstar]))
+                _accumulate(fr, self._partials(a.ang_vel_in(n)), t)
+        return fr
 
 
 def _auxiliary_held(defs: Definitions, aux: list):
