@@ -26,6 +26,7 @@ from .runtime import symbols as S
 from .runtime.equations_of import Equations, equations_of, state_of
 from .engine.errors import AutolevModelError
 from .runtime.handoff import CONSTRAINT_SOLVER, Handoff, handoff
+from .runtime.floats import ValuesAt
 from .runtime.interop import simple_rotation
 from .runtime.model import Model
 
@@ -478,36 +479,47 @@ def _unlike_the_run(h: Handoff, eqs: Equations) -> str | None:
     """Why sympy's equations are not the run's, found at a random state, constants and
     values of the specified quantities and their rates; None when they give its rates."""
     rng = np.random.default_rng(33)
-    ours = {x: sm.Float(v) for x, v in zip(eqs.states, rng.uniform(-1, 1, len(eqs.states)))}
-    ours |= {c: sm.Float(v) for c, v in zip(eqs.constants, rng.uniform(0.5, 1.5,
-                                                                         len(eqs.constants)))}
+    ours = {x: v for x, v in zip(eqs.states, rng.uniform(-1, 1, len(eqs.states)))}
+    ours |= {c: v for c, v in zip(eqs.constants, rng.uniform(0.5, 1.5, len(eqs.constants)))}
     given = rng.uniform(-1, 1, len(eqs.specified))
-    ours |= {s: sm.Float(v) for s, v in zip(eqs.specified, given)} | {S.TIME: sm.Float(0.3)}
+    ours |= {s: v for s, v in zip(eqs.specified, given)} | {S.TIME: 0.3}
+
+    def unknown(e):
+        raise LookupError(f"the check of sympy's equations has no value for {e}")
+    run = ValuesAt(ours, unknown)
     before, _ = split_at_the_unknowns(eqs)
     for z, e in before:
-        ours[z] = sm.sympify(e).xreplace(ours)
+        run.define(z, e)
     n = len(eqs.unknowns)
-    mass = np.array([[float(e.xreplace(ours)) for e in row] for row in eqs.mass]).reshape(n, n)
-    forcing = np.array([float(e.xreplace(ours)) for e in eqs.forcing])
+    mass = np.array([[run(e) for e in row] for row in eqs.mass]).reshape(n, n)
+    forcing = np.array([run(e) for e in eqs.forcing])
     solved = dict(zip(eqs.unknowns, np.linalg.solve(mass, forcing) if n else []))
-    rates = np.array([float(r.xreplace(ours)) if r is not None else
+    rates = np.array([run(r) if r is not None else
                       solved[next(u for u in eqs.unknowns if state_of(u) == x)]
                       for x, r in zip(eqs.states, eqs.rates)])
     theirs = {h.states[x]: ours[x] for x in eqs.states}
     theirs |= {sm.Symbol(c.name): ours[c] for c in eqs.constants}
     theirs |= {h.specified_of(s): ours[s] for s in eqs.specified}
-    at = theirs | {me.dynamicsymbols._t: sm.Float(0.3)}
-    theirs |= {u: sm.Float(v) for u, v in h.dependent_speeds_at(at).items()}
-    full = sm.Matrix.hstack(h.kane.mass_matrix_full, h.kane.forcing_full).xreplace(theirs)
-    full = full.xreplace({d: 0 for d in full.atoms(sm.Derivative)})
-    full = full.xreplace({f: 0 for f in full.atoms(AppliedUndef)})
-    full = full.xreplace({me.dynamicsymbols._t: sm.Float(0.3)})
-    if full.free_symbols:
+    at = {k: sm.Float(v) for k, v in theirs.items()} | {me.dynamicsymbols._t: sm.Float(0.3)}
+    theirs |= {u: float(v) for u, v in h.dependent_speeds_at(at).items()}
+    theirs[me.dynamicsymbols._t] = 0.3
+    kept: set = set()
+
+    def zero_or_kept(e):
+        # a rate or a function of time the state does not give is 0; a symbol is a
+        # constant sympy's equations have and the run's do not
+        if isinstance(e, (sm.Derivative, AppliedUndef)):
+            return 0.0
+        kept.add(e)
+        return 0.0
+    sympy_at = ValuesAt(theirs, zero_or_kept)
+    full = np.array([[sympy_at(e) for e in row] for row in
+                     sm.Matrix.hstack(h.kane.mass_matrix_full, h.kane.forcing_full).tolist()])
+    if kept:
         return ("sympy's equations keep constants the run's do not have ("
-                + ", ".join(sorted(str(c) for c in full.free_symbols)) + ")")
+                + ", ".join(sorted(str(c) for c in kept)) + ")")
     order = [(h.coordinates + h.speeds + h.dependent).index(h.states[x]) for x in eqs.states]
-    sympys = np.linalg.solve(np.array(full[:, :-1], dtype=float),
-                             np.array(full[:, -1], dtype=float).ravel())[order]
+    sympys = np.linalg.solve(full[:, :-1], full[:, -1])[order]
     if np.all(np.abs(sympys - rates) <= 1e-8 * max(1.0, float(np.abs(rates).max()))):
         return None
     return ("sympy's KanesMethod on the model's bodies and loads does not give the "

@@ -1,0 +1,54 @@
+"""runtime/floats.py: an expression's value at a point, each shared part once, against
+sympy's own evaluation."""
+import math
+
+import pytest
+import sympy as sm
+
+from autolev.runtime.floats import ValuesAt
+
+x, y, z = sm.symbols("x y z")
+f = sm.Function("f")
+t = sm.Symbol("t")
+
+
+def _nowhere(e):
+    raise LookupError(e)
+
+
+@pytest.mark.parametrize("expr", [
+    sm.sin(x) * sm.cos(y) ** 2 + sm.sqrt(z) / (1 + x ** 2),
+    sm.atan2(y, x) - sm.exp(-z) * sm.Abs(x - y),
+    sm.asin(x / 2) + sm.acos(y / 3) * sm.tanh(z),
+    (x - 2) ** sm.Rational(1, 3) * (x - 2) ** sm.Rational(2, 3),   # complex on the way
+    sm.asin(z + 1) + sm.conjugate(sm.asin(z + 1)),                  # past math's domain
+])
+def test_values_equal_sympys(expr):
+    point = {x: 0.7, y: -0.4, z: 1.3}
+    assert math.isclose(ValuesAt(point, _nowhere)(expr),
+                        float(sm.re(expr.subs(point).evalf(30))), rel_tol=1e-13)
+
+
+def test_a_shared_part_is_computed_once():
+    # a tree of 2**60 leaves: sympy's xreplace would walk every one of them
+    e = x
+    for _ in range(60):
+        e = sm.sin(e) * e + y
+    value, expected = 0.3, 0.3
+    for _ in range(60):
+        expected = math.sin(expected) * expected - 0.2
+    assert ValuesAt({x: value, y: -0.2}, _nowhere)(e) == pytest.approx(expected, rel=1e-12)
+
+
+def test_what_the_point_lacks_is_asked_and_definitions_follow_their_order():
+    asked = []
+
+    def zero(e):
+        asked.append(e)
+        return 0.0
+    values = ValuesAt({f(t): 2.0}, zero)
+    values.define(z, f(t) * 3)
+    assert values(z + sm.Derivative(f(t), t) + x) == 6.0
+    assert set(asked) == {sm.Derivative(f(t), t), x}
+    with pytest.raises(ValueError, match="not real"):
+        ValuesAt({x: -1.0}, _nowhere)(sm.sqrt(x))
