@@ -61,6 +61,7 @@ import multiprocessing
 import multiprocessing.connection
 import os
 import random
+import shutil
 import sys
 import tempfile
 import time
@@ -549,8 +550,9 @@ def replay(seed: int, index: int) -> int:
     return 1 if outcome.status in FAILING else 0
 
 
-def private_folders() -> None:
-    """autolev's caches, key and state in a folder of this run's own (never the user's)."""
+def private_folders() -> str:
+    """autolev's caches, key and state in a folder of this run's own (never the user's);
+    the folder."""
     root = tempfile.mkdtemp(prefix="autolev-oracle-")
     for variable, sub in (("AUTOLEV_CACHE", "cache"), ("XDG_CONFIG_HOME", "config"),
                           ("XDG_STATE_HOME", "state")):
@@ -558,6 +560,7 @@ def private_folders() -> None:
         os.makedirs(path, mode=0o700)
         os.environ[variable] = path
     os.environ["AUTOLEV_NO_MODEL_CACHE"] = "1"
+    return root
 
 
 def main(argv=None) -> int:
@@ -570,7 +573,14 @@ def main(argv=None) -> int:
     parser.add_argument("--replay", metavar="SEED:INDEX", help="one case, shown in full")
     parser.add_argument("--quiet", action="store_true", help="no line per case")
     args = parser.parse_args(argv)
-    private_folders()
+    root = private_folders()
+    try:
+        return _run(args)
+    finally:
+        shutil.rmtree(root, ignore_errors=True)
+
+
+def _run(args) -> int:
     if args.replay:
         seed, index = (int(x) for x in args.replay.split(":"))
         return replay(seed, index)

@@ -1,5 +1,6 @@
 """Fixtures; the helpers tests import live in tests/helpers."""
 import os
+import shutil
 import tempfile
 from pathlib import Path
 
@@ -11,8 +12,16 @@ from helpers import CORPUS
 # build does); tests/test_model_cache.py turns the cache of built models on where it
 # tests it, and AUTOLEV_NO_MODEL_CACHE=0 runs the whole suite with it.
 os.environ.setdefault("AUTOLEV_NO_MODEL_CACHE", "1")
-# what autolev records of the folders it wrote into stays with the tests' own state
-os.environ.setdefault("XDG_STATE_HOME", tempfile.mkdtemp(prefix="autolev-test-state-"))
+# what autolev records of the folders it wrote into stays with the tests' own state,
+# removed when the session ends
+_STATE = None
+if "XDG_STATE_HOME" not in os.environ:
+    _STATE = os.environ["XDG_STATE_HOME"] = tempfile.mkdtemp(prefix="autolev-test-state-")
+
+
+def pytest_unconfigure(config):
+    if _STATE is not None:
+        shutil.rmtree(_STATE, ignore_errors=True)
 
 
 @pytest.fixture(scope="session")
