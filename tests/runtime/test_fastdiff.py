@@ -73,3 +73,18 @@ def test_value_and_gradient_at_a_point_equal_sympy_substituting_its_derivatives(
             want = chained[v].xreplace(values)
             assert _close(grad.get(v, sm.S.Zero), want, {A: 0.45}), (e, v)
         assert set(grad) <= {X, Y}
+
+
+def test_gradients_sharing_one_memo_equal_sympy_diff_of_each_expression():
+    # expressions sharing parts (as a chain's positions share its joints' rotations),
+    # asked one after another of one Gradients: each its own gradient
+    rng = random.Random(11)
+    point = {X: 0.3, Y: -0.7, Z: 1.1, A: 0.45}
+    shared = [_random_expr(rng, 2) for _ in range(3)]
+    gradients = fastdiff.Gradients({X, Y, Z}.__contains__)
+    for k in range(12):
+        e = _random_expr(rng, 2) * shared[k % 3] + shared[(k + 1) % 3] ** 2 + A * X
+        g = gradients.of(e)
+        assert set(g) <= {X, Y, Z}
+        for x in (X, Y, Z):
+            assert _close(g.get(x, sm.S.Zero), sm.diff(e, x), point), (e, x)

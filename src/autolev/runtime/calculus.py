@@ -30,8 +30,7 @@ from .derived import Revision
 from .symbols import TIME, Z, derivative, new_z
 from ..engine.errors import AutolevModelError
 from .fastdiff import diff as fast_diff
-from .fastdiff import gradient as fast_gradient
-from .fastdiff import value_and_gradient
+from .fastdiff import Gradients, times, total, value_and_gradient
 from .sympy_functions import SPEC_OF_FUNCTION
 
 
@@ -478,21 +477,24 @@ class Definitions:
         order = self._post_order(roots, {}, prune=lambda s: not (self.primitive_deps(s)
                                                                   & xset))
         grads: dict = {}          # defined symbol -> {x: derivative (zified)}
+        # one memo for every definition: the parts they share are differentiated once (a
+        # symbol's liveness is settled before the definitions that use it, in this order)
+        differentiate = Gradients(lambda f: f in xset or bool(grads.get(f)))
 
         def gradient(expr, fs):
             acc: dict = {}
             live = [f for f in fs if f in xset or grads.get(f)]
             if not live:
                 return {}
-            dfs = fast_gradient(expr, live)
+            dfs = differentiate.of(expr)
             for f in live:
                 df = dfs.get(f)
                 if df is None:
                     continue
                 parts = {f: sm.S.One} if f in xset else grads[f]
                 for x, g in parts.items():
-                    acc.setdefault(x, []).append(df * g)
-            return {x: sm.Add(*ts) for x, ts in acc.items()}
+                    acc.setdefault(x, []).append(times(df, g))
+            return {x: total(ts) for x, ts in acc.items()}
 
         for s in order:
             known = {x: self._diff[(s, x)] for x in xs if (s, x) in self._diff}

@@ -92,29 +92,40 @@ def gradient(expr: sm.Expr, xs) -> dict:
     """{x: d expr / d x} for the symbols xs that expr contains, in one memoised pass
     (differentiating once per x walks the whole expression once per x, which on the
     long definitions of real models is what dominates)."""
-    xs = set(xs)
-    empty: frozenset = frozenset()
-    deps_memo: dict = {}
-    memo: dict = {}
+    return Gradients(set(xs).__contains__).of(expr)
 
-    def deps(e) -> frozenset:
-        r = deps_memo.get(e)
+
+class Gradients:
+    """Gradients of many expressions with respect to the symbols `varies` says vary,
+    sharing one memo: a part common to several expressions (a joint's rotation in every
+    entry of a chain's positions and their rates) is differentiated once.  Whether a
+    symbol varies must be settled before the first expression holding it is asked (the
+    definitions in dependency order)."""
+
+    def __init__(self, varies) -> None:
+        self._varies = varies
+        self._deps: dict = {}
+        self._memo: dict = {}
+
+    def of(self, expr) -> dict:
+        """{x: d expr / d x} for the varying symbols x of expr, zeros left out."""
+        return self._g(sm.sympify(expr))
+
+    def _deps_of(self, e) -> frozenset:
+        r = self._deps.get(e)
         if r is None:
             if e.is_Atom:
-                r = frozenset((e,)) if e in xs else empty
+                r = frozenset((e,)) if self._varies(e) else _NONE
             else:
-                r = empty.union(*[deps(a) for a in e.args])
-            deps_memo[e] = r
+                r = _NONE.union(*[self._deps_of(a) for a in e.args])
+            self._deps[e] = r
         return r
 
-    def add_into(acc: dict, grad: dict, factor=None) -> None:
-        for x, v in grad.items():
-            acc.setdefault(x, []).append(v if factor is None else factor * v)
-
-    def g(e) -> dict:
-        r = memo.get(e)
+    def _g(self, e) -> dict:
+        r = self._memo.get(e)
         if r is not None:
             return r
+        deps, g = self._deps_of, self._g
         dep = deps(e)
         if not dep:
             r = {}
@@ -124,21 +135,20 @@ def gradient(expr: sm.Expr, xs) -> dict:
             acc: dict = {}
             for a in e.args:
                 if deps(a):
-                    add_into(acc, g(a))
-            r = {x: sm.Add(*ts) for x, ts in acc.items()}
+                    _add_into(acc, g(a))
+            r = {x: total(ts) for x, ts in acc.items()}
         elif e.is_Mul:
             args = e.args
             acc = {}
             for i, a in enumerate(args):
                 if deps(a):
-                    add_into(acc, g(a), sm.Mul(*(args[:i] + args[i + 1:])))
-            r = {x: sm.Add(*ts) for x, ts in acc.items()}
+                    _add_into(acc, g(a), sm.Mul(*(args[:i] + args[i + 1:])))
+            r = {x: total(ts) for x, ts in acc.items()}
         elif e.is_Pow:
             b, p = e.args
             if not deps(p):
-                acc = {}
-                add_into(acc, g(b), p * b ** (p - 1))
-                r = {x: ts[0] for x, ts in acc.items()}
+                factor = p * b ** (p - 1)
+                r = {x: times(factor, v) for x, v in g(b).items()}
             else:
                 r = {x: diff(e, x) for x in dep}
         elif (spec := _rule(e.func, e.args)) is not None:
@@ -148,10 +158,31 @@ def gradient(expr: sm.Expr, xs) -> dict:
         else:
             r = {x: e.diff(x) for x in dep}
         r = {x: v for x, v in r.items() if v != 0}
-        memo[e] = r
+        self._memo[e] = r
         return r
 
-    return g(sm.sympify(expr))
+
+_NONE: frozenset = frozenset()
+
+
+def _add_into(acc: dict, grad: dict, factor=None) -> None:
+    for x, v in grad.items():
+        acc.setdefault(x, []).append(v if factor is None else times(factor, v))
+
+
+def times(a: sm.Expr, b: sm.Expr) -> sm.Expr:
+    """a*b; a factor 1 (the derivative of a symbol by itself) costs no product (sympy's
+    would flatten a*1 back to a)."""
+    if b is _ONE:
+        return a
+    if a is _ONE:
+        return b
+    return a * b
+
+
+def total(terms: list) -> sm.Expr:
+    """The sum of `terms`; one term is itself (sympy's Add of one term is that term)."""
+    return terms[0] if len(terms) == 1 else sm.Add(*terms)
 
 
 def value_and_gradient(expr: sm.Expr, values: dict, seeds: dict) -> tuple:
