@@ -77,6 +77,36 @@ def test_dircos_sequences_match_sympy(m, seq, kind):
     assert close(num(m, w, vals), sB.ang_vel_in(sN).to_matrix(sB).subs(sub))
 
 
+def test_a_chain_of_orientations_composes_named_entries_to_sympys_matrix(m):
+    # N -> A (Rodrigues), A -> B (body-fixed 213), B -> C (Rodrigues): the composed matrix
+    # N_C equals sympy's, and each of its entries is a sum of products of named (Z) or
+    # short entries: no orientation's long entry is written into a product
+    from autolev.runtime.calculus import SMALL, is_small
+    N, A, B, C = m.frames("N A B C")
+    q = m.variables("q1 q2 q3 q4 q5", order=1)
+    k = m.constants("k1 k2 k3")
+    A.orient_rodrigues(N, *[sm.tan(q[0] / 2) * kk for kk in k])
+    B.orient_body_fixed(A, q[1:4], "213")
+    C.orient_rodrigues(B, *[sm.tan(q[4] / 2) * kk for kk in reversed(k)])
+    sN, sA, sB, sC = (me.ReferenceFrame(n) for n in "NABC")
+    qq = me.dynamicsymbols("q1:6")
+    kv = [0.3, -0.5, 0.8]
+    axis1 = sum((kk * e for kk, e in zip(kv, (sN.x, sN.y, sN.z))), sm.S.Zero * sN.x)
+    axis2 = sum((kk * e for kk, e in zip(reversed(kv), (sB.x, sB.y, sB.z))), 0 * sB.x)
+    # a Gibbs vector k tan(angle/2) turns by 2 atan(|k| tan(angle/2)) about k
+    sA.orient_axis(sN, axis1, 2 * sm.atan(sm.sqrt(sum(v * v for v in kv)) * sm.tan(qq[0] / 2)))
+    sB.orient_body_fixed(sA, qq[1:4], "213")
+    sC.orient_axis(sB, axis2, 2 * sm.atan(sm.sqrt(sum(v * v for v in kv)) * sm.tan(qq[4] / 2)))
+    values = dict(zip(q, [0.4, -0.7, 1.1, 0.25, -1.2])) | dict(zip(k, kv))
+    composed = N.dcm(C)
+    assert close(num(m, composed, values), sN.dcm(sC).subs(dict(zip(qq, [0.4, -0.7, 1.1, 0.25,
+                                                                         -1.2]))))
+    for entry in composed:
+        rhs = m.defs.rhs.get(entry, entry)
+        for term in sm.Add.make_args(rhs):
+            assert all(is_small(f, SMALL) for f in sm.Mul.make_args(term)), term
+
+
 def test_euler_parameters_match_sympys_quaternion_with_e4_scalar(m):
     N, B = m.frames("N B")
     e = m.variables("e1 e2 e3 e4", order=1)

@@ -324,8 +324,10 @@ class Frame:
         m = self._dcm_edges[path[1]]
         if len(path) > 2:
             rest = path[1].dcm(other)
-            defs = self.scene.defs
-            m = (m * rest).applyfunc(defs.zify)
+            zify = self.scene.defs.zify
+            # a product of Z's: an orientation's long entries (RODRIGUES', a body-fixed
+            # sequence's) named once, not written into each entry of every product
+            m = (m.applyfunc(zify) * rest.applyfunc(zify)).applyfunc(zify)
         self._dcm_cache[other] = m
         other._dcm_cache[self] = m.T
         return m
