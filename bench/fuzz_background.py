@@ -574,8 +574,7 @@ class Play:
             self.cache.mkdir(parents=True, exist_ok=True, mode=0o700)
             self.cache.chmod(0o500)
         else:
-            _vanish(self.cache)
-            self.cache.write_text("a file where the cache folder was\n")
+            _file_in_place_of(self.cache, "a file where the cache folder was\n")
         self.note(f"the cache {action}")
 
     def config_fault(self) -> None:
@@ -705,6 +704,24 @@ def kill_tagged(tag: str) -> None:
             with _gone():
                 os.kill(pid, signal.SIGKILL)
         time.sleep(0.05)
+
+
+def _file_in_place_of(folder: Path, text: str) -> None:
+    """A file where `folder` was.  The command running meanwhile may make the folder
+    again between its removal and the file's arrival (a fuzzer's own IsADirectoryError,
+    seed 2 case 728): the file is renamed into place, the folder removed again until it
+    lands."""
+    made = folder.with_name(folder.name + f".file-{time.time_ns()}")
+    made.write_text(text)
+    for _ in range(100):
+        _vanish(folder)
+        try:
+            os.rename(made, folder)
+            return
+        except OSError as exc:
+            if exc.errno not in (errno.EISDIR, errno.EEXIST, errno.ENOTEMPTY):
+                raise
+    raise RuntimeError(f"{folder} was made again a hundred times: no file in its place")
 
 
 def _vanish(folder: Path) -> None:

@@ -692,3 +692,22 @@ def test_background_and_hostile_cases_replay_by_hand(tmp_path):
     commands = fuzz.write_case(case, tmp_path / "h")
     assert "rm -rf x.al; mkfifo x.al" in commands
     assert commands[-1].endswith("-m autolev check x.al; echo exit $?")
+
+
+def test_a_file_lands_where_the_cache_was_though_the_command_makes_it_again(tmp_path,
+                                                                             monkeypatch):
+    # the command running beside the fault makes its cache folder again between the
+    # folder's removal and the file's arrival (seed 2 case 728 crashed the fuzzer there)
+    cache = tmp_path / "cache"
+    cache.mkdir()
+    vanish, made_again = background._vanish, []
+
+    def vanish_then_made_again(folder):
+        vanish(folder)
+        if len(made_again) < 2:
+            folder.mkdir()
+            made_again.append(folder)
+    monkeypatch.setattr(background, "_vanish", vanish_then_made_again)
+    background._file_in_place_of(cache, "a file\n")
+    assert len(made_again) == 2 and cache.is_file() and cache.read_text() == "a file\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["cache"]
