@@ -589,10 +589,21 @@ class Definitions:
         expr = sm.sympify(expr)
         cache = self._dt if through_definitions else self._dt_raw
         through = self._dt_through if through_definitions else self._dt_raw_through
+        rates: dict = {}
+
+        def rate(s):
+            r = rates.get(s)
+            if r is None:
+                r = rates[s] = self._rate(s, cache, through)
+            return r
+        # one memo for every definition: the parts they share are differentiated once
+        # (each symbol's rate is settled before the definitions that use it, in this order)
+        gradients = Gradients(lambda s: s.is_Symbol and rate(s) != 0)
         for s in self._post_order(self._defined_in(expr), cache,
                                   prune=lambda s: not through(s)):
-            cache[s] = self.zify(self._dt_shallow(self.rhs[s], cache, through, self.free(s)))
-        return self._dt_shallow(expr, cache, through)
+            cache[s] = self.zify(self._dt_shallow(self.rhs[s], rate, gradients,
+                                                  self.free(s)))
+        return self._dt_shallow(expr, rate, gradients)
 
     def dt_raw(self, expr) -> sm.Expr:
         return self.dt(expr, through_definitions=False)
@@ -608,19 +619,21 @@ class Definitions:
         return s in self.rhs and (isinstance(s, Z) or s not in self.varying
                                   or derivative(s) not in self.rhs)
 
-    def _dt_shallow(self, expr, cache, through, fs=None) -> sm.Expr:
-        terms = []
-        for s in (symbols_in(expr) if fs is None else fs):
-            if through(s):
-                ds = cache[s]
-            elif s is TIME:
-                ds = sm.S.One
-            elif s in self.varying:
-                ds = derivative(s)
-            else:
-                continue
-            if ds != 0:
-                terms.append(fast_diff(expr, s) * ds)
+    def _rate(self, s, cache, through) -> sm.Expr:
+        """d s / dt one level deep: a defined symbol's from `cache` (when `through` it),
+        T's 1, a varying symbol's its derivative symbol, anything else 0."""
+        if through(s):
+            return cache[s]
+        if s is TIME:
+            return sm.S.One
+        if s in self.varying:
+            return derivative(s)
+        return sm.S.Zero
+
+    def _dt_shallow(self, expr, rate, gradients: Gradients, fs=None) -> sm.Expr:
+        partials = gradients.of(expr)
+        terms = [times(partials[s], rate(s))
+                 for s in (symbols_in(expr) if fs is None else fs) if s in partials]
         return sm.Add(*terms)
 
     # -- substitution and expansion ----------------------------------------------

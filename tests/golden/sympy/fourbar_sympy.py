@@ -163,11 +163,11 @@ z9 = me.dynamicsymbols('z9')
 z14 = me.dynamicsymbols('z14')
 z31 = me.dynamicsymbols('z31')
 z32 = me.dynamicsymbols('z32')
-z40 = me.dynamicsymbols('z40')
-z41 = me.dynamicsymbols('z41')
+z36 = me.dynamicsymbols('z36')
+z39 = me.dynamicsymbols('z39')
+z46 = me.dynamicsymbols('z46')
 z42 = me.dynamicsymbols('z42')
-z43 = me.dynamicsymbols('z43')
-z44 = me.dynamicsymbols('z44')
+z47 = me.dynamicsymbols('z47')
 Q1p = me.dynamicsymbols('Q1p')
 UA1_2 = me.dynamicsymbols('UA1_2')
 UA2_2 = me.dynamicsymbols('UA2_2')
@@ -190,10 +190,10 @@ z66 = me.dynamicsymbols('z66')
 z71 = me.dynamicsymbols('z71')
 z33 = me.dynamicsymbols('z33')
 z34 = me.dynamicsymbols('z34')
-z45 = me.dynamicsymbols('z45')
-z46 = me.dynamicsymbols('z46')
-z47 = me.dynamicsymbols('z47')
+z37 = me.dynamicsymbols('z37')
+z40 = me.dynamicsymbols('z40')
 z48 = me.dynamicsymbols('z48')
+z43 = me.dynamicsymbols('z43')
 z49 = me.dynamicsymbols('z49')
 z67 = me.dynamicsymbols('z67')
 z72 = me.dynamicsymbols('z72')
@@ -223,11 +223,11 @@ intermediates = [
     (z14, L4*z7*(-L3*z3 - L4*z9) + L4*z9*(L3*z1 + L4*z7)),
     (z31, L3*L4*z3*z7/(2*z14)),
     (z32, -L3*L4*z1*z7/(2*z14)),
-    (z40, (L3*z1 + L4*z7)/z14),
-    (z41, L4**2*z7*z9/(2*z14) - L4*z40*z9/2),
-    (z42, L3*L4*z3*z7/z14 + z41),
-    (z43, -L4**2*z7**2/(2*z14) + L4*z40*z7/2),
-    (z44, -L3*L4*z1*z7/z14 + z43),
+    (z36, (L3*z1 + L4*z7)/z14),
+    (z39, L4**2*z7*z9/(2*z14) - L4*z36*z9/2),
+    (z46, L3*L4*z3*z7/z14 + z39),
+    (z42, -L4**2*z7**2/(2*z14) + L4*z36*z7/2),
+    (z47, -L3*L4*z1*z7/z14 + z42),
     (Q1p, U1),
     (UA1_2, sm.sympify(0)),
     (UA2_2, sm.sympify(0)),
@@ -246,16 +246,16 @@ intermediates = [
     (z23, L3*L4*z17*z9 - L3*L4*z18*z7 + z21*(L4**2*z9 + L4*(-L3*z3 - L4*z9)) + z22*(-L4**2*z7 + L4*(L3*z1 + L4*z7))),
     (UA1p, sm.sympify(0)),
     (UA2p, sm.sympify(0)),
-    (z66, -L4*z7/z14 + z40),
-    (z71, -G*L3*RHO*z32 - G*L4*RHO*z44),
+    (z66, -L4*z7/z14 + z36),
+    (z71, -G*L3*RHO*z32 - G*L4*RHO*z47),
     (z33, L3*L4*z3*z9/(2*z14)),
     (z34, -L3*L4*z1*z9/(2*z14)),
-    (z45, (L3*z3 + L4*z9)/z14),
-    (z46, L4**2*z9**2/(2*z14) - L4*z45*z9/2),
-    (z47, L3*L4*z3*z9/z14 + z46),
-    (z48, -L4**2*z7*z9/(2*z14) + L4*z45*z7/2),
-    (z49, -L3*L4*z1*z9/z14 + z48),
-    (z67, -L4*z9/z14 + z45),
+    (z37, (L3*z3 + L4*z9)/z14),
+    (z40, L4**2*z9**2/(2*z14) - L4*z37*z9/2),
+    (z48, L3*L4*z3*z9/z14 + z40),
+    (z43, -L4**2*z7*z9/(2*z14) + L4*z37*z7/2),
+    (z49, -L3*L4*z1*z9/z14 + z43),
+    (z67, -L4*z9/z14 + z37),
     (z72, -G*L3*RHO*z34 - G*L4*RHO*z49),
 ]
 # those that need the solved rates
@@ -274,9 +274,9 @@ after_solving = [
     (z60, L4*U1p*z7/2 + L4*U2p*z7/2 + L4*U3p*z7/2 + L4*z21*(U1 + U2_2 + U3_2)/2),
     (z62, -L2*Q1p*U1*sm.sin(Q1) + L3*U2p*z1 + L3*z17*(U1 + U2_2) + U1p*(L2*sm.cos(Q1) + L3*z1) + z60),
     (z63, L4**3*RHO*(U1p + U2p + U3p)/12),
-    (z69, -L3*RHO*z31*z55 - L3*RHO*z32*z56 - L4*RHO*z42*z61 - L4*RHO*z44*z62 + L4*z57*z7/z14 - z63*z66),
+    (z69, -L3*RHO*z31*z55 - L3*RHO*z32*z56 - L4*RHO*z46*z61 - L4*RHO*z47*z62 + L4*z57*z7/z14 - z63*z66),
     (F1, -z69 - z71),
-    (z70, -L3*RHO*z33*z55 - L3*RHO*z34*z56 - L4*RHO*z47*z61 - L4*RHO*z49*z62 + L4*z57*z9/z14 - z63*z67),
+    (z70, -L3*RHO*z33*z55 - L3*RHO*z34*z56 - L4*RHO*z48*z61 - L4*RHO*z49*z62 + L4*z57*z9/z14 - z63*z67),
     (F2, -z70 - z72),
 ]
 unknowns = [U1p]
