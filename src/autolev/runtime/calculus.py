@@ -406,6 +406,9 @@ class Definitions:
 
     def primitive_deps(self, sym: sm.Symbol) -> frozenset:
         """The undefined symbols a defined symbol depends on (through definitions)."""
+        known = self._pdeps.get(sym)
+        if known is not None:
+            return known
         for s in self._post_order([sym], self._pdeps):
             deps: set = set()
             for f in self.free(s):
