@@ -695,15 +695,20 @@ def _command_line(pid: int) -> str:
 
 def kill_tagged(tag: str) -> None:
     """Kill the case's processes and wait until they are gone: on a loaded machine a
-    killed process lingers a while, and a later case or test would count it."""
+    killed process lingers a while, and a later case or test would count it.  Gone means
+    two scans a moment apart find none: a process in the middle of an exec shows no
+    environment to one scan (CI, loaded: a `sleep` being exec'd outlived the kill)."""
     deadline = time.monotonic() + 10
-    while left := fuzz_stale.tagged(tag):
-        if time.monotonic() > deadline:
+    quiet_scans = 0
+    while quiet_scans < 2:
+        left = fuzz_stale.tagged(tag)
+        quiet_scans = 0 if left else quiet_scans + 1
+        if left and time.monotonic() > deadline:
             raise RuntimeError(f"processes of case {tag} outlived SIGKILL: {left}")
         for pid in left:
             with _gone():
                 os.kill(pid, signal.SIGKILL)
-        time.sleep(0.05)
+        time.sleep(0.05 if left else 0.2)
 
 
 def _file_in_place_of(folder: Path, text: str) -> None:
