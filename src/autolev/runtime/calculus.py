@@ -592,13 +592,8 @@ class Definitions:
         expr = sm.sympify(expr)
         cache = self._dt if through_definitions else self._dt_raw
         through = self._dt_through if through_definitions else self._dt_raw_through
-        rates: dict = {}
-
         def rate(s):
-            r = rates.get(s)
-            if r is None:
-                r = rates[s] = self._rate(s, cache, through)
-            return r
+            return self._rate(s, cache, through)
         # one memo for every definition: the parts they share are differentiated once
         # (each symbol's rate is settled before the definitions that use it, in this order)
         gradients = Gradients(lambda s: s.is_Symbol and rate(s) != 0)
