@@ -26,7 +26,7 @@ from .runtime import symbols as S
 from .runtime.equations_of import Equations, equations_of, state_of
 from .engine.errors import AutolevModelError
 from .runtime.handoff import CONSTRAINT_SOLVER, Handoff, handoff
-from .runtime.floats import ValuesAt
+from .runtime.floats import NoRealValue, ValuesAt
 from .runtime.interop import simple_rotation
 from .runtime.model import Model
 
@@ -461,7 +461,10 @@ def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Hando
         h = handoff(model, set(eqs.states))
     except AutolevModelError as exc:
         return str(exc), None
-    why = _unlike_the_run(h, eqs)
+    try:
+        why = _unlike_the_run(h, eqs)
+    except NoRealValue as exc:
+        why = f"the check of sympy's equations against the run's found no value ({exc})"
     if why is None:
         return None, h
     statements = model.loaded.statements_at if model.loaded is not None else {}

@@ -5,7 +5,7 @@ import math
 import pytest
 import sympy as sm
 
-from autolev.runtime.floats import ValuesAt
+from autolev.runtime.floats import NoRealValue, NotElementary, ValuesAt, complex_value
 
 x, y, z = sm.symbols("x y z")
 f = sm.Function("f")
@@ -22,6 +22,9 @@ def _nowhere(e):
     sm.asin(x / 2) + sm.acos(y / 3) * sm.tanh(z),
     (x - 2) ** sm.Rational(1, 3) * (x - 2) ** sm.Rational(2, 3),   # complex on the way
     sm.asin(z + 1) + sm.conjugate(sm.asin(z + 1)),                  # past math's domain
+    sm.pi * x + sm.E ** y - sm.I * sm.I * sm.GoldenRatio,            # sympy's constants
+    sm.atan2(y, x - 3) * sm.sign(y) + sm.Max(x, z),                  # no complex double
+    sm.re(sm.log(y) * sm.I),                                         # log on its cut
 ])
 def test_values_equal_sympys(expr):
     point = {x: 0.7, y: -0.4, z: 1.3}
@@ -50,5 +53,15 @@ def test_what_the_point_lacks_is_asked_and_definitions_follow_their_order():
     values.define(z, f(t) * 3)
     assert values(z + sm.Derivative(f(t), t) + x) == 6.0
     assert set(asked) == {sm.Derivative(f(t), t), x}
-    with pytest.raises(ValueError, match="not real"):
+    with pytest.raises(NoRealValue, match="not real"):
         ValuesAt({x: -1.0}, _nowhere)(sm.sqrt(x))
+
+
+def test_no_value_is_said_and_the_plain_walk_leaves_what_it_does_not_take_to_sympy():
+    with pytest.raises(NoRealValue, match="no value"):
+        ValuesAt({x: 0.0}, _nowhere)(1 / x)
+    with pytest.raises(NoRealValue, match="no finite value"):
+        ValuesAt({x: 1e300, y: 1e300}, _nowhere)(x * y)
+    for e in (x + y, sm.atan2(x, 1), sm.asin(x), x * 1e300 * 1e300):
+        with pytest.raises(NotElementary):
+            complex_value(e, {x: 2.0}, {})

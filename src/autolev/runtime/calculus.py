@@ -31,7 +31,7 @@ from .symbols import TIME, Z, derivative, new_z
 from ..engine.errors import AutolevModelError
 from .fastdiff import diff as fast_diff
 from .fastdiff import Gradients, times, total, value_and_gradient
-from .sympy_functions import SPEC_OF_FUNCTION
+from .floats import NotElementary, complex_value
 
 
 def _order_key(s) -> tuple:
@@ -91,8 +91,8 @@ def _number_at(e, values: dict) -> complex:
     symbol left, or a function refusing the argument it gets, as MIN a complex one).
     Taken in complex double precision where every node is elementary, else by sympy."""
     try:
-        return _fast_number(e, values, {})
-    except (_NotFast, ArithmeticError, ValueError, TypeError, RecursionError):
+        return complex_value(e, values, {})
+    except (NotElementary, ArithmeticError, ValueError, TypeError, RecursionError):
         pass
     try:
         return complex(e.xreplace(values))
@@ -114,50 +114,6 @@ def symbols_in(expr) -> set:
         else:
             stack.extend(e.args)
     return found
-
-
-class _NotFast(Exception):
-    """A node the double-precision walk leaves to sympy."""
-
-
-# the functions taken in complex double precision (principal branches, as sympy's
-# numbers take them)
-_IN_COMPLEX = {f: s for f, s in SPEC_OF_FUNCTION.items() if s.complex_double is not None}
-
-
-def _fast_number(e, values: dict, memo: dict) -> complex:
-    """e's value by a walk of its tree, each repeated part once; _NotFast for a node
-    that is not elementary, or a symbol without a value (sympy then decides)."""
-    if e in memo:
-        return memo[e]
-    if e.is_Symbol:
-        if e not in values:
-            raise _NotFast(e)
-        out = complex(values[e])
-    elif e.is_Number or e.is_NumberSymbol or e is sm.I:
-        out = complex(e)
-    elif e.is_Add:
-        out = sum((_fast_number(a, values, memo) for a in e.args), 0j)
-    elif e.is_Mul:
-        out = 1 + 0j
-        for a in e.args:
-            out *= _fast_number(a, values, memo)
-    elif e.is_Pow:
-        base = _fast_number(e.base, values, memo)
-        out = base ** (int(e.exp) if e.exp.is_Integer else _fast_number(e.exp, values, memo))
-    elif (spec := _IN_COMPLEX.get(e.func)) is not None and len(e.args) == spec.arity:
-        args = [_fast_number(a, values, memo) for a in e.args]
-        if spec.branch_cut is not None and spec.branch_cut(*args):
-            raise _NotFast(e)      # cmath and sympy take opposite sides of the cut there
-        out = complex(spec.complex_double(*args))
-    else:
-        raise _NotFast(e)
-    if not (math.isfinite(out.real) and math.isfinite(out.imag)):
-        raise _NotFast(e)          # infinities and NaN as sympy's numbers take them
-    if out.imag == 0:
-        out = complex(out.real, 0.0)   # a real number: no -0j to turn a root's branch
-    memo[e] = out
-    return out
 
 
 class _CachedFor:
