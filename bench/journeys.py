@@ -44,7 +44,8 @@ TOLERANCE = 1e-6 (the 7 significant digits both print).  Where an integrated fil
 parts from the run's after its first row, the run is made again with RELERR and
 ABSERR 1000 times smaller: the rows from where the run parts from that one depend on
 the integration error, and only the rows before them must agree (bench/truth.py's
-rule for Autolev's own programs).  A Matlab program of a CODE DYNAMICS integrates
+rule for Autolev's own programs; the earliest such row of a command's files counts for
+all of them, as they are one integration's).  A Matlab program of a CODE DYNAMICS integrates
 with Octave's ode45 and the run with scipy's RK45, two step controllers: only its
 first row (the initial values, before any step) and its number of rows are compared.
 
@@ -655,6 +656,26 @@ def first_parting(a, b) -> tuple[int, int, float] | None:
     return int(row), int(col), float(d[row].max())
 
 
+def _run_parts_at(run: RunToMatch, stem: str, theirs: dict, tight: Path) -> int | None:
+    """The first row where any of the run's files of `stem` parts from the tighter run's
+    (None: none does).  Its files are one integration's: a file of aggregates (energy,
+    momentum) may stay close past the row where the state itself has parted, and its
+    later rows depend on the integration error as much as the state's."""
+    rows = []
+    for name, path in output_files(tight, stem).items():
+        if name not in theirs:
+            continue
+        b, fine = read_table(theirs[name]), read_table(path)
+        if run.tight_status != 0:   # it failed: its last row is where it stopped
+            fine = fine[:-1]
+        common = min(len(fine), len(b))
+        own = first_parting(b[:common], fine[:common]) \
+            if fine.shape[1:] == b.shape[1:] else None
+        if own is not None:
+            rows.append(own[0])
+    return min(rows, default=None)
+
+
 def compare_files(check: ProgramCheck, here: Path, stem: str, run: RunToMatch,
                   integrated: bool, first_row_only: bool = False,
                   all_rows_run: bool = True) -> None:
@@ -670,6 +691,7 @@ def compare_files(check: ProgramCheck, here: Path, stem: str, run: RunToMatch,
                          f"autolev run {', '.join(sorted(theirs)) or 'no file'}")
         return
     trusted = []
+    run_parts: list = []        # where the run parts from the tighter one (once)
     for name in sorted(theirs):
         a, b = read_table(ours[name]), read_table(theirs[name])
         if not all_rows_run and a.size and b.size and a.shape[1] == b.shape[1]:
@@ -689,12 +711,12 @@ def compare_files(check: ProgramCheck, here: Path, stem: str, run: RunToMatch,
             fine = read_table(fine)
             if run.tight_status != 0:   # it failed: its last row is where it stopped
                 fine = fine[:-1]
-            common = min(len(fine), len(b))
-            own = first_parting(b[:common], fine[:common]) \
-                if fine.shape[1:] == b.shape[1:] else None
-            if own is not None and own[0] <= parting[0]:
-                trusted.append(own[0])
-                parting = first_parting(a[:max(own[0], 1)], b[:max(own[0], 1)])
+            if not run_parts:
+                run_parts.append(_run_parts_at(run, stem, theirs, tight))
+            own = run_parts[0]
+            if own is not None and own <= parting[0]:
+                trusted.append(own)
+                parting = first_parting(a[:max(own, 1)], b[:max(own, 1)])
             elif run.tight_status != 0 and parting[0] >= len(fine):
                 # the tighter run stops there: the motion passes a state no step size
                 # integrates, and the rows after it depend on how it was stepped over

@@ -743,8 +743,11 @@ def script_rates(script: Path, points, names: list, extra) -> dict:
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     mass, force, _ = module.numeric_functions()
-    # a variable given by its second derivative has the speed NAME_rate there
-    order = [n[:-5] + "'" if n.endswith("_rate") and n[:-5] + "'" in names else n
+    # a variable given by its second derivative has the speed NAME_rate at the mechanics
+    # level, and the equations level names a derivative with a p per order (NAMEp)
+    primed = {n.replace("'", "p"): n for n in names if "'" in n}
+    order = [n[:-5] + "'" if n.endswith("_rate") and n[:-5] + "'" in names
+             else primed.get(n, n) if n not in names else n
              for n in map(_state_name, module.states)]
     p = [module.constants[c] for c in module.constants]
     index = {n: k for k, n in enumerate(names)}

@@ -182,3 +182,37 @@ def test_no_corpus_model_fails_a_command_but_the_named_genuine_ones():
     failures = [f"{j.ident} {c}: {j.cells[c].reason}" for j in done for c in J.COMMANDS
                 if j.cells[c].status == "FAIL"]
     assert failures == []
+
+
+
+def _tables(folder, columns):
+    """Files m.1, m.2 ... of rows (t, y) at t = 0, 1, 2, 3, one per list of y's."""
+    folder.mkdir(parents=True, exist_ok=True)
+    for k, ys in enumerate(columns, 1):
+        (folder / f"m.{k}").write_text(
+            "% t y\n" + "".join(f"{t:.6e} {y:.6e}\n" for t, y in enumerate(ys)))
+
+
+@pytest.mark.parametrize("tight_state, differs", [
+    # the state parts from the tighter run at row 3 (t = 2): the energy's later rows
+    # depend on the integration error too, though the run's energy stays near the
+    # tighter one's (sprintjl 9seg's Fortran: its .6 of energies and momenta)
+    ([1.0, 1.1, 1.3, 1.6], False),
+    # the state never parts from the tighter run: the energy must agree to its end
+    ([1.0, 1.1, 1.2, 1.3], True),
+])
+def test_a_commands_files_are_trusted_up_to_where_any_of_them_parts_from_a_tighter_run(
+        tmp_path, tight_state, differs):
+    run = J.RunToMatch(tmp_path / "m.al", tmp_path / "work", None, None, 60)
+    state, energy = [1.0, 1.1, 1.2, 1.3], [50.0, 50.0, 50.0, 50.0]
+    _tables(run.folder, [state, energy])
+    _tables(tmp_path / "program", [state, [50.0, 50.0, 50.0, 50.1]])
+    run.tight_folder, run.tight_status = tmp_path / "work" / "run-tight", 0
+    _tables(run.tight_folder, [tight_state, energy])
+    check = J.ProgramCheck()
+    J.compare_files(check, tmp_path / "program", "m", run, integrated=True)
+    assert bool(check.problem) == differs, check
+    if differs:
+        assert check.problem.startswith("m.2 column 2 differs") and "row 4" in check.problem
+    else:
+        assert "row 3 at the earliest" in " ".join(check.remarks)

@@ -107,3 +107,23 @@ def test_rates_of_an_ill_conditioned_mass_matrix_are_compared_to_its_rounding():
     assert paths.compare_rates(reference, near).mark == "~"
     assert paths.compare_rates(dict(reference, condition=1.0), near).mark == "DIFF"
     assert paths.compare_rates(reference, far).mark == "DIFF"
+
+
+def test_the_equations_level_scripts_primed_names_are_the_runs_states(tmp_path):
+    # the script names Y' Yp (the equations level: Y, Y' are beyond the coordinates and
+    # speeds); its rates were not compared ('-'), so its rows' parting was not explained
+    model = tmp_path / "xy.al"
+    model.write_text("NEWTONIAN N\nPARTICLES P\nMOTIONVARIABLES' X''\nVARIABLES Y''\n"
+                     "CONSTANTS K\nMASS P = 1\nP_NO_P> = X*N1>\nV_P_N> = DT(P_NO_P>, N)\n"
+                     "A_P_N> = DT(V_P_N>, N)\nFORCE_P> = -K*X*N1>\n"
+                     "ZERO = FR() + FRSTAR()\nKANE()\nY'' = -K*Y\n"
+                     "INPUT K = 4, X = 1, X' = 0, Y = 0.5, Y' = 0, TFINAL = 1\n"
+                     "OUTPUT T, X, Y\nCODE DYNAMICS() xy.c\n")
+    script = tmp_path / "xy_sympy.py"
+    made = paths.run_process(paths.autolev_cli("convert", model, "--to", "sympy", "-q",
+                                               "-o", script), tmp_path, 300)
+    assert made.returncode == 0 and "Level: equations." in script.read_text()
+    assert "Yp = me.dynamicsymbols('Yp')" in script.read_text()
+    found = paths.rates(model, [], 2, None, script)
+    assert sorted(found["script"]["states"]) == sorted(found["run"]["states"])
+    assert paths.compare_rates(found["run"], found["script"]).mark in ("=", "~")
