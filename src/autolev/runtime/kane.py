@@ -207,27 +207,27 @@ class Forming:
         fr = self._fr
         with _auxiliary_held(system.defs, self.aux):
             raw_fr = self._active_forces(system) if fr is None else None
-            frstar = [sm.S.Zero] * n_rows
+            frstar: list[list] = [[] for _ in range(n_rows)]
             if inertia:
                 _inertia_forces(system, self._partials, frstar)
         z = system.defs.zify
         if fr is None:       # zified after Fr*'s terms, as one forming always named them
             fr = self._fr = sm.Matrix([z(e) for e in raw_fr])
         equations = KaneEquations(self.indep, self.aux, self.dep, fr,
-                                  sm.Matrix([z(e) for e in frstar]))
+                                  sm.Matrix([z(sm.Add(*terms)) for terms in frstar]))
         self._formed[inertia] = equations
         return equations
 
     def _active_forces(self, system: System) -> list:
         n = system.newtonian
-        fr = [sm.S.Zero] * (len(self.indep) + len(self.aux))
+        fr: list[list] = [[] for _ in range(len(self.indep) + len(self.aux))]
         for p, f in system.forces.items():
             if f.terms:
                 _accumulate(fr, self._partials(p.vel(n)), f)
         for a, t in system.torques.items():
             if t.terms:
                 _accumulate(fr, self._partials(a.ang_vel_in(n)), t)
-        return fr
+        return [sm.Add(*terms) for terms in fr]
 
 
 def _auxiliary_held(defs: Definitions, aux: list):
@@ -241,12 +241,14 @@ def _auxiliary_held(defs: Definitions, aux: list):
                       if held & set(now) else None)
 
 
-def _accumulate(total: list, partials: Iterable[Vector], load: Vector) -> None:
+def _accumulate(terms: list[list], partials: Iterable[Vector], load: Vector) -> None:
+    """Each row's term of one load; the rows are summed once at the end (adding to a
+    growing sum flattens all of it again at every load)."""
     for r, vr in enumerate(partials):
-        total[r] += vr.dot(load)
+        terms[r].append(vr.dot(load))
 
 
-def _inertia_forces(system: System, partials: _Partials, frstar: list) -> None:
+def _inertia_forces(system: System, partials: _Partials, frstar: list[list]) -> None:
     n = system.newtonian
     for p in system.particles:
         if p.mass is None:
