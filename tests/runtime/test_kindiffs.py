@@ -49,3 +49,22 @@ def test_the_rates_give_the_angular_velocity_the_model_wrote(tmp_path, sequence,
     w = b.ang_vel_in(n)
     for k, axis in enumerate((written.x, written.y, written.z), start=1):
         assert float(w.dot(axis).subs(at)) == pytest.approx(numbers[f"U{k}"], abs=1e-12)
+
+
+def test_the_small_solve_reduces_by_the_pythagorean_identity_alone(tmp_path, monkeypatch):
+    import sympy as sm
+    from autolev.runtime.model import _pythagorean
+    q2, q3 = sm.symbols("q2 q3")
+    # SPACE313's determinant and a minor reduce; a lone COS^2 is shorter as it is
+    assert _pythagorean(-sm.sin(q2) ** 3 - sm.sin(q2) * sm.cos(q2) ** 2) == -sm.sin(q2)
+    assert _pythagorean(sm.sin(q2) * (sm.sin(q3) ** 2 + sm.cos(q3) ** 2)) == sm.sin(q2)
+    assert _pythagorean(sm.cos(q3) ** 2) == sm.cos(q3) ** 2
+    # no general simplifier on the way (trigsimp was a third of such a model's forming)
+    def refused(*args, **kwargs):
+        raise AssertionError("a general simplifier ran")
+    for name in ("trigsimp", "simplify"):
+        monkeypatch.setattr(sm, name, refused)
+    path = tmp_path / "kin.al"
+    path.write_text(MODEL.format(sequence="SPACE313", frame="B"))
+    m = autolev.load(path)
+    assert len(symbols(m, "Q1'", "Q2'", "Q3'")) == 3

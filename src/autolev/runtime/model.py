@@ -629,12 +629,30 @@ def _split(names) -> list[str]:
 
 def _solve_small(a: sm.Matrix, b: sm.Matrix) -> list:
     """Exact solve of a small system (kinematical equations) by its adjugate: the
-    determinant and the adjugate's entries, a few trigonometric terms each, simplified
-    alone (SIN(Q)^2 + COS(Q)^2 is 1), never the solution's larger expressions."""
-    det = sm.trigsimp(a.det(method="berkowitz"))
-    adj = a.adjugate(method="berkowitz").applyfunc(sm.trigsimp)
+    determinant and the adjugate's entries, a few trigonometric terms each, reduced
+    alone by SIN(Q)^2 + COS(Q)^2 = 1 (_pythagorean), never the solution's larger
+    expressions."""
+    det = _pythagorean(a.det(method="berkowitz"))
+    adj = a.adjugate(method="berkowitz").applyfunc(_pythagorean)
     return [sm.cancel(sm.together(sum(adj[i, j] * b[j] for j in range(b.rows)) / det))
             for i in range(a.rows)]
+
+
+def _pythagorean(e: sm.Expr) -> sm.Expr:
+    """e expanded, and with each COS(X)^2 written 1 - SIN(X)^2 where that makes it
+    shorter: the reduction the products of an orientation sequence's sines and cosines
+    need (a determinant SIN(Q2)^3 + SIN(Q2)*COS(Q2)^2 is SIN(Q2)), by one rule where a
+    general simplifier (trigsimp: a third of a small KINDIFFS model's forming) tries
+    many."""
+    e = sm.expand(e)
+    squares = {p: sm.cos(p.base.args[0]) ** (p.exp % 2)
+               * (1 - sm.sin(p.base.args[0]) ** 2) ** (p.exp // 2)
+               for p in e.atoms(sm.Pow)
+               if isinstance(p.base, sm.cos) and p.exp.is_Integer and p.exp >= 2}
+    if not squares:
+        return e
+    reduced = sm.expand(e.xreplace(squares))
+    return reduced if sm.count_ops(reduced) < sm.count_ops(e) else e
 
 
 class _ModuleName:
