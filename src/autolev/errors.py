@@ -234,3 +234,10 @@ class AutolevRuntimeError(AutolevError):
         self.diagnostic = diagnostic
         self.diagnostics = [diagnostic]
         super().__init__(diagnostic.format())
+
+
+def some_names(names, shown: int = 8) -> str:
+    """A list of names for a message: the first `shown` of them and how many more."""
+    names = list(names)
+    more = len(names) - shown
+    return ", ".join(names[:shown]) + (f", ... and {more} more" if more > 0 else "")

@@ -15,19 +15,22 @@ import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
-import sympy
-from sympy.matrices.exceptions import NonInvertibleMatrixError
-
 from . import modelcache
 from .errors import (AutolevFileError, AutolevInternalError, AutolevRuntimeError,
                      AutolevSyntaxError, AutolevTranslationError, Diagnostic, Location)
 from .engine.errors import AutolevModelError
-from .runtime.model import Loaded
 from .translate import Translation, translate
 
-# the model's fault: what the runtime refuses, and arithmetic on the values it asks for
-# (a division by zero, an overflow, a singular matrix to invert)
-_MODEL_FAULTS = (AutolevModelError, ZeroDivisionError, OverflowError, NonInvertibleMatrixError)
+# sympy and the runtime are imported where a model is built (not at this module's
+# import: a command that reads only the translation, as the note naming missing values
+# before the model is built, does without them)
+
+
+def _model_faults() -> tuple:
+    """The model's fault: what the runtime refuses, and arithmetic on the values it asks
+    for (a division by zero, an overflow, a singular matrix to invert)."""
+    from sympy.matrices.exceptions import NonInvertibleMatrixError
+    return (AutolevModelError, ZeroDivisionError, OverflowError, NonInvertibleMatrixError)
 
 # sympy's refusals of the calls and operators a statement's own line applies to the
 # model's values (the translation writes matrix arithmetic, element access, int() of an
@@ -38,7 +41,11 @@ _OPERATOR_REFUSALS = (ValueError, IndexError, TypeError)
 
 # autolev's own code: an unexpected exception raised in it is autolev's bug
 _PACKAGE = os.path.dirname(os.path.abspath(__file__)) + os.sep
-_SYMPY = os.path.dirname(os.path.abspath(sympy.__file__)) + os.sep
+
+
+def _sympy_folder() -> str:
+    import sympy
+    return os.path.dirname(os.path.abspath(sympy.__file__)) + os.sep
 
 
 def load(path):
@@ -170,6 +177,7 @@ def _execute(translation, filename: str):
         failure = _translation_failure(exc, translation, lines, module.__file__)
         # an internal error keeps autolev's traceback; the user's diagnostic needs none
         raise failure from (exc if isinstance(failure, AutolevInternalError) else None)
+    from .runtime.model import Loaded
     model = module.__dict__["model"]
     model.loaded = Loaded(module.__dict__)
     return model
@@ -216,9 +224,9 @@ def _failed_in(exc: BaseException, filename: str) -> tuple[int | None, list[str]
 def _models_fault(exc: BaseException, below: list[str]) -> bool:
     """Whether exc, raised through the frames of files `below` a statement's line, is
     the model's fault rather than autolev's."""
-    if isinstance(exc, (RecursionError, *_MODEL_FAULTS)):
+    if isinstance(exc, (RecursionError, *_model_faults())):
         return True
-    by_sympy = bool(below) and below[0].startswith(_SYMPY) and \
+    by_sympy = bool(below) and below[0].startswith(_sympy_folder()) and \
         not any(f.startswith(_PACKAGE) for f in below)
     return by_sympy and isinstance(exc, _OPERATOR_REFUSALS)
 
@@ -289,6 +297,7 @@ def run_python(text: str, filename: str) -> object:
         raise AutolevRuntimeError(Diagnostic(Location(filename, 1, 1), "R003",
                                              "this module defines no `model`", "error",
                                              None))
+    from .runtime.model import Loaded
     model.loaded = Loaded(module.__dict__,
                           source=ModelSource("python", text, filename, model.revision()))
     return model

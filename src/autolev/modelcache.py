@@ -22,12 +22,9 @@ import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
-import sympy as sm
-
 from .engine.cachekeys import PLAN_PREFIX, code_digest, enabled
 from .engine import diskcache, reading
 from .engine.reading import ReadSet
-from .runtime.libraries import sum_or_product_as_given
 
 PREFIX = "model_"
 TRANSLATION_PREFIX = "translation_"
@@ -148,23 +145,27 @@ def _translation_entry(path: Path, digest: str) -> Path:
 class _ExpressionPickler(pickle.Pickler):
     """Sums, products and powers are written as their parts, to be put together again
     as they were (sympy's own pickling rebuilds them through their constructors, which
-    sort and combine the terms anew: 2.7 times slower to read on the 3-D gait model)."""
+    sort and combine the terms anew: 2.7 times slower to read on the 3-D gait model).
+    sympy is not imported for it: while no one has imported it, what is written holds
+    no expression (a translation, kept before any model is built: the note naming
+    missing values comes before sympy's import)."""
+
+    def __init__(self, file, protocol=None) -> None:
+        super().__init__(file, protocol)
+        sm = sys.modules.get("sympy")
+        self._sums, self._pow = ((sm.Add, sm.Mul), sm.Pow) if sm is not None else ((), None)
+        self._joined = self._power = None
+        if sm is not None:
+            from .runtime.libraries import power_as_given, sum_or_product_as_given
+            self._joined, self._power = sum_or_product_as_given, power_as_given
 
     def reducer_override(self, obj):
         kind = type(obj)
-        if kind is sm.Add or kind is sm.Mul:
-            return _joined, (kind, obj.args, obj.is_commutative)
-        if kind is sm.Pow:
-            return _power, obj.args
+        if kind in self._sums:
+            return self._joined, (kind, obj.args, obj.is_commutative)
+        if kind is self._pow:
+            return self._power, obj.args
         return NotImplemented
-
-
-def _joined(kind, args, commutative):
-    return sum_or_product_as_given(kind, args, commutative)
-
-
-def _power(base, exponent):
-    return sm.Pow(base, exponent, evaluate=False)
 
 
 @dataclass(frozen=True)

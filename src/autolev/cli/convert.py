@@ -52,7 +52,7 @@ def cmd_convert(ns: argparse.Namespace) -> int:
 def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
     """The model's equations of motion as a standalone SymPy script."""
     from ..export_mechanics import sympy_export
-    from ..runtime.numerics.inputs import some_names
+    from ..errors import some_names
     from ..engine.errors import AutolevModelError
     from ..runtime.tools import write_output
     from .common import load_model, refuse_unknown_names

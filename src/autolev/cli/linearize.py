@@ -7,8 +7,6 @@ import math
 import sys
 from pathlib import Path
 
-import numpy as np
-
 from .common import (UsageError, failed_write, has_matplotlib, listed, load_model,
                      model_value_options, name_values, overwrite_option, specified_values)
 
@@ -167,6 +165,7 @@ def _linearize_sweep(path: Path, model, sweep, point: dict, options: dict,
     """Eigenvalues against one quantity of the operating point, by the studies'
     sweep (worker processes when it pays): CSV on stdout (and in --out as
     NAME-sweep.csv; with --plot, NAME-sweep.png in --out or here)."""
+    import numpy as np
     from ..runtime.tools import safe_stem
     from ..runtime.tools import write_output
     from ..runtime.studies import eigenvalues_and_modes, follow_modes

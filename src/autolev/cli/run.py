@@ -210,7 +210,7 @@ def _values_lacking(path: Path, overrides: dict, infile, stream):
     given = {name.upper() for name in overrides}
 
     def note(translation) -> None:
-        from ..runtime.numerics.inputs import some_names
+        from ..errors import some_names
         from_file = _names_in_file(infile, translation)
         if from_file is None:
             return                  # the file decides, and the run says what it lacks

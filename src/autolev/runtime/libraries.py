@@ -28,6 +28,11 @@ def sum_or_product_as_given(kind: type, args: tuple, commutative: bool | None) -
     return kind._from_args(args, commutative)
 
 
+def power_as_given(base: sm.Expr, exponent: sm.Expr) -> sm.Expr:
+    """base**exponent as it was written (a cached model read back: not evaluated)."""
+    return sm.Pow(base, exponent, evaluate=False)
+
+
 @dataclass(frozen=True)
 class DormandPrince853:
     """The Dormand-Prince 8(5,3) tableau: `a` (extended stages x extended stages, the

@@ -16,7 +16,8 @@ from .. import units
 from ...engine.errors import AutolevModelError
 from ..io import CodeKind
 from ..vectors import Vector
-from .inputs import INTEGRATION, display_name, some_names
+from ...errors import some_names
+from .inputs import INTEGRATION, display_name
 from ...engine.numbers import parse_number
 from ...engine.results import Column
 

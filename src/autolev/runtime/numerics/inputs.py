@@ -24,6 +24,7 @@ import sympy as sm
 from ...engine import reading
 from .. import units
 from ..calculus import is_real_number
+from ...errors import some_names
 from ...engine.errors import AutolevModelError
 from ..io import INTEGRATION_PARAMETERS as INTEGRATION
 from ..symbols import TIME
@@ -356,13 +357,6 @@ PRINTINT_RULE = f"PRINTINT must be a whole number from 1 to {MAX_PRINT_INTEGER}"
 
 def is_print_integer(value: float) -> bool:
     return math.isfinite(value) and value == int(value) and 1 <= value <= MAX_PRINT_INTEGER
-
-
-def some_names(names, shown: int = 8) -> str:
-    """A list of names, the first `shown` of them and how many more."""
-    names = list(names)
-    more = len(names) - shown
-    return ", ".join(names[:shown]) + (f", ... and {more} more" if more > 0 else "")
 
 
 def warn_zero(keys, what: str) -> None:

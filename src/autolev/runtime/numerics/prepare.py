@@ -20,7 +20,8 @@ from .command import (encoded_values, equations_and_unknowns, find_symbol, given
                       program_of, solution_columns, solved_by_lu, solver_expressions,
                       sweep_values, take_time, time_dependence)
 from ...engine.files import safe_stem
-from .inputs import INTEGRATION, Inputs, display_name, some_names
+from ...errors import some_names
+from .inputs import INTEGRATION, Inputs, display_name
 from .projection import constants_needed
 from .snapshot import ModelSnapshot
 from ...engine.options import RunOptions
