@@ -153,10 +153,11 @@ class _ExpressionPickler(pickle.Pickler):
     def __init__(self, file, protocol=None) -> None:
         super().__init__(file, protocol)
         sm = sys.modules.get("sympy")
-        self._sums, self._pow = ((sm.Add, sm.Mul), sm.Pow) if sm is not None else ((), None)
-        self._joined = self._power = None
-        if sm is not None:
+        if sm is None:
+            self._sums, self._pow, self._joined, self._power = (), None, None, None
+        else:
             from .runtime.libraries import power_as_given, sum_or_product_as_given
+            self._sums, self._pow = (sm.Add, sm.Mul), sm.Pow
             self._joined, self._power = sum_or_product_as_given, power_as_given
 
     def reducer_override(self, obj):
