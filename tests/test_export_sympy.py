@@ -80,8 +80,34 @@ def test_a_model_without_equations_of_motion_is_refused(tmp_path, capsys):
     path.write_text("CONSTANTS A\nVARIABLES X\nX = 2*A\nINPUT A = 1\nOUTPUT X\n"
                     "CODE ALGEBRAIC() algebra.c\n")
     assert main(["convert", "--to", "sympy", str(path), "-o", str(tmp_path / "x.py")]) == 1
-    assert "no CODE DYNAMICS or ODE to export" in capsys.readouterr().err
+    assert "writes no CODE DYNAMICS or ODE, and has no equations of motion to export" \
+        in capsys.readouterr().err
     assert not (tmp_path / "x.py").exists()
+
+
+def test_a_model_writing_no_code_dynamics_exports_its_equations_as_they_stand(tmp_path,
+                                                                              capsys):
+    # 18 corpus models form Kane's equations and write only CODE ALGEBRAIC (gait2d's
+    # implicit f) or nothing: their script is what a CODE DYNAMICS() at the end would
+    # give, as linearize takes such a model
+    text = "\n".join(line for line in (EXAMPLES / "double_pendulum.al").read_text()
+                     .splitlines() if not line.upper().startswith("CODE")) + "\n"
+    bare, coded = tmp_path / "bare.al", tmp_path / "coded.al"
+    bare.write_text(text)
+    coded.write_text(text + "CODE DYNAMICS() bare.c\n")
+    outs = []
+    for path in (bare, coded):
+        out = tmp_path / f"{path.stem}.py"
+        assert main(["convert", "--to", "sympy", str(path), "-o", str(out), "-q"]) == 0
+        outs.append(out.read_text().replace(path.name, "MODEL"))
+    err = capsys.readouterr().err
+    assert "bare.al: note: the model writes no CODE DYNAMICS or ODE" in err
+    assert "coded.al: note" not in err
+    # the same script but for what it says it exports
+    said = "(no CODE DYNAMICS or ODE: the model's equations as they stand, as linearize"
+    assert said in " ".join(outs[0].split())
+    first, second = (o.split('"""', 2)[2] for o in outs)       # after the docstring
+    assert first == second
 
 
 def test_names_from_the_model_become_identifiers_never_code():

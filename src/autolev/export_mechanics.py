@@ -12,7 +12,7 @@ so `python OUT.py` integrates and writes as that script does.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import sympy as sm
@@ -395,15 +395,23 @@ def _definitions_wanted(eqs: Equations, definitions: list) -> set:
 
 @dataclass(frozen=True)
 class SympyExport:
-    """A SymPy script and the constants it holds without a value (None there)."""
+    """A SymPy script, the constants it holds without a value (None there), and what it
+    exports (a CODE command, or the model's equations as they stand)."""
 
     text: str
     lacking: list
+    exported: str
+
+
+# what a script of a model that writes no CODE DYNAMICS or ODE holds (linearize's rule)
+AS_THEY_STAND = ("no CODE DYNAMICS or ODE: the model's equations as they stand, as "
+                 "linearize takes them")
 
 
 def export_sympy(model, source: str, command=None, infile=None, overrides=None,
                  level: str = "auto", missing_values: str = "keep") -> str:
-    """The SymPy script of the model's first integrating CODE command (or `command`);
+    """The SymPy script of the model's first integrating CODE command (or `command`;
+    without one, the model's equations as they stand, as linearize takes them);
     `source`: the model's file, named in the script; its values as a run takes them
     (INPUT, then the .in file `infile`, then `overrides` in the quantities' units).
     `level`: "mechanics", "equations", or "auto" (mechanics when the model allows it,
@@ -420,24 +428,35 @@ def sympy_export(model, source: str, command=None, infile=None, overrides=None,
     """export_sympy's script, with the names of the constants it has no value for."""
     if level not in LEVELS:
         raise ValueError(f"level is one of {', '.join(LEVELS)}, not {level!r}")
-    if command is None:
-        integrating = [c for c in model.code_commands if c.kind.integrates]
-        if not integrating:
-            raise AutolevModelError("the model has no CODE DYNAMICS or ODE to export "
-                                    "(its equations of motion)")
-        command = integrating[0]
-    eqs = equations_of(model, command, infile=infile, overrides=overrides,
-                       missing_values=missing_values)
+    as_they_stand = command is None and not any(c.kind.integrates
+                                                 for c in model.code_commands)
+    try:
+        if command is None:
+            command = next((c for c in model.code_commands if c.kind.integrates), None) \
+                or model.plain_dynamics()
+        eqs = equations_of(model, command, infile=infile, overrides=overrides,
+                           missing_values=missing_values)
+    except AutolevModelError as exc:
+        if not as_they_stand:
+            raise
+        raise AutolevModelError(f"the model writes no CODE DYNAMICS or ODE, and its "
+                                f"equations as they stand are not formed: {exc}") from None
+    if as_they_stand:
+        if not eqs.states:
+            raise AutolevModelError("the model writes no CODE DYNAMICS or ODE, and has no "
+                                    "equations of motion to export (no motion variables)")
+        eqs = replace(eqs, command=AS_THEY_STAND)
     lacking = [c.name for c, v in eqs.constants.items() if v is None]
     if level == "equations":
-        return SympyExport(EquationsScript(eqs, source).text(), lacking)
+        return SympyExport(EquationsScript(eqs, source).text(), lacking, eqs.command)
     why, h = mechanics_handoff(model, command, eqs)
     if h is not None:
-        return SympyExport(MechanicsScript(h, eqs, model, source).text(), lacking)
+        return SympyExport(MechanicsScript(h, eqs, model, source).text(), lacking,
+                           eqs.command)
     if level == "mechanics":
         raise AutolevModelError(f"the mechanics level does not take this model: {why} "
                                 "(--level equations writes its equations)")
-    return SympyExport(EquationsScript(eqs, source, why).text(), lacking)
+    return SympyExport(EquationsScript(eqs, source, why).text(), lacking, eqs.command)
 
 
 def mechanics_handoff(model, command, eqs: Equations) -> tuple[str | None, Handoff | None]:

@@ -51,7 +51,7 @@ def cmd_convert(ns: argparse.Namespace) -> int:
 
 def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
     """The model's equations of motion as a standalone SymPy script."""
-    from ..export_mechanics import sympy_export
+    from ..export_mechanics import AS_THEY_STAND, sympy_export
     from ..errors import some_names
     from ..engine.errors import AutolevModelError
     from ..runtime.tools import write_output
@@ -74,6 +74,9 @@ def _convert_to_sympy(path: Path, ns: argparse.Namespace) -> int:
     except AutolevModelError as exc:
         print(f"{path}: error: {exc}", file=sys.stderr)
         return 1
+    if script.exported == AS_THEY_STAND:
+        print(f"{path}: note: the model writes no CODE DYNAMICS or ODE: the script holds "
+              "its equations as they stand (as linearize takes them)", file=sys.stderr)
     if script.lacking:
         print(f"{path}: note: no value given for {some_names(script.lacking)}: the "
               "script's `constants` holds None for them (give each there, or here with "
