@@ -88,3 +88,17 @@ def test_gradients_sharing_one_memo_equal_sympy_diff_of_each_expression():
         assert set(g) <= {X, Y, Z}
         for x in (X, Y, Z):
             assert _close(g.get(x, sm.S.Zero), sm.diff(e, x), point), (e, x)
+
+
+def test_a_product_made_without_flattening_is_the_one_sympy_makes():
+    import itertools
+    import sympy as sm
+    from autolev.runtime.fastdiff import times
+    symbols = list(sm.symbols("Z2 Z10 q1 U1 a_b x")) + [sm.Dummy("d")]
+    numbers = [sm.Integer(-1), sm.Integer(3), sm.Rational(-1, 2), sm.Float(0.25),
+               sm.Integer(0), sm.Integer(1), sm.Float(1.0), sm.oo]
+    odd = [sm.Symbol("A", commutative=False), sm.sin(symbols[0]), symbols[0] ** 2]
+    for a, b in itertools.product(symbols + numbers + odd, repeat=2):
+        ours, sympys = times(a, b), a * b
+        assert (type(ours), ours.args) == (type(sympys), sympys.args), (a, b)
+        assert ours == sympys and hash(ours) == hash(sympys)
