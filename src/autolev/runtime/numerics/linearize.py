@@ -104,12 +104,12 @@ def linearize(snapshot: ModelSnapshot, operating_point=None, inputs=None,
         tier, step = "auto", (f"compiling the Jacobians (a sweep of "
                               f"{jacobians.evaluations} points so far)")
 
-    def formed(tier: str, step: str) -> _Jacobians:
+    def formed(tier: str, step: str, kept_as: tuple = key) -> _Jacobians:
         program = program_of(snapshot, command)
         with snapshot.definitions.as_of(program.definitions), SlowStep(
                 progress, f"CODE DYNAMICS {command.filename}: {step}"):
-            made = system.jacobians[key] = _jacobian_functions(system, chosen, n_columns,
-                                                               tier)
+            made = system.jacobians[kept_as] = _jacobian_functions(system, chosen,
+                                                                   n_columns, tier)
         snapshot.systems_changed()
         return made
     if tier is not None:
@@ -126,7 +126,11 @@ def linearize(snapshot: ModelSnapshot, operating_point=None, inputs=None,
     try:
         lin = _evaluate(system, jacobians, chosen, t0, x0, s0)
     except NotDifferentiable:       # a point where only the symbolic derivatives tell
-        jacobians = formed("python", "forming the Jacobians symbolically")
+        # kept apart: the points dual numbers take keep theirs (a later point's answer
+        # must not depend on this one having come first)
+        apart = key + ("symbolic",)
+        jacobians = system.jacobians.get(apart) or formed(
+            "python", "forming the Jacobians symbolically", apart)
         lin = _evaluate(system, jacobians, chosen, t0, x0, s0)
     bad = [display_name(x) for x, row, rate in zip(system.states, lin.A, lin.rates)
            if not (np.all(np.isfinite(row)) and np.isfinite(rate))]
