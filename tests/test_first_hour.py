@@ -135,7 +135,7 @@ class Watching:
     def write(self, text):
         if "no value given for" in text:
             self.stream.write("imported at the note: " + ", ".join(
-                m for m in ("sympy", "autolev.runtime.model") if m in sys.modules) + "\\n")
+                m for m in ("sympy", "numpy", "autolev.runtime.model") if m in sys.modules) + "\\n")
         return self.stream.write(text)
 
     def flush(self):

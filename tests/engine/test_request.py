@@ -5,7 +5,7 @@ import dataclasses
 
 import pytest
 
-from autolev.engine import runplan
+from autolev.engine import keeping, runplan
 from autolev.engine.request import (
     LinearizeRequest, Request, RunRequest, TranscriptRequest, ValuesRequest)
 from autolev.engine import reading
@@ -147,13 +147,13 @@ def test_a_kept_answer_is_filed_under_the_files_as_read_not_as_at_keeping(files,
     model, infile = files
     request = _a_request(RunRequest, model, infile)
     with reading.recording() as reads:
-        assert runplan.kept(request, reads, runplan.KeptOutcome) is None
+        assert keeping.kept(request, reads, lambda: runplan.KeptOutcome) is None
         reading.read_bytes(model)
     infile.write_text("edited\n")                        # before the answer is kept
-    runplan.keep(request, reads, lambda r: runplan.KeptOutcome(r, "", "old", 0))
-    assert runplan.kept(request, reading.Reads(), runplan.KeptOutcome) is None
+    keeping.keep(request, reads, lambda r: runplan.KeptOutcome(r, "", "old", 0))
+    assert keeping.kept(request, reading.Reads(), lambda: runplan.KeptOutcome) is None
     infile.write_text("values\n")                        # as the answer read it
-    found = runplan.kept(request, reading.Reads(), runplan.KeptOutcome)
+    found = keeping.kept(request, reading.Reads(), lambda: runplan.KeptOutcome)
     assert found is not None and found.transcript == "old"
 
 
@@ -164,11 +164,11 @@ def test_nothing_is_kept_of_work_that_read_two_states_of_a_file(files, tmp_path,
     model, infile = files
     request = _a_request(RunRequest, model, infile)
     with reading.recording() as reads:
-        assert runplan.kept(request, reads, runplan.KeptOutcome) is None
+        assert keeping.kept(request, reads, lambda: runplan.KeptOutcome) is None
         model.write_text("CONSTANTS B\n")
         reading.read_bytes(model)                        # the translation read another
     assert reads.torn
-    runplan.keep(request, reads, lambda r: runplan.KeptOutcome(r, "", "mixed", 0))
+    keeping.keep(request, reads, lambda r: runplan.KeptOutcome(r, "", "mixed", 0))
     for text in ("CONSTANTS A\n", "CONSTANTS B\n"):
         model.write_text(text)
-        assert runplan.kept(request, reading.Reads(), runplan.KeptOutcome) is None
+        assert keeping.kept(request, reading.Reads(), lambda: runplan.KeptOutcome) is None

@@ -20,11 +20,12 @@ def cmd_linearize(ns: argparse.Namespace) -> int:
     if path.suffix.lower() == ".py" or ns.sweep:
         return _linearize(path, ns, None)
     from ..engine.request import LinearizeRequest
-    from ..engine.runplan import KeptLinearization, Recorder, kept
+    from ..engine.keeping import Recorder, kept
+    from ..engine.runplan import KeptLinearization
     from .run import Keeping
     request = LinearizeRequest.of(ns)
     with reading.recording() as reads:
-        found = kept(request, reads, KeptLinearization)
+        found = kept(request, reads, lambda: KeptLinearization)
         if found is not None:
             sys.stderr.write(found.load_messages + found.messages)
             print(f"{path}: linearized as before with these options (the model and the "

@@ -49,11 +49,12 @@ def transcript_text(path: Path) -> str | None:
     and read back while each is unchanged); None after printing the diagnostics of a
     model it cannot be made for."""
     from ..engine.request import TranscriptRequest
-    from ..engine.runplan import KeptTranscript, keep, kept
+    from ..engine.keeping import keep, kept
+    from ..engine.runplan import KeptTranscript
     from ..engine import reading
     request = TranscriptRequest.of_file(path)
     with reading.recording() as reads:
-        found = kept(request, reads, KeptTranscript)
+        found = kept(request, reads, lambda: KeptTranscript)
         if found is not None:
             return found.text
         from ..transcript import transcript

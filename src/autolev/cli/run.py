@@ -32,19 +32,26 @@ def cmd_run(ns: argparse.Namespace) -> int:
     with reading.recording() as reads:
         if request is None:
             return _run_from_model(path, ns, progress, None)
-        from ..engine.runplan import KeptOutcome, Recorder, RunPlan, kept
-        plan = kept(request, reads, (RunPlan, KeptOutcome))
-        if isinstance(plan, KeptOutcome):
-            sys.stderr.write(plan.messages)
-            sys.stdout.write(printable_lines(plan.transcript))
-            return plan.status
+        from ..engine.keeping import Recorder, kept
+        plan = kept(request, reads, _plans)
         if plan is not None:
+            from ..engine.runplan import KeptOutcome
+            if isinstance(plan, KeptOutcome):
+                sys.stderr.write(plan.messages)
+                sys.stdout.write(printable_lines(plan.transcript))
+                return plan.status
             return _run_from_plan(plan, path, ns)
         recorder = sys.stderr = Recorder(sys.stderr)
         try:
             return _run_from_model(path, ns, progress, Keeping(request, reads, recorder))
         finally:
             sys.stderr = recorder.through
+
+
+def _plans() -> tuple:
+    """What a run keeps: a plan to repeat, or the outcome of a run that wrote nothing."""
+    from ..engine.runplan import KeptOutcome, RunPlan
+    return RunPlan, KeptOutcome
 
 
 @dataclass(frozen=True)
@@ -54,10 +61,10 @@ class Keeping:
 
     request: object             # request.RunRequest
     reads: object               # engine.reading.Reads
-    recorder: object            # runplan.Recorder, which is sys.stderr meanwhile
+    recorder: object            # keeping.Recorder, which is sys.stderr meanwhile
 
     def keep(self, make) -> None:
-        from ..engine.runplan import keep
+        from ..engine.keeping import keep
         keep(self.request, self.reads, make)
 
 

@@ -21,19 +21,12 @@ answer the same way, and `autolev transcript` its text.
 """
 from __future__ import annotations
 
-import io
-import pickle
 from dataclasses import dataclass, replace
-from pathlib import Path
 
 import numpy as np
 
-from .cachekeys import PLAN_PREFIX, enabled
-from .request import Request
-from . import diskcache, reading
-from .reading import Reads, ReadSet
+from .reading import ReadSet
 from .code_kinds import INTEGRATION_PARAMETERS
-from .clibrary import CompileError
 from .evaluation import CompiledEvaluation
 from .execute import Execution
 from .linear import Linearization
@@ -162,59 +155,3 @@ def planned_command(execution: Execution, result, label: str,
     return PlannedCommand(reduced, label, messages)
 
 
-def keep(request: Request, reads: Reads, make) -> None:
-    """Keep `make(reads.snapshot())` for `request`, filed under the digests `reads`
-    took when the files were read; nothing when they changed while being read (the
-    work mixed two states of them) or the caches are off."""
-    key = request.key(reads) if enabled() else None
-    if key is None or reads.torn:
-        return
-    try:
-        diskcache.install(pickle.dumps(make(reads.snapshot()),
-                                       protocol=pickle.HIGHEST_PROTOCOL), _entry(key))
-    except OSError:
-        return                      # a full or read-only disk: the next run forms its own
-
-
-def kept(request: Request, reads: Reads, kind: type | tuple):
-    """What `keep` kept for `request` with the files it names as now read (noted in
-    `reads`), while every other file it read is as it was; else None."""
-    if not enabled():
-        return None
-    key = request.key(reads)
-    data = None if key is None else diskcache.read_verified(_entry(key))
-    if data is None:
-        return None
-    try:
-        found = pickle.loads(data)
-    except CompileError:
-        return None                 # its libraries are gone and no compiler rebuilds them
-    with reading.recording(reads):
-        if not isinstance(found, kind) or not found.reads.holds():
-            return None
-    return found
-
-
-def _entry(key: str) -> Path:
-    return diskcache.cache_dir() / f"{PLAN_PREFIX}{key[:40]}.pickle"
-
-
-class Recorder(io.TextIOBase):
-    """A text stream that writes through to another and keeps what was written."""
-
-    def __init__(self, through):
-        self.through = through
-        self.kept = io.StringIO()
-
-    def write(self, text: str) -> int:
-        self.kept.write(text)
-        return self.through.write(text)
-
-    def flush(self) -> None:
-        self.through.flush()
-
-    def take(self) -> str:
-        """What was written since the last take."""
-        text = self.kept.getvalue()
-        self.kept = io.StringIO()
-        return text
