@@ -5,16 +5,16 @@ calls, seconds (cProfile's, about twice the plain run's) and the autolev functio
 that called it.
 
     python bench/simplifiers.py [--examples] [--only ID ...] [--transcript]
-                                [--limit S] [--json FILE]
+                                [--limit S] [--least S] [--json FILE]
 
 A general simplifier tries many rewritings (trigsimp, simplify, factor, cancel, ...);
 issue 51 asks that none runs where a structural rule does the job.  Each row names its
 direct callers: an autolev function (it asked for the simplifier), or 'via' a sympy
 function that is itself a row (a simplifier calling another: its time is within that
-row's).  Models and values as
-bench/journeys.py gives them (INPUT, the shipped .in, then values by rule); each run
-in a fresh process with an empty cache, AUTOLEV_FOREGROUND=1 (the work in the process
-profiled).  The table lists the rows over --least seconds; the JSON has them all.
+row's).  Models and values as bench/journeys.py gives them (INPUT, the shipped .in,
+then values by rule); each run in a fresh process with an empty cache,
+AUTOLEV_FOREGROUND=1 (the work in the process profiled).  The table lists the rows of
+at least --least seconds; the JSON has them all.
 """
 from __future__ import annotations
 
