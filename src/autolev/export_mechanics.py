@@ -406,6 +406,9 @@ class SympyExport:
 # what a script of a model that writes no CODE DYNAMICS or ODE holds (linearize's rule)
 AS_THEY_STAND = ("no CODE DYNAMICS or ODE: the model's equations as they stand, as "
                  "linearize takes them")
+# and why it is at the equations level unless the mechanics level is asked for
+NOT_ASKED = ("the model writes no CODE DYNAMICS or ODE (--level mechanics, or "
+             "level=\"mechanics\", asks for sympy's KanesMethod of its bodies and loads)")
 
 
 def export_sympy(model, source: str, command=None, infile=None, overrides=None,
@@ -449,6 +452,11 @@ def sympy_export(model, source: str, command=None, infile=None, overrides=None,
     lacking = [c.name for c, v in eqs.constants.items() if v is None]
     if level == "equations":
         return SympyExport(EquationsScript(eqs, source).text(), lacking, eqs.command)
+    if as_they_stand and level == "auto":
+        # sympy's KanesMethod on a model that never asked for its dynamics can take
+        # longer than anyone waits (MAE-223's BICYCLE4: over 20 minutes)
+        return SympyExport(EquationsScript(eqs, source, NOT_ASKED).text(), lacking,
+                           eqs.command)
     why, h = mechanics_handoff(model, command, eqs)
     if h is not None:
         return SympyExport(MechanicsScript(h, eqs, model, source).text(), lacking,
