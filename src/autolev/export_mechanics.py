@@ -431,12 +431,12 @@ def sympy_export(model, source: str, command=None, infile=None, overrides=None,
     """export_sympy's script, with the names of the constants it has no value for."""
     if level not in LEVELS:
         raise ValueError(f"level is one of {', '.join(LEVELS)}, not {level!r}")
-    as_they_stand = command is None and not any(c.kind.integrates
-                                                 for c in model.code_commands)
+    if command is None:
+        command = next((c for c in model.code_commands if c.kind.integrates), None)
+    as_they_stand = command is None
     try:
-        if command is None:
-            command = next((c for c in model.code_commands if c.kind.integrates), None) \
-                or model.plain_dynamics()
+        if as_they_stand:
+            command = model.plain_dynamics()
         eqs = equations_of(model, command, infile=infile, overrides=overrides,
                            missing_values=missing_values)
     except AutolevModelError as exc:
