@@ -425,6 +425,22 @@ def run_with_values(ident, path, model, companion, work, limit, genuine):
     return cell, Values(options, source, bool(chosen))
 
 
+def values_apart(ident, path, companion, work, limit) -> Values:
+    """The model's values (run_with_values) found in a cache of their own, waiting for
+    their compiles: a bench timing or profiling the model afterwards meets none of that
+    work beside its own runs."""
+    kept = {k: os.environ.get(k) for k in ("AUTOLEV_CACHE", "AUTOLEV_FOREGROUND")}
+    os.environ.update(AUTOLEV_CACHE=str(work / "values-cache"), AUTOLEV_FOREGROUND="1")
+    try:
+        return run_with_values(ident, path, read_model(path), companion, work, limit, {})[1]
+    finally:
+        for k, v in kept.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+
+
 # -- the written programs --------------------------------------------------------------
 @dataclass
 class ProgramCheck:

@@ -196,14 +196,7 @@ def main(argv=None) -> int:
             start = time.monotonic()
             work = Path(scratch) / ident
             work.mkdir(parents=True)
-            # the values first (their rounds fill a cache of their own, thrown away, and
-            # wait for their compiles: none goes on beside the timed runs)
-            os.environ.update(AUTOLEV_CACHE=str(work / "values-cache"), AUTOLEV_FOREGROUND="1")
-            try:
-                _, values = journeys.run_with_values(ident, path, journeys.read_model(path),
-                                                     companion, work, ns.limit, {})
-            finally:
-                del os.environ["AUTOLEV_FOREGROUND"]
+            values = journeys.values_apart(ident, path, companion, work, ns.limit)
             row = {"id": ident, "values": values.source}
             for tree, src in trees:
                 row[tree] = measure(src, path, companion, values, ns.warm, ns.limit, work)

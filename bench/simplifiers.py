@@ -153,12 +153,7 @@ def main(argv=None) -> int:
             start = time.monotonic()
             work = Path(scratch) / ident
             work.mkdir(parents=True)
-            os.environ.update(AUTOLEV_CACHE=str(work / "values-cache"), AUTOLEV_FOREGROUND="1")
-            try:
-                _, values = journeys.run_with_values(ident, path, journeys.read_model(path),
-                                                     companion, work, ns.limit, {})
-            finally:
-                del os.environ["AUTOLEV_FOREGROUND"]
+            values = journeys.values_apart(ident, path, companion, work, ns.limit)
             found[ident] = {c: measure(path, values.options if c == "run" else [], c, work,
                                        ns.limit) for c in commands}
             spent = sum(r["seconds"] for c in found[ident].values() for r in c["rows"]
