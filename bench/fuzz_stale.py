@@ -35,10 +35,11 @@ and when (its moment; the case's generator is KIND@MOMENT):
   after      after the child finished
 
 The commands: mostly `autolev run --out` (a fresh folder each time), some `autolev
-linearize`, `autolev run` of a model without CODE (a kept outcome) and `autolev
-transcript`.  The models: the shipped examples, tests/data/numerics/harmonic.al,
-generated pendulums and spring chains (with macros, RUN files, a SPECIFIED torque or
-force), and a few small corpus models when ~/.cache/autolev-corpus is there.
+linearize` (a fifth of them a --sweep long enough to compile its Jacobians), `autolev
+run` of a model without CODE (a kept outcome) and `autolev transcript`.  The models:
+the shipped examples, tests/data/numerics/harmonic.al, generated pendulums and spring
+chains (with macros, RUN files, a SPECIFIED torque or force), and a few small corpus
+models when ~/.cache/autolev-corpus is there.
 
 Outcomes: ok; stale (an answer equal to the old inputs' one, or otherwise not the fresh
 run's); crash (exit status 70, a traceback, a signal); hang (a command or a background
@@ -106,6 +107,9 @@ CHILD_SECONDS = 120.0            # so is a background child still holding its lo
 CASE_SECONDS = 480.0
 
 # values drawn for constants and initial values (a few, so final states repeat)
+# a linearization sweep's points: more than compiling its Jacobians costs on dual numbers
+# for these models' sizes (runtime/numerics/linearize.py: _compiling_pays)
+SWEEP_POINTS = 400
 VALUES = ("0", "0.05", "0.3", "0.8", "1.5", "2.5", "-0.4", "7")
 FACTORS = ("0.5", "1.5", "2", "-1")
 EXPRESSIONS = ("0.5*SIN(2*T)", "0.3", "-0.2*T", "0.4*COS(3*T)", "0", "T^2")
@@ -479,6 +483,9 @@ def stale_case(seed: int, index: int) -> dict:
                  {s.upper() for s in source.specified}]
         if source.specified and kind != "specified":
             first += ["--specified", f"{source.specified[0]}={EXPRESSIONS[0]}"]
+        if command == "linearize" and names and rng.random() < 0.2:
+            # long enough that its Jacobians are compiled to C: the sweep's own tier
+            first += ["--sweep", f"{rng.choice(names)}=0.1:0.9:{SWEEP_POINTS}"]
         after = list(first)
         if kind == "set" and names:
             name = rng.choice(names)

@@ -51,6 +51,9 @@ Linearization (autolev linearize's printed eigenvalues, for a CODE DYNAMICS):
 
   l:warm       again, same cache (its kept answer)
   l:no-cache   AUTOLEV_NO_MODEL_CACHE=1, an empty cache
+  l:c          --backend c: the symbolic Jacobians compiled to C (the tier a long sweep
+               takes), against the dual numbers' (each eigenvalue within
+               EIGENVALUE_TOLERANCE of max(1, |value|))
 
 A cell is `=` (identical), `~` (equal within the tolerance), `DIFF` (an unexplained
 difference), `x:NAME` (a difference Autolev's own behaviour explains: EXPLAINED names
@@ -85,15 +88,19 @@ import numpy as np  # noqa: E402
 from journeys import (CORPUS, LISTING, RunToMatch, Values, autolev_cli,  # noqa: E402
                       chosen_models, code_cell, compare_files, missing_names, output_files,
                       process_env, read_model, rule_values, run_process)
+from autolev.engine.clibrary import compiler  # noqa: E402
 from journeys import Cell as JourneyCell  # noqa: E402
 
 ROW_PATHS = ("warm", "no-cache", "foreground", "python", "api", "mass-matrix", "module",
              "code", "script")
 RATE_PATHS = ("r:python", "r:recursion", "r:M,f", "r:explicit", "r:symsys", "r:module",
               "r:script")
-LINEARIZE_PATHS = ("l:warm", "l:no-cache")
+LINEARIZE_PATHS = ("l:warm", "l:no-cache", "l:c")
 PATHS = ROW_PATHS + RATE_PATHS + LINEARIZE_PATHS
 RATE_TOLERANCE = 1e-8
+# eigenvalues from Jacobians that part by ulps: a defective eigenvalue (a double 0 of an
+# ignorable coordinate) moves by about the square root of theirs
+EIGENVALUE_TOLERANCE = 1e-6
 # seconds a rates path may take inside the rates process (sympy's own forms are slow on
 # large models: past it the cell is `slow`, not compared)
 RATE_PATH_LIMIT = 120.0
@@ -437,6 +444,41 @@ class ModelPaths:
             else:
                 cells[name] = Cell("=", "" if first.returncode == 0
                                    else f"both exit {first.returncode}")
+        if compiler() is None:
+            cells["l:c"] = Cell("-", "no C compiler")
+            return
+        compiled = run_process(autolev_cli("linearize", self.path, *self.options,
+                                           "--backend", "c"),
+                               self.work, self.limit, self.env("lin-c"))
+        if compiled.returncode is None:
+            cells["l:c"] = Cell("slow", f"over {self.limit:g} s")
+        elif compiled.returncode != first.returncode:
+            cells["l:c"] = Cell("fail", f"exit {compiled.returncode} (first "
+                                f"{first.returncode}): {_last(compiled.stderr)}")
+        else:
+            cells["l:c"] = compare_eigenvalues(first.stdout, compiled.stdout)
+
+
+def printed_eigenvalues(stdout: str) -> list:
+    """The (real, imaginary) pairs `autolev linearize` prints, sorted."""
+    rows = [line.split(",") for line in stdout.splitlines()]
+    return sorted((float(r[0]), float(r[1])) for r in rows
+                  if len(r) >= 2 and re.fullmatch(r"[-+0-9.eE]+", r[0]))
+
+
+def compare_eigenvalues(reference: str, got: str) -> Cell:
+    ours, theirs = printed_eigenvalues(reference), printed_eigenvalues(got)
+    if len(ours) != len(theirs):
+        return Cell("DIFF", f"{len(theirs)} eigenvalues, not {len(ours)}")
+    # each matched to the nearest left: sorting alone pairs a conjugate pair's parts
+    # apart when their real parts part by an ulp
+    worst, left = 0.0, list(theirs)
+    for value in (complex(*pair) for pair in ours):
+        k = min(range(len(left)), key=lambda i: abs(complex(*left[i]) - value))
+        worst = max(worst, abs(complex(*left.pop(k)) - value) / max(1.0, abs(value)))
+    if worst > EIGENVALUE_TOLERANCE:
+        return Cell("DIFF", f"eigenvalues differ by {worst:.3g} of max(1, |value|)")
+    return Cell("~" if worst else "=", f"{worst:.1g}" if worst else "")
 
 
 def compare_rates(reference: dict, got: dict) -> Cell:

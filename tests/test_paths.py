@@ -35,7 +35,7 @@ def test_every_path_gives_the_answer_of_a_cold_run(model, tmp_path):
               "r:module", "l:warm", "l:no-cache"):
         assert row.cells[p].mark == "=", (p, row.cells[p])
     # the model-level equations and the exported script were compared, not skipped
-    for p in ("r:M,f", "r:explicit", "r:symsys", "r:script", "code", "script"):
+    for p in ("r:M,f", "r:explicit", "r:symsys", "r:script", "code", "script", "l:c"):
         assert row.cells[p].mark in ("=", "~"), (p, row.cells[p])
 
 
@@ -68,6 +68,19 @@ def test_rates_within_the_tolerance_and_beyond_it():
     assert paths.compare_rates(reference, missing).mark == "-"
     broken = {"states": ["Q1", "U1"], "rates": [[0.5, float("nan")]]}
     assert paths.compare_rates(reference, broken).mark == "DIFF"
+
+
+def test_eigenvalues_within_the_tolerance_and_beyond_it():
+    header = "real,imaginary,frequency_hz,damping_ratio,note\n"
+    reference = header + "-0.5,-2.0,0.3,0.2,\n-0.5,2.0,0.3,0.2,\n0,0,0,,\n"
+    # a conjugate pair whose real parts part by an ulp sorts in the other order
+    near = header + "0,0,0,,\n-0.5000000000000001,2.0,0.3,0.2,\n-0.5,-2.0,0.3,0.2,\n"
+    assert paths.compare_eigenvalues(reference, reference).mark == "="
+    assert paths.compare_eigenvalues(reference, near).mark == "~"
+    far = header + "-0.5,-2.00001,0.3,0.2,\n-0.5,2.00001,0.3,0.2,\n0,0,0,,\n"
+    assert paths.compare_eigenvalues(reference, far).mark == "DIFF"
+    fewer = header + "-0.5,-2.0,0.3,0.2,\n-0.5,2.0,0.3,0.2,\n"
+    assert paths.compare_eigenvalues(reference, fewer).mark == "DIFF"
 
 
 def test_a_stale_answer_is_a_difference(tmp_path):

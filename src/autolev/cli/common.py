@@ -152,7 +152,8 @@ def positive_int(text: str) -> int:
     return value
 
 
-def model_value_options(parser) -> None:
+def model_value_options(parser, backend_help: str = "compiled C when a compiler is found "
+                        "(auto), or pure Python") -> None:
     """The model and where its values come from, shared by `run`, `animate` and
     `linearize`."""
     parser.add_argument("file", metavar="FILE", help=".al model")
@@ -167,7 +168,7 @@ def model_value_options(parser) -> None:
                         "(e.g. 'F=3*SIN(2*PI*T)'); --set NAME=VALUE gives it a constant "
                         "value; repeatable")
     parser.add_argument("--backend", default="auto", choices=("auto", "c", "python"),
-                        help="compiled C when a compiler is found (auto), or pure Python")
+                        help=backend_help)
     parser.add_argument("--zero-missing", action="store_true",
                         help="give 0 to constants that have no value (INPUT, --in or --set) "
                         "instead of stopping before the build")

@@ -235,7 +235,9 @@ def add_linearize(sub) -> None:
                          "INPUT, --in and --set; states and specified quantities otherwise "
                          "0) and print the eigenvalues (CSV: real, imaginary, frequency in "
                          "Hz, damping ratio).  Exact Jacobians through the Z's.")
-    model_value_options(lin)
+    model_value_options(lin, backend_help="the Jacobians: the equations' own code on dual "
+                        "numbers, compiled to C for a --sweep long enough to pay for it "
+                        "(auto); symbolic Jacobians compiled to C (c) or Python (python)")
     lin.add_argument("--at", action="append", metavar="NAME=VALUE",
                      help="the operating point: a constant, coordinate, speed or specified "
                      "quantity in SI units and radians; repeatable")

@@ -265,7 +265,7 @@ class SimulationMixin:
     def linearize(self, operating_point=None, inputs=None, *, code=None,
                   backend: str = "auto", infile=None, missing_values: str = "refuse",
                   overrides=None, constraints=None, dependent=None, locked=None,
-                  specified=None, progress=None):
+                  specified=None, progress=None, sweep_size: int = 1):
         """The equations of motion linearized at `operating_point` ({name: value} for
         constants, coordinates, speeds and specified quantities, in SI units and
         radians; the rest from INPUT, the .in file, or 0 for states and specified
@@ -282,7 +282,11 @@ class SimulationMixin:
         U's row of Kane's equations dropped), as a rigid joint would.  `specified`:
         {name: number or sympy expression in the model's symbols} defining specified
         quantities the model leaves undefined, as simulate's values for them.
-        `progress`: a stream told of steps past two seconds (forming, compiling)."""
+        `progress`: a stream told of steps past two seconds (forming, compiling).
+        `sweep_size`: how many points the caller linearizes at (`sweep` says): the
+        Jacobians are compiled to C when that many evaluations pay for it, else they are
+        the equations' own code run on dual numbers; each size gives every point one
+        answer, whatever came before."""
         from .numerics.linearize import linearize   # scipy.linalg: see linearize_symbolic
         if not operating_point:
             warnings.warn("no operating point given: linearized where the INPUT values put "
@@ -294,6 +298,7 @@ class SimulationMixin:
                              operating_point, inputs, backend=backend, infile=infile,
                              missing_values=missing_values, overrides=overrides,
                              constraints=constraints, dependent=dependent, locked=locked,
-                             specified=specified, progress=progress)
+                             specified=specified, progress=progress,
+                             sweep_size=sweep_size)
         finally:
             self.keep_built()

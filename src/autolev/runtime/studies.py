@@ -123,6 +123,8 @@ def sweep(model, points, what: str = "linearize", *, executor=None,
         raise TypeError(f"sweep(what={what!r}) takes no option {', '.join(sorted(unknown))}")
     rows = Points.of(points)
     _check_names(model, rows.names, what)
+    if what == "linearize":         # every point's Jacobians of one tier, chosen by the size
+        options = dict(options, sweep_size=len(rows))
     stream = None if progress is False else (
         sys.stderr if progress is None or progress is True else progress)
     # a line per 5 % or 10 s, timed from the first point (which builds and compiles)

@@ -443,15 +443,14 @@ def test_follow_modes_keeps_a_mode_in_its_column_where_sorting_swaps_them():
     assert np.allclose(followed[:, 0].real, p) and np.allclose(followed[:, 1].real, 1 - p)
 
 
-def _jacobians_of(model):
-    """The compiled Jacobians of the model's one linearized system."""
+def _jacobians_of(model) -> dict:
+    """The Jacobians of the model's one linearized system, by tier."""
     systems = [entry[1] for entry in model.derived.table("numeric systems").values()]
-    found = [j for system in systems for j in system.jacobians.values()]
-    assert len(found) == 1
-    return found[0]
+    found = {key[-1]: j for system in systems for key, j in system.jacobians.items()}
+    return found
 
 
-def test_one_linearization_waits_for_no_compiler_and_a_sweep_compiles_when_it_pays(
+def test_one_linearization_waits_for_no_compiler_and_a_large_sweep_compiles(
         tmp_path, monkeypatch):
     # BICYCLE14: one linearization spent 4 minutes in gcc on 11 MB of C, evaluated once
     from autolev.engine import clibrary
@@ -459,27 +458,29 @@ def test_one_linearization_waits_for_no_compiler_and_a_sweep_compiles_when_it_pa
     path = tmp_path / "pendulum.al"
     path.write_text(PENDULUM)
     model = autolev.load(path)
-    g, L, q = 9.81, 2.0, 0.3
-    by_hand = [[0, 1], [-g / L * math.cos(q), 0]]
-    monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE", 1e9)
-    first = model.linearize({"Q": q})
-    jacobians = _jacobians_of(model)
+    g, L = 9.81, 2.0
+    points = [0.1, 0.3, 0.5]
+    first = model.linearize({"Q": points[1]})
     # the right-hand side's Python on dual numbers: no Jacobian formed, nothing compiled
-    assert jacobians.rhs.backend == "dual" and jacobians.evaluations == 1
-    for _ in range(3):                           # compiling does not pay yet
-        model.linearize({"Q": q})
-    assert _jacobians_of(model) is jacobians and jacobians.evaluations == 4
+    assert {tier: j.rhs.backend for tier, j in _jacobians_of(model).items()} == {
+        "dual": "dual"}
+    for _ in range(3):                  # however many come after, one stays on dual numbers
+        model.linearize({"Q": points[1]})
+    assert list(_jacobians_of(model)) == ["dual"]
     if clibrary.compiler() is None:
         pytest.skip("no C compiler: the Jacobians stay on dual numbers (tested above)")
-    # the evaluations have cost what compiling is predicted to: the next one compiles
-    monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE", 0.0)
-    compiled = model.linearize({"Q": q})
-    assert _jacobians_of(model).rhs.backend == "c"
-    assert np.allclose(first.A, by_hand, rtol=1e-14)
-    assert np.allclose(compiled.A, first.A, rtol=1e-14) and np.allclose(compiled.C, first.C,
-                                                                          rtol=1e-14)
-    model.linearize({"Q": q})
-    assert _jacobians_of(model).rhs.backend == "c"          # compiled once
+    # compiling set to cost three evaluations (1 + 3 varied: Q, U, TQ; 3/4 of one
+    # each): a sweep of three compiles, one of two does not
+    monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE",
+                        linearize_module.DUAL_SECONDS_PER_SOURCE_BYTE * 3 / 4)
+    table = model.sweep([{"Q": q} for q in points], what="linearize", workers=1,
+                        as_frame=False, collect=lambda lin: {"a": lin.A[1, 0]})
+    assert _jacobians_of(model)["c"].rhs.backend == "c"
+    assert np.allclose(table["a"], [-g / L * math.cos(q) for q in points], rtol=1e-14)
+    small = model.sweep([{"Q": q} for q in points[:2]], what="linearize", workers=1,
+                        as_frame=False, collect=lambda lin: {"a": lin.A[1, 0]})
+    assert list(small["a"]) == [model.linearize({"Q": q}).A[1, 0] for q in points[:2]]
+    assert np.allclose(first.A, [[0, 1], [-g / L * math.cos(points[1]), 0]], rtol=1e-14)
 
 
 FUNCTIONS = """NEWTONIAN N
@@ -510,13 +511,40 @@ CODE DYNAMICS() functions.c
 """
 
 
+def test_a_point_gets_one_answer_whatever_linearizations_came_before(tmp_path,
+                                                                     monkeypatch):
+    # the symbolic Jacobians compiled for a sweep differ from dual numbers' by ulps here;
+    # they once replaced them for every later linearization of the model
+    from autolev.engine import clibrary
+    from autolev.runtime.numerics import linearize as linearize_module
+    if clibrary.compiler() is None:
+        pytest.skip("no C compiler: there is one tier, dual numbers")
+    path = tmp_path / "functions.al"
+    path.write_text(FUNCTIONS)
+    fresh = autolev.load(path).linearize()
+    # compiling set to cost three evaluations (1 + 5 varied: Q1, Q2, U1, U2, TQ; half of
+    # one each): a sweep of three compiles, one linearization does not
+    monkeypatch.setattr(linearize_module, "C_SECONDS_PER_SOURCE_BYTE",
+                        linearize_module.DUAL_SECONDS_PER_SOURCE_BYTE / 2)
+    model = autolev.load(path)
+    model.sweep([{"Q1": 0.3 + 0.1 * k} for k in range(3)], what="linearize", workers=1,
+                as_frame=False)
+    assert set(_jacobians_of(model)) == {"c"}
+    after = model.linearize()
+    assert set(_jacobians_of(model)) == {"c", "dual"}
+    assert np.array_equal(after.A, fresh.A) and np.array_equal(after.C, fresh.C)
+    compiled = autolev.load(path).linearize(backend="c")
+    assert not np.array_equal(compiled.A, fresh.A)      # the tiers do differ here
+    assert np.allclose(compiled.A, fresh.A, rtol=1e-13, atol=1e-13)
+
+
 def test_dual_numbers_give_the_symbolic_jacobians(tmp_path):
     # a second method: sympy's derivatives of the same equations, printed and compiled
     path = tmp_path / "functions.al"
     path.write_text(FUNCTIONS)
     model = autolev.load(path)
     dual = model.linearize()
-    assert _jacobians_of(model).rhs.backend == "dual"
+    assert _jacobians_of(model)["dual"].rhs.backend == "dual"
     symbolic = autolev.load(path).linearize(backend="python")
     for m in "ABCD":
         got, want = getattr(dual, m), getattr(symbolic, m)

@@ -19,7 +19,6 @@ dq_dep = -G_dep^-1 G_ind dq_ind (G = dg/dx at the point).
 """
 from __future__ import annotations
 
-import time
 import warnings
 from dataclasses import dataclass, field
 
@@ -49,7 +48,7 @@ from .system import NumericSystem
 def linearize(snapshot: ModelSnapshot, operating_point=None, inputs=None,
               backend: str = "auto", infile=None, missing_values: str = "refuse",
               overrides=None, constraints=None, dependent=None, locked=None,
-              specified=None, progress=None) -> Linearization:
+              specified=None, progress=None, sweep_size: int = 1) -> Linearization:
     """The linearization of the snapshot's command (a CODE DYNAMICS) at
     `operating_point`: {name: value} for the model's constants, coordinates, speeds and
     specified quantities, in SI units and radians.  Names it leaves out take their INPUT
@@ -64,7 +63,9 @@ def linearize(snapshot: ModelSnapshot, operating_point=None, inputs=None,
     at their values (a rigid joint: Q' = U, with U and U' then 0 and U's row of Kane's
     equations dropped); the state leaves them out.  `specified`: {name: number or sympy
     expression} defining specified quantities (see run.given_specified); they are then
-    no inputs.  `progress`: a stream told of steps past two seconds."""
+    no inputs.  `progress`: a stream told of steps past two seconds.  `sweep_size`: how
+    many points the caller linearizes this system at (a sweep's length): backend "auto"
+    compiles the Jacobians when that many would pay for it (see `_compiling_pays`)."""
     command, held = _program_to_linearize(snapshot, snapshot.command, locked)
     command, functions, overrides = given_specified(snapshot, command, specified, overrides)
     if functions:
@@ -95,14 +96,12 @@ def linearize(snapshot: ModelSnapshot, operating_point=None, inputs=None,
                                 f"{command.filename}: {', '.join(unused)}")
     chosen = _chosen_inputs(snapshot, system, inputs)
     n_columns = sum(len(cols) for cols in system.files)
-    key = (tuple(display_name(s) for s in chosen), n_columns, backend)
-    jacobians = system.jacobians.get(key)
-    tier = None
-    if jacobians is None:           # once per system: a sweep, and a later process, reuse them
-        tier, step = ("dual" if backend == "auto" else backend), "forming the Jacobians"
-    elif backend == "auto" and jacobians.compiling_pays():
-        tier, step = "auto", (f"compiling the Jacobians (a sweep of "
-                              f"{jacobians.evaluations} points so far)")
+    tier = backend
+    if backend == "auto":
+        tier = "c" if _compiling_pays(sweep_size, system.nstate + len(chosen)) else "dual"
+    # the tier is the request's (its size), never the history's: a point's answer is the
+    # same whichever linearizations came before it
+    key = (tuple(display_name(s) for s in chosen), n_columns, tier)
 
     def formed(tier: str, step: str, kept_as: tuple = key) -> _Jacobians:
         program = program_of(snapshot, command)
@@ -112,8 +111,9 @@ def linearize(snapshot: ModelSnapshot, operating_point=None, inputs=None,
                                                                    n_columns, tier)
         snapshot.systems_changed()
         return made
-    if tier is not None:
-        jacobians = formed(tier, step)
+    # once per system and tier: a sweep, and a later process, reuse them
+    jacobians = system.jacobians.get(key) or formed(tier, "forming the Jacobians" + (
+        f" (compiled for a sweep of {sweep_size} points)" if tier != backend else ""))
     t0 = prepared.inputs.internal("TINITIAL")
     x0 = np.array(prepared.inputs.vector(system.states), dtype=float)
     s0 = np.array([specified_values.get(s, 0.0) for s in system.specified], dtype=float)
@@ -316,41 +316,36 @@ def _chosen_inputs(snapshot, system, names) -> list:
     return chosen
 
 
-# seconds gcc takes per byte of the Python source of the same program (BICYCLE14's
-# Jacobians: 7 MB of Python, 60 s of gcc on an idle core; see bench/large_models.py)
+# seconds gcc takes per byte of the Python source of the symbolic Jacobians (BICYCLE14's:
+# 7 MB of Python, 60 s of gcc on an idle core; see bench/large_models.py)
 C_SECONDS_PER_SOURCE_BYTE = 1e-5
-# seconds forming and compiling symbolic Jacobians in Python take per byte of their
-# source (BICYCLE14's: 9.8 MB, 17 s)
-PYTHON_SECONDS_PER_SOURCE_BYTE = 2e-6
+# seconds one evaluation on dual numbers takes per byte of the right-hand side's Python
+# (the Whipple benchmark's 87 kB: 16 ms; a double pendulum's 2 kB: 0.3 ms)
+DUAL_SECONDS_PER_SOURCE_BYTE = 1.6e-7
+
+
+def _compiling_pays(sweep_size: int, n_varied: int) -> bool:
+    """Whether `sweep_size` evaluations on dual numbers cost more than compiling the
+    symbolic Jacobians, which are about 1 + n_varied times the right-hand side's source
+    (so the source's size cancels).  Without a C compiler the dual numbers stay: compiled
+    to Python, the symbolic Jacobians are no faster."""
+    if clibrary.compiler() is None:
+        return False
+    return (sweep_size * DUAL_SECONDS_PER_SOURCE_BYTE
+            >= C_SECONDS_PER_SOURCE_BYTE * (1 + n_varied))
 
 
 @dataclass
 class _Jacobians:
-    """The Jacobians of one system.  One linearization never waits for a compiler:
-    they are first the right-hand side's own Python run on dual numbers (dual.py), and
-    formed symbolically and compiled (to C where there is a compiler, else Python:
-    backend "auto") once the linearizations using them (a sweep's points, later runs
-    reading them from the cache) have spent, evaluating them, what forming and
-    compiling is predicted to cost: never more than twice what the better choice, made
-    knowing how many there would be, costs (the rent-or-buy rule)."""
+    """The Jacobians of one system: the right-hand side's own Python run on dual
+    numbers (dual.py: one linearization never waits for a compiler), or formed
+    symbolically and compiled (a sweep large enough to pay for it, or a backend asked
+    for)."""
 
     rhs: object             # values and Jacobian of the right-hand side
     outputs: object         # values-free Jacobian of the OUTPUT columns
     n_rhs: int
     n_out: int
-    evaluations: int = 0
-    seconds: float = 0.0    # spent evaluating them
-
-    def compiling_pays(self) -> bool:
-        if self.rhs.backend == "c" or (self.rhs.backend == "python"
-                                       and clibrary.compiler() is None):
-            return False
-        size = len(self.rhs.source) + len(self.outputs.source)
-        if self.rhs.backend == "dual":      # the symbolic Jacobians' size, foreseen
-            size *= 1 + self.rhs.n_varied
-        per_byte = (C_SECONDS_PER_SOURCE_BYTE if clibrary.compiler() is not None
-                    else PYTHON_SECONDS_PER_SOURCE_BYTE)
-        return self.seconds >= per_byte * size
 
 
 def _jacobian_functions(system, chosen: list, n_columns: int, backend: str) -> _Jacobians:
@@ -394,10 +389,7 @@ def _jacobian_functions(system, chosen: list, n_columns: int, backend: str) -> _
 def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linearization:
     nx, nv, n = system.nstate, system.nstate + len(chosen), len(system.implicit_unknowns)
     out = np.empty(jac.n_rhs * (1 + nv))
-    start = time.perf_counter()
     jac.rhs.call(np.array([t0]), x0, system.constant_values, s0, out)
-    jac.seconds += time.perf_counter() - start
-    jac.evaluations += 1
     values, grads = out[:jac.n_rhs], out[jac.n_rhs:].reshape(jac.n_rhs, nv)
     # a recursion's pivot that is not positive makes M singular
     if system.pivot_count and not np.all(pivot_ratios(values, system.pivot_count) > 0):
@@ -433,9 +425,7 @@ def _evaluate(system, jac: _Jacobians, chosen: list, t0: float, x0, s0) -> Linea
         daccel = np.zeros((0, nv))
     ny = jac.n_out
     jy = np.empty(ny * (nv + n))
-    start = time.perf_counter()
     jac.outputs.call(np.array([t0]), x0, system.constant_values, s0, accelerations, jy)
-    jac.seconds += time.perf_counter() - start
     jy = jy.reshape(ny, nv + n)
     through_accelerations = jy[:, nv:nv + n] @ daccel if n else np.zeros((ny, nv))
     jout = jy[:, :nv] + through_accelerations
