@@ -384,9 +384,11 @@ def _runs_to_or_beyond(piece, given) -> bool:
         return False
     base = given.terms[frame]
     k = next(i for i, c in enumerate(base) if c != 0)
-    ratio = sm.simplify(comps[k] / base[k])
+    # cancel decides whether two offsets' measure numbers have a constant ratio: no
+    # general simplifier on the way to a picture
+    ratio = sm.cancel(comps[k] / base[k])
     return bool(ratio.is_number and ratio.is_real and ratio >= 1 and
-                all(sm.simplify(c - ratio * b) == 0 for c, b in zip(comps, base)))
+                all(sm.expand(c - ratio * b) == 0 for c, b in zip(comps, base)))
 
 
 def _vector_key(vector) -> tuple:
