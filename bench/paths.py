@@ -42,6 +42,7 @@ random times, against the run's own right-hand side; 1e-8 of max(1, |value|)):
   r:symsys     model.symbolic_system() (sympy's SymbolicSystem, lambdified)
   r:module     the converted module's model
   r:script     the `convert --to sympy` script's mass matrix and forcing
+  r:dynamics   model.dynamics().explicit: the trajectory optimizer's compiled f(x, u, p, t)
 
   The model-level equations (M,f, explicit, symsys) are those of the model as it
   stands; they are compared for a CODE DYNAMICS whose definitions are the model's last
@@ -94,7 +95,7 @@ from journeys import Cell as JourneyCell  # noqa: E402
 ROW_PATHS = ("warm", "no-cache", "foreground", "python", "api", "mass-matrix", "module",
              "code", "script")
 RATE_PATHS = ("r:python", "r:recursion", "r:M,f", "r:explicit", "r:symsys", "r:module",
-              "r:script")
+              "r:script", "r:dynamics")
 LINEARIZE_PATHS = ("l:warm", "l:no-cache", "l:c")
 PATHS = ROW_PATHS + RATE_PATHS + LINEARIZE_PATHS
 RATE_TOLERANCE = 1e-8
@@ -651,6 +652,13 @@ def rates(path: Path, options: list, count: int, module: Path | None,
                                            "explicit"))
     extra = dependent_values(model, system, points, params)
     taking("symsys", lambda: symbolic_rates(model, command, system, points, params, extra))
+    def by_dynamics():
+        from autolev.runtime.numerics.dynamics import dynamics
+        dyn = dynamics(model.snapshot_for(command), infile=infile, overrides=values or None)
+        rates_ = dyn.explicit(np.array([x for _, x in points]), None, None,
+                              np.array([t for t, _ in points]))
+        return {"mark": "ok", "states": dyn.states, "rates": rates_.tolist()}
+    taking("dynamics", by_dynamics)
     if module is not None:
         def from_module():
             from autolev.loader import load_python

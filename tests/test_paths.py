@@ -35,7 +35,8 @@ def test_every_path_gives_the_answer_of_a_cold_run(model, tmp_path):
               "r:module", "l:warm", "l:no-cache"):
         assert row.cells[p].mark == "=", (p, row.cells[p])
     # the model-level equations and the exported script were compared, not skipped
-    for p in ("r:M,f", "r:explicit", "r:symsys", "r:script", "code", "script", "l:c"):
+    for p in ("r:M,f", "r:explicit", "r:symsys", "r:script", "r:dynamics", "code", "script",
+              "l:c"):
         assert row.cells[p].mark in ("=", "~"), (p, row.cells[p])
 
 

@@ -262,6 +262,26 @@ class SimulationMixin:
         table.  See autolev.runtime.studies.sweep."""
         return studies.sweep(self, points, what, **options)
 
+    def dynamics(self, controls=None, *, code=None, specified=None, backend: str = "auto",
+                 infile=None, overrides=None, missing_values: str = "refuse",
+                 progress=None):
+        """The equations of motion of a CODE DYNAMICS (`code`: which; default the first)
+        as compiled functions with exact sparse Jacobians, evaluated at many nodes in one
+        call, for trajectory optimization: explicit x' = f(x, u, p, t) and implicit
+        r(x, x', u, p, t) = 0 (see autolev.runtime.numerics.dynamics).  `controls`: the
+        specified quantities that are u (default: all without a definition);
+        `specified`: {name: number or sympy expression} for others; the parameters p
+        are the constants without a definition, their values from INPUT, `infile` and
+        `overrides` as for `simulate`."""
+        from .numerics.dynamics import dynamics
+        try:
+            return dynamics(self.snapshot_for(self.command_to_linearize(code)), controls,
+                            specified=specified, backend=backend, infile=infile,
+                            overrides=overrides, missing_values=missing_values,
+                            progress=progress)
+        finally:
+            self.keep_built()
+
     def linearize(self, operating_point=None, inputs=None, *, code=None,
                   backend: str = "auto", infile=None, missing_values: str = "refuse",
                   overrides=None, constraints=None, dependent=None, locked=None,

@@ -1,0 +1,307 @@
+"""A model's equations of motion as trajectory optimization takes them, with their
+exact derivatives, compiled, evaluated at many nodes in one call.
+
+The state x is what the model's CODE DYNAMICS integrates, the controls u its specified
+quantities (all of those it leaves undefined, or the ones named), the parameters p its
+constants without a definition.  Two forms:
+
+    explicit   x' = f(x, u, p, t)                     (Kane's M a = F solved at each node)
+    implicit   r(x, x', u, p, t) = 0                  (no mass matrix solved)
+
+r's row for a state whose rate is given (q' = g) is x'_i - g_i; its row for a speed
+whose rate Kane's equations give is row k of M a - F (a: those speeds' rates, M and F
+of the model's own forming), so r is linear in x'.  Every derivative is symbolic,
+through the Z's (`Definitions.jacobian`), printed once and compiled (C where there is a
+compiler, else Python); ∂r/∂x' is M's entries and ones.  The Jacobians are sparse: each
+comes with its pattern (rows, cols) and values per node.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import symbols as S
+from ...engine.errors import AutolevModelError
+from ...engine.options import RunOptions
+from . import codegen
+from .command import given_specified, program_of
+from .compiled import compile_program
+from .inputs import display_name
+from .prepare import prepare_command
+from .snapshot import ModelSnapshot
+from ..steps import SlowStep
+
+
+@dataclass(frozen=True)
+class Pattern:
+    """Where a sparse Jacobian's entries are: rows[k], cols[k] for entry k of each node's
+    values, in a matrix of `shape`."""
+
+    rows: np.ndarray
+    cols: np.ndarray
+    shape: tuple
+
+    @property
+    def nnz(self) -> int:
+        return len(self.rows)
+
+    def dense(self, values: np.ndarray) -> np.ndarray:
+        """Values (nodes x nnz) as dense matrices (nodes x rows x cols)."""
+        values = np.asarray(values, dtype=float)
+        out = np.zeros((values.shape[0],) + self.shape)
+        out[:, self.rows, self.cols] = values
+        return out
+
+    @classmethod
+    def of_mask(cls, mask: np.ndarray) -> "Pattern":
+        rows, cols = np.nonzero(mask)
+        return cls(rows, cols, mask.shape)
+
+
+@dataclass
+class Jacobians:
+    """The sparse Jacobians of one form at N nodes: values (N x nnz) by block, with the
+    blocks' patterns ("x", "xdot" (implicit form only), "u", "p")."""
+
+    values: dict
+    patterns: dict
+
+    def dense(self, block: str) -> np.ndarray:
+        return self.patterns[block].dense(self.values[block])
+
+
+class Dynamics:
+    """The compiled equations of motion of one CODE DYNAMICS, with exact Jacobians (see
+    the module's text).  Arrays have one row per node: x (N x nx), x' (N x nx), u (N x
+    nu), t (N,) or a number; p (np,) is one parameter set for every node (default: the
+    model's values).  One node may be given as 1-D arrays."""
+
+    def __init__(self, system, controls: list, parameter_values: np.ndarray, backend: str,
+                 progress=None, what: str = "CODE DYNAMICS"):
+        self._system = system
+        self.states = [display_name(x) for x in system.states]
+        self.controls = [display_name(u) for u in controls]
+        self.parameters = [display_name(p) for p in system.params]
+        self.parameter_values = np.array(parameter_values, dtype=float)
+        self._control_positions = [system.specified.index(u) for u in controls]
+        self._others = np.zeros(len(system.specified))     # specified that are no controls
+        nx, nu, n = system.nstate, len(controls), len(system.implicit_unknowns)
+        self._sizes = (nx, nu, len(system.params), n)
+        self._dynamic = np.array(system.unknown_positions, dtype=int)
+        self._kinematic = np.array([i for i in range(nx) if i not in set(system.unknown_positions)],
+                                   dtype=int)
+        with SlowStep(progress, f"{what}: forming and compiling its Jacobians"):
+            self._function, self._entries = self._compiled(system, controls, backend)
+        self.backend = self._function.backend
+        self._patterns = self._residual_patterns()
+
+    # -- forming ------------------------------------------------------------------------
+    @staticmethod
+    def _compiled(system, controls: list, backend: str):
+        """One program: the right-hand side (rates, M, F), then its Jacobian's structural
+        nonzeros in (x, u, p), whose places are `entries` (row, column)."""
+        defs = system.defs
+        variables = list(system.states) + list(controls) + list(system.params)
+        rhs = list(system.rhs_exprs)
+        jacobian = defs.jacobian(rhs, variables)
+        entries = [(i, j) for i, row in enumerate(jacobian) for j, d in enumerate(row)
+                   if d != 0]
+        given = {"t": [S.TIME], "x": system.states,
+                 "c": system.params + system.constant_defs, "s": system.specified}
+        program = codegen.Program(given, rhs + [jacobian[i][j] for i, j in entries], defs,
+                                  dict(system.aux_fixed)).build()
+        return (compile_program(program, backend, "autolev_dynamics"),
+                np.array(entries, dtype=int).reshape(-1, 2))
+
+    def _residual_patterns(self) -> dict:
+        """The residual's patterns, from the right-hand side's: a kinematical row has its
+        rate's entries, a dynamical row those of its M row and F entry."""
+        nx, nu, npar, n = self._sizes
+        nw = nx + nu + npar
+        rhs_mask = np.zeros((nx + n * n + n, nw), dtype=bool)
+        rhs_mask[self._entries[:, 0], self._entries[:, 1]] = True
+        mask = np.zeros((nx, nw), dtype=bool)
+        mask[self._kinematic] = rhs_mask[self._kinematic]
+        xdot = np.zeros((nx, nx), dtype=bool)
+        xdot[self._kinematic, self._kinematic] = True
+        mass = self._mass_nonzero()
+        for k, row in enumerate(self._dynamic):
+            mask[row] = rhs_mask[nx + n * n + k] | rhs_mask[nx + k * n:nx + (k + 1) * n].any(0)
+            xdot[row, self._dynamic] = mass[k]
+        self._explicit_mask = mask.copy()
+        self._explicit_mask[self._dynamic] = mask[self._dynamic].any(0)  # M^-1 mixes rows
+        return self._split(mask) | {"xdot": Pattern.of_mask(xdot)}
+
+    def _mass_nonzero(self) -> np.ndarray:
+        nx, _, _, n = self._sizes
+        exprs = self._system.rhs_exprs[nx:nx + n * n]
+        return np.array([e != 0 for e in exprs], dtype=bool).reshape(n, n)
+
+    def _split(self, mask: np.ndarray) -> dict:
+        nx, nu, _, _ = self._sizes
+        return {"x": Pattern.of_mask(mask[:, :nx]), "u": Pattern.of_mask(mask[:, nx:nx + nu]),
+                "p": Pattern.of_mask(mask[:, nx + nu:])}
+
+    # -- evaluating -----------------------------------------------------------------------
+    def _nodes(self, x, u, t, xdot=None):
+        nx, nu, _, _ = self._sizes
+        x = np.atleast_2d(np.asarray(x, dtype=float))
+        count = x.shape[0]
+        u = np.zeros((count, nu)) if u is None else np.asarray(u, dtype=float).reshape(count, nu)
+        t = np.broadcast_to(np.asarray(t, dtype=float), (count,))
+        if x.shape[1] != nx:
+            raise ValueError(f"x: {nx} states per node ({', '.join(self.states)}), "
+                             f"not {x.shape[1]}")
+        if xdot is not None:
+            xdot = np.asarray(xdot, dtype=float).reshape(count, nx)
+        return x, u, t, xdot
+
+    def _evaluated(self, x, u, p, t) -> tuple[np.ndarray, np.ndarray]:
+        """(right-hand side values: N x (nx + n^2 + n), dense Jacobian: N x rows x (x, u,
+        p)) at every node."""
+        system, (nx, nu, npar, n) = self._system, self._sizes
+        p = self.parameter_values if p is None else np.asarray(p, dtype=float)
+        if p.shape != (npar,):
+            raise ValueError(f"p: {npar} parameters ({', '.join(self.parameters)}), "
+                             f"not {p.shape}")
+        system.set_parameters(p)
+        constants = system.constant_values
+        n_rhs, count = nx + n * n + n, x.shape[0]
+        out = np.empty(n_rhs + len(self._entries))
+        values = np.empty((count, n_rhs))
+        jac = np.zeros((count, n_rhs, nx + nu + npar))
+        specified = self._others.copy()
+        for k in range(count):
+            specified[self._control_positions] = u[k]
+            self._function.call(t[k:k + 1], x[k], constants, specified, out)
+            values[k] = out[:n_rhs]
+            jac[k, self._entries[:, 0], self._entries[:, 1]] = out[n_rhs:]
+        return values, jac
+
+    def _mass_and_forcing(self, values):
+        nx, _, _, n = self._sizes
+        return (values[:, nx:nx + n * n].reshape(-1, n, n),
+                values[:, nx + n * n:nx + n * n + n])
+
+    def explicit(self, x, u=None, p=None, t=0.0) -> np.ndarray:
+        """x' = f(x, u, p, t) at every node (N x nx)."""
+        x, u, t, _ = self._nodes(x, u, t)
+        values, _ = self._evaluated(x, u, p, t)
+        return self._rates(values)[0]
+
+    def _rates(self, values):
+        nx = self._sizes[0]
+        rates = values[:, :nx].copy()
+        accelerations = None
+        if len(self._dynamic):
+            mass, forcing = self._mass_and_forcing(values)
+            accelerations = _solved(mass, forcing[..., None])[..., 0]
+            rates[:, self._dynamic] = accelerations
+        return rates, accelerations
+
+    def residual(self, x, xdot, u=None, p=None, t=0.0) -> np.ndarray:
+        """r(x, x', u, p, t) at every node (N x nx): 0 on the motion."""
+        x, u, t, xdot = self._nodes(x, u, t, xdot)
+        values, _ = self._evaluated(x, u, p, t)
+        return self._residual(values, xdot)
+
+    def _residual(self, values, xdot):
+        r = np.empty_like(xdot)
+        r[:, self._kinematic] = xdot[:, self._kinematic] - values[:, self._kinematic]
+        if len(self._dynamic):
+            mass, forcing = self._mass_and_forcing(values)
+            r[:, self._dynamic] = np.einsum("nkj,nj->nk", mass, xdot[:, self._dynamic]) - forcing
+        return r
+
+    def residual_jacobians(self, x, xdot, u=None, p=None, t=0.0) -> Jacobians:
+        """∂r/∂x, ∂r/∂x', ∂r/∂u, ∂r/∂p at every node, sparse (see Jacobians)."""
+        x, u, t, xdot = self._nodes(x, u, t, xdot)
+        values, jac = self._evaluated(x, u, p, t)
+        nx, nu, npar, n = self._sizes
+        dense = np.zeros((x.shape[0], nx, nx + nu + npar))
+        dense[:, self._kinematic] = -jac[:, self._kinematic]
+        ddot = np.zeros((x.shape[0], nx, nx))
+        ddot[:, self._kinematic, self._kinematic] = 1.0
+        if n:
+            mass, _ = self._mass_and_forcing(values)
+            dmass = jac[:, nx:nx + n * n].reshape(-1, n, n, jac.shape[2])
+            dforcing = jac[:, nx + n * n:nx + n * n + n]
+            dense[:, self._dynamic] = (np.einsum("nkjw,nj->nkw", dmass, xdot[:, self._dynamic])
+                                       - dforcing)
+            ddot[:, self._dynamic[:, None], self._dynamic[None, :]] = mass
+        return self._sparse(dense, self._patterns, ddot)
+
+    def explicit_jacobians(self, x, u=None, p=None, t=0.0) -> Jacobians:
+        """∂f/∂x, ∂f/∂u, ∂f/∂p at every node, sparse (see Jacobians): a speed's row is
+        M^-1 (∂F - ∂M a), so it has every entry its coupled rows have."""
+        x, u, t, _ = self._nodes(x, u, t)
+        values, jac = self._evaluated(x, u, p, t)
+        nx, _, _, n = self._sizes
+        dense = jac[:, :nx].copy()
+        if n:
+            mass, forcing = self._mass_and_forcing(values)
+            _, accelerations = self._rates(values)
+            dmass = jac[:, nx:nx + n * n].reshape(-1, n, n, jac.shape[2])
+            dforcing = jac[:, nx + n * n:nx + n * n + n]
+            dense[:, self._dynamic] = _solved(
+                mass, dforcing - np.einsum("nkjw,nj->nkw", dmass, accelerations))
+        return self._sparse(dense, self._split(self._explicit_mask))
+
+    def _sparse(self, dense, patterns: dict, xdot=None) -> Jacobians:
+        nx, nu, _, _ = self._sizes
+        blocks = {"x": dense[:, :, :nx], "u": dense[:, :, nx:nx + nu], "p": dense[:, :, nx + nu:]}
+        if xdot is not None:
+            blocks["xdot"] = xdot
+        return Jacobians({b: m[:, patterns[b].rows, patterns[b].cols] for b, m in blocks.items()},
+                         {b: patterns[b] for b in blocks})
+
+
+def _solved(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """M^-1 rhs at every node; a singular M is the model's, named."""
+    try:
+        return np.linalg.solve(mass, rhs)
+    except np.linalg.LinAlgError:
+        raise AutolevModelError("the mass matrix is singular at a node") from None
+
+
+def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: str = "auto",
+             infile=None, overrides=None, missing_values: str = "refuse",
+             progress=None) -> Dynamics:
+    """The snapshot's command's Dynamics.  `controls`: names of the specified quantities
+    that are the controls u (default: every one the program reads without a
+    definition); `specified`: {name: number or sympy expression} for the others (the
+    rest are 0).  The parameters' values come from INPUT, `infile` and `overrides`
+    ({name: value} in the quantities' own units), as a run takes them."""
+    command, functions, overrides = given_specified(snapshot, snapshot.command, specified,
+                                                    overrides)
+    if functions:
+        raise AutolevModelError("specified: the dynamics take values or expressions for "
+                                "specified quantities, not Python functions: "
+                                + ", ".join(map(display_name, functions)))
+    prepared = prepare_command(snapshot, command, RunOptions(
+        backend=backend, infile=infile, overrides=overrides, missing_values=missing_values,
+        progress=progress, recursion=False), warn_unassigned=False, compile_functions=False)
+    system = prepared.system
+    if not system.nstate:
+        raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "
+                                "there are no dynamics")
+    chosen = _controls(system, controls)
+    with snapshot.definitions.as_of(program_of(snapshot, command).definitions):
+        return Dynamics(system, chosen, prepared.inputs.vector(system.params), backend,
+                        progress, f"CODE DYNAMICS {command.filename}")
+
+
+def _controls(system, names) -> list:
+    if names is None:
+        return list(system.specified)
+    by_name = {display_name(s).upper(): s for s in system.specified}
+    chosen = []
+    for name in names:
+        sym = by_name.get(str(name).upper())
+        if sym is None:
+            known = ", ".join(display_name(s) for s in system.specified) or "none"
+            raise AutolevModelError(f"controls: {name!r} is not a specified quantity the "
+                                    f"program reads without a definition (those: {known})")
+        chosen.append(sym)
+    return chosen

@@ -1,0 +1,165 @@
+"""Model.dynamics: the explicit and implicit equations of motion with exact sparse
+Jacobians, against a pendulum worked by hand, central finite differences on every
+shipped example, and sympy's own derivatives of the mass matrix and forcing."""
+import math
+
+import numpy as np
+import pytest
+import sympy as sm
+
+import autolev
+from autolev.engine.errors import AutolevModelError
+from helpers import EXAMPLES
+from helpers.models import PENDULUM
+
+
+@pytest.fixture
+def pendulum(tmp_path):
+    path = tmp_path / "pendulum.al"
+    path.write_text(PENDULUM)
+    return autolev.load(path).dynamics()
+
+
+def test_the_pendulum_by_hand(pendulum):
+    # M L^2 U' = TQ - M G L sin(Q), Q' = U; G, L, M = 9.81, 2, 3 from INPUT
+    g, L, m = 9.81, 2.0, 3.0
+    q, u, tq, qd, ud = 0.3, -0.2, 0.7, 0.1, 0.5
+    assert (pendulum.states, pendulum.controls, pendulum.parameters) == (
+        ["Q", "U"], ["TQ"], ["G", "L", "M"])
+    accel = (tq - m * g * L * math.sin(q)) / (m * L ** 2)
+    assert np.allclose(pendulum.explicit([q, u], [tq]), [[u, accel]], rtol=1e-14)
+    r = pendulum.residual([q, u], [qd, ud], [tq])
+    assert np.allclose(r, [[qd - u, m * L ** 2 * ud - tq + m * g * L * math.sin(q)]],
+                       rtol=1e-14)
+    jac = pendulum.residual_jacobians([q, u], [qd, ud], [tq])
+    assert np.allclose(jac.dense("x")[0], [[0, -1], [m * g * L * math.cos(q), 0]])
+    assert np.allclose(jac.dense("xdot")[0], [[1, 0], [0, m * L ** 2]])
+    assert np.allclose(jac.dense("u")[0], [[0], [-1]])
+    assert np.allclose(jac.dense("p")[0], [[0, 0, 0], [
+        m * L * math.sin(q), 2 * m * L * ud + m * g * math.sin(q),
+        L ** 2 * ud + g * L * math.sin(q)]])
+    # sparse: Q's row depends on U alone, and nothing on p
+    assert jac.patterns["p"].nnz == 3 and jac.patterns["x"].nnz == 2
+
+
+def test_nodes_in_one_call_are_each_nodes_answer(pendulum):
+    rng = np.random.default_rng(3)
+    x, u, t = rng.normal(size=(6, 2)), rng.normal(size=(6, 1)), rng.uniform(size=6)
+    together = pendulum.explicit_jacobians(x, u, t=t).values["x"]
+    apart = [pendulum.explicit_jacobians(x[k], u[k], t=t[k]).values["x"][0] for k in range(6)]
+    assert np.array_equal(together, np.array(apart))
+
+
+STEPS = (1e-2, 1e-3, 1e-4, 1e-5)
+
+
+def _central(function, arrays: dict, name: str) -> np.ndarray:
+    """d function / d arrays[name] by five-point central differences, at each of STEPS
+    (steps x nodes x rows x columns)."""
+    base = arrays[name]
+    by_step = []
+    for h in STEPS:
+        columns = []
+        for j in range(base.shape[-1]):
+            def at(step):
+                moved = base.copy()
+                moved[..., j] += step * h
+                return function(**dict(arrays, **{name: moved}))
+            columns.append((8 * (at(1) - at(-1)) - (at(2) - at(-2))) / (12 * h))
+        by_step.append(np.stack(columns, axis=-1))
+    return np.array(by_step)
+
+
+def _agrees(exact, differences) -> bool:
+    """Each entry within 1e-8 of its row's size at the step that suits it: truncation
+    (h^4 f^(5)) falls and rounding (eps f / h) grows as the step shrinks, and near a
+    singular mass matrix (the Whipple's, the four-bar's off its constraint) no one step
+    suits every entry; a missing or wrong term suits none."""
+    scale = np.maximum(1.0, np.abs(differences[1]).max(axis=-1, keepdims=True))
+    return bool(np.all(np.abs(exact - differences).min(axis=0) <= 1e-8 * scale))
+
+
+@pytest.mark.parametrize("model", sorted(EXAMPLES.glob("*.al")), ids=lambda p: p.stem)
+def test_jacobians_are_central_differences_on_every_example(model):
+    dynamics = autolev.load(model).dynamics()
+    rng = np.random.default_rng(7)
+    nx, nu = len(dynamics.states), len(dynamics.controls)
+    x, u = 0.5 * rng.normal(size=(3, nx)), rng.normal(size=(3, nu))
+    p = dynamics.parameter_values * rng.uniform(0.8, 1.2, size=len(dynamics.parameters))
+    t = rng.uniform(size=3)
+    xdot = dynamics.explicit(x, u, p, t)
+    assert np.allclose(dynamics.residual(x, xdot, u, p, t), 0,
+                       atol=1e-9 * max(1.0, np.abs(xdot).max()))
+    explicit = dynamics.explicit_jacobians(x, u, p, t)
+    implicit = dynamics.residual_jacobians(x, xdot, u, p, t)
+    arrays = dict(x=x, u=u, p=p, t=t)
+
+    def f(x, u, p, t):
+        return dynamics.explicit(x, u, p, t)
+
+    def r(x, u, p, t, xdot=xdot):
+        return dynamics.residual(x, xdot, u, p, t)
+    for block in ("x", "u", "p"):
+        if arrays[block].shape[-1]:
+            assert _agrees(explicit.dense(block), _central(f, arrays, block)), block
+            assert _agrees(implicit.dense(block), _central(r, arrays, block)), block
+    by_rates = _central(lambda xdot: dynamics.residual(x, xdot, u, p, t), {"xdot": xdot},
+                        "xdot")
+    assert _agrees(implicit.dense("xdot"), by_rates)
+
+
+def test_sympys_derivatives_of_the_mass_matrix_and_forcing():
+    model = autolev.load(EXAMPLES / "double_pendulum.al")
+    dynamics = model.dynamics()
+    # a second differentiation: sympy's own, of the model's M and F as expressions
+    expand = model.defs.explicit                # the Z's written out
+    mass, forcing = model.mass_matrix.applyfunc(expand), model.forcing.applyfunc(expand)
+    names = {str(s): s for s in (mass.free_symbols | forcing.free_symbols)}
+    states = [names.get(n, sm.Symbol(n)) for n in dynamics.states]
+    params = [names.get(n, sm.Symbol(n)) for n in dynamics.parameters]
+    speeds = [s for s in states if str(s).startswith("U")]
+    rates = sm.Matrix(sm.symbols(f"a1:{len(speeds) + 1}"))
+    residual = mass * rates - forcing
+    point = dict(zip(states, [0.4, -0.3, 0.8, 1.1]))
+    point.update(zip(params, dynamics.parameter_values))
+    point.update(zip(rates, [0.2, -0.5]))
+    jac = dynamics.residual_jacobians([[point[s] for s in states]],
+                                      [[0.8, 1.1, 0.2, -0.5]])
+    rows = [dynamics.states.index(str(s)) for s in speeds]
+    by_sympy = np.array(residual.jacobian(states).subs(point), dtype=float)
+    assert np.allclose(jac.dense("x")[0][rows], by_sympy, rtol=1e-12, atol=1e-12)
+    by_sympy_p = np.array(residual.jacobian(params).subs(point), dtype=float)
+    assert np.allclose(jac.dense("p")[0][rows], by_sympy_p, rtol=1e-12, atol=1e-12)
+
+
+def test_the_python_tier_gives_the_c_tiers_numbers(tmp_path):
+    from autolev.engine import clibrary
+    if clibrary.compiler() is None:
+        pytest.skip("no C compiler: one tier")
+    model = autolev.load(EXAMPLES / "block_pendulums.al")
+    c, python = model.dynamics(), model.dynamics(backend="python")
+    assert (c.backend, python.backend) == ("c", "python")
+    rng = np.random.default_rng(5)
+    x, u = rng.normal(size=(4, len(c.states))), rng.normal(size=(4, len(c.controls)))
+    a, b = c.explicit_jacobians(x, u), python.explicit_jacobians(x, u)
+    for block in ("x", "u", "p"):
+        assert np.allclose(a.values[block], b.values[block], rtol=1e-12, atol=1e-12)
+
+
+def test_controls_are_named_and_the_others_held_at_zero(tmp_path):
+    model = autolev.load(EXAMPLES / "block_pendulums.al")
+    both = model.dynamics()
+    assert both.controls == ["F", "TQ"]
+    one = model.dynamics(controls=["tq"])
+    x = np.full((1, len(one.states)), 0.2)
+    assert one.controls == ["TQ"]
+    assert np.array_equal(one.explicit(x, [[0.5]]), both.explicit(x, [[0.0, 0.5]]))
+    with pytest.raises(AutolevModelError, match="'Q1' is not a specified quantity"):
+        model.dynamics(controls=["Q1"])
+
+
+def test_arrays_of_the_wrong_size_are_named(pendulum):
+    with pytest.raises(ValueError, match=r"x: 2 states per node \(Q, U\), not 3"):
+        pendulum.explicit(np.zeros((4, 3)))
+    with pytest.raises(ValueError, match=r"p: 3 parameters \(G, L, M\)"):
+        pendulum.explicit(np.zeros((4, 2)), p=[1.0])
