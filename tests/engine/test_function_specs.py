@@ -5,6 +5,7 @@ the record's rule, fastdiff and the dual numbers is sympy's; its values in doubl
 complex precision are sympy's.  And the records are the only table of function names
 in the package."""
 import ast
+import math
 import subprocess
 
 import numpy as np
@@ -24,7 +25,7 @@ from autolev.runtime.calculus import Definitions
 from autolev.runtime.floats import NotElementary, complex_value
 from autolev.runtime.numerics import codegen
 from autolev.runtime.numerics.interpret import ProgramWalk
-from autolev.runtime.printer import CPrinter, PythonPrinter
+from autolev.runtime.printer import CasadiPrinter, CPrinter, PythonPrinter
 from autolev.runtime.sympy_functions import sympy_function
 from autolev.translate import translate
 from autolev.translate.functions.table import FUNCTIONS
@@ -73,7 +74,7 @@ POINTS = {
 COMPLEX_POINTS = [0.3 + 0.4j, -1.2 + 0.5j, 0.5 - 1.5j, 2.0, -3.0, 0.5, 2j, -2j, 0.5j]
 SYMBOLS = sm.symbols("x1 x2 x3", real=True)
 RECORDS = {spec.name: spec for spec in FUNCTION_SPECS}
-LANGUAGES = ("c", "python", "numpy", "fortran", "matlab")
+LANGUAGES = ("c", "python", "numpy", "fortran", "matlab", "casadi")
 
 
 def _close(got, want, rel=1e-12) -> bool:
@@ -135,7 +136,7 @@ def test_it_prints_in_every_language(spec, points):
     for n in sorted({len(p) for p in points}):
         expr = expression(spec, n)
         names = {s: s.name for s in SYMBOLS}
-        for printer in (CPrinter, PythonPrinter, FortranPrinter, MatlabPrinter):
+        for printer in (CPrinter, PythonPrinter, FortranPrinter, MatlabPrinter, CasadiPrinter):
             if spec.sympy is not None and spec.spelling(printer.LANGUAGE) is None:
                 with pytest.raises(AutolevModelError, match=f"{spec.sympy} has no "):
                     printer(names)(expr)
@@ -219,6 +220,27 @@ def test_its_derivative_is_sympys(spec, points):
                 changes = [sm.S.One if j == k else sm.S.Zero for j in range(n)]
                 rule = spec.differential(sm, *SYMBOLS[:n], *changes)
                 assert _close(rule.subs(at).evalf(30), wanted), (point, x)
+
+
+@pytest.mark.parametrize("spec, points", cases())
+def test_the_casadi_expression_computes_it_and_its_derivative(spec, points):
+    ca = pytest.importorskip("casadi", reason="the CasADi form needs casadi (an extra)")
+    if spec.sympy is not None and spec.casadi is None:
+        pytest.skip(f"{spec.name} has no CasADi form (refused: tested above)")
+    for point in points:
+        n = len(point)
+        expr = expression(spec, n)
+        prog = codegen.Program({"v": list(SYMBOLS[:n])}, [expr], Definitions()).build()
+        namespace = {"ca": ca, "math": math}
+        exec(codegen.python_source(prog, "compute", printer=CasadiPrinter), namespace)
+        v = ca.SX.sym("v", n)
+        out = [None]
+        namespace["compute"]([v[i] for i in range(n)], out)
+        value, gradient = ca.Function("f", [v], [out[0], ca.gradient(out[0], v)])(point)
+        assert _close(float(value), want(expr, point)), (point, float(value))
+        for k, x in enumerate(SYMBOLS[:n]):
+            wanted = derivative_wanted(expr, x, point)
+            assert _close(float(gradient[k]), wanted), (point, x, float(gradient[k]), wanted)
 
 
 def _points_and_wanted(spec, points):

@@ -117,11 +117,8 @@ class CodePrinter:
         if isinstance(e, sm.Piecewise):          # a Function too, of (value, condition)s
             return self._piecewise(e)
         # And, Or and Not are Functions too (sympy's BooleanFunction)
-        if isinstance(e, (sm.And, sm.Or)):
-            op = self.AND if isinstance(e, sm.And) else self.OR
-            return "(" + op.join(self._p(a)[0] for a in e.args) + ")", ATOM
-        if isinstance(e, sm.Not):
-            return self.NOT + self._wrap(e.args[0], ATOM), UNARY
+        if isinstance(e, (sm.And, sm.Or, sm.Not)):
+            return self._logic(e)
         if e.is_Function:
             return self._function(e)
         if e.is_Relational:
@@ -208,6 +205,13 @@ class CodePrinter:
         """value where condition holds, else otherwise."""
         raise NotImplementedError
 
+    def _logic(self, e):
+        """And, Or (infix: AND, OR) and Not (prefix: NOT)."""
+        if isinstance(e, sm.Not):
+            return self.NOT + self._wrap(e.args[0], ATOM), UNARY
+        op = self.AND if isinstance(e, sm.And) else self.OR
+        return "(" + op.join(self._p(a)[0] for a in e.args) + ")", ATOM
+
     def _function(self, e):
         name = type(e).__name__
         args = [self._argument(a) for a in e.args]
@@ -274,6 +278,36 @@ class PythonPrinter(CodePrinter):
 
     def _choice(self, condition: str, value: str, otherwise: str) -> str:
         return f"(({value}) if ({condition}) else ({otherwise}))"
+
+
+class CasadiPrinter(CodePrinter):
+    """Python building CasADi's symbolic expressions (`import casadi as ca`): the
+    printed program run on SX symbols gives the model's equations as CasADi's graph,
+    which CasADi differentiates and compiles itself."""
+
+    LANGUAGE, LANGUAGE_NAME = "casadi", "CasADi"
+    GENERATES = "CasADi expressions"
+    NAN, INF = "math.nan", "ca.inf"
+    PI, E = "ca.pi", "math.e"
+
+    def _truth(self, value: bool) -> str:
+        return "1.0" if value else "0.0"
+
+    def _power(self, base, exp):
+        return f"{self._wrap(base, ATOM)}**{self._wrap(exp, ATOM)}", POW
+
+    def _choice(self, condition: str, value: str, otherwise: str) -> str:
+        return f"ca.if_else({condition}, {value}, {otherwise})"
+
+    def _logic(self, e):
+        if isinstance(e, sm.Not):
+            return f"ca.logic_not({self._p(e.args[0])[0]})", ATOM
+        call = "ca.logic_and" if isinstance(e, sm.And) else "ca.logic_or"
+        texts = [self._p(a)[0] for a in e.args]
+        text = texts[0]
+        for other in texts[1:]:
+            text = f"{call}({text}, {other})"
+        return text, ATOM
 
 
 def number_value(expr) -> float:

@@ -163,3 +163,30 @@ def test_arrays_of_the_wrong_size_are_named(pendulum):
         pendulum.explicit(np.zeros((4, 3)))
     with pytest.raises(ValueError, match=r"p: 3 parameters \(G, L, M\)"):
         pendulum.explicit(np.zeros((4, 2)), p=[1.0])
+
+
+@pytest.mark.parametrize("model", sorted(EXAMPLES.glob("*.al")), ids=lambda p: p.stem)
+def test_the_casadi_form_is_the_same_equations_and_derivatives(model):
+    ca = pytest.importorskip("casadi", reason="the CasADi form needs casadi (an extra)")
+    dynamics = autolev.load(model).dynamics()
+    form = dynamics.casadi()
+    rng = np.random.default_rng(11)
+    nx, nu, npar = len(dynamics.states), len(dynamics.controls), len(dynamics.parameters)
+    x, u = 0.5 * rng.normal(size=nx), rng.normal(size=nu)
+    p, t = dynamics.parameter_values, 0.4
+    xdot = dynamics.explicit(x, u, p, t)[0] + 0.1
+    # their M a = F solved by CasADi's QR, ours by LU: apart by the solves' rounding
+    rates = dynamics.explicit(x, u, p, t)[0]
+    assert np.allclose(np.array(form.f(x, u, p, t)).ravel(), rates, rtol=0,
+                       atol=1e-10 * max(1.0, np.abs(rates).max()))
+    # CasADi's own derivatives of its graph against ours
+    X, XD, U, P = (ca.SX.sym(name, size) for name, size in
+                   (("x", nx), ("xdot", nx), ("u", nu), ("p", npar)))
+    r = form.residual(X, XD, U, P, t)
+    blocks = ca.Function("blocks", [X, XD, U, P], [ca.jacobian(r, X), ca.jacobian(r, XD),
+                                                  ca.jacobian(r, U), ca.jacobian(r, P)])
+    ours = dynamics.residual_jacobians(x, xdot, u, p, t)
+    for block, theirs in zip(("x", "xdot", "u", "p"), blocks(x, xdot, u, p)):
+        scale = max(1.0, np.abs(ours.dense(block)).max(initial=0.0))
+        assert np.allclose(np.array(theirs), ours.dense(block)[0], rtol=0,
+                           atol=1e-12 * scale), block

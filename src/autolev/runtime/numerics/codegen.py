@@ -258,13 +258,15 @@ def _repeated(roots: list, nodes: list, wanted) -> set:
 
 
 # -- Python ---------------------------------------------------------------------------
-def python_source(prog: Program, name: str = "compute") -> str:
+def python_source(prog: Program, name: str = "compute", printer=PythonPrinter) -> str:
+    """The program as a Python function name(*inputs, out) filling `out`; `printer`: the
+    printer class of its expressions (CasadiPrinter: building CasADi's)."""
     args = ", ".join(prog.inputs)
     lines = [f"def {name}({args}{', ' if args else ''}out):"]
     for arg, syms in prog.inputs.items():
         for i in range(len(syms)):
             lines.append(f"    {arg}_{i} = {arg}[{i}]")
-    p = PythonPrinter(prog.names)
+    p = printer(prog.names)
     for ident, expr in prog.assignments:
         lines.append(f"    {ident} = {p(expr)}")
         if ident in prog.bound:

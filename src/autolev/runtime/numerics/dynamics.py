@@ -78,8 +78,10 @@ class Dynamics:
     model's values).  One node may be given as 1-D arrays."""
 
     def __init__(self, system, controls: list, parameter_values: np.ndarray, backend: str,
-                 progress=None, what: str = "CODE DYNAMICS"):
+                 definitions, progress=None, what: str = "CODE DYNAMICS"):
         self._system = system
+        self._control_symbols = list(controls)
+        self._definitions = definitions      # () -> the command's view of the definitions
         self.states = [display_name(x) for x in system.states]
         self.controls = [display_name(u) for u in controls]
         self.parameters = [display_name(p) for p in system.params]
@@ -95,6 +97,15 @@ class Dynamics:
             self._function, self._entries = self._compiled(system, controls, backend)
         self.backend = self._function.backend
         self._patterns = self._residual_patterns()
+
+    def casadi(self):
+        """The same equations as CasADi functions, for CasADi's own derivatives and
+        solvers (needs casadi): a casadi_form.CasadiDynamics."""
+        from .casadi_form import casadi_dynamics
+        with self._definitions():
+            return casadi_dynamics(self._system, self._control_symbols, {
+                "states": self.states, "controls": self.controls,
+                "parameters": self.parameters, "values": self.parameter_values})
 
     # -- forming ------------------------------------------------------------------------
     @staticmethod
@@ -287,9 +298,13 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
         raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "
                                 "there are no dynamics")
     chosen = _controls(system, controls)
-    with snapshot.definitions.as_of(program_of(snapshot, command).definitions):
+    program = program_of(snapshot, command)
+
+    def definitions():
+        return snapshot.definitions.as_of(program.definitions)
+    with definitions():
         return Dynamics(system, chosen, prepared.inputs.vector(system.params), backend,
-                        progress, f"CODE DYNAMICS {command.filename}")
+                        definitions, progress, f"CODE DYNAMICS {command.filename}")
 
 
 def _controls(system, names) -> list:
