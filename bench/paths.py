@@ -53,8 +53,8 @@ Linearization (autolev linearize's printed eigenvalues, for a CODE DYNAMICS):
   l:warm       again, same cache (its kept answer)
   l:no-cache   AUTOLEV_NO_MODEL_CACHE=1, an empty cache
   l:c          --backend c: the symbolic Jacobians compiled to C (the tier a long sweep
-               takes), against the dual numbers' (each eigenvalue within
-               EIGENVALUE_TOLERANCE of max(1, |value|))
+               takes), against the dual numbers' (A, B, C and D written by --out, each
+               within MATRIX_TOLERANCE of its largest entry)
 
 A cell is `=` (identical), `~` (equal within the tolerance), `DIFF` (an unexplained
 difference), `x:NAME` (a difference Autolev's own behaviour explains: EXPLAINED names
@@ -99,9 +99,9 @@ RATE_PATHS = ("r:python", "r:recursion", "r:M,f", "r:explicit", "r:symsys", "r:m
 LINEARIZE_PATHS = ("l:warm", "l:no-cache", "l:c")
 PATHS = ROW_PATHS + RATE_PATHS + LINEARIZE_PATHS
 RATE_TOLERANCE = 1e-8
-# eigenvalues from Jacobians that part by ulps: a defective eigenvalue (a double 0 of an
-# ignorable coordinate) moves by about the square root of theirs
-EIGENVALUE_TOLERANCE = 1e-6
+# Jacobians that two exact methods compute part by their roundings, which a badly
+# scaled model's cancellations amplify (SSOpt's cell model: 5e-10 of its largest entry)
+MATRIX_TOLERANCE = 1e-8
 # seconds a rates path may take inside the rates process (sympy's own forms are slow on
 # large models: past it the cell is `slow`, not compared)
 RATE_PATH_LIMIT = 120.0
@@ -448,37 +448,52 @@ class ModelPaths:
         if compiler() is None:
             cells["l:c"] = Cell("-", "no C compiler")
             return
-        compiled = run_process(autolev_cli("linearize", self.path, *self.options,
-                                           "--backend", "c"),
-                               self.work, self.limit, self.env("lin-c"))
-        if compiled.returncode is None:
+        folders = {tier: self.work / f"lin-{tier}" for tier in ("dual", "c")}
+        ran = {}
+        for tier, folder in folders.items():
+            shutil.rmtree(folder, ignore_errors=True)
+            ran[tier] = run_process(
+                autolev_cli("linearize", self.path, *self.options, "--out", folder,
+                            *(("--backend", "c") if tier == "c" else ())),
+                self.work, self.limit, self.env("lin" if tier == "dual" else "lin-c"))
+        if ran["c"].returncode is None:
             cells["l:c"] = Cell("slow", f"over {self.limit:g} s")
-        elif compiled.returncode != first.returncode:
-            cells["l:c"] = Cell("fail", f"exit {compiled.returncode} (first "
-                                f"{first.returncode}): {_last(compiled.stderr)}")
+        elif ran["c"].returncode != ran["dual"].returncode:
+            cells["l:c"] = Cell("fail", f"exit {ran['c'].returncode} (dual numbers "
+                                f"{ran['dual'].returncode}): {_last(ran['c'].stderr)}")
+        elif ran["c"].returncode:
+            cells["l:c"] = Cell("=", f"both exit {ran['c'].returncode}")
         else:
-            cells["l:c"] = compare_eigenvalues(first.stdout, compiled.stdout)
+            cells["l:c"] = compare_matrices(folders["dual"], folders["c"])
 
 
-def printed_eigenvalues(stdout: str) -> list:
-    """The (real, imaginary) pairs `autolev linearize` prints, sorted."""
-    rows = [line.split(",") for line in stdout.splitlines()]
-    return sorted((float(r[0]), float(r[1])) for r in rows
-                  if len(r) >= 2 and re.fullmatch(r"[-+0-9.eE]+", r[0]))
+def linear_matrices(folder: Path) -> dict:
+    """{name: (row names, column names, values)} of the A, B, C, D that `autolev
+    linearize --out` wrote."""
+    found = {}
+    for path in sorted(folder.glob("*-[ABCD].csv")):
+        rows = [line.split(",") for line in path.read_text().splitlines()]
+        found[path.stem[-1]] = (tuple(r[0] for r in rows[1:]), tuple(rows[0][1:]),
+                                np.array([[float(v) for v in r[1:]] for r in rows[1:]]))
+    return found
 
 
-def compare_eigenvalues(reference: str, got: str) -> Cell:
-    ours, theirs = printed_eigenvalues(reference), printed_eigenvalues(got)
-    if len(ours) != len(theirs):
-        return Cell("DIFF", f"{len(theirs)} eigenvalues, not {len(ours)}")
-    # each matched to the nearest left: sorting alone pairs a conjugate pair's parts
-    # apart when their real parts part by an ulp
-    worst, left = 0.0, list(theirs)
-    for value in (complex(*pair) for pair in ours):
-        k = min(range(len(left)), key=lambda i: abs(complex(*left[i]) - value))
-        worst = max(worst, abs(complex(*left.pop(k)) - value) / max(1.0, abs(value)))
-    if worst > EIGENVALUE_TOLERANCE:
-        return Cell("DIFF", f"eigenvalues differ by {worst:.3g} of max(1, |value|)")
+def compare_matrices(reference: Path, got: Path) -> Cell:
+    """A, B, C and D alike: each within MATRIX_TOLERANCE of its largest entry (the
+    eigenvalues are no measure: a defective one, SSOpt's cell model's cluster at -1,
+    moves by the square root of A's rounding)."""
+    ours, theirs = linear_matrices(reference), linear_matrices(got)
+    if set(ours) != set(theirs) or not ours:
+        return Cell("DIFF", f"matrices {sorted(theirs)}, not {sorted(ours)}")
+    worst = 0.0
+    for name, (rows, cols, a) in ours.items():
+        rows_b, cols_b, b = theirs[name]
+        if (rows, cols) != (rows_b, cols_b):
+            return Cell("DIFF", f"{name}: other rows or columns")
+        if a.size:
+            worst = max(worst, float(np.max(np.abs(a - b))) / max(1.0, float(np.max(np.abs(a)))))
+    if not worst <= MATRIX_TOLERANCE:
+        return Cell("DIFF", f"A, B, C, D differ by {worst:.3g} of their largest entry")
     return Cell("~" if worst else "=", f"{worst:.1g}" if worst else "")
 
 

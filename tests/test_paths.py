@@ -71,17 +71,26 @@ def test_rates_within_the_tolerance_and_beyond_it():
     assert paths.compare_rates(reference, broken).mark == "DIFF"
 
 
-def test_eigenvalues_within_the_tolerance_and_beyond_it():
-    header = "real,imaginary,frequency_hz,damping_ratio,note\n"
-    reference = header + "-0.5,-2.0,0.3,0.2,\n-0.5,2.0,0.3,0.2,\n0,0,0,,\n"
-    # a conjugate pair whose real parts part by an ulp sorts in the other order
-    near = header + "0,0,0,,\n-0.5000000000000001,2.0,0.3,0.2,\n-0.5,-2.0,0.3,0.2,\n"
-    assert paths.compare_eigenvalues(reference, reference).mark == "="
-    assert paths.compare_eigenvalues(reference, near).mark == "~"
-    far = header + "-0.5,-2.00001,0.3,0.2,\n-0.5,2.00001,0.3,0.2,\n0,0,0,,\n"
-    assert paths.compare_eigenvalues(reference, far).mark == "DIFF"
-    fewer = header + "-0.5,-2.0,0.3,0.2,\n-0.5,2.0,0.3,0.2,\n"
-    assert paths.compare_eigenvalues(reference, fewer).mark == "DIFF"
+def _linear(folder, a):
+    folder.mkdir()
+    (folder / "m-A.csv").write_text("A,Q,U\nQ,0,1\nU," + ",".join(map(repr, a)) + "\n")
+    (folder / "m-B.csv").write_text("B\nQ\nU\n")
+    return folder
+
+
+def test_linearizations_within_the_tolerance_and_beyond_it(tmp_path):
+    reference = _linear(tmp_path / "dual", [-4905.0, -0.25])
+    assert paths.compare_matrices(reference, reference).mark == "="
+    # rounding amplified by cancellation: far from an ulp, well inside the tolerance
+    near = _linear(tmp_path / "near", [-4905.0 * (1 + 1e-12), -0.25 + 1e-9])
+    assert paths.compare_matrices(reference, near).mark == "~"
+    far = _linear(tmp_path / "far", [-4905.0, -0.25 + 1e-4])
+    assert paths.compare_matrices(reference, far).mark == "DIFF"
+    other = tmp_path / "other"
+    other.mkdir()
+    (other / "m-A.csv").write_text("A,U,Q\nU,1,0\nQ,-4905.0,-0.25\n")
+    (other / "m-B.csv").write_text("B\nQ\nU\n")
+    assert paths.compare_matrices(reference, other).mark == "DIFF"
 
 
 def test_a_stale_answer_is_a_difference(tmp_path):
