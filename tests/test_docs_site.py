@@ -23,7 +23,8 @@ def test_the_site_builds_without_a_warning(tmp_path):
                           capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     front = (tmp_path / "html" / "index.html").read_text()
-    for page in ("tutorials/migrating.html", "tutorials/toolchain.html", "api.html",
+    for page in ("tutorials/migrating.html", "tutorials/toolchain.html",
+                 "tutorials/trajectory.html", "api.html",
                  "language.html", "architecture.html"):
         assert page in front, page
     api = (tmp_path / "html" / "api.html").read_text()
@@ -37,3 +38,9 @@ def test_the_tutorials_run_in_order(tmp_path, monkeypatch):
         pytest.skip("the toolchain tutorial compiles a C program: no cc here")
     ran = run_page(DOCS / "tutorials" / "toolchain.md", tmp_path, monkeypatch)
     assert ran["console"] == 1 and ran["python"] == 1 and ran["sh"] == 1
+
+
+def test_the_trajectory_tutorial_solves_the_swing_up(tmp_path, monkeypatch):
+    pytest.importorskip("casadi", reason="the tutorial hands the model to CasADi (an extra)")
+    ran = run_page(DOCS / "tutorials" / "trajectory.md", tmp_path, monkeypatch)
+    assert ran["python"] == 4
