@@ -190,3 +190,22 @@ def test_the_casadi_form_is_the_same_equations_and_derivatives(model):
         scale = max(1.0, np.abs(ours.dense(block)).max(initial=0.0))
         assert np.allclose(np.array(theirs), ours.dense(block)[0], rtol=0,
                            atol=1e-12 * scale), block
+
+
+def test_a_parameter_named_as_a_control_varies_from_node_to_node():
+    model = autolev.load(EXAMPLES / "block_pendulums.al")
+    fixed = model.dynamics()
+    k = fixed.parameters.index("K")
+    varying = model.dynamics(controls=["F", "TQ", "K"])
+    assert varying.controls == ["F", "TQ", "K"] and "K" not in varying.parameters
+    rng = np.random.default_rng(13)
+    x, u = rng.normal(size=(3, len(fixed.states))), rng.normal(size=(3, 2))
+    with_k = np.column_stack([u, np.full(3, fixed.parameter_values[k])])
+    assert np.allclose(varying.explicit(x, with_k), fixed.explicit(x, u), rtol=1e-14)
+    # d/dK as a control is d/dK as a parameter
+    assert np.allclose(varying.explicit_jacobians(x, with_k).dense("u")[:, :, 2],
+                       fixed.explicit_jacobians(x, u).dense("p")[:, :, k], rtol=1e-14)
+    other = with_k.copy()
+    other[1, 2] *= 2                                   # another K at the second node only
+    moved = varying.explicit(x, other) != varying.explicit(x, with_k)
+    assert not moved[0].any() and moved[1].any() and not moved[2].any()

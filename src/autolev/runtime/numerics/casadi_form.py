@@ -13,7 +13,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .. import symbols as S
 from . import codegen
 from ..printer import CasadiPrinter
 
@@ -35,31 +34,32 @@ class CasadiDynamics:
     source: str             # the printed program that built them (Python on casadi)
 
 
-def casadi_dynamics(system, controls: list, names: dict) -> CasadiDynamics:
-    """The CasADi form of a numeric system's equations (see the module's text);
-    `controls`: the specified quantities that are u (the others are 0); `names`:
-    {"states", "controls", "parameters"}: display names, and "values": p's."""
+def casadi_dynamics(system, given: dict, control_positions: list,
+                    names: dict) -> CasadiDynamics:
+    """The CasADi form of a numeric system's equations (see the module's text): `given`,
+    the program's inputs {"t", "x", "p", "s"} (Dynamics._given); `control_positions`:
+    where in "s" the controls are (the rest is 0); `names`: {"states", "controls",
+    "parameters"}: display names, and "values": p's."""
     try:
         import casadi as ca
     except ImportError:
         raise ModuleNotFoundError("the CasADi form needs casadi: pip install "
                                   "'autolev[casadi]'") from None
     nx, n = system.nstate, len(system.implicit_unknowns)
-    given = {"t": [S.TIME], "x": system.states, "p": system.params, "s": system.specified}
     program = codegen.Program(given, list(system.rhs_exprs), system.defs,
                               dict(system.aux_fixed)).build(factored=False)
     source = codegen.python_source(program, "autolev_casadi", printer=CasadiPrinter)
     namespace = {"ca": ca, "math": math}
     exec(compile(source, "<autolev casadi>", "exec"), namespace)
     x, xdot = ca.SX.sym("x", nx), ca.SX.sym("xdot", nx)
-    u, p, t = ca.SX.sym("u", len(controls)), ca.SX.sym("p", len(system.params)), \
-        ca.SX.sym("t")
-    specified = [0.0] * len(system.specified)
-    for k, sym in enumerate(controls):
-        specified[system.specified.index(sym)] = u[k]
+    u, p, t = (ca.SX.sym("u", len(control_positions)), ca.SX.sym("p", len(given["p"])),
+               ca.SX.sym("t"))
+    inputs = [0.0] * len(given["s"])
+    for k, position in enumerate(control_positions):
+        inputs[position] = u[k]
     out = [None] * len(system.rhs_exprs)
     namespace["autolev_casadi"]([t], [x[i] for i in range(nx)],
-                                [p[i] for i in range(len(system.params))], specified, out)
+                                [p[i] for i in range(len(given["p"]))], inputs, out)
     dynamic = list(system.unknown_positions)
     mass = ca.SX(n, n)
     for k in range(n * n):
@@ -73,9 +73,8 @@ def casadi_dynamics(system, controls: list, names: dict) -> CasadiDynamics:
         for k, i in enumerate(dynamic):
             rates[i] = accelerations[k]
             rows[i] = moved[k]
-    states, control_names = names["states"], names["controls"]
     f = ca.Function("f", [x, u, p, t], [ca.vertcat(*rates)], ["x", "u", "p", "t"], ["xdot"])
     residual = ca.Function("residual", [x, xdot, u, p, t], [ca.vertcat(*rows)],
                            ["x", "xdot", "u", "p", "t"], ["r"])
-    return CasadiDynamics(f, residual, states, control_names, names["parameters"],
-                          list(names["values"]), source)
+    return CasadiDynamics(f, residual, names["states"], names["controls"],
+                          names["parameters"], list(names["values"]), source)

@@ -82,46 +82,55 @@ class Dynamics:
         self._system = system
         self._control_symbols = list(controls)
         self._definitions = definitions      # () -> the command's view of the definitions
+        # the program's inputs besides t and x: the parameters left, and the specified
+        # quantities with the parameters made controls (the rest of them 0)
+        self._parameter_symbols = [p for p in system.params if p not in set(controls)]
+        self._input_symbols = list(system.specified) + [
+            c for c in controls if c not in set(system.specified)]
         self.states = [display_name(x) for x in system.states]
         self.controls = [display_name(u) for u in controls]
-        self.parameters = [display_name(p) for p in system.params]
+        self.parameters = [display_name(p) for p in self._parameter_symbols]
         self.parameter_values = np.array(parameter_values, dtype=float)
-        self._control_positions = [system.specified.index(u) for u in controls]
-        self._others = np.zeros(len(system.specified))     # specified that are no controls
+        self._control_positions = [self._input_symbols.index(u) for u in controls]
         nx, nu, n = system.nstate, len(controls), len(system.implicit_unknowns)
-        self._sizes = (nx, nu, len(system.params), n)
+        self._sizes = (nx, nu, len(self._parameter_symbols), n)
         self._dynamic = np.array(system.unknown_positions, dtype=int)
         self._kinematic = np.array([i for i in range(nx) if i not in set(system.unknown_positions)],
                                    dtype=int)
         with SlowStep(progress, f"{what}: forming and compiling its Jacobians"):
-            self._function, self._entries = self._compiled(system, controls, backend)
+            self._function, self._entries = self._compiled(backend)
         self.backend = self._function.backend
         self._patterns = self._residual_patterns()
+
+    def _given(self) -> dict:
+        """The program's inputs: time, state, parameters, specified quantities."""
+        return {"t": [S.TIME], "x": self._system.states, "p": self._parameter_symbols,
+                "s": self._input_symbols}
 
     def casadi(self):
         """The same equations as CasADi functions, for CasADi's own derivatives and
         solvers (needs casadi): a casadi_form.CasadiDynamics."""
         from .casadi_form import casadi_dynamics
         with self._definitions():
-            return casadi_dynamics(self._system, self._control_symbols, {
+            return casadi_dynamics(self._system, self._given(), self._control_positions, {
                 "states": self.states, "controls": self.controls,
                 "parameters": self.parameters, "values": self.parameter_values})
 
     # -- forming ------------------------------------------------------------------------
-    @staticmethod
-    def _compiled(system, controls: list, backend: str):
+    def _compiled(self, backend: str):
         """One program: the right-hand side (rates, M, F), then its Jacobian's structural
-        nonzeros in (x, u, p), whose places are `entries` (row, column)."""
+        nonzeros in (x, u, p), whose places are `entries` (row, column).  The constants'
+        definitions are in it (they depend on p, which varies)."""
+        system = self._system
         defs = system.defs
-        variables = list(system.states) + list(controls) + list(system.params)
+        variables = (list(system.states) + self._control_symbols
+                     + self._parameter_symbols)
         rhs = list(system.rhs_exprs)
         jacobian = defs.jacobian(rhs, variables)
         entries = [(i, j) for i, row in enumerate(jacobian) for j, d in enumerate(row)
                    if d != 0]
-        given = {"t": [S.TIME], "x": system.states,
-                 "c": system.params + system.constant_defs, "s": system.specified}
-        program = codegen.Program(given, rhs + [jacobian[i][j] for i, j in entries], defs,
-                                  dict(system.aux_fixed)).build()
+        program = codegen.Program(self._given(), rhs + [jacobian[i][j] for i, j in entries],
+                                  defs, dict(system.aux_fixed)).build()
         return (compile_program(program, backend, "autolev_dynamics"),
                 np.array(entries, dtype=int).reshape(-1, 2))
 
@@ -171,21 +180,19 @@ class Dynamics:
     def _evaluated(self, x, u, p, t) -> tuple[np.ndarray, np.ndarray]:
         """(right-hand side values: N x (nx + n^2 + n), dense Jacobian: N x rows x (x, u,
         p)) at every node."""
-        system, (nx, nu, npar, n) = self._system, self._sizes
+        nx, nu, npar, n = self._sizes
         p = self.parameter_values if p is None else np.asarray(p, dtype=float)
         if p.shape != (npar,):
             raise ValueError(f"p: {npar} parameters ({', '.join(self.parameters)}), "
                              f"not {p.shape}")
-        system.set_parameters(p)
-        constants = system.constant_values
         n_rhs, count = nx + n * n + n, x.shape[0]
         out = np.empty(n_rhs + len(self._entries))
         values = np.empty((count, n_rhs))
         jac = np.zeros((count, n_rhs, nx + nu + npar))
-        specified = self._others.copy()
+        inputs = np.zeros(len(self._input_symbols))
         for k in range(count):
-            specified[self._control_positions] = u[k]
-            self._function.call(t[k:k + 1], x[k], constants, specified, out)
+            inputs[self._control_positions] = u[k]
+            self._function.call(t[k:k + 1], x[k], p, inputs, out)
             values[k] = out[:n_rhs]
             jac[k, self._entries[:, 0], self._entries[:, 1]] = out[n_rhs:]
         return values, jac
@@ -279,11 +286,12 @@ def _solved(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
 def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: str = "auto",
              infile=None, overrides=None, missing_values: str = "refuse",
              progress=None) -> Dynamics:
-    """The snapshot's command's Dynamics.  `controls`: names of the specified quantities
-    that are the controls u (default: every one the program reads without a
-    definition); `specified`: {name: number or sympy expression} for the others (the
-    rest are 0).  The parameters' values come from INPUT, `infile` and `overrides`
-    ({name: value} in the quantities' own units), as a run takes them."""
+    """The snapshot's command's Dynamics.  `controls`: names of the controls u: specified
+    quantities the program reads without a definition (default: all of those) or
+    parameters, which then vary from node to node; `specified`: {name: number or sympy
+    expression} for the specified quantities that are no controls (the rest are 0).
+    The parameters' values come from INPUT, `infile` and `overrides` ({name: value} in
+    the quantities' own units), as a run takes them."""
     command, functions, overrides = given_specified(snapshot, snapshot.command, specified,
                                                     overrides)
     if functions:
@@ -302,21 +310,25 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
 
     def definitions():
         return snapshot.definitions.as_of(program.definitions)
+    values = prepared.inputs.vector([p for p in system.params if p not in set(chosen)])
     with definitions():
-        return Dynamics(system, chosen, prepared.inputs.vector(system.params), backend,
-                        definitions, progress, f"CODE DYNAMICS {command.filename}")
+        return Dynamics(system, chosen, values, backend, definitions, progress,
+                        f"CODE DYNAMICS {command.filename}")
 
 
 def _controls(system, names) -> list:
+    """The controls named: specified quantities, or parameters (constants, variables
+    without a derivative) to vary from node to node."""
     if names is None:
         return list(system.specified)
-    by_name = {display_name(s).upper(): s for s in system.specified}
+    by_name = {display_name(s).upper(): s for s in list(system.specified) + system.params}
     chosen = []
     for name in names:
         sym = by_name.get(str(name).upper())
         if sym is None:
             known = ", ".join(display_name(s) for s in system.specified) or "none"
-            raise AutolevModelError(f"controls: {name!r} is not a specified quantity the "
-                                    f"program reads without a definition (those: {known})")
+            raise AutolevModelError(
+                f"controls: {name!r} is not a specified quantity or a parameter the "
+                f"program reads (its specified quantities: {known})")
         chosen.append(sym)
     return chosen
