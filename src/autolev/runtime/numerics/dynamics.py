@@ -98,8 +98,8 @@ class Dynamics:
         self._kinematic = np.array([i for i in range(nx) if i not in set(system.unknown_positions)],
                                    dtype=int)
         with SlowStep(progress, f"{what}: forming and compiling its Jacobians"):
-            self._function, self._entries = self._compiled(backend)
-        self.backend = self._function.backend
+            self._values, self._with_jacobian, self._entries = self._compiled(backend)
+        self.backend = self._with_jacobian.backend
         self._patterns = self._residual_patterns()
 
     def _given(self) -> dict:
@@ -118,9 +118,9 @@ class Dynamics:
 
     # -- forming ------------------------------------------------------------------------
     def _compiled(self, backend: str):
-        """One program: the right-hand side (rates, M, F), then its Jacobian's structural
-        nonzeros in (x, u, p), whose places are `entries` (row, column).  The constants'
-        definitions are in it (they depend on p, which varies)."""
+        """Two programs: the right-hand side (rates, M, F); the same, then its Jacobian's
+        structural nonzeros in (x, u, p), whose places are `entries` (row, column).  The
+        constants' definitions are in them (they depend on p, which varies)."""
         system = self._system
         defs = system.defs
         variables = (list(system.states) + self._control_symbols
@@ -129,9 +129,12 @@ class Dynamics:
         jacobian = defs.jacobian(rhs, variables)
         entries = [(i, j) for i, row in enumerate(jacobian) for j, d in enumerate(row)
                    if d != 0]
-        program = codegen.Program(self._given(), rhs + [jacobian[i][j] for i, j in entries],
-                                  defs, dict(system.aux_fixed)).build()
-        return (compile_program(program, backend, "autolev_dynamics"),
+        fixed = dict(system.aux_fixed)
+        values = codegen.Program(self._given(), rhs, defs, fixed).build()
+        with_jacobian = codegen.Program(
+            self._given(), rhs + [jacobian[i][j] for i, j in entries], defs, fixed).build()
+        return (compile_program(values, backend, "autolev_dynamics"),
+                compile_program(with_jacobian, backend, "autolev_dynamics_jacobian"),
                 np.array(entries, dtype=int).reshape(-1, 2))
 
     def _residual_patterns(self) -> dict:
@@ -177,25 +180,31 @@ class Dynamics:
             xdot = np.asarray(xdot, dtype=float).reshape(count, nx)
         return x, u, t, xdot
 
-    def _evaluated(self, x, u, p, t) -> tuple[np.ndarray, np.ndarray]:
+    def _evaluated(self, x, u, p, t, jacobian: bool = True):
         """(right-hand side values: N x (nx + n^2 + n), dense Jacobian: N x rows x (x, u,
-        p)) at every node."""
+        p), or None without `jacobian`) at every node."""
         nx, nu, npar, n = self._sizes
         p = self.parameter_values if p is None else np.asarray(p, dtype=float)
         if p.shape != (npar,):
             raise ValueError(f"p: {npar} parameters ({', '.join(self.parameters)}), "
                              f"not {p.shape}")
         n_rhs, count = nx + n * n + n, x.shape[0]
-        out = np.empty(n_rhs + len(self._entries))
-        values = np.empty((count, n_rhs))
+        inputs = np.zeros((count, len(self._input_symbols)))
+        inputs[:, self._control_positions] = u
+        function = self._with_jacobian if jacobian else self._values
+        out = np.empty((count, n_rhs + (len(self._entries) if jacobian else 0)))
+        if self.backend == "c":             # every node in one call of the C
+            function.call.rows([np.ascontiguousarray(t).reshape(count, 1),
+                                np.ascontiguousarray(x), p, inputs],
+                               [True, True, False, True], out)
+        else:
+            for k in range(count):
+                function.call(t[k:k + 1], x[k], p, inputs[k], out[k])
+        if not jacobian:
+            return out, None
         jac = np.zeros((count, n_rhs, nx + nu + npar))
-        inputs = np.zeros(len(self._input_symbols))
-        for k in range(count):
-            inputs[self._control_positions] = u[k]
-            self._function.call(t[k:k + 1], x[k], p, inputs, out)
-            values[k] = out[:n_rhs]
-            jac[k, self._entries[:, 0], self._entries[:, 1]] = out[n_rhs:]
-        return values, jac
+        jac[:, self._entries[:, 0], self._entries[:, 1]] = out[:, n_rhs:]
+        return out[:, :n_rhs], jac
 
     def _mass_and_forcing(self, values):
         nx, _, _, n = self._sizes
@@ -205,7 +214,7 @@ class Dynamics:
     def explicit(self, x, u=None, p=None, t=0.0) -> np.ndarray:
         """x' = f(x, u, p, t) at every node (N x nx)."""
         x, u, t, _ = self._nodes(x, u, t)
-        values, _ = self._evaluated(x, u, p, t)
+        values, _ = self._evaluated(x, u, p, t, jacobian=False)
         return self._rates(values)[0]
 
     def _rates(self, values):
@@ -221,7 +230,7 @@ class Dynamics:
     def residual(self, x, xdot, u=None, p=None, t=0.0) -> np.ndarray:
         """r(x, x', u, p, t) at every node (N x nx): 0 on the motion."""
         x, u, t, xdot = self._nodes(x, u, t, xdot)
-        values, _ = self._evaluated(x, u, p, t)
+        values, _ = self._evaluated(x, u, p, t, jacobian=False)
         return self._residual(values, xdot)
 
     def _residual(self, values, xdot):
