@@ -1,0 +1,142 @@
+"""What trajectory optimization pays for a model's dynamics and their derivatives
+(Model.dynamics): per collocation node, the explicit f and the implicit residual r
+alone, their sparse Jacobians, and the ratio of a Jacobian to its function; with the
+time to form and compile them.
+
+    python bench/collocation.py [--nodes N] [--chains 8,32] [--corpus DIR] [--only TEXT]
+
+Models: the shipped examples, planar n-link chains (bench/chains.py) and, when the
+corpus is there, gait2de (csu-hmc/gait2d: the joint moments mom4..mom9 as controls,
+its parameters set to 1 where it gives none).  Every node's numbers come from one call
+(C where there is a compiler); each time is the best of five repeats, in one run.
+With Pinocchio installed (`pip install 'autolev[bench]'`), the planar chains' ABA
+derivatives (pinocchio.computeABADerivatives, a C++ loop over the same nodes through
+its Python binding) are timed beside ours.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "src"))
+sys.path.insert(0, str(ROOT / "bench"))
+
+import autolev  # noqa: E402
+import chains  # noqa: E402
+
+CORPUS = Path(os.environ.get("AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus"))
+GAIT2DE = "csu-hmc+gait2d/algait2de/gait2de.al"
+
+
+def best_of(repeats: int, run) -> float:
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        run()
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def measured(name: str, model, nodes: int, controls=None, parameters=None) -> dict:
+    start = time.perf_counter()
+    dyn = model.dynamics(controls=controls, missing_values="zero")
+    formed = time.perf_counter() - start
+    rng = np.random.default_rng(0)
+    x = 0.3 * rng.normal(size=(nodes, len(dyn.states)))
+    u = rng.normal(size=(nodes, len(dyn.controls)))
+    p = dyn.parameter_values if parameters is None else parameters(dyn)
+    t = np.linspace(0.0, 1.0, nodes)
+    xdot = dyn.explicit(x, u, p, t)
+    per_node = {
+        "f": best_of(5, lambda: dyn.explicit(x, u, p, t)) / nodes,
+        "df": best_of(5, lambda: dyn.explicit_jacobians(x, u, p, t)) / nodes,
+        "r": best_of(5, lambda: dyn.residual(x, xdot, u, p, t)) / nodes,
+        "dr": best_of(5, lambda: dyn.residual_jacobians(x, xdot, u, p, t)) / nodes,
+    }
+    nnz = sum(pat.nnz for pat in dyn.residual_jacobians(x[:1], xdot[:1], u[:1], p,
+                                                        t[:1]).patterns.values())
+    return {"model": name, "states": len(dyn.states), "controls": len(dyn.controls),
+            "nnz": nnz, "formed": formed, "backend": dyn.backend, **per_node,
+            "dynamics": dyn, "x": x}
+
+
+def pinocchio_planar(n: int, nodes: int, x: np.ndarray) -> float | None:
+    """Seconds per node of computeABADerivatives on the planar n-link chain, or None
+    without Pinocchio."""
+    try:
+        import pinocchio as pin
+    except ImportError:
+        return None
+    model = pin.Model()
+    parent = 0
+    for i in range(n):
+        placement = pin.SE3(np.eye(3), np.array([0.5 if i else 0.0, 0.0, 0.0]))
+        parent = model.addJoint(parent, pin.JointModelRZ(), placement, f"joint{i}")
+        inertia = pin.Inertia(1.0, np.array([0.25, 0.0, 0.0]),
+                              np.diag([0.0, 1.0 / 48, 1.0 / 48]))
+        model.appendBodyToJoint(parent, inertia, pin.SE3.Identity())
+    data = model.createData()
+    q, v = x[:, :n], x[:, n:]
+    tau = np.zeros(n)
+
+    def run():
+        for k in range(nodes):
+            pin.computeABADerivatives(model, data, q[k], v[k], tau)
+    return best_of(5, run) / nodes
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--nodes", type=int, default=500)
+    ap.add_argument("--chains", default="8,32")
+    ap.add_argument("--corpus", type=Path, default=CORPUS)
+    ap.add_argument("--only", default="")
+    ns = ap.parse_args()
+    warnings.simplefilter("ignore")
+    rows = []
+    folder = Path(tempfile.mkdtemp(prefix="autolev-collocation-"))
+    cases = [(p.stem, lambda p=p: (autolev.load(p), None, None))
+             for p in sorted((ROOT / "autolev_examples").glob("*.al"))]
+    for n in (int(k) for k in ns.chains.split(",") if k):
+        path = folder / f"planar{n}.al"
+        path.write_text(chains.planar(n))
+        cases.append((f"planar{n}", lambda path=path: (autolev.load(path), None, None)))
+    gait = ns.corpus / GAIT2DE
+    if gait.exists():
+        cases.append(("gait2de", lambda: (autolev.load(gait),
+                                          [f"mom{k}" for k in range(4, 10)],
+                                          lambda dyn: np.ones(len(dyn.parameters)))))
+    for name, make in cases:
+        if ns.only and ns.only not in name:
+            continue
+        model, controls, parameters = make()
+        row = measured(name, model, ns.nodes, controls, parameters)
+        if name.startswith("planar"):
+            row["pinocchio"] = pinocchio_planar(int(name[6:]), ns.nodes, row["x"])
+        rows.append(row)
+        us = {k: row[k] * 1e6 for k in ("f", "df", "r", "dr")}
+        anchor = row.get("pinocchio")
+        print(f"{name:22s} {row['states']:3d} states {row['controls']:2d} controls "
+              f"{row['nnz']:5d} nnz  formed {row['formed']:6.2f} s ({row['backend']})  "
+              f"f {us['f']:8.2f} us  df {us['df']:8.2f} us ({row['df'] / row['f']:5.2f}x)  "
+              f"r {us['r']:8.2f} us  dr {us['dr']:8.2f} us ({row['dr'] / row['r']:5.2f}x)"
+              + ("" if anchor is None else
+                 f"  pinocchio ABA derivatives {anchor * 1e6:8.2f} us "
+                 f"(ours {row['df'] / anchor:5.2f}x)"), flush=True)
+    if not any("pinocchio" in r for r in rows) or all(r.get("pinocchio") is None
+                                                     for r in rows if "pinocchio" in r):
+        print("(Pinocchio is not installed: no anchor; pip install 'autolev[bench]')")
+    print(f"per node, best of 5 over {ns.nodes} nodes in one call each")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
