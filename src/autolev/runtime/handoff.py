@@ -328,3 +328,44 @@ def _printed_times(run: dict, states: int) -> np.ndarray:
         raise AutolevModelError(str(exc)) from None
     check_memory(schedule.printed_rows(), states + 1)
     return np.concatenate([[run["TINITIAL"]]] + list(schedule.print_blocks()))
+
+
+@dataclass
+class OptyParts:
+    """What opty's direct collocation (opty.Problem) takes of a model, from
+    to_mechanics()'s KanesMethod: `equations_of_motion` (each 0 on the motion: the
+    kinematical equations, then M u' - F, in the states and their time derivatives),
+    `states` (the coordinates, then the speeds), `controls` (the specified quantities:
+    opty's unknown trajectories unless given), `parameters` ({constant: value}: opty's
+    known_parameter_map) and `time` (the time symbol)."""
+
+    equations_of_motion: sm.Matrix
+    states: list
+    controls: list
+    parameters: dict
+    time: object
+
+
+def to_opty(model, infile=None, overrides=None) -> OptyParts:
+    """The model's equations of motion as opty takes them (see OptyParts), with the
+    constants' values a run of its first CODE DYNAMICS takes.  A model with dependent
+    or auxiliary speeds is refused: opty integrates ordinary differential equations in
+    the state."""
+    import sympy.physics.mechanics as me
+
+    from .equations_of import equations_of
+    eqs = equations_of(model, model.command_to_linearize(), infile=infile,
+                      overrides=overrides)
+    h = handoff(model, set(eqs.states))
+    if h.dependent or h.auxiliary:
+        raise AutolevModelError("opty integrates ordinary differential equations in the "
+                                "state: this model has dependent or auxiliary speeds ("
+                                + ", ".join(str(u.func) for u in h.dependent + h.auxiliary)
+                                + ")")
+    time = me.dynamicsymbols._t
+    states = list(h.coordinates) + list(h.speeds)
+    rates = sm.Matrix([x.diff(time) for x in states])
+    kane = h.kane
+    equations = kane.mass_matrix_full * rates - kane.forcing_full
+    return OptyParts(equations, states, list(h.specified),
+                     {sm.Symbol(c.name): v for c, v in eqs.constants.items()}, time)

@@ -209,3 +209,28 @@ def test_a_parameter_named_as_a_control_varies_from_node_to_node():
     other[1, 2] *= 2                                   # another K at the second node only
     moved = varying.explicit(x, other) != varying.explicit(x, with_k)
     assert not moved[0].any() and moved[1].any() and not moved[2].any()
+
+
+@pytest.mark.parametrize("name", ["block_pendulums", "double_pendulum", "nlink_pendulum"])
+def test_the_opty_equations_hold_on_the_motion_of_the_dynamics(name):
+    # opty's form comes from sympy's own KanesMethod: a second derivation of the motion
+    model = autolev.load(EXAMPLES / f"{name}.al")
+    parts, dynamics = model.to_opty(), model.dynamics()
+    rng = np.random.default_rng(17)
+    x, u = 0.5 * rng.normal(size=len(dynamics.states)), rng.normal(size=len(dynamics.controls))
+    rates = dynamics.explicit(x, u)[0]
+    by_name = {str(s.func): s for s in parts.states + parts.controls}
+    point = {by_name[n]: v for n, v in zip(dynamics.states, x)}
+    point |= {by_name[n]: v for n, v in zip(dynamics.controls, u)}
+    point |= parts.parameters
+    derivatives = {by_name[n].diff(parts.time): v for n, v in zip(dynamics.states, rates)}
+    eom = parts.equations_of_motion
+    on_motion = np.array(eom.xreplace(derivatives).xreplace(point), dtype=float)
+    assert np.allclose(on_motion, 0, atol=1e-10 * max(1.0, np.abs(rates).max()))
+    off = {d: v + 0.1 for d, v in derivatives.items()}
+    assert np.abs(np.array(eom.xreplace(off).xreplace(point), dtype=float)).max() > 1e-3
+
+
+def test_opty_is_refused_a_model_with_dependent_speeds():
+    with pytest.raises(AutolevModelError, match="dependent or auxiliary speeds"):
+        autolev.load(EXAMPLES / "fourbar.al").to_opty()
