@@ -100,7 +100,7 @@ class Dynamics:
         with SlowStep(progress, f"{what}: forming and compiling its Jacobians"):
             self._values, self._with_jacobian, self._entries = self._compiled(backend)
         self.backend = self._with_jacobian.backend
-        self._patterns = self._residual_patterns()
+        self._patterns, self._explicit_patterns = self._sparsity()
 
     def _given(self) -> dict:
         """The program's inputs: time, state, parameters, specified quantities."""
@@ -137,9 +137,10 @@ class Dynamics:
                 compile_program(with_jacobian, backend, "autolev_dynamics_jacobian"),
                 np.array(entries, dtype=int).reshape(-1, 2))
 
-    def _residual_patterns(self) -> dict:
-        """The residual's patterns, from the right-hand side's: a kinematical row has its
-        rate's entries, a dynamical row those of its M row and F entry."""
+    def _sparsity(self) -> tuple[dict, dict]:
+        """The residual's patterns and f's, from the right-hand side's: a kinematical row
+        has its rate's entries, a dynamical row of r those of its M row and F entry, and
+        one of f those of every dynamical row (M^-1 mixes them)."""
         nx, nu, npar, n = self._sizes
         nw = nx + nu + npar
         rhs_mask = np.zeros((nx + n * n + n, nw), dtype=bool)
@@ -152,9 +153,9 @@ class Dynamics:
         for k, row in enumerate(self._dynamic):
             mask[row] = rhs_mask[nx + n * n + k] | rhs_mask[nx + k * n:nx + (k + 1) * n].any(0)
             xdot[row, self._dynamic] = mass[k]
-        self._explicit_mask = mask.copy()
-        self._explicit_mask[self._dynamic] = mask[self._dynamic].any(0)  # M^-1 mixes rows
-        return self._split(mask) | {"xdot": Pattern.of_mask(xdot)}
+        explicit = mask.copy()
+        explicit[self._dynamic] = mask[self._dynamic].any(0)
+        return self._split(mask) | {"xdot": Pattern.of_mask(xdot)}, self._split(explicit)
 
     def _mass_nonzero(self) -> np.ndarray:
         nx, _, _, n = self._sizes
@@ -273,7 +274,7 @@ class Dynamics:
             dforcing = jac[:, nx + n * n:nx + n * n + n]
             dense[:, self._dynamic] = _solved(
                 mass, dforcing - np.einsum("nkjw,nj->nkw", dmass, accelerations))
-        return self._sparse(dense, self._split(self._explicit_mask))
+        return self._sparse(dense, self._explicit_patterns)
 
     def _sparse(self, dense, patterns: dict, xdot=None) -> Jacobians:
         nx, nu, _, _ = self._sizes
