@@ -66,6 +66,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import csv
 import json
 import math
 import random
@@ -472,7 +473,8 @@ def linear_matrices(folder: Path) -> dict:
     linearize --out` wrote."""
     found = {}
     for path in sorted(folder.glob("*-[ABCD].csv")):
-        rows = [line.split(",") for line in path.read_text().splitlines()]
+        with path.open(newline="") as f:
+            rows = list(csv.reader(f))      # an output named X[1,2] is quoted
         found[path.stem[-1]] = (tuple(r[0] for r in rows[1:]), tuple(rows[0][1:]),
                                 np.array([[float(v) for v in r[1:]] for r in rows[1:]]))
     return found

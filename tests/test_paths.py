@@ -86,6 +86,9 @@ def test_linearizations_within_the_tolerance_and_beyond_it(tmp_path):
     assert paths.compare_matrices(reference, near).mark == "~"
     far = _linear(tmp_path / "far", [-4905.0, -0.25 + 1e-4])
     assert paths.compare_matrices(reference, far).mark == "DIFF"
+    matrix = _linear(tmp_path / "matrix", [-4905.0, -0.25])
+    (matrix / "m-C.csv").write_text('C,Q,U\n"X[1,2]",1,0\n')
+    assert paths.compare_matrices(matrix, matrix).mark == "="
     other = tmp_path / "other"
     other.mkdir()
     (other / "m-A.csv").write_text("A,U,Q\nU,1,0\nQ,-4905.0,-0.25\n")
