@@ -9,7 +9,7 @@ import sympy as sm
 
 import autolev
 from autolev.engine.errors import AutolevModelError
-from helpers import EXAMPLES
+from helpers import EXAMPLES, ROOT
 from helpers.models import PENDULUM
 
 
@@ -234,3 +234,35 @@ def test_the_opty_equations_hold_on_the_motion_of_the_dynamics(name):
 def test_opty_is_refused_a_model_with_dependent_speeds():
     with pytest.raises(AutolevModelError, match="dependent or auxiliary speeds"):
         autolev.load(EXAMPLES / "fourbar.al").to_opty()
+
+
+def test_a_planar_chains_jacobians_are_pinocchios_aba_derivatives(tmp_path):
+    # a third derivation: Pinocchio's analytical derivatives of its articulated-body
+    # algorithm, on the same chain built from its own joints and inertias
+    pin = pytest.importorskip("pinocchio", reason="Pinocchio is the bench extra's anchor")
+    import sys
+    sys.path.insert(0, str(ROOT / "bench"))
+    import chains
+    n = 5
+    path = tmp_path / "planar.al"
+    path.write_text(chains.planar(n))
+    dynamics = autolev.load(path).dynamics()
+    model = pin.Model()
+    model.gravity.linear = np.array([9.81, 0.0, 0.0])       # GRAVITY(G*N1>)
+    parent = 0
+    for i in range(n):              # links 0.5 m long, 1 kg, inertia m L^2 / 12 about z
+        placement = pin.SE3(np.eye(3), np.array([0.5 if i else 0.0, 0.0, 0.0]))
+        parent = model.addJoint(parent, pin.JointModelRZ(), placement, f"joint{i}")
+        model.appendBodyToJoint(parent, pin.Inertia(1.0, np.array([0.25, 0.0, 0.0]),
+                                                    np.diag([0.0, 1 / 48, 1 / 48])),
+                                pin.SE3.Identity())
+    data = model.createData()
+    rng = np.random.default_rng(19)
+    x = rng.normal(size=len(dynamics.states))
+    q = [dynamics.states.index(f"Q{i}") for i in range(1, n + 1)]
+    u = [dynamics.states.index(f"U{i}") for i in range(1, n + 1)]
+    pin.computeABADerivatives(model, data, x[q], x[u], np.zeros(n))
+    ours = dynamics.explicit_jacobians(x).dense("x")[0]
+    assert np.allclose(dynamics.explicit(x)[0][u], data.ddq, rtol=1e-12, atol=1e-12)
+    assert np.allclose(ours[np.ix_(u, q)], data.ddq_dq, rtol=1e-11, atol=1e-11)
+    assert np.allclose(ours[np.ix_(u, u)], data.ddq_dv, rtol=1e-11, atol=1e-11)
