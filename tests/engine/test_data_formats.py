@@ -147,3 +147,18 @@ def test_pictures_and_tables_of_an_earlier_run_do_not_linger(tmp_path, capsys):
     assert not {"double_pendulum.1.png", "double_pendulum.2.png",
                 "double_pendulum.csv"} & left
     assert {"notes.png", "double_pendulum.mat", "double_pendulum.1"} <= left
+
+
+def test_a_linearizations_csv_quotes_names_with_commas():
+    import csv
+    import io
+
+    from autolev.engine.linear import Linearization
+    lin = Linearization(A=np.array([[0.0, 1.0], [-2.0, -0.5]]), B=np.zeros((2, 0)),
+                        C=np.array([[1.0, 0.0]]), D=np.zeros((1, 0)), states=["Q", "U"],
+                        inputs=[], outputs=["X[1,2]"], point={}, rates=np.zeros(2),
+                        accelerations=np.zeros(1))
+    rows = list(csv.reader(io.StringIO(lin.matrix_csv("C"))))
+    assert rows == [["C", "Q", "U"], ["X[1,2]", "1", "0"]]
+    a = list(csv.reader(io.StringIO(lin.matrix_csv("A"))))
+    assert [float(v) for v in a[2][1:]] == [-2.0, -0.5]

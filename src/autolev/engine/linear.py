@@ -3,6 +3,8 @@
 is read back with this alone)."""
 from __future__ import annotations
 
+import csv
+import io
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -37,10 +39,11 @@ class Linearization:
         matrix = getattr(self, which)
         rows = self.outputs if which in "CD" else self.states
         columns = self.inputs if which in "BD" else self.states
-        lines = [",".join([which] + list(columns))]
-        lines += [",".join([name] + [f"{x:.17g}" for x in row])
-                  for name, row in zip(rows, matrix)]
-        return "\n".join(lines) + "\n"
+        text = io.StringIO()
+        writer = csv.writer(text, lineterminator="\n")    # quotes an output named X[1,2]
+        writer.writerow([which] + list(columns))
+        writer.writerows([name] + [f"{x:.17g}" for x in row] for name, row in zip(rows, matrix))
+        return text.getvalue()
 
     def mat_bytes(self) -> bytes:
         """A, B, C, D with the names of states, inputs and outputs and the operating
