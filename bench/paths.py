@@ -541,8 +541,9 @@ def _number_of(name: str) -> int:
 
 
 def _last(text: str) -> str:
+    """A command's last line, whole: a transient failure is known by it alone."""
     lines = [line for line in text.strip().splitlines() if line.strip()]
-    return lines[-1][:160] if lines else "(nothing said)"
+    return lines[-1][:1000] if lines else "(nothing said)"
 
 
 # -- inside the paths' processes ---------------------------------------------------------
