@@ -107,8 +107,9 @@ def linearize(snapshot: ModelSnapshot, operating_point=None, inputs=None,
         program = program_of(snapshot, command)
         with snapshot.definitions.as_of(program.definitions), SlowStep(
                 progress, f"CODE DYNAMICS {command.filename}: {step}"):
-            made = system.jacobians[kept_as] = _jacobian_functions(system, chosen,
-                                                                   n_columns, tier)
+            # a sweep's C that fails to compile warns and runs as Python (the same bits)
+            made = system.jacobians[kept_as] = _jacobian_functions(
+                system, chosen, n_columns, "auto" if tier == "c" and backend == "auto" else tier)
         snapshot.systems_changed()
         return made
     # once per system and tier: a sweep, and a later process, reuse them
