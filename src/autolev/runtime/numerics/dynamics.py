@@ -71,6 +71,18 @@ class Jacobians:
         return self.patterns[block].dense(self.values[block])
 
 
+@dataclass(frozen=True)
+class _Derivatives:
+    """A Dynamics' Jacobian program: the right-hand side, then the structural nonzeros
+    of its Jacobian at `entries` (row, column of (x, u, p)), with the sparsity of r's
+    and f's Jacobians."""
+
+    function: object
+    entries: np.ndarray
+    patterns: dict              # r's: "x", "u", "p", "xdot"
+    explicit_patterns: dict     # f's: "x", "u", "p"
+
+
 class Dynamics:
     """The compiled equations of motion of one CODE DYNAMICS, with exact Jacobians (see
     the module's text).  Arrays have one row per node: x (N x nx), x' (N x nx), u (N x
@@ -97,10 +109,15 @@ class Dynamics:
         self._dynamic = np.array(system.unknown_positions, dtype=int)
         self._kinematic = np.array([i for i in range(nx) if i not in set(system.unknown_positions)],
                                    dtype=int)
-        with SlowStep(progress, f"{what}: forming and compiling its Jacobians"):
-            self._values, self._with_jacobian, self._entries = self._compiled(backend)
-        self.backend = self._with_jacobian.backend
-        self._patterns, self._explicit_patterns = self._sparsity()
+        self._backend_asked = backend
+        self._jacobians_step = SlowStep(progress, f"{what}: forming and compiling its Jacobians")
+        with SlowStep(progress, f"{what}: compiling its equations"):
+            rhs = codegen.Program(self._given(), list(system.rhs_exprs), system.defs,
+                                  dict(system.aux_fixed)).build()
+            self._values = compile_program(rhs, backend, "autolev_dynamics")
+        self.backend = self._values.backend
+        # formed when a Jacobian is first asked for: f and r alone need none of it
+        self._derivatives: _Derivatives | None = None
 
     def _given(self) -> dict:
         """The program's inputs: time, state, parameters, specified quantities."""
@@ -117,34 +134,37 @@ class Dynamics:
                 "parameters": self.parameters, "values": self.parameter_values})
 
     # -- forming ------------------------------------------------------------------------
-    def _compiled(self, backend: str):
-        """Two programs: the right-hand side (rates, M, F); the same, then its Jacobian's
-        structural nonzeros in (x, u, p), whose places are `entries` (row, column).  The
-        constants' definitions are in them (they depend on p, which varies)."""
+    def _formed_derivatives(self) -> "_Derivatives":
+        """The right-hand side (rates, M, F) with its Jacobian's structural nonzeros in
+        (x, u, p), as one compiled program, and the sparsity it gives (once).  The
+        constants' definitions are in the programs (they depend on p, which varies)."""
+        if self._derivatives is not None:
+            return self._derivatives
         system = self._system
         defs = system.defs
-        variables = (list(system.states) + self._control_symbols
-                     + self._parameter_symbols)
-        rhs = list(system.rhs_exprs)
-        jacobian = defs.jacobian(rhs, variables)
-        entries = [(i, j) for i, row in enumerate(jacobian) for j, d in enumerate(row)
-                   if d != 0]
-        fixed = dict(system.aux_fixed)
-        values = codegen.Program(self._given(), rhs, defs, fixed).build()
-        with_jacobian = codegen.Program(
-            self._given(), rhs + [jacobian[i][j] for i, j in entries], defs, fixed).build()
-        return (compile_program(values, backend, "autolev_dynamics"),
-                compile_program(with_jacobian, backend, "autolev_dynamics_jacobian"),
-                np.array(entries, dtype=int).reshape(-1, 2))
+        with self._definitions(), self._jacobians_step:
+            variables = (list(system.states) + self._control_symbols
+                         + self._parameter_symbols)
+            rhs = list(system.rhs_exprs)
+            jacobian = defs.jacobian(rhs, variables)
+            entries = [(i, j) for i, row in enumerate(jacobian) for j, d in enumerate(row)
+                       if d != 0]
+            program = codegen.Program(self._given(), rhs + [jacobian[i][j] for i, j in entries],
+                                      defs, dict(system.aux_fixed)).build()
+            function = compile_program(program, self._backend_asked,
+                                       "autolev_dynamics_jacobian")
+        entries = np.array(entries, dtype=int).reshape(-1, 2)
+        self._derivatives = _Derivatives(function, entries, *self._sparsity(entries))
+        return self._derivatives
 
-    def _sparsity(self) -> tuple[dict, dict]:
-        """The residual's patterns and f's, from the right-hand side's: a kinematical row
-        has its rate's entries, a dynamical row of r those of its M row and F entry, and
-        one of f those of every dynamical row (M^-1 mixes them)."""
+    def _sparsity(self, entries: np.ndarray) -> tuple[dict, dict]:
+        """The residual's patterns and f's, from the right-hand side's `entries`: a
+        kinematical row has its rate's entries, a dynamical row of r those of its M row
+        and F entry, and one of f those of every dynamical row (M^-1 mixes them)."""
         nx, nu, npar, n = self._sizes
         nw = nx + nu + npar
         rhs_mask = np.zeros((nx + n * n + n, nw), dtype=bool)
-        rhs_mask[self._entries[:, 0], self._entries[:, 1]] = True
+        rhs_mask[entries[:, 0], entries[:, 1]] = True
         mask = np.zeros((nx, nw), dtype=bool)
         mask[self._kinematic] = rhs_mask[self._kinematic]
         xdot = np.zeros((nx, nx), dtype=bool)
@@ -192,8 +212,9 @@ class Dynamics:
         n_rhs, count = nx + n * n + n, x.shape[0]
         inputs = np.zeros((count, len(self._input_symbols)))
         inputs[:, self._control_positions] = u
-        function = self._with_jacobian if jacobian else self._values
-        out = np.empty((count, n_rhs + (len(self._entries) if jacobian else 0)))
+        derivatives = self._formed_derivatives() if jacobian else None
+        function = self._values if derivatives is None else derivatives.function
+        out = np.empty((count, n_rhs + (0 if derivatives is None else len(derivatives.entries))))
         if self.backend == "c":             # every node in one call of the C
             function.call.rows([np.ascontiguousarray(t).reshape(count, 1),
                                 np.ascontiguousarray(x), p, inputs],
@@ -201,15 +222,17 @@ class Dynamics:
         else:
             for k in range(count):
                 function.call(t[k:k + 1], x[k], p, inputs[k], out[k])
-        if not jacobian:
+        if derivatives is None:
             return out, None
         jac = np.zeros((count, n_rhs, nx + nu + npar))
-        jac[:, self._entries[:, 0], self._entries[:, 1]] = out[:, n_rhs:]
+        jac[:, derivatives.entries[:, 0], derivatives.entries[:, 1]] = out[:, n_rhs:]
         return out[:, :n_rhs], jac
 
     def _mass_and_forcing(self, values):
+        """M and F at every node, from the right-hand side's values, or (dM, dF) from its
+        dense Jacobian (one more axis: the variables)."""
         nx, _, _, n = self._sizes
-        return (values[:, nx:nx + n * n].reshape(-1, n, n),
+        return (values[:, nx:nx + n * n].reshape((-1, n, n) + values.shape[2:]),
                 values[:, nx + n * n:nx + n * n + n])
 
     def explicit(self, x, u=None, p=None, t=0.0) -> np.ndarray:
@@ -253,12 +276,11 @@ class Dynamics:
         ddot[:, self._kinematic, self._kinematic] = 1.0
         if n:
             mass, _ = self._mass_and_forcing(values)
-            dmass = jac[:, nx:nx + n * n].reshape(-1, n, n, jac.shape[2])
-            dforcing = jac[:, nx + n * n:nx + n * n + n]
+            dmass, dforcing = self._mass_and_forcing(jac)
             dense[:, self._dynamic] = (np.einsum("nkjw,nj->nkw", dmass, xdot[:, self._dynamic])
                                        - dforcing)
             ddot[:, self._dynamic[:, None], self._dynamic[None, :]] = mass
-        return self._sparse(dense, self._patterns, ddot)
+        return self._sparse(dense, self._formed_derivatives().patterns, ddot)
 
     def explicit_jacobians(self, x, u=None, p=None, t=0.0) -> Jacobians:
         """∂f/∂x, ∂f/∂u, ∂f/∂p at every node, sparse (see Jacobians): a speed's row is
@@ -268,13 +290,12 @@ class Dynamics:
         nx, _, _, n = self._sizes
         dense = jac[:, :nx].copy()
         if n:
-            mass, forcing = self._mass_and_forcing(values)
+            mass, _ = self._mass_and_forcing(values)
             _, accelerations = self._rates(values)
-            dmass = jac[:, nx:nx + n * n].reshape(-1, n, n, jac.shape[2])
-            dforcing = jac[:, nx + n * n:nx + n * n + n]
+            dmass, dforcing = self._mass_and_forcing(jac)
             dense[:, self._dynamic] = _solved(
                 mass, dforcing - np.einsum("nkjw,nj->nkw", dmass, accelerations))
-        return self._sparse(dense, self._explicit_patterns)
+        return self._sparse(dense, self._formed_derivatives().explicit_patterns)
 
     def _sparse(self, dense, patterns: dict, xdot=None) -> Jacobians:
         nx, nu, _, _ = self._sizes
