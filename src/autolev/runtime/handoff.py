@@ -301,13 +301,9 @@ def to_pydy(model, infile=None, overrides=None):
         raise ImportError("Model.to_pydy needs PyDy (pip install pydy)") from None
     import sympy.physics.mechanics as me
 
-    from .equations_of import equations_of
-    eqs = equations_of(model, model.command_to_linearize(), infile=infile,
-                      overrides=overrides)
-    h = handoff(model, set(eqs.states))
+    eqs, h, constants = _with_values(model, infile, overrides)
     run = eqs.integration
     times = _printed_times(run, len(eqs.states))
-    constants = {sm.Symbol(c.name): v for c, v in eqs.constants.items()}
     initial = {h.states[x]: v for x, v in eqs.initial.items() if x in h.states}
     at_start = constants | initial | {s: 0.0 for s in h.specified} | {
         me.dynamicsymbols._t: run["TINITIAL"]}
@@ -315,6 +311,16 @@ def to_pydy(model, infile=None, overrides=None):
     return System(h.motion(), constants=constants,
                   specifieds={s: 0.0 for s in h.specified} or None,
                   initial_conditions=initial, times=times)
+
+
+def _with_values(model, infile, overrides) -> tuple:
+    """(the equations of the command a run integrates, with its values; the Handoff of
+    its state; {constant as a plain symbol: value})."""
+    from .equations_of import equations_of
+    eqs = equations_of(model, model.command_to_linearize(), infile=infile,
+                      overrides=overrides)
+    return (eqs, handoff(model, set(eqs.states)),
+            {sm.Symbol(c.name): v for c, v in eqs.constants.items()})
 
 
 def _printed_times(run: dict, states: int) -> np.ndarray:
@@ -353,10 +359,7 @@ def to_opty(model, infile=None, overrides=None) -> OptyParts:
     the state."""
     import sympy.physics.mechanics as me
 
-    from .equations_of import equations_of
-    eqs = equations_of(model, model.command_to_linearize(), infile=infile,
-                      overrides=overrides)
-    h = handoff(model, set(eqs.states))
+    _, h, constants = _with_values(model, infile, overrides)
     if h.dependent or h.auxiliary:
         raise AutolevModelError("opty integrates ordinary differential equations in the "
                                 "state: this model has dependent or auxiliary speeds ("
@@ -367,5 +370,4 @@ def to_opty(model, infile=None, overrides=None) -> OptyParts:
     rates = sm.Matrix([x.diff(time) for x in states])
     kane = h.kane
     equations = kane.mass_matrix_full * rates - kane.forcing_full
-    return OptyParts(equations, states, list(h.specified),
-                     {sm.Symbol(c.name): v for c, v in eqs.constants.items()}, time)
+    return OptyParts(equations, states, list(h.specified), constants, time)
