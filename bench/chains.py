@@ -2,6 +2,7 @@
 
     planar(n)   n uniform links pinned end to end in a vertical plane, joint angles
                 (each link relative to the one before) and their rates as speeds
+                (planar_pinocchio(pin, n): the same chain as a Pinocchio model)
     chain3d(n)  n bodies joined by ball joints, each oriented relative to the one
                 before by body-fixed 1-2-3 angles, speeds the components of the
                 relative angular velocity in the child body (KINDIFFS)
@@ -44,6 +45,23 @@ def planar(n: int, tfinal: float = 10.0, integstp: float = 0.1) -> str:
               "OUTPUT T, " + ", ".join(f"Q{i}" for i in range(1, n + 1)),
               "CODE DYNAMICS() planar.c"]
     return "\n".join(lines) + "\n"
+
+
+def planar_pinocchio(pin, n: int):
+    """planar(n) as a Pinocchio model (`pin`: the pinocchio module): revolute joints about
+    z, links 0.5 m long of 1 kg with inertia m L^2 / 12 about their centre, gravity along
+    +x as planar's GRAVITY(G*N1>)."""
+    import numpy as np
+    model = pin.Model()
+    model.gravity.linear = np.array([9.81, 0.0, 0.0])
+    parent = 0
+    for i in range(n):
+        placement = pin.SE3(np.eye(3), np.array([0.5 if i else 0.0, 0.0, 0.0]))
+        parent = model.addJoint(parent, pin.JointModelRZ(), placement, f"joint{i}")
+        model.appendBodyToJoint(parent, pin.Inertia(1.0, np.array([0.25, 0.0, 0.0]),
+                                                    np.diag([0.0, 1 / 48, 1 / 48])),
+                                pin.SE3.Identity())
+    return model
 
 
 def chain3d(n: int, tfinal: float = 2.0, integstp: float = 0.1) -> str:

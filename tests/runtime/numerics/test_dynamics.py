@@ -247,15 +247,7 @@ def test_a_planar_chains_jacobians_are_pinocchios_aba_derivatives(tmp_path):
     path = tmp_path / "planar.al"
     path.write_text(chains.planar(n))
     dynamics = autolev.load(path).dynamics()
-    model = pin.Model()
-    model.gravity.linear = np.array([9.81, 0.0, 0.0])       # GRAVITY(G*N1>)
-    parent = 0
-    for i in range(n):              # links 0.5 m long, 1 kg, inertia m L^2 / 12 about z
-        placement = pin.SE3(np.eye(3), np.array([0.5 if i else 0.0, 0.0, 0.0]))
-        parent = model.addJoint(parent, pin.JointModelRZ(), placement, f"joint{i}")
-        model.appendBodyToJoint(parent, pin.Inertia(1.0, np.array([0.25, 0.0, 0.0]),
-                                                    np.diag([0.0, 1 / 48, 1 / 48])),
-                                pin.SE3.Identity())
+    model = chains.planar_pinocchio(pin, n)
     data = model.createData()
     rng = np.random.default_rng(19)
     x = rng.normal(size=len(dynamics.states))
