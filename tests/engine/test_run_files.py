@@ -47,11 +47,23 @@ def test_a_full_disk_mid_run_leaves_the_previous_files(model, tmp_path, monkeypa
     out = tmp_path / "out"
     before = first_run(model, out)
     written = []
+    real_write = files.OutputFiles.write
+
+    class NoRoom:                               # the disk, full from the fourth row on
+        def __init__(self, handle):
+            self.handle = handle
+
+        def write(self, text):
+            raise OSError(errno.ENOSPC, "No space left on device")
+
+        def close(self):
+            self.handle.close()
 
     def fills_up(self, k, values):
         written.append(values)
         if len(written) > 3:
-            raise OSError(errno.ENOSPC, "No space left on device")
+            self._handles[k] = NoRoom(self._handles[k])
+        real_write(self, k, values)
 
     def fills_up_rows(self, k, block):          # the compiled loop's rows, a block at once
         for values in block:
@@ -332,3 +344,26 @@ def test_the_inputs_of_an_autolev_matlab_program_are_read_by_in(tmp_path):
     assert np.allclose(result.outputs[0]["X"], 0.25 * np.cos(3 * result.t), atol=1e-6)
     written = (tmp_path / "out" / "spring.in").read_text()
     assert "| 9.0" in written and "| 0.25" in written
+
+
+@pytest.mark.skipif(__import__("autolev.engine.clibrary", fromlist=["compiler"]).compiler()
+                    is None, reason="no C compiler: nothing is compiled")
+@pytest.mark.parametrize("foreground", ["1", "0"])
+def test_a_compiler_that_cannot_start_is_a_python_run_not_a_disk_error(tmp_path, monkeypatch,
+                                                                       foreground):
+    # a loaded machine refuses gcc's fork (EAGAIN): the path table saw a warm run say
+    # "cannot write the output files" for it; the run's numbers are the Python tier's
+    from autolev.engine import clibrary
+    monkeypatch.setenv("AUTOLEV_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("AUTOLEV_FOREGROUND", foreground)
+    model = autolev.load(PENDULUM)
+    model.simulate(out_dir=tmp_path / "python", TFINAL=20, backend="python")
+
+    def no_fork(*args, **kw):
+        raise BlockingIOError(errno.EAGAIN, "Resource temporarily unavailable")
+    monkeypatch.setattr(clibrary.subprocess, "Popen", no_fork)
+    monkeypatch.setattr(clibrary.subprocess, "run", no_fork)
+    with pytest.warns(UserWarning, match="failed; using Python.*Resource temporarily"):
+        result = model.simulate(out_dir=tmp_path / "out", TFINAL=20, backend="auto")
+    assert snapshot(tmp_path / "out") == snapshot(tmp_path / "python")
+    assert result.ok

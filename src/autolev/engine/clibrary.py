@@ -11,6 +11,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -47,6 +48,16 @@ class CompileError(Exception):
     pass
 
 
+@contextmanager
+def _compiler_running():
+    """A compiler the system cannot start (no process left on a loaded machine, a full
+    temporary folder) as a failed compile: the caller's Python tier runs instead."""
+    try:
+        yield
+    except OSError as exc:
+        raise CompileError(f"the compiler could not run: {exc.strerror or exc}") from None
+
+
 def build_object(source: str, flags: tuple) -> bytes:
     """Compile C source to an object file, cached by the hash of source and flags:
     code that is the same for every model (the integration loop) is compiled once.
@@ -60,7 +71,7 @@ def build_object(source: str, flags: tuple) -> bytes:
     data = read_verified(obj)
     if data is not None:
         return data
-    with tempfile.TemporaryDirectory() as tmp:
+    with _compiler_running(), tempfile.TemporaryDirectory() as tmp:
         src = Path(tmp) / "shared.c"
         src.write_text(source)
         out = Path(tmp) / obj.name
@@ -92,7 +103,7 @@ def build_shared_library(source: str, flags: tuple | None = None,
     # `shared_source`: compiled once for all models (its own cached object), linked in
     # at -O3: compiled once, and its loops (the LU solve, the stages) gain from it
     shared_flags = tuple("-O3" if f.startswith("-O") else f for f in flags)
-    with tempfile.TemporaryDirectory() as tmp:
+    with _compiler_running(), tempfile.TemporaryDirectory() as tmp:
         shared = []
         if shared_source:
             shared.append(Path(tmp) / "shared.o")
@@ -125,8 +136,13 @@ def build_shared_library(source: str, flags: tuple | None = None,
 def c_function(source: str, name: str, n_in: int, n_work: int, extra_source: str = "",
                extra_flags: tuple = ()):
     """The callable of `compile_c` from its source (compiled, or found in the cache)."""
-    lib = ctypes.CDLL(str(build_shared_library(source, C_FLAGS + tuple(extra_flags),
-                                               shared_source=extra_source)))
+    path = build_shared_library(source, C_FLAGS + tuple(extra_flags),
+                                shared_source=extra_source)
+    try:
+        lib = ctypes.CDLL(str(path))
+    except OSError as exc:          # (its bytes are verified: the loader lacked memory)
+        raise CompileError(f"the compiled library {path.name} could not be loaded: "
+                           f"{exc}") from None
     fn = getattr(lib, name)
     fn.argtypes = [ctypes.c_void_p] * (n_in + 2)
     fn.restype = None

@@ -4,18 +4,16 @@ with this alone (run.py prepares them from the model).
 """
 from __future__ import annotations
 
-from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from .code_kinds import CodeKind
-from .errors import AutolevModelError
 from .algebraic import AlgebraicInputs, run_algebraic
 from .dynamics import run_dynamics
 from .files import (RunFiles, check_memory, check_room, dir_text, encoded_text,
-                    termination_cleans_up)
+                    termination_cleans_up, writing_into)
 from .integrators import Integrator
 from .options import RunOptions
 from .results import Result
@@ -80,19 +78,22 @@ def execute(execution: Execution, out_dir=None,
     folder = Path(out_dir)
     own_in = folder / f"{stem}.in"
     with termination_cleans_up():
-        with _writing(folder):
+        with writing_into(folder):
             run_files = RunFiles(folder, stem, options.overwrite)
         writes_in = options.infile is None or \
             Path(options.infile).resolve() != own_in.resolve()
         try:
-            with _writing(folder):
+            with writing_into(folder):
                 check_room(folder, e.rows_expected, [len(labels) for labels, _ in e.columns])
                 run_files.claim([own_in.name] * writes_in + [f"{stem}.dir", f"{stem}.encode"]
                                 + [f"{stem}.{k}" for k in range(1, len(e.columns) + 1)])
                 if writes_in:
                     run_files.text(own_in.name, e.in_text)
                 writer = run_files.tables(e.columns)
-                perform(writer)          # rows are written as they come (a full disk, too)
+            # the computing is outside: its own OSError (a compiler the machine cannot
+            # start) is not the folder's; the writer says its own failures as the folder's
+            perform(writer)
+            with writing_into(folder):
                 extra_files = []
                 if e.encoded:
                     run_files.text(f"{stem}.encode",
@@ -109,16 +110,3 @@ def execute(execution: Execution, out_dir=None,
         finally:
             run_files.release()
     return result
-
-
-@contextmanager
-def _writing(folder: Path):
-    """A failure of the disk (a read-only or full folder, a file where the folder
-    should be) as one message naming the place, not a traceback."""
-    try:
-        yield
-    except OSError as exc:
-        # a rename names its target second: the file in the way, not the temporary
-        where = exc.filename2 or exc.filename or folder
-        raise AutolevModelError(f"cannot write the output files into {folder}: "
-                                f"{exc.strerror or exc} ({where})") from None

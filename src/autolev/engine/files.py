@@ -137,28 +137,46 @@ def _size(count: float) -> str:
         count /= 1000
 
 
+@contextmanager
+def writing_into(folder: Path):
+    """A failure of the disk (a read-only or full folder, a file where the folder
+    should be) as one message naming the place, not a traceback."""
+    try:
+        yield
+    except OSError as exc:
+        # a rename names its target second: the file in the way, not the temporary
+        where = exc.filename2 or exc.filename or folder
+        raise AutolevModelError(f"cannot write the output files into {folder}: "
+                                f"{exc.strerror or exc} ({where})") from None
+
+
 class OutputFiles:
     """The tables `NAME.1 ... NAME.k` of one run, written row by row into temporaries
     that `RunFiles` renames with the run's other files."""
 
     def __init__(self, run: "RunFiles", files: list[tuple[list, list]]):
+        self.folder = run.folder
         self.paths = [run.folder / f"{run.stem}.{k}" for k in range(1, len(files) + 1)]
         self._handles = [run.open(path) for path in self.paths]
         for h, path, (labels, units) in zip(self._handles, self.paths, files):
             h.write(header(path.name, labels, units))
 
     def write(self, k: int, values) -> None:
-        self._handles[k].write(row(values))
+        with writing_into(self.folder):
+            self._handles[k].write(row(values))
 
     def write_rows(self, k: int, block) -> None:
         """Rows of file k at once (a numpy array: print times x columns)."""
         from .rowtext import rows_text  # numpy and ctypes: only a run writes rows
-        self._handles[k].write(rows_text(block))
+        text = rows_text(block)
+        with writing_into(self.folder):
+            self._handles[k].write(text)
 
     def note(self, text: str) -> None:
         """A message line in every file (Autolev wrote integration failures there)."""
-        for h in self._handles:
-            h.write(f"% {text}\n")
+        with writing_into(self.folder):
+            for h in self._handles:
+                h.write(f"% {text}\n")
 
 
 # the suffix of a run's temporaries: hidden, and recognisable as stale after a crash
