@@ -211,6 +211,21 @@ def test_a_parameter_named_as_a_control_varies_from_node_to_node():
     assert not moved[0].any() and moved[1].any() and not moved[2].any()
 
 
+def test_a_control_needs_no_value(tmp_path):
+    # gait2d declares its joint moments VARIABLES with no value, for the optimizer to
+    # choose: naming them controls is their value, node by node
+    path = tmp_path / "moment.al"
+    path.write_text(PENDULUM.replace("SPECIFIED TQ", "VARIABLES TQ"))
+    model = autolev.load(path)
+    with pytest.raises(AutolevModelError, match="TQ"):
+        model.dynamics()
+    dynamics = model.dynamics(controls=["TQ"])
+    g, L, m = 9.81, 2.0, 3.0
+    assert dynamics.controls == ["TQ"] and "TQ" not in dynamics.parameters
+    assert np.allclose(dynamics.explicit([0.3, -0.2], [0.7]),
+                       [[-0.2, (0.7 - m * g * L * math.sin(0.3)) / (m * L ** 2)]], rtol=1e-14)
+
+
 @pytest.mark.parametrize("name", ["block_pendulums", "double_pendulum", "nlink_pendulum"])
 def test_the_opty_equations_hold_on_the_motion_of_the_dynamics(name):
     # opty's form comes from sympy's own KanesMethod: a second derivation of the motion

@@ -199,7 +199,7 @@ def given_specified(snapshot, command, specified, overrides):
             raise AutolevModelError(f"specified: the value of {display_name(sym)} depends "
                                     f"on {display_name(sym)} itself")
     for name, value in (overrides or {}).items():
-        sym = _undefined_specified(snapshot, name)
+        sym = undefined_specified(snapshot, name)
         if sym is None:
             rest[name] = value
             continue
@@ -217,7 +217,7 @@ def given_specified(snapshot, command, specified, overrides):
     return entry[1], functions, rest
 
 
-def _undefined_specified(snapshot, name: str):
+def undefined_specified(snapshot, name: str):
     """The SPECIFIED quantity `name` (Q1', Q1P) names when the model leaves it undefined."""
     if not isinstance(name, str) or not snapshot.names_a_quantity(name) \
             or name.strip().upper() in INTEGRATION:

@@ -25,9 +25,9 @@ from .. import symbols as S
 from ...engine.errors import AutolevModelError
 from ...engine.options import RunOptions
 from . import codegen
-from .command import given_specified, program_of
+from .command import given_specified, program_of, undefined_specified
 from .compiled import compile_program
-from .inputs import display_name
+from .inputs import INTEGRATION, display_name
 from .prepare import prepare_command
 from .snapshot import ModelSnapshot
 from ..steps import SlowStep
@@ -329,6 +329,13 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
         raise AutolevModelError("specified: the dynamics take values or expressions for "
                                 "specified quantities, not Python functions: "
                                 + ", ".join(map(display_name, functions)))
+    # a parameter named as a control takes its value from the nodes: its input is never
+    # read, so it needs none (gait2d's joint moments are VARIABLES without a value)
+    overrides = {**{name: 0.0 for name in controls or ()
+                    if isinstance(name, str) and name.strip().upper() not in INTEGRATION
+                    and snapshot.names_a_quantity(name)
+                    and undefined_specified(snapshot, name) is None},
+                 **(overrides or {})}
     prepared = prepare_command(snapshot, command, RunOptions(
         backend=backend, infile=infile, overrides=overrides, missing_values=missing_values,
         progress=progress, recursion=False), warn_unassigned=False, compile_functions=False)
