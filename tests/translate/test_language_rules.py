@@ -681,3 +681,63 @@ def test_solves_accelerations_as_accurately_as_the_mass_matrix_allows(tmp_path):
         assert condition > 1e4                  # the case that matters
         error = np.abs(ours - exact).max() / np.abs(exact).max()
         assert error < 2 * condition * np.finfo(float).eps, (error, condition)
+
+
+SECOND_ORDER_PENDULUM = """NEWTONIAN N
+FRAMES A, B
+PARTICLES P1, P2
+MOTIONVARIABLES' Q{2}''
+CONSTANTS L1, L2, M1, M2, G
+SIMPROT(N, A, 3, Q1)
+SIMPROT(N, B, 3, Q2)
+W_A_N> = Q1'*N3>
+W_B_N> = Q2'*N3>
+P_NO_P1> = L1*A1>
+P_P1_P2> = L2*B1>
+V_P1_N> = DT(P_NO_P1>, N)
+V_P2_N> = DT(P_NO_P2>, N)
+MASS P1 = M1, P2 = M2
+GRAVITY(G*N1>)
+ZERO = FR() + FRSTAR()
+QDD = [Q1''; Q2'']
+SOLVE(ZERO, QDD)
+INPUT L1 = 1.1, L2 = 0.7, M1 = 2, M2 = 0.5, G = 9.81, Q1 = 0.4, Q2 = -0.3
+OUTPUT Q1, Q2
+CODE DYNAMICS() pendulum2.c
+"""
+
+
+def test_solve_of_second_derivatives_is_solved_by_lu_as_speeds_rates_are(tmp_path):
+    # MOTIONVARIABLES' Q{2}'' and SOLVE(ZERO, [Q1''; Q2'']) (gait2d's form): the speeds
+    # are Q1', Q2', and their rates are SOLVE's equations solved at each evaluation, so
+    # the implicit form's rows are M Q'' - F: the double pendulum by Lagrange, by hand
+    model = load(tmp_path, SECOND_ORDER_PENDULUM, "pendulum2.al")
+    l1, l2, m1, m2, g = 1.1, 0.7, 2.0, 0.5, 9.81
+    q1, q2, w1, w2 = 0.4, -0.3, 0.8, -1.3
+    c, s = math.cos(q1 - q2), math.sin(q1 - q2)
+    mass = np.array([[(m1 + m2) * l1 ** 2, m2 * l1 * l2 * c], [m2 * l1 * l2 * c, m2 * l2 ** 2]])
+    forcing = np.array([-m2 * l1 * l2 * s * w2 ** 2 - (m1 + m2) * g * l1 * math.sin(q1),
+                        m2 * l1 * l2 * s * w1 ** 2 - m2 * g * l2 * math.sin(q2)])
+    accelerations = np.linalg.solve(mass, forcing)
+    dynamics = model.dynamics()
+    assert dynamics.states == ["Q1", "Q1'", "Q2", "Q2'"]
+    x = np.array([q1, w1, q2, w2])
+    assert np.allclose(dynamics.explicit(x)[0], [w1, accelerations[0], w2, accelerations[1]],
+                       rtol=1e-13)
+    jac = dynamics.residual_jacobians(x, np.zeros(4)).dense("xdot")[0]
+    speeds = [1, 3]
+    assert np.allclose(jac[np.ix_(speeds, speeds)], mass, rtol=1e-13)
+    # the run integrates the same motion: scipy on the equations by hand
+    from scipy.integrate import solve_ivp
+
+    def by_hand(t, y):
+        a, wa, b, wb = y
+        c, s = math.cos(a - b), math.sin(a - b)
+        m = [[(m1 + m2) * l1 ** 2, m2 * l1 * l2 * c], [m2 * l1 * l2 * c, m2 * l2 ** 2]]
+        f = [-m2 * l1 * l2 * s * wb ** 2 - (m1 + m2) * g * l1 * math.sin(a),
+             m2 * l1 * l2 * s * wa ** 2 - m2 * g * l2 * math.sin(b)]
+        aa, ab = np.linalg.solve(m, f)
+        return [wa, aa, wb, ab]
+    result = model.simulate(TFINAL=0.5, ABSERR=1e-10, RELERR=1e-10, **{"Q1'": w1, "Q2'": w2})
+    expected = solve_ivp(by_hand, (0, 0.5), x, rtol=1e-11, atol=1e-11, t_eval=result.t).y.T
+    assert np.allclose(result.states, expected, atol=1e-7)

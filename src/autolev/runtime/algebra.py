@@ -167,8 +167,10 @@ class AlgebraMixin:
         self._keep_speeds(unknowns)
         for u, v in zip(unknowns, solution):
             self.define(u, v)
+        # speeds' rates: of the speeds SOLVE keeps, and of the motion variables declared
+        # X'' (X' is the speed); CODE DYNAMICS takes such a SOLVE when it is Kane's
         rates = {S.derivative(b) for b in self.solved_speeds}
-        if all(u in rates for u in unknowns):
+        if all(u in rates or S.base_and_order(u)[1] == 2 for u in unknowns):
             self.constraints.add_solved_rates(SolvedRates(
                 tuple(unknowns), tuple(eqs), tuple(self.defs.rhs[u] for u in unknowns)))
 
