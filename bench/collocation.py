@@ -1,7 +1,8 @@
 """What trajectory optimization pays for a model's dynamics and their derivatives
 (Model.dynamics): per collocation node, the explicit f and the implicit residual r
-alone, their sparse Jacobians, and the ratio of a Jacobian to its function; with the
-time to form and compile them.
+alone, their sparse Jacobians (r's also without the parameters' columns, as a
+collocation with fixed parameters asks), and the ratio of a Jacobian to its function;
+with the time to form and compile them.
 
     python bench/collocation.py [--nodes N] [--chains 8,32] [--corpus DIR] [--only TEXT]
 
@@ -54,6 +55,7 @@ def measured(name: str, model, nodes: int, controls=None, parameters=None) -> di
     p = dyn.parameter_values if parameters is None else parameters(dyn)
     t = np.linspace(0.0, 1.0, nodes)
     dyn.explicit_jacobians(x[:1], u[:1], p, t[:1])     # the Jacobians form when first asked
+    dyn.explicit_jacobians(x[:1], u[:1], p, t[:1], parameters=False)
     formed = time.perf_counter() - start
     xdot = dyn.explicit(x, u, p, t)
     per_node = {
@@ -61,6 +63,9 @@ def measured(name: str, model, nodes: int, controls=None, parameters=None) -> di
         "df": best_of(5, lambda: dyn.explicit_jacobians(x, u, p, t)) / nodes,
         "r": best_of(5, lambda: dyn.residual(x, xdot, u, p, t)) / nodes,
         "dr": best_of(5, lambda: dyn.residual_jacobians(x, xdot, u, p, t)) / nodes,
+        # a collocation with the parameters fixed: r's Jacobian in x, x' and u alone
+        "drf": best_of(5, lambda: dyn.residual_jacobians(x, xdot, u, p, t,
+                                                          parameters=False)) / nodes,
     }
     nnz = sum(pat.nnz for pat in dyn.residual_jacobians(x[:1], xdot[:1], u[:1], p,
                                                         t[:1]).patterns.values())
@@ -124,12 +129,13 @@ def main() -> int:
         if name.startswith("planar"):
             row["pinocchio"] = pinocchio_planar(int(name[6:]), ns.nodes, row)
         rows.append(row)
-        us = {k: row[k] * 1e6 for k in ("f", "df", "r", "dr")}
+        us = {k: row[k] * 1e6 for k in ("f", "df", "r", "dr", "drf")}
         anchor = row.get("pinocchio")
         print(f"{name:22s} {row['states']:3d} states {row['controls']:2d} controls "
               f"{row['nnz']:5d} nnz  formed {row['formed']:6.2f} s ({row['backend']})  "
               f"f {us['f']:8.2f} us  df {us['df']:8.2f} us ({row['df'] / row['f']:5.2f}x)  "
-              f"r {us['r']:8.2f} us  dr {us['dr']:8.2f} us ({row['dr'] / row['r']:5.2f}x)"
+              f"r {us['r']:8.2f} us  dr {us['dr']:8.2f} us ({row['dr'] / row['r']:5.2f}x)  "
+              f"dr without p {us['drf']:8.2f} us ({row['drf'] / row['f']:5.2f}x f)"
               + ("" if anchor is None else
                  f"  pinocchio ABA derivatives {anchor[0] * 1e6:8.2f} us "
                  f"(ours {row['df'] / anchor[0]:5.2f}x; they agree to {anchor[1]:.1e})"),

@@ -211,6 +211,21 @@ def test_a_parameter_named_as_a_control_varies_from_node_to_node():
     assert not moved[0].any() and moved[1].any() and not moved[2].any()
 
 
+@pytest.mark.parametrize("form", ["residual", "explicit"])
+def test_jacobians_without_the_parameters_columns_are_the_same_numbers(form):
+    model = autolev.load(EXAMPLES / "block_pendulums.al")
+    dynamics = model.dynamics()
+    rng = np.random.default_rng(23)
+    x = rng.normal(size=(4, len(dynamics.states)))
+    u = rng.normal(size=(4, len(dynamics.controls)))
+    args = (x, rng.normal(size=x.shape), u) if form == "residual" else (x, u)
+    full = getattr(dynamics, f"{form}_jacobians")(*args)
+    fixed = getattr(dynamics, f"{form}_jacobians")(*args, parameters=False)
+    assert "p" in full.values and "p" not in fixed.values and full.patterns["p"].nnz
+    for block in fixed.values:
+        assert np.array_equal(fixed.dense(block), full.dense(block)), block
+
+
 def test_a_control_needs_no_value(tmp_path):
     # gait2d declares its joint moments VARIABLES with no value, for the optimizer to
     # choose: naming them controls is their value, node by node

@@ -20,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import sympy as sm
 
 from .. import symbols as S
 from ...engine.errors import AutolevModelError
@@ -73,14 +74,20 @@ class Jacobians:
 
 @dataclass(frozen=True)
 class _Derivatives:
-    """A Dynamics' Jacobian program: the right-hand side, then the structural nonzeros
-    of its Jacobian at `entries` (row, column of (x, u, p)), with the sparsity of r's
-    and f's Jacobians."""
+    """A Dynamics' Jacobian program: inputs (t, x, p, s, a), a the dynamical rows' rates;
+    outputs the right-hand side (rates, M, F), then the structural nonzeros of the
+    Jacobian of (-g for a kinematical row, row k of M a - F for a dynamical one) in
+    (x, u, p), one per `entries` row (state row of r, column), in row-major order: r's
+    own Jacobian, and f's by -M^-1 at a = f's accelerations."""
 
     function: object
     entries: np.ndarray
-    patterns: dict              # r's: "x", "u", "p", "xdot"
+    patterns: dict              # r's: "x", "u", "p" (entries' order), "xdot"
     explicit_patterns: dict     # f's: "x", "u", "p"
+    blocks: dict                # "x", "u", "p" -> positions in entries
+    ones: np.ndarray            # r's "xdot" values: positions that are 1 (kinematical)
+    mass_at: np.ndarray         # ... positions that are M's entries
+    mass_entries: np.ndarray    # ... and which entry of M (row-major) each one is
 
 
 class Dynamics:
@@ -116,8 +123,10 @@ class Dynamics:
                                   dict(system.aux_fixed)).build()
             self._values = compile_program(rhs, backend, "autolev_dynamics")
         self.backend = self._values.backend
-        # formed when a Jacobian is first asked for: f and r alone need none of it
-        self._derivatives: _Derivatives | None = None
+        # formed when a Jacobian is first asked for (f and r alone need none of it), with
+        # the parameters' columns or without (True, False)
+        self._derivatives: dict[bool, _Derivatives] = {}
+        self._by_columns: dict[str, list] = {}     # see _differentiated
 
     def _given(self) -> dict:
         """The program's inputs: time, state, parameters, specified quantities."""
@@ -134,58 +143,91 @@ class Dynamics:
                 "parameters": self.parameters, "values": self.parameter_values})
 
     # -- forming ------------------------------------------------------------------------
-    def _formed_derivatives(self) -> "_Derivatives":
-        """The right-hand side (rates, M, F) with its Jacobian's structural nonzeros in
-        (x, u, p), as one compiled program, and the sparsity it gives (once).  The
-        constants' definitions are in the programs (they depend on p, which varies)."""
-        if self._derivatives is not None:
-            return self._derivatives
+    def _formed_derivatives(self, parameters: bool = True) -> "_Derivatives":
+        """The Jacobian program and its sparsity (once).  r is linear in x' and its
+        dynamical rows are M a - F: differentiated at a given a, their Jacobian is the
+        program's, summed in it (no dM, dF per node).  The constants' definitions are in
+        the program (they depend on p, which varies).  Without `parameters`, no column
+        of p: a collocation with the parameters fixed computes none of them."""
+        if parameters in self._derivatives:
+            return self._derivatives[parameters]
         system = self._system
-        defs = system.defs
         with self._definitions(), self._jacobians_step:
-            variables = (list(system.states) + self._control_symbols
-                         + self._parameter_symbols)
-            rhs = list(system.rhs_exprs)
-            jacobian = defs.jacobian(rhs, variables)
-            entries = [(i, j) for i, row in enumerate(jacobian) for j, d in enumerate(row)
-                       if d != 0]
-            program = codegen.Program(self._given(), rhs + [jacobian[i][j] for i, j in entries],
-                                      defs, dict(system.aux_fixed)).build()
+            order = sorted(self._residual_rows())
+            groups = [self._differentiated("x, u")] + [self._differentiated("p")] * parameters
+            jacobian = [[d for part in parts for d in part] for parts in zip(*groups)]
+            entries = sorted((order[i], j) for i, row in enumerate(jacobian)
+                             for j, d in enumerate(row) if d != 0)
+            at = {(order[i], j): d for i, row in enumerate(jacobian) for j, d in enumerate(row)}
+            rhs, rates = list(system.rhs_exprs), list(system.implicit_unknowns)
+            program = codegen.Program(self._given() | {"a": rates},
+                                      rhs + [at[e] for e in entries], system.defs,
+                                      dict(system.aux_fixed)).build()
             function = compile_program(program, self._backend_asked,
                                        "autolev_dynamics_jacobian")
         entries = np.array(entries, dtype=int).reshape(-1, 2)
-        self._derivatives = _Derivatives(function, entries, *self._sparsity(entries))
-        return self._derivatives
+        self._derivatives[parameters] = self._sparsity(function, entries, parameters)
+        return self._derivatives[parameters]
 
-    def _sparsity(self, entries: np.ndarray) -> tuple[dict, dict]:
-        """The residual's patterns and f's, from the right-hand side's `entries`: a
-        kinematical row has its rate's entries, a dynamical row of r those of its M row
-        and F entry, and one of f those of every dynamical row (M^-1 mixes them)."""
-        nx, nu, npar, n = self._sizes
-        nw = nx + nu + npar
-        rhs_mask = np.zeros((nx + n * n + n, nw), dtype=bool)
-        rhs_mask[entries[:, 0], entries[:, 1]] = True
-        mask = np.zeros((nx, nw), dtype=bool)
-        mask[self._kinematic] = rhs_mask[self._kinematic]
-        xdot = np.zeros((nx, nx), dtype=bool)
-        xdot[self._kinematic, self._kinematic] = True
-        mass = self._mass_nonzero()
-        for k, row in enumerate(self._dynamic):
-            mask[row] = rhs_mask[nx + n * n + k] | rhs_mask[nx + k * n:nx + (k + 1) * n].any(0)
-            xdot[row, self._dynamic] = mass[k]
-        explicit = mask.copy()
-        explicit[self._dynamic] = mask[self._dynamic].any(0)
-        return self._split(mask) | {"xdot": Pattern.of_mask(xdot)}, self._split(explicit)
-
-    def _mass_nonzero(self) -> np.ndarray:
+    def _residual_rows(self) -> dict:
+        """{state row: the expression differentiated}: -g for a kinematical row, row k
+        of M a - F (a: the symbols of the dynamical rows' rates) for a dynamical one."""
         nx, _, _, n = self._sizes
-        exprs = self._system.rhs_exprs[nx:nx + n * n]
-        return np.array([e != 0 for e in exprs], dtype=bool).reshape(n, n)
+        rhs = list(self._system.rhs_exprs)
+        mass, forcing = rhs[nx:nx + n * n], rhs[nx + n * n:]
+        rates = list(self._system.implicit_unknowns)
+        rows = {int(i): -rhs[i] for i in self._kinematic}
+        for k, row in enumerate(self._dynamic):
+            rows[int(row)] = sm.Add(*[mass[k * n + j] * rates[j] for j in range(n)
+                                      if mass[k * n + j] != 0]) - forcing[k]
+        return rows
 
-    def _split(self, mask: np.ndarray) -> dict:
-        nx, nu, _, _ = self._sizes
-        return {"x": Pattern.of_mask(mask[:, :nx]), "u": Pattern.of_mask(mask[:, nx:nx + nu]),
-                "p": Pattern.of_mask(mask[:, nx + nu:])}
+    def _differentiated(self, group: str) -> list:
+        """The residual rows' derivatives (rows in state order) in the columns of `group`
+        ("x, u" or "p"): each group once, for the programs with and without p."""
+        if group not in self._by_columns:
+            rows = self._residual_rows()
+            variables = (list(self._system.states) + self._control_symbols if group == "x, u"
+                         else self._parameter_symbols)
+            self._by_columns[group] = self._system.defs.jacobian(
+                [rows[i] for i in sorted(rows)], variables)
+        return self._by_columns[group]
+
+    def _sparsity(self, function, entries: np.ndarray, parameters: bool) -> "_Derivatives":
+        """r's patterns are its entries'; a row of f has every entry of its own, and a
+        speed's row every entry of every dynamical row (M^-1 mixes them)."""
+        nx, nu, npar, n = self._sizes
+        bounds = self._columns(parameters)
+        blocks, patterns = {}, {}
+        for name, (lo, hi) in bounds.items():
+            blocks[name] = np.nonzero((entries[:, 1] >= lo) & (entries[:, 1] < hi))[0]
+            patterns[name] = Pattern(entries[blocks[name], 0], entries[blocks[name], 1] - lo,
+                                     (nx, hi - lo))
+        mask = np.zeros((nx, nx + nu + npar * parameters), dtype=bool)
+        mask[entries[:, 0], entries[:, 1]] = True
+        if len(self._dynamic):
+            mask[self._dynamic] = mask[self._dynamic].any(0)
+        explicit = {name: Pattern.of_mask(mask[:, lo:hi]) for name, (lo, hi) in bounds.items()}
+        xdot = np.zeros((nx, nx), dtype=int)            # 1: kinematical, 2: M's entry
+        xdot[self._kinematic, self._kinematic] = 1
+        exprs = self._system.rhs_exprs[nx:nx + n * n]
+        nonzero = np.array([e != 0 for e in exprs], dtype=bool).reshape(n, n)
+        xdot[np.ix_(self._dynamic, self._dynamic)] = 2 * nonzero
+        patterns["xdot"] = Pattern.of_mask(xdot > 0)
+        kinds = xdot[patterns["xdot"].rows, patterns["xdot"].cols]
+        where = {int(r): k for k, r in enumerate(self._dynamic)}
+        mass_at = np.nonzero(kinds == 2)[0]
+        mass_entries = np.array([where[int(patterns["xdot"].rows[i])] * n
+                                 + where[int(patterns["xdot"].cols[i])] for i in mass_at],
+                                dtype=int)
+        return _Derivatives(function, entries, patterns, explicit, blocks,
+                            np.nonzero(kinds == 1)[0], mass_at, mass_entries)
+
+    def _columns(self, parameters: bool) -> dict:
+        """Each block's columns (lo, hi) among the Jacobian's (x, u, p or not)."""
+        nx, nu, npar, _ = self._sizes
+        return {"x": (0, nx), "u": (nx, nx + nu)} | (
+            {"p": (nx + nu, nx + nu + npar)} if parameters else {})
 
     # -- evaluating -----------------------------------------------------------------------
     def _nodes(self, x, u, t, xdot=None):
@@ -201,9 +243,10 @@ class Dynamics:
             xdot = np.asarray(xdot, dtype=float).reshape(count, nx)
         return x, u, t, xdot
 
-    def _evaluated(self, x, u, p, t, jacobian: bool = True):
-        """(right-hand side values: N x (nx + n^2 + n), dense Jacobian: N x rows x (x, u,
-        p), or None without `jacobian`) at every node."""
+    def _evaluated(self, x, u, p, t, rates=None, parameters: bool = True):
+        """The right-hand side's values at every node (N x (nx + n^2 + n)), and with
+        `rates` (N x n: the dynamical rows' a) the Jacobian program's entries (N x
+        entries), else None."""
         nx, nu, npar, n = self._sizes
         p = self.parameter_values if p is None else np.asarray(p, dtype=float)
         if p.shape != (npar,):
@@ -212,21 +255,23 @@ class Dynamics:
         n_rhs, count = nx + n * n + n, x.shape[0]
         inputs = np.zeros((count, len(self._input_symbols)))
         inputs[:, self._control_positions] = u
-        derivatives = self._formed_derivatives() if jacobian else None
-        function = self._values if derivatives is None else derivatives.function
-        out = np.empty((count, n_rhs + (0 if derivatives is None else len(derivatives.entries))))
+        arrays = [np.ascontiguousarray(t).reshape(count, 1), np.ascontiguousarray(x), p,
+                  inputs]
+        if rates is None:
+            function, width = self._values, n_rhs
+        else:
+            derivatives = self._formed_derivatives(parameters)
+            function, width = derivatives.function, n_rhs + len(derivatives.entries)
+            arrays.append(np.ascontiguousarray(rates, dtype=float).reshape(count, n))
+        out = np.empty((count, width))
         if self.backend == "c":             # every node in one call of the C
-            function.call.rows([np.ascontiguousarray(t).reshape(count, 1),
-                                np.ascontiguousarray(x), p, inputs],
-                               [True, True, False, True], out)
+            function.call.rows(arrays, [True, True, False] + [True] * (len(arrays) - 3), out)
         else:
             for k in range(count):
-                function.call(t[k:k + 1], x[k], p, inputs[k], out[k])
-        if derivatives is None:
+                function.call(*[a if a.ndim == 1 else a[k] for a in arrays], out[k])
+        if rates is None:
             return out, None
-        jac = np.zeros((count, n_rhs, nx + nu + npar))
-        jac[:, derivatives.entries[:, 0], derivatives.entries[:, 1]] = out[:, n_rhs:]
-        return out[:, :n_rhs], jac
+        return out[:, :n_rhs], out[:, n_rhs:]
 
     def _mass_and_forcing(self, values):
         """M and F at every node, from the right-hand side's values, or (dM, dF) from its
@@ -238,7 +283,7 @@ class Dynamics:
     def explicit(self, x, u=None, p=None, t=0.0) -> np.ndarray:
         """x' = f(x, u, p, t) at every node (N x nx)."""
         x, u, t, _ = self._nodes(x, u, t)
-        values, _ = self._evaluated(x, u, p, t, jacobian=False)
+        values, _ = self._evaluated(x, u, p, t)
         return self._rates(values)[0]
 
     def _rates(self, values):
@@ -254,7 +299,7 @@ class Dynamics:
     def residual(self, x, xdot, u=None, p=None, t=0.0) -> np.ndarray:
         """r(x, x', u, p, t) at every node (N x nx): 0 on the motion."""
         x, u, t, xdot = self._nodes(x, u, t, xdot)
-        values, _ = self._evaluated(x, u, p, t, jacobian=False)
+        values, _ = self._evaluated(x, u, p, t)
         return self._residual(values, xdot)
 
     def _residual(self, values, xdot):
@@ -265,45 +310,45 @@ class Dynamics:
             r[:, self._dynamic] = np.einsum("nkj,nj->nk", mass, xdot[:, self._dynamic]) - forcing
         return r
 
-    def residual_jacobians(self, x, xdot, u=None, p=None, t=0.0) -> Jacobians:
-        """∂r/∂x, ∂r/∂x', ∂r/∂u, ∂r/∂p at every node, sparse (see Jacobians)."""
+    def residual_jacobians(self, x, xdot, u=None, p=None, t=0.0,
+                           parameters: bool = True) -> Jacobians:
+        """∂r/∂x, ∂r/∂x', ∂r/∂u, and with `parameters` ∂r/∂p, at every node, sparse (see
+        Jacobians)."""
         x, u, t, xdot = self._nodes(x, u, t, xdot)
-        values, jac = self._evaluated(x, u, p, t)
-        nx, nu, npar, n = self._sizes
-        dense = np.zeros((x.shape[0], nx, nx + nu + npar))
-        dense[:, self._kinematic] = -jac[:, self._kinematic]
-        ddot = np.zeros((x.shape[0], nx, nx))
-        ddot[:, self._kinematic, self._kinematic] = 1.0
-        if n:
-            mass, _ = self._mass_and_forcing(values)
-            dmass, dforcing = self._mass_and_forcing(jac)
-            dense[:, self._dynamic] = (np.einsum("nkjw,nj->nkw", dmass, xdot[:, self._dynamic])
-                                       - dforcing)
-            ddot[:, self._dynamic[:, None], self._dynamic[None, :]] = mass
-        return self._sparse(dense, self._formed_derivatives().patterns, ddot)
+        values, entries = self._evaluated(x, u, p, t, rates=xdot[:, self._dynamic],
+                                          parameters=parameters)
+        d = self._formed_derivatives(parameters)
+        nx = self._sizes[0]
+        blocks = {name: entries[:, at] for name, at in d.blocks.items()}
+        ddot = np.empty((x.shape[0], d.patterns["xdot"].nnz))
+        ddot[:, d.ones] = 1.0
+        ddot[:, d.mass_at] = values[:, nx + d.mass_entries]
+        return Jacobians(blocks | {"xdot": ddot}, dict(d.patterns))
 
-    def explicit_jacobians(self, x, u=None, p=None, t=0.0) -> Jacobians:
-        """∂f/∂x, ∂f/∂u, ∂f/∂p at every node, sparse (see Jacobians): a speed's row is
-        M^-1 (∂F - ∂M a), so it has every entry its coupled rows have."""
+    def explicit_jacobians(self, x, u=None, p=None, t=0.0,
+                           parameters: bool = True) -> Jacobians:
+        """∂f/∂x, ∂f/∂u, and with `parameters` ∂f/∂p, at every node, sparse (see
+        Jacobians): a speed's row is
+        -M^-1 ∂(M a - F) at f's accelerations a, so it has every entry its coupled rows
+        have."""
         x, u, t, _ = self._nodes(x, u, t)
-        values, jac = self._evaluated(x, u, p, t)
-        nx, _, _, n = self._sizes
-        dense = jac[:, :nx].copy()
+        nx, nu, npar, n = self._sizes
+        values, _ = self._evaluated(x, u, p, t)
+        _, accelerations = self._rates(values)
+        count = x.shape[0]
+        _, entries = self._evaluated(x, u, p, t, rates=np.zeros((count, n))
+                                     if accelerations is None else accelerations,
+                                     parameters=parameters)
+        d = self._formed_derivatives(parameters)
+        dense = np.zeros((count, nx, nx + nu + npar * parameters))
+        dense[:, d.entries[:, 0], d.entries[:, 1]] = -entries
         if n:
             mass, _ = self._mass_and_forcing(values)
-            _, accelerations = self._rates(values)
-            dmass, dforcing = self._mass_and_forcing(jac)
-            dense[:, self._dynamic] = _solved(
-                mass, dforcing - np.einsum("nkjw,nj->nkw", dmass, accelerations))
-        return self._sparse(dense, self._formed_derivatives().explicit_patterns)
-
-    def _sparse(self, dense, patterns: dict, xdot=None) -> Jacobians:
-        nx, nu, _, _ = self._sizes
-        blocks = {"x": dense[:, :, :nx], "u": dense[:, :, nx:nx + nu], "p": dense[:, :, nx + nu:]}
-        if xdot is not None:
-            blocks["xdot"] = xdot
-        return Jacobians({b: m[:, patterns[b].rows, patterns[b].cols] for b, m in blocks.items()},
-                         {b: patterns[b] for b in blocks})
+            dense[:, self._dynamic] = _solved(mass, dense[:, self._dynamic])
+        blocks = {name: dense[:, d.explicit_patterns[name].rows,
+                              d.explicit_patterns[name].cols + lo]
+                  for name, (lo, _) in self._columns(parameters).items()}
+        return Jacobians(blocks, dict(d.explicit_patterns))
 
 
 def _solved(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
