@@ -5,6 +5,7 @@ collocation with fixed parameters asks), and the ratio of a Jacobian to its func
 with the time to form and compile them.
 
     python bench/collocation.py [--nodes N] [--chains 8,32] [--corpus DIR] [--only TEXT]
+                                [--solve]
 
 Models: the shipped examples, planar n-link chains (bench/chains.py) and, when the
 corpus is there, gait2de (csu-hmc/gait2d: the joint moments mom4..mom9 as controls,
@@ -13,6 +14,13 @@ its parameters set to 1 where it gives none).  Every node's numbers come from on
 With Pinocchio installed (`pip install 'autolev[bench]'`), the planar chains' ABA
 derivatives (pinocchio.computeABADerivatives, a C++ loop over the same nodes through
 its Python binding) are timed beside ours.
+
+`--solve`: the pendulum swing-up of docs/tutorials/trajectory.md (backward Euler, 51
+nodes, 2 s, the torque squared) solved twice in one run, each by IPOPT from the same
+first guess: through Dynamics.casadi() (CasADi's derivatives of the model's own
+expressions) and through opty (Model.to_opty(): sympy's equations, opty's generated C);
+needs casadi, and opty with cyipopt.  Each is timed from the model loaded to the
+optimum, and IPOPT's own part apart; the optima must agree.
 """
 from __future__ import annotations
 
@@ -100,13 +108,98 @@ def pinocchio_planar(n: int, nodes: int, row: dict) -> tuple | None:
     return seconds, float(np.abs(ours - theirs).max() / np.abs(theirs).max())
 
 
+SWINGUP = ROOT / "docs" / "examples" / "swingup.al"
+
+
+def swingup_by_casadi(nodes: int, duration: float) -> dict:
+    import casadi as ca
+    start = time.perf_counter()
+    dyn = autolev.load(SWINGUP).dynamics()
+    form = dyn.casadi()
+    h = duration / (nodes - 1)
+    opti = ca.Opti()
+    x = opti.variable(len(dyn.states), nodes)
+    u = opti.variable(len(dyn.controls), nodes)
+    residual = form.residual.map(nodes - 1)
+    times = np.linspace(0.0, duration, nodes)
+    opti.subject_to(ca.vec(residual(x[:, 1:], (x[:, 1:] - x[:, :-1]) / h, u[:, 1:],
+                                    dyn.parameter_values, times[1:].reshape(1, -1))) == 0)
+    opti.subject_to(x[:, 0] == [0.0, 0.0])
+    opti.subject_to(x[:, -1] == [np.pi, 0.0])
+    opti.minimize(h * ca.sumsqr(u))
+    opti.set_initial(x[0, :], np.linspace(0.0, np.pi, nodes))
+    opti.solver("ipopt", {"print_time": False}, {"print_level": 0, "sb": "yes"})
+    began = time.perf_counter()
+    solution = opti.solve()
+    done = time.perf_counter()
+    return {"total": done - start, "ipopt": done - began,
+            "objective": float(solution.value(opti.f)),
+            "iterations": solution.stats()["iter_count"]}
+
+
+def swingup_by_opty(nodes: int, duration: float) -> dict:
+    from opty import Problem
+    start = time.perf_counter()
+    parts = autolev.load(SWINGUP).to_opty()
+    h = duration / (nodes - 1)
+    q, u = parts.states
+    torque = parts.controls[0]
+
+    def objective(free):
+        return h * np.sum(free[2 * nodes:] ** 2)
+
+    def gradient(free):
+        grad = np.zeros_like(free)
+        grad[2 * nodes:] = 2 * h * free[2 * nodes:]
+        return grad
+    t = parts.time
+    problem = Problem(objective, gradient, parts.equations_of_motion, parts.states, nodes, h,
+                      known_parameter_map=parts.parameters,
+                      instance_constraints=(q.func(0 * t), u.func(0 * t),
+                                            q.func(duration + 0 * t) - np.pi,
+                                            u.func(duration + 0 * t)),
+                      integration_method="backward euler", tmp_dir=tempfile.mkdtemp())
+    problem.add_option("print_level", 0)
+    problem.add_option("sb", "yes")
+    guess = np.zeros(3 * nodes)
+    guess[:nodes] = np.linspace(0.0, np.pi, nodes)
+    began = time.perf_counter()
+    free, info = problem.solve(guess)
+    done = time.perf_counter()
+    assert torque in parts.controls
+    return {"total": done - start, "ipopt": done - began, "objective": float(info["obj_val"]),
+            "iterations": None}
+
+
+def solve_both(nodes: int = 51, duration: float = 2.0) -> None:
+    try:
+        import casadi  # noqa: F401
+        import opty  # noqa: F401
+    except ImportError as exc:
+        print(f"(--solve needs casadi and opty with cyipopt: {exc})")
+        return
+    ours = swingup_by_casadi(nodes, duration)
+    theirs = swingup_by_opty(nodes, duration)
+    for name, row in (("Dynamics.casadi()", ours), ("opty (Model.to_opty())", theirs)):
+        print(f"swing-up, {nodes} nodes, {name:24s}: {row['total']:7.2f} s from the model "
+              f"loaded, IPOPT {row['ipopt']:6.3f} s, objective {row['objective']:.8f}")
+    gap = abs(ours["objective"] - theirs["objective"]) / abs(theirs["objective"])
+    print(f"ours / opty: {ours['total'] / theirs['total']:.2f}x from the model, "
+          f"{ours['ipopt'] / theirs['ipopt']:.2f}x in IPOPT; optima {gap:.1e} apart")
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--nodes", type=int, default=500)
     ap.add_argument("--chains", default="8,32")
     ap.add_argument("--corpus", type=Path, default=CORPUS)
     ap.add_argument("--only", default="")
+    ap.add_argument("--solve", action="store_true",
+                    help="only the swing-up solved through CasADi and through opty")
     ns = ap.parse_args()
+    if ns.solve:
+        solve_both()
+        return 0
     warnings.simplefilter("ignore")
     rows = []
     folder = Path(tempfile.mkdtemp(prefix="autolev-collocation-"))
