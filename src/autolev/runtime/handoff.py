@@ -352,14 +352,25 @@ class OptyParts:
     time: object
 
 
-def to_opty(model, infile=None, overrides=None) -> OptyParts:
+def to_opty(model, infile=None, overrides=None, controls=None) -> OptyParts:
     """The model's equations of motion as opty takes them (see OptyParts), with the
-    constants' values a run of its first CODE DYNAMICS takes.  A model with dependent
-    or auxiliary speeds is refused: opty integrates ordinary differential equations in
-    the state."""
+    constants' values a run of its first CODE DYNAMICS takes.  `controls`: names of the
+    controls, specified quantities or constants (as Model.dynamics takes them; a
+    constant named becomes a trajectory of its own and needs no value); default: the
+    specified quantities.  A model with dependent or auxiliary speeds is refused: opty
+    integrates ordinary differential equations in the state."""
     import sympy.physics.mechanics as me
 
-    _, h, constants = _with_values(model, infile, overrides)
+    from .numerics.command import undefined_specified
+    from .numerics.inputs import INTEGRATION
+
+    varying = [str(name) for name in controls or ()]
+    snapshot = model.snapshot_for(model.command_to_linearize())
+    # a constant named as a control is a trajectory: its value is never read
+    given = {name: 0.0 for name in varying if model.names_a_quantity(name)
+             and name.strip().upper() not in INTEGRATION
+             and undefined_specified(snapshot, name) is None}
+    _, h, constants = _with_values(model, infile, {**given, **(overrides or {})} or None)
     if h.dependent or h.auxiliary:
         raise AutolevModelError("opty integrates ordinary differential equations in the "
                                 "state: this model has dependent or auxiliary speeds ("
@@ -370,4 +381,21 @@ def to_opty(model, infile=None, overrides=None) -> OptyParts:
     rates = sm.Matrix([x.diff(time) for x in states])
     kane = h.kane
     equations = kane.mass_matrix_full * rates - kane.forcing_full
-    return OptyParts(equations, states, list(h.specified), constants, time)
+    if controls is None:
+        return OptyParts(equations, states, list(h.specified), constants, time)
+    specified = {str(s.func).upper(): s for s in h.specified}
+    by_name = {str(c).upper(): c for c in constants}
+    chosen, made = [], {}
+    for name in varying:
+        if name.upper() in specified:
+            chosen.append(specified[name.upper()])
+        elif name.upper() in by_name:
+            made[by_name[name.upper()]] = sm.Function(str(by_name[name.upper()]))(time)
+            chosen.append(made[by_name[name.upper()]])
+        else:
+            raise AutolevModelError(
+                f"controls: {name!r} is not a specified quantity or a constant of the "
+                "equations (its specified quantities: "
+                + (", ".join(str(s.func) for s in h.specified) or "none") + ")")
+    return OptyParts(equations.xreplace(made), states, chosen,
+                     {c: v for c, v in constants.items() if c not in made}, time)

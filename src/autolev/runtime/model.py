@@ -613,12 +613,13 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         from .handoff import to_pydy
         return to_pydy(self, infile, overrides or None)
 
-    def to_opty(self, infile=None, **overrides):
+    def to_opty(self, infile=None, controls=None, **overrides):
         """The equations of motion as opty's direct collocation takes them (opty is not
         needed to make them): an OptyParts (runtime/handoff.py) of to_mechanics()'s
-        KanesMethod, with the constants' values a run takes."""
+        KanesMethod, with the constants' values a run takes; `controls` as
+        Model.dynamics takes them (default: the specified quantities)."""
         from .handoff import to_opty
-        return to_opty(self, infile, overrides or None)
+        return to_opty(self, infile, overrides or None, controls)
 
     def to_sympy(self, value):
         """An expression, matrix or vector as plain sympy (dynamicsymbols, expanded)."""

@@ -239,6 +239,16 @@ def test_a_control_needs_no_value(tmp_path):
     assert dynamics.controls == ["TQ"] and "TQ" not in dynamics.parameters
     assert np.allclose(dynamics.explicit([0.3, -0.2], [0.7]),
                        [[-0.2, (0.7 - m * g * L * math.sin(0.3)) / (m * L ** 2)]], rtol=1e-14)
+    # opty's form: TQ a trajectory of its own, not a known parameter
+    parts = model.to_opty(controls=["TQ"])
+    (tq,) = parts.controls
+    assert str(tq.func) == "TQ" and tq.args == (parts.time,)
+    assert all(str(c) != "TQ" for c in parts.parameters)
+    q, u = parts.states
+    at = {q: 0.3, u: -0.2, tq: 0.7, q.diff(parts.time): -0.2,
+          u.diff(parts.time): (0.7 - m * g * L * math.sin(0.3)) / (m * L ** 2)}
+    on_motion = parts.equations_of_motion.xreplace(parts.parameters).xreplace(at)
+    assert np.allclose(np.array(on_motion, dtype=float), 0, atol=1e-12)
 
 
 @pytest.mark.parametrize("name", ["block_pendulums", "double_pendulum", "nlink_pendulum"])
