@@ -10,6 +10,7 @@ import sympy as sm
 import autolev
 from autolev.engine.errors import AutolevModelError
 from helpers import EXAMPLES, ROOT
+from helpers.differences import agrees, central
 from helpers.models import PENDULUM
 
 
@@ -50,35 +51,6 @@ def test_nodes_in_one_call_are_each_nodes_answer(pendulum):
     assert np.array_equal(together, np.array(apart))
 
 
-STEPS = (1e-2, 1e-3, 1e-4, 1e-5)
-
-
-def _central(function, arrays: dict, name: str) -> np.ndarray:
-    """d function / d arrays[name] by five-point central differences, at each of STEPS
-    (steps x nodes x rows x columns)."""
-    base = arrays[name]
-    by_step = []
-    for h in STEPS:
-        columns = []
-        for j in range(base.shape[-1]):
-            def at(step):
-                moved = base.copy()
-                moved[..., j] += step * h
-                return function(**dict(arrays, **{name: moved}))
-            columns.append((8 * (at(1) - at(-1)) - (at(2) - at(-2))) / (12 * h))
-        by_step.append(np.stack(columns, axis=-1))
-    return np.array(by_step)
-
-
-def _agrees(exact, differences) -> bool:
-    """Each entry within 1e-8 of its row's size at the step that suits it: truncation
-    (h^4 f^(5)) falls and rounding (eps f / h) grows as the step shrinks, and near a
-    singular mass matrix (the Whipple's, the four-bar's off its constraint) no one step
-    suits every entry; a missing or wrong term suits none."""
-    scale = np.maximum(1.0, np.abs(differences[1]).max(axis=-1, keepdims=True))
-    return bool(np.all(np.abs(exact - differences).min(axis=0) <= 1e-8 * scale))
-
-
 @pytest.mark.parametrize("model", sorted(EXAMPLES.glob("*.al")), ids=lambda p: p.stem)
 def test_jacobians_are_central_differences_on_every_example(model):
     dynamics = autolev.load(model).dynamics()
@@ -101,11 +73,11 @@ def test_jacobians_are_central_differences_on_every_example(model):
         return dynamics.residual(x, xdot, u, p, t)
     for block in ("x", "u", "p"):
         if arrays[block].shape[-1]:
-            assert _agrees(explicit.dense(block), _central(f, arrays, block)), block
-            assert _agrees(implicit.dense(block), _central(r, arrays, block)), block
-    by_rates = _central(lambda xdot: dynamics.residual(x, xdot, u, p, t), {"xdot": xdot},
+            assert agrees(explicit.dense(block), central(f, arrays, block)), block
+            assert agrees(implicit.dense(block), central(r, arrays, block)), block
+    by_rates = central(lambda xdot: dynamics.residual(x, xdot, u, p, t), {"xdot": xdot},
                         "xdot")
-    assert _agrees(implicit.dense("xdot"), by_rates)
+    assert agrees(implicit.dense("xdot"), by_rates)
 
 
 def test_sympys_derivatives_of_the_mass_matrix_and_forcing():
