@@ -19,8 +19,9 @@ its Python binding) are timed beside ours.
 nodes, 2 s, the torque squared) solved twice in one run, each by IPOPT from the same
 first guess: through Dynamics.casadi() (CasADi's derivatives of the model's own
 expressions) and through opty (Model.to_opty(): sympy's equations, opty's generated C);
-needs casadi, and opty with cyipopt.  Each is timed from the model loaded to the
-optimum, and IPOPT's own part apart; the optima must agree.
+then, with the corpus, gait2de's squat to stand (bench/squat.py) through our compiled
+Jacobians and through opty.  Needs casadi, and opty with cyipopt.  Each is timed from
+the model loaded to the optimum, and IPOPT's own part apart.
 """
 from __future__ import annotations
 
@@ -40,6 +41,7 @@ sys.path.insert(0, str(ROOT / "bench"))
 
 import autolev  # noqa: E402
 import chains  # noqa: E402
+import squat  # noqa: E402
 
 CORPUS = Path(os.environ.get("AUTOLEV_CORPUS", Path.home() / ".cache" / "autolev-corpus"))
 GAIT2DE = "csu-hmc+gait2d/algait2de/gait2de.al"
@@ -171,9 +173,10 @@ def swingup_by_opty(nodes: int, duration: float) -> dict:
             "iterations": None}
 
 
-def solve_both(nodes: int = 51, duration: float = 2.0) -> None:
+def solve_both(corpus: Path, nodes: int = 51, duration: float = 2.0) -> None:
     try:
         import casadi  # noqa: F401
+        import cyipopt  # noqa: F401
         import opty  # noqa: F401
     except ImportError as exc:
         print(f"(--solve needs casadi and opty with cyipopt: {exc})")
@@ -186,6 +189,21 @@ def solve_both(nodes: int = 51, duration: float = 2.0) -> None:
     gap = abs(ours["objective"] - theirs["objective"]) / abs(theirs["objective"])
     print(f"ours / opty: {ours['total'] / theirs['total']:.2f}x from the model, "
           f"{ours['ipopt'] / theirs['ipopt']:.2f}x in IPOPT; optima {gap:.1e} apart")
+    gait = corpus / squat.GAIT2DE
+    if not gait.exists():
+        print(f"(no {gait}: the gait problem needs the corpus)")
+        return
+    nodes = 31
+    ours, theirs = squat.by_our_jacobians(gait, nodes), squat.by_opty(gait, nodes)
+    for name, row in (("our compiled Jacobians", ours), ("opty (Model.to_opty())", theirs)):
+        print(f"gait2de squat to stand, {nodes} nodes, {name:22s}: {row['total']:7.2f} s "
+              f"from the model loaded, IPOPT {row['ipopt']:6.2f} s, objective "
+              f"{row['objective']:.2f} (IPOPT status {row['status']}, "
+              f"{row['evaluations']} trial points, "
+              f"{row['ipopt'] / row['evaluations'] * 1e3:.1f} ms each)")
+    print(f"ours / opty: {ours['total'] / theirs['total']:.2f}x from the model, "
+          f"{ours['ipopt'] / theirs['ipopt']:.2f}x in IPOPT (local optima of a problem with "
+          "contact: each solver's own)")
 
 
 def main() -> int:
@@ -198,7 +216,7 @@ def main() -> int:
                     help="only the swing-up solved through CasADi and through opty")
     ns = ap.parse_args()
     if ns.solve:
-        solve_both()
+        solve_both(ns.corpus)
         return 0
     warnings.simplefilter("ignore")
     rows = []
