@@ -3,7 +3,9 @@ CODE DYNAMICS runs (over 1 s, with the values the journeys give it: INPUT, the .
 repository ships, then 1 for each constant still without a value, 0 for a product of
 inertia), the exact Jacobians of f and of r equal five-point central differences at
 two states of that run (its first row and its middle one), by the rule of the examples'
-test: each entry within 1e-8 of its row's size at the step that suits it."""
+test: each entry within 1e-8 of its row's size at the step that suits it (a parameter's
+steps relative to its value), wherever two neighbouring steps agree with each other
+(where rounding swamps every step, the entry is counted as undecided, not passed)."""
 import sys
 import warnings
 from pathlib import Path
@@ -14,7 +16,7 @@ import pytest
 import autolev
 from autolev.engine.errors import AutolevModelError, MissingValues
 from helpers import ROOT, SHARED
-from helpers.differences import agrees, central
+from helpers.differences import central, disagreements
 
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
@@ -93,20 +95,64 @@ def _check(path: Path, shipped: Path | None, out: dict) -> None:
 
     def r(x, u, p, t):
         return dynamics.residual(x, xdot, u, p, t)
-    wrong = []
-    for block in ("x", "u", "p"):
-        if arrays[block].shape[-1]:
-            if not agrees(explicit.dense(block), central(f, arrays, block)):
-                wrong.append(f"df/d{block}")
-            if not agrees(implicit.dense(block), central(r, arrays, block)):
-                wrong.append(f"dr/d{block}")
-    by_rates = central(lambda xdot: dynamics.residual(x, xdot, u, p, t), {"xdot": xdot}, "xdot")
-    if not agrees(implicit.dense("xdot"), by_rates):
-        wrong.append("dr/dxdot")
+    # parameters span scales (SSOpt's cell: masses of 1e-23 kg): stepped relative to each
+    scales = {"x": None, "u": None, "p": np.where(p != 0, np.abs(p), 1.0)}
+    wrong, undecided = [], 0
+    checks = [(f"df/d{b}", explicit.dense(b), central(f, arrays, b, scales[b])) for b in
+              ("x", "u", "p") if arrays[b].shape[-1]]
+    checks += [(f"dr/d{b}", implicit.dense(b), central(r, arrays, b, scales[b])) for b in
+               ("x", "u", "p") if arrays[b].shape[-1]]
+    checks.append(("dr/dxdot", implicit.dense("xdot"),
+                   central(lambda xdot: dynamics.residual(x, xdot, u, p, t), {"xdot": xdot},
+                           "xdot")))
+    by_casadi = None
+    for name, exact, differences in checks:
+        disagree, cannot = disagreements(exact, differences)
+        undecided += cannot
+        if disagree and name != "dr/dxdot":
+            # differences fooled by cancellation (SSOpt's computed torques give r ~ 1e-41
+            # out of terms of 1e-19, and M a condition of 1e11): CasADi's own derivatives
+            # of the same program decide
+            by_casadi = by_casadi or _casadi_jacobians(dynamics, x, xdot, u, p, t)
+            if by_casadi is not None:
+                theirs = by_casadi[name[1], name[4:]]
+                scale = np.maximum(1.0, np.abs(theirs).max(axis=-1, keepdims=True))
+                disagree = int((np.abs(exact - theirs) > 1e-8 * scale).sum())
+                out["casadi"] = True
+        if disagree:
+            wrong.append(f"{name} ({disagree} entries)")
     out["detail"] = (f"{len(dynamics.states)} states, {len(dynamics.parameters)} parameters"
+                     + ("; differences fooled by rounding decided by CasADi's derivatives"
+                        if out.pop("casadi", False) else "")
+                     + (f"; {undecided} entries the differences cannot decide (rounding)"
+                        if undecided else "")
                      + (f"; differ: {', '.join(wrong)}" if wrong else ""))
     if wrong:
         out["outcome"] = "failing"
+
+
+def _casadi_jacobians(dynamics, x, xdot, u, p, t) -> dict | None:
+    """{("f" or "r", block): nodes x rows x columns} of f's and r's Jacobians by
+    CasADi's algorithmic differentiation of the same program (None without casadi)."""
+    try:
+        import casadi as ca
+    except ImportError:
+        return None
+    form = dynamics.casadi()
+    symbols = {"x": ca.SX.sym("x", x.shape[1]), "xdot": ca.SX.sym("xdot", x.shape[1]),
+               "u": ca.SX.sym("u", u.shape[1]), "p": ca.SX.sym("p", len(p))}
+    time = ca.SX.sym("t")
+    r = form.residual(symbols["x"], symbols["xdot"], symbols["u"], symbols["p"], time)
+    f = form.f(symbols["x"], symbols["u"], symbols["p"], time)
+    keys = [(name, b) for name in ("f", "r") for b in ("x", "u", "p")]
+    jacobians = ca.Function("jacobians", [*symbols.values(), time],
+                            [ca.jacobian({"f": f, "r": r}[name], symbols[b])
+                             for name, b in keys])
+    out: dict = {key: [] for key in keys}
+    for k in range(x.shape[0]):
+        for key, value in zip(keys, jacobians(x[k], xdot[k], u[k], p, t[k])):
+            out[key].append(np.array(value))
+    return {key: np.array(values) for key, values in out.items()}
 
 
 def test_every_corpus_models_jacobians_are_central_differences(corpus):
