@@ -84,11 +84,20 @@ def by_our_jacobians(path: Path, nodes: int) -> dict:
     patterns = dyn.residual_jacobians(zero, zero, np.zeros((1, nu)), parameters=False).patterns
     n_x, n_u = nodes * nx, nodes * nu
     fixed, values = fixed_ends(nodes, dyn.states)
+    # r at node k in x_k: r's x block and its x' block over h, one entry where both are
+    own = sorted(set(zip(patterns["x"].rows, patterns["x"].cols))
+                 | set(zip(patterns["xdot"].rows, patterns["xdot"].cols)))
+    place = {entry: i for i, entry in enumerate(own)}
+    from_x = np.array([place[e] for e in zip(patterns["x"].rows, patterns["x"].cols)], dtype=int)
+    from_xdot = np.array([place[e] for e in zip(patterns["xdot"].rows, patterns["xdot"].cols)],
+                         dtype=int)
+    own_rows, own_cols = np.array(own, dtype=int).reshape(-1, 2).T
     rows, cols = [], []
-    for k in range(1, nodes):       # r at node k: d/dx_k, d/dx_k through x', d/dx_k-1, d/du_k
-        rows += [(k - 1) * nx + patterns[b].rows for b in ("x", "xdot", "xdot", "u")]
-        cols += [k * nx + patterns["x"].cols, k * nx + patterns["xdot"].cols,
-                 (k - 1) * nx + patterns["xdot"].cols, n_x + k * nu + patterns["u"].cols]
+    for k in range(1, nodes):       # r at node k: d/dx_k, d/dx_k-1 (through x'), d/du_k
+        rows += [(k - 1) * nx + own_rows, (k - 1) * nx + patterns["xdot"].rows,
+                 (k - 1) * nx + patterns["u"].rows]
+        cols += [k * nx + own_cols, (k - 1) * nx + patterns["xdot"].cols,
+                 n_x + k * nu + patterns["u"].cols]
     rows.append((nodes - 1) * nx + np.arange(len(fixed)))
     cols.append(fixed)
     times = np.linspace(0.0, DURATION, nodes)[1:]
@@ -120,7 +129,10 @@ def by_our_jacobians(path: Path, nodes: int) -> dict:
             x, u = split(z)
             j = dyn.residual_jacobians(x[1:], (x[1:] - x[:-1]) / h, u[1:], t=times,
                                        parameters=False).values
-            per_node = np.concatenate([j["x"], j["xdot"] / h, -j["xdot"] / h, j["u"]], axis=1)
+            at_node = np.zeros((nodes - 1, len(own)))
+            at_node[:, from_x] = j["x"]
+            at_node[:, from_xdot] += j["xdot"] / h
+            per_node = np.concatenate([at_node, -j["xdot"] / h, j["u"]], axis=1)
             return np.concatenate([per_node.ravel(), np.ones(len(fixed))])
 
     low, high = speed_bounds(dyn.states)
