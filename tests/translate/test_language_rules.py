@@ -727,6 +727,16 @@ def test_solve_of_second_derivatives_is_solved_by_lu_as_speeds_rates_are(tmp_pat
     jac = dynamics.residual_jacobians(x, np.zeros(4)).dense("xdot")[0]
     speeds = [1, 3]
     assert np.allclose(jac[np.ix_(speeds, speeds)], mass, rtol=1e-13)
+    # the model's own mass matrix and forcing (a Python user's path) are the same
+    expand = model.defs.explicit
+    symbols = {str(s): s for s in model.mass_matrix.applyfunc(expand).free_symbols
+               | model.forcing.applyfunc(expand).free_symbols}
+    point = {symbols[k]: v for k, v in dict(L1=l1, L2=l2, M1=m1, M2=m2, G=g, Q1=q1, Q2=q2,
+                                            **{"Q1'": w1, "Q2'": w2}).items() if k in symbols}
+    assert np.allclose(np.array(model.mass_matrix.applyfunc(expand).subs(point), dtype=float),
+                       mass, rtol=1e-13)
+    assert np.allclose(np.array(model.forcing.applyfunc(expand).subs(point),
+                                dtype=float).ravel(), forcing, rtol=1e-13)
     # the run integrates the same motion: scipy on the equations by hand
     from scipy.integrate import solve_ivp
 
