@@ -32,6 +32,7 @@ def test_the_pendulum_by_hand(pendulum):
     r = pendulum.residual([q, u], [qd, ud], [tq])
     assert np.allclose(r, [[qd - u, m * L ** 2 * ud - tq + m * g * L * math.sin(q)]],
                        rtol=1e-14)
+    assert np.allclose(pendulum.mass_matrix([q, u], [tq]), [[[m * L ** 2]]], rtol=1e-14)
     jac = pendulum.residual_jacobians([q, u], [qd, ud], [tq])
     assert np.allclose(jac.dense("x")[0], [[0, -1], [m * g * L * math.cos(q), 0]])
     assert np.allclose(jac.dense("xdot")[0], [[1, 0], [0, m * L ** 2]])

@@ -296,6 +296,13 @@ class Dynamics:
             rates[:, self._dynamic] = accelerations
         return rates, accelerations
 
+    def mass_matrix(self, x, u=None, p=None, t=0.0) -> np.ndarray:
+        """M of the dynamical rows at every node (N x n x n; n: the speeds whose rates
+        Kane's equations give): r's ∂/∂x' there, and what f's rates solve."""
+        x, u, t, _ = self._nodes(x, u, t)
+        values, _ = self._evaluated(x, u, p, t)
+        return self._mass_and_forcing(values)[0].copy()
+
     def residual(self, x, xdot, u=None, p=None, t=0.0) -> np.ndarray:
         """r(x, x', u, p, t) at every node (N x nx): 0 on the motion."""
         x, u, t, xdot = self._nodes(x, u, t, xdot)
