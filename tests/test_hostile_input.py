@@ -76,10 +76,25 @@ def test_a_full_disk_while_writing_rows(tmp_path, monkeypatch):
     from helpers import EXAMPLES
     model = autolev.load(EXAMPLES / "double_pendulum.al")
 
-    def full(self, k, row):
-        raise OSError(errno.ENOSPC, "No space left on device", "double_pendulum.1")
-    monkeypatch.setattr(files.OutputFiles, "write", full)
-    monkeypatch.setattr(files.OutputFiles, "write_rows", full)     # a block of rows
+    class Full:                     # the disk, full once the rows begin
+        def __init__(self, handle):
+            self.handle = handle
+
+        def write(self, text):
+            raise OSError(errno.ENOSPC, "No space left on device", "double_pendulum.1")
+
+        def close(self):
+            self.handle.close()
+
+    def full(real):
+        def writing(self, k, rows):
+            if not isinstance(self._handles[k], Full):
+                self._handles[k] = Full(self._handles[k])
+            return real(self, k, rows)
+        return writing
+    monkeypatch.setattr(files.OutputFiles, "write", full(files.OutputFiles.write))
+    monkeypatch.setattr(files.OutputFiles, "write_rows",              # a block of rows
+                        full(files.OutputFiles.write_rows))
     with pytest.raises(autolev.runtime.AutolevModelError, match="No space left on device"):
         model.simulate(out_dir=tmp_path / "out", TFINAL=0.1)
 
