@@ -8,59 +8,25 @@ steps relative to its value), wherever two neighbouring steps agree with each ot
 Where rounding swamps or fools the differences, CasADi's algorithmic derivatives of the
 same program decide the block (f's through r's, by a pivoted solve); without casadi
 such entries are counted undecided, not passed."""
-import sys
-import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import autolev
-from autolev.engine.errors import AutolevModelError, MissingValues
-from helpers import ROOT, SHARED
+from autolev.engine.errors import AutolevModelError
+from helpers.corpus_runs import corpus_cases, guarded, results_of, run_with_values
 from helpers.differences import central, disagreements
 
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
-
-sys.path.insert(0, str(ROOT / "bench"))
-import corpus as corpus_bench  # noqa: E402
-import journeys as journeys_bench  # noqa: E402
 
 LIMIT = 1500          # seconds for one model: build, run, form and compile its Jacobians
 INPUTS = {"TFINAL": 1}
 
 
-def check_model(args) -> dict:
+def check_model(case) -> dict:
     """One model: {'id', 'outcome' (not built / not run / agrees / failing), 'detail'}."""
-    import signal
-    ident, path, shipped = args
-    out = {"id": ident, "outcome": "agrees", "detail": ""}
-    signal.signal(signal.SIGALRM, corpus_bench._alarm)
-    signal.alarm(LIMIT)
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            _check(Path(path), shipped and Path(shipped), out)
-    except corpus_bench._Timeout:
-        out.update(outcome="failing", detail=f"did not finish in {LIMIT} s")
-    except Exception as exc:     # reported with the model's name, and the test fails
-        out.update(outcome="failing", detail=f"{type(exc).__name__}: {exc}"[:300])
-    finally:
-        signal.alarm(0)
-    return out
-
-
-def _run(model, path: Path, shipped: Path | None, rounds: int = 8):
-    """(result, values) of `simulate` over 1 s with the journeys' values."""
-    products = journeys_bench.read_model(path).products_of_inertia
-    values = dict(INPUTS)
-    for _ in range(rounds):
-        try:
-            return model.simulate(infile=shipped, **values), values
-        except MissingValues as exc:
-            values.update({name: float(v) for name, v in
-                           journeys_bench.rule_values(exc.names, products).items()})
-    raise AssertionError(f"still missing values after {rounds} rounds")
+    return guarded(_check, case, {"id": case[0], "outcome": "agrees", "detail": ""}, LIMIT)
 
 
 def _check(path: Path, shipped: Path | None, out: dict) -> None:
@@ -73,7 +39,7 @@ def _check(path: Path, shipped: Path | None, out: dict) -> None:
         out.update(outcome="not run", detail="no CODE DYNAMICS")
         return
     try:
-        result, values = _run(model, path, shipped)
+        result, values = run_with_values(model, path, shipped, INPUTS)
     except AutolevModelError as exc:
         out.update(outcome="not run", detail=str(exc).splitlines()[0][:120])
         return
@@ -172,20 +138,7 @@ def _casadi_jacobians(dynamics, x, xdot, u, p, t) -> dict | None:
 
 
 def test_every_corpus_models_jacobians_are_central_differences(corpus):
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-    listing = SHARED / "corpus" / "visible.tsv"
-    models = corpus_bench.corpus_models(corpus, listing)
-    shipped = journeys_bench.companions(listing)
-    cases = []
-    for ident, path in models:
-        found = journeys_bench.nearest(path, shipped.get(ident, []))
-        cases.append((ident, str(path), found and str(found)))
-    results = []
-    with ProcessPoolExecutor(2) as pool:
-        for done in as_completed([pool.submit(check_model, case) for case in cases]):
-            results.append(done.result())
-            r = results[-1]
-            print(f"[{len(results)}/{len(models)}] {r['outcome']} {r['id']}", flush=True)
+    results = results_of(check_model, corpus_cases(corpus))
     agreeing = [r for r in results if r["outcome"] == "agrees"]
     failing = [r for r in results if r["outcome"] == "failing"]
     print(f"\n{len(results)} models; {len(agreeing) + len(failing)} run their CODE "

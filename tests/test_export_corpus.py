@@ -6,9 +6,7 @@ when it has at most 12 speeds (independent and dependent) and sympy's KanesMetho
 its equations, else at the equations level saying why.  Each script, run where autolev
 cannot be imported, gives our equations at 20 random points to 1e-10 and `simulate`'s
 rows over 1 s to 1e-6."""
-import sys
 import tempfile
-import warnings
 from pathlib import Path
 
 import numpy as np
@@ -16,16 +14,12 @@ import pytest
 
 import autolev
 from autolev.export_mechanics import MOST_SPEEDS, export_sympy
-from autolev.engine.errors import AutolevModelError, MissingValues
-from helpers import ROOT, SHARED
+from autolev.engine.errors import AutolevModelError
+from helpers.corpus_runs import corpus_cases, guarded, results_of, run_with_values
 from helpers.sympy_scripts import (column_relative, equations_difference, rows_difference,
                                    run_script)
 
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
-
-sys.path.insert(0, str(ROOT / "bench"))
-import corpus as corpus_bench  # noqa: E402
-import journeys as journeys_bench  # noqa: E402
 
 LIMIT = 1500     # seconds for one model: build, run, export, the script's run (9seg_swing_vf: 670)
 # the rates at the equations level are solved through the mass matrix: its conditioning
@@ -37,40 +31,11 @@ RATES = 1e-8
 INPUTS = {"TFINAL": 1, "ABSERR": 1e-10, "RELERR": 1e-10}
 
 
-def export_and_compare(args) -> dict:
+def export_and_compare(case) -> dict:
     """One model: {'id', 'outcome' (not built / not run / exported / failing), 'level',
-    'speeds', 'detail'}; `shipped`: the .in its repository ships, or None."""
-    import signal
-    ident, path, shipped = args
-    out = {"id": ident, "outcome": "exported", "level": "", "speeds": 0, "detail": ""}
-    signal.signal(signal.SIGALRM, corpus_bench._alarm)
-    signal.alarm(LIMIT)
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            _compare(Path(path), shipped and Path(shipped), out)
-    except corpus_bench._Timeout:
-        out.update(outcome="failing", detail=f"did not finish in {LIMIT} s")
-    except Exception as exc:     # reported with the model's name, and the test fails
-        out.update(outcome="failing", detail=f"{type(exc).__name__}: {exc}"[:300])
-    finally:
-        signal.alarm(0)
-    return out
-
-
-def _values(model, path: Path, shipped: Path | None, rounds: int = 8):
-    """(result, values) of `simulate` over 1 s with the journeys' values: INPUT, the
-    shipped .in, then by rule for the constants the run names as having none."""
-    parsed = journeys_bench.read_model(path)      # the model loaded: it parses
-    products = parsed.products_of_inertia
-    values = dict(INPUTS)
-    for _ in range(rounds):
-        try:
-            return model.simulate(method="dop853", infile=shipped, **values), values
-        except MissingValues as exc:
-            values.update({name: float(v) for name, v in
-                           journeys_bench.rule_values(exc.names, products).items()})
-    raise AssertionError(f"still missing values after {rounds} rounds")
+    'speeds', 'detail'}."""
+    out = {"id": case[0], "outcome": "exported", "level": "", "speeds": 0, "detail": ""}
+    return guarded(_compare, case, out, LIMIT)
 
 
 def _trusted_rows(model, run, shipped: Path | None, values: dict) -> int:
@@ -100,7 +65,7 @@ def _compare(path: Path, shipped: Path | None, out: dict) -> None:
         return
     out["speeds"] = len(model.speeds) + len(model.dependent_speeds)
     try:
-        result, values = _values(model, path, shipped)
+        result, values = run_with_values(model, path, shipped, INPUTS, method="dop853")
     except AutolevModelError as exc:
         out.update(outcome="not run", detail=str(exc).splitlines()[0][:120])
         return
@@ -141,21 +106,7 @@ def _compare(path: Path, shipped: Path | None, out: dict) -> None:
 
 
 def test_every_corpus_model_that_runs_exports_and_agrees(corpus):
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-    listing = SHARED / "corpus" / "visible.tsv"
-    models = corpus_bench.corpus_models(corpus, listing)
-    shipped = journeys_bench.companions(listing)
-    cases = []
-    for ident, path in models:
-        found = journeys_bench.nearest(path, shipped.get(ident, []))
-        cases.append((ident, str(path), found and str(found)))
-    results = []
-    with ProcessPoolExecutor(2) as pool:
-        for done in as_completed([pool.submit(export_and_compare, case) for case in cases]):
-            results.append(done.result())
-            r = results[-1]
-            print(f"[{len(results)}/{len(models)}] {r['outcome']} {r['level']} {r['id']}",
-                  flush=True)
+    results = results_of(export_and_compare, corpus_cases(corpus))
     exported = [r for r in results if r["outcome"] in ("exported", "failing")]
     mechanics = [r for r in exported if r["level"] == "mechanics"]
     failing = [r for r in results if r["outcome"] == "failing"]
