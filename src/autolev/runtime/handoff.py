@@ -361,16 +361,12 @@ def to_opty(model, infile=None, overrides=None, controls=None) -> OptyParts:
     integrates ordinary differential equations in the state."""
     import sympy.physics.mechanics as me
 
-    from .numerics.command import undefined_specified
-    from .numerics.inputs import INTEGRATION
+    from .numerics.command import with_controls_given
 
     varying = [str(name) for name in controls or ()]
-    snapshot = model.snapshot_for(model.command_to_linearize())
-    # a constant named as a control is a trajectory: its value is never read
-    given = {name: 0.0 for name in varying if model.names_a_quantity(name)
-             and name.strip().upper() not in INTEGRATION
-             and undefined_specified(snapshot, name) is None}
-    _, h, constants = _with_values(model, infile, {**given, **(overrides or {})} or None)
+    given = with_controls_given(model.snapshot_for(model.command_to_linearize()), varying,
+                                overrides)
+    _, h, constants = _with_values(model, infile, given or None)
     if h.dependent or h.auxiliary:
         raise AutolevModelError("opty integrates ordinary differential equations in the "
                                 "state: this model has dependent or auxiliary speeds ("

@@ -217,6 +217,17 @@ def given_specified(snapshot, command, specified, overrides):
     return entry[1], functions, rest
 
 
+def with_controls_given(snapshot, controls, overrides) -> dict:
+    """`overrides` with a placeholder value for each of `controls` that is a parameter,
+    not a specified quantity: a control takes its value from the nodes and its input is
+    never read, so it needs none (gait2d's joint moments are VARIABLES without a value)."""
+    placeholders = {name: 0.0 for name in controls or ()
+                    if isinstance(name, str) and name.strip().upper() not in INTEGRATION
+                    and snapshot.names_a_quantity(name)
+                    and undefined_specified(snapshot, name) is None}
+    return {**placeholders, **(overrides or {})}
+
+
 def undefined_specified(snapshot, name: str):
     """The SPECIFIED quantity `name` (Q1', Q1P) names when the model leaves it undefined."""
     if not isinstance(name, str) or not snapshot.names_a_quantity(name) \

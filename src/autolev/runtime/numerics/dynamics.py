@@ -26,9 +26,9 @@ from .. import symbols as S
 from ...engine.errors import AutolevModelError
 from ...engine.options import RunOptions
 from . import codegen
-from .command import given_specified, program_of, undefined_specified
+from .command import given_specified, program_of, with_controls_given
 from .compiled import compile_program
-from .inputs import INTEGRATION, display_name
+from .inputs import display_name
 from .prepare import prepare_command
 from .snapshot import ModelSnapshot
 from ..steps import SlowStep
@@ -153,44 +153,41 @@ class Dynamics:
             return self._derivatives[parameters]
         system = self._system
         with self._definitions(), self._jacobians_step:
-            order = sorted(self._residual_rows())
             groups = [self._differentiated("x, u")] + [self._differentiated("p")] * parameters
             jacobian = [[d for part in parts for d in part] for parts in zip(*groups)]
-            entries = sorted((order[i], j) for i, row in enumerate(jacobian)
-                             for j, d in enumerate(row) if d != 0)
-            at = {(order[i], j): d for i, row in enumerate(jacobian) for j, d in enumerate(row)}
-            rhs, rates = list(system.rhs_exprs), list(system.implicit_unknowns)
-            program = codegen.Program(self._given() | {"a": rates},
-                                      rhs + [at[e] for e in entries], system.defs,
-                                      dict(system.aux_fixed)).build()
+            nonzero = [(i, j, d) for i, row in enumerate(jacobian)     # row-major
+                       for j, d in enumerate(row) if d != 0]
+            program = codegen.Program(self._given() | {"a": list(system.implicit_unknowns)},
+                                      list(system.rhs_exprs) + [d for _, _, d in nonzero],
+                                      system.defs, dict(system.aux_fixed)).build()
             function = compile_program(program, self._backend_asked,
                                        "autolev_dynamics_jacobian")
-        entries = np.array(entries, dtype=int).reshape(-1, 2)
+        entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
         self._derivatives[parameters] = self._sparsity(function, entries, parameters)
         return self._derivatives[parameters]
 
-    def _residual_rows(self) -> dict:
-        """{state row: the expression differentiated}: -g for a kinematical row, row k
-        of M a - F (a: the symbols of the dynamical rows' rates) for a dynamical one."""
+    def _residual_rows(self) -> list:
+        """The expressions differentiated, one per state row: -g for a kinematical row,
+        row k of M a - F (a: the symbols of the dynamical rows' rates) for a dynamical
+        one."""
         nx, _, _, n = self._sizes
         rhs = list(self._system.rhs_exprs)
         mass, forcing = rhs[nx:nx + n * n], rhs[nx + n * n:]
         rates = list(self._system.implicit_unknowns)
-        rows = {int(i): -rhs[i] for i in self._kinematic}
+        rows = [-rhs[i] for i in range(nx)]          # (a dynamical row's is replaced)
         for k, row in enumerate(self._dynamic):
-            rows[int(row)] = sm.Add(*[mass[k * n + j] * rates[j] for j in range(n)
-                                      if mass[k * n + j] != 0]) - forcing[k]
+            rows[row] = sm.Add(*[mass[k * n + j] * rates[j] for j in range(n)
+                                 if mass[k * n + j] != 0]) - forcing[k]
         return rows
 
     def _differentiated(self, group: str) -> list:
         """The residual rows' derivatives (rows in state order) in the columns of `group`
         ("x, u" or "p"): each group once, for the programs with and without p."""
         if group not in self._by_columns:
-            rows = self._residual_rows()
             variables = (list(self._system.states) + self._control_symbols if group == "x, u"
                          else self._parameter_symbols)
-            self._by_columns[group] = self._system.defs.jacobian(
-                [rows[i] for i in sorted(rows)], variables)
+            self._by_columns[group] = self._system.defs.jacobian(self._residual_rows(),
+                                                                 variables)
         return self._by_columns[group]
 
     def _sparsity(self, function, entries: np.ndarray, parameters: bool) -> "_Derivatives":
@@ -381,13 +378,7 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
         raise AutolevModelError("specified: the dynamics take values or expressions for "
                                 "specified quantities, not Python functions: "
                                 + ", ".join(map(display_name, functions)))
-    # a parameter named as a control takes its value from the nodes: its input is never
-    # read, so it needs none (gait2d's joint moments are VARIABLES without a value)
-    overrides = {**{name: 0.0 for name in controls or ()
-                    if isinstance(name, str) and name.strip().upper() not in INTEGRATION
-                    and snapshot.names_a_quantity(name)
-                    and undefined_specified(snapshot, name) is None},
-                 **(overrides or {})}
+    overrides = with_controls_given(snapshot, controls, overrides)
     prepared = prepare_command(snapshot, command, RunOptions(
         backend=backend, infile=infile, overrides=overrides, missing_values=missing_values,
         progress=progress, recursion=False), warn_unassigned=False, compile_functions=False)
