@@ -43,6 +43,9 @@ random times, against the run's own right-hand side; 1e-8 of max(1, |value|)):
   r:module     the converted module's model
   r:script     the `convert --to sympy` script's mass matrix and forcing
   r:dynamics   model.dynamics().explicit: the trajectory optimizer's compiled f(x, u, p, t)
+  r:df         model.dynamics().explicit_jacobians of a tree (by its articulated-body
+               recursion) against recursion=False's (-M^-1 times the Jacobian of
+               M a - F), within MATRIX_TOLERANCE of the largest entry of each block
 
   The model-level equations (M,f, explicit, symsys) are those of the model as it
   stands; they are compared for a CODE DYNAMICS whose definitions are the model's last
@@ -96,7 +99,7 @@ from journeys import Cell as JourneyCell  # noqa: E402
 ROW_PATHS = ("warm", "no-cache", "foreground", "python", "api", "mass-matrix", "module",
              "code", "script")
 RATE_PATHS = ("r:python", "r:recursion", "r:M,f", "r:explicit", "r:symsys", "r:module",
-              "r:script", "r:dynamics")
+              "r:script", "r:dynamics", "r:df")
 LINEARIZE_PATHS = ("l:warm", "l:no-cache", "l:c")
 PATHS = ROW_PATHS + RATE_PATHS + LINEARIZE_PATHS
 RATE_TOLERANCE = 1e-8
@@ -425,7 +428,8 @@ class ModelPaths:
             if got["mark"] != "ok":
                 cells[p] = Cell(got["mark"], got.get("detail", ""))
                 continue
-            cells[p] = compare_rates(reference, got)
+            cells[p] = (compare_jacobians(got) if p == "r:df"
+                        else compare_rates(reference, got))
 
     def linearizations(self) -> None:
         cells = self.row.cells
@@ -518,6 +522,19 @@ def compare_rates(reference: dict, got: dict) -> Cell:
         return Cell("DIFF", f"rates differ by {worst:.3g} of max(1, |rate|)"
                     + (f" (allowed {allowed:.2g}: cond(M) "
                        f"{reference['condition']:.2g})" if allowed > RATE_TOLERANCE else ""))
+    return Cell("~" if worst else "=", f"{worst:.1g}" if worst else "")
+
+
+def compare_jacobians(got: dict) -> Cell:
+    """f's Jacobians by the recursion against the mass matrix's, block by block."""
+    worst = 0.0
+    for ours, theirs in got["blocks"].values():
+        a, b = np.array(ours), np.array(theirs)
+        if b.size:
+            gap = float(np.max(np.abs(a - b)) / max(1.0, float(np.max(np.abs(b)))))
+            worst = max(worst, gap if math.isfinite(gap) else math.inf)
+    if not math.isfinite(worst) or worst > MATRIX_TOLERANCE:
+        return Cell("DIFF", f"f's Jacobians differ by {worst:.3g} of their largest entry")
     return Cell("~" if worst else "=", f"{worst:.1g}" if worst else "")
 
 
@@ -677,6 +694,22 @@ def rates(path: Path, options: list, count: int, module: Path | None,
                               np.array([t for t, _ in points]))
         return {"mark": "ok", "states": dyn.states, "rates": rates_.tolist()}
     taking("dynamics", by_dynamics)
+
+    def jacobians_by_both():
+        from autolev.runtime.numerics.dynamics import dynamics
+        x = np.array([x for _, x in points])
+        t = np.array([t for t, _ in points])
+        by_tree = dynamics(model.snapshot_for(command), infile=infile,
+                           overrides=values or None).explicit_jacobians(x, None, None, t)
+        if by_tree.by != "recursion":
+            raise _NotApplicable("not a tree: f's Jacobians by the mass matrix alone")
+        by_mass = dynamics(model.snapshot_for(command), infile=infile,
+                           overrides=values or None,
+                           recursion=False).explicit_jacobians(x, None, None, t)
+        return {"mark": "ok", "blocks": {b: (by_tree.dense(b).tolist(),
+                                             by_mass.dense(b).tolist())
+                                         for b in by_mass.values}}
+    taking("df", jacobians_by_both)
     if module is not None:
         def from_module():
             from autolev.loader import load_python

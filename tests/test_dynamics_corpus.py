@@ -7,7 +7,8 @@ test: each entry within 1e-8 of its row's size at the step that suits it (a para
 steps relative to its value), wherever two neighbouring steps agree with each other.
 Where rounding swamps or fools the differences, CasADi's algorithmic derivatives of the
 same program decide the block (f's through r's, by a pivoted solve); without casadi
-such entries are counted undecided, not passed."""
+such entries are counted undecided, not passed.  A tree's f's Jacobians, by its
+recursion, also equal those by its mass matrix."""
 from pathlib import Path
 
 import numpy as np
@@ -97,7 +98,11 @@ def _check(path: Path, shipped: Path | None, out: dict) -> None:
         undecided += cannot
         if disagree:
             wrong.append(f"{name} ({disagree} entries)")
+    if explicit.by == "recursion":      # a tree's: the mass matrix's route as well
+        wrong += _routes_differ(model.dynamics(infile=shipped, overrides=values,
+                                               recursion=False), explicit, x, u, p, t, ill)
     out["detail"] = (f"{len(dynamics.states)} states, {len(dynamics.parameters)} parameters"
+                     + f"; f's Jacobians by the {explicit.by}"
                      + (f"; decided by CasADi's derivatives: {', '.join(decided)}"
                         if decided else "")
                      + (f"; {undecided} entries undecided (rounding"
@@ -106,6 +111,21 @@ def _check(path: Path, shipped: Path | None, out: dict) -> None:
                      + (f"; differ: {', '.join(wrong)}" if wrong else ""))
     if wrong:
         out["outcome"] = "failing"
+
+
+def _routes_differ(mass, by_tree, x, u, p, t, ill: bool) -> list:
+    """The blocks where f's Jacobians by the recursion and by -M^-1 times those of
+    M a - F differ beyond 1e-8 of their row's size (nothing where M's condition alone
+    could part them)."""
+    by_mass = mass.explicit_jacobians(x, u, p, t)
+    wrong = []
+    for block in by_mass.values:
+        expected = by_mass.dense(block)
+        scale = np.maximum(1.0, np.abs(expected).max(axis=-1, keepdims=True))
+        apart = int((np.abs(by_tree.dense(block) - expected) > 1e-8 * scale).sum())
+        if apart and not ill:
+            wrong.append(f"df/d{block} by the recursion and by M a - F ({apart} entries)")
+    return wrong
 
 
 def _casadi_jacobians(dynamics, x, xdot, u, p, t) -> dict | None:

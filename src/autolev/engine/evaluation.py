@@ -15,11 +15,11 @@ from .massmatrix import SingularMassMatrix, solve_mass_matrix, symmetric
 
 def pivot_ratios(rhs_out: np.ndarray, pivot_count: int) -> np.ndarray:
     """A recursion's pivots over the entries they come from, the last outputs of its
-    right-hand side (pivots, then entries; NaN for 0 over 0)."""
-    end = len(rhs_out)
-    pivots = rhs_out[end - 2 * pivot_count:end - pivot_count]
+    right-hand side (pivots, then entries; NaN for 0 over 0), along the last axis."""
+    end = rhs_out.shape[-1]
+    pivots = rhs_out[..., end - 2 * pivot_count:end - pivot_count]
     with np.errstate(divide="ignore", invalid="ignore"):
-        return pivots / rhs_out[end - pivot_count:]
+        return pivots / rhs_out[..., end - pivot_count:]
 
 
 def _ready(pending, wait: bool) -> bool:

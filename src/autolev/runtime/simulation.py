@@ -264,7 +264,7 @@ class SimulationMixin:
 
     def dynamics(self, controls=None, *, code=None, specified=None, backend: str = "auto",
                  infile=None, overrides=None, missing_values: str = "refuse",
-                 progress=None):
+                 progress=None, recursion: bool = True):
         """The equations of motion of a CODE DYNAMICS (`code`: which; default the first)
         as compiled functions with exact sparse Jacobians, evaluated at many nodes in one
         call, for trajectory optimization: explicit x' = f(x, u, p, t) and implicit
@@ -272,13 +272,14 @@ class SimulationMixin:
         specified quantities that are u (default: all without a definition);
         `specified`: {name: number or sympy expression} for others; the parameters p
         are the constants without a definition, their values from INPUT, `infile` and
-        `overrides` as for `simulate`."""
+        `overrides` as for `simulate`; `recursion=False`: f's Jacobians from M a - F even
+        where the bodies form a tree (whose are by the articulated-body recursion)."""
         from .numerics.dynamics import dynamics
         try:
             return dynamics(self.snapshot_for(self.command_to_linearize(code)), controls,
                             specified=specified, backend=backend, infile=infile,
                             overrides=overrides, missing_values=missing_values,
-                            progress=progress)
+                            progress=progress, recursion=recursion)
         finally:
             self.keep_built()
 

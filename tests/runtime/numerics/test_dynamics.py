@@ -105,6 +105,38 @@ def test_sympys_derivatives_of_the_mass_matrix_and_forcing():
     assert np.allclose(jac.dense("p")[0][rows], by_sympy_p, rtol=1e-12, atol=1e-12)
 
 
+TREES = ["cart_pendulum", "double_pendulum", "mass_spring_damper", "nlink_pendulum",
+         "simple_pendulum"]
+
+
+@pytest.mark.parametrize("name", TREES)
+def test_a_trees_jacobians_by_its_recursion_are_those_of_the_mass_matrix(name):
+    # two derivations of f's Jacobians: the articulated-body recursion's accelerations
+    # differentiated, and -M^-1 times the Jacobian of M a - F
+    model = autolev.load(EXAMPLES / f"{name}.al")
+    tree, mass = model.dynamics(), model.dynamics(recursion=False)
+    rng = np.random.default_rng(29)
+    x = 0.7 * rng.normal(size=(5, len(tree.states)))
+    u = rng.normal(size=(5, len(tree.controls)))
+    for parameters in (True, False):
+        by_tree = tree.explicit_jacobians(x, u, parameters=parameters)
+        by_mass = mass.explicit_jacobians(x, u, parameters=parameters)
+        assert (by_tree.by, by_mass.by) == ("recursion", "mass matrix")
+        for block in by_mass.values:
+            expected = by_mass.dense(block)
+            assert np.allclose(by_tree.dense(block), expected, rtol=0,
+                               atol=1e-11 * np.abs(expected).max(initial=1.0)), block
+
+
+def test_a_trees_singular_mass_matrix_is_named_by_both_derivations():
+    model = autolev.load(EXAMPLES / "simple_pendulum.al")
+    for dynamics in (model.dynamics(), model.dynamics(recursion=False)):
+        massless = np.where(np.array(dynamics.parameters) == "M", 0.0,
+                            dynamics.parameter_values)
+        with pytest.raises(AutolevModelError, match="mass matrix is singular at a node"):
+            dynamics.explicit_jacobians([[0.3, 0.1]], p=massless)
+
+
 def test_the_python_tier_gives_the_c_tiers_numbers(tmp_path):
     from autolev.engine import clibrary
     if clibrary.compiler() is None:

@@ -10,26 +10,32 @@ constants without a definition.  Two forms:
 
 r's row for a state whose rate is given (q' = g) is x'_i - g_i; its row for a speed
 whose rate Kane's equations give is row k of M a - F (a: those speeds' rates, M and F
-of the model's own forming), so r is linear in x'.  Every derivative is symbolic,
+of the model's own forming), so r is linear in x'.  f's Jacobians of a model whose
+bodies form a tree (runtime/articulated.py) are those of the articulated-body
+recursion's accelerations, as a run integrates them: their program grows as the
+recursion (n^2 entries of a few terms each), where -M^-1 times the Jacobian of M a - F
+grows as M's entries times the variables.  Every derivative is symbolic,
 through the Z's (`Definitions.jacobian`), printed once and compiled (C where there is a
 compiler, else Python); ∂r/∂x' is M's entries and ones.  The Jacobians are sparse: each
 comes with its pattern (rows, cols) and values per node.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import sympy as sm
 
 from .. import symbols as S
 from ...engine.errors import AutolevModelError
+from ...engine.evaluation import pivot_ratios
 from ...engine.options import RunOptions
 from . import codegen
-from .command import given_specified, program_of, with_controls_given
+from .command import (equations_and_unknowns, given_specified, program_of,
+                      with_controls_given)
 from .compiled import compile_program
 from .inputs import display_name
-from .prepare import prepare_command
+from .prepare import SystemBuild, numeric_system, prepare_command
 from .snapshot import ModelSnapshot
 from ..steps import SlowStep
 
@@ -63,10 +69,13 @@ class Pattern:
 @dataclass
 class Jacobians:
     """The sparse Jacobians of one form at N nodes: values (N x nnz) by block, with the
-    blocks' patterns ("x", "xdot" (implicit form only), "u", "p")."""
+    blocks' patterns ("x", "xdot" (implicit form only), "u", "p"), and what they were
+    differentiated from: "recursion" (a tree's accelerations by the articulated-body
+    recursion) or "mass matrix" (M a - F)."""
 
     values: dict
     patterns: dict
+    by: str
 
     def dense(self, block: str) -> np.ndarray:
         return self.patterns[block].dense(self.values[block])
@@ -90,6 +99,20 @@ class _Derivatives:
     mass_entries: np.ndarray    # ... and which entry of M (row-major) each one is
 
 
+@dataclass(frozen=True)
+class _TreeDerivatives:
+    """f's Jacobian program by the articulated-body recursion: inputs (t, x, p, s);
+    outputs f's rows, the recursion's pivots and the entries they come from (a pivot
+    that is not positive makes M singular), then the structural nonzeros of f's
+    Jacobian in (x, u, p), one per `entries` row (state row, column), row-major."""
+
+    function: object
+    pivot_count: int
+    entries: np.ndarray
+    patterns: dict              # "x", "u", "p" (entries' order)
+    blocks: dict                # "x", "u", "p" -> positions in entries
+
+
 class Dynamics:
     """The compiled equations of motion of one CODE DYNAMICS, with exact Jacobians (see
     the module's text).  Arrays have one row per node: x (N x nx), x' (N x nx), u (N x
@@ -97,8 +120,11 @@ class Dynamics:
     model's values).  One node may be given as 1-D arrays."""
 
     def __init__(self, system, controls: list, parameter_values: np.ndarray, backend: str,
-                 definitions, progress=None, what: str = "CODE DYNAMICS"):
+                 definitions, tree=lambda: None, progress=None, what: str = "CODE DYNAMICS"):
         self._system = system
+        # () -> the command's system with the recursion's accelerations, None for a model
+        # that is not a tree; taken when f's Jacobians are first asked for
+        self._tree = tree
         self._control_symbols = list(controls)
         self._definitions = definitions      # () -> the command's view of the definitions
         # the program's inputs besides t and x: the parameters left, and the specified
@@ -127,6 +153,7 @@ class Dynamics:
         # the parameters' columns or without (True, False)
         self._derivatives: dict[bool, _Derivatives] = {}
         self._by_columns: dict[str, list] = {}     # see _differentiated
+        self._tree_derivatives: dict[bool, _TreeDerivatives | None] = {}
 
     def _given(self) -> dict:
         """The program's inputs: time, state, parameters, specified quantities."""
@@ -195,11 +222,7 @@ class Dynamics:
         speed's row every entry of every dynamical row (M^-1 mixes them)."""
         nx, nu, npar, n = self._sizes
         bounds = self._columns(parameters)
-        blocks, patterns = {}, {}
-        for name, (lo, hi) in bounds.items():
-            blocks[name] = np.nonzero((entries[:, 1] >= lo) & (entries[:, 1] < hi))[0]
-            patterns[name] = Pattern(entries[blocks[name], 0], entries[blocks[name], 1] - lo,
-                                     (nx, hi - lo))
+        blocks, patterns = self._blocks(entries, parameters)
         mask = np.zeros((nx, nx + nu + npar * parameters), dtype=bool)
         mask[entries[:, 0], entries[:, 1]] = True
         if len(self._dynamic):
@@ -219,6 +242,51 @@ class Dynamics:
                                 dtype=int)
         return _Derivatives(function, entries, patterns, explicit, blocks,
                             np.nonzero(kinds == 1)[0], mass_at, mass_entries)
+
+    def _blocks(self, entries: np.ndarray, parameters: bool) -> tuple[dict, dict]:
+        """Which of the (row, column) `entries` each block ("x", "u", "p") holds, and the
+        blocks' patterns."""
+        blocks, patterns = {}, {}
+        for name, (lo, hi) in self._columns(parameters).items():
+            blocks[name] = np.nonzero((entries[:, 1] >= lo) & (entries[:, 1] < hi))[0]
+            patterns[name] = Pattern(entries[blocks[name], 0], entries[blocks[name], 1] - lo,
+                                     (self._sizes[0], hi - lo))
+        return blocks, patterns
+
+    def _formed_tree_derivatives(self, parameters: bool) -> "_TreeDerivatives | None":
+        """f's Jacobian program by the recursion (once), or None: the model is not a
+        tree, or its recursion reads an input the mass matrix's form does not (then
+        f's Jacobians come from M a - F)."""
+        if parameters in self._tree_derivatives:
+            return self._tree_derivatives[parameters]
+        formed = None
+        with self._definitions(), self._jacobians_step:
+            tree = self._tree()
+            if tree is not None and set(tree.params) <= set(self._system.params) \
+                    and set(tree.specified) <= set(self._input_symbols):
+                formed = self._tree_program(tree, parameters)
+        self._tree_derivatives[parameters] = formed
+        return formed
+
+    def _tree_program(self, tree, parameters: bool) -> _TreeDerivatives:
+        nx, _, _, n = self._sizes
+        rhs = list(tree.rhs_exprs)
+        rates = rhs[:nx]
+        for k, at in enumerate(tree.unknown_positions):
+            rates[at] = rhs[nx + n * n + k]
+        variables = list(self._system.states) + self._control_symbols + (
+            self._parameter_symbols if parameters else [])
+        jacobian = tree.defs.jacobian(rates, variables)
+        nonzero = [(i, j, d) for i, row in enumerate(jacobian) for j, d in enumerate(row)
+                   if d != 0]
+        program = codegen.Program(self._given(), rates + rhs[nx + n * n + n:]
+                                  + [d for _, _, d in nonzero],
+                                  tree.defs, dict(tree.aux_fixed)).build()
+        function = compile_program(program, self._backend_asked,
+                                   "autolev_dynamics_tree_jacobian")
+        entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
+        blocks, patterns = self._blocks(entries, parameters)
+        return _TreeDerivatives(function, tree.pivot_count, entries, patterns, blocks)
 
     def _columns(self, parameters: bool) -> dict:
         """Each block's columns (lo, hi) among the Jacobian's (x, u, p or not)."""
@@ -244,31 +312,35 @@ class Dynamics:
         """The right-hand side's values at every node (N x (nx + n^2 + n)), and with
         `rates` (N x n: the dynamical rows' a) the Jacobian program's entries (N x
         entries), else None."""
-        nx, nu, npar, n = self._sizes
+        nx, _, _, n = self._sizes
+        n_rhs = nx + n * n + n
+        if rates is None:
+            return self._called(self._values, n_rhs, x, u, p, t), None
+        derivatives = self._formed_derivatives(parameters)
+        out = self._called(derivatives.function, n_rhs + len(derivatives.entries), x, u, p,
+                           t, np.ascontiguousarray(rates, dtype=float).reshape(-1, n))
+        return out[:, :n_rhs], out[:, n_rhs:]
+
+    def _called(self, function, width: int, x, u, p, t, rates=None) -> np.ndarray:
+        """A compiled program's outputs (N x width) at every node, from t, x, p, the
+        specified quantities (the controls u, the rest 0) and, when given, a."""
+        npar = self._sizes[2]
         p = self.parameter_values if p is None else np.asarray(p, dtype=float)
         if p.shape != (npar,):
             raise ValueError(f"p: {npar} parameters ({', '.join(self.parameters)}), "
                              f"not {p.shape}")
-        n_rhs, count = nx + n * n + n, x.shape[0]
+        count = x.shape[0]
         inputs = np.zeros((count, len(self._input_symbols)))
         inputs[:, self._control_positions] = u
         arrays = [np.ascontiguousarray(t).reshape(count, 1), np.ascontiguousarray(x), p,
-                  inputs]
-        if rates is None:
-            function, width = self._values, n_rhs
-        else:
-            derivatives = self._formed_derivatives(parameters)
-            function, width = derivatives.function, n_rhs + len(derivatives.entries)
-            arrays.append(np.ascontiguousarray(rates, dtype=float).reshape(count, n))
+                  inputs] + ([] if rates is None else [rates])
         out = np.empty((count, width))
         if self.backend == "c":             # every node in one call of the C
             function.call.rows(arrays, [True, True, False] + [True] * (len(arrays) - 3), out)
         else:
             for k in range(count):
                 function.call(*[a if a.ndim == 1 else a[k] for a in arrays], out[k])
-        if rates is None:
-            return out, None
-        return out[:, :n_rhs], out[:, n_rhs:]
+        return out
 
     def _mass_and_forcing(self, values):
         """M and F at every node, from the right-hand side's values, or (dM, dF) from its
@@ -327,16 +399,19 @@ class Dynamics:
         ddot = np.empty((x.shape[0], d.patterns["xdot"].nnz))
         ddot[:, d.ones] = 1.0
         ddot[:, d.mass_at] = values[:, nx + d.mass_entries]
-        return Jacobians(blocks | {"xdot": ddot}, dict(d.patterns))
+        return Jacobians(blocks | {"xdot": ddot}, dict(d.patterns), "mass matrix")
 
     def explicit_jacobians(self, x, u=None, p=None, t=0.0,
                            parameters: bool = True) -> Jacobians:
         """∂f/∂x, ∂f/∂u, and with `parameters` ∂f/∂p, at every node, sparse (see
-        Jacobians): a speed's row is
+        Jacobians): a tree's by its recursion, else a speed's row is
         -M^-1 ∂(M a - F) at f's accelerations a, so it has every entry its coupled rows
         have."""
         x, u, t, _ = self._nodes(x, u, t)
         nx, nu, npar, n = self._sizes
+        tree = self._formed_tree_derivatives(parameters) if n else None
+        if tree is not None:
+            return self._tree_jacobians(tree, x, u, p, t)
         values, _ = self._evaluated(x, u, p, t)
         _, accelerations = self._rates(values)
         count = x.shape[0]
@@ -352,7 +427,18 @@ class Dynamics:
         blocks = {name: dense[:, d.explicit_patterns[name].rows,
                               d.explicit_patterns[name].cols + lo]
                   for name, (lo, _) in self._columns(parameters).items()}
-        return Jacobians(blocks, dict(d.explicit_patterns))
+        return Jacobians(blocks, dict(d.explicit_patterns), "mass matrix")
+
+
+    def _tree_jacobians(self, tree: _TreeDerivatives, x, u, p, t) -> Jacobians:
+        nx = self._sizes[0]
+        head = nx + 2 * tree.pivot_count
+        out = self._called(tree.function, head + len(tree.entries), x, u, p, t)
+        if not np.all(pivot_ratios(out[:, :head], tree.pivot_count) > 0):
+            raise AutolevModelError("the mass matrix is singular at a node")
+        entries = out[:, head:]
+        return Jacobians({name: entries[:, at] for name, at in tree.blocks.items()},
+                         dict(tree.patterns), "recursion")
 
 
 def _solved(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
@@ -365,13 +451,14 @@ def _solved(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
 
 def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: str = "auto",
              infile=None, overrides=None, missing_values: str = "refuse",
-             progress=None) -> Dynamics:
+             progress=None, recursion: bool = True) -> Dynamics:
     """The snapshot's command's Dynamics.  `controls`: names of the controls u: specified
     quantities the program reads without a definition (default: all of those) or
     parameters, which then vary from node to node; `specified`: {name: number or sympy
     expression} for the specified quantities that are no controls (the rest are 0).
     The parameters' values come from INPUT, `infile` and `overrides` ({name: value} in
-    the quantities' own units), as a run takes them."""
+    the quantities' own units), as a run takes them.  `recursion=False`: f's Jacobians
+    from M a - F even for a tree (as a run's RunOptions.recursion)."""
     command, functions, overrides = given_specified(snapshot, snapshot.command, specified,
                                                     overrides)
     if functions:
@@ -379,9 +466,10 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
                                 "specified quantities, not Python functions: "
                                 + ", ".join(map(display_name, functions)))
     overrides = with_controls_given(snapshot, controls, overrides)
-    prepared = prepare_command(snapshot, command, RunOptions(
-        backend=backend, infile=infile, overrides=overrides, missing_values=missing_values,
-        progress=progress, recursion=False), warn_unassigned=False, compile_functions=False)
+    options = RunOptions(backend=backend, infile=infile, overrides=overrides,
+                         missing_values=missing_values, progress=progress, recursion=False)
+    prepared = prepare_command(snapshot, command, options, warn_unassigned=False,
+                               compile_functions=False)
     system = prepared.system
     if not system.nstate:
         raise AutolevModelError(f"CODE DYNAMICS {command.filename} integrates nothing: "
@@ -391,9 +479,18 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
 
     def definitions():
         return snapshot.definitions.as_of(program.definitions)
+
+    def tree():
+        """The command's system with a tree's accelerations by the recursion (its
+        expressions alone: no outputs, nothing compiled), or None."""
+        solving = equations_and_unknowns(command.args, command.kind.upper())
+        build = SystemBuild.of(replace(options, recursion=True))
+        recursive = numeric_system(snapshot, command, (), (), solving, build)
+        return recursive if recursive.pivot_count else None
     values = prepared.inputs.vector([p for p in system.params if p not in set(chosen)])
     with definitions():
-        return Dynamics(system, chosen, values, backend, definitions, progress,
+        return Dynamics(system, chosen, values, backend, definitions,
+                        tree if recursion else (lambda: None), progress,
                         f"CODE DYNAMICS {command.filename}")
 
 
