@@ -429,7 +429,6 @@ class Dynamics:
                   for name, (lo, _) in self._columns(parameters).items()}
         return Jacobians(blocks, dict(d.explicit_patterns), "mass matrix")
 
-
     def _tree_jacobians(self, tree: _TreeDerivatives, x, u, p, t) -> Jacobians:
         nx = self._sizes[0]
         head = nx + 2 * tree.pivot_count
