@@ -45,7 +45,7 @@ def one(ident: str, path: Path, python: str, limit: float) -> dict:
             row.update(outcome="FAIL", detail=f"convert took over {limit:g} s")
         elif made.returncode in (1, 2) and "internal error" not in made.stderr \
                 and "Traceback" not in made.stderr:
-            row.update(outcome="refused", detail=journeys._last_line(made.stderr))
+            row.update(outcome="refused", detail=_reason(made.stderr))
         elif made.returncode != 0:
             row.update(outcome="FAIL", detail=journeys._last_line(made.stderr))
         else:
@@ -63,6 +63,12 @@ def one(ident: str, path: Path, python: str, limit: float) -> dict:
                            + journeys._last_line(imported.stderr))
         row["seconds"] = round(time.monotonic() - start, 1)
         return row
+
+
+def _reason(stderr: str) -> str:
+    """A refusal's first error line (its last says only "FILE: not converted")."""
+    errors = [line for line in stderr.splitlines() if "error:" in line]
+    return errors[0] if errors else journeys._last_line(stderr)
 
 
 def main(argv=None) -> int:

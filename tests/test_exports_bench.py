@@ -28,3 +28,13 @@ def test_a_model_without_equations_of_motion_is_refused_with_the_reason(tmp_path
     path.write_text("NEWTONIAN N\nFRAMES A\nVARIABLES Q\nSIMPROT(N, A, 3, Q)\n")
     row = exports.one("kinematics", path, sys.executable, 300)
     assert row["outcome"] == "refused" and "no CODE DYNAMICS or ODE" in row["detail"], row
+
+
+def test_a_model_error_is_the_refusals_reason_not_its_last_line(tmp_path):
+    path = tmp_path / "dangling.al"
+    path.write_text("NEWTONIAN N\nBODIES A\nMOTIONVARIABLES' Q', U'\nCONSTANTS M\n"
+                    "MASS A = M\nINERTIA A, 1, 1, 1\nSIMPROT(N, A, 3, Q)\nQ' = U\n"
+                    "ZERO = FR() + FRSTAR()\nKANE()\nCODE DYNAMICS() d.c\n")
+    row = exports.one("dangling", path, sys.executable, 300)
+    assert row["outcome"] == "refused" and "velocity of AO in N is not defined" \
+        in row["detail"], row
