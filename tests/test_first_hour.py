@@ -269,6 +269,24 @@ def test_options_apply_where_they_mean_something(two_programs, tmp_path):
     assert np.loadtxt(out / "square.2", comments="%").item() == pytest.approx(9.0)
 
 
+def test_one_in_file_for_two_programs_names_each_programs_strangers(two_programs, tmp_path):
+    # decay.c's .in (K, X and the integration) read by both: square.c reads K alone, so
+    # X and the integration's are not its inputs, but they are the model's
+    first = tmp_path / "first"
+    assert cli("run", two_programs, "--out", first, "--code", "0").returncode == 0
+    text = (first / "decay.in").read_text()
+    (tmp_path / "both.in").write_text(text.replace("2.0", "3.0", 1)
+                                      + f"{'Constant':<21}{'KK':<21}{'UNITS':<16}| 1.0\n")
+    r = cli("run", two_programs, "--out", tmp_path / "out", "--in", tmp_path / "both.in")
+    assert r.returncode == 0, r.stderr
+    assert "TFINAL, INTEGSTP" in r.stderr and \
+        "not inputs of CODE ALGEBRAIC square.c; ignored there" in r.stderr
+    strangers = [line for line in r.stderr.splitlines() if "of this model" in line]
+    assert len(strangers) == 1 and "KK is not an input of this model; ignored" in strangers[0]
+    assert np.loadtxt(tmp_path / "out" / "square.2", comments="%").item() == \
+        pytest.approx(9.0)
+
+
 def test_a_set_name_the_model_does_not_have_writes_nothing(two_programs, tmp_path):
     r = cli("run", two_programs, "--out", tmp_path / "out", "--set", "KK=3")
     assert r.returncode == 2

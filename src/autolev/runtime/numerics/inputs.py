@@ -222,8 +222,10 @@ class Inputs:
         return None
 
     # -- .in files ---------------------------------------------------------------------
-    def read_file(self, path) -> list[str]:
-        """Values from an Autolev `.in` file; returns warnings (unknown names)."""
+    def read_file(self, path, elsewhere=lambda name: False, program: str = "") -> list[str]:
+        """Values from an Autolev `.in` file; returns warnings (unknown names).  A name
+        `elsewhere` knows (the model's, an input of another of its programs) is said to
+        be no input of `program` (e.g. "CODE ALGEBRAIC fk.c"), not of the model."""
         path = Path(path)
         try:
             raw = reading.read_bytes(path)
@@ -253,10 +255,11 @@ class Inputs:
                          "initial values, integration parameters), as Autolev's programs "
                          "read them")
         strangers = []                     # (line, name) not inputs of this model
+        others = []                        # ... the model's, but not this program's
         first_line: dict = {}              # key -> the line that gave it
         for key, (lineno, name, value, file_unit) in zip(keys, entries):
             if key is None:
-                strangers.append((lineno, name))
+                (others if program and elsewhere(name) else strangers).append((lineno, name))
                 continue
             if key in first_line:
                 raise InputFileError(f"{path}:{lineno}:22: {name} is given twice (line "
@@ -270,11 +273,13 @@ class Inputs:
                 notes.append(f"{path}:{lineno}: {name} is given in {file_unit} but the model "
                              f"uses {unit or 'no unit'}; read as {unit or 'a plain number'}")
             self.values[key] = Value(value, unit, f"{path.name}:{lineno}")
-        if strangers:
-            notes.append(f"{path}:{strangers[0][0]}: " + some_names(n for _, n in strangers)
-                         + (" is not an input" if len(strangers) == 1 else
-                            f" ({len(strangers)} names) are not inputs")
-                         + " of this model; ignored")
+        for unread, whose, how in ((others, program, "ignored there"),
+                                   (strangers, "this model", "ignored")):
+            if unread:
+                notes.append(f"{path}:{unread[0][0]}: " + some_names(n for _, n in unread)
+                             + (" is not an input" if len(unread) == 1 else
+                                f" ({len(unread)} names) are not inputs")
+                             + f" of {whose}; {how}")
         found = set(keys)
         absent = [k for k in self.names if k not in found]
         if absent:
@@ -284,12 +289,13 @@ class Inputs:
                          + " INPUT value or default")
         return notes
 
-    def read_file_over_model(self, path, constants) -> list[str]:
+    def read_file_over_model(self, path, constants, elsewhere=lambda name: False,
+                             program: str = "") -> list[str]:
         """read_file, except that a file whose constants are all 0 (the template many
         repositories ship, never filled in) gives none of them: they keep the model's
         INPUT values, or have none."""
         before = {k: self.values[k] for k in constants if k in self.values}
-        notes = self.read_file(path)
+        notes = self.read_file(path, elsewhere, program)
         name = Path(path).name
         read = [k for k in constants
                 if k in self.values and self.values[k].source.startswith(name + ":")]

@@ -91,8 +91,10 @@ def take_inputs(ask: InputsWanted, system):
     inputs = Inputs(ask.snapshot.definitions, names, ask.command.inputs, ask.command.units,
                     integration)
     notes = []
+    program = f"CODE {ask.command.kind.upper()} {ask.command.filename}"
     if ask.infile is not None:
-        notes += inputs.read_file_over_model(ask.infile, constants)
+        notes += inputs.read_file_over_model(ask.infile, constants,
+                                             ask.snapshot.names_a_quantity, program)
     elsewhere = []                    # the model's, but not inputs of this command
     for name, value in (ask.overrides or {}).items():
         if inputs.lookup(name) is None and ask.snapshot.names_a_quantity(name):
@@ -107,7 +109,7 @@ def take_inputs(ask: InputsWanted, system):
     if elsewhere:
         notes.append(", ".join(elsewhere) + f" {'is' if len(elsewhere) == 1 else 'are'}"
                      f" not {'an input' if len(elsewhere) == 1 else 'inputs'} of "
-                     f"CODE {ask.command.kind.upper()} {ask.command.filename}: ignored there")
+                     f"{program}: ignored there")
     for note in notes:
         warnings.warn(note, stacklevel=5)
     swept = ask.command.sweep[0] if ask.command.sweep is not None else None
