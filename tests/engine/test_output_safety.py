@@ -195,3 +195,30 @@ def test_a_record_a_killed_process_was_writing_leaves_no_temporary(tmp_path, mon
     living.write_text("{")
     outputs.write_output(out, "a.2", "2\n")
     assert not dead.exists() and living.exists()
+
+
+def test_a_record_another_run_drops_meanwhile_is_no_error(tmp_path, monkeypatch):
+    # two runs at once, each a new folder past RECORDS_KEPT: one listed the records,
+    # the other dropped one of them, and the first's write said "cannot write into
+    # <its folder>: No such file or directory (<that record>)"
+    state = tmp_path / "state"
+    monkeypatch.setenv("XDG_STATE_HOME", str(state))
+    monkeypatch.setattr(outputs, "RECORDS_KEPT", 1)
+    old = tmp_path / "old"
+    old.mkdir()
+    outputs.write_output(old, "a.1", "1\n")
+    records = outputs.records_dir()
+    listing = type(records).glob
+
+    def with_one_dropped(self, pattern):
+        found = list(listing(self, pattern))
+        return iter(found + [records / "dropped-meanwhile.json"] if pattern == "*.json"
+                    else found)
+    monkeypatch.setattr(type(records), "glob", with_one_dropped)
+    old_record = outputs.Written(old).path
+    old.joinpath("a.1").unlink()
+    old.rmdir()
+    new = tmp_path / "new"
+    new.mkdir()
+    assert outputs.write_output(new, "b.1", "2\n").read_text() == "2\n"
+    assert not old_record.exists()          # the folder gone: its record dropped

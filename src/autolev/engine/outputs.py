@@ -199,8 +199,14 @@ def _alive(pid: int) -> bool:
 
 
 def _drop_records_of_folders_gone(folder: Path) -> None:
-    records = sorted(folder.glob("*.json"), key=lambda p: p.stat().st_mtime)
-    for path in records[:max(0, len(records) - RECORDS_KEPT)]:
+    dated = []
+    for path in folder.glob("*.json"):
+        try:
+            dated.append((path.stat().st_mtime, path))
+        except FileNotFoundError:       # another run dropped it after the listing
+            continue
+    dated.sort()
+    for _, path in dated[:max(0, len(dated) - RECORDS_KEPT)]:
         try:
             kept = json.loads(path.read_text(encoding="utf-8")).get("folder", "")
         except (OSError, ValueError, AttributeError):
