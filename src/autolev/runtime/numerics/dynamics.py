@@ -182,16 +182,21 @@ class Dynamics:
         with self._definitions(), self._jacobians_step:
             groups = [self._differentiated("x, u")] + [self._differentiated("p")] * parameters
             jacobian = [[d for part in parts for d in part] for parts in zip(*groups)]
-            nonzero = [(i, j, d) for i, row in enumerate(jacobian)     # row-major
-                       for j, d in enumerate(row) if d != 0]
-            program = codegen.Program(self._given() | {"a": list(system.implicit_unknowns)},
-                                      list(system.rhs_exprs) + [d for _, _, d in nonzero],
-                                      system.defs, dict(system.aux_fixed)).build()
-            function = compile_program(program, self._backend_asked,
-                                       "autolev_dynamics_jacobian")
-        entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
+            function, entries = self._compiled(
+                system, self._given() | {"a": list(system.implicit_unknowns)},
+                list(system.rhs_exprs), jacobian, "autolev_dynamics_jacobian")
         self._derivatives[parameters] = self._sparsity(function, entries, parameters)
         return self._derivatives[parameters]
+
+    def _compiled(self, system, inputs: dict, head: list, jacobian: list, name: str):
+        """(the compiled program of `head`'s expressions, then the structural nonzeros of
+        `jacobian` row-major; those nonzeros' (row, column))."""
+        nonzero = [(i, j, d) for i, row in enumerate(jacobian) for j, d in enumerate(row)
+                   if d != 0]
+        program = codegen.Program(inputs, head + [d for _, _, d in nonzero], system.defs,
+                                  dict(system.aux_fixed)).build()
+        entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
+        return compile_program(program, self._backend_asked, name), entries
 
     def _residual_rows(self) -> list:
         """The expressions differentiated, one per state row: -g for a kinematical row,
@@ -276,15 +281,9 @@ class Dynamics:
             rates[at] = rhs[nx + n * n + k]
         variables = list(self._system.states) + self._control_symbols + (
             self._parameter_symbols if parameters else [])
-        jacobian = tree.defs.jacobian(rates, variables)
-        nonzero = [(i, j, d) for i, row in enumerate(jacobian) for j, d in enumerate(row)
-                   if d != 0]
-        program = codegen.Program(self._given(), rates + rhs[nx + n * n + n:]
-                                  + [d for _, _, d in nonzero],
-                                  tree.defs, dict(tree.aux_fixed)).build()
-        function = compile_program(program, self._backend_asked,
-                                   "autolev_dynamics_tree_jacobian")
-        entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
+        function, entries = self._compiled(tree, self._given(), rates + rhs[nx + n * n + n:],
+                                           tree.defs.jacobian(rates, variables),
+                                           "autolev_dynamics_tree_jacobian")
         blocks, patterns = self._blocks(entries, parameters)
         return _TreeDerivatives(function, tree.pivot_count, entries, patterns, blocks)
 
