@@ -86,6 +86,36 @@ def test_a_failing_run_gives_its_status_and_message_before_its_c(setting, tmp_pa
     assert again.stderr.splitlines()[-1] in failed.stderr
 
 
+def test_a_run_with_no_c_returns_before_its_caches_and_the_next_run_waits(setting,
+                                                                           tmp_path):
+    # CODE ALGEBRAIC() evaluated once compiles nothing: what is left when its files are
+    # written is the built model and the run plan for later runs, here written slowly
+    # (a sitecustomize that makes the model cache's writes sleep first)
+    _, env = setting
+    model = tmp_path / "encoded.al"
+    shutil.copy(NUMERICS_DATA / "encoded.al", model)
+    slow = tmp_path / "slow-writes"
+    slow.mkdir()
+    (slow / "sitecustomize.py").write_text(
+        "import time\nimport autolev.modelcache as m\n_write = m.write\n"
+        f"def write(*a):\n    time.sleep({SLOW})\n    return _write(*a)\nm.write = write\n")
+    env = dict(env, PYTHONPATH=os.pathsep.join([str(slow), env.get("PYTHONPATH", "")]))
+    first = autolev(env, "run", model, "--out", tmp_path / "one")
+    assert first.returncode == 0, first.stderr
+    assert "in the background" not in first.stderr
+    assert (tmp_path / "one" / "encoded.encode").is_file()
+    # returned with the built model not yet written, its child holding the model's lock
+    assert len(locks(env)) == 1
+    assert not [n for n in cache_names(env) if n.startswith("model_")]
+
+    second = autolev(env, "run", model, "--out", tmp_path / "two")
+    assert second.returncode == 0, second.stderr
+    assert "(its run plan)" in second.stdout, second.stdout
+    assert [n for n in cache_names(env) if n.startswith("model_")] and locks(env) == []
+    assert (tmp_path / "two" / "encoded.encode").read_text() == \
+        (tmp_path / "one" / "encoded.encode").read_text()
+
+
 def test_autolev_foreground_keeps_the_wait_in_the_command(setting, tmp_path):
     model, env = setting
     done = autolev(dict(env, AUTOLEV_FOREGROUND="1"), "run", model, "--out", tmp_path / "out")

@@ -1,8 +1,10 @@
-"""A cold run's last wait, done in the background: the C compiled for later runs.
+"""A cold run's last wait, done in the background: what it keeps for later runs.
 
 A cold `autolev run` integrates in Python while its right-hand side's C compiles, and
-that C is for the runs to come (they start from it, or from a run plan that needs it).
-The user has the files before it is built, so the command returns then: at its start
+that C is for the runs to come (they start from it, or from a run plan that needs it);
+so are the built model and the run plan it writes to the cache (half a second of a
+large model's run).  The user has the files before these are done, so the command
+returns then: at its start
 it forks (before any thread), the parent waits only until the child says its outputs
 are done and exits with the child's status, and the child goes on with its output
 closed, compiles, and writes the caches.  A later command on the same model waits for that

@@ -364,10 +364,11 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
                 print(f"  wrote {f}")
         status = max(status, _write_formats(FinishedRun(done.result, out_dir, ns,
                                                         label(done.command), model)))
-        # a cold run began in Python: its C, for the runs to come (kept with the model)
+        # what is left is for the runs to come: the C a cold run began in Python, the
+        # built model and the run plan kept; the user has the files now
         system = done.result.execution.system
-        if finishing is not None and number == len(commands) and system.compiling():
-            if progress is not None:
+        if finishing is not None and number == len(commands):
+            if progress is not None and system.compiling():
                 print(f"  {label(done.command)}: its C compiles on in the background, for "
                       "later runs", file=progress)
             finishing.detach(status, path)

@@ -154,7 +154,7 @@ class CodePrinter:
         parts = []
         for k, term in enumerate(e.args):
             coeff, rest = term.as_coeff_Mul()
-            if coeff.is_Number and coeff < 0 and k > 0:
+            if k > 0 and coeff.is_Number and coeff.is_negative:
                 neg = -term
                 parts.append(" - " + self._wrap(neg, MUL))
             else:

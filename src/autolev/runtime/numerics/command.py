@@ -14,6 +14,7 @@ import sympy as sm
 from .. import symbols as S
 from .. import units
 from ...engine.errors import AutolevModelError
+from ..calculus import symbols_in
 from ..io import CodeKind
 from ..vectors import Vector
 from ...errors import some_names
@@ -108,8 +109,9 @@ def time_dependence(system) -> list[str]:
     named += [("its equations", e) for v in system.extra_exprs.values() for e in v]
     found = []
     for label, value in named:
-        values = list(value) if isinstance(value, sm.MatrixBase) else [value]
-        if label not in found and any(defs.depends_on(v, S.TIME) for v in values):
+        values = list(value) if isinstance(value, sm.MatrixBase) else [sm.sympify(value)]
+        # one walk over all of an array's entries (their parts are shared)
+        if label not in found and defs.reaches(symbols_in(*values), S.TIME):
             found.append(label)
     return found
 

@@ -76,7 +76,9 @@ class Inputs:
         self.given = given
         self.unit_table = unit_table
         self.integration = tuple(integration)
-        self.names = list(names) + list(self.integration)   # file order
+        self.names = tuple(names) + self.integration   # file order
+        # each key by its name in capitals (a lookup per name of a long .in file)
+        self._by_name = {display_name(k).upper(): k for k in self.names}
         self.values: dict = {}
         self._evaluate_model_inputs()
 
@@ -209,7 +211,7 @@ class Inputs:
             up = "INTEGSTP"
         if up in self.integration:
             return up
-        cands = {display_name(k).upper(): k for k in self.names}
+        cands = self._by_name
         if up in cands:
             return cands[up]
         for k in range(1, len(up) - len(up.rstrip("P")) + 1):

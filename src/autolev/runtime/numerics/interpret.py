@@ -120,7 +120,7 @@ class _Walk:
         total = None
         for k, term in enumerate(e.args):
             coeff = term.as_coeff_Mul()[0]
-            if coeff.is_Number and coeff < 0 and k > 0:
+            if k > 0 and coeff.is_Number and coeff.is_negative:   # no sympy comparison
                 total = total - self(-term)
             elif k:
                 total = total + self(term)

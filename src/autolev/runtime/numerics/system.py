@@ -174,9 +174,7 @@ class NumericSystem(CompiledEvaluation):
         pset = set(self.params)
         const_defs = [s for s in order if defs.primitive_deps(s) <= pset]
         cset = set(const_defs)
-        used = set()
-        for e in exprs:
-            used |= symbols_in(e)
+        used = symbols_in(*exprs)
         for s in order:
             if s not in cset:
                 used |= defs.free(s)
@@ -407,9 +405,7 @@ class NumericSystem(CompiledEvaluation):
 
     def needed(self, exprs, given) -> tuple[list, set]:
         defs = self.defs
-        roots = set()
-        for e in exprs:
-            roots |= symbols_in(e)
+        roots = symbols_in(*exprs)
         order = defs.evaluation_order(roots, given)
         syms = set(roots)
         for s in order:
