@@ -14,7 +14,7 @@ import sympy as sm
 
 from .sympy_functions import SPEC_OF_FUNCTION
 
-_ONE, _ZERO = sm.S.One, sm.S.Zero
+_ONE, _ZERO, _I = sm.S.One, sm.S.Zero, sm.S.ImaginaryUnit
 
 
 # the records with a rule here: those a model writes (one only sympy's calculus writes,
@@ -189,7 +189,38 @@ def times(a: sm.Expr, b: sm.Expr) -> sm.Expr:
             return sm.Mul._from_args((b, a), True)
     elif b.is_Symbol and _coefficient(a) and b.is_commutative:
         return sm.Mul._from_args((a, b), True)
+    if not (a.is_Number or b.is_Number):
+        joined = _joined_factors(a, b)
+        if joined is not None:
+            return joined
     return a * b
+
+
+def _joined_factors(a: sm.Expr, b: sm.Expr) -> sm.Expr | None:
+    """a*b as sympy's flattening makes it, when nothing in it combines: the factors of
+    both (at most one numeric coefficient, leading), sorted, every base once (x and
+    x**2 would make x**3); None for anything else (powers of numbers, exp's, which are
+    powers of E, I, non-commutative or unbounded factors: sympy's own product)."""
+    fa = a.args if a.is_Mul else (a,)
+    fb = b.args if b.is_Mul else (b,)
+    coeff = None
+    factors = []
+    bases = set()
+    for f in fa + fb:
+        if f.is_Number:
+            if coeff is not None or not _coefficient(f):
+                return None
+            coeff = f
+            continue
+        if not f.is_commutative or f is _I or isinstance(f, sm.exp):
+            return None
+        base = f.base if f.is_Pow else f
+        if base.is_Number or base in bases:
+            return None
+        bases.add(base)
+        factors.append(f)
+    factors.sort(key=_ORDER)
+    return sm.Mul._from_args(factors if coeff is None else [coeff, *factors], True)
 
 
 # sympy's order of a product's factors (Mul.flatten sorts them so)
