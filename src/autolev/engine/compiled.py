@@ -22,6 +22,10 @@ class Function:
     source: str
     recipe: tuple = ()      # the rest of what builds `call` from `source`
 
+    def compiled(self) -> "Function":
+        """Itself (WalkedFirst's compiled(): the function as compiled code)."""
+        return self
+
     def __getstate__(self) -> dict:
         state = {"backend": self.backend, "source": self.source, "recipe": self.recipe}
         if self.backend == "python":       # Python's compiled code: faster to read back

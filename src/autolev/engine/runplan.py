@@ -62,7 +62,9 @@ class PlannedSystem(CompiledEvaluation):
         self.files = [[Column(None, c.label, c.unit) for c in cols] for cols in system.files]
         self.degree_columns = [list(d) for d in system.degree_columns]
         self.encode_shapes = list(system.encode_shapes)
-        self.rhs_function, self.output_function = system.rhs_function, system.output_function
+        # an algebraic program's outputs walked first: compiled, read back without sympy
+        self.rhs_function = system.rhs_function
+        self.output_function = system.output_function.compiled()
         self.rhs_compiling = self.outputs_compiling = None
         self.extra_functions = dict(system.extra_functions)
         # only a sweep of a constant evaluates them again: then compiled Python, which

@@ -232,8 +232,16 @@ def _coefficient(e) -> bool:
     return e.is_Number and e.is_finite and e != 0 and e != 1
 
 
+def sum_of_products(pairs) -> sm.Expr:
+    """The sum of a*b over `pairs`, as sympy's sum of the products makes it; a pair with
+    a factor 0 is left out (its product is 0: sympy's asks at length whether the other
+    factor is finite)."""
+    return total([times(a, b) for a, b in pairs if a is not _ZERO and b is not _ZERO])
+
+
 def total(terms: list) -> sm.Expr:
-    """The sum of `terms`; one term is itself (sympy's Add of one term is that term)."""
+    """The sum of `terms`; one term is itself (sympy's Add of one term is that term,
+    of none 0)."""
     return terms[0] if len(terms) == 1 else sm.Add(*terms)
 
 

@@ -19,6 +19,7 @@ import sympy as sm
 from .calculus import Definitions
 from .derived import DerivedCache, Revision, mutation
 from ..engine.errors import AutolevModelError
+from .fastdiff import sum_of_products
 from .interop import to_sympy_frame
 from .vectors import Vector, _s, _vector
 
@@ -327,7 +328,9 @@ class Frame:
             zify = self.scene.defs.zify
             # a product of Z's: an orientation's long entries (RODRIGUES', a body-fixed
             # sequence's) named once, not written into each entry of every product
-            m = (m.applyfunc(zify) * rest.applyfunc(zify)).applyfunc(zify)
+            a, b = m.applyfunc(zify), rest.applyfunc(zify)
+            m = sm.Matrix(3, 3, lambda i, j: zify(sum_of_products(
+                zip((a[i, 0], a[i, 1], a[i, 2]), (b[0, j], b[1, j], b[2, j])))))
         self._dcm_cache[other] = m
         other._dcm_cache[self] = m.T
         return m
@@ -335,8 +338,7 @@ class Frame:
     def express_components(self, frame: "Frame", comps) -> tuple:
         """Measure numbers in self of the vector with measure numbers comps in frame."""
         c = self.dcm(frame)
-        return tuple(c[i, 0] * comps[0] + c[i, 1] * comps[1] + c[i, 2] * comps[2]
-                     for i in range(3))
+        return tuple(sum_of_products(zip((c[i, 0], c[i, 1], c[i, 2]), comps)) for i in range(3))
 
     def orientation_known(self, other: "Frame") -> bool:
         return other is self or self._path(other, lambda f: f._dcm_edges) is not None

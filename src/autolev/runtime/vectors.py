@@ -13,17 +13,26 @@ from typing import TYPE_CHECKING
 import sympy as sm
 
 from ..engine.errors import AutolevModelError
+from .fastdiff import sum_of_products
 from .interop import to_sympy_vector
 
 if TYPE_CHECKING:
     from .frame import Frame
 
 
-_ZERO3 = (sm.S.Zero, sm.S.Zero, sm.S.Zero)
+_ZERO = sm.S.Zero
+_ZERO3 = (_ZERO, _ZERO, _ZERO)
 
 
 def _s(x) -> sm.Expr:
     return x if isinstance(x, sm.Basic) else sm.sympify(x)
+
+
+def _difference(a: sm.Expr, b: sm.Expr) -> sm.Expr:
+    """a - b as sympy's subtraction makes it (a + (-b)), a zero side costing nothing."""
+    if b is _ZERO:
+        return a
+    return -b if a is _ZERO else sm.Add(a, -b)
 
 
 # ---------------------------------------------------------------------------
@@ -114,13 +123,13 @@ class Vector:
         for fa, a in self.terms.items():
             for fb, b in other.terms.items():
                 if fa is fb:
-                    total.append(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
+                    total.append(sum_of_products(zip(a, b)))
                 else:
                     c = fa.dcm(fb)
                     for i in range(3):
                         if a[i] == 0:
                             continue
-                        total.append(a[i] * (c[i, 0] * b[0] + c[i, 1] * b[1] + c[i, 2] * b[2]))
+                        total.append(a[i] * sum_of_products(zip((c[i, 0], c[i, 1], c[i, 2]), b)))
         return sm.Add(*total)
 
     def cross(self, other):
@@ -132,8 +141,9 @@ class Vector:
         for fa, a in self.terms.items():
             for fb, b in other.terms.items():
                 bb = b if fa is fb else fa.express_components(fb, b)
-                c = (a[1] * bb[2] - a[2] * bb[1], a[2] * bb[0] - a[0] * bb[2],
-                     a[0] * bb[1] - a[1] * bb[0])
+                c = tuple(_difference(sum_of_products(((a[j], bb[k]),)),
+                                      sum_of_products(((a[k], bb[j]),)))
+                          for j, k in ((1, 2), (2, 0), (0, 1)))
                 prev = out.get(fa, _ZERO3)
                 out[fa] = (prev[0] + c[0], prev[1] + c[1], prev[2] + c[2])
         return Vector(out).zified()
@@ -296,8 +306,9 @@ class Dyadic:
         if isinstance(other, Vector):
             out = Vector()
             for (fa, fb), m in self.terms.items():
-                v = sm.Matrix(other.components_in(fb))
-                out = out + Vector({fa: tuple(m * v)})
+                v = other.components_in(fb)
+                out = out + Vector({fa: tuple(sum_of_products(zip((m[i, 0], m[i, 1], m[i, 2]), v))
+                                              for i in range(3))})
             return out.zified()
         if isinstance(other, Dyadic):
             out = Dyadic()
@@ -312,8 +323,9 @@ class Dyadic:
         """v . D"""
         out = Vector()
         for (fa, fb), m in self.terms.items():
-            row = sm.Matrix(v.components_in(fa)).T * m
-            out = out + Vector({fb: tuple(row)})
+            a = v.components_in(fa)
+            out = out + Vector({fb: tuple(sum_of_products(zip(a, (m[0, j], m[1, j], m[2, j])))
+                                          for j in range(3))})
         return out.zified()
 
     def cross(self, v: Vector) -> "Dyadic":

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import sympy as sm
 
-from ..calculus import Definitions
+from ..calculus import Definitions, symbols_in
 from ...engine.errors import AutolevModelError
 from ...engine.clibrary import UNIT_MARK, UNIT_STATEMENTS, c_function, cpus
 from ..printer import CPrinter, PythonPrinter
@@ -83,22 +83,7 @@ class Program:
         function calls; gcc finds the rest in the functions it compiles) or "all"
         (sums and products too: a program for a user's compiler, in one function)."""
         self._shared = shared
-        self.inputs = {arg: list(syms) for arg, syms in self.inputs.items()}
-        for arg, syms in self.inputs.items():
-            for i, s in enumerate(syms):
-                self.names[s] = f"{arg}_{i}"
-        given = set(self.names)
-        self.outputs = [sm.sympify(o) for o in self.outputs]
-        roots = {s for e in self.outputs for s in e.free_symbols}
-        for n, (s, v) in enumerate(self.fixed.items()):
-            if s not in given:
-                self.names[s] = f"f{n}"
-                self.assignments.append((self.names[s], sm.Float(v)))
-        given |= set(self.fixed)
-        needed = self.defs.evaluation_order(roots, given)
-        for n, s in enumerate(needed):
-            self.names[s] = f"w{n}"
-            self.assignments.append((self.names[s], self.defs.rhs[s]))
+        self._name_all()
         if factored:
             self._pull_common_factors()
         if lift_into is not None:
@@ -114,6 +99,34 @@ class Program:
             raise AutolevModelError("no value for " + ", ".join(sorted(map(str, missing))))
         self._hoist_calls(exprs, new_nodes)
         return self
+
+    def ordered(self) -> "Program":
+        """A copy with only the definitions the outputs need, in order, each named: what
+        a walk evaluates (interpret.py), the numbers of build(factored=False), whose
+        hoisting and check of every node cost more than one evaluation."""
+        copy = Program(self.inputs, self.outputs, self.defs, self.fixed)
+        copy._name_all()
+        return copy
+
+    def _name_all(self) -> None:
+        """Name the inputs, the fixed symbols and the definitions the outputs need, the
+        definitions assigned in their evaluation order."""
+        self.inputs = {arg: list(syms) for arg, syms in self.inputs.items()}
+        for arg, syms in self.inputs.items():
+            for i, s in enumerate(syms):
+                self.names[s] = f"{arg}_{i}"
+        given = set(self.names)
+        self.outputs = [sm.sympify(o) for o in self.outputs]
+        roots = symbols_in(*self.outputs)
+        for n, (s, v) in enumerate(self.fixed.items()):
+            if s not in given:
+                self.names[s] = f"f{n}"
+                self.assignments.append((self.names[s], sm.Float(v)))
+        given |= set(self.fixed)
+        needed = self.defs.evaluation_order(roots, given)
+        for n, s in enumerate(needed):
+            self.names[s] = f"w{n}"
+            self.assignments.append((self.names[s], self.defs.rhs[s]))
 
     def _pull_common_factors(self) -> None:
         """Sums whose terms share symbolic factors are written with the factors taken

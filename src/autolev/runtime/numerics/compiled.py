@@ -32,10 +32,12 @@ def compile_program(prog: Program, backend: str, name: str,
 
 
 class WalkedFirst:
-    """A program evaluated once per parameter set (the constants'): its first call walks
-    it (interpret.py: nothing printed or compiled, the compiled Python's numbers), later
-    calls compile it to Python (and a first call whose walk raises: the compiled
-    code's numpy fallback gives C's inf and nan).  `compiled()` is that Function."""
+    """A program evaluated once per parameter set or solution (the constants', an
+    algebraic program's outputs): its first call walks its definitions in order
+    (interpret.py: nothing built, printed or compiled, the compiled Python's numbers),
+    later calls compile it to Python (and a first call whose walk raises: the compiled
+    code's numpy fallback gives C's inf and nan).  `compiled()` is that Function.
+    `prog` is not built yet: build(factored=False) when it compiles."""
 
     backend = "python"
 
@@ -50,7 +52,7 @@ class WalkedFirst:
             from ...engine.pyfunction import MATH_ERRORS
             self._walked = True
             try:
-                ProgramWalk(self._prog).evaluate(*arrays)
+                ProgramWalk(self._prog.ordered()).evaluate(*arrays)
                 return
             except MATH_ERRORS:
                 pass
@@ -58,7 +60,7 @@ class WalkedFirst:
 
     def compiled(self) -> Function:
         if self._function is None:
-            self._function = compile_program(self._prog, "python", self.name)
+            self._function = compile_program(self._prog.build(False), "python", self.name)
         return self._function
 
 

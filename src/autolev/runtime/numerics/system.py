@@ -201,7 +201,7 @@ class NumericSystem(CompiledEvaluation):
         per parameter set: walked, then Python; compiling C would cost more)."""
         return WalkedFirst(
             codegen.Program({"p": self.params}, self.constant_defs + [e for _, e in lifted],
-                            self.defs).build(False),
+                            self.defs),
             "autolev_constants")
 
     def _compile(self, extra: dict, accel_inputs: list, integrate: bool,
@@ -231,17 +231,20 @@ class NumericSystem(CompiledEvaluation):
                     rhs, backend, "autolev_rhs", extra_source=loop_source,
                     extra_flags=loop_flags)
         inputs_out = dict(inputs, a=accel_inputs)
-        outputs = codegen.Program(inputs_out, self.output_exprs, defs, fixed).build(integrate)
-        if integrate and self.rhs_compiling is not None:
+        outputs = codegen.Program(inputs_out, self.output_exprs, defs, fixed)
+        if not integrate:
+            # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution
+            self.output_function = WalkedFirst(outputs, "autolev_outputs")
+        elif self.rhs_compiling is not None:
             # the outputs' C too, once the right-hand side's (which the loop waits for)
             # is built: the first rows are the Python's (the same numbers)
+            outputs.build()
             self.output_function = compile_program(outputs, "python", "autolev_outputs")
             self.outputs_compiling = compiling_in_background(outputs, "autolev_outputs",
                                                              after=self.rhs_compiling)
         else:
-            # ALGEBRAIC/NONLINEAR outputs are evaluated once per solution: Python too
-            self.output_function = compile_program(outputs, backend if integrate
-                                                   else "python", "autolev_outputs")
+            self.output_function = compile_program(outputs.build(), backend,
+                                                   "autolev_outputs")
         self.extra_functions = {
             k: (compile_program(codegen.Program(inputs_out, v, defs, fixed).build(), backend,
                                 f"autolev_{k}"), len(v))
