@@ -50,7 +50,7 @@ def transcript_text(path: Path) -> str | None:
     model it cannot be made for."""
     from ..engine.request import TranscriptRequest
     from ..engine.keeping import keep, kept
-    from ..engine.runplan import KeptTranscript
+    from ..engine.transcripts import KeptTranscript
     from ..engine import reading
     request = TranscriptRequest.of_file(path)
     with reading.recording() as reads:

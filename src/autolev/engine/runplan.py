@@ -106,14 +106,6 @@ class KeptOutcome:
 
 
 @dataclass
-class KeptTranscript:
-    """The text of `autolev transcript FILE`: the same files read give the same text."""
-
-    reads: ReadSet              # every file read to make it, as read
-    text: str
-
-
-@dataclass
 class KeptLinearization:
     """The answer of `autolev linearize FILE` for its options (no sweep): the same
     file, files read and options give the same numbers, so the next such command

@@ -101,10 +101,17 @@ def _simple_rotations(angles, sequence, dt) -> tuple[list[sm.Matrix], list[sm.Ma
     return [rotation(seq[i], a[i]) for i in range(3)], rates
 
 
+def _matmul(a: sm.Matrix, b: sm.Matrix) -> sm.Matrix:
+    """a*b with the entries sympy's matrix product gives (each the sum of its nonzero
+    products), without its question whether 0 times each entry is finite."""
+    return sm.Matrix(a.rows, b.cols, lambda i, j: sum_of_products(
+        (a[i, k], b[k, j]) for k in range(a.cols)))
+
+
 def _product(mats) -> sm.Matrix:
     result = sm.eye(3)
     for m in mats:
-        result = result * m
+        result = _matmul(result, m)
     return result
 
 
@@ -114,8 +121,8 @@ def body_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
     mats, rates = _simple_rotations(angles, sequence, dt)
     # rate i turns about an axis fixed in the i-th intermediate frame: carry it into
     # the child through the later rotations
-    w = sum(((_product(mats[i + 1:]).T * rates[i]) for i in range(3)), sm.zeros(3, 1))
-    return mats[0] * mats[1] * mats[2], tuple(w)
+    w = sum((_matmul(_product(mats[i + 1:]).T, rates[i]) for i in range(3)), sm.zeros(3, 1))
+    return _product(mats), tuple(w)
 
 
 def space_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
@@ -123,8 +130,8 @@ def space_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
     space-fixed sequence: a about parent_i, then b about parent_j, then c about parent_k."""
     mats, rates = _simple_rotations(angles, sequence, dt)
     # rate i turns about a parent axis, itself turned by the later rotations
-    w = sum(((_product(mats[:i:-1]) * rates[i]) for i in range(3)), sm.zeros(3, 1))
-    return mats[2] * mats[1] * mats[0], tuple(w)
+    w = sum((_matmul(_product(mats[:i:-1]), rates[i]) for i in range(3)), sm.zeros(3, 1))
+    return _product(mats[::-1]), tuple(w)
 
 
 def angular_velocity_in_both(angles, kind: str, dt) -> tuple[tuple, tuple]:
@@ -135,11 +142,11 @@ def angular_velocity_in_both(angles, kind: str, dt) -> tuple[tuple, tuple]:
     sequence = kind[4:] if kind.startswith("body") else kind[5:]
     mats, rates = _simple_rotations(angles, sequence, dt)
     if kind.startswith("body"):
-        child = [_product(mats[i + 1:]).T * rates[i] for i in range(3)]
-        parent = [_product(mats[:i]) * rates[i] for i in range(3)]
+        child = [_matmul(_product(mats[i + 1:]).T, rates[i]) for i in range(3)]
+        parent = [_matmul(_product(mats[:i]), rates[i]) for i in range(3)]
     else:
-        child = [_product(mats[i::-1]).T * rates[i] for i in range(3)]
-        parent = [_product(mats[:i:-1]) * rates[i] for i in range(3)]
+        child = [_matmul(_product(mats[i::-1]).T, rates[i]) for i in range(3)]
+        parent = [_matmul(_product(mats[:i:-1]), rates[i]) for i in range(3)]
     return tuple(sum(child, sm.zeros(3, 1))), tuple(sum(parent, sm.zeros(3, 1)))
 
 
