@@ -102,3 +102,48 @@ def test_a_product_made_without_flattening_is_the_one_sympy_makes():
         ours, sympys = times(a, b), a * b
         assert (type(ours), ours.args) == (type(sympys), sympys.args), (a, b)
         assert ours == sympys and hash(ours) == hash(sympys)
+
+
+def _factors(rng):
+    """A product sympy makes of a few factors: symbols, powers, calls, sums, numbers."""
+    pool = [X, Y, Z, A, X ** 2, 1 / Y, sm.sqrt(Z), sm.cos(X), sm.exp(Y), sm.I,
+            sm.Integer(-2), sm.Rational(3, 4), sm.Float(0.5), X + Y, sm.sqrt(2), A - 1]
+    return sm.Mul(*rng.sample(pool, rng.randint(1, 3)))
+
+
+def test_products_of_products_made_without_flattening_are_the_ones_sympy_makes():
+    from autolev.runtime.fastdiff import times
+    rng = random.Random(7)
+    for _ in range(3000):
+        a, b = _factors(rng), _factors(rng)
+        ours, sympys = times(a, b), a * b
+        assert (type(ours), ours.args) == (type(sympys), sympys.args), (a, b)
+        assert ours == sympys and hash(ours) == hash(sympys)
+
+
+def test_a_sum_of_products_is_the_one_sympy_makes():
+    from autolev.runtime.fastdiff import sum_of_products
+    rng = random.Random(8)
+    for _ in range(500):
+        pairs = [(_factors(rng) if rng.random() < 0.8 else sm.S.Zero, _factors(rng))
+                 for _ in range(rng.randint(0, 4))]
+        sympys = sum((a * b for a, b in pairs), sm.S.Zero)
+        ours = sum_of_products(pairs)
+        assert (type(ours), ours.args) == (type(sympys), sympys.args), pairs
+
+
+def test_a_matrix_product_has_sympys_entries_in_sympys_order():
+    # the order of the stored entries is the order a walk over them names Z's in
+    from autolev.runtime.frame import product_as_sympy
+    rng = random.Random(9)
+    pool = [X, Y * Z, sm.cos(A), 2 * X + 1, sm.S.One, sm.Integer(-1), sm.S.Zero,
+            sm.S.Zero, sm.S.Zero]
+    for _ in range(400):
+        n, k, m = rng.randint(1, 4), rng.randint(1, 4), rng.randint(1, 4)
+        a = sm.Matrix(n, k, lambda i, j: rng.choice(pool))
+        b = sm.Matrix(k, m, lambda i, j: rng.choice(pool))
+        if rng.random() < 0.5:          # a matrix whose entries were stored out of order
+            b = (b.T * b.T.T).T if k == m else b
+        ours, sympys = product_as_sympy(a, b), a * b
+        assert ours == sympys
+        assert list(ours.todok().items()) == list(sympys.todok().items()), (a, b)

@@ -343,6 +343,7 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
         written_by[stem.lower()] = command.filename
     out_dir = Path(ns.out)
     status = 0
+    plannable: list = []         # (execution, result, label, messages) of each run
     from ..runtime.tools import RunOptions
     runs = model.run_commands(commands, out_dir, keep_going=True, options=RunOptions(
         method=ns.method, backend=ns.backend, infile=ns.infile,
@@ -376,11 +377,14 @@ def _run_and_report(model, commands: list, overrides: dict, specified: dict,
             if system.compiled_loop(wait=True) is not None:
                 rowtext.prepare()       # what the loop writes its rows with
         if recorder is not None:
-            from ..engine.runplan import can_plan, planned_command
             messages = recorder.take()
-            if can_plan(done.result.execution, done.result):
-                planned.append(planned_command(done.result.execution, done.result,
-                                               label(done.command), messages))
+            plannable.append((done.result.execution, done.result, label(done.command),
+                              messages))
+    if plannable:
+        # planned once the last files are written: the plan's programs compile (in the
+        # background child when there is one)
+        from ..engine.runplan import can_plan, planned_command
+        planned.extend(planned_command(*run) for run in plannable if can_plan(*run[:2]))
     return status
 
 

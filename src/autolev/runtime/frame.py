@@ -15,11 +15,13 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 import sympy as sm
+from sympy.polys.matrices import DomainMatrix
+from sympy.polys.matrices.sdm import SDM
 
 from .calculus import Definitions
 from .derived import DerivedCache, Revision, mutation
 from ..engine.errors import AutolevModelError
-from .fastdiff import sum_of_products
+from .fastdiff import sum_of_products, times
 from .interop import to_sympy_frame
 from .vectors import Vector, _s, _vector
 
@@ -99,6 +101,29 @@ def _simple_rotations(angles, sequence, dt) -> tuple[list[sm.Matrix], list[sm.Ma
         rate[seq[i] - 1] = dt(a[i])
         rates.append(rate)
     return [rotation(seq[i], a[i]) for i in range(3)], rates
+
+
+def product_as_sympy(a: sm.Matrix, b: sm.Matrix) -> sm.Matrix:
+    """a*b as sympy's product of symbolic matrices makes it -- each entry the sum of
+    its nonzero products, the entries stored in the same order (a later walk over them
+    names Z's in that order) -- without its question whether 0 times each entry is
+    finite (sdm_matmul_exraw's; a frame's orientation has no infinite entry)."""
+    left, right = a._rep.unify(b._rep)
+    if not left.domain.is_EXRAW or not isinstance(left.rep, SDM):
+        return a * b                    # numbers: sympy's own product is cheap
+    left, right = left.rep, right.rep
+    columns_of_right = set(right)
+    product: dict = {}
+    for i, row in left.items():
+        terms: dict = {}
+        for k in set(row) & columns_of_right:
+            for j, rkj in right[k].items():
+                terms.setdefault(j, []).append(times(row[k], rkj))
+        entries = {j: e for j, ts in terms.items() if (e := sm.Add(*ts)) != 0}
+        if entries:
+            product[i] = entries
+    return type(a)._fromrep(DomainMatrix.from_rep(
+        SDM(product, (a.rows, b.cols), left.domain)))
 
 
 def _matmul(a: sm.Matrix, b: sm.Matrix) -> sm.Matrix:
@@ -335,9 +360,7 @@ class Frame:
             zify = self.scene.defs.zify
             # a product of Z's: an orientation's long entries (RODRIGUES', a body-fixed
             # sequence's) named once, not written into each entry of every product
-            a, b = m.applyfunc(zify), rest.applyfunc(zify)
-            m = sm.Matrix(3, 3, lambda i, j: zify(sum_of_products(
-                zip((a[i, 0], a[i, 1], a[i, 2]), (b[0, j], b[1, j], b[2, j])))))
+            m = product_as_sympy(m.applyfunc(zify), rest.applyfunc(zify)).applyfunc(zify)
         self._dcm_cache[other] = m
         other._dcm_cache[self] = m.T
         return m
