@@ -70,6 +70,7 @@ class Program:
     bound: dict = field(default_factory=dict)
     # (symbol, expression) of the parts lifted out (see build's lift_into)
     lifted: list = field(default_factory=list)
+    named: bool = False         # name_all done: the definitions ordered as they stood
 
     def build(self, factored: bool = True, lift_into: str | None = None,
               shared: str = "calls") -> "Program":
@@ -83,7 +84,7 @@ class Program:
         function calls; gcc finds the rest in the functions it compiles) or "all"
         (sums and products too: a program for a user's compiler, in one function)."""
         self._shared = shared
-        self._name_all()
+        self.name_all()
         if factored:
             self._pull_common_factors()
         if lift_into is not None:
@@ -100,17 +101,15 @@ class Program:
         self._hoist_calls(exprs, new_nodes)
         return self
 
-    def ordered(self) -> "Program":
-        """A copy with only the definitions the outputs need, in order, each named: what
-        a walk evaluates (interpret.py), the numbers of build(factored=False), whose
-        hoisting and check of every node cost more than one evaluation."""
-        copy = Program(self.inputs, self.outputs, self.defs, self.fixed)
-        copy._name_all()
-        return copy
-
-    def _name_all(self) -> None:
-        """Name the inputs, the fixed symbols and the definitions the outputs need, the
-        definitions assigned in their evaluation order."""
+    def name_all(self) -> "Program":
+        """Name the inputs, the fixed symbols and the definitions the outputs need (as the
+        definitions stand now), the definitions assigned in their evaluation order; once.
+        Named only, the program is what a walk evaluates (interpret.py), with the numbers
+        of build(factored=False), whose hoisting and check of every node cost more than
+        one evaluation; the rest of build reads no definition."""
+        if self.named:
+            return self
+        self.named = True
         self.inputs = {arg: list(syms) for arg, syms in self.inputs.items()}
         for arg, syms in self.inputs.items():
             for i, s in enumerate(syms):
@@ -127,6 +126,7 @@ class Program:
         for n, s in enumerate(needed):
             self.names[s] = f"w{n}"
             self.assignments.append((self.names[s], self.defs.rhs[s]))
+        return self
 
     def _pull_common_factors(self) -> None:
         """Sums whose terms share symbolic factors are written with the factors taken

@@ -37,12 +37,13 @@ class WalkedFirst:
     (interpret.py: nothing built, printed or compiled, the compiled Python's numbers),
     later calls compile it to Python (and a first call whose walk raises: the compiled
     code's numpy fallback gives C's inf and nan).  `compiled()` is that Function.
-    `prog` is not built yet: build(factored=False) when it compiles."""
+    `prog` is named here, with the definitions as they stand (a value given to a
+    specified quantity defines it only meanwhile), and built when it compiles."""
 
     backend = "python"
 
     def __init__(self, prog: Program, name: str):
-        self._prog, self.name = prog, name
+        self._prog, self.name = prog.name_all(), name
         self._function: Function | None = None
         self._walked = False
 
@@ -52,7 +53,7 @@ class WalkedFirst:
             from ...engine.pyfunction import MATH_ERRORS
             self._walked = True
             try:
-                ProgramWalk(self._prog.ordered()).evaluate(*arrays)
+                ProgramWalk(self._prog).evaluate(*arrays)
                 return
             except MATH_ERRORS:
                 pass
