@@ -62,7 +62,7 @@ def test_the_walk_raises_where_the_compiled_python_raises():
 
 
 def test_a_constants_program_is_walked_once_then_compiled():
-    prog = codegen.Program({"p": [a, b]}, [a / b, a * b + 1], Definitions()).build(False)
+    prog = codegen.Program({"p": [a, b]}, [a / b, a * b + 1], Definitions())
     constants = WalkedFirst(prog, "autolev_constants")
     first, second = np.zeros(2), np.zeros(2)
     constants.call(np.array([3.0, 4.0]), first)
@@ -73,7 +73,7 @@ def test_a_constants_program_is_walked_once_then_compiled():
     assert first.tolist() == second.tolist() == [0.75, 13.0]
     # a first call the math module refuses: compiled, and C's inf and nan
     failing = WalkedFirst(codegen.Program({"p": [a, b]}, [a / b, sm.sqrt(b)],
-                                          Definitions()).build(False), "autolev_constants")
+                                          Definitions()), "autolev_constants")
     out = np.zeros(2)
     failing.call(np.array([1.0, 0.0]), out)
     assert out[0] == math.inf and out[1] == 0.0
@@ -102,3 +102,15 @@ def test_conditions_joined_by_and_or_not_compile_in_both_languages():
         second = 1 if not vx <= 0.4 else 2 if vx == vy else 3
         for out in got:
             assert out.tolist() == [first, second]
+
+
+def test_a_walked_program_reads_the_definitions_as_they_stood_when_it_was_made():
+    # a value given to a specified quantity defines it only while the programs are made
+    defs = Definitions()
+    defs.rhs[Z] = 2 * a
+    constants = WalkedFirst(codegen.Program({"p": [a]}, [Z + 1], defs), "autolev_constants")
+    del defs.rhs[Z]
+    walked, compiled = np.zeros(1), np.zeros(1)
+    constants.call(np.array([3.0]), walked)
+    constants.compiled().call(np.array([3.0]), compiled)
+    assert walked.tolist() == compiled.tolist() == [7.0]

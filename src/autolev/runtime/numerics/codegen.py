@@ -71,6 +71,7 @@ class Program:
     # (symbol, expression) of the parts lifted out (see build's lift_into)
     lifted: list = field(default_factory=list)
     named: bool = False         # name_all done: the definitions ordered as they stood
+    built: bool = False         # build done (a second build returns it as it is)
 
     def build(self, factored: bool = True, lift_into: str | None = None,
               shared: str = "calls") -> "Program":
@@ -83,6 +84,9 @@ class Program:
         what occurs more than once gets a variable of its own: "calls" (elementary
         function calls; gcc finds the rest in the functions it compiles) or "all"
         (sums and products too: a program for a user's compiler, in one function)."""
+        if self.built:
+            return self
+        self.built = True
         self._shared = shared
         self.name_all()
         if factored:
