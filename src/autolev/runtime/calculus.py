@@ -17,6 +17,7 @@ computed iteratively in dependency order (no recursion on the depth of the chain
 """
 from __future__ import annotations
 
+import functools
 import math
 import zlib
 from collections.abc import Iterable, Mapping
@@ -34,7 +35,10 @@ from .fastdiff import Gradients, times, total, value_and_gradient
 from .floats import NotElementary, complex_value
 
 
+@functools.lru_cache(maxsize=1 << 16)
 def _order_key(s) -> tuple:
+    # asked again for the same symbols at every dependency walk: kept (a Z's number is
+    # read from its name)
     if isinstance(s, Z):
         return (1, int(s.name[1:]) if s.name[1:].isdigit() else 0, s.name)
     # a Symbol prints as its name (asking the printer costs a tenth of a cold run's order)
