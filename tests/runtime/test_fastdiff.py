@@ -107,7 +107,8 @@ def test_a_product_made_without_flattening_is_the_one_sympy_makes():
 def _factors(rng):
     """A product sympy makes of a few factors: symbols, powers, calls, sums, numbers."""
     pool = [X, Y, Z, A, X ** 2, 1 / Y, sm.sqrt(Z), sm.cos(X), sm.exp(Y), sm.I,
-            sm.Integer(-2), sm.Rational(3, 4), sm.Float(0.5), X + Y, sm.sqrt(2), A - 1]
+            sm.Integer(-2), sm.Rational(3, 4), sm.Float(0.5), X + Y, sm.sqrt(2), A - 1,
+            sm.exp_polar(Z), sm.pi, sm.pi ** 2]
     return sm.Mul(*rng.sample(pool, rng.randint(1, 3)))
 
 

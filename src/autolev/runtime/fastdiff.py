@@ -11,6 +11,7 @@ from __future__ import annotations
 from functools import cmp_to_key
 
 import sympy as sm
+from sympy.functions.elementary.exponential import ExpBase
 
 from .sympy_functions import SPEC_OF_FUNCTION
 
@@ -200,7 +201,7 @@ def _joined_factors(a: sm.Expr, b: sm.Expr) -> sm.Expr | None:
     """a*b as sympy's flattening makes it, when nothing in it combines: the factors of
     both (at most one numeric coefficient, leading), sorted, every base once (x and
     x**2 would make x**3); None for anything else (powers of numbers, exp's, which are
-    powers of E, I, non-commutative or unbounded factors: sympy's own product)."""
+    powers of E, exp_polar's, I, non-commutative or unbounded factors: sympy's own product)."""
     fa = a.args if a.is_Mul else (a,)
     fb = b.args if b.is_Mul else (b,)
     coeff = None
@@ -212,7 +213,7 @@ def _joined_factors(a: sm.Expr, b: sm.Expr) -> sm.Expr | None:
                 return None
             coeff = f
             continue
-        if not f.is_commutative or f is _I or isinstance(f, sm.exp):
+        if not f.is_commutative or f is _I or isinstance(f, ExpBase):
             return None
         base = f.base if f.is_Pow else f
         if base.is_Number or base in bases:
