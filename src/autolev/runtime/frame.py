@@ -107,7 +107,7 @@ def product_as_sympy(a: sm.Matrix, b: sm.Matrix) -> sm.Matrix:
     """a*b as sympy's product of symbolic matrices makes it -- each entry the sum of
     its nonzero products, the entries stored in the same order (a later walk over them
     names Z's in that order) -- without its question whether 0 times each entry is
-    finite (sdm_matmul_exraw's; a frame's orientation has no infinite entry)."""
+    finite (sdm_matmul_exraw's; an orientation has no infinite entry)."""
     left, right = a._rep.unify(b._rep)
     if not left.domain.is_EXRAW or not isinstance(left.rep, SDM):
         return a * b                    # numbers: sympy's own product is cheap
@@ -126,17 +126,10 @@ def product_as_sympy(a: sm.Matrix, b: sm.Matrix) -> sm.Matrix:
         SDM(product, (a.rows, b.cols), left.domain)))
 
 
-def _matmul(a: sm.Matrix, b: sm.Matrix) -> sm.Matrix:
-    """a*b with the entries sympy's matrix product gives (each the sum of its nonzero
-    products), without its question whether 0 times each entry is finite."""
-    return sm.Matrix(a.rows, b.cols, lambda i, j: sum_of_products(
-        (a[i, k], b[k, j]) for k in range(a.cols)))
-
-
 def _product(mats) -> sm.Matrix:
     result = sm.eye(3)
     for m in mats:
-        result = _matmul(result, m)
+        result = product_as_sympy(result, m)
     return result
 
 
@@ -146,7 +139,8 @@ def body_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
     mats, rates = _simple_rotations(angles, sequence, dt)
     # rate i turns about an axis fixed in the i-th intermediate frame: carry it into
     # the child through the later rotations
-    w = sum((_matmul(_product(mats[i + 1:]).T, rates[i]) for i in range(3)), sm.zeros(3, 1))
+    w = sum((product_as_sympy(_product(mats[i + 1:]).T, rates[i]) for i in range(3)),
+            sm.zeros(3, 1))
     return _product(mats), tuple(w)
 
 
@@ -155,7 +149,8 @@ def space_fixed(angles, sequence, dt) -> tuple[sm.Matrix, tuple]:
     space-fixed sequence: a about parent_i, then b about parent_j, then c about parent_k."""
     mats, rates = _simple_rotations(angles, sequence, dt)
     # rate i turns about a parent axis, itself turned by the later rotations
-    w = sum((_matmul(_product(mats[:i:-1]), rates[i]) for i in range(3)), sm.zeros(3, 1))
+    w = sum((product_as_sympy(_product(mats[:i:-1]), rates[i]) for i in range(3)),
+            sm.zeros(3, 1))
     return _product(mats[::-1]), tuple(w)
 
 
@@ -167,11 +162,11 @@ def angular_velocity_in_both(angles, kind: str, dt) -> tuple[tuple, tuple]:
     sequence = kind[4:] if kind.startswith("body") else kind[5:]
     mats, rates = _simple_rotations(angles, sequence, dt)
     if kind.startswith("body"):
-        child = [_matmul(_product(mats[i + 1:]).T, rates[i]) for i in range(3)]
-        parent = [_matmul(_product(mats[:i]), rates[i]) for i in range(3)]
+        child = [product_as_sympy(_product(mats[i + 1:]).T, rates[i]) for i in range(3)]
+        parent = [product_as_sympy(_product(mats[:i]), rates[i]) for i in range(3)]
     else:
-        child = [_matmul(_product(mats[i::-1]).T, rates[i]) for i in range(3)]
-        parent = [_matmul(_product(mats[:i:-1]), rates[i]) for i in range(3)]
+        child = [product_as_sympy(_product(mats[i::-1]).T, rates[i]) for i in range(3)]
+        parent = [product_as_sympy(_product(mats[:i:-1]), rates[i]) for i in range(3)]
     return tuple(sum(child, sm.zeros(3, 1))), tuple(sum(parent, sm.zeros(3, 1)))
 
 
