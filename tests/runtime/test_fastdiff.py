@@ -148,3 +148,16 @@ def test_a_matrix_product_has_sympys_entries_in_sympys_order():
         ours, sympys = product_as_sympy(a, b), a * b
         assert ours == sympys
         assert list(ours.todok().items()) == list(sympys.todok().items()), (a, b)
+
+
+def test_a_sum_made_without_flattening_is_the_one_sympy_makes():
+    from autolev.runtime.fastdiff import total
+    rng = random.Random(10)
+    pool = [X, Y, 2 * X, -X * Y, X * Y, 3 * Z ** 2, sm.cos(X), -sm.cos(X), X ** 2,
+            sm.Rational(1, 2) * A * X, sm.Float(0.5) * Y, sm.sqrt(2), sm.Integer(3), X + Y,
+            sm.oo * X, sm.pi, 2 ** sm.Rational(-1, 2), -(X + 1) * Y, sm.exp(Z), Y * Z]
+    for _ in range(3000):
+        terms = [rng.choice(pool) for _ in range(rng.randint(1, 5))]
+        ours, sympys = total(terms), sm.Add(*terms)
+        assert (type(ours), ours.args) == (type(sympys), sympys.args), terms
+        assert ours == sympys and hash(ours) == hash(sympys)

@@ -243,7 +243,33 @@ def sum_of_products(pairs) -> sm.Expr:
 def total(terms: list) -> sm.Expr:
     """The sum of `terms`; one term is itself (sympy's Add of one term is that term,
     of none 0)."""
-    return terms[0] if len(terms) == 1 else sm.Add(*terms)
+    if len(terms) == 1:
+        return terms[0]
+    summed = _distinct_terms(terms)
+    return sm.Add(*terms) if summed is None else summed
+
+
+def _distinct_terms(terms: list) -> sm.Expr | None:
+    """The sum as sympy's flattening makes it when no two terms combine: the terms
+    sorted (what is left of each term without its numeric coefficient differs from
+    every other's); None for anything else (numbers, sums, powers of numbers, unbounded
+    coefficients, non-commutative or other kinds of terms: sympy's own sum)."""
+    if len(terms) < 2:
+        return None
+    rests = set()
+    for t in terms:
+        if t.is_Mul:
+            c, rest = t.as_coeff_Mul()
+            if not c.is_finite:
+                return None
+        elif t.is_Symbol or t.is_Function or t.is_Pow and not t.base.is_Number:
+            rest = t
+        else:
+            return None
+        if not t.is_commutative or rest in rests:
+            return None
+        rests.add(rest)
+    return sm.Add._from_args(sorted(terms, key=_ORDER), True)
 
 
 def value_and_gradient(expr: sm.Expr, values: dict, seeds: dict) -> tuple:
