@@ -32,7 +32,7 @@ def test_the_graph_tool_sees_a_cycle_and_layers_a_chain():
 
 def test_the_graph_holds_function_level_imports_but_not_type_checking_ones():
     # vectors.py imports Frame (frame.py) for type checking only; numerics/run.py is
-    # imported by simulation.py at module level
+    # imported by simulation.py in the methods that run a command
     assert "autolev.runtime.frame" not in GRAPH["autolev.runtime.vectors"]
     assert "autolev.runtime.vectors" in GRAPH["autolev.runtime.frame"]
     assert "autolev.runtime.numerics.run" in GRAPH["autolev.runtime.simulation"]

@@ -386,3 +386,28 @@ def test_a_comments_terminal_escapes_are_printed_as_text(tmp_path, capsys):
     # the file keeps the model's text as Autolev's .all did
     assert main(["transcript", str(model), "--out", str(tmp_path / "t")]) == 0
     assert "\x1b[31mRED" in (tmp_path / "t" / "esc.all").read_text()
+
+
+def test_a_transcript_imports_no_numpy(tmp_path):
+    # the run machinery and numpy are imported where a model computes numbers; a
+    # transcript forms the model and prints its responses (0.1 s of its cold start)
+    import os
+    import subprocess
+    import sys
+    model = tmp_path / "one.al"
+    model.write_text("NEWTONIAN N\nBODIES B\nVARIABLES Q{3}', U{3}'\nCONSTANTS M, I1\n"
+                     "MASS B = M\nINERTIA B, I1, I1, I1\nP_NO_BO> = 0>\n"
+                     "DIRCOS(N, B, SPACE313, Q1, Q2, Q3)\n"
+                     "W_B_N> = U1*B1> + U2*B2> + U3*B3>\n"
+                     "KINDIFFS(N, B, SPACE313, Q1, Q2, Q3)\nZERO = FR() + FRSTAR()\n")
+    probe = ("import sys, runpy\n"
+             f"sys.argv = ['autolev', 'transcript', {str(model)!r}, '--out', "
+             f"{str(tmp_path / 'out')!r}]\n"
+             "try:\n    runpy.run_module('autolev', run_name='__main__')\n"
+             "except SystemExit as exc:\n    assert not exc.code, exc.code\n"
+             "print('numpy' in sys.modules)\n")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                          env={**os.environ, "AUTOLEV_CACHE": str(tmp_path / "cache")})
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == "False"
+    assert (tmp_path / "out" / "one.all").is_file()

@@ -24,10 +24,13 @@ import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import numpy as np
 import sympy as sm
 from sympy import Symbol
+
+if TYPE_CHECKING:
+    import numpy as np
 
 from . import ir
 from .engine import reading
@@ -250,6 +253,7 @@ class Report:
 
 
 def _plain(v):
+    import numpy as np      # here: a transcript replays without numpy
     if v is None:
         return None
     a = np.asarray(v, dtype=complex)
@@ -479,6 +483,7 @@ _POINTS = ([(seed, (0.5, 1.5)) for seed in range(1, 4)]
 
 
 def _is_real(a) -> bool:
+    import numpy as np
     a = np.asarray(a, dtype=complex)
     return bool(np.all(np.isfinite(a)) and
                 np.all(np.abs(a.imag) <= 1e-12 * (1 + np.abs(a.real))))
@@ -552,6 +557,7 @@ class _Comparison:
 
     def values_at(self, point: NumericPoint):
         """(ours, Autolev's) at one point, as complex arrays of the same shape."""
+        import numpy as np
         at = _AtPoint(self, point)
         theirs = np.asarray(at.value(self.theirs), dtype=complex)
         mine = np.asarray(at.value(self.ours), dtype=complex)
@@ -573,6 +579,7 @@ class _AtPoint:
         return complex(self.c.defs.numeric(e, self.point))
 
     def dcm(self, frame) -> np.ndarray:
+        import numpy as np
         newton = self.c.newton
         if newton is None or not newton.orientation_known(frame):
             raise NotComparable(f"frame {frame.name} is not oriented in the Newtonian frame")
@@ -581,6 +588,7 @@ class _AtPoint:
 
     def value(self, v):
         """A value of the model, in the Newtonian frame for a vector or dyadic."""
+        import numpy as np
         if isinstance(v, Vector):
             out = np.zeros(3, dtype=complex)
             for f, comps in v.terms.items():
@@ -601,6 +609,7 @@ class _AtPoint:
 def _compare(at: _PointSet, r: Response, ours, theirs, path: str, tol: float) -> Outcome:
     """Our value against Autolev's response at sample points: match within `tol`,
     mismatch, or not comparable."""
+    import numpy as np
     comparison = _Comparison(at, r, ours, theirs)
     sampled = _sample(comparison, path)
     if isinstance(sampled, Outcome):
@@ -643,6 +652,7 @@ def _sample(comparison: _Comparison, path: str):
     response that cannot be evaluated.  The points are those where both values are
     real: equal expressions may take different branches of a root or logarithm where
     they are complex (Euler parameters far from unit length make 1 - Z10^2 negative)."""
+    import numpy as np
     r = comparison.response
     count = comparison.at.count
     ours_all, theirs_all, complex_pairs = [], [], []

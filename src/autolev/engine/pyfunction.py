@@ -7,8 +7,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from .functions import FUNCTION_SPECS, written
 
 
@@ -31,11 +29,13 @@ def _round(x):
 
 
 def _np_round(x):
+    import numpy as np      # numpy: only for the fallback, and runs (a transcript has none)
     t = np.trunc(x)
     return t + np.copysign(1.0, x) * (np.abs(x - t) >= 0.5)
 
 
 def _np_heaviside(x):
+    import numpy as np
     return np.heaviside(x, 0.5)
 
 
@@ -54,6 +54,7 @@ def _numpy_function(spelling: str):
     if spelling.startswith("scipy.special."):
         import scipy.special   # 0.1 s to import: only where math raised
         return getattr(scipy.special, spelling.removeprefix("scipy.special."))
+    import numpy as np
     return _HELPERS[spelling] if spelling in _HELPERS else getattr(np, spelling)
 
 
@@ -101,6 +102,7 @@ def python_function(source: str, name: str, n_in: int, code=None):
     """The callable of a generated Python program (codegen.compile_python) from its
     source, or from its compiled `code` (kept as `call.code`: compiling a large program
     is most of the cost)."""
+    import numpy as np
     if code is None:
         code = compile(source, f"<autolev generated {name}>", "exec")
     fast_ns, safe_ns = fast_namespace(), safe_namespace()

@@ -23,7 +23,6 @@ import zlib
 from collections.abc import Iterable, Mapping
 from contextlib import contextmanager
 
-import numpy as np
 import sympy as sm
 
 from ..errors import MAX_EXACT_DIGITS
@@ -56,6 +55,7 @@ REAL_TOLERANCE = 1e-12
 
 def is_real_number(z) -> bool:
     """Whether a complex number (or every entry of an array) is real up to rounding."""
+    import numpy as np      # here: a model's forming and a transcript need no numpy
     z = np.asarray(z, dtype=complex)
     return bool(np.all(np.abs(z.imag) <= REAL_TOLERANCE * np.maximum(1.0, np.abs(z.real))))
 

@@ -4,7 +4,6 @@ from __future__ import annotations
 import math
 import re
 
-import numpy as np
 import sympy as sm
 
 from .calculus import is_real_number, refuse_huge_powers, refused_substitution
@@ -256,6 +255,7 @@ def eig(m, vectors: bool = False):
     if names:
         raise AutolevModelError("EIG needs a matrix of numbers; give values to "
                                 + ", ".join(names) + " first (EVALUATE)")
+    import numpy as np      # here: forming a model needs no numpy
     a = np.array(m.evalf(), dtype=complex)
     if a.ndim != 2 or a.shape[0] != a.shape[1]:
         raise AutolevModelError("EIG needs a square matrix of numbers")
@@ -356,6 +356,7 @@ def roots(p, var=None, degree=None):
         except sm.PolynomialError:
             raise AutolevModelError(f"ROOTS: {p} is not a polynomial in {var}") from None
     if all(sm.sympify(c).is_number for c in coeffs):
+        import numpy as np
         r = np.roots([complex(sm.N(c)) for c in coeffs])
         order = sorted(range(len(r)), key=lambda i: (round(r[i].real, 12),
                                                      round(r[i].imag, 12)))

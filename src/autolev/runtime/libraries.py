@@ -8,11 +8,14 @@ LibraryChanged (an internal error: autolev must follow the library, the user can
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-import numpy as np
 import sympy as sm
 
 from ..engine.errors import AutolevModelError
+
+if TYPE_CHECKING:
+    import numpy as np
 
 
 class LibraryChanged(RuntimeError):
@@ -53,6 +56,7 @@ def dormand_prince_853() -> DormandPrince853:
     """The tableau of scipy's DOP853, which the compiled loop integrates with so that
     its steps are scipy's (scipy's private module of published coefficients)."""
     # imported here: 0.14 s, paid only when the compiled loop's C is generated
+    import numpy as np
     try:
         from scipy.integrate._ivp import dop853_coefficients as k
     except ImportError as exc:

@@ -13,7 +13,6 @@ from __future__ import annotations
 import math
 from enum import IntEnum
 
-import numpy as np
 import sympy as sm
 from sympy.core.numbers import NumberSymbol
 
@@ -317,5 +316,6 @@ def number_value(expr) -> float:
     try:
         return float(eval(code, fast_namespace()))
     except MATH_ERRORS:
+        import numpy as np  # where math raised: a model's forming needs no numpy otherwise
         with np.errstate(all="ignore"):
             return float(eval(code, safe_namespace()))

@@ -9,16 +9,18 @@ import warnings
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from . import studies
 from ..engine.errors import AutolevModelError
 from .io import INTEGRATION_PARAMETERS, CodeCommand, CodeKind
 from ..engine.files import safe_stem
-from ..engine.results import Result, command_error, run_summary
 from ..engine.options import RunOptions
-from .numerics.run import run_command
-from .numerics.snapshot import FormedDynamics, ModelSnapshot
-from ..engine.outputs import write_output
+
+if TYPE_CHECKING:
+    # the run machinery (numpy, the engine) is imported where a model computes numbers:
+    # forming a model, or its transcript, needs none of it
+    from ..engine.results import Result
+    from .numerics.snapshot import ModelSnapshot
 
 
 @dataclass
@@ -33,6 +35,7 @@ class CommandRun:
     def summary(self) -> str:
         """`CODE DYNAMICS bike.c: 101 rows in 1.30 s (building 1.02 s; integrating
         0.21 s: kutta-merson, 412 steps)` (results.run_summary)."""
+        from ..engine.results import run_summary
         return run_summary(self.command.kind, self.command.filename, self.result,
                            self.seconds)
 
@@ -51,6 +54,7 @@ class AnimationView:
 
     def save(self, path) -> Path:
         """Write the page to `path` (whole, never through a link at its name)."""
+        from ..engine.outputs import write_output
         target = Path(path)
         return write_output(target.parent, target.name, self.page)
 
@@ -94,6 +98,7 @@ class SimulationMixin:
         place = next((k for k, c in enumerate(self.code_commands) if c is command), None)
         if place is None:
             place = "plain" if command is self.plain_dynamics() else id(command)
+        from .numerics.snapshot import FormedDynamics, ModelSnapshot
         dynamics = None if self.newtonian_frame is None else FormedDynamics(
             independent_speeds=lambda: self.generalized_speeds()[0],
             equations=self.equations, mass_matrix=lambda: self.mass_matrix,
@@ -134,6 +139,8 @@ class SimulationMixin:
         `python model.py`): one CommandRun per command as it finishes.  A command the
         model cannot run stops the rest, or with `keep_going` is reported in its
         CommandRun's `error`."""
+        from ..engine.results import command_error
+        from .numerics.run import run_command
         try:
             for command in commands:
                 start = time.monotonic()
@@ -183,6 +190,7 @@ class SimulationMixin:
         by projecting the coordinates onto them at every print time (closed loops
         drift off them otherwise: only the velocity constraints are in the equations).
         Returns a Result (times, states and outputs as numpy arrays)."""
+        from .numerics.run import run_command
         try:
             return run_command(self.snapshot_for(self.command_to_run(code)), out_dir,
                                RunOptions.split(given))
@@ -260,6 +268,7 @@ class SimulationMixin:
         (what="simulate") at every point, translated and compiled once, on the local
         cores or on `executor=` (a Dask Client, any concurrent.futures Executor); one
         table.  See autolev.runtime.studies.sweep."""
+        from . import studies
         return studies.sweep(self, points, what, **options)
 
     def dynamics(self, controls=None, *, code=None, specified=None, backend: str = "auto",
