@@ -21,9 +21,9 @@ from sympy.polys.matrices.sdm import SDM
 from .calculus import Definitions
 from .derived import DerivedCache, Revision, mutation
 from ..engine.errors import AutolevModelError
-from .fastdiff import sum_of_products, times
+from .fastdiff import times
 from .interop import to_sympy_frame
-from .vectors import Vector, _s, _vector
+from .vectors import Vector, _s, _vector, matrix_times
 
 
 @dataclass(eq=False)
@@ -362,8 +362,7 @@ class Frame:
 
     def express_components(self, frame: "Frame", comps) -> tuple:
         """Measure numbers in self of the vector with measure numbers comps in frame."""
-        c = self.dcm(frame)
-        return tuple(sum_of_products(zip((c[i, 0], c[i, 1], c[i, 2]), comps)) for i in range(3))
+        return matrix_times(self.dcm(frame), comps)
 
     def orientation_known(self, other: "Frame") -> bool:
         return other is self or self._path(other, lambda f: f._dcm_edges) is not None

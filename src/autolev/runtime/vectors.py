@@ -28,6 +28,16 @@ def _s(x) -> sm.Expr:
     return x if isinstance(x, sm.Basic) else sm.sympify(x)
 
 
+def row_times(m, i: int, comps) -> sm.Expr:
+    """Row i of the 3x3 matrix m times the measure numbers `comps`, as sympy sums it."""
+    return sum_of_products(zip((m[i, 0], m[i, 1], m[i, 2]), comps))
+
+
+def matrix_times(m, comps) -> tuple:
+    """The 3x3 matrix m times the column of measure numbers `comps`."""
+    return tuple(row_times(m, i, comps) for i in range(3))
+
+
 def _difference(a: sm.Expr, b: sm.Expr) -> sm.Expr:
     """a - b as sympy's subtraction makes it (a + (-b)), a zero side costing nothing."""
     if b is _ZERO:
@@ -129,7 +139,7 @@ class Vector:
                     for i in range(3):
                         if a[i] == 0:
                             continue
-                        total.append(a[i] * sum_of_products(zip((c[i, 0], c[i, 1], c[i, 2]), b)))
+                        total.append(a[i] * row_times(c, i, b))
         return sm.Add(*total)
 
     def cross(self, other):
@@ -306,9 +316,7 @@ class Dyadic:
         if isinstance(other, Vector):
             out = Vector()
             for (fa, fb), m in self.terms.items():
-                v = other.components_in(fb)
-                out = out + Vector({fa: tuple(sum_of_products(zip((m[i, 0], m[i, 1], m[i, 2]), v))
-                                              for i in range(3))})
+                out = out + Vector({fa: matrix_times(m, other.components_in(fb))})
             return out.zified()
         if isinstance(other, Dyadic):
             out = Dyadic()

@@ -166,7 +166,8 @@ class NumericSystem(CompiledEvaluation):
         """The specified quantities, the parameters (constants without a definition) and
         the definitions of constants that the expressions need."""
         defs = self.defs
-        order, undefined = self.needed(exprs, given)
+        roots = symbols_in(*exprs)
+        order, undefined = self._needed_from(roots, given)
         self.specified = alphabetical(s for s in undefined if self.is_specified(s))
         params = [s for s in undefined if not self.is_specified(s)]
         self.params = (alphabetical(params) if integrate
@@ -174,7 +175,7 @@ class NumericSystem(CompiledEvaluation):
         pset = set(self.params)
         const_defs = [s for s in order if defs.primitive_deps(s) <= pset]
         cset = set(const_defs)
-        used = symbols_in(*exprs)
+        used = set(roots)
         for s in order:
             if s not in cset:
                 used |= defs.free(s)
@@ -407,8 +408,12 @@ class NumericSystem(CompiledEvaluation):
         return info is not None and info.kind == "specified"
 
     def needed(self, exprs, given) -> tuple[list, set]:
+        return self._needed_from(symbols_in(*exprs), given)
+
+    def _needed_from(self, roots: set, given) -> tuple[list, set]:
+        """(the definitions the symbols `roots` need, in evaluation order; the undefined
+        symbols they come to, less those `given`)."""
         defs = self.defs
-        roots = symbols_in(*exprs)
         order = defs.evaluation_order(roots, given)
         syms = set(roots)
         for s in order:
