@@ -32,10 +32,14 @@ from autolev.engine import files
 model = autolev.load(sys.argv[1])
 model.simulate(out_dir=sys.argv[2], TFINAL=1)            # the previous run's set
 real, count = os.replace, [0]
+from autolev.engine.outputs import records_dir
+# os.replace is process-wide: a compile thread's renames in the cache do not count
+counted = {os.path.realpath(sys.argv[2]), os.path.realpath(records_dir())}
 def replace(src, dst):
-    count[0] += 1
-    if count[0] == int(sys.argv[3]):
-        os.kill(os.getpid(), int(sys.argv[4]))
+    if os.path.dirname(os.path.realpath(dst)) in counted:
+        count[0] += 1
+        if count[0] == int(sys.argv[3]):
+            os.kill(os.getpid(), int(sys.argv[4]))
     return real(src, dst)
 files.os.replace = replace
 model.simulate(out_dir=sys.argv[2], TFINAL=2)
