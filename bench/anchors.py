@@ -91,6 +91,7 @@ PINOCCHIO_SOURCE = r"""
 // the planar chain of bench/chains.py for Pinocchio's articulated-body algorithm
 #include <pinocchio/multibody.hpp>
 #include <pinocchio/algorithm/aba.hpp>
+#include <pinocchio/algorithm/aba-derivatives.hpp>
 #include <string>
 #include <time.h>
 
@@ -151,6 +152,40 @@ extern "C" double chain_loop(void *chain, const double *q, const double *v, long
     clock_gettime(CLOCK_MONOTONIC, &a);
     for (long i = 0; i < count; i++)
         s += pin::aba(c.model, c.data, qq, vv, c.tau)[0];
+    clock_gettime(CLOCK_MONOTONIC, &b);
+    *sink = s;
+    return (double)(b.tv_sec - a.tv_sec) + 1e-9 * (double)(b.tv_nsec - a.tv_nsec);
+}
+
+/* d(a)/dq and d(a)/dv (n x n each, row-major) at (q, v) with no joint torques */
+extern "C" void chain_aba_derivatives(void *chain, const double *q, const double *v,
+                                      double *da_dq, double *da_dv)
+{
+    Chain &c = *static_cast<Chain *>(chain);
+    const int n = c.model.nv;
+    pin::computeABADerivatives(c.model, c.data, Eigen::Map<const Eigen::VectorXd>(q, n),
+                               Eigen::Map<const Eigen::VectorXd>(v, n), c.tau);
+    typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> RowMajor;
+    Eigen::Map<RowMajor>(da_dq, n, n) = c.data.ddq_dq;
+    Eigen::Map<RowMajor>(da_dv, n, n) = c.data.ddq_dv;
+}
+
+/* seconds taken by `nodes` evaluations of the derivatives, one at each row of q and v
+   (nodes x n, row-major), as a collocation asks for them; *sink: a sum of results */
+extern "C" double chain_aba_derivatives_loop(void *chain, const double *q, const double *v,
+                                             long nodes, double *sink)
+{
+    Chain &c = *static_cast<Chain *>(chain);
+    const int n = c.model.nv;
+    struct timespec a, b;
+    double s = 0.0;
+    clock_gettime(CLOCK_MONOTONIC, &a);
+    for (long k = 0; k < nodes; k++) {
+        pin::computeABADerivatives(c.model, c.data,
+                                   Eigen::Map<const Eigen::VectorXd>(q + k * n, n),
+                                   Eigen::Map<const Eigen::VectorXd>(v + k * n, n), c.tau);
+        s += c.data.ddq_dq(0, 0) + c.data.ddq_dv(0, 0);
+    }
     clock_gettime(CLOCK_MONOTONIC, &b);
     *sink = s;
     return (double)(b.tv_sec - a.tv_sec) + 1e-9 * (double)(b.tv_nsec - a.tv_nsec);
@@ -220,6 +255,9 @@ class Pinocchio:
         lib.chain_accelerations.argtypes = [P, P, P, P]
         lib.chain_loop.argtypes = [P, P, P, ctypes.c_long, ctypes.POINTER(D)]
         lib.chain_loop.restype = D
+        lib.chain_aba_derivatives.argtypes = [P, P, P, P, P]
+        lib.chain_aba_derivatives_loop.argtypes = [P, P, P, ctypes.c_long, ctypes.POINTER(D)]
+        lib.chain_aba_derivatives_loop.restype = D
         self._lib = lib
         self._chains: dict = {}
 
@@ -242,6 +280,22 @@ class Pinocchio:
         return CDriver._median_us(
             lambda k: self._lib.chain_loop(chain, q.ctypes.data, u.ctypes.data, k,
                                            ctypes.byref(sink)), budget, repeats)
+
+
+    def aba_derivatives(self, q, u) -> tuple[np.ndarray, np.ndarray]:
+        """(d(accelerations)/dq, d(accelerations)/du) at (q, u): n x n each."""
+        q, u = np.ascontiguousarray(q, dtype=float), np.ascontiguousarray(u, dtype=float)
+        dq, du = np.empty((len(q), len(q))), np.empty((len(q), len(q)))
+        self._lib.chain_aba_derivatives(self._chain(len(q)), q.ctypes.data, u.ctypes.data,
+                                        dq.ctypes.data, du.ctypes.data)
+        return dq, du
+
+    def aba_derivatives_seconds(self, q, u) -> float:
+        """Seconds of one C++ loop of the derivatives over the rows of q and u (nodes x n)."""
+        q, u = np.ascontiguousarray(q, dtype=float), np.ascontiguousarray(u, dtype=float)
+        sink = ctypes.c_double()
+        return self._lib.chain_aba_derivatives_loop(self._chain(q.shape[1]), q.ctypes.data,
+                                                    u.ctypes.data, len(q), ctypes.byref(sink))
 
 
 # -- the exact reference ----------------------------------------------------------------

@@ -12,8 +12,8 @@ corpus is there, gait2de (csu-hmc/gait2d: the joint moments mom4..mom9 as contro
 its parameters set to 1 where it gives none).  Every node's numbers come from one call
 (C where there is a compiler); each time is the best of five repeats, in one run.
 With Pinocchio installed (`pip install 'autolev[bench]'`), the planar chains' ABA
-derivatives (pinocchio.computeABADerivatives, a C++ loop over the same nodes through
-its Python binding) are timed beside ours.
+derivatives (pinocchio.computeABADerivatives in a C++ loop over the same nodes, the
+driver bench/anchors.py compiles once from Pinocchio's headers) are timed beside ours.
 
 `--solve`: the pendulum swing-up of docs/tutorials/trajectory.md (backward Euler, 51
 nodes, 2 s, the torque squared) solved twice in one run, each by IPOPT from the same
@@ -88,30 +88,31 @@ def measured(name: str, model, nodes: int, controls=None, parameters=None) -> di
 
 
 def pinocchio_planar(n: int, nodes: int, row: dict) -> tuple | None:
-    """(seconds per node of computeABADerivatives on the planar n-link chain, the largest
-    gap between its d(qdd)/d(q, v) and ours at the first node, relative to the largest
-    entry), or None without Pinocchio."""
+    """(seconds per node of computeABADerivatives on the planar n-link chain, in a C++
+    loop over the same nodes (bench/anchors.py's driver, header-only at -O3
+    -march=native), the largest gap between its d(qdd)/d(q, v) and ours at the first
+    node, relative to the largest entry), or None without Pinocchio."""
     try:
-        import pinocchio as pin
+        import pinocchio  # noqa: F401
     except ImportError:
         return None
-    model = chains.planar_pinocchio(pin, n)
-    data = model.createData()
+    import anchors
+    driver = anchors.Pinocchio(anchors.pinocchio_library(log=lambda text: print(text,
+                                                                                 flush=True)))
     dyn, x = row["dynamics"], row["x"]
     order = [dyn.states.index(f"Q{i}") for i in range(1, n + 1)]
     speeds = [dyn.states.index(f"U{i}") for i in range(1, n + 1)]
     q, v = x[:, order], x[:, speeds]
-    tau = np.zeros(n)
-
-    def run():
-        for k in range(nodes):
-            pin.computeABADerivatives(model, data, q[k], v[k], tau)
-    seconds = best_of(5, run) / nodes
-    pin.computeABADerivatives(model, data, q[0], v[0], tau)
-    theirs = np.hstack([data.ddq_dq, data.ddq_dv])
+    seconds = best_of_seconds(5, lambda: driver.aba_derivatives_seconds(q, v)) / nodes
+    theirs = np.hstack(driver.aba_derivatives(q[0], v[0]))
     ours = dyn.explicit_jacobians(x[:1], parameters=False).dense("x")[0][
         np.ix_(speeds, order + speeds)]
     return seconds, float(np.abs(ours - theirs).max() / np.abs(theirs).max())
+
+
+def best_of_seconds(repeats: int, timed) -> float:
+    """The least of `repeats` calls of `timed`, each returning the seconds it measured."""
+    return min(timed() for _ in range(repeats))
 
 
 SWINGUP = ROOT / "docs" / "examples" / "swingup.al"
