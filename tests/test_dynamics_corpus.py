@@ -7,8 +7,9 @@ test: each entry within 1e-8 of its row's size at the step that suits it (a para
 steps relative to its value), wherever two neighbouring steps agree with each other.
 Where rounding swamps or fools the differences, CasADi's algorithmic derivatives of the
 same program decide the block (f's through r's, by a pivoted solve); without casadi
-such entries are counted undecided, not passed.  A tree's f's Jacobians, by its
-recursion, also equal those by its mass matrix."""
+such entries are counted undecided, not passed.  A tree's Jacobians by its recursions
+(f's by the articulated-body one, r's by Newton-Euler) also equal those by its mass
+matrix."""
 from pathlib import Path
 
 import numpy as np
@@ -99,8 +100,10 @@ def _check(path: Path, shipped: Path | None, out: dict) -> None:
         if disagree:
             wrong.append(f"{name} ({disagree} entries)")
     if explicit.by == "recursion":      # a tree's: the mass matrix's route as well
+        assert implicit.by == "recursion"
         wrong += _routes_differ(model.dynamics(infile=shipped, overrides=values,
-                                               recursion=False), explicit, x, u, p, t, ill)
+                                               recursion=False), explicit, implicit, x, xdot,
+                                u, p, t, ill)
     out["detail"] = (f"{len(dynamics.states)} states, {len(dynamics.parameters)} parameters"
                      + f"; f's Jacobians by the {explicit.by}"
                      + (f"; decided by CasADi's derivatives: {', '.join(decided)}"
@@ -113,20 +116,23 @@ def _check(path: Path, shipped: Path | None, out: dict) -> None:
         out["outcome"] = "failing"
 
 
-def _routes_differ(mass, by_tree, x, u, p, t, ill: bool) -> list:
-    """The blocks where f's Jacobians by the recursion and by -M^-1 times those of
-    M a - F differ beyond 1e-8 of their row's size (nothing where M's condition alone
-    could part them)."""
-    by_mass = mass.explicit_jacobians(x, u, p, t)
+def _routes_differ(mass, explicit, implicit, x, xdot, u, p, t, ill: bool) -> list:
+    """The blocks where a tree's Jacobians by its recursions and by its mass matrix
+    differ beyond 1e-8 of their row's size: f's (by -M^-1 times those of M a - F;
+    nothing where M's condition alone could part them) and r's (M a - F as formed)."""
     wrong = []
-    for block in by_mass.values:
-        expected = by_mass.dense(block)
-        if not expected.size:           # no controls
-            continue
-        scale = np.maximum(1.0, np.abs(expected).max(axis=-1, keepdims=True))
-        apart = int((np.abs(by_tree.dense(block) - expected) > 1e-8 * scale).sum())
-        if apart and not ill:
-            wrong.append(f"df/d{block} by the recursion and by M a - F ({apart} entries)")
+    for form, by_tree, by_mass in (
+            ("f", explicit, mass.explicit_jacobians(x, u, p, t)),
+            ("r", implicit, mass.residual_jacobians(x, xdot, u, p, t))):
+        for block in by_mass.values:
+            expected = by_mass.dense(block)
+            if not expected.size:           # no controls
+                continue
+            scale = np.maximum(1.0, np.abs(expected).max(axis=-1, keepdims=True))
+            apart = int((np.abs(by_tree.dense(block) - expected) > 1e-8 * scale).sum())
+            if apart and not (ill and form == "f"):
+                wrong.append(f"d{form}/d{block} by the recursion and by M a - F "
+                             f"({apart} entries)")
     return wrong
 
 

@@ -102,6 +102,17 @@ def accelerations(system: System, speeds: list) -> Recursion:
     return Recursion(rates, [p for p, _ in tree.pivots], [e for _, e in tree.pivots])
 
 
+def inverse_dynamics(system: System, speeds: list) -> list:
+    """Row k of M a - F for the k-th of `speeds` (a: their derivatives, as symbols), by
+    the Newton-Euler recursion over the tree (see _Tree.inverse_dynamics); NotATree
+    when the model is not a tree it solves."""
+    try:
+        tree = _Tree(system, list(speeds))
+    except AutolevModelError as exc:
+        raise NotATree(str(exc)) from None
+    return tree.inverse_dynamics()
+
+
 class _Tree:
     def __init__(self, system: System, speeds: list):
         self.system, self.speeds, self.defs = system, speeds, system.defs
@@ -410,11 +421,12 @@ class _Tree:
                                    "where its coordinates are constrained")
 
     # -- the recursion -------------------------------------------------------------------
-    def solve(self) -> list:
-        z = self.defs.zify
-        joints = self.joints
+    def _inertias(self) -> tuple[list, list]:
+        """Per joint: the body's spatial inertia about its mass centre (6x6, N), and
+        the force its motion asks with no acceleration (the gyroscopic moment) less
+        the loads on it (moment, force)."""
         inertia, bias_force = [], []
-        for j in joints:
+        for j in self.joints:
             i_n, m = j.inertia
             spatial = [[sm.S.Zero] * 6 for _ in range(6)]
             for a in range(3):
@@ -425,6 +437,48 @@ class _Tree:
             w = j.omega
             gyro = _cross(w, tuple(sum(i_n[a, c] * w[c] for c in range(3)) for a in range(3)))
             bias_force.append([g - f for g, f in zip(gyro + _ZERO, j.applied)])
+        return inertia, bias_force
+
+    def _carried_acceleration(self, accel: list, j: _Joint) -> list:
+        """The joint's acceleration before its own speeds' rates: the parent's carried
+        to this mass centre, plus the joint's bias."""
+        base = list(j.bias)
+        if j.parent >= 0:
+            ap = accel[j.parent]
+            carried = ap[:3] + list(_add(ap[3:], _cross(ap[:3], j.offset)))
+            base = [x + y for x, y in zip(carried, base)]
+        return [self.defs.zify(x) for x in base]
+
+    def inverse_dynamics(self) -> list:
+        """Row r of M a - F, with the speeds' rates a as the symbols `self.rates`: each
+        body's acceleration from the root, the wrench its inertia and loads ask of it,
+        summed from the leaves through the joints; a speed's row is its columns dotted
+        with the wrench of the subtree it moves, less its generalized force from the
+        loads that act through partial velocities.  Where a = the recursion's rates
+        every row is 0 (the same equations as `solve`)."""
+        z = self.defs.zify
+        inertia, bias_force = self._inertias()
+        accel, wrench = [None] * len(self.joints), [None] * len(self.joints)
+        for k, j in enumerate(self.joints):
+            base = self._carried_acceleration(accel, j)
+            accel[k] = [z(base[a] + sum((col[a] * self.rates[r]
+                                         for col, r in zip(j.columns, j.speeds)), sm.S.Zero))
+                        for a in range(6)]
+            wrench[k] = [_dot(inertia[k][a], accel[k]) + bias_force[k][a] for a in range(6)]
+        rows = [None] * len(self.speeds)
+        for k in range(len(self.joints) - 1, -1, -1):    # children come after parents
+            j = self.joints[k]
+            total = [z(x) for x in wrench[k]]
+            for r, col in zip(j.speeds, j.columns):
+                rows[r] = z(_dot(col, total) - self.generalized[r])
+            if j.parent >= 0:
+                _carry_force(wrench[j.parent], total, j.offset)
+        return rows
+
+    def solve(self) -> list:
+        z = self.defs.zify
+        joints = self.joints
+        inertia, bias_force = self._inertias()
         kept = [None] * len(joints)
         for k in range(len(joints) - 1, -1, -1):
             j = joints[k]
@@ -451,12 +505,7 @@ class _Tree:
         accel = [None] * len(joints)
         out = [None] * len(self.speeds)
         for k, j in enumerate(joints):
-            base = list(j.bias)
-            if j.parent >= 0:
-                ap = accel[j.parent]
-                carried = ap[:3] + list(_add(ap[3:], _cross(ap[:3], j.offset)))
-                base = [x + y for x, y in zip(carried, base)]
-            base = [z(x) for x in base]
+            base = self._carried_acceleration(accel, j)
             w_rows, g = kept[k]
             rates = [z(g[i] - _dot(w_rows[i], base)) for i in range(len(j.speeds))]
             for r, rate in zip(j.speeds, rates):

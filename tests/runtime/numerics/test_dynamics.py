@@ -128,6 +128,27 @@ def test_a_trees_jacobians_by_its_recursion_are_those_of_the_mass_matrix(name):
                                atol=1e-11 * np.abs(expected).max(initial=1.0)), block
 
 
+@pytest.mark.parametrize("name", TREES)
+def test_a_trees_residual_jacobians_by_newton_euler_are_those_of_kanes_m_and_f(name):
+    # two derivations of r's Jacobians: the rows M a - F by the Newton-Euler recursion
+    # over the tree, and M and F as Kane's equations form them (x': M's entries)
+    model = autolev.load(EXAMPLES / f"{name}.al")
+    tree, mass = model.dynamics(), model.dynamics(recursion=False)
+    rng = np.random.default_rng(31)
+    x = 0.7 * rng.normal(size=(5, len(tree.states)))
+    xdot = rng.normal(size=x.shape)
+    u = rng.normal(size=(5, len(tree.controls)))
+    for parameters in (True, False):
+        by_tree = tree.residual_jacobians(x, xdot, u, parameters=parameters)
+        by_mass = mass.residual_jacobians(x, xdot, u, parameters=parameters)
+        assert (by_tree.by, by_mass.by) == ("recursion", "mass matrix")
+        assert set(by_tree.values) == set(by_mass.values)
+        for block in by_mass.values:
+            expected = by_mass.dense(block)
+            assert np.allclose(by_tree.dense(block), expected, rtol=0,
+                               atol=1e-12 * np.abs(expected).max(initial=1.0)), block
+
+
 def test_a_trees_singular_mass_matrix_is_named_by_both_derivations():
     model = autolev.load(EXAMPLES / "simple_pendulum.al")
     for dynamics in (model.dynamics(), model.dynamics(recursion=False)):

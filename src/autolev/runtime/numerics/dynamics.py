@@ -10,9 +10,11 @@ constants without a definition.  Two forms:
 
 r's row for a state whose rate is given (q' = g) is x'_i - g_i; its row for a speed
 whose rate Kane's equations give is row k of M a - F (a: those speeds' rates, M and F
-of the model's own forming), so r is linear in x'.  f's Jacobians of a model whose
-bodies form a tree (runtime/articulated.py) are those of the articulated-body
-recursion's accelerations, as a run integrates them: their program grows as the
+of the model's own forming), so r is linear in x'.  For a model whose bodies form a
+tree (runtime/articulated.py) f's Jacobians are those of the articulated-body
+recursion's accelerations, as a run integrates them, and r's those of its rows M a - F
+formed by the Newton-Euler recursion (the same equations: each body's acceleration
+from the root, the wrenches summed from the leaves): both programs grow as the
 recursion (n^2 entries of a few terms each), where -M^-1 times the Jacobian of M a - F
 grows as M's entries times the variables.  Every derivative is symbolic,
 through the Z's (`Definitions.jacobian`), printed once and compiled (C where there is a
@@ -26,6 +28,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import sympy as sm
 
+from .. import articulated
 from .. import symbols as S
 from ...engine.errors import AutolevModelError
 from ...engine.evaluation import pivot_ratios
@@ -37,6 +40,7 @@ from .compiled import compile_program
 from .inputs import display_name
 from .prepare import SystemBuild, numeric_system, prepare_command
 from .snapshot import ModelSnapshot
+from .system import lower_derivative
 from ..steps import SlowStep
 
 
@@ -71,7 +75,8 @@ class Jacobians:
     """The sparse Jacobians of one form at N nodes: values (N x nnz) by block, with the
     blocks' patterns ("x", "xdot" (implicit form only), "u", "p"), and what they were
     differentiated from: "recursion" (a tree's accelerations by the articulated-body
-    recursion) or "mass matrix" (M a - F)."""
+    recursion, or its M a - F by the Newton-Euler recursion) or "mass matrix" (M a - F
+    as Kane's equations form M and F)."""
 
     values: dict
     patterns: dict
@@ -113,6 +118,21 @@ class _TreeDerivatives:
     blocks: dict                # "x", "u", "p" -> positions in entries
 
 
+@dataclass(frozen=True)
+class _TreeResidual:
+    """r's Jacobian program by the Newton-Euler recursion (a tree; r's dynamical rows
+    M a - F formed by it): inputs (t, x, p, s, a); outputs the structural nonzeros of
+    r's Jacobian in (x, u, p) and in a (M's entries), row-major."""
+
+    function: object
+    width: int                  # outputs per node
+    patterns: dict              # "x", "u", "p" (the program's order), "xdot"
+    blocks: dict                # "x", "u", "p" -> positions in the outputs
+    ones: np.ndarray            # "xdot" values: positions that are 1 (kinematical)
+    mass_at: np.ndarray         # ... positions that are M's entries
+    mass_outputs: np.ndarray    # ... and the output each one is
+
+
 class Dynamics:
     """The compiled equations of motion of one CODE DYNAMICS, with exact Jacobians (see
     the module's text).  Arrays have one row per node: x (N x nx), x' (N x nx), u (N x
@@ -120,11 +140,15 @@ class Dynamics:
     model's values).  One node may be given as 1-D arrays."""
 
     def __init__(self, system, controls: list, parameter_values: np.ndarray, backend: str,
-                 definitions, tree=lambda: None, progress=None, what: str = "CODE DYNAMICS"):
+                 definitions, tree=lambda: None, progress=None, what: str = "CODE DYNAMICS",
+                 inverse=lambda: None):
         self._system = system
         # () -> the command's system with the recursion's accelerations, None for a model
         # that is not a tree; taken when f's Jacobians are first asked for
         self._tree = tree
+        # () -> a tree's rows of M a - F by the Newton-Euler recursion, None for a model
+        # that is not one; taken when r's Jacobians are first asked for
+        self._inverse = inverse
         self._control_symbols = list(controls)
         self._definitions = definitions      # () -> the command's view of the definitions
         # the program's inputs besides t and x: the parameters left, and the specified
@@ -154,6 +178,7 @@ class Dynamics:
         self._derivatives: dict[bool, _Derivatives] = {}
         self._by_columns: dict[str, list] = {}     # see _differentiated
         self._tree_derivatives: dict[bool, _TreeDerivatives | None] = {}
+        self._tree_residuals: dict[bool, _TreeResidual | None] = {}
 
     def _given(self) -> dict:
         """The program's inputs: time, state, parameters, specified quantities."""
@@ -287,6 +312,47 @@ class Dynamics:
         blocks, patterns = self._blocks(entries, parameters)
         return _TreeDerivatives(function, tree.pivot_count, entries, patterns, blocks)
 
+    def _formed_tree_residual(self, parameters: bool) -> "_TreeResidual | None":
+        """r's Jacobian program by the Newton-Euler recursion (once), or None: the model
+        is not a tree (then r's Jacobians come from M a - F as formed, whose entries
+        grow as n^3 where the recursion's rows grow as n)."""
+        if parameters in self._tree_residuals:
+            return self._tree_residuals[parameters]
+        formed = None
+        with self._definitions(), self._jacobians_step:
+            rows = self._inverse()
+            if rows is not None:
+                formed = self._tree_residual_program(rows, parameters)
+        self._tree_residuals[parameters] = formed
+        return formed
+
+    def _tree_residual_program(self, dynamic_rows: list, parameters: bool) -> _TreeResidual:
+        nx, nu, npar, n = self._sizes
+        rhs = self._system.rhs_exprs
+        rows = [-rhs[i] for i in range(nx)]          # (a dynamical row's is replaced)
+        for k, at in enumerate(self._dynamic):
+            rows[at] = dynamic_rows[k]
+        rates = list(self._system.implicit_unknowns)
+        variables = list(self._system.states) + self._control_symbols + (
+            self._parameter_symbols if parameters else []) + rates
+        function, entries = self._compiled(self._system, self._given() | {"a": rates}, [],
+                                           self._system.defs.jacobian(rows, variables),
+                                           "autolev_dynamics_tree_residual")
+        width = nx + nu + npar * parameters          # the columns before a's
+        in_a = entries[:, 1] >= width
+        blocks, patterns = self._blocks(entries[~in_a], parameters)
+        outputs = np.nonzero(~in_a)[0]
+        blocks = {name: outputs[at] for name, at in blocks.items()}
+        xdot = np.zeros((nx, nx), dtype=int)            # 1: kinematical, else 2 + output
+        xdot[self._kinematic, self._kinematic] = 1
+        for at in np.nonzero(in_a)[0]:
+            xdot[entries[at, 0], self._dynamic[entries[at, 1] - width]] = 2 + at
+        patterns["xdot"] = Pattern.of_mask(xdot > 0)
+        kinds = xdot[patterns["xdot"].rows, patterns["xdot"].cols]
+        return _TreeResidual(function, len(entries), patterns, blocks,
+                             np.nonzero(kinds == 1)[0], np.nonzero(kinds >= 2)[0],
+                             kinds[kinds >= 2] - 2)
+
     def _columns(self, parameters: bool) -> dict:
         """Each block's columns (lo, hi) among the Jacobian's (x, u, p or not)."""
         nx, nu, npar, _ = self._sizes
@@ -390,6 +456,15 @@ class Dynamics:
         """∂r/∂x, ∂r/∂x', ∂r/∂u, and with `parameters` ∂r/∂p, at every node, sparse (see
         Jacobians)."""
         x, u, t, xdot = self._nodes(x, u, t, xdot)
+        tree = self._formed_tree_residual(parameters) if self._sizes[3] else None
+        if tree is not None:
+            out = self._called(tree.function, tree.width, x, u, p, t,
+                               np.ascontiguousarray(xdot[:, self._dynamic]))
+            ddot = np.empty((x.shape[0], tree.patterns["xdot"].nnz))
+            ddot[:, tree.ones] = 1.0
+            ddot[:, tree.mass_at] = out[:, tree.mass_outputs]
+            return Jacobians({name: out[:, at] for name, at in tree.blocks.items()}
+                             | {"xdot": ddot}, dict(tree.patterns), "recursion")
         values, entries = self._evaluated(x, u, p, t, rates=xdot[:, self._dynamic],
                                           parameters=parameters)
         d = self._formed_derivatives(parameters)
@@ -485,11 +560,23 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
         build = SystemBuild.of(replace(options, recursion=True))
         recursive = numeric_system(snapshot, command, (), (), solving, build)
         return recursive if recursive.pivot_count else None
+
+    def inverse():
+        """A tree's rows of M a - F by the Newton-Euler recursion (the speeds' rates as
+        the symbols of r's x'), or None: the run's recursion does not solve it."""
+        recursive = tree()
+        if recursive is None or not (set(recursive.params) <= set(system.params)
+                                     and set(recursive.specified) <= set(system.specified)
+                                     | set(chosen)):
+            return None
+        speeds = [lower_derivative(d) for d in recursive.implicit_unknowns]
+        return articulated.inverse_dynamics(snapshot.dynamics.mechanics(), speeds)
     values = prepared.inputs.vector([p for p in system.params if p not in set(chosen)])
     with definitions():
         return Dynamics(system, chosen, values, backend, definitions,
                         tree if recursion else (lambda: None), progress,
-                        f"CODE DYNAMICS {command.filename}")
+                        f"CODE DYNAMICS {command.filename}",
+                        inverse if recursion else (lambda: None))
 
 
 def _controls(system, names) -> list:
