@@ -5,7 +5,12 @@ opty's own generated code from Model.to_opty() (opty builds its cyipopt problem)
 
 The problem is laid out as opty lays it out: backward Euler on N nodes, the moments at
 every node (the first one's in no equation and out of the objective), both ends as
-equality constraints, the speeds bounded.  bench/collocation.py --solve prints it."""
+equality constraints, the speeds bounded.  The two NLPs are the same up to the order of
+variables and rows (r's rows equal opty's equations at any point), yet a problem with
+stiff contact is chaotic: rounding alone sends IPOPT down different paths to different
+local optima.  So each is solved from several first guesses (the straight line, then
+the same line with the inner nodes' angles moved at random, the same for both), and the
+sums compared.  bench/collocation.py --solve prints it."""
 from __future__ import annotations
 
 import tempfile
@@ -53,12 +58,18 @@ def fixed_ends(nodes: int, states: list) -> tuple[np.ndarray, np.ndarray]:
     return np.array(where), np.concatenate([squat, np.zeros(9), stand[2:], np.zeros(9)])
 
 
-def first_guess(nodes: int, states: list) -> np.ndarray:
-    """Nodes x states: the angles straight from squat to standing at a constant rate."""
+def first_guess(nodes: int, states: list, seed: int | None = None) -> np.ndarray:
+    """Nodes x states: the angles straight from squat to standing at a constant rate;
+    with a seed, the inner nodes' angles (q3 ... q9) moved by up to 0.1 rad at random
+    (the same numbers whatever the order of `states`)."""
     squat, stand = ends()
     guess = np.zeros((nodes, len(states)))
+    moved = np.zeros((nodes, 9))
+    if seed is not None:
+        moved[1:-1, 2:] = np.random.default_rng(seed).uniform(-0.1, 0.1, (nodes - 2, 7))
     for i in range(9):
-        guess[:, states.index(f"q{i + 1}")] = np.linspace(squat[i], stand[i], nodes)
+        guess[:, states.index(f"q{i + 1}")] = np.linspace(squat[i], stand[i], nodes) \
+            + moved[:, i]
         guess[1:-1, states.index(f"q{i + 1}'")] = (stand[i] - squat[i]) / DURATION
     return guess
 
@@ -72,7 +83,10 @@ def speed_bounds(states: list) -> tuple[np.ndarray, np.ndarray]:
     return low, high
 
 
-def by_our_jacobians(path: Path, nodes: int) -> dict:
+def by_our_jacobians(path: Path, nodes: int, seeds=(None,)) -> dict:
+    """The problem through Model.dynamics' compiled Jacobians, solved from each seed's
+    first guess: {"build": seconds from the model loaded to the problem, "solves": one
+    row per seed}."""
     import cyipopt
     start = time.perf_counter()
     with warnings.catch_warnings():
@@ -144,15 +158,26 @@ def by_our_jacobians(path: Path, nodes: int) -> dict:
     for option, value in (("print_level", 0), ("sb", "yes"), ("max_iter", 3000),
                           ("hessian_approximation", "limited-memory")):
         problem.add_option(option, value)
-    guess = np.concatenate([first_guess(nodes, dyn.states).ravel(), np.zeros(n_u)])
+    built = time.perf_counter() - start
+
+    def solve(seed):
+        guess = np.concatenate([first_guess(nodes, dyn.states, seed).ravel(), np.zeros(n_u)])
+        return _timed_solve(problem, guess, calls)
+    return {"build": built, "solves": [solve(seed) for seed in seeds]}
+
+
+def _timed_solve(problem, guess, calls: dict) -> dict:
+    """IPOPT's seconds, optimum, status and trial points (objective evaluations) of one
+    solve from `guess`."""
+    calls["objective"] = 0
     began = time.perf_counter()
     _, info = problem.solve(guess)
-    done = time.perf_counter()
-    return {"total": done - start, "ipopt": done - began, "objective": float(info["obj_val"]),
+    return {"ipopt": time.perf_counter() - began, "objective": float(info["obj_val"]),
             "status": info["status"], "evaluations": calls["objective"]}
 
 
-def by_opty(path: Path, nodes: int) -> dict:
+def by_opty(path: Path, nodes: int, seeds=(None,)) -> dict:
+    """The problem through opty's generated code, as by_our_jacobians."""
     from opty import Problem
     start = time.perf_counter()
     with warnings.catch_warnings():
@@ -188,10 +213,10 @@ def by_opty(path: Path, nodes: int) -> dict:
                       tmp_dir=tempfile.mkdtemp())
     for option, value in (("print_level", 0), ("sb", "yes"), ("max_iter", 3000)):
         problem.add_option(option, value)
-    guess = np.concatenate([first_guess(nodes, names).T.ravel(),
-                            np.zeros(len(parts.controls) * nodes)])
-    began = time.perf_counter()
-    _, info = problem.solve(guess)
-    done = time.perf_counter()
-    return {"total": done - start, "ipopt": done - began, "objective": float(info["obj_val"]),
-            "status": info["status"], "evaluations": calls["objective"]}
+    built = time.perf_counter() - start
+
+    def solve(seed):
+        guess = np.concatenate([first_guess(nodes, names, seed).T.ravel(),
+                                np.zeros(len(parts.controls) * nodes)])
+        return _timed_solve(problem, guess, calls)
+    return {"build": built, "solves": [solve(seed) for seed in seeds]}
