@@ -46,6 +46,9 @@ random times, against the run's own right-hand side; 1e-8 of max(1, |value|)):
   r:df         model.dynamics().explicit_jacobians of a tree (by its articulated-body
                recursion) against recursion=False's (-M^-1 times the Jacobian of
                M a - F), within MATRIX_TOLERANCE of the largest entry of each block
+  r:dr         model.dynamics().residual_jacobians of a tree at x' = f (its rows
+               M a - F by the Newton-Euler recursion) against recursion=False's (M and
+               F as Kane's equations form them), as r:df
 
   The model-level equations (M,f, explicit, symsys) are those of the model as it
   stands; they are compared for a CODE DYNAMICS whose definitions are the model's last
@@ -99,7 +102,7 @@ from journeys import Cell as JourneyCell  # noqa: E402
 ROW_PATHS = ("warm", "no-cache", "foreground", "python", "api", "mass-matrix", "module",
              "code", "script")
 RATE_PATHS = ("r:python", "r:recursion", "r:M,f", "r:explicit", "r:symsys", "r:module",
-              "r:script", "r:dynamics", "r:df")
+              "r:script", "r:dynamics", "r:df", "r:dr")
 LINEARIZE_PATHS = ("l:warm", "l:no-cache", "l:c")
 PATHS = ROW_PATHS + RATE_PATHS + LINEARIZE_PATHS
 RATE_TOLERANCE = 1e-8
@@ -428,7 +431,7 @@ class ModelPaths:
             if got["mark"] != "ok":
                 cells[p] = Cell(got["mark"], got.get("detail", ""))
                 continue
-            cells[p] = (compare_jacobians(got) if p == "r:df"
+            cells[p] = (compare_jacobians(got) if p in ("r:df", "r:dr")
                         else compare_rates(reference, got))
 
     def linearizations(self) -> None:
@@ -526,7 +529,7 @@ def compare_rates(reference: dict, got: dict) -> Cell:
 
 
 def compare_jacobians(got: dict) -> Cell:
-    """f's Jacobians by the recursion against the mass matrix's, block by block."""
+    """f's or r's Jacobians by the recursion against the mass matrix's, block by block."""
     worst = 0.0
     for ours, theirs in got["blocks"].values():
         a, b = np.array(ours), np.array(theirs)
@@ -534,7 +537,8 @@ def compare_jacobians(got: dict) -> Cell:
             gap = float(np.max(np.abs(a - b)) / max(1.0, float(np.max(np.abs(b)))))
             worst = max(worst, gap if math.isfinite(gap) else math.inf)
     if not math.isfinite(worst) or worst > MATRIX_TOLERANCE:
-        return Cell("DIFF", f"f's Jacobians differ by {worst:.3g} of their largest entry")
+        return Cell("DIFF", f"{got['form']}'s Jacobians differ by {worst:.3g} of their "
+                    "largest entry")
     return Cell("~" if worst else "=", f"{worst:.1g}" if worst else "")
 
 
@@ -695,21 +699,24 @@ def rates(path: Path, options: list, count: int, module: Path | None,
         return {"mark": "ok", "states": dyn.states, "rates": rates_.tolist()}
     taking("dynamics", by_dynamics)
 
-    def jacobians_by_both():
+    def jacobians_by_both(form: str):
         from autolev.runtime.numerics.dynamics import dynamics
         x = np.array([x for _, x in points])
         t = np.array([t for t, _ in points])
-        by_tree = dynamics(model.snapshot_for(command), infile=infile,
-                           overrides=values or None).explicit_jacobians(x, None, None, t)
+        def by(recursion: bool):
+            dyn = dynamics(model.snapshot_for(command), infile=infile,
+                           overrides=values or None, recursion=recursion)
+            return (dyn.explicit_jacobians(x, None, None, t) if form == "f" else
+                    dyn.residual_jacobians(x, dyn.explicit(x, None, None, t), None, None, t))
+        by_tree = by(True)
         if by_tree.by != "recursion":
-            raise _NotApplicable("not a tree: f's Jacobians by the mass matrix alone")
-        by_mass = dynamics(model.snapshot_for(command), infile=infile,
-                           overrides=values or None,
-                           recursion=False).explicit_jacobians(x, None, None, t)
-        return {"mark": "ok", "blocks": {b: (by_tree.dense(b).tolist(),
-                                             by_mass.dense(b).tolist())
-                                         for b in by_mass.values}}
-    taking("df", jacobians_by_both)
+            raise _NotApplicable(f"not a tree: {form}'s Jacobians by the mass matrix alone")
+        by_mass = by(False)
+        return {"mark": "ok", "form": form,
+                "blocks": {b: (by_tree.dense(b).tolist(), by_mass.dense(b).tolist())
+                           for b in by_mass.values}}
+    taking("df", lambda: jacobians_by_both("f"))
+    taking("dr", lambda: jacobians_by_both("r"))
     if module is not None:
         def from_module():
             from autolev.loader import load_python

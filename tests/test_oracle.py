@@ -153,3 +153,36 @@ def test_products_of_inertia_written_as_numbers_are_not_refused():
     outcome = oracle.check_case(oracle.described_case(0, 0, pendulum_with_products()))
     assert outcome.status == "agree", oracle.describe(outcome)
 
+
+
+# random trees of the planar, spatial, DIRCOS and KINDIFFS families (the others have
+# constraints, or are not trees: mass matrix alone): 2, 11 and 29 take 10-30 s each
+TREES = [1, 3, 9, 18, 20, 28]
+LARGER_TREES = [2, 11, 29]
+
+
+@pytest.mark.parametrize("index", TREES + [pytest.param(i, marks=pytest.mark.slow)
+                                           for i in LARGER_TREES], ids=_id)
+def test_a_random_trees_residual_jacobians_by_newton_euler_are_kanes(index, tmp_path):
+    # r's Jacobians by the Newton-Euler recursion over the tree, against those of M a - F
+    # as Kane's equations form them (whose rates the test above holds to sympy's)
+    import warnings
+
+    import numpy as np
+
+    import autolev
+    path = tmp_path / "case.al"
+    path.write_text(oracle.make_case(SEED, index).autolev)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        model = autolev.load(path)
+        tree, mass = model.dynamics(), model.dynamics(recursion=False)
+        rng = np.random.default_rng(index)
+        x = rng.uniform(-1.0, 1.0, size=(2, len(tree.states)))
+        xdot, u = rng.normal(size=x.shape), rng.normal(size=(2, len(tree.controls)))
+        by_tree, by_mass = tree.residual_jacobians(x, xdot, u), mass.residual_jacobians(x, xdot, u)
+    assert (by_tree.by, by_mass.by) == ("recursion", "mass matrix")
+    for block in by_mass.values:
+        expected = by_mass.dense(block)
+        assert np.allclose(by_tree.dense(block), expected, rtol=0,
+                           atol=1e-12 * np.abs(expected).max(initial=1.0)), block

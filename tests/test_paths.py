@@ -38,9 +38,10 @@ def test_every_path_gives_the_answer_of_a_cold_run(model, tmp_path):
     for p in ("r:M,f", "r:explicit", "r:symsys", "r:script", "r:dynamics", "code", "script",
               "l:c"):
         assert row.cells[p].mark in ("=", "~"), (p, row.cells[p])
-    # the trees' f's Jacobians by their recursion and by the mass matrix
+    # the trees' f's and r's Jacobians by their recursions and by the mass matrix
     if model.stem != "solved_double_pendulum":
-        assert row.cells["r:df"].mark in ("=", "~"), row.cells["r:df"]
+        for p in ("r:df", "r:dr"):
+            assert row.cells[p].mark in ("=", "~"), (p, row.cells[p])
 
 
 def _files(folder, text):
@@ -77,13 +78,14 @@ def test_rates_within_the_tolerance_and_beyond_it():
 def test_jacobians_within_the_tolerance_and_beyond_it():
     by_mass = [[[0.0, 1.0], [-4905.0, -0.25]]]
     same = {"x": (by_mass, by_mass), "u": ([[[], []]], [[[], []]])}
-    assert paths.compare_jacobians({"blocks": same}).mark == "="
+    assert paths.compare_jacobians({"form": "f", "blocks": same}).mark == "="
     near = [[[0.0, 1.0], [-4905.0 * (1 + 1e-13), -0.25]]]
-    assert paths.compare_jacobians({"blocks": {"x": (near, by_mass)}}).mark == "~"
+    assert paths.compare_jacobians({"form": "f", "blocks": {"x": (near, by_mass)}}).mark == "~"
     far = [[[0.0, 1.0], [-4905.0, -0.25 + 1e-3]]]
-    assert paths.compare_jacobians({"blocks": {"x": (far, by_mass)}}).mark == "DIFF"
+    differing = paths.compare_jacobians({"form": "r", "blocks": {"x": (far, by_mass)}})
+    assert differing.mark == "DIFF" and differing.detail.startswith("r's Jacobians differ")
     broken = [[[0.0, 1.0], [float("nan"), -0.25]]]
-    assert paths.compare_jacobians({"blocks": {"x": (broken, by_mass)}}).mark == "DIFF"
+    assert paths.compare_jacobians({"form": "f", "blocks": {"x": (broken, by_mass)}}).mark == "DIFF"
 
 
 def _linear(folder, a):
