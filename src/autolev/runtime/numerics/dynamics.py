@@ -179,6 +179,8 @@ class Dynamics:
         self._by_columns: dict[str, list] = {}     # see _differentiated
         self._tree_derivatives: dict[bool, _TreeDerivatives | None] = {}
         self._tree_residuals: dict[bool, _TreeResidual | None] = {}
+        self._tree_rows: list | None = None        # None: not asked yet; []: not a tree
+        self._tree_by_columns: dict[str, list] = {}    # see _tree_differentiated
 
     def _given(self) -> dict:
         """The program's inputs: time, state, parameters, specified quantities."""
@@ -320,24 +322,21 @@ class Dynamics:
             return self._tree_residuals[parameters]
         formed = None
         with self._definitions(), self._jacobians_step:
-            rows = self._inverse()
-            if rows is not None:
-                formed = self._tree_residual_program(rows, parameters)
+            if self._tree_rows is None:
+                self._tree_rows = self._inverse() or []
+            if self._tree_rows:
+                formed = self._tree_residual_program(parameters)
         self._tree_residuals[parameters] = formed
         return formed
 
-    def _tree_residual_program(self, dynamic_rows: list, parameters: bool) -> _TreeResidual:
+    def _tree_residual_program(self, parameters: bool) -> _TreeResidual:
         nx, nu, npar, n = self._sizes
-        rhs = self._system.rhs_exprs
-        rows = [-rhs[i] for i in range(nx)]          # (a dynamical row's is replaced)
-        for k, at in enumerate(self._dynamic):
-            rows[at] = dynamic_rows[k]
+        groups = [self._tree_differentiated("x, u")] + [
+            self._tree_differentiated("p")] * parameters + [self._tree_differentiated("a")]
+        jacobian = [[d for part in parts for d in part] for parts in zip(*groups)]
         rates = list(self._system.implicit_unknowns)
-        variables = list(self._system.states) + self._control_symbols + (
-            self._parameter_symbols if parameters else []) + rates
         function, entries = self._compiled(self._system, self._given() | {"a": rates}, [],
-                                           self._system.defs.jacobian(rows, variables),
-                                           "autolev_dynamics_tree_residual")
+                                           jacobian, "autolev_dynamics_tree_residual")
         width = nx + nu + npar * parameters          # the columns before a's
         in_a = entries[:, 1] >= width
         blocks, patterns = self._blocks(entries[~in_a], parameters)
@@ -352,6 +351,21 @@ class Dynamics:
         return _TreeResidual(function, len(entries), patterns, blocks,
                              np.nonzero(kinds == 1)[0], np.nonzero(kinds >= 2)[0],
                              kinds[kinds >= 2] - 2)
+
+    def _tree_differentiated(self, group: str) -> list:
+        """r's rows by the Newton-Euler recursion (-g for a kinematical row) differentiated
+        in the columns of `group` ("x, u", "p" or "a"): each group once, for the programs
+        with and without p."""
+        if group not in self._tree_by_columns:
+            rhs = self._system.rhs_exprs
+            rows = [-rhs[i] for i in range(self._sizes[0])]  # (a dynamical row's replaced)
+            for k, at in enumerate(self._dynamic):
+                rows[at] = self._tree_rows[k]
+            variables = {"x, u": list(self._system.states) + self._control_symbols,
+                         "p": self._parameter_symbols,
+                         "a": list(self._system.implicit_unknowns)}[group]
+            self._tree_by_columns[group] = self._system.defs.jacobian(rows, variables)
+        return self._tree_by_columns[group]
 
     def _columns(self, parameters: bool) -> dict:
         """Each block's columns (lo, hi) among the Jacobian's (x, u, p or not)."""
