@@ -149,6 +149,30 @@ def test_a_trees_residual_jacobians_by_newton_euler_are_those_of_kanes_m_and_f(n
                                atol=1e-12 * np.abs(expected).max(initial=1.0)), block
 
 
+@pytest.mark.parametrize("first", ["explicit", "explicit without p", "residual without p"])
+def test_a_trees_jacobians_are_the_same_numbers_whichever_is_asked_for_first(first):
+    # each Z's name depends on what was formed before it, and a generated sum's order on
+    # the names: the tree's Jacobians are formed together, in one order, whatever comes first
+    rng = np.random.default_rng(37)
+    asked = {}
+    for order in ("residual", first):
+        dynamics = autolev.load(EXAMPLES / "nlink_pendulum.al").dynamics()
+        x = rng.normal(size=(3, len(dynamics.states))) if not asked else asked["x"]
+        xdot = rng.normal(size=x.shape) if not asked else asked["xdot"]
+        if order != "residual":
+            getattr(dynamics, f"{order.split()[0]}_jacobians")(
+                *((x, xdot) if order.startswith("residual") else (x,)),
+                parameters="without p" not in order)
+        got = {"r": dynamics.residual_jacobians(x, xdot), "f": dynamics.explicit_jacobians(x)}
+        if asked:
+            for form, jac in got.items():
+                assert jac.by == "recursion"
+                for block in jac.values:
+                    assert np.array_equal(jac.values[block], asked[form].values[block]), \
+                        (form, block)
+        asked = got | {"x": x, "xdot": xdot}
+
+
 def test_a_trees_singular_mass_matrix_is_named_by_both_derivations():
     model = autolev.load(EXAMPLES / "simple_pendulum.al")
     for dynamics in (model.dynamics(), model.dynamics(recursion=False)):

@@ -119,6 +119,20 @@ class _TreeDerivatives:
 
 
 @dataclass(frozen=True)
+class _TreeForms:
+    """A tree's Jacobians, symbolic, formed together in one order whichever is asked for
+    first: each Z's name, and so the order of a generated sum, depends on what was
+    formed before it, and a fixed order gives each program the same numbers whatever
+    the user asked for first.  f's rows are the articulated-body recursion's, r's the
+    Newton-Euler recursion's M a - F (and -g for a kinematical row)."""
+
+    system: object              # the command's system with the recursion's accelerations
+    f_head: list                # f's rates, then the recursion's pivots and their entries
+    f_jacobian: list            # f's rows x (x, u, p)
+    r_jacobian: list            # r's rows x (x, u, p, a)
+
+
+@dataclass(frozen=True)
 class _TreeResidual:
     """r's Jacobian program by the Newton-Euler recursion (a tree; r's dynamical rows
     M a - F formed by it): inputs (t, x, p, s, a); outputs the structural nonzeros of
@@ -141,13 +155,13 @@ class Dynamics:
 
     def __init__(self, system, controls: list, parameter_values: np.ndarray, backend: str,
                  definitions, tree=lambda: None, progress=None, what: str = "CODE DYNAMICS",
-                 inverse=lambda: None):
+                 inverse=lambda speeds: None):
         self._system = system
         # () -> the command's system with the recursion's accelerations, None for a model
         # that is not a tree; taken when f's Jacobians are first asked for
         self._tree = tree
-        # () -> a tree's rows of M a - F by the Newton-Euler recursion, None for a model
-        # that is not one; taken when r's Jacobians are first asked for
+        # (speeds) -> a tree's rows of M a - F by the Newton-Euler recursion, in the
+        # order of `speeds` (the dynamical rows'), their rates as the symbols of x'
         self._inverse = inverse
         self._control_symbols = list(controls)
         self._definitions = definitions      # () -> the command's view of the definitions
@@ -179,8 +193,8 @@ class Dynamics:
         self._by_columns: dict[str, list] = {}     # see _differentiated
         self._tree_derivatives: dict[bool, _TreeDerivatives | None] = {}
         self._tree_residuals: dict[bool, _TreeResidual | None] = {}
-        self._tree_rows: list | None = None        # None: not asked yet; []: not a tree
-        self._tree_by_columns: dict[str, list] = {}    # see _tree_differentiated
+        self._trees: _TreeForms | None = None      # see _formed_trees
+        self._trees_formed = False
 
     def _given(self) -> dict:
         """The program's inputs: time, state, parameters, specified quantities."""
@@ -285,59 +299,71 @@ class Dynamics:
                                      (self._sizes[0], hi - lo))
         return blocks, patterns
 
-    def _formed_tree_derivatives(self, parameters: bool) -> "_TreeDerivatives | None":
-        """f's Jacobian program by the recursion (once), or None: the model is not a
-        tree, or its recursion reads an input the mass matrix's form does not (then
-        f's Jacobians come from M a - F)."""
-        if parameters in self._tree_derivatives:
-            return self._tree_derivatives[parameters]
-        formed = None
+    def _formed_trees(self) -> "_TreeForms | None":
+        """A tree's Jacobians, symbolic, all formed at once in one order, whichever is
+        asked for first (see _TreeForms); None: the model is not a tree, or its recursion
+        reads an input the mass matrix's form does not (then both come from M a - F)."""
+        if self._trees_formed:
+            return self._trees
+        nx, _, _, n = self._sizes
         with self._definitions(), self._jacobians_step:
             tree = self._tree()
             if tree is not None and set(tree.params) <= set(self._system.params) \
                     and set(tree.specified) <= set(self._input_symbols):
-                formed = self._tree_program(tree, parameters)
-        self._tree_derivatives[parameters] = formed
-        return formed
+                rhs = list(tree.rhs_exprs)
+                rates = rhs[:nx]
+                for k, at in enumerate(tree.unknown_positions):
+                    rates[at] = rhs[nx + n * n + k]
+                columns = (list(self._system.states) + self._control_symbols
+                           + self._parameter_symbols)
+                f_jacobian = tree.defs.jacobian(rates, columns)
+                unknowns = list(self._system.implicit_unknowns)
+                dynamic_rows = self._inverse([lower_derivative(d) for d in unknowns])
+                rows = [-self._system.rhs_exprs[i] for i in range(nx)]
+                for k, at in enumerate(self._dynamic):
+                    rows[at] = dynamic_rows[k]
+                r_jacobian = self._system.defs.jacobian(rows, columns + unknowns)
+                self._trees = _TreeForms(tree, rates + rhs[nx + n * n + n:], f_jacobian,
+                                         r_jacobian)
+        self._trees_formed = True
+        return self._trees
 
-    def _tree_program(self, tree, parameters: bool) -> _TreeDerivatives:
-        nx, _, _, n = self._sizes
-        rhs = list(tree.rhs_exprs)
-        rates = rhs[:nx]
-        for k, at in enumerate(tree.unknown_positions):
-            rates[at] = rhs[nx + n * n + k]
-        variables = list(self._system.states) + self._control_symbols + (
-            self._parameter_symbols if parameters else [])
-        function, entries = self._compiled(tree, self._given(), rates + rhs[nx + n * n + n:],
-                                           tree.defs.jacobian(rates, variables),
-                                           "autolev_dynamics_tree_jacobian")
+    def _formed_tree_derivatives(self, parameters: bool) -> "_TreeDerivatives | None":
+        """f's Jacobian program by the recursion (once), or None (see _formed_trees)."""
+        if parameters not in self._tree_derivatives:
+            forms = self._formed_trees()
+            self._tree_derivatives[parameters] = (None if forms is None else
+                                                  self._tree_program(forms, parameters))
+        return self._tree_derivatives[parameters]
+
+    def _tree_program(self, forms: "_TreeForms", parameters: bool) -> _TreeDerivatives:
+        width = self._width(parameters)
+        with self._definitions(), self._jacobians_step:
+            function, entries = self._compiled(forms.system, self._given(), forms.f_head,
+                                               [row[:width] for row in forms.f_jacobian],
+                                               "autolev_dynamics_tree_jacobian")
         blocks, patterns = self._blocks(entries, parameters)
-        return _TreeDerivatives(function, tree.pivot_count, entries, patterns, blocks)
+        return _TreeDerivatives(function, forms.system.pivot_count, entries, patterns,
+                                blocks)
 
     def _formed_tree_residual(self, parameters: bool) -> "_TreeResidual | None":
-        """r's Jacobian program by the Newton-Euler recursion (once), or None: the model
-        is not a tree (then r's Jacobians come from M a - F as formed, whose entries
-        grow as n^3 where the recursion's rows grow as n)."""
-        if parameters in self._tree_residuals:
-            return self._tree_residuals[parameters]
-        formed = None
-        with self._definitions(), self._jacobians_step:
-            if self._tree_rows is None:
-                self._tree_rows = self._inverse() or []
-            if self._tree_rows:
-                formed = self._tree_residual_program(parameters)
-        self._tree_residuals[parameters] = formed
-        return formed
+        """r's Jacobian program by the Newton-Euler recursion (once), or None (see
+        _formed_trees): then r's Jacobians come from M a - F as formed, whose entries
+        grow as n^3 where the recursion's rows grow as n."""
+        if parameters not in self._tree_residuals:
+            forms = self._formed_trees()
+            self._tree_residuals[parameters] = (None if forms is None else
+                                                self._tree_residual_program(forms, parameters))
+        return self._tree_residuals[parameters]
 
-    def _tree_residual_program(self, parameters: bool) -> _TreeResidual:
-        nx, nu, npar, n = self._sizes
-        groups = [self._tree_differentiated("x, u")] + [
-            self._tree_differentiated("p")] * parameters + [self._tree_differentiated("a")]
-        jacobian = [[d for part in parts for d in part] for parts in zip(*groups)]
+    def _tree_residual_program(self, forms: "_TreeForms", parameters: bool) -> _TreeResidual:
+        nx, nu, npar, _ = self._sizes
+        width = self._width(parameters)            # the columns before a's
+        jacobian = [row[:width] + row[nx + nu + npar:] for row in forms.r_jacobian]
         rates = list(self._system.implicit_unknowns)
-        function, entries = self._compiled(self._system, self._given() | {"a": rates}, [],
-                                           jacobian, "autolev_dynamics_tree_residual")
-        width = nx + nu + npar * parameters          # the columns before a's
+        with self._definitions(), self._jacobians_step:
+            function, entries = self._compiled(self._system, self._given() | {"a": rates},
+                                               [], jacobian, "autolev_dynamics_tree_residual")
         in_a = entries[:, 1] >= width
         blocks, patterns = self._blocks(entries[~in_a], parameters)
         outputs = np.nonzero(~in_a)[0]
@@ -352,20 +378,10 @@ class Dynamics:
                              np.nonzero(kinds == 1)[0], np.nonzero(kinds >= 2)[0],
                              kinds[kinds >= 2] - 2)
 
-    def _tree_differentiated(self, group: str) -> list:
-        """r's rows by the Newton-Euler recursion (-g for a kinematical row) differentiated
-        in the columns of `group` ("x, u", "p" or "a"): each group once, for the programs
-        with and without p."""
-        if group not in self._tree_by_columns:
-            rhs = self._system.rhs_exprs
-            rows = [-rhs[i] for i in range(self._sizes[0])]  # (a dynamical row's replaced)
-            for k, at in enumerate(self._dynamic):
-                rows[at] = self._tree_rows[k]
-            variables = {"x, u": list(self._system.states) + self._control_symbols,
-                         "p": self._parameter_symbols,
-                         "a": list(self._system.implicit_unknowns)}[group]
-            self._tree_by_columns[group] = self._system.defs.jacobian(rows, variables)
-        return self._tree_by_columns[group]
+    def _width(self, parameters: bool) -> int:
+        """The Jacobian's columns in x, u and, with `parameters`, p."""
+        nx, nu, npar, _ = self._sizes
+        return nx + nu + npar * parameters
 
     def _columns(self, parameters: bool) -> dict:
         """Each block's columns (lo, hi) among the Jacobian's (x, u, p or not)."""
@@ -575,22 +591,15 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
         recursive = numeric_system(snapshot, command, (), (), solving, build)
         return recursive if recursive.pivot_count else None
 
-    def inverse():
-        """A tree's rows of M a - F by the Newton-Euler recursion (the speeds' rates as
-        the symbols of r's x'), or None: the run's recursion does not solve it."""
-        recursive = tree()
-        if recursive is None or not (set(recursive.params) <= set(system.params)
-                                     and set(recursive.specified) <= set(system.specified)
-                                     | set(chosen)):
-            return None
-        speeds = [lower_derivative(d) for d in recursive.implicit_unknowns]
+    def inverse(speeds):
+        """A tree's rows of M a - F by the Newton-Euler recursion, one per speed of
+        `speeds` (the recursion solves this model: `tree()` said so)."""
         return articulated.inverse_dynamics(snapshot.dynamics.mechanics(), speeds)
     values = prepared.inputs.vector([p for p in system.params if p not in set(chosen)])
     with definitions():
         return Dynamics(system, chosen, values, backend, definitions,
                         tree if recursion else (lambda: None), progress,
-                        f"CODE DYNAMICS {command.filename}",
-                        inverse if recursion else (lambda: None))
+                        f"CODE DYNAMICS {command.filename}", inverse)
 
 
 def _controls(system, names) -> list:
