@@ -239,18 +239,21 @@ class Dynamics:
         entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
         return compile_program(program, self._backend_asked, name), entries
 
-    def _residual_rows(self) -> list:
+    def _residual_rows(self, dynamic_rows: list | None = None) -> list:
         """The expressions differentiated, one per state row: -g for a kinematical row,
-        row k of M a - F (a: the symbols of the dynamical rows' rates) for a dynamical
-        one."""
+        for a dynamical one row k of `dynamic_rows`, by default of M a - F as formed (a:
+        the symbols of the dynamical rows' rates)."""
         nx, _, _, n = self._sizes
         rhs = list(self._system.rhs_exprs)
-        mass, forcing = rhs[nx:nx + n * n], rhs[nx + n * n:]
-        rates = list(self._system.implicit_unknowns)
+        if dynamic_rows is None:
+            mass, forcing = rhs[nx:nx + n * n], rhs[nx + n * n:]
+            rates = list(self._system.implicit_unknowns)
+            dynamic_rows = [sm.Add(*[mass[k * n + j] * rates[j] for j in range(n)
+                                     if mass[k * n + j] != 0]) - forcing[k]
+                            for k in range(n)]
         rows = [-rhs[i] for i in range(nx)]          # (a dynamical row's is replaced)
         for k, row in enumerate(self._dynamic):
-            rows[row] = sm.Add(*[mass[k * n + j] * rates[j] for j in range(n)
-                                 if mass[k * n + j] != 0]) - forcing[k]
+            rows[row] = dynamic_rows[k]
         return rows
 
     def _differentiated(self, group: str) -> list:
@@ -318,23 +321,25 @@ class Dynamics:
                            + self._parameter_symbols)
                 f_jacobian = tree.defs.jacobian(rates, columns)
                 unknowns = list(self._system.implicit_unknowns)
-                dynamic_rows = self._inverse([lower_derivative(d) for d in unknowns])
-                rows = [-self._system.rhs_exprs[i] for i in range(nx)]
-                for k, at in enumerate(self._dynamic):
-                    rows[at] = dynamic_rows[k]
+                rows = self._residual_rows(self._inverse([lower_derivative(d)
+                                                          for d in unknowns]))
                 r_jacobian = self._system.defs.jacobian(rows, columns + unknowns)
                 self._trees = _TreeForms(tree, rates + rhs[nx + n * n + n:], f_jacobian,
                                          r_jacobian)
         self._trees_formed = True
         return self._trees
 
+    def _tree_kept(self, kept: dict, parameters: bool, make):
+        """A tree's program (made once for each `parameters`: `make(forms, parameters)`),
+        or None (see _formed_trees)."""
+        if parameters not in kept:
+            forms = self._formed_trees()
+            kept[parameters] = None if forms is None else make(forms, parameters)
+        return kept[parameters]
+
     def _formed_tree_derivatives(self, parameters: bool) -> "_TreeDerivatives | None":
         """f's Jacobian program by the recursion (once), or None (see _formed_trees)."""
-        if parameters not in self._tree_derivatives:
-            forms = self._formed_trees()
-            self._tree_derivatives[parameters] = (None if forms is None else
-                                                  self._tree_program(forms, parameters))
-        return self._tree_derivatives[parameters]
+        return self._tree_kept(self._tree_derivatives, parameters, self._tree_program)
 
     def _tree_program(self, forms: "_TreeForms", parameters: bool) -> _TreeDerivatives:
         width = self._width(parameters)
@@ -350,11 +355,7 @@ class Dynamics:
         """r's Jacobian program by the Newton-Euler recursion (once), or None (see
         _formed_trees): then r's Jacobians come from M a - F as formed, whose entries
         grow as n^3 where the recursion's rows grow as n."""
-        if parameters not in self._tree_residuals:
-            forms = self._formed_trees()
-            self._tree_residuals[parameters] = (None if forms is None else
-                                                self._tree_residual_program(forms, parameters))
-        return self._tree_residuals[parameters]
+        return self._tree_kept(self._tree_residuals, parameters, self._tree_residual_program)
 
     def _tree_residual_program(self, forms: "_TreeForms", parameters: bool) -> _TreeResidual:
         nx, nu, npar, _ = self._sizes
