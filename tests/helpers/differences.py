@@ -1,5 +1,6 @@
 """Derivatives by five-point central differences, and the rule for agreeing with them
-(Model.dynamics' Jacobians: the examples' test and the corpus test)."""
+(Model.dynamics' Jacobians: the examples' test and the corpus test); and two routes'
+Jacobians held to each other."""
 import numpy as np
 
 STEPS = (1e-2, 1e-3, 1e-4, 1e-5)
@@ -46,3 +47,12 @@ def disagreements(exact, differences) -> tuple[int, int]:
     settled = (np.abs(np.diff(differences, axis=0)) <= tolerance).any(axis=0)
     close = (np.abs(exact - differences) <= tolerance).any(axis=0)
     return int((settled & ~close).sum()), int((~settled & ~close).sum())
+
+
+def assert_same_jacobians(ours, theirs, tolerance: float) -> None:
+    """Every block of `theirs` (a Jacobians) in `ours` too, each entry within `tolerance`
+    of the block's largest entry (at least 1)."""
+    for block in theirs.values:
+        expected = theirs.dense(block)
+        assert np.allclose(ours.dense(block), expected, rtol=0,
+                           atol=tolerance * np.abs(expected).max(initial=1.0)), block
