@@ -8,8 +8,8 @@ steps relative to its value), wherever two neighbouring steps agree with each ot
 Where rounding swamps or fools the differences, CasADi's algorithmic derivatives of the
 same program decide the block (f's through r's, by a pivoted solve); without casadi
 such entries are counted undecided, not passed.  A tree's Jacobians by its recursions
-(f's by the articulated-body one, r's by Newton-Euler) also equal those by its mass
-matrix."""
+(r's by Newton-Euler, f's -M^-1 times them, solved in the program) also equal those
+by its mass matrix."""
 from pathlib import Path
 
 import numpy as np

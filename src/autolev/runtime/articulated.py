@@ -102,15 +102,25 @@ def accelerations(system: System, speeds: list) -> Recursion:
     return Recursion(rates, [p for p, _ in tree.pivots], [e for _, e in tree.pivots])
 
 
-def inverse_dynamics(system: System, speeds: list) -> list:
-    """Row k of M a - F for the k-th of `speeds` (a: their derivatives, as symbols), by
-    the Newton-Euler recursion over the tree (see _Tree.inverse_dynamics); NotATree
-    when the model is not a tree it solves."""
+@dataclass(frozen=True)
+class InverseDynamics:
+    """Row k of M a - F for the k-th speed, and the speeds' indices from the leaves to
+    the root (each joint's after its children's): eliminated in that order, a tree's M
+    fills in nothing (Featherstone's L^T D L), and the pivots are the recursion's."""
+    rows: list
+    leaves_first: list
+
+
+def inverse_dynamics(system: System, speeds: list) -> InverseDynamics:
+    """M a - F for `speeds` (a: their derivatives, as symbols), by the Newton-Euler
+    recursion over the tree (see _Tree.inverse_dynamics); NotATree when the model is
+    not a tree it solves."""
     try:
         tree = _Tree(system, list(speeds))
     except AutolevModelError as exc:
         raise NotATree(str(exc)) from None
-    return tree.inverse_dynamics()
+    return InverseDynamics(tree.inverse_dynamics(),
+                           [r for j in reversed(tree.joints) for r in j.speeds])
 
 
 class _Tree:

@@ -111,8 +111,9 @@ TREES = ["cart_pendulum", "double_pendulum", "mass_spring_damper", "nlink_pendul
 
 @pytest.mark.parametrize("name", TREES)
 def test_a_trees_jacobians_by_its_recursion_are_those_of_the_mass_matrix(name):
-    # two derivations of f's Jacobians: the articulated-body recursion's accelerations
-    # differentiated, and -M^-1 times the Jacobian of M a - F
+    # two derivations of f's Jacobians, each -M^-1 times the Jacobian of M a - F: formed
+    # by the Newton-Euler recursion and solved in the program, or as Kane's equations
+    # form M and F and solved by numpy at each node
     model = autolev.load(EXAMPLES / f"{name}.al")
     tree, mass = model.dynamics(), model.dynamics(recursion=False)
     rng = np.random.default_rng(29)
@@ -165,6 +166,31 @@ def test_a_trees_jacobians_are_the_same_numbers_whichever_is_asked_for_first(fir
                     assert np.array_equal(jac.values[block], asked[form].values[block]), \
                         (form, block)
         asked = got | {"x": x, "xdot": xdot}
+
+
+@pytest.mark.parametrize("parents", [[-1, 0, 1, 2, 3, 4], [-1, 0, 0, 1, 1, 2, 5, -1, 7]])
+def test_the_programs_solve_of_a_trees_mass_matrix_is_numpys(parents):
+    # M's nonzeros where one speed's joint is the other's ancestor; eliminated from the
+    # leaves, which is what _solved is given, and from the root (a chain fills in nothing
+    # either way; the branched tree fills in), both M^-1 B as numpy solves it
+    from autolev.runtime.numerics.dynamics import _solved
+    n = len(parents)
+
+    def ancestors(i):
+        return {i} | (ancestors(parents[i]) if parents[i] >= 0 else set())
+    rng = np.random.default_rng(41)
+    columns = [np.array([rng.normal() if k in ancestors(i) else 0.0 for k in range(n)])
+               for i in range(n)]
+    mass = sum(np.outer(c, c) for c in columns) + np.eye(n)
+    rhs = rng.normal(size=(n, 3))
+    rhs[0, 1] = 0.0
+    exact = [[sm.Float(v, 30) if v else sm.S.Zero for v in row] for row in mass]
+    expected = np.linalg.solve(mass, rhs)
+    leaves_first = sorted(range(n), key=lambda i: -len(ancestors(i)))
+    for order in (leaves_first, list(range(n))):
+        got = _solved(exact, [[sm.Float(v, 30) if v else sm.S.Zero for v in row]
+                              for row in rhs], order, lambda e: e)
+        assert np.allclose(np.array(got, dtype=float), expected, rtol=1e-13, atol=1e-13)
 
 
 def test_a_trees_singular_mass_matrix_is_named_by_both_derivations():

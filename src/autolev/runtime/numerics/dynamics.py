@@ -11,12 +11,12 @@ constants without a definition.  Two forms:
 r's row for a state whose rate is given (q' = g) is x'_i - g_i; its row for a speed
 whose rate Kane's equations give is row k of M a - F (a: those speeds' rates, M and F
 of the model's own forming), so r is linear in x'.  For a model whose bodies form a
-tree (runtime/articulated.py) f's Jacobians are those of the articulated-body
-recursion's accelerations, as a run integrates them, and r's those of its rows M a - F
-formed by the Newton-Euler recursion (the same equations: each body's acceleration
-from the root, the wrenches summed from the leaves): both programs grow as the
-recursion (n^2 entries of a few terms each), where -M^-1 times the Jacobian of M a - F
-grows as M's entries times the variables.  Every derivative is symbolic,
+tree (runtime/articulated.py) r's Jacobians are those of its rows M a - F formed by
+the Newton-Euler recursion (the same equations: each body's acceleration from the
+root, the wrenches summed from the leaves; n^2 entries of a few terms each, where
+Kane's M a - F grows as n^4), and f's are -M^-1 times them at a = f (the
+articulated-body recursion's accelerations, as a run integrates them), the solve in
+the program: L D L^T of M from the leaves, which fills in nothing.  Every derivative is symbolic,
 through the Z's (`Definitions.jacobian`), printed once and compiled (C where there is a
 compiler, else Python); ∂r/∂x' is M's entries and ones.  The Jacobians are sparse: each
 comes with its pattern (rows, cols) and values per node.
@@ -41,6 +41,7 @@ from .inputs import display_name
 from .prepare import SystemBuild, numeric_system, prepare_command
 from .snapshot import ModelSnapshot
 from .system import lower_derivative
+from ..fastdiff import sum_of_products
 from ..steps import SlowStep
 
 
@@ -74,9 +75,8 @@ class Pattern:
 class Jacobians:
     """The sparse Jacobians of one form at N nodes: values (N x nnz) by block, with the
     blocks' patterns ("x", "xdot" (implicit form only), "u", "p"), and what they were
-    differentiated from: "recursion" (a tree's accelerations by the articulated-body
-    recursion, or its M a - F by the Newton-Euler recursion) or "mass matrix" (M a - F
-    as Kane's equations form M and F)."""
+    differentiated from: "recursion" (a tree's M a - F by the Newton-Euler recursion)
+    or "mass matrix" (M a - F as Kane's equations form M and F)."""
 
     values: dict
     patterns: dict
@@ -106,10 +106,10 @@ class _Derivatives:
 
 @dataclass(frozen=True)
 class _TreeDerivatives:
-    """f's Jacobian program by the articulated-body recursion: inputs (t, x, p, s);
-    outputs f's rows, the recursion's pivots and the entries they come from (a pivot
-    that is not positive makes M singular), then the structural nonzeros of f's
-    Jacobian in (x, u, p), one per `entries` row (state row, column), row-major."""
+    """f's Jacobian program of a tree: inputs (t, x, p, s); outputs f's rows by the
+    articulated-body recursion, its pivots and the entries they come from (a pivot that
+    is not positive makes M singular), then the structural nonzeros of f's Jacobian in
+    (x, u, p), one per `entries` row (state row, column), row-major."""
 
     function: object
     pivot_count: int
@@ -123,8 +123,9 @@ class _TreeForms:
     """A tree's Jacobians, symbolic, formed together in one order whichever is asked for
     first: each Z's name, and so the order of a generated sum, depends on what was
     formed before it, and a fixed order gives each program the same numbers whatever
-    the user asked for first.  f's rows are the articulated-body recursion's, r's the
-    Newton-Euler recursion's M a - F (and -g for a kinematical row)."""
+    the user asked for first.  r's rows are the Newton-Euler recursion's M a - F (and
+    -g for a kinematical row); f's Jacobian is -M^-1 times r's at a = f, f the
+    articulated-body recursion's rates."""
 
     system: object              # the command's system with the recursion's accelerations
     f_head: list                # f's rates, then the recursion's pivots and their entries
@@ -160,8 +161,9 @@ class Dynamics:
         # () -> the command's system with the recursion's accelerations, None for a model
         # that is not a tree; taken when f's Jacobians are first asked for
         self._tree = tree
-        # (speeds) -> a tree's rows of M a - F by the Newton-Euler recursion, in the
-        # order of `speeds` (the dynamical rows'), their rates as the symbols of x'
+        # (speeds) -> a tree's M a - F by the Newton-Euler recursion (InverseDynamics: a
+        # row per speed of `speeds`, the dynamical rows', their rates as the symbols of
+        # x', and the speeds from the leaves)
         self._inverse = inverse
         self._control_symbols = list(controls)
         self._definitions = definitions      # () -> the command's view of the definitions
@@ -319,15 +321,34 @@ class Dynamics:
                     rates[at] = rhs[nx + n * n + k]
                 columns = (list(self._system.states) + self._control_symbols
                            + self._parameter_symbols)
-                f_jacobian = tree.defs.jacobian(rates, columns)
                 unknowns = list(self._system.implicit_unknowns)
-                rows = self._residual_rows(self._inverse([lower_derivative(d)
-                                                          for d in unknowns]))
-                r_jacobian = self._system.defs.jacobian(rows, columns + unknowns)
+                inverse = self._inverse([lower_derivative(d) for d in unknowns])
+                r_jacobian = self._system.defs.jacobian(self._residual_rows(inverse.rows),
+                                                        columns + unknowns)
+                f_jacobian = self._explicit_of_residual(r_jacobian, rates, len(columns),
+                                                        inverse.leaves_first)
                 self._trees = _TreeForms(tree, rates + rhs[nx + n * n + n:], f_jacobian,
                                          r_jacobian)
         self._trees_formed = True
         return self._trees
+
+    def _explicit_of_residual(self, r_jacobian: list, rates: list, width: int,
+                              order: list) -> list:
+        """f's Jacobian (rows x its `width` columns) from r's (whose columns after those
+        are a's): a kinematical row's is -r's (r = x' - g), a dynamical one's
+        -M^-1 ∂(M a - F) at a = f's accelerations `rates` (M: r's columns in a), solved
+        in the program, M's rows eliminated in `order` (see _solved)."""
+        nx, _, _, n = self._sizes
+        defs = self._system.defs
+        at_f = {a: rates[row] for a, row in zip(self._system.implicit_unknowns, self._dynamic)}
+        mass = [[r_jacobian[row][width + j] for j in range(n)] for row in self._dynamic]
+        moved = [[defs.substitute(-d, at_f) for d in r_jacobian[row][:width]]
+                 for row in self._dynamic]
+        solved = _solved(mass, moved, order, defs.zify)
+        out = [[-d for d in r_jacobian[i][:width]] for i in range(nx)]
+        for k, row in enumerate(self._dynamic):
+            out[row] = solved[k]
+        return out
 
     def _tree_kept(self, kept: dict, parameters: bool, make):
         """A tree's program (made once for each `parameters`: `make(forms, parameters)`),
@@ -457,7 +478,7 @@ class Dynamics:
         accelerations = None
         if len(self._dynamic):
             mass, forcing = self._mass_and_forcing(values)
-            accelerations = _solved(mass, forcing[..., None])[..., 0]
+            accelerations = _solved_at_nodes(mass, forcing[..., None])[..., 0]
             rates[:, self._dynamic] = accelerations
         return rates, accelerations
 
@@ -509,9 +530,9 @@ class Dynamics:
     def explicit_jacobians(self, x, u=None, p=None, t=0.0,
                            parameters: bool = True) -> Jacobians:
         """∂f/∂x, ∂f/∂u, and with `parameters` ∂f/∂p, at every node, sparse (see
-        Jacobians): a tree's by its recursion, else a speed's row is
-        -M^-1 ∂(M a - F) at f's accelerations a, so it has every entry its coupled rows
-        have."""
+        Jacobians): a speed's row is -M^-1 ∂(M a - F) at f's accelerations a, so it
+        has every entry its coupled rows have; a tree's M a - F is the Newton-Euler
+        recursion's, solved in its program, any other's Kane's, solved here."""
         x, u, t, _ = self._nodes(x, u, t)
         nx, nu, npar, n = self._sizes
         tree = self._formed_tree_derivatives(parameters) if n else None
@@ -528,7 +549,7 @@ class Dynamics:
         dense[:, d.entries[:, 0], d.entries[:, 1]] = -entries
         if n:
             mass, _ = self._mass_and_forcing(values)
-            dense[:, self._dynamic] = _solved(mass, dense[:, self._dynamic])
+            dense[:, self._dynamic] = _solved_at_nodes(mass, dense[:, self._dynamic])
         blocks = {name: dense[:, d.explicit_patterns[name].rows,
                               d.explicit_patterns[name].cols + lo]
                   for name, (lo, _) in self._columns(parameters).items()}
@@ -545,7 +566,40 @@ class Dynamics:
                          dict(tree.patterns), "recursion")
 
 
-def _solved(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+def _solved(mass: list, rhs: list, order: list, z) -> list:
+    """M^-1 B as expressions (rows: M's; B's rows `rhs`), by L D L^T of M's lower
+    triangle with its rows eliminated in `order` (a tree's from the leaves: no fill),
+    without pivoting (M is definite where the model is not singular, which f's pivots
+    report); each entry a Z (`z`), the structural zeros left out."""
+    n = len(mass)
+    at = {row: i for i, row in enumerate(order)}
+    lower = [{} for _ in range(n)]          # position i: {position m < i: L[i, m]}
+    scaled = [{} for _ in range(n)]         # position i: {m: L[i, m] D[m]}
+    diag = [sm.S.Zero] * n
+    for i, row in enumerate(order):
+        for c in range(i + 1):
+            entry = mass[row][order[c]]
+            common = [(lower[i][m], scaled[c][m]) for m in lower[i] if m in scaled[c]]
+            value = (entry - sum_of_products(common)) if common else entry
+            if c == i:
+                diag[i] = z(value)
+            elif value != 0:
+                scaled[i][c] = z(value)
+                lower[i][c] = z(value / diag[c])
+    columns = []
+    for col in range(len(rhs[0]) if rhs else 0):
+        y = [sm.S.Zero] * n
+        for i, row in enumerate(order):
+            y[i] = z(rhs[row][col] - sum_of_products((v, y[m]) for m, v in lower[i].items()))
+        x = [sm.S.Zero] * n
+        for i in range(n - 1, -1, -1):
+            x[i] = z(y[i] / diag[i] - sum_of_products(
+                (lower[m][i], x[m]) for m in range(i + 1, n) if i in lower[m]))
+        columns.append(x)
+    return [[columns[col][at[row]] for col in range(len(columns))] for row in range(n)]
+
+
+def _solved_at_nodes(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
     """M^-1 rhs at every node; a singular M is the model's, named."""
     try:
         return np.linalg.solve(mass, rhs)
@@ -561,8 +615,8 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
     parameters, which then vary from node to node; `specified`: {name: number or sympy
     expression} for the specified quantities that are no controls (the rest are 0).
     The parameters' values come from INPUT, `infile` and `overrides` ({name: value} in
-    the quantities' own units), as a run takes them.  `recursion=False`: f's Jacobians
-    from M a - F even for a tree (as a run's RunOptions.recursion)."""
+    the quantities' own units), as a run takes them.  `recursion=False`: the Jacobians
+    from Kane's M a - F even for a tree (as a run's RunOptions.recursion)."""
     command, functions, overrides = given_specified(snapshot, snapshot.command, specified,
                                                     overrides)
     if functions:
@@ -593,8 +647,8 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
         return recursive if recursive.pivot_count else None
 
     def inverse(speeds):
-        """A tree's rows of M a - F by the Newton-Euler recursion, one per speed of
-        `speeds` (the recursion solves this model: `tree()` said so)."""
+        """A tree's M a - F by the Newton-Euler recursion, a row per speed of `speeds`
+        (the recursion solves this model: `tree()` said so)."""
         return articulated.inverse_dynamics(snapshot.dynamics.mechanics(), speeds)
     values = prepared.inputs.vector([p for p in system.params if p not in set(chosen)])
     with definitions():
