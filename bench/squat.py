@@ -98,20 +98,18 @@ def by_our_jacobians(path: Path, nodes: int, seeds=(None,)) -> dict:
     patterns = dyn.residual_jacobians(zero, zero, np.zeros((1, nu)), parameters=False).patterns
     n_x, n_u = nodes * nx, nodes * nu
     fixed, values = fixed_ends(nodes, dyn.states)
-    # r at node k in x_k: r's x block and its x' block over h, one entry where both are
-    own = sorted(set(zip(patterns["x"].rows, patterns["x"].cols))
-                 | set(zip(patterns["xdot"].rows, patterns["xdot"].cols)))
-    place = {entry: i for i, entry in enumerate(own)}
-    from_x = np.array([place[e] for e in zip(patterns["x"].rows, patterns["x"].cols)], dtype=int)
-    from_xdot = np.array([place[e] for e in zip(patterns["xdot"].rows, patterns["xdot"].cols)],
-                         dtype=int)
-    own_rows, own_cols = np.array(own, dtype=int).reshape(-1, 2).T
+    # r at node k in (x_k, x_k-1, u_k), every entry of the block given, as opty gives its
+    # own: IPOPT's sparse solver (MUMPS) orders this regular pattern so that an
+    # iteration costs about half what the structural nonzeros alone cost it
+    width = 2 * nx + nu
+    block_rows = np.repeat(np.arange(nx), width)
+    block_cols = np.tile(np.arange(width), nx)
     rows, cols = [], []
-    for k in range(1, nodes):       # r at node k: d/dx_k, d/dx_k-1 (through x'), d/du_k
-        rows += [(k - 1) * nx + own_rows, (k - 1) * nx + patterns["xdot"].rows,
-                 (k - 1) * nx + patterns["u"].rows]
-        cols += [k * nx + own_cols, (k - 1) * nx + patterns["xdot"].cols,
-                 n_x + k * nu + patterns["u"].cols]
+    for k in range(1, nodes):
+        rows.append((k - 1) * nx + block_rows)
+        cols.append(np.select([block_cols < nx, block_cols < 2 * nx],
+                              [k * nx + block_cols, (k - 2) * nx + block_cols],
+                              n_x + k * nu + block_cols - 2 * nx))
     rows.append((nodes - 1) * nx + np.arange(len(fixed)))
     cols.append(fixed)
     times = np.linspace(0.0, DURATION, nodes)[1:]
@@ -143,11 +141,12 @@ def by_our_jacobians(path: Path, nodes: int, seeds=(None,)) -> dict:
             x, u = split(z)
             j = dyn.residual_jacobians(x[1:], (x[1:] - x[:-1]) / h, u[1:], t=times,
                                        parameters=False).values
-            at_node = np.zeros((nodes - 1, len(own)))
-            at_node[:, from_x] = j["x"]
-            at_node[:, from_xdot] += j["xdot"] / h
-            per_node = np.concatenate([at_node, -j["xdot"] / h, j["u"]], axis=1)
-            return np.concatenate([per_node.ravel(), np.ones(len(fixed))])
+            block = np.zeros((nodes - 1, nx, width))
+            block[:, patterns["x"].rows, patterns["x"].cols] = j["x"]
+            block[:, patterns["xdot"].rows, patterns["xdot"].cols] += j["xdot"] / h
+            block[:, patterns["xdot"].rows, nx + patterns["xdot"].cols] = -j["xdot"] / h
+            block[:, patterns["u"].rows, 2 * nx + patterns["u"].cols] = j["u"]
+            return np.concatenate([block.ravel(), np.ones(len(fixed))])
 
     low, high = speed_bounds(dyn.states)
     m = (nodes - 1) * nx + len(fixed)
