@@ -99,8 +99,8 @@ def by_our_jacobians(path: Path, nodes: int, seeds=(None,)) -> dict:
     n_x, n_u = nodes * nx, nodes * nu
     fixed, values = fixed_ends(nodes, dyn.states)
     # r at node k in (x_k, x_k-1, u_k), every entry of the block given, as opty gives its
-    # own: IPOPT's linear solves (MUMPS) take about half the time an iteration on this
-    # pattern that they take on the structural nonzeros alone (measured, cause not known)
+    # own: IPOPT's linear solves (MUMPS) cost about half as much an iteration on this
+    # pattern as on the structural nonzeros alone (measured; the cause is not known)
     width = 2 * nx + nu
     block_rows = np.repeat(np.arange(nx), width)
     block_cols = np.tile(np.arange(width), nx)
