@@ -42,7 +42,7 @@ from .loader import load_translation
 from .pipeline import translation
 from .printed import read_plain
 from .engine.progress import Progress
-from .runtime.calculus import NumericPoint
+from .runtime.calculus import NumericPoint, is_real_number
 from .runtime.steps import SlowStep
 from .runtime.symbols import Z
 from .runtime.vectors import Dyadic, Vector
@@ -483,10 +483,9 @@ _POINTS = ([(seed, (0.5, 1.5)) for seed in range(1, 4)]
 
 
 def _is_real(a) -> bool:
+    """A value everywhere, real up to rounding (a NaN is no value: compared apart)."""
     import numpy as np
-    a = np.asarray(a, dtype=complex)
-    return bool(np.all(np.isfinite(a)) and
-                np.all(np.abs(a.imag) <= 1e-12 * (1 + np.abs(a.real))))
+    return bool(np.all(np.isfinite(np.asarray(a, dtype=complex)))) and is_real_number(a)
 
 
 class NotComparable(Exception):

@@ -18,8 +18,8 @@ Kane's M a - F grows as n^4), and f's are -M^-1 times them at a = f (the
 articulated-body recursion's accelerations, as a run integrates them), the solve in
 the program: L D L^T of M from the leaves, which fills in nothing.  Every derivative
 is symbolic, through the Z's (`Definitions.jacobian`), printed once and compiled (C
-where there is a compiler, else Python); ∂r/∂x' is M's entries and ones.  The Jacobians are sparse: each
-comes with its pattern (rows, cols) and values per node.
+where there is a compiler, else Python); ∂r/∂x' is M's entries and ones.  The
+Jacobians are sparse: each comes with its pattern (rows, cols) and values per node.
 """
 from __future__ import annotations
 
