@@ -83,96 +83,118 @@ def speed_bounds(states: list) -> tuple[np.ndarray, np.ndarray]:
     return low, high
 
 
+class OurSquat:
+    """The problem as cyipopt's problem object, through Model.dynamics' residual and its
+    sparse Jacobians: the variables node-major, x at every node then u at every node;
+    the rows r at nodes 1 ... N-1, then the end conditions."""
+
+    def __init__(self, path: Path, nodes: int):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            self.dynamics = autolev.load(path).dynamics(
+                controls=TORQUES, overrides=BODY | {"mom1": 0, "mom2": 0, "mom3": 0})
+        dyn = self.dynamics
+        self.nodes, self.states = nodes, dyn.states
+        self.nx, self.nu = nx, nu = len(dyn.states), len(dyn.controls)
+        self.h = DURATION / (nodes - 1)
+        zero = np.zeros((1, nx))
+        self.patterns = dyn.residual_jacobians(zero, zero, np.zeros((1, nu)),
+                                               parameters=False).patterns
+        self.n_x = nodes * nx
+        self.n = self.n_x + nodes * nu
+        self.fixed, self.values = fixed_ends(nodes, dyn.states)
+        self.m = (nodes - 1) * nx + len(self.fixed)
+        self.times = np.linspace(0.0, DURATION, nodes)[1:]
+        self.evaluations = 0          # objective evaluations: IPOPT's trial points
+        # r at node k in (x_k, x_k-1, u_k), every entry of the block given, as opty gives
+        # its own: IPOPT's linear solves (MUMPS) cost about half as much an iteration on
+        # this pattern as on the structural nonzeros alone (measured; cause not known)
+        self.width = width = 2 * nx + nu
+        block_rows = np.repeat(np.arange(nx), width)
+        block_cols = np.tile(np.arange(width), nx)
+        rows, cols = [], []
+        for k in range(1, nodes):
+            rows.append((k - 1) * nx + block_rows)
+            cols.append(np.select([block_cols < nx, block_cols < 2 * nx],
+                                  [k * nx + block_cols, (k - 2) * nx + block_cols],
+                                  self.n_x + k * nu + block_cols - 2 * nx))
+        rows.append((nodes - 1) * nx + np.arange(len(self.fixed)))
+        cols.append(self.fixed)
+        self._structure = np.concatenate(rows), np.concatenate(cols)
+
+    def _split(self, z):
+        return (z[:self.n_x].reshape(self.nodes, self.nx),
+                z[self.n_x:].reshape(self.nodes, self.nu))
+
+    def objective(self, z):
+        self.evaluations += 1
+        return self.h * np.sum(z[self.n_x + self.nu:] ** 2)
+
+    def gradient(self, z):
+        g = np.zeros_like(z)
+        g[self.n_x + self.nu:] = 2 * self.h * z[self.n_x + self.nu:]
+        return g
+
+    def constraints(self, z):
+        x, u = self._split(z)
+        r = self.dynamics.residual(x[1:], (x[1:] - x[:-1]) / self.h, u[1:], t=self.times)
+        return np.concatenate([r.ravel(), z[self.fixed] - self.values])
+
+    def jacobianstructure(self):
+        return self._structure
+
+    def jacobian(self, z):
+        x, u = self._split(z)
+        j = self.dynamics.residual_jacobians(x[1:], (x[1:] - x[:-1]) / self.h, u[1:],
+                                             t=self.times, parameters=False).values
+        nx, pat = self.nx, self.patterns
+        block = np.zeros((self.nodes - 1, nx, self.width))
+        block[:, pat["x"].rows, pat["x"].cols] = j["x"]
+        block[:, pat["xdot"].rows, pat["xdot"].cols] += j["xdot"] / self.h
+        block[:, pat["xdot"].rows, nx + pat["xdot"].cols] = -j["xdot"] / self.h
+        block[:, pat["u"].rows, 2 * nx + pat["u"].cols] = j["u"]
+        return np.concatenate([block.ravel(), np.ones(len(self.fixed))])
+
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """(lower, upper) of every variable: the speeds bounded, nothing else."""
+        low, high = speed_bounds(self.states)
+        free = self.n - self.n_x
+        return (np.concatenate([np.tile(low, self.nodes), np.full(free, -1e19)]),
+                np.concatenate([np.tile(high, self.nodes), np.full(free, 1e19)]))
+
+    def guess(self, seed: int | None) -> np.ndarray:
+        return np.concatenate([first_guess(self.nodes, self.states, seed).ravel(),
+                               np.zeros(self.n - self.n_x)])
+
+
 def by_our_jacobians(path: Path, nodes: int, seeds=(None,)) -> dict:
-    """The problem through Model.dynamics' compiled Jacobians, solved from each seed's
-    first guess: {"build": seconds from the model loaded to the problem, "solves": one
-    row per seed}."""
+    """The problem through Model.dynamics' compiled Jacobians (OurSquat), solved from
+    each seed's first guess: {"build": seconds from the model loaded to the problem,
+    "solves": one row per seed}."""
     import cyipopt
     start = time.perf_counter()
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        dyn = autolev.load(path).dynamics(controls=TORQUES,
-                                          overrides=BODY | {"mom1": 0, "mom2": 0, "mom3": 0})
-    nx, nu, h = len(dyn.states), len(dyn.controls), DURATION / (nodes - 1)
-    zero = np.zeros((1, nx))
-    patterns = dyn.residual_jacobians(zero, zero, np.zeros((1, nu)), parameters=False).patterns
-    n_x, n_u = nodes * nx, nodes * nu
-    fixed, values = fixed_ends(nodes, dyn.states)
-    # r at node k in (x_k, x_k-1, u_k), every entry of the block given, as opty gives its
-    # own: IPOPT's linear solves (MUMPS) cost about half as much an iteration on this
-    # pattern as on the structural nonzeros alone (measured; the cause is not known)
-    width = 2 * nx + nu
-    block_rows = np.repeat(np.arange(nx), width)
-    block_cols = np.tile(np.arange(width), nx)
-    rows, cols = [], []
-    for k in range(1, nodes):
-        rows.append((k - 1) * nx + block_rows)
-        cols.append(np.select([block_cols < nx, block_cols < 2 * nx],
-                              [k * nx + block_cols, (k - 2) * nx + block_cols],
-                              n_x + k * nu + block_cols - 2 * nx))
-    rows.append((nodes - 1) * nx + np.arange(len(fixed)))
-    cols.append(fixed)
-    times = np.linspace(0.0, DURATION, nodes)[1:]
-
-    def split(z):
-        return z[:n_x].reshape(nodes, nx), z[n_x:].reshape(nodes, nu)
-
-    calls = {"objective": 0}
-
-    class Squat:
-        def objective(self, z):
-            calls["objective"] += 1
-            return h * np.sum(z[n_x + nu:] ** 2)
-
-        def gradient(self, z):
-            g = np.zeros_like(z)
-            g[n_x + nu:] = 2 * h * z[n_x + nu:]
-            return g
-
-        def constraints(self, z):
-            x, u = split(z)
-            r = dyn.residual(x[1:], (x[1:] - x[:-1]) / h, u[1:], t=times)
-            return np.concatenate([r.ravel(), z[fixed] - values])
-
-        def jacobianstructure(self):
-            return np.concatenate(rows), np.concatenate(cols)
-
-        def jacobian(self, z):
-            x, u = split(z)
-            j = dyn.residual_jacobians(x[1:], (x[1:] - x[:-1]) / h, u[1:], t=times,
-                                       parameters=False).values
-            block = np.zeros((nodes - 1, nx, width))
-            block[:, patterns["x"].rows, patterns["x"].cols] = j["x"]
-            block[:, patterns["xdot"].rows, patterns["xdot"].cols] += j["xdot"] / h
-            block[:, patterns["xdot"].rows, nx + patterns["xdot"].cols] = -j["xdot"] / h
-            block[:, patterns["u"].rows, 2 * nx + patterns["u"].cols] = j["u"]
-            return np.concatenate([block.ravel(), np.ones(len(fixed))])
-
-    low, high = speed_bounds(dyn.states)
-    m = (nodes - 1) * nx + len(fixed)
-    problem = cyipopt.Problem(n=n_x + n_u, m=m, problem_obj=Squat(),
-                              lb=np.concatenate([np.tile(low, nodes), np.full(n_u, -1e19)]),
-                              ub=np.concatenate([np.tile(high, nodes), np.full(n_u, 1e19)]),
-                              cl=np.zeros(m), cu=np.zeros(m))
+    squat = OurSquat(path, nodes)
+    low, high = squat.bounds()
+    problem = cyipopt.Problem(n=squat.n, m=squat.m, problem_obj=squat, lb=low, ub=high,
+                              cl=np.zeros(squat.m), cu=np.zeros(squat.m))
     for option, value in (("print_level", 0), ("sb", "yes"), ("max_iter", 3000),
                           ("hessian_approximation", "limited-memory")):
         problem.add_option(option, value)
     built = time.perf_counter() - start
 
     def solve(seed):
-        guess = np.concatenate([first_guess(nodes, dyn.states, seed).ravel(), np.zeros(n_u)])
-        return _timed_solve(problem, guess, calls)
+        squat.evaluations = 0
+        began = time.perf_counter()
+        _, info = problem.solve(squat.guess(seed))
+        return _solved(began, info, squat.evaluations)
     return {"build": built, "solves": [solve(seed) for seed in seeds]}
 
 
-def _timed_solve(problem, guess, calls: dict) -> dict:
-    """IPOPT's seconds, optimum, status and trial points (objective evaluations) of one
-    solve from `guess`."""
-    calls["objective"] = 0
-    began = time.perf_counter()
-    _, info = problem.solve(guess)
+def _solved(began: float, info: dict, evaluations: int) -> dict:
+    """IPOPT's seconds (since `began`), optimum, status and trial points (objective
+    evaluations) of one solve."""
     return {"ipopt": time.perf_counter() - began, "objective": float(info["obj_val"]),
-            "status": info["status"], "evaluations": calls["objective"]}
+            "status": info["status"], "evaluations": evaluations}
 
 
 def by_opty(path: Path, nodes: int, seeds=(None,)) -> dict:
@@ -217,5 +239,8 @@ def by_opty(path: Path, nodes: int, seeds=(None,)) -> dict:
     def solve(seed):
         guess = np.concatenate([first_guess(nodes, names, seed).T.ravel(),
                                 np.zeros(len(parts.controls) * nodes)])
-        return _timed_solve(problem, guess, calls)
+        calls["objective"] = 0
+        began = time.perf_counter()
+        _, info = problem.solve(guess)
+        return _solved(began, info, calls["objective"])
     return {"build": built, "solves": [solve(seed) for seed in seeds]}
