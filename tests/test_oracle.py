@@ -155,7 +155,6 @@ def test_products_of_inertia_written_as_numbers_are_not_refused():
     assert outcome.status == "agree", oracle.describe(outcome)
 
 
-
 # random trees of the planar, spatial, DIRCOS and KINDIFFS families (the others have
 # constraints, or are not trees: mass matrix alone): 2, 11 and 29 take 10-30 s each
 TREES = [1, 3, 9, 18, 20, 28]

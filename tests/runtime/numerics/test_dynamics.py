@@ -109,15 +109,21 @@ TREES = ["cart_pendulum", "double_pendulum", "mass_spring_damper", "nlink_pendul
          "simple_pendulum"]
 
 
+def both_routes(name: str, seed: int) -> tuple:
+    """(the example's Dynamics by its tree's recursions, by Kane's M and F, the random
+    generator, five random states drawn from it)."""
+    model = autolev.load(EXAMPLES / f"{name}.al")
+    tree, mass = model.dynamics(), model.dynamics(recursion=False)
+    rng = np.random.default_rng(seed)
+    return tree, mass, rng, 0.7 * rng.normal(size=(5, len(tree.states)))
+
+
 @pytest.mark.parametrize("name", TREES)
 def test_a_trees_jacobians_by_its_recursion_are_those_of_the_mass_matrix(name):
     # two derivations of f's Jacobians, each -M^-1 times the Jacobian of M a - F: formed
     # by the Newton-Euler recursion and solved in the program, or as Kane's equations
     # form M and F and solved by numpy at each node
-    model = autolev.load(EXAMPLES / f"{name}.al")
-    tree, mass = model.dynamics(), model.dynamics(recursion=False)
-    rng = np.random.default_rng(29)
-    x = 0.7 * rng.normal(size=(5, len(tree.states)))
+    tree, mass, rng, x = both_routes(name, 29)
     u = rng.normal(size=(5, len(tree.controls)))
     for parameters in (True, False):
         by_tree = tree.explicit_jacobians(x, u, parameters=parameters)
@@ -130,10 +136,7 @@ def test_a_trees_jacobians_by_its_recursion_are_those_of_the_mass_matrix(name):
 def test_a_trees_residual_jacobians_by_newton_euler_are_those_of_kanes_m_and_f(name):
     # two derivations of r's Jacobians: the rows M a - F by the Newton-Euler recursion
     # over the tree, and M and F as Kane's equations form them (x': M's entries)
-    model = autolev.load(EXAMPLES / f"{name}.al")
-    tree, mass = model.dynamics(), model.dynamics(recursion=False)
-    rng = np.random.default_rng(31)
-    x = 0.7 * rng.normal(size=(5, len(tree.states)))
+    tree, mass, rng, x = both_routes(name, 31)
     xdot = rng.normal(size=x.shape)
     u = rng.normal(size=(5, len(tree.controls)))
     for parameters in (True, False):
