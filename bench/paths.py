@@ -44,8 +44,8 @@ random times, against the run's own right-hand side; 1e-8 of max(1, |value|)):
   r:script     the `convert --to sympy` script's mass matrix and forcing
   r:dynamics   model.dynamics().explicit: the trajectory optimizer's compiled f(x, u, p, t)
   r:df         model.dynamics().explicit_jacobians of a tree (-M^-1 times the Jacobian
-               of its rows M a - F by the Newton-Euler recursion, solved in the
-               program) against recursion=False's (the same of Kane's M and F, solved
+               of its rows M a - F by the Newton-Euler recursion, solved by
+               engine/ltdl.c) against recursion=False's (the same of Kane's M and F, solved
                by numpy), within MATRIX_TOLERANCE of the largest entry of each block
   r:dr         model.dynamics().residual_jacobians of a tree at x' = f (its rows
                M a - F by the Newton-Euler recursion) against recursion=False's (M and

@@ -12,9 +12,14 @@ falls back to Gaussian elimination with partial pivoting, which also stands for 
 matrix whose expressions are not symmetric."""
 from __future__ import annotations
 
+import ctypes
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
+
+# M X = B at many nodes (a tree's Jacobian program links it in: see ltdl_columns)
+LTDL_SOURCE = Path(__file__).with_name("ltdl.c").read_text()
 
 
 class SingularMassMatrix(ArithmeticError):
@@ -57,6 +62,14 @@ class MassStructure:
         while self.parent[chain[-1]] >= 0:
             chain.append(self.parent[chain[-1]])
         return chain
+
+    @classmethod
+    def eliminated(cls, nonzero: list, order: list) -> MassStructure:
+        """The structure of eliminating the speeds from the last of `order` to its
+        first (`nonzero[s]`: the speeds whose entry in s's row or column is not
+        structurally zero); a tree's from its leaves fills in nothing."""
+        parent, _, order = _parents(nonzero, list(order))
+        return cls(tuple(order), tuple(parent), False)
 
     @classmethod
     def of(cls, entries: list, m: int) -> MassStructure | None:
@@ -202,6 +215,54 @@ def _solve_ltdl(mm: np.ndarray, f: np.ndarray, structure: MassStructure):
     x[list(order)] = b
     return x
 
+
+def ltdl_columns(rows: np.ndarray, at_r: int, at_b: int, m: int, w: int,
+                 start: np.ndarray, col: np.ndarray) -> int:
+    """ltdl.c's autolev_ltdl_columns over every row of `rows` (nodes x outputs), in
+    place, each entry by the same operations in the same order (a node is a row of the
+    arrays here): M compactly from `at_r` (`start` and `col`: a MassStructure's starts
+    and columns), the m x w matrix B from `at_b` overwritten by M^-1 B.  0, or 1 + the
+    first node where an entry of D is not positive and finite."""
+    start, col = start.tolist(), col.tolist()
+    r = rows[:, at_r:at_r + start[-1]]
+    b = rows[:, at_b:at_b + m * w].reshape(len(rows), m, w)
+    bad = np.zeros(len(rows), dtype=bool)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for k in range(m - 1, -1, -1):
+            s, length = start[k], start[k + 1] - start[k]
+            d = r[:, s]
+            bad |= ~((d > 0.0) & (d != np.inf))
+            inv = 1.0 / d
+            for t in range(1, length):
+                i = col[s + t]
+                n = start[i + 1] - start[i]
+                lk = r[:, s + t] * inv
+                r[:, start[i]:start[i] + n] -= lk[:, None] * r[:, s + t:s + t + n]
+                r[:, s + t] = lk
+            r[:, s] = inv
+        for k in range(m - 1, -1, -1):              # L^T Y = B
+            for t in range(1, start[k + 1] - start[k]):
+                b[:, col[start[k] + t]] -= r[:, start[k] + t, None] * b[:, k]
+        for k in range(m):                          # D Z = Y and L X = Z, row by row
+            b[:, k] *= r[:, start[k], None]
+            for t in range(1, start[k + 1] - start[k]):
+                b[:, k] -= r[:, start[k] + t, None] * b[:, col[start[k] + t]]
+    failed = np.nonzero(bad)[0]
+    return int(failed[0]) + 1 if len(failed) else 0
+
+
+def compiled_ltdl_columns(lib, rows: np.ndarray, at_r: int, at_b: int, m: int, w: int,
+                          start: np.ndarray, col: np.ndarray) -> int:
+    """ltdl_columns by LTDL_SOURCE's C in the library `lib` that links it in (`start`,
+    `col`: C ints)."""
+    fn = lib.autolev_ltdl_columns
+    fn.argtypes = [ctypes.c_long, ctypes.c_void_p] + [ctypes.c_long] * 5 + [ctypes.c_void_p] * 2
+    fn.restype = ctypes.c_long
+    if rows.dtype != np.float64 or not rows.flags.c_contiguous or start.dtype != np.intc \
+            or col.dtype != np.intc:
+        raise ValueError("ltdl_columns: C-ordered doubles and C ints expected")
+    return int(fn(len(rows), rows.ctypes.data, rows.shape[1], at_r, at_b, m, w,
+                  start.ctypes.data, col.ctypes.data))
 
 
 def scaled_condition(mm: np.ndarray) -> np.ndarray | float:

@@ -172,28 +172,51 @@ def test_a_trees_jacobians_are_the_same_numbers_whichever_is_asked_for_first(fir
 
 
 @pytest.mark.parametrize("parents", [[-1, 0, 1, 2, 3, 4], [-1, 0, 0, 1, 1, 2, 5, -1, 7]])
-def test_the_programs_solve_of_a_trees_mass_matrix_is_numpys(parents):
-    # M's nonzeros where one speed's joint is the other's ancestor; eliminated from the
-    # leaves, which is what _solved is given, and from the root (a chain fills in nothing
-    # either way; the branched tree fills in), both M^-1 B as numpy solves it
-    from autolev.runtime.numerics.dynamics import _solved
-    n = len(parents)
+def test_the_solve_of_a_trees_mass_matrix_is_numpys(parents):
+    # M's nonzeros where one speed's joint is the other's ancestor, eliminated from the
+    # leaves (as a tree's Jacobian program is) and from the root (a chain fills in
+    # nothing either way; the branched tree fills in): M^-1 B at three nodes as numpy
+    # solves it, by ltdl.c and by its numpy twin, the same bits; a node whose M is not
+    # positive definite is named
+    import ctypes
+    from autolev.engine import clibrary
+    from autolev.engine.massmatrix import (LTDL_SOURCE, MassStructure,
+                                           compiled_ltdl_columns, ltdl_columns)
+    n, nodes, w = len(parents), 3, 4
 
     def ancestors(i):
         return {i} | (ancestors(parents[i]) if parents[i] >= 0 else set())
     rng = np.random.default_rng(41)
-    columns = [np.array([rng.normal() if k in ancestors(i) else 0.0 for k in range(n)])
-               for i in range(n)]
-    mass = sum(np.outer(c, c) for c in columns) + np.eye(n)
-    rhs = rng.normal(size=(n, 3))
-    rhs[0, 1] = 0.0
-    exact = [[sm.Float(v, 30) if v else sm.S.Zero for v in row] for row in mass]
-    expected = np.linalg.solve(mass, rhs)
-    leaves_first = sorted(range(n), key=lambda i: -len(ancestors(i)))
-    for order in (leaves_first, list(range(n))):
-        got = _solved(exact, [[sm.Float(v, 30) if v else sm.S.Zero for v in row]
-                              for row in rhs], order, lambda e: e)
-        assert np.allclose(np.array(got, dtype=float), expected, rtol=1e-13, atol=1e-13)
+    masses, rhs = [], rng.normal(size=(nodes, n, w))
+    for _ in range(nodes):
+        columns = [np.array([rng.normal() if k in ancestors(i) else 0.0 for k in range(n)])
+                   for i in range(n)]
+        masses.append(sum(np.outer(c, c) for c in columns) + np.eye(n))
+    nonzero = [[j for j in range(n) if j != k and masses[0][k, j]] for k in range(n)]
+    leaves_last = sorted(range(n), key=lambda i: len(ancestors(i)))
+    lib = (ctypes.CDLL(str(clibrary.build_shared_library(LTDL_SOURCE)))
+           if clibrary.compiler() else None)
+    for order in (leaves_last, list(range(n))[::-1]):
+        structure = MassStructure.eliminated(nonzero, order)
+        compact = [[mass[structure.order[k], structure.order[j]]
+                    for k, j in zip(structure.rows, structure.columns)] for mass in masses]
+        rows = np.hstack([np.array(compact), rhs[:, structure.order].reshape(nodes, -1)])
+        args = (0, len(compact[0]), n, w, np.array(structure.starts, dtype=np.intc),
+                np.array(structure.columns, dtype=np.intc))
+        twin = rows.copy()
+        assert ltdl_columns(twin, *args) == 0
+        got = np.empty((nodes, n, w))
+        got[:, structure.order] = twin[:, args[1]:].reshape(nodes, n, w)
+        assert np.allclose(got, np.linalg.solve(np.array(masses), rhs), rtol=1e-13,
+                           atol=1e-13)
+        if lib is not None:
+            compiled = rows.copy()
+            assert compiled_ltdl_columns(lib, compiled, *args) == 0
+            assert np.array_equal(compiled, twin)
+        rows[1, 0] = -1.0                       # the second node's first pivot
+        assert ltdl_columns(rows.copy(), *args) == 2
+        if lib is not None:
+            assert compiled_ltdl_columns(lib, rows.copy(), *args) == 2
 
 
 def test_a_trees_singular_mass_matrix_is_named_by_both_derivations():

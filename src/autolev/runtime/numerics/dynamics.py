@@ -15,10 +15,12 @@ tree (runtime/articulated.py) r's Jacobians are those of its rows M a - F formed
 the Newton-Euler recursion (the same equations: each body's acceleration from the
 root, the wrenches summed from the leaves; n^2 entries of a few terms each, where
 Kane's M a - F grows as n^4), and f's are -M^-1 times them at a = f (the
-articulated-body recursion's accelerations, as a run integrates them), the solve in
-the program: L D L^T of M from the leaves, which fills in nothing.  Every derivative
-is symbolic, through the Z's (`Definitions.jacobian`), printed once and compiled (C
-where there is a compiler, else Python); ∂r/∂x' is M's entries and ones.  The
+articulated-body recursion's accelerations, as a run integrates them): the program
+gives M's entries and those right-hand sides, and each node's M = L^T D L from the
+leaves (which fills in nothing) is solved for all of them at once, in loops over the
+columns (engine/ltdl.c; numpy's same operations in the Python tier).  Every
+derivative is symbolic, through the Z's (`Definitions.jacobian`), printed once and
+compiled (C where there is a compiler, else Python); ∂r/∂x' is M's entries and ones.  The
 Jacobians are sparse: each comes with its pattern (rows, cols) and values per node.
 """
 from __future__ import annotations
@@ -32,6 +34,8 @@ from .. import articulated
 from .. import symbols as S
 from ...engine.errors import AutolevModelError
 from ...engine.evaluation import pivot_ratios
+from ...engine.massmatrix import (LTDL_SOURCE, MassStructure, compiled_ltdl_columns,
+                                  ltdl_columns)
 from ...engine.options import RunOptions
 from . import codegen
 from .command import (equations_and_unknowns, given_specified, program_of,
@@ -41,8 +45,10 @@ from .inputs import display_name
 from .prepare import SystemBuild, numeric_system, prepare_command
 from .snapshot import ModelSnapshot
 from .system import lower_derivative
-from ..fastdiff import sum_of_products
 from ..steps import SlowStep
+
+# a tree's Jacobians: the nodes whose outputs fit in 256 kB computed, then solved
+_CHUNK_DOUBLES = 1 << 15
 
 
 @dataclass(frozen=True)
@@ -108,14 +114,36 @@ class _Derivatives:
 class _TreeDerivatives:
     """f's Jacobian program of a tree: inputs (t, x, p, s); outputs f's rows by the
     articulated-body recursion, its pivots and the entries they come from (a pivot that
-    is not positive makes M singular), then the structural nonzeros of f's Jacobian in
-    (x, u, p), one per `entries` row (state row, column), row-major."""
+    is not positive makes M singular); from `at_mass` M's entries held compactly
+    (`structure`'s order); from `at_rhs` B = -∂(M a - F) at a = f, the dynamical rows'
+    (m x w: rows in the structure's order, the w columns any of them has); then the
+    kinematical rows' structural nonzeros.  `solve` overwrites B with M^-1 B, the
+    dynamical rows' Jacobian, at every node.  `blocks`: each block's outputs, in its
+    pattern's order (row-major)."""
 
     function: object
     pivot_count: int
-    entries: np.ndarray
-    patterns: dict              # "x", "u", "p" (entries' order)
-    blocks: dict                # "x", "u", "p" -> positions in entries
+    width: int                  # outputs per node
+    structure: MassStructure
+    at_mass: int
+    at_rhs: int
+    columns: int                # w
+    patterns: dict              # "x", "u", "p"
+    blocks: dict                # "x", "u", "p" -> outputs
+    starts: np.ndarray          # the structure's, as C ints
+    compact_columns: np.ndarray
+
+    def solve(self, rows: np.ndarray) -> None:
+        """B := M^-1 B at every row (node) of `rows`, in place (ltdl.c where the program
+        is C, its numpy twin otherwise: the same operations)."""
+        args = (rows, self.at_mass, self.at_rhs, len(self.structure.order), self.columns,
+                self.starts, self.compact_columns)
+        if self.function.backend == "c":
+            failed = compiled_ltdl_columns(self.function.call.lib, *args)
+        else:
+            failed = ltdl_columns(*args)
+        if failed:
+            raise AutolevModelError("the mass matrix is singular at a node")
 
 
 @dataclass(frozen=True)
@@ -125,12 +153,15 @@ class _TreeForms:
     formed before it, and a fixed order gives each program the same numbers whatever
     the user asked for first.  r's rows are the Newton-Euler recursion's M a - F (and
     -g for a kinematical row); f's Jacobian is -M^-1 times r's at a = f, f the
-    articulated-body recursion's rates."""
+    articulated-body recursion's rates: M's entries and the right-hand sides are
+    formed here, the solve is numeric (_TreeDerivatives.solve)."""
 
     system: object              # the command's system with the recursion's accelerations
     f_head: list                # f's rates, then the recursion's pivots and their entries
-    f_jacobian: list            # f's rows x (x, u, p)
     r_jacobian: list            # r's rows x (x, u, p, a)
+    structure: MassStructure    # M's, eliminated from the leaves
+    mass: list                  # M's entries held compactly (the structure's)
+    rhs: list                   # -∂(M a - F) at a = f: dynamical row k x (x, u, p)
 
 
 @dataclass(frozen=True)
@@ -325,30 +356,28 @@ class Dynamics:
                 inverse = self._inverse([lower_derivative(d) for d in unknowns])
                 r_jacobian = self._system.defs.jacobian(self._residual_rows(inverse.rows),
                                                         columns + unknowns)
-                f_jacobian = self._explicit_of_residual(r_jacobian, rates, len(columns),
-                                                        inverse.leaves_first)
-                self._trees = _TreeForms(tree, rates + rhs[nx + n * n + n:], f_jacobian,
-                                         r_jacobian)
+                width = len(columns)
+                mass = [[r_jacobian[row][width + j] for j in range(n)]
+                        for row in self._dynamic]
+                structure = MassStructure.eliminated(
+                    [[j for j in range(n) if j != k and (mass[k][j] != 0 or mass[j][k] != 0)]
+                     for k in range(n)], reversed(inverse.leaves_first))
+                order = structure.order
+                compact = [mass[order[k]][order[j]]
+                           for k, j in zip(structure.rows, structure.columns)]
+                self._trees = _TreeForms(tree, rates + rhs[nx + n * n + n:], r_jacobian,
+                                         structure, compact,
+                                         self._at_f(r_jacobian, rates, width))
         self._trees_formed = True
         return self._trees
 
-    def _explicit_of_residual(self, r_jacobian: list, rates: list, width: int,
-                              order: list) -> list:
-        """f's Jacobian (rows x its `width` columns) from r's (whose columns after those
-        are a's): a kinematical row's is -r's (r = x' - g), a dynamical one's
-        -M^-1 ∂(M a - F) at a = f's accelerations `rates` (M: r's columns in a), solved
-        in the program, M's rows eliminated in `order` (see _solved)."""
-        nx, _, _, n = self._sizes
+    def _at_f(self, r_jacobian: list, rates: list, width: int) -> list:
+        """-∂(M a - F) (the dynamical rows of r's Jacobian, its first `width` columns) at
+        a = f's accelerations `rates`, each entry a Z."""
         defs = self._system.defs
         at_f = {a: rates[row] for a, row in zip(self._system.implicit_unknowns, self._dynamic)}
-        mass = [[r_jacobian[row][width + j] for j in range(n)] for row in self._dynamic]
-        moved = [[defs.substitute(-d, at_f) for d in r_jacobian[row][:width]]
-                 for row in self._dynamic]
-        solved = _solved(mass, moved, order, defs.zify)
-        out = [[-d for d in r_jacobian[i][:width]] for i in range(nx)]
-        for k, row in enumerate(self._dynamic):
-            out[row] = solved[k]
-        return out
+        return [[defs.substitute(-d, at_f) for d in r_jacobian[row][:width]]
+                for row in self._dynamic]
 
     def _tree_kept(self, kept: dict, parameters: bool, make):
         """A tree's program (made once for each `parameters`: `make(forms, parameters)`),
@@ -363,14 +392,36 @@ class Dynamics:
         return self._tree_kept(self._tree_derivatives, parameters, self._tree_program)
 
     def _tree_program(self, forms: "_TreeForms", parameters: bool) -> _TreeDerivatives:
+        n = self._sizes[3]
         width = self._width(parameters)
+        order = forms.structure.order
+        kept = [c for c in range(width) if any(row[c] != 0 for row in forms.rhs)]
+        kinematic = [(int(i), c, -d) for i in self._kinematic
+                     for c, d in enumerate(forms.r_jacobian[i][:width]) if d != 0]
+        at_mass = len(forms.f_head)
+        at_rhs = at_mass + len(forms.mass)
+        at_kinematic = at_rhs + n * len(kept)
+        outputs = (forms.f_head + forms.mass
+                   + [forms.rhs[order[k]][c] for k in range(n) for c in kept]
+                   + [d for _, _, d in kinematic])
+        output_of = {(i, c): at_kinematic + at for at, (i, c, _) in enumerate(kinematic)}
+        for k in range(n):
+            row = int(self._dynamic[order[k]])
+            output_of |= {(row, c): at_rhs + k * len(kept) + at for at, c in enumerate(kept)}
+        entries = np.array(sorted(output_of), dtype=int).reshape(-1, 2)
+        at_output = np.array([output_of[i, c] for i, c in entries.tolist()], dtype=int)
         with self._definitions(), self._jacobians_step:
-            function, entries = self._compiled(forms.system, self._given(), forms.f_head,
-                                               [row[:width] for row in forms.f_jacobian],
-                                               "autolev_dynamics_tree_jacobian")
+            program = codegen.Program(self._given(), outputs, forms.system.defs,
+                                      dict(forms.system.aux_fixed)).build()
+            function = compile_program(program, self._backend_asked,
+                                       "autolev_dynamics_tree_jacobian",
+                                       extra_source=LTDL_SOURCE)
         blocks, patterns = self._blocks(entries, parameters)
-        return _TreeDerivatives(function, forms.system.pivot_count, entries, patterns,
-                                blocks)
+        return _TreeDerivatives(function, forms.system.pivot_count, len(outputs),
+                                forms.structure, at_mass, at_rhs, len(kept), patterns,
+                                {name: at_output[at] for name, at in blocks.items()},
+                                np.array(forms.structure.starts, dtype=np.intc),
+                                np.array(forms.structure.columns, dtype=np.intc))
 
     def _formed_tree_residual(self, parameters: bool) -> "_TreeResidual | None":
         """r's Jacobian program by the Newton-Euler recursion (once), or None (see
@@ -438,9 +489,11 @@ class Dynamics:
                            t, np.ascontiguousarray(rates, dtype=float).reshape(-1, n))
         return out[:, :n_rhs], out[:, n_rhs:]
 
-    def _called(self, function, width: int, x, u, p, t, rates=None) -> np.ndarray:
+    def _called(self, function, width: int, x, u, p, t, rates=None,
+                out: np.ndarray | None = None) -> np.ndarray:
         """A compiled program's outputs (N x width) at every node, from t, x, p, the
-        specified quantities (the controls u, the rest 0) and, when given, a."""
+        specified quantities (the controls u, the rest 0) and, when given, a; into
+        `out` (C-ordered) when given."""
         npar = self._sizes[2]
         p = self.parameter_values if p is None else np.asarray(p, dtype=float)
         if p.shape != (npar,):
@@ -451,7 +504,7 @@ class Dynamics:
         inputs[:, self._control_positions] = u
         arrays = [np.ascontiguousarray(t).reshape(count, 1), np.ascontiguousarray(x), p,
                   inputs] + ([] if rates is None else [rates])
-        out = np.empty((count, width))
+        out = np.empty((count, width)) if out is None else out
         if self.backend == "c":             # every node in one call of the C
             function.call.rows(arrays, [True, True, False] + [True] * (len(arrays) - 3), out)
         else:
@@ -532,7 +585,7 @@ class Dynamics:
         """∂f/∂x, ∂f/∂u, and with `parameters` ∂f/∂p, at every node, sparse (see
         Jacobians): a speed's row is -M^-1 ∂(M a - F) at f's accelerations a, so it
         has every entry its coupled rows have; a tree's M a - F is the Newton-Euler
-        recursion's, solved in its program, any other's Kane's, solved here."""
+        recursion's, any other's Kane's."""
         x, u, t, _ = self._nodes(x, u, t)
         nx, nu, npar, n = self._sizes
         tree = self._formed_tree_derivatives(parameters) if n else None
@@ -558,45 +611,18 @@ class Dynamics:
     def _tree_jacobians(self, tree: _TreeDerivatives, x, u, p, t) -> Jacobians:
         nx = self._sizes[0]
         head = nx + 2 * tree.pivot_count
-        out = self._called(tree.function, head + len(tree.entries), x, u, p, t)
-        if not np.all(pivot_ratios(out[:, :head], tree.pivot_count) > 0):
-            raise AutolevModelError("the mass matrix is singular at a node")
-        entries = out[:, head:]
-        return Jacobians({name: entries[:, at] for name, at in tree.blocks.items()},
+        out = np.empty((x.shape[0], tree.width))
+        # a chunk of nodes at a time: each solved while its outputs are in the cache
+        chunk = max(1, _CHUNK_DOUBLES // tree.width)
+        for lo in range(0, x.shape[0], chunk):
+            part = slice(lo, lo + chunk)
+            self._called(tree.function, tree.width, x[part], u[part], p, t[part],
+                         out=out[part])
+            if not np.all(pivot_ratios(out[part, :head], tree.pivot_count) > 0):
+                raise AutolevModelError("the mass matrix is singular at a node")
+            tree.solve(out[part])
+        return Jacobians({name: out[:, at] for name, at in tree.blocks.items()},
                          dict(tree.patterns), "recursion")
-
-
-def _solved(mass: list, rhs: list, order: list, z) -> list:
-    """M^-1 B as expressions (rows: M's; B's rows `rhs`), by L D L^T of M's lower
-    triangle with its rows eliminated in `order` (a tree's from the leaves: no fill),
-    without pivoting (M is definite where the model is not singular, which f's pivots
-    report); each entry a Z (`z`), the structural zeros left out."""
-    n = len(mass)
-    at = {row: i for i, row in enumerate(order)}
-    lower = [{} for _ in range(n)]          # position i: {position m < i: L[i, m]}
-    scaled = [{} for _ in range(n)]         # position i: {m: L[i, m] D[m]}
-    diag = [sm.S.Zero] * n
-    for i, row in enumerate(order):
-        for c in range(i + 1):
-            entry = mass[row][order[c]]
-            common = [(lower[i][m], scaled[c][m]) for m in lower[i] if m in scaled[c]]
-            value = (entry - sum_of_products(common)) if common else entry
-            if c == i:
-                diag[i] = z(value)
-            elif value != 0:
-                scaled[i][c] = z(value)
-                lower[i][c] = z(value / diag[c])
-    columns = []
-    for col in range(len(rhs[0]) if rhs else 0):
-        y = [sm.S.Zero] * n
-        for i, row in enumerate(order):
-            y[i] = z(rhs[row][col] - sum_of_products((v, y[m]) for m, v in lower[i].items()))
-        x = [sm.S.Zero] * n
-        for i in range(n - 1, -1, -1):
-            x[i] = z(y[i] / diag[i] - sum_of_products(
-                (lower[m][i], x[m]) for m in range(i + 1, n) if i in lower[m]))
-        columns.append(x)
-    return [[columns[col][at[row]] for col in range(len(columns))] for row in range(n)]
 
 
 def _solved_at_nodes(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
