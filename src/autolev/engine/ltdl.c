@@ -12,6 +12,16 @@
  * and finite (M is then not positive definite: singular where the model is). */
 #include <math.h>
 
+/* compiled twice where the loader can choose at run time (GCC's target clones on
+ * glibc): with AVX2's four-wide operations on a processor that has them, and for any
+ * x86-64; the same operations either way (no fused multiply-add), so the same bits */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__)
+#define AL_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define AL_CLONES
+#endif
+
+AL_CLONES
 long autolev_ltdl_columns(long nodes, double *rows, long width, long at_r, long at_b,
                           long m, long w, const int *start, const int *col)
 {
