@@ -194,7 +194,8 @@ def test_the_solve_of_a_trees_mass_matrix_is_numpys(parents):
         masses.append(sum(np.outer(c, c) for c in columns) + np.eye(n))
     nonzero = [[j for j in range(n) if j != k and masses[0][k, j]] for k in range(n)]
     leaves_last = sorted(range(n), key=lambda i: len(ancestors(i)))
-    lib = (ctypes.CDLL(str(clibrary.build_shared_library(LTDL_SOURCE)))
+    # linked in as a tree's Jacobian program links it (at -O3: its loops vectorized)
+    lib = (ctypes.CDLL(str(clibrary.build_shared_library("", shared_source=LTDL_SOURCE)))
            if clibrary.compiler() else None)
     for order in (leaves_last, list(range(n))[::-1]):
         structure = MassStructure.eliminated(nonzero, order)
