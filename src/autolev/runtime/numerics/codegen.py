@@ -71,6 +71,9 @@ class Program:
     # (symbol, expression) of the parts lifted out (see build's lift_into)
     lifted: list = field(default_factory=list)
     named: bool = False         # name_all done: the definitions ordered as they stood
+    # expression -> with its common factors taken out (build's `factored`): one memo may
+    # serve several programs of the same definitions (it depends on the expression alone)
+    factored_memo: dict = field(default_factory=dict)
     built: bool = False         # build done (a second build returns it as it is)
 
     def build(self, factored: bool = True, lift_into: str | None = None,
@@ -138,7 +141,7 @@ class Program:
         mass or length times an intermediate, and the multiplications were most of the
         arithmetic.  Both back ends print the same expressions, so their numbers stay
         identical."""
-        memo: dict = {}
+        memo = self.factored_memo
 
         def pull(e):
             if e.is_Atom:

@@ -214,10 +214,13 @@ class Dynamics:
         self._kinematic = np.array([i for i in range(nx) if i not in set(system.unknown_positions)],
                                    dtype=int)
         self._backend_asked = backend
+        # the common factors taken out of each expression, for all of its programs
+        self._factored: dict = {}
         self._jacobians_step = SlowStep(progress, f"{what}: forming and compiling its Jacobians")
         with SlowStep(progress, f"{what}: compiling its equations"):
             rhs = codegen.Program(self._given(), list(system.rhs_exprs), system.defs,
-                                  dict(system.aux_fixed)).build()
+                                  dict(system.aux_fixed),
+                                  factored_memo=self._factored).build()
             self._values = compile_program(rhs, backend, "autolev_dynamics")
         self.backend = self._values.backend
         # formed when a Jacobian is first asked for (f and r alone need none of it), with
@@ -268,7 +271,8 @@ class Dynamics:
         nonzero = [(i, j, d) for i, row in enumerate(jacobian) for j, d in enumerate(row)
                    if d != 0]
         program = codegen.Program(inputs, head + [d for _, _, d in nonzero], system.defs,
-                                  dict(system.aux_fixed)).build()
+                                  dict(system.aux_fixed),
+                                  factored_memo=self._factored).build()
         entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
         return compile_program(program, self._backend_asked, name), entries
 
@@ -412,7 +416,8 @@ class Dynamics:
         at_output = np.array([output_of[i, c] for i, c in entries.tolist()], dtype=int)
         with self._definitions(), self._jacobians_step:
             program = codegen.Program(self._given(), outputs, forms.system.defs,
-                                      dict(forms.system.aux_fixed)).build()
+                                      dict(forms.system.aux_fixed),
+                                      factored_memo=self._factored).build()
             function = compile_program(program, self._backend_asked,
                                        "autolev_dynamics_tree_jacobian",
                                        extra_source=LTDL_SOURCE)
