@@ -90,16 +90,20 @@ class Recursion:
     entries: list
 
 
-def accelerations(system: System, speeds: list) -> Recursion:
-    """The derivatives of `speeds` (the model's independent speeds; no dependent or
-    auxiliary ones) as Z-named expressions of the state, from the recursion; NotATree
-    when the model is not a tree it solves."""
+def tree(system: System, speeds: list) -> "Tree":
+    """The model's bodies as a tree of joints over `speeds` (the model's independent
+    speeds; no dependent or auxiliary ones), checked; NotATree when they are not one
+    the recursion solves.  Its recursions read it and change nothing in it."""
     try:
-        tree = _Tree(system, list(speeds))
+        return Tree(system, list(speeds))
     except AutolevModelError as exc:      # Kane's forming says the same, in its words
         raise NotATree(str(exc)) from None
-    rates = tree.solve()
-    return Recursion(rates, [p for p, _ in tree.pivots], [e for _, e in tree.pivots])
+
+
+def accelerations(system: System, speeds: list) -> Recursion:
+    """The derivatives of `speeds` as Z-named expressions of the state, from the
+    recursion over tree(system, speeds)."""
+    return tree(system, speeds).recursion()
 
 
 @dataclass(frozen=True)
@@ -111,19 +115,7 @@ class InverseDynamics:
     leaves_first: list
 
 
-def inverse_dynamics(system: System, speeds: list) -> InverseDynamics:
-    """M a - F for `speeds` (a: their derivatives, as symbols), by the Newton-Euler
-    recursion over the tree (see _Tree.inverse_dynamics); NotATree when the model is
-    not a tree it solves."""
-    try:
-        tree = _Tree(system, list(speeds))
-    except AutolevModelError as exc:
-        raise NotATree(str(exc)) from None
-    return InverseDynamics(tree.inverse_dynamics(),
-                           [r for j in reversed(tree.joints) for r in j.speeds])
-
-
-class _Tree:
+class Tree:
     def __init__(self, system: System, speeds: list):
         self.system, self.speeds, self.defs = system, speeds, system.defs
         self.n = system.newtonian
@@ -133,7 +125,6 @@ class _Tree:
         self._random_points: list | None = None
         self._still: list | None = None
         self._motions = [{} for _ in CHECK_SEEDS]   # per random state: each joint's numbers
-        self.pivots: list = []           # (pivot, its entry of D) of each joint's factor
         self.joints = self._joints()
         for index, joint in enumerate(self.joints):
             self._kinematics(index, joint)
@@ -459,6 +450,17 @@ class _Tree:
             base = [x + y for x, y in zip(carried, base)]
         return [self.defs.zify(x) for x in base]
 
+    def recursion(self) -> Recursion:
+        """The speeds' derivatives by the articulated-body recursion, with its pivots."""
+        rates, pivots = self.solve()
+        return Recursion(rates, [p for p, _ in pivots], [e for _, e in pivots])
+
+    def inverse(self) -> InverseDynamics:
+        """M a - F by the Newton-Euler recursion (a: the speeds' derivatives, as
+        symbols), with the speeds from the leaves."""
+        return InverseDynamics(self.inverse_dynamics(),
+                               [r for j in reversed(self.joints) for r in j.speeds])
+
     def inverse_dynamics(self) -> list:
         """Row r of M a - F, with the speeds' rates a as the symbols `self.rates`: each
         body's acceleration from the root, the wrench its inertia and loads ask of it,
@@ -485,9 +487,11 @@ class _Tree:
                 _carry_force(wrench[j.parent], total, j.offset)
         return rows
 
-    def solve(self) -> list:
+    def solve(self) -> tuple[list, list]:
+        """(the speeds' derivatives, the (pivot, its entry of D) of each joint's factor)."""
         z = self.defs.zify
         joints = self.joints
+        pivots: list = []
         inertia, bias_force = self._inertias()
         kept = [None] * len(joints)
         for k in range(len(joints) - 1, -1, -1):
@@ -499,7 +503,7 @@ class _Tree:
             u_cols = [_matvec(ia, col) for col in cols]                  # IA S
             d_mat = [[z(_dot(col, uc)) for uc in u_cols] for col in cols]
             rhs = [z(t - _dot(col, pa)) for t, col in zip(tau, cols)]  # tau - S^T pA
-            w_rows, g = _solve_spd(d_mat, [list(uc) for uc in u_cols], rhs, z, self.pivots)
+            w_rows, g = _solve_spd(d_mat, [list(uc) for uc in u_cols], rhs, z, pivots)
             # articulated: IA - U D^-1 U^T, and pA + Ia c + U D^-1 (tau - S^T pA)
             k_own = range(len(cols))
             art = _symmetric([[z(ia[a][c] - sum(u_cols[i][a] * w_rows[i][c] for i in k_own))
@@ -522,7 +526,7 @@ class _Tree:
                 out[r] = rate
             accel[k] = [z(base[a] + sum(col[a] * rate for col, rate in zip(j.columns, rates)))
                         for a in range(6)]
-        return out
+        return out, pivots
 
 
 # -- small algebra on tuples of expressions ------------------------------------------------

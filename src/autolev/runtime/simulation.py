@@ -102,7 +102,8 @@ class SimulationMixin:
         dynamics = None if self.newtonian_frame is None else FormedDynamics(
             independent_speeds=lambda: self.generalized_speeds()[0],
             equations=self.equations, mass_matrix=lambda: self.mass_matrix,
-            forcing=lambda: self.forcing, mechanics=self.kane_system)
+            forcing=lambda: self.forcing, mechanics=self.kane_system,
+            joints=self._joints_over)
         return ModelSnapshot(
             command=command, place=place, definitions=self.defs, symbols=dict(self.info),
             outputs=self.io.outputs[:command.n_outputs],
@@ -111,6 +112,23 @@ class SimulationMixin:
             bodies=self.registry.bodies, particles=self.registry.particles,
             dynamics=dynamics, derived=self.derived, names_a_quantity=self.names_a_quantity,
             systems_changed=self._systems_changed)
+
+    def _joints_over(self, speeds: list):
+        """The bodies as a tree of joints over `speeds` (articulated.tree), built once
+        for the model's revision (and the view of its definitions) it is asked at;
+        articulated.NotATree, with the reason, when they are not one."""
+        from . import articulated
+        kept = self.derived.table("trees of joints")     # speeds -> (tree, why not)
+        key = tuple(speeds)
+        if key not in kept:
+            try:
+                kept[key] = (articulated.tree(self.kane_system(), list(speeds)), "")
+            except articulated.NotATree as exc:
+                kept[key] = (None, str(exc))
+        found, why_not = kept[key]
+        if found is None:
+            raise articulated.NotATree(why_not)
+        return found
 
     def _systems_changed(self) -> None:
         """A numeric system was built or extended (Jacobians added): the model's entry in

@@ -30,7 +30,6 @@ from dataclasses import dataclass, replace
 import numpy as np
 import sympy as sm
 
-from .. import articulated
 from .. import symbols as S
 from ...engine.errors import AutolevModelError
 from ...engine.evaluation import pivot_ratios
@@ -680,7 +679,7 @@ def dynamics(snapshot: ModelSnapshot, controls=None, specified=None, backend: st
     def inverse(speeds):
         """A tree's M a - F by the Newton-Euler recursion, a row per speed of `speeds`
         (the recursion solves this model: `tree()` said so)."""
-        return articulated.inverse_dynamics(snapshot.dynamics.mechanics(), speeds)
+        return snapshot.dynamics.joints(speeds).inverse()
     values = prepared.inputs.vector([p for p in system.params if p not in set(chosen)])
     with definitions():
         return Dynamics(system, chosen, values, backend, definitions,

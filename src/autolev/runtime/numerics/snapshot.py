@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     import sympy as sm
 
+    from ..articulated import Tree
     from ..calculus import Definitions
     from ..derived import DerivedCache
     from ..io import CodeCommand
@@ -27,6 +28,9 @@ class FormedDynamics:
     mass_matrix: Callable[[], sm.Matrix]
     forcing: Callable[[], sm.Matrix]
     mechanics: Callable[[], System]            # what Kane's method reads of it
+    # its bodies as a tree of joints over the speeds given (articulated.tree), built once
+    # for the model's revision: a run's recursion and the Newton-Euler rows share it
+    joints: Callable[[list], Tree]
 
 
 @dataclass(frozen=True)

@@ -352,7 +352,7 @@ class NumericSystem(CompiledEvaluation):
         if not self.recursive or eqs.dependent or eqs.auxiliary or eqs.unknowns:
             return None
         try:
-            return articulated.accelerations(dynamics.mechanics(), eqs.speeds)
+            return dynamics.joints(eqs.speeds).recursion()
         except articulated.NotATree:
             return None
 
