@@ -14,7 +14,7 @@ import sympy as sm
 import autolev
 from autolev.runtime import articulated
 from autolev.runtime.symbols import TIME
-from helpers import load_model
+from helpers import ROOT, load_model
 from helpers.mechanics import symbols, value
 from test_chain_equations import chains, kanes_chain3d, kanes_planar
 
@@ -219,3 +219,19 @@ def test_a_run_integrates_the_recursions_accelerations(tmp_path):
     assert np.allclose(got, expected, rtol=1e-12, atol=1e-12)
     assert np.allclose(system.rhs_exprs[system.nstate:system.nstate + 9],
                        np.eye(3).ravel())
+
+
+def test_a_model_keeps_its_tree_of_joints_once_and_pickles_without_it(tmp_path):
+    # the run's recursion and the Newton-Euler rows read one tree for the revision;
+    # pickled (a study's workers, the cache of built models) the model keeps its
+    # numeric systems only, whichever part (model, scene) holds the derived tables
+    import pickle
+    model = autolev.load(ROOT / "autolev_examples" / "nlink_pendulum.al")
+    model.dynamics().explicit_jacobians(np.zeros(8))
+    trees = model.derived.table("trees of joints")
+    assert len(trees) == 1 and next(iter(trees.values()))[0] is not None
+    back = pickle.loads(pickle.dumps(model))
+    assert back.scene.derived is back.derived
+    assert "trees of joints" not in back.derived._tables
+    assert "numeric systems" in back.derived._tables
+    assert np.array_equal(back.simulate()["Q1"], model.simulate()["Q1"])

@@ -68,13 +68,15 @@ class DerivedCache:
             kept = self._tables[kind] = (state, {})
         return kept[1]
 
-    def kept_with_the_model(self) -> "DerivedCache":
-        """The tables a pickled model keeps: its commands' numeric systems (rebuilt from
-        their generated code when read back), not the rest (sympy frames, Jacobians)."""
-        copy = DerivedCache(self.revision)
-        copy._tables = {kind: kept for kind, kept in self._tables.items()
-                        if kind in PICKLED_TABLES}
-        return copy
+    def __getstate__(self) -> dict:
+        """Pickled with its model (the cache of built models, a study's workers), by
+        whichever part holds it (the model, its scene): only the tables of its
+        commands' numeric systems (rebuilt from their generated code when read back),
+        not the rest (sympy frames, trees of joints, Jacobians), made again when
+        asked."""
+        return {"revision": self.revision,
+                "_tables": {kind: kept for kind, kept in self._tables.items()
+                            if kind in PICKLED_TABLES}}
 
 
 PICKLED_TABLES = ("numeric systems", "plain dynamics")

@@ -100,8 +100,7 @@ class Model(EquationsMixin, MassPropertiesMixin, AlgebraMixin, IOMixin, Simulati
         """The model as its statements left it, with the numeric systems built for its
         CODE commands (their compiled code is found again by its digest); the modules
         its namespace holds go by name."""
-        state = dict(self.__dict__)
-        state["derived"] = self.derived.kept_with_the_model()
+        state = dict(self.__dict__)     # (the derived tables pickle what they keep)
         if self.loaded is not None:        # the keeper stays with this process
             state["loaded"] = replace(self.loaded, keeper=None, namespace={
                 k: (_ModuleName(v.__name__) if isinstance(v, types.ModuleType) else v)
