@@ -5,8 +5,10 @@ function.  No sympy: a warm run from its run plan loads its libraries with this 
 from __future__ import annotations
 
 import ctypes
+import functools
 import hashlib
 import os
+import platform
 import shutil
 import subprocess
 import sys
@@ -25,6 +27,22 @@ C_FLAGS = ("-O1", "-fno-math-errno")
 
 UNIT_MARK = "/* -- autolev: next translation unit -- */"
 UNIT_STATEMENTS = 600    # a program this many statements per core is split
+
+
+@functools.cache
+def lanes_flags() -> tuple:
+    """Flags for a program over several nodes at once (codegen's lanes): AVX2's
+    four-wide operations where this processor has them, never a fused multiply-add
+    (each lane then computes what one node's program computes, bit for bit)."""
+    flags = ("-ffp-contract=off",)
+    if platform.machine().lower() in ("x86_64", "amd64"):
+        try:
+            cpu = Path("/proc/cpuinfo").read_text()
+        except OSError:         # not Linux: the vectors in SSE2's halves
+            return flags
+        if any(line.startswith("flags") and " avx2" in line for line in cpu.splitlines()):
+            return flags + ("-mavx2", "-mno-fma")
+    return flags
 
 
 def cpus() -> int:
@@ -134,10 +152,11 @@ def build_shared_library(source: str, flags: tuple | None = None,
 
 
 def c_function(source: str, name: str, n_in: int, n_work: int, extra_source: str = "",
-               extra_flags: tuple = ()):
-    """The callable of `compile_c` from its source (compiled, or found in the cache)."""
-    path = build_shared_library(source, C_FLAGS + tuple(extra_flags),
-                                shared_source=extra_source)
+               extra_flags: tuple = (), lanes: int = 1):
+    """The callable of `compile_c` from its source (compiled, or found in the cache);
+    `lanes` > 1: a program over that many nodes at once, compiled for this processor."""
+    flags = C_FLAGS + tuple(extra_flags) + (lanes_flags() if lanes > 1 else ())
+    path = build_shared_library(source, flags, shared_source=extra_source)
     try:
         lib = ctypes.CDLL(str(path))
     except OSError as exc:          # (its bytes are verified: the loader lacked memory)

@@ -254,6 +254,83 @@ class CPrinter(CodePrinter):
         return f"(({condition}) ? ({value}) : ({otherwise}))"
 
 
+class LanesUnsupported(Exception):
+    """A construct CLanesPrinter does not print (its program is printed for one node)."""
+
+
+LANES = 4           # nodes a lanes program computes at once
+
+
+class CLanesPrinter(CPrinter):
+    """C over LANES nodes at once: every symbol is a GCC vector (`al_v`) of one value
+    per node, so each statement computes LANES nodes' values and a program's text is
+    read once for all of them (a big program's instructions, not its arithmetic, bound
+    its time).  The operations on each lane are C's, in the same order: the same bits.
+    Numbers stay scalars (C broadcasts them into the vectors they meet); a function is
+    called lane by lane.  Choices (Piecewise, logic, comparisons) are not printed."""
+
+    def __init__(self, names: dict):
+        super().__init__(names)
+        self._varies: dict = {}
+
+    def bind(self, expr, text: str) -> None:
+        super().bind(expr, text)
+        self._varies[expr] = True           # its variable is a vector, as all of them
+
+    def varies(self, e) -> bool:
+        """Whether `e` is printed as a vector: it holds a symbol or a bound variable."""
+        if e.is_Symbol:
+            return True
+        if e.is_Atom:
+            return False
+        hit = self._varies.get(e)
+        if hit is None:
+            hit = self._varies[e] = any(self.varies(a) for a in e.args)
+        return hit
+
+    def _lanewise(self, spelling, args: list) -> str:
+        """`spelling` called on each lane of `args` (vectors; numbers as they are)."""
+        taken = [f"al_v _a{k} = {self._p(a)[0]}; " for k, a in enumerate(args)
+                 if self.varies(a)]
+        lanes = []
+        for lane in range(LANES):
+            texts = [f"_a{k}[{lane}]" if self.varies(a) else self._p(a)[0]
+                     for k, a in enumerate(args)]
+            lanes.append(written(spelling, texts))
+        return "({ " + "".join(taken) + "(al_v){" + ", ".join(lanes) + "}; })"
+
+    def _power(self, base, exp):
+        if not self.varies(base) and not self.varies(exp):
+            return super()._power(base, exp)
+        if exp == 2:            # gcc's own reading of pow(b, 2)
+            b = self._wrap(base, ATOM)
+            return f"({b}*{b})", ATOM
+        return self._lanewise("pow", [base, exp]), ATOM
+
+    def _sqrt(self, base) -> str:
+        if not self.varies(base):
+            return super()._sqrt(base)
+        return self._lanewise(SQRT.spelling(self.LANGUAGE), [base])
+
+    def _function(self, e):
+        if not self.varies(e):
+            return super()._function(e)
+        spec = FUNCTION_BY_SYMPY.get(type(e).__name__)
+        if spec is None or spec.arity not in (None, len(e.args)) \
+                or spec.spelling(self.LANGUAGE) is None:
+            return super()._function(e)          # which names the refusal
+        return self._lanewise(spec.spelling(self.LANGUAGE), list(e.args)), ATOM
+
+    def _choice(self, condition: str, value: str, otherwise: str) -> str:
+        raise LanesUnsupported("a choice")
+
+    def _logic(self, e):
+        raise LanesUnsupported("logic")
+
+    def _relational(self, e):
+        raise LanesUnsupported("a comparison")
+
+
 class PythonPrinter(CodePrinter):
     """Python on `math` (and engine/pyfunction.py's _sign, _heaviside, _trunc, _round)."""
 

@@ -15,8 +15,8 @@ import sympy as sm
 
 from ..calculus import Definitions, symbols_in
 from ...engine.errors import AutolevModelError
-from ...engine.clibrary import UNIT_MARK, UNIT_STATEMENTS, c_function, cpus
-from ..printer import CPrinter, PythonPrinter
+from ...engine.clibrary import UNIT_MARK, UNIT_STATEMENTS, CompileError, c_function, cpus
+from ..printer import LANES, CLanesPrinter, CPrinter, LanesUnsupported, PythonPrinter
 from ..sympy_functions import SPEC_OF_FUNCTION
 from ...engine.pyfunction import python_function
 
@@ -311,11 +311,13 @@ CHUNK = 100     # statements per C function: gcc's time grows faster than the fu
                 # (planar 16-link: 100 compiles in 0.9 s against 1.05 s for 400, runs as fast)
 
 
-def c_source(prog: Program, name: str = "compute") -> str:
+def c_source(prog: Program, name: str = "compute", lanes: int = 1) -> str:
     """C for the program: inputs read from their arrays, intermediates kept in a work
     array `w` (so that no function is huge: gcc -O2 takes minutes and gigabytes on
     one function of ten thousand locals), the statements split into functions of
-    CHUNK statements called in order."""
+    CHUNK statements called in order.  `lanes` (LANES): the statements compute that
+    many nodes at once (CLanesPrinter; LanesUnsupported where it prints not), and
+    name_rows packs each group of nodes into the vectors and back."""
     where = {}
     for arg, syms in prog.inputs.items():
         for i, s in enumerate(syms):
@@ -324,21 +326,31 @@ def c_source(prog: Program, name: str = "compute") -> str:
     for s, ident in prog.names.items():
         if ident in index:
             where[s] = f"w[{index[ident]}]"
-    c = CPrinter(where)
+    c = CLanesPrinter(where) if lanes > 1 else CPrinter(where)
 
+    def value(expr) -> str:
+        text = c(expr)
+        return f"AL_SPLAT({text})" if lanes > 1 and not c.varies(expr) else text
     statements = []
     for k, (ident, expr) in enumerate(prog.assignments):
-        statements.append(f"w[{k}] = {c(expr)};")
+        statements.append(f"w[{k}] = {value(expr)};")
         if ident in prog.bound:
             c.bind(expr, f"w[{k}]")
-    statements += [f"out[{k}] = {c(e)};" for k, e in enumerate(prog.outputs)]
+    statements += [f"out[{k}] = {value(sm.sympify(e))};" for k, e in enumerate(prog.outputs)]
     # restrict: no array is another, so gcc may keep what it read in registers across
     # the stores to w (else every store could change an input and forces reloads)
-    params = ", ".join(f"const double *restrict {a}" for a in prog.inputs)
-    params = (params + ", " if params else "") + "double *restrict w, double *restrict out"
+    number = "al_v" if lanes > 1 else "double"
+    params = ", ".join(f"const {number} *restrict {a}" for a in prog.inputs)
+    params = (params + ", " if params else "") + \
+        f"{number} *restrict w, {number} *restrict out"
     call_args = ", ".join(list(prog.inputs) + ["w", "out"])
     header = ["#include <math.h>", "#ifndef M_PI", "#define M_PI 3.14159265358979323846",
               "#endif", "#ifndef M_E", "#define M_E 2.71828182845904523536", "#endif", ""]
+    if lanes > 1:       # aligned(8): read and written wherever the caller's doubles are
+        header[-1:] = [f"typedef double al_v __attribute__((vector_size({8 * lanes}), "
+                       "aligned(8)));",
+                       "#define AL_SPLAT(e) ({ double _s = (e); (al_v){"
+                       + ", ".join(["_s"] * lanes) + "}; })", ""]
     # big programs go to several translation units of about equal size (the compiler's
     # time follows the text), compiled in parallel; each unit in functions of at most
     # CHUNK statements
@@ -374,10 +386,12 @@ def c_source(prog: Program, name: str = "compute") -> str:
         lines.append(UNIT_MARK)
         lines += header
         lines += [f"void {name}_part{n}({params});" for n in range(len(parts))]
-    lines.append(f"void {name}({params})")
+    lines.append(f"void {name}{'_lanes' if lanes > 1 else ''}({params})")
     lines.append("{")
     lines += [f"    {name}_part{n}({call_args});" for n in range(len(parts))]
     lines.append("}")
+    if lanes > 1:
+        return "\n".join(lines + _lanes_entries(prog, name, lanes)) + "\n"
     # many rows in one call (a run's print rows): input k advances by step[k] doubles
     # a row (0: the same for every row), out by out_step
     row_args = ", ".join([f"{a} + i * step[{k}]" for k, a in enumerate(prog.inputs)]
@@ -388,19 +402,73 @@ def c_source(prog: Program, name: str = "compute") -> str:
     return "\n".join(lines) + "\n"
 
 
+def _lanes_entries(prog: Program, name: str, lanes: int) -> list:
+    """name_rows and name (one node) of a lanes program, as a one-node program's: the
+    work array holds each input packed (a vector per entry), the program's own work,
+    then its outputs; a group short of `lanes` nodes repeats its last node."""
+    params = ", ".join(f"const double *restrict {a}" for a in prog.inputs)
+    params = (params + ", " if params else "") + "double *restrict w, double *restrict out"
+    lines = ["", f"void {name}_rows(long count, const long *step, {params}, long out_step)",
+             "{", "    al_v *packed = (al_v *)w;", "    long i, j, l;"]
+    at = 0
+    for arg, syms in prog.inputs.items():
+        lines.append(f"    al_v *in_{arg} = packed + {at};")
+        at += len(syms)
+    lines += [f"    al_v *work = packed + {at}, *res = work + {len(prog.assignments)};",
+              f"    for (i = 0; i < count; i += {lanes}) {{",
+              f"        for (l = 0; l < {lanes}; l++) {{",
+              "            long node = i + l < count ? i + l : count - 1;"]
+    for k, (arg, syms) in enumerate(prog.inputs.items()):
+        if syms:
+            lines.append(f"            for (j = 0; j < {len(syms)}; j++) "
+                         f"in_{arg}[j][l] = {arg}[node * step[{k}] + j];")
+    lines += ["        }",
+              f"        {name}_lanes({', '.join(f'in_{a}' for a in prog.inputs)}"
+              f"{', ' if prog.inputs else ''}work, res);",
+              f"        for (l = 0; l < {lanes} && i + l < count; l++)",
+              f"            for (j = 0; j < {len(prog.outputs)}; j++) "
+              "out[(i + l) * out_step + j] = res[j][l];",
+              "    }", "}", "",
+              f"void {name}({params})", "{",
+              f"    static const long step[{max(1, len(prog.inputs))}];",
+              f"    {name}_rows(1, step, {', '.join(list(prog.inputs) + ['w', 'out'])}, 0);",
+              "}"]
+    return lines
+
+
+def lanes_work(prog: Program, lanes: int) -> int:
+    """The doubles of work a lanes program's entries need (see _lanes_entries)."""
+    return lanes * (sum(len(s) for s in prog.inputs.values()) + len(prog.assignments)
+                    + len(prog.outputs))
+
+
 def compile_c(prog: Program, name: str = "compute", extra_source: str = "",
-              extra_flags: tuple = ()):
+              extra_flags: tuple = (), lanes: bool = False):
     """A Python callable f(*input_arrays, out) running the compiled C, and the source.
     `extra_source`: C that is the same for many programs (the integration loop),
     compiled once into a cached object and linked into the same library (reachable as
-    `call.lib`)."""
-    source, recipe = c_program(prog, name, extra_source, extra_flags)
+    `call.lib`).  `lanes`: LANES nodes at once where the program and the compiler allow
+    (the same numbers; called over many rows, it reads its text once per group)."""
+    source, recipe = c_program(prog, name, extra_source, extra_flags, lanes)
+    try:
+        return c_function(source, *recipe), source, recipe
+    except CompileError:
+        if recipe[-1] == 1:
+            raise
+    source, recipe = c_program(prog, name, extra_source, extra_flags)  # without vectors
     return c_function(source, *recipe), source, recipe
 
 
 def c_program(prog: Program, name: str = "compute", extra_source: str = "",
-              extra_flags: tuple = ()) -> tuple[str, tuple]:
+              extra_flags: tuple = (), lanes: bool = False) -> tuple[str, tuple]:
     """(C source, recipe): what clibrary.c_function compiles and loads."""
+    if lanes:
+        try:
+            source = c_source(prog, name, LANES)
+            return source, (name, len(prog.inputs), lanes_work(prog, LANES), extra_source,
+                            tuple(extra_flags), LANES)
+        except LanesUnsupported:
+            pass
     source = c_source(prog, name)
     return source, (name, len(prog.inputs), len(prog.assignments), extra_source,
-                    tuple(extra_flags))
+                    tuple(extra_flags), 1)

@@ -15,11 +15,14 @@ if TYPE_CHECKING:
 
 
 def compile_program(prog: Program, backend: str, name: str,
-                    extra_source: str = "", extra_flags: tuple = ()) -> Function:
+                    extra_source: str = "", extra_flags: tuple = (),
+                    lanes: bool = False) -> Function:
+    """`lanes`: in C, several nodes at once (a program called over many rows)."""
     from . import codegen  # (sympy): generating code is the model's work
     if backend in ("auto", "c") and clibrary.compiler() is not None:
         try:
-            call, source, recipe = codegen.compile_c(prog, name, extra_source, extra_flags)
+            call, source, recipe = codegen.compile_c(prog, name, extra_source, extra_flags,
+                                                     lanes)
             return Function(call, "c", source, recipe)
         except clibrary.CompileError as exc:
             if backend == "c":

@@ -46,8 +46,8 @@ from .snapshot import ModelSnapshot
 from .system import lower_derivative
 from ..steps import SlowStep
 
-# a tree's Jacobians: the nodes whose outputs fit in 256 kB computed, then solved
-_CHUNK_DOUBLES = 1 << 15
+# a tree's Jacobians: the nodes whose outputs fit in 512 kB computed, then solved
+_CHUNK_DOUBLES = 1 << 16
 
 
 @dataclass(frozen=True)
@@ -220,7 +220,7 @@ class Dynamics:
             rhs = codegen.Program(self._given(), list(system.rhs_exprs), system.defs,
                                   dict(system.aux_fixed),
                                   factored_memo=self._factored).build()
-            self._values = compile_program(rhs, backend, "autolev_dynamics")
+            self._values = compile_program(rhs, backend, "autolev_dynamics", lanes=True)
         self.backend = self._values.backend
         # formed when a Jacobian is first asked for (f and r alone need none of it), with
         # the parameters' columns or without (True, False)
@@ -273,7 +273,7 @@ class Dynamics:
                                   dict(system.aux_fixed),
                                   factored_memo=self._factored).build()
         entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
-        return compile_program(program, self._backend_asked, name), entries
+        return compile_program(program, self._backend_asked, name, lanes=True), entries
 
     def _residual_rows(self, dynamic_rows: list | None = None) -> list:
         """The expressions differentiated, one per state row: -g for a kinematical row,
@@ -419,7 +419,7 @@ class Dynamics:
                                       factored_memo=self._factored).build()
             function = compile_program(program, self._backend_asked,
                                        "autolev_dynamics_tree_jacobian",
-                                       extra_source=LTDL_SOURCE)
+                                       extra_source=LTDL_SOURCE, lanes=True)
         blocks, patterns = self._blocks(entries, parameters)
         return _TreeDerivatives(function, forms.system.pivot_count, len(outputs),
                                 forms.structure, at_mass, at_rhs, len(kept), patterns,
@@ -615,18 +615,21 @@ class Dynamics:
     def _tree_jacobians(self, tree: _TreeDerivatives, x, u, p, t) -> Jacobians:
         nx = self._sizes[0]
         head = nx + 2 * tree.pivot_count
-        out = np.empty((x.shape[0], tree.width))
-        # a chunk of nodes at a time: each solved while its outputs are in the cache
+        count = x.shape[0]
+        values = {name: np.empty((count, len(at))) for name, at in tree.blocks.items()}
+        # a chunk of nodes at a time: computed, solved and gathered while in the cache
         chunk = max(1, _CHUNK_DOUBLES // tree.width)
-        for lo in range(0, x.shape[0], chunk):
-            part = slice(lo, lo + chunk)
-            self._called(tree.function, tree.width, x[part], u[part], p, t[part],
-                         out=out[part])
-            if not np.all(pivot_ratios(out[part, :head], tree.pivot_count) > 0):
+        outputs = np.empty((min(chunk, count), tree.width))
+        for lo in range(0, count, chunk):
+            nodes = slice(lo, lo + chunk)
+            out = outputs[:len(x[nodes])]
+            self._called(tree.function, tree.width, x[nodes], u[nodes], p, t[nodes], out=out)
+            if not np.all(pivot_ratios(out[:, :head], tree.pivot_count) > 0):
                 raise AutolevModelError("the mass matrix is singular at a node")
-            tree.solve(out[part])
-        return Jacobians({name: out[:, at] for name, at in tree.blocks.items()},
-                         dict(tree.patterns), "recursion")
+            tree.solve(out)
+            for name, at in tree.blocks.items():
+                np.take(out, at, axis=1, out=values[name][nodes])
+        return Jacobians(values, dict(tree.patterns), "recursion")
 
 
 def _solved_at_nodes(mass: np.ndarray, rhs: np.ndarray) -> np.ndarray:
