@@ -5,11 +5,14 @@
  * as loop.c's al_ltdl_solve holds them (row k: its diagonal, then its entries in the
  * columns col[start[k] + 1 ...] of its chain of parents), and from at_b the m x w
  * matrix B row after row, its rows in the factoring's order.  M = L^T D L is factored
- * in place without pivoting (Featherstone's LTDL), then B is overwritten by M^-1 B;
- * each update of B is one row times a number, over the w columns, which the compiler
- * vectorizes.  massmatrix.ltdl_columns does the same operations on each entry in the
- * same order.  Returns 0, or 1 + the first node where an entry of D is not positive
- * and finite (M is then not positive definite: singular where the model is). */
+ * in place without pivoting (Featherstone's LTDL), then B is overwritten by M^-1 B,
+ * AL_BLOCK columns at a time: each row's block is summed in registers, from the rows
+ * that update it (ustart, uk, uat: for row i, the rows k after it whose chain holds i,
+ * from the last, and where L's entry is), which the compiler vectorizes.  Each entry
+ * of B sees the operations of massmatrix.ltdl_columns (the rows k from the last, one
+ * update each) in the same order: the same bits.  Returns 0, or 1 + the first node
+ * where an entry of D is not positive and finite (M is then not positive definite:
+ * singular where the model is). */
 #include <math.h>
 
 /* compiled twice where the loader can choose at run time (GCC's target clones on
@@ -21,11 +24,39 @@
 #define AL_CLONES
 #endif
 
+#define AL_BLOCK 16     /* columns summed at once: four AVX2 registers */
+
+/* rows of B from the last: each row less L's entries times the rows after it */
+#define AL_DOWN(n) \
+    for (k = m - 1; k >= 0; k--) { \
+        double acc[AL_BLOCK], *bk = b + k * w + jb; \
+        for (j = 0; j < (n); j++) acc[j] = bk[j]; \
+        for (t = ustart[k]; t < ustart[k + 1]; t++) { \
+            const double l = r[uat[t]], *bs = b + uk[t] * w + jb; \
+            for (j = 0; j < (n); j++) acc[j] -= l * bs[j]; \
+        } \
+        for (j = 0; j < (n); j++) bk[j] = acc[j]; \
+    }
+
+/* rows from the first: each row by D^-1, less L's entries times the rows before it */
+#define AL_UP(n) \
+    for (k = 0; k < m; k++) { \
+        const double *rk = r + start[k]; \
+        double acc[AL_BLOCK], *bk = b + k * w + jb; \
+        for (j = 0; j < (n); j++) acc[j] = bk[j] * rk[0]; \
+        for (t = 1; t < start[k + 1] - start[k]; t++) { \
+            const double l = rk[t], *bi = b + col[start[k] + t] * w + jb; \
+            for (j = 0; j < (n); j++) acc[j] -= l * bi[j]; \
+        } \
+        for (j = 0; j < (n); j++) bk[j] = acc[j]; \
+    }
+
 AL_CLONES
 long autolev_ltdl_columns(long nodes, double *rows, long width, long at_r, long at_b,
-                          long m, long w, const int *start, const int *col)
+                          long m, long w, const int *start, const int *col,
+                          const int *ustart, const int *uk, const int *uat)
 {
-    long node, j, k, t;
+    long node, j, k, t, jb;
     for (node = 0; node < nodes; node++) {
         double *r = rows + node * width + at_r, *b = rows + node * width + at_b;
         for (k = m - 1; k >= 0; k--) {
@@ -42,24 +73,14 @@ long autolev_ltdl_columns(long nodes, double *rows, long width, long at_r, long 
             }
             rk[0] = inv;
         }
-        for (k = m - 1; k >= 0; k--) {          /* L^T Y = B */
-            const double *rk = r + start[k], *bk = b + k * w;
-            long len = start[k + 1] - start[k];
-            for (t = 1; t < len; t++) {
-                double l = rk[t], *bi = b + col[start[k] + t] * w;
-                for (j = 0; j < w; j++) bi[j] -= l * bk[j];
-            }
+        for (jb = 0; jb + AL_BLOCK <= w; jb += AL_BLOCK) {
+            AL_DOWN(AL_BLOCK)
+            AL_UP(AL_BLOCK)
         }
-        for (k = 0; k < m; k++) {               /* D Z = Y and L X = Z, row by row */
-            const double *rk = r + start[k];
-            double *bk = b + k * w, inv = rk[0];
-            long len = start[k + 1] - start[k];
-            for (j = 0; j < w; j++) bk[j] *= inv;
-            for (t = 1; t < len; t++) {
-                double l = rk[t];
-                const double *bi = b + col[start[k] + t] * w;
-                for (j = 0; j < w; j++) bk[j] -= l * bi[j];
-            }
+        if (jb < w) {
+            long rest = w - jb;
+            AL_DOWN(rest)
+            AL_UP(rest)
         }
     }
     return 0;

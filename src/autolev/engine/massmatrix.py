@@ -216,14 +216,40 @@ def _solve_ltdl(mm: np.ndarray, f: np.ndarray, structure: MassStructure):
     return x
 
 
+@dataclass(frozen=True)
+class CompactRows:
+    """A MassStructure's rows held compactly, as ltdl.c reads them (C ints): where each
+    row starts and its entries' columns; and for each row i, the rows k after it whose
+    chain holds i, from the last (`ustart`, `uk`), with where L's entry (k, i) is
+    (`uat`)."""
+    start: np.ndarray
+    col: np.ndarray
+    ustart: np.ndarray
+    uk: np.ndarray
+    uat: np.ndarray
+
+    @classmethod
+    def of(cls, structure: MassStructure) -> CompactRows:
+        start, col = structure.starts, structure.columns
+        m = len(structure.order)
+        updates: list = [[] for _ in range(m)]
+        for k in range(m - 1, -1, -1):
+            for at in range(start[k] + 1, start[k + 1]):
+                updates[col[at]].append((k, at))
+        ustart = np.cumsum([0] + [len(u) for u in updates])
+        pairs = [pair for u in updates for pair in u]
+        return cls(*(np.array(a, dtype=np.intc).reshape(-1) for a in (
+            start, col, ustart, [k for k, _ in pairs], [at for _, at in pairs])))
+
+
 def ltdl_columns(rows: np.ndarray, at_r: int, at_b: int, m: int, w: int,
-                 start: np.ndarray, col: np.ndarray) -> int:
+                 compact: CompactRows) -> int:
     """ltdl.c's autolev_ltdl_columns over every row of `rows` (nodes x outputs), in
     place, each entry by the same operations in the same order (a node is a row of the
-    arrays here): M compactly from `at_r` (`start` and `col`: a MassStructure's starts
-    and columns), the m x w matrix B from `at_b` overwritten by M^-1 B.  0, or 1 + the
-    first node where an entry of D is not positive and finite."""
-    start, col = start.tolist(), col.tolist()
+    arrays here): M compactly from `at_r`, the m x w matrix B from `at_b` overwritten
+    by M^-1 B.  0, or 1 + the first node where an entry of D is not positive and
+    finite."""
+    start, col = compact.start.tolist(), compact.col.tolist()
     r = rows[:, at_r:at_r + start[-1]]
     b = rows[:, at_b:at_b + m * w].reshape(len(rows), m, w)
     bad = np.zeros(len(rows), dtype=bool)
@@ -252,17 +278,16 @@ def ltdl_columns(rows: np.ndarray, at_r: int, at_b: int, m: int, w: int,
 
 
 def compiled_ltdl_columns(lib, rows: np.ndarray, at_r: int, at_b: int, m: int, w: int,
-                          start: np.ndarray, col: np.ndarray) -> int:
-    """ltdl_columns by LTDL_SOURCE's C in the library `lib` that links it in (`start`,
-    `col`: C ints)."""
+                          compact: CompactRows) -> int:
+    """ltdl_columns by LTDL_SOURCE's C in the library `lib` that links it in."""
     fn = lib.autolev_ltdl_columns
-    fn.argtypes = [ctypes.c_long, ctypes.c_void_p] + [ctypes.c_long] * 5 + [ctypes.c_void_p] * 2
+    fn.argtypes = [ctypes.c_long, ctypes.c_void_p] + [ctypes.c_long] * 5 + [ctypes.c_void_p] * 5
     fn.restype = ctypes.c_long
-    if rows.dtype != np.float64 or not rows.flags.c_contiguous or start.dtype != np.intc \
-            or col.dtype != np.intc:
-        raise ValueError("ltdl_columns: C-ordered doubles and C ints expected")
+    if rows.dtype != np.float64 or not rows.flags.c_contiguous:
+        raise ValueError("ltdl_columns: C-ordered doubles expected")
     return int(fn(len(rows), rows.ctypes.data, rows.shape[1], at_r, at_b, m, w,
-                  start.ctypes.data, col.ctypes.data))
+                  *(a.ctypes.data for a in (compact.start, compact.col, compact.ustart,
+                                            compact.uk, compact.uat))))
 
 
 def scaled_condition(mm: np.ndarray) -> np.ndarray | float:

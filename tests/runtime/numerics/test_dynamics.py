@@ -180,9 +180,9 @@ def test_the_solve_of_a_trees_mass_matrix_is_numpys(parents):
     # positive definite is named
     import ctypes
     from autolev.engine import clibrary
-    from autolev.engine.massmatrix import (LTDL_SOURCE, MassStructure,
+    from autolev.engine.massmatrix import (LTDL_SOURCE, CompactRows, MassStructure,
                                            compiled_ltdl_columns, ltdl_columns)
-    n, nodes, w = len(parents), 3, 4
+    n, nodes, w = len(parents), 3, 35      # w: two of ltdl.c's blocks and a rest
 
     def ancestors(i):
         return {i} | (ancestors(parents[i]) if parents[i] >= 0 else set())
@@ -202,8 +202,7 @@ def test_the_solve_of_a_trees_mass_matrix_is_numpys(parents):
         compact = [[mass[structure.order[k], structure.order[j]]
                     for k, j in zip(structure.rows, structure.columns)] for mass in masses]
         rows = np.hstack([np.array(compact), rhs[:, structure.order].reshape(nodes, -1)])
-        args = (0, len(compact[0]), n, w, np.array(structure.starts, dtype=np.intc),
-                np.array(structure.columns, dtype=np.intc))
+        args = (0, len(compact[0]), n, w, CompactRows.of(structure))
         twin = rows.copy()
         assert ltdl_columns(twin, *args) == 0
         got = np.empty((nodes, n, w))

@@ -33,8 +33,8 @@ import sympy as sm
 from .. import symbols as S
 from ...engine.errors import AutolevModelError
 from ...engine.evaluation import pivot_ratios
-from ...engine.massmatrix import (LTDL_SOURCE, MassStructure, compiled_ltdl_columns,
-                                  ltdl_columns)
+from ...engine.massmatrix import (LTDL_SOURCE, CompactRows, MassStructure,
+                                  compiled_ltdl_columns, ltdl_columns)
 from ...engine.options import RunOptions
 from . import codegen
 from .command import (equations_and_unknowns, given_specified, program_of,
@@ -44,10 +44,12 @@ from .inputs import display_name
 from .prepare import SystemBuild, numeric_system, prepare_command
 from .snapshot import ModelSnapshot
 from .system import lower_derivative
+from ..printer import LANES
 from ..steps import SlowStep
 
-# a tree's Jacobians: the nodes whose outputs fit in 512 kB computed, then solved
-_CHUNK_DOUBLES = 1 << 16
+# a tree's Jacobians: the nodes whose outputs fit in 1 MB computed, then solved
+_CHUNK_DOUBLES = 1 << 17
+_FEW_RUNS = 16              # a block gathered in at most this many runs is copied by them
 
 
 @dataclass(frozen=True)
@@ -110,6 +112,30 @@ class _Derivatives:
 
 
 @dataclass(frozen=True)
+class _Gather:
+    """The outputs of a program that make a block's values, in order: copied run by run
+    where they lie in a few contiguous runs (a chain's rows of M^-1 B), else one by one."""
+    outputs: np.ndarray
+    runs: tuple                 # (first output, first value, length); () for one by one
+
+    @classmethod
+    def of(cls, outputs: np.ndarray) -> "_Gather":
+        cuts = np.nonzero(np.diff(outputs) != 1)[0] + 1
+        firsts, ends = np.r_[0, cuts], np.r_[cuts, len(outputs)]
+        runs = tuple((int(outputs[a]), int(a), int(b - a)) for a, b in zip(firsts, ends)
+                     if b > a)
+        return cls(outputs, runs if len(runs) <= _FEW_RUNS else ())
+
+    def into(self, values: np.ndarray, rows: np.ndarray) -> None:
+        """values (nodes x the block's entries) from the program's `rows`."""
+        if self.runs:
+            for first, at, length in self.runs:
+                values[:, at:at + length] = rows[:, first:first + length]
+        else:
+            np.take(rows, self.outputs, axis=1, out=values)
+
+
+@dataclass(frozen=True)
 class _TreeDerivatives:
     """f's Jacobian program of a tree: inputs (t, x, p, s); outputs f's rows by the
     articulated-body recursion, its pivots and the entries they come from (a pivot that
@@ -118,7 +144,7 @@ class _TreeDerivatives:
     (m x w: rows in the structure's order, the w columns any of them has); then the
     kinematical rows' structural nonzeros.  `solve` overwrites B with M^-1 B, the
     dynamical rows' Jacobian, at every node.  `blocks`: each block's outputs, in its
-    pattern's order (row-major)."""
+    pattern's order (row-major), as _Gather."""
 
     function: object
     pivot_count: int
@@ -129,14 +155,13 @@ class _TreeDerivatives:
     columns: int                # w
     patterns: dict              # "x", "u", "p"
     blocks: dict                # "x", "u", "p" -> outputs
-    starts: np.ndarray          # the structure's, as C ints
-    compact_columns: np.ndarray
+    compact: CompactRows        # the structure's, as the solve reads it
 
     def solve(self, rows: np.ndarray) -> None:
         """B := M^-1 B at every row (node) of `rows`, in place (ltdl.c where the program
         is C, its numpy twin otherwise: the same operations)."""
         args = (rows, self.at_mass, self.at_rhs, len(self.structure.order), self.columns,
-                self.starts, self.compact_columns)
+                self.compact)
         if self.function.backend == "c":
             failed = compiled_ltdl_columns(self.function.call.lib, *args)
         else:
@@ -423,9 +448,9 @@ class Dynamics:
         blocks, patterns = self._blocks(entries, parameters)
         return _TreeDerivatives(function, forms.system.pivot_count, len(outputs),
                                 forms.structure, at_mass, at_rhs, len(kept), patterns,
-                                {name: at_output[at] for name, at in blocks.items()},
-                                np.array(forms.structure.starts, dtype=np.intc),
-                                np.array(forms.structure.columns, dtype=np.intc))
+                                {name: _Gather.of(at_output[at])
+                                 for name, at in blocks.items()},
+                                CompactRows.of(forms.structure))
 
     def _formed_tree_residual(self, parameters: bool) -> "_TreeResidual | None":
         """r's Jacobian program by the Newton-Euler recursion (once), or None (see
@@ -616,9 +641,10 @@ class Dynamics:
         nx = self._sizes[0]
         head = nx + 2 * tree.pivot_count
         count = x.shape[0]
-        values = {name: np.empty((count, len(at))) for name, at in tree.blocks.items()}
+        values = {name: np.empty((count, len(gather.outputs)))
+                  for name, gather in tree.blocks.items()}
         # a chunk of nodes at a time: computed, solved and gathered while in the cache
-        chunk = max(1, _CHUNK_DOUBLES // tree.width)
+        chunk = max(1, _CHUNK_DOUBLES // tree.width // LANES) * LANES   # whole groups
         outputs = np.empty((min(chunk, count), tree.width))
         for lo in range(0, count, chunk):
             nodes = slice(lo, lo + chunk)
@@ -627,8 +653,8 @@ class Dynamics:
             if not np.all(pivot_ratios(out[:, :head], tree.pivot_count) > 0):
                 raise AutolevModelError("the mass matrix is singular at a node")
             tree.solve(out)
-            for name, at in tree.blocks.items():
-                np.take(out, at, axis=1, out=values[name][nodes])
+            for name, gather in tree.blocks.items():
+                gather.into(values[name][nodes], out)
         return Jacobians(values, dict(tree.patterns), "recursion")
 
 
