@@ -50,6 +50,9 @@ random times, against the run's own right-hand side; 1e-8 of max(1, |value|)):
   r:dr         model.dynamics().residual_jacobians of a tree at x' = f (its rows
                M a - F by the Newton-Euler recursion) against recursion=False's (M and
                F as Kane's equations form them), as r:df
+  r:df-python  model.dynamics(backend="python").explicit_jacobians against the C's
+               (its programs over four nodes at once, the tree's solve by ltdl.c):
+               the same operations, so `=` is the only agreement
 
   The model-level equations (M,f, explicit, symsys) are those of the model as it
   stands; they are compared for a CODE DYNAMICS whose definitions are the model's last
@@ -103,7 +106,7 @@ from journeys import Cell as JourneyCell  # noqa: E402
 ROW_PATHS = ("warm", "no-cache", "foreground", "python", "api", "mass-matrix", "module",
              "code", "script")
 RATE_PATHS = ("r:python", "r:recursion", "r:M,f", "r:explicit", "r:symsys", "r:module",
-              "r:script", "r:dynamics", "r:df", "r:dr")
+              "r:script", "r:dynamics", "r:df", "r:dr", "r:df-python")
 LINEARIZE_PATHS = ("l:warm", "l:no-cache", "l:c")
 PATHS = ROW_PATHS + RATE_PATHS + LINEARIZE_PATHS
 RATE_TOLERANCE = 1e-8
@@ -432,7 +435,7 @@ class ModelPaths:
             if got["mark"] != "ok":
                 cells[p] = Cell(got["mark"], got.get("detail", ""))
                 continue
-            cells[p] = (compare_jacobians(got) if p in ("r:df", "r:dr")
+            cells[p] = (compare_jacobians(got) if p in ("r:df", "r:dr", "r:df-python")
                         else compare_rates(reference, got))
 
     def linearizations(self) -> None:
@@ -530,14 +533,15 @@ def compare_rates(reference: dict, got: dict) -> Cell:
 
 
 def compare_jacobians(got: dict) -> Cell:
-    """f's or r's Jacobians by the recursion against the mass matrix's, block by block."""
+    """f's or r's Jacobians by one route against another's, block by block (`exact`:
+    routes of the same operations, which agree to the bit or not at all)."""
     worst = 0.0
     for ours, theirs in got["blocks"].values():
         a, b = np.array(ours), np.array(theirs)
         if b.size:
             gap = float(np.max(np.abs(a - b)) / max(1.0, float(np.max(np.abs(b)))))
             worst = max(worst, gap if math.isfinite(gap) else math.inf)
-    if not math.isfinite(worst) or worst > MATRIX_TOLERANCE:
+    if not math.isfinite(worst) or worst > (0.0 if got.get("exact") else MATRIX_TOLERANCE):
         return Cell("DIFF", f"{got['form']}'s Jacobians differ by {worst:.3g} of their "
                     "largest entry")
     return Cell("~" if worst else "=", f"{worst:.1g}" if worst else "")
@@ -718,6 +722,22 @@ def rates(path: Path, options: list, count: int, module: Path | None,
                            for b in by_mass.values}}
     taking("df", lambda: jacobians_by_both("f"))
     taking("dr", lambda: jacobians_by_both("r"))
+
+    def jacobians_by_tiers():
+        from autolev.engine import clibrary
+        from autolev.runtime.numerics.dynamics import dynamics
+        if clibrary.compiler() is None:
+            raise _NotApplicable("no C compiler: one tier")
+        x = np.array([x for _, x in points])
+        t = np.array([t for t, _ in points])
+        by_c, by_python = (dynamics(model.snapshot_for(command), infile=infile,
+                                    overrides=values or None, backend=backend)
+                           .explicit_jacobians(x, None, None, t)
+                           for backend in ("c", "python"))
+        return {"mark": "ok", "form": "f", "exact": True,
+                "blocks": {b: (by_python.dense(b).tolist(), by_c.dense(b).tolist())
+                           for b in by_c.values}}
+    taking("df-python", jacobians_by_tiers)
     if module is not None:
         def from_module():
             from autolev.loader import load_python

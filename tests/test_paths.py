@@ -32,7 +32,7 @@ def test_every_path_gives_the_answer_of_a_cold_run(model, tmp_path):
     assert differing == {}
     # the paths that compute the same numbers give the same bytes
     for p in ("warm", "no-cache", "foreground", "python", "api", "module", "r:python",
-              "r:module", "l:warm", "l:no-cache"):
+              "r:module", "l:warm", "l:no-cache", "r:df-python"):
         assert row.cells[p].mark == "=", (p, row.cells[p])
     # the model-level equations and the exported script were compared, not skipped
     for p in ("r:M,f", "r:explicit", "r:symsys", "r:script", "r:dynamics", "code", "script",
@@ -86,6 +86,10 @@ def test_jacobians_within_the_tolerance_and_beyond_it():
     assert differing.mark == "DIFF" and differing.detail.startswith("r's Jacobians differ")
     broken = [[[0.0, 1.0], [float("nan"), -0.25]]]
     assert paths.compare_jacobians({"form": "f", "blocks": {"x": (broken, by_mass)}}).mark == "DIFF"
+    # the C and Python tiers do the same operations: a last bit apart is a difference
+    assert paths.compare_jacobians({"form": "f", "exact": True,
+                                    "blocks": {"x": (near, by_mass)}}).mark == "DIFF"
+    assert paths.compare_jacobians({"form": "f", "exact": True, "blocks": same}).mark == "="
 
 
 def _linear(folder, a):
