@@ -408,26 +408,27 @@ def _lanes_entries(prog: Program, name: str, lanes: int) -> list:
     then its outputs; a group short of `lanes` nodes repeats its last node."""
     params = ", ".join(f"const double *restrict {a}" for a in prog.inputs)
     params = (params + ", " if params else "") + "double *restrict w, double *restrict out"
+    # its own names begin al_ (the inputs' are the project's: t, x, p, s, a)
     lines = ["", f"void {name}_rows(long count, const long *step, {params}, long out_step)",
-             "{", "    al_v *packed = (al_v *)w;", "    long i, j, l;"]
+             "{", "    al_v *al_packed = (al_v *)w;", "    long al_i, al_j, al_l;"]
     at = 0
     for arg, syms in prog.inputs.items():
-        lines.append(f"    al_v *in_{arg} = packed + {at};")
+        lines.append(f"    al_v *al_in_{arg} = al_packed + {at};")
         at += len(syms)
-    lines += [f"    al_v *work = packed + {at}, *res = work + {len(prog.assignments)};",
-              f"    for (i = 0; i < count; i += {lanes}) {{",
-              f"        for (l = 0; l < {lanes}; l++) {{",
-              "            long node = i + l < count ? i + l : count - 1;"]
+    lines += [f"    al_v *al_work = al_packed + {at}, *al_res = al_work + {len(prog.assignments)};",
+              f"    for (al_i = 0; al_i < count; al_i += {lanes}) {{",
+              f"        for (al_l = 0; al_l < {lanes}; al_l++) {{",
+              "            long al_node = al_i + al_l < count ? al_i + al_l : count - 1;"]
     for k, (arg, syms) in enumerate(prog.inputs.items()):
         if syms:
-            lines.append(f"            for (j = 0; j < {len(syms)}; j++) "
-                         f"in_{arg}[j][l] = {arg}[node * step[{k}] + j];")
+            lines.append(f"            for (al_j = 0; al_j < {len(syms)}; al_j++) "
+                         f"al_in_{arg}[al_j][al_l] = {arg}[al_node * step[{k}] + al_j];")
     lines += ["        }",
-              f"        {name}_lanes({', '.join(f'in_{a}' for a in prog.inputs)}"
-              f"{', ' if prog.inputs else ''}work, res);",
-              f"        for (l = 0; l < {lanes} && i + l < count; l++)",
-              f"            for (j = 0; j < {len(prog.outputs)}; j++) "
-              "out[(i + l) * out_step + j] = res[j][l];",
+              f"        {name}_lanes({', '.join(f'al_in_{a}' for a in prog.inputs)}"
+              f"{', ' if prog.inputs else ''}al_work, al_res);",
+              f"        for (al_l = 0; al_l < {lanes} && al_i + al_l < count; al_l++)",
+              f"            for (al_j = 0; al_j < {len(prog.outputs)}; al_j++) "
+              "out[(al_i + al_l) * out_step + al_j] = al_res[al_j][al_l];",
               "    }", "}", "",
               f"void {name}({params})", "{",
               f"    static const long step[{max(1, len(prog.inputs))}];",
