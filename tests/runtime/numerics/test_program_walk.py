@@ -114,3 +114,33 @@ def test_a_walked_program_reads_the_definitions_as_they_stood_when_it_was_made()
     constants.call(np.array([3.0]), walked)
     constants.compiled().call(np.array([3.0]), compiled)
     assert walked.tolist() == compiled.tolist() == [7.0]
+
+
+def test_a_definition_that_is_anothers_negative_is_read_as_it():
+    # signed: Z2 = b - a is -Z1, Z4 = Z1 again, Z3 built from Z2 meets -Z1 too; the
+    # program keeps Z1 and Z3, gives the numbers of the program without it to their
+    # rounding (z1 - y*z1 is then printed z1*(1 - y)), and its C those of its Python
+    from autolev.engine import clibrary
+    z1, z2, z3, z4 = sm.symbols("z1 z2 z3 z4")
+    defs = Definitions()
+    defs.rhs[z1] = a - b * x
+    defs.rhs[z2] = b * x - a
+    defs.rhs[z3] = z2 * y + z1
+    defs.rhs[z4] = a - b * x
+    outputs = [z2, z3 * z4, z1 + z2 + z4]
+    plain = codegen.Program({"v": [x, y], "c": [a, b, c]}, outputs, defs).build()
+    signed = codegen.Program({"v": [x, y], "c": [a, b, c]}, outputs, defs).build(signed=True)
+    assert len(plain.assignments) == 4 and len(signed.assignments) == 2
+    tiers = [codegen.compile_python(signed)[0]] + (
+        [codegen.compile_c(signed, "aliased")[0]] if clibrary.compiler() else [])
+    rng = np.random.default_rng(5)
+    for _ in range(50):
+        v, k = rng.uniform(-2, 2, 2), rng.uniform(-2, 2, 3)
+        want = np.zeros(3)
+        codegen.compile_python(plain)[0](v, k, want)
+        got = []
+        for tier in tiers:
+            got.append(np.zeros(3))
+            tier(v, k, got[-1])
+        assert np.allclose(got[0], want, rtol=1e-13, atol=1e-13)
+        assert all(np.array_equal(g, got[0]) for g in got)

@@ -77,7 +77,7 @@ class Program:
     built: bool = False         # build done (a second build returns it as it is)
 
     def build(self, factored: bool = True, lift_into: str | None = None,
-              shared: str = "calls") -> "Program":
+              shared: str = "calls", signed: bool = False) -> "Program":
         """Order the definitions the outputs need and name everything; `factored`:
         take common factors out of sums (worth it for a program evaluated many times,
         not for one evaluated once per parameter set or solution).  `lift_into`: the
@@ -86,12 +86,16 @@ class Program:
         parameter set and passed in as new entries appended to that input.  `shared`:
         what occurs more than once gets a variable of its own: "calls" (elementary
         function calls; gcc finds the rest in the functions it compiles) or "all"
-        (sums and products too: a program for a user's compiler, in one function)."""
+        (sums and products too: a program for a user's compiler, in one function).
+        `signed`: a definition that is another's negative is computed as that one
+        negated (see _alias_negations)."""
         if self.built:
             return self
         self.built = True
         self._shared = shared
         self.name_all()
+        if signed:
+            self._alias_negations()
         if factored:
             self._pull_common_factors()
         if lift_into is not None:
@@ -134,6 +138,33 @@ class Program:
             self.names[s] = f"w{n}"
             self.assignments.append((self.names[s], self.defs.rhs[s]))
         return self
+
+    def _alias_negations(self) -> None:
+        """Each definition whose expression is an earlier one's, or its negative, is read
+        as that one (negated) wherever it is used, in order, so that what is built from
+        it meets its twins too: a derivative of a direction cosine is often another one
+        negated (d cos(q1 + q2)/dq1 is -sin(q1 + q2)), and the Jacobians' definitions
+        repeat in sign-flipped copies.  Both back ends print the program so changed."""
+        symbol_of = {ident: s for s, ident in self.names.items()}
+        first: dict = {}            # expression -> the symbol defined by it first
+        read_as: dict = {}          # symbol -> the earlier symbol, or its negative
+        kept = []
+        for ident, expr in self.assignments:
+            symbol = symbol_of[ident]
+            if read_as and symbol in self.defs.rhs \
+                    and not self.defs.free(symbol).isdisjoint(read_as):
+                expr = expr.xreplace(read_as)
+            twin = first.get(expr)
+            if twin is None:
+                twin = first.get(-expr)
+                twin = None if twin is None else -twin
+            if twin is None:
+                first[expr] = symbol
+                kept.append((ident, expr))
+            else:
+                read_as[symbol] = twin
+        self.assignments = kept
+        self.outputs = [e.xreplace(read_as) if read_as else e for e in self.outputs]
 
     def _pull_common_factors(self) -> None:
         """Sums whose terms share symbolic factors are written with the factors taken

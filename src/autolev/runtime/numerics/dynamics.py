@@ -244,7 +244,7 @@ class Dynamics:
         with SlowStep(progress, f"{what}: compiling its equations"):
             rhs = codegen.Program(self._given(), list(system.rhs_exprs), system.defs,
                                   dict(system.aux_fixed),
-                                  factored_memo=self._factored).build()
+                                  factored_memo=self._factored).build(signed=True)
             self._values = compile_program(rhs, backend, "autolev_dynamics", lanes=True)
         self.backend = self._values.backend
         # formed when a Jacobian is first asked for (f and r alone need none of it), with
@@ -296,7 +296,7 @@ class Dynamics:
                    if d != 0]
         program = codegen.Program(inputs, head + [d for _, _, d in nonzero], system.defs,
                                   dict(system.aux_fixed),
-                                  factored_memo=self._factored).build()
+                                  factored_memo=self._factored).build(signed=True)
         entries = np.array([(i, j) for i, j, _ in nonzero], dtype=int).reshape(-1, 2)
         return compile_program(program, self._backend_asked, name, lanes=True), entries
 
@@ -441,7 +441,7 @@ class Dynamics:
         with self._definitions(), self._jacobians_step:
             program = codegen.Program(self._given(), outputs, forms.system.defs,
                                       dict(forms.system.aux_fixed),
-                                      factored_memo=self._factored).build()
+                                      factored_memo=self._factored).build(signed=True)
             function = compile_program(program, self._backend_asked,
                                        "autolev_dynamics_tree_jacobian",
                                        extra_source=LTDL_SOURCE, lanes=True)
