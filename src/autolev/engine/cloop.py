@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from .integrators import DOP853, integrator_named
+from .massmatrix import LTDL_SOURCE
 
 LOOP_SOURCE = (Path(__file__).with_name("loop.c")).read_text()
 PYEXT_SOURCE = (Path(__file__).with_name("pyext.c")).read_text()
@@ -40,11 +41,13 @@ def python_include() -> str | None:
 
 
 def extra_source() -> tuple[str, tuple]:
-    """(C appended to a right-hand side, extra compiler flags)."""
+    """(C appended to a right-hand side, extra compiler flags): the loop, after ltdl.c
+    (whose factorization its mass matrix's solve uses)."""
+    loop = "\n" + LTDL_SOURCE + "\n" + LOOP_SOURCE
     inc = python_include()
     if inc is None:
-        return "\n" + LOOP_SOURCE, ()
-    return "\n" + LOOP_SOURCE + "\n" + PYEXT_SOURCE, ("-I" + inc, "-I" + np.get_include())
+        return loop, ()
+    return loop + "\n" + PYEXT_SOURCE, ("-I" + inc, "-I" + np.get_include())
 
 
 def _load_extension(path: str):

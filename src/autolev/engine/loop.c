@@ -116,21 +116,8 @@ static int al_lu_solve(int m, double *a, double *b)
  * _solve_ltdl does the same operations on each entry in the same order. */
 static int al_ltdl_solve(int m, double *r, double *b, const int *start, const int *col)
 {
-    int j, k, t;
-    for (k = m - 1; k >= 0; k--) {
-        double *rk = r + start[k], d = rk[0], inv;
-        int len = start[k + 1] - start[k];
-        if (!(d > 0.0) || d == INFINITY) return -1;
-        inv = 1.0 / d;
-        for (t = 1; t < len; t++) {
-            int i = col[start[k] + t], n = start[i + 1] - start[i];
-            double *ri = r + start[i], l = rk[t] * inv;
-            const double *tail = rk + t;
-            for (j = 0; j < n; j++) ri[j] -= l * tail[j];
-            rk[t] = l;
-        }
-        rk[0] = inv;
-    }
+    int k, t;
+    if (al_ltdl_factor(m, r, start, col) != 0) return -1;      /* ltdl.c's */
     for (k = m - 1; k >= 0; k--) {
         const double *rk = r + start[k], bk = b[k];
         const int *ck = col + start[k];

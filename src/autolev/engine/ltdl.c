@@ -51,6 +51,30 @@
         for (j = 0; j < (n); j++) bk[j] = acc[j]; \
     }
 
+/* M = L^T D L in place, the rows from the last, each row's L over its D entry, which is
+ * inverted (D^-1 on each row's first place); -1 when an entry of D is not positive and
+ * finite.  loop.c's one-right-hand-side solve factors with it too (the integration loop
+ * links this source before its own). */
+static int al_ltdl_factor(long m, double *r, const int *start, const int *col)
+{
+    long j, k, t;
+    for (k = m - 1; k >= 0; k--) {
+        double *rk = r + start[k], d = rk[0], inv;
+        long len = start[k + 1] - start[k];
+        if (!(d > 0.0) || d == INFINITY) return -1;
+        inv = 1.0 / d;
+        for (t = 1; t < len; t++) {
+            long i = col[start[k] + t], n = start[i + 1] - start[i];
+            double *ri = r + start[i], l = rk[t] * inv;
+            const double *tail = rk + t;
+            for (j = 0; j < n; j++) ri[j] -= l * tail[j];
+            rk[t] = l;
+        }
+        rk[0] = inv;
+    }
+    return 0;
+}
+
 AL_CLONES
 long autolev_ltdl_columns(long nodes, double *rows, long width, long at_r, long at_b,
                           long m, long w, const int *start, const int *col,
@@ -59,20 +83,7 @@ long autolev_ltdl_columns(long nodes, double *rows, long width, long at_r, long 
     long node, j, k, t, jb;
     for (node = 0; node < nodes; node++) {
         double *r = rows + node * width + at_r, *b = rows + node * width + at_b;
-        for (k = m - 1; k >= 0; k--) {
-            double *rk = r + start[k], d = rk[0], inv;
-            long len = start[k + 1] - start[k];
-            if (!(d > 0.0) || d == INFINITY) return node + 1;
-            inv = 1.0 / d;
-            for (t = 1; t < len; t++) {
-                long i = col[start[k] + t], n = start[i + 1] - start[i];
-                double *ri = r + start[i], l = rk[t] * inv;
-                const double *tail = rk + t;
-                for (j = 0; j < n; j++) ri[j] -= l * tail[j];
-                rk[t] = l;
-            }
-            rk[0] = inv;
-        }
+        if (al_ltdl_factor(m, r, start, col) != 0) return node + 1;
         for (jb = 0; jb + AL_BLOCK <= w; jb += AL_BLOCK) {
             AL_DOWN(AL_BLOCK)
             AL_UP(AL_BLOCK)

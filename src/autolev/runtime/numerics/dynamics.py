@@ -140,8 +140,8 @@ class _TreeDerivatives:
     """f's Jacobian program of a tree: inputs (t, x, p, s); outputs f's rows by the
     articulated-body recursion, its pivots and the entries they come from (a pivot that
     is not positive makes M singular); from `at_mass` M's entries held compactly
-    (`structure`'s order); from `at_rhs` B = -∂(M a - F) at a = f, the dynamical rows'
-    (m x w: rows in the structure's order, the w columns any of them has); then the
+    (`compact`'s rows); from `at_rhs` B = -∂(M a - F) at a = f, the dynamical rows'
+    (m x w: rows in the factoring's order, the w columns any of them has); then the
     kinematical rows' structural nonzeros.  `solve` overwrites B with M^-1 B, the
     dynamical rows' Jacobian, at every node.  `blocks`: each block's outputs, in its
     pattern's order (row-major), as _Gather."""
@@ -149,18 +149,17 @@ class _TreeDerivatives:
     function: object
     pivot_count: int
     width: int                  # outputs per node
-    structure: MassStructure
     at_mass: int
     at_rhs: int
     columns: int                # w
     patterns: dict              # "x", "u", "p"
     blocks: dict                # "x", "u", "p" -> outputs
-    compact: CompactRows        # the structure's, as the solve reads it
+    compact: CompactRows        # M's structure, as the solve reads it
 
     def solve(self, rows: np.ndarray) -> None:
         """B := M^-1 B at every row (node) of `rows`, in place (ltdl.c where the program
         is C, its numpy twin otherwise: the same operations)."""
-        args = (rows, self.at_mass, self.at_rhs, len(self.structure.order), self.columns,
+        args = (rows, self.at_mass, self.at_rhs, len(self.compact.start) - 1, self.columns,
                 self.compact)
         if self.function.backend == "c":
             failed = compiled_ltdl_columns(self.function.call.lib, *args)
@@ -447,7 +446,7 @@ class Dynamics:
                                        extra_source=LTDL_SOURCE, lanes=True)
         blocks, patterns = self._blocks(entries, parameters)
         return _TreeDerivatives(function, forms.system.pivot_count, len(outputs),
-                                forms.structure, at_mass, at_rhs, len(kept), patterns,
+                                at_mass, at_rhs, len(kept), patterns,
                                 {name: _Gather.of(at_output[at])
                                  for name, at in blocks.items()},
                                 CompactRows.of(forms.structure))
